@@ -1,0 +1,44 @@
+"""Serve MathJax 3 from the book itself, so pages typeset math with no network.
+
+The files come from the PyPI package ``sphinx-mathjax-offline`` (MathJax 3.2.2),
+installed by requirements.txt. They are copied into ``_build/html/_static/mathjax``
+when the build finishes; ``mathjax_path`` in ``_config.yml`` points there. They
+are deliberately not in a top-level ``_static/`` folder, whose every ``.js``
+Jupyter Book would add to every page.
+"""
+import importlib.util
+import os
+
+from sphinx.errors import ExtensionError
+from sphinx.util.fileutil import copy_asset
+
+PACKAGE = "sphinx-mathjax-offline"
+
+
+def mathjax_source():
+    spec = importlib.util.find_spec(PACKAGE)
+    if spec is None or not spec.submodule_search_locations:
+        raise ExtensionError(f"the package {PACKAGE} is missing: run `pip install -r requirements.txt`")
+    folder = os.path.join(list(spec.submodule_search_locations)[0], "static", "mathjax")
+    if not os.path.isfile(os.path.join(folder, "tex-chtml.js")):
+        raise ExtensionError(f"{PACKAGE} has no static/mathjax/tex-chtml.js in {folder}")
+    return folder
+
+
+def copy_mathjax(app, exception):
+    if exception is None and app.builder.format == "html":
+        copy_asset(mathjax_source(), os.path.join(app.outdir, "_static", "mathjax"))
+
+
+def check_config(app, config):
+    if config.mathjax_path != "mathjax/tex-chtml.js":
+        raise ExtensionError(
+            f"mathjax_path must be 'mathjax/tex-chtml.js' (the bundled copy), got {config.mathjax_path!r}"
+        )
+    mathjax_source()
+
+
+def setup(app):
+    app.connect("config-inited", check_config)
+    app.connect("build-finished", copy_mathjax)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -1,0 +1,334 @@
+"""Rigid-body motions: rotations, homogeneous transforms and the exponential of a twist.
+
+Every function is exact with SymPy input (it returns a ``sympy.Matrix``) and
+fast with numeric input (it returns float64 NumPy arrays, vectorised over a
+leading batch axis). Angles are in radians, lengths in metres.
+
+>>> import sympy as sp
+>>> rotz(sp.pi / 2)
+Matrix([
+[0, -1, 0],
+[1,  0, 0],
+[0,  0, 1]])
+>>> rotz([0.0, 0.1]).shape
+(2, 3, 3)
+"""
+import numpy as np
+import sympy as sp
+
+from ._checks import (
+    as_float_array,
+    as_scalar_or_batch,
+    as_sympy_matrix,
+    check_rotation,
+    check_shape,
+    check_transform,
+    describe,
+    is_symbolic,
+)
+
+__all__ = [
+    "skew",
+    "rotx",
+    "roty",
+    "rotz",
+    "rot_axis",
+    "transl",
+    "homogeneous",
+    "inv",
+    "twist_from_axis",
+    "exp_twist",
+    "screw_motion",
+]
+
+
+def _vector3(value, name):
+    """A 3-vector: SymPy column (3, 1), or a float64 array (3,) or (N, 3)."""
+    if is_symbolic(value):
+        return as_sympy_matrix(value, name, (3, 1))
+    return check_shape(as_float_array(value, name), name, (3,))
+
+
+def skew(v):
+    """The 3x3 skew-symmetric matrix [v] with [v] w = v x w.
+
+    Parameters
+    ----------
+    v : array-like, shape (3,) or (N, 3), or a SymPy 3-vector
+
+    Returns
+    -------
+    sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
+
+    >>> skew([1, 2, 3]) @ [4, 5, 6]
+    array([-3.,  6., -3.])
+    """
+    v = _vector3(v, "v")
+    if isinstance(v, sp.MatrixBase):
+        x, y, z = v
+        return sp.Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+    x, y, z = v[..., 0], v[..., 1], v[..., 2]
+    zero = np.zeros_like(x)
+    return np.stack(
+        [np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1), np.stack([-y, x, zero], -1)],
+        -2,
+    )
+
+
+def _elementary_rotation(theta, axis):
+    """Rotation by ``theta`` about the x (0), y (1) or z (2) axis of the frame."""
+    theta = as_scalar_or_batch(theta, "theta")
+    i, j = [(1, 2), (2, 0), (0, 1)][axis]
+    if isinstance(theta, sp.Basic):
+        R = sp.eye(3)
+        c, s = sp.cos(theta), sp.sin(theta)
+        R[i, i], R[i, j], R[j, i], R[j, j] = c, -s, s, c
+        return R
+    R = np.zeros(theta.shape + (3, 3))
+    R[..., axis, axis] = 1.0
+    c, s = np.cos(theta), np.sin(theta)
+    R[..., i, i], R[..., i, j], R[..., j, i], R[..., j, j] = c, -s, s, c
+    return R
+
+
+def rotx(theta):
+    """Rotation by ``theta`` (rad) about x: shape (3, 3), or (N, 3, 3) for N angles.
+
+    >>> rotx(0.5)[1:, 1:].round(4)
+    array([[ 0.8776, -0.4794],
+           [ 0.4794,  0.8776]])
+    """
+    return _elementary_rotation(theta, 0)
+
+
+def roty(theta):
+    """Rotation by ``theta`` (rad) about y: shape (3, 3), or (N, 3, 3) for N angles."""
+    return _elementary_rotation(theta, 1)
+
+
+def rotz(theta):
+    """Rotation by ``theta`` (rad) about z: shape (3, 3), or (N, 3, 3) for N angles."""
+    return _elementary_rotation(theta, 2)
+
+
+def rot_axis(axis, theta):
+    """Rotation by ``theta`` (rad) about a unit ``axis`` (Rodrigues' formula).
+
+    R = I + sin(theta) [w] + (1 - cos(theta)) [w]^2, with w = axis / |axis|.
+
+    Parameters
+    ----------
+    axis : array-like, shape (3,), non-zero (it is normalised)
+    theta : float, array of shape (N,), or a SymPy expression
+
+    >>> rot_axis([0, 0, 2], np.pi / 2).round(12)
+    array([[ 0., -1.,  0.],
+           [ 1.,  0.,  0.],
+           [ 0.,  0.,  1.]])
+    """
+    w = _unit_vector(axis, "axis")
+    theta = as_scalar_or_batch(theta, "theta")
+    W = skew(w)
+    if isinstance(W, sp.MatrixBase) or isinstance(theta, sp.Basic):
+        W = sp.Matrix(W)
+        return sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
+    s = np.sin(theta)[..., None, None]
+    c = np.cos(theta)[..., None, None]
+    return np.eye(3) + s * W + (1.0 - c) * (W @ W)
+
+
+def _unit_vector(value, name):
+    v = _vector3(value, name)
+    if isinstance(v, sp.MatrixBase):
+        norm = sp.sqrt(sum(e**2 for e in v))
+        if norm == 0:
+            raise ValueError(f"{name} must be a non-zero 3-vector, got {list(v)}")
+        return v if norm == 1 else v / norm
+    if v.ndim != 1:
+        raise ValueError(f"{name} must be a single 3-vector of shape (3,), got shape {v.shape}")
+    norm = np.linalg.norm(v)
+    if norm < 1e-12:
+        raise ValueError(f"{name} must be a non-zero 3-vector, got {v.tolist()}")
+    return v / norm
+
+
+def transl(*p):
+    """The pure translation by p = (x, y, z): a 4x4 homogeneous transform.
+
+    Call as ``transl(x, y, z)`` or ``transl(p)`` with p of shape (3,) or (N, 3).
+
+    >>> transl(1, 2, 3)[:3, 3]
+    array([1., 2., 3.])
+    """
+    if len(p) == 3:
+        p = [p[0], p[1], p[2]]
+        if not is_symbolic(p):
+            p = np.stack(np.broadcast_arrays(*(as_float_array(x, "p") for x in p)), -1)
+    elif len(p) == 1:
+        p = p[0]
+    else:
+        raise TypeError(f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} arguments")
+    return homogeneous(None, p)
+
+
+def homogeneous(R=None, p=None):
+    """The 4x4 transform [[R, p], [0, 1]] from a rotation ``R`` and a translation ``p``.
+
+    Parameters
+    ----------
+    R : array-like, shape (3, 3) or (N, 3, 3); identity if None
+    p : array-like, shape (3,) or (N, 3); zero if None
+
+    Returns
+    -------
+    sympy.Matrix (4, 4) if either input is symbolic, else ndarray (4, 4) or (N, 4, 4)
+    """
+    if is_symbolic(R) or is_symbolic(p):
+        R = sp.eye(3) if R is None else check_rotation(R, "R")
+        p = sp.zeros(3, 1) if p is None else as_sympy_matrix(p, "p", (3, 1))
+        return sp.Matrix(sp.BlockMatrix([[sp.Matrix(R), p], [sp.zeros(1, 3), sp.ones(1, 1)]]))
+    R = np.eye(3) if R is None else check_rotation(R, "R")
+    p = np.zeros(3) if p is None else _vector3(p, "p")
+    return _assemble(R, p)
+
+
+def _assemble(R, p):
+    """[[R, p], [0, 1]] from checked float arrays R (..., 3, 3) and p (..., 3)."""
+    batch = np.broadcast_shapes(R.shape[:-2], p.shape[:-1])
+    T = np.zeros(batch + (4, 4))
+    T[..., :3, :3] = R
+    T[..., :3, 3] = p
+    T[..., 3, 3] = 1.0
+    return T
+
+
+def inv(T):
+    """The inverse of a homogeneous transform, [[R^T, -R^T p], [0, 1]].
+
+    Exact and cheaper than a general matrix inverse; ``T`` of shape (4, 4) or (N, 4, 4).
+
+    >>> T = transl(1, 2, 3) @ homogeneous(rotz(0.3))
+    >>> np.allclose(inv(T) @ T, np.eye(4))
+    True
+    """
+    T = check_transform(T, "T")
+    if isinstance(T, sp.MatrixBase):
+        Rt = T[:3, :3].T
+        return homogeneous(Rt, -Rt * T[:3, 3])
+    Rt = np.swapaxes(T[..., :3, :3], -1, -2)
+    return _assemble(Rt, -np.einsum("...ij,...j->...i", Rt, T[..., :3, 3]))
+
+
+def twist_from_axis(s, r, h):
+    """The unit twist of a screw axis, ordered [angular; linear].
+
+    A rotation about the line through ``r`` with direction ``s`` and pitch ``h``
+    (metres per radian) has twist (s; r x s + h s); a pure translation along
+    ``s`` (``h = sympy.oo``) has twist (0; s). ``s`` is normalised.
+
+    Returns a SymPy 6x1 matrix if any input is symbolic, else an ndarray (6,).
+
+    >>> twist_from_axis([0, 0, 1], [1, 0, 0], 0)
+    array([ 0.,  0.,  1.,  0., -1.,  0.])
+    """
+    prismatic = h is sp.oo or (not is_symbolic(h) and np.isposinf(_pitch_as_float(h)))
+    if is_symbolic(s) or is_symbolic(r) or (is_symbolic(h) and not prismatic):
+        s = _unit_vector(as_sympy_matrix(s, "s", (3, 1)), "s")
+        if prismatic:
+            return sp.Matrix.vstack(sp.zeros(3, 1), s)
+        r = as_sympy_matrix(r, "r", (3, 1))
+        h = as_scalar_or_batch(h, "h")
+        return sp.Matrix.vstack(s, r.cross(s) + h * s)
+    s = _unit_vector(s, "s")
+    if prismatic:
+        return np.concatenate([np.zeros(3), s])
+    r = _vector3(r, "r")
+    if r.ndim != 1:
+        raise ValueError(f"r must be a single point of shape (3,), got shape {r.shape}")
+    h = _pitch_as_float(h)
+    if np.isinf(h):
+        raise ValueError("h must be finite or +sympy.oo (a translation), got -inf")
+    return np.concatenate([s, np.cross(r, s) + h * s])
+
+
+def _pitch_as_float(h):
+    """The pitch as a float, allowing +inf (a prismatic joint) but not NaN."""
+    try:
+        value = float(h)
+    except (TypeError, ValueError):
+        raise TypeError(f"h must be a pitch: a number, or sympy.oo for a translation, got {describe(h)}") from None
+    if np.isnan(value):
+        raise ValueError("h must be a pitch: a number, or sympy.oo for a translation, got NaN")
+    return value
+
+
+def exp_twist(twist, theta):
+    """The rigid motion exp([twist] theta) as a 4x4 homogeneous transform.
+
+    For a unit angular part w (|w| = 1) and linear part v:
+    R = I + sin(theta)[w] + (1 - cos(theta))[w]^2 and
+    p = (I theta + (1 - cos(theta))[w] + (theta - sin(theta))[w]^2) v.
+    For w = 0 (a translation) R = I and p = v theta. A non-unit w is
+    normalised and theta scaled by |w|.
+
+    Parameters
+    ----------
+    twist : array-like, shape (6,), ordered [w; v], or a SymPy 6-vector
+    theta : float, array of shape (N,), or a SymPy expression (rad, or m for a translation)
+
+    Returns
+    -------
+    sympy.Matrix (4, 4) or ndarray, shape (4, 4) or (N, 4, 4)
+
+    >>> exp_twist([0, 0, 1, 0, 0, 0], np.pi / 2).round(12)[:3, :3]
+    array([[ 0., -1.,  0.],
+           [ 1.,  0.,  0.],
+           [ 0.,  0.,  1.]])
+    """
+    if is_symbolic(twist) or is_symbolic(theta):
+        xi = as_sympy_matrix(twist, "twist", (6, 1))
+        theta = as_scalar_or_batch(theta, "theta")
+        return _exp_twist_symbolic(xi, sp.sympify(theta))
+    xi = as_float_array(twist, "twist")
+    if xi.shape != (6,):
+        raise ValueError(f"twist must have shape (6,), ordered [w; v], got shape {xi.shape}")
+    theta = as_scalar_or_batch(theta, "theta")
+    w, v = xi[:3], xi[3:]
+    norm = np.linalg.norm(w)
+    if norm < 1e-12:
+        return _assemble(np.eye(3), theta[..., None] * v)
+    w, v, theta = w / norm, v / norm, theta * norm
+    W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    W2 = W @ W
+    s = np.sin(theta)[..., None, None]
+    c1 = 1.0 - np.cos(theta)[..., None, None]
+    t = theta[..., None, None]
+    R = np.eye(3) + s * W + c1 * W2
+    # p = G v with G = I theta + (1 - cos) [w] + (theta - sin) [w]^2, applied to v directly
+    p = t[..., 0] * v + c1[..., 0] * (W @ v) + (t - s)[..., 0] * (W2 @ v)
+    return _assemble(R, p)
+
+
+def _exp_twist_symbolic(xi, theta):
+    w, v = xi[:3, 0], xi[3:, 0]
+    norm = sp.sqrt(sum(e**2 for e in w))
+    if norm == 0:
+        return homogeneous(sp.eye(3), v * theta)
+    if norm != 1:
+        w, v, theta = w / norm, v / norm, theta * norm
+    W = skew(w)
+    R = sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
+    G = theta * sp.eye(3) + (1 - sp.cos(theta)) * W + (theta - sp.sin(theta)) * W * W
+    return homogeneous(R.applyfunc(sp.simplify), (G * v).applyfunc(sp.simplify))
+
+
+def screw_motion(s, r, h, theta):
+    """The motion along a screw axis: rotate ``theta`` about the line (s, r), advance h*theta.
+
+    With ``h = sympy.oo`` the motion is a translation by ``theta`` metres along ``s``.
+    Equivalent to ``exp_twist(twist_from_axis(s, r, h), theta)``.
+
+    >>> screw_motion([0, 0, 1], [1, 0, 0], 0, np.pi)[:3, 3].round(12)
+    array([2., 0., 0.])
+    """
+    return exp_twist(twist_from_axis(s, r, h), theta)
