@@ -7,10 +7,8 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 export PATH := $(CURDIR)/$(BIN):$(PATH)
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
-# Headless plotting everywhere (tests, nbval kernels, the book build).
-export MPLBACKEND := Agg
 
-.PHONY: book test lab site-check bench clean
+.PHONY: book test lab site-check bench notebooks clean
 
 $(STAMP): requirements.txt pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -42,3 +40,7 @@ bench: $(STAMP)
 
 clean:
 	rm -rf _build
+
+## make notebooks: re-execute every notebook and store its outputs (review the diff after)
+notebooks: $(STAMP)
+	$(BIN)/python tools/execute_notebooks.py

@@ -21,6 +21,18 @@ from .transforms import (
 
 __version__ = "0.1.0"
 
+# Drawing and widgets load matplotlib and ipywidgets: imported on first use (sk.plotting, sk.widgets).
+_LAZY_SUBMODULES = ("plotting", "widgets")
+
+
+def __getattr__(name):
+    if name in _LAZY_SUBMODULES:
+        import importlib
+
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module 'screwkit' has no attribute {name!r}")
+
+
 __all__ = [
     "exp_twist",
     "homogeneous",

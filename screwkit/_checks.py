@@ -53,6 +53,8 @@ def as_float_array(value, name):
 
 def as_sympy_matrix(value, name, shape):
     """``value`` as an exact SymPy matrix of the given ``shape``."""
+    if _contains_string(value):
+        raise TypeError(f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
     try:
         matrix = sp.Matrix(value)
     except (TypeError, ValueError, sp.SympifyError):
@@ -65,6 +67,16 @@ def as_sympy_matrix(value, name, shape):
         if entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
             raise ValueError(f"{name} must be finite, got an entry equal to {entry}")
     return matrix.applyfunc(_exact_if_integral)
+
+
+def _contains_string(value):
+    if isinstance(value, (str, bytes)):
+        return True
+    if isinstance(value, (list, tuple)):
+        return any(_contains_string(v) for v in value)
+    return isinstance(value, np.ndarray) and value.dtype.kind in "USO" and any(
+        isinstance(v, (str, bytes)) for v in value.flat
+    )
 
 
 def _exact_if_integral(entry):

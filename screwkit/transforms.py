@@ -237,7 +237,7 @@ def twist_from_axis(s, r, h):
         if prismatic:
             return sp.Matrix.vstack(sp.zeros(3, 1), s)
         r = as_sympy_matrix(r, "r", (3, 1))
-        h = as_scalar_or_batch(h, "h")
+        h = as_sympy_matrix([h], "h", (1, 1))[0]
         return sp.Matrix.vstack(s, r.cross(s) + h * s)
     s = _unit_vector(s, "s")
     if prismatic:

@@ -188,3 +188,10 @@ def test_transl_forms_agree():
 def test_bad_input_is_named_in_a_clear_error(call, error, message):
     with pytest.raises(error, match=message):
         call()
+
+
+def test_strings_are_not_sympified_into_symbols():
+    with pytest.raises(TypeError, match="r must hold numbers or SymPy expressions, not strings"):
+        sk.twist_from_axis([0, 0, 1], [theta, "x", 0], 0)
+    with pytest.raises(TypeError, match="h must be a pitch"):
+        sk.twist_from_axis([0, 0, 1], [theta, 0, 0], "h")

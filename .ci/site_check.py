@@ -1,0 +1,199 @@
+"""Check the built book as a reader's browser sees it, with no network.
+
+Serves the HTML build on 127.0.0.1, loads every page of the table of contents in headless
+Chromium (every host but 127.0.0.1 unresolvable), and fails unless:
+  - math is typeset by the bundled MathJax (mjx-container elements, no MathJax errors)
+    on every page that has math;
+  - every chapter page (notebooks/) shows at least one figure whose file is in the build;
+  - no page links to a missing file or anchor of the book;
+  - no page asked for anything off this machine (Chromium's net log lists every request).
+Keeps a screenshot of the first chapter in _build/.
+
+Usage: python .ci/site_check.py _build/html
+"""
+import functools
+import http.server
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+from html.parser import HTMLParser
+from urllib.parse import unquote, urljoin, urlsplit
+
+CHROMIUM_FLAGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
+]
+
+
+class PageParser(HTMLParser):
+    """Collects ids, links, images and MathJax elements of one HTML document."""
+
+    def __init__(self):
+        super().__init__()
+        self.ids, self.links, self.images = set(), [], []
+        self.math_containers = self.math_errors = self.math_sources = 0
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if "id" in attrs:
+            self.ids.add(attrs["id"])
+        if tag == "a" and attrs.get("name"):
+            self.ids.add(attrs["name"])
+        if tag == "a" and attrs.get("href"):
+            self.links.append(attrs["href"])
+        if tag == "img" and attrs.get("src"):
+            self.images.append(attrs["src"])
+        if tag == "mjx-container":
+            self.math_containers += 1
+        if tag == "mjx-merror":
+            self.math_errors += 1
+        classes = (attrs.get("class") or "").split()
+        if tag in ("span", "div") and "math" in classes:
+            self.math_sources += 1
+
+
+def parse(html):
+    parser = PageParser()
+    parser.feed(html)
+    return parser
+
+
+def find_chromium():
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        if shutil.which(name):
+            return shutil.which(name)
+    sys.exit("site check: no Chromium found (apt-get install chromium)")
+
+
+def serve(root):
+    handler = functools.partial(QuietHandler, directory=root)
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server
+
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+def chromium(browser, url, profile, *extra):
+    command = [browser, *CHROMIUM_FLAGS, f"--user-data-dir={profile}",
+               "--virtual-time-budget=20000", *extra, url]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=180)
+    if result.returncode != 0:
+        raise RuntimeError(f"chromium failed on {url}: {result.stderr[-2000:]}")
+    return result.stdout
+
+
+def toc_pages(root):
+    pages = []
+    for folder in ("book", "notebooks"):
+        directory = os.path.join(root, folder)
+        if os.path.isdir(directory):
+            pages += sorted(os.path.join(folder, f) for f in os.listdir(directory) if f.endswith(".html"))
+    return pages
+
+
+def outside_requests(netlog_path, origin):
+    """URLs off this machine that the page itself asked for, from Chromium's net log.
+
+    Requests the page makes carry the page's origin as initiator; the browser's own
+    background requests (update checks and the like, unresolvable here) carry none.
+    """
+    with open(netlog_path) as f:
+        text = f.read()
+    try:
+        log = json.loads(text)
+    except json.JSONDecodeError:  # Chromium may leave the closing brackets off
+        log = json.loads(text.rstrip().rstrip(",") + "]}")
+    start_job = log["constants"]["logEventTypes"]["URL_REQUEST_START_JOB"]
+    urls = set()
+    for event in log.get("events", []):
+        params = event.get("params") or {}
+        if event.get("type") != start_job or params.get("initiator") != origin.rstrip("/"):
+            continue
+        if urlsplit(params.get("url", "")).hostname not in ("127.0.0.1", "localhost"):
+            urls.add(params["url"])
+    return urls
+
+
+def check_links(root, page, parser, cache):
+    problems = []
+    base = "/" + page
+    for href in parser.links + parser.images:
+        parts = urlsplit(href)
+        if parts.scheme or href.startswith("//") or href.startswith("mailto:"):
+            continue
+        target = urlsplit(urljoin(base, href))
+        path = unquote(target.path).lstrip("/") or "index.html"
+        file = os.path.join(root, path)
+        if os.path.isdir(file):
+            file = os.path.join(file, "index.html")
+        if not os.path.isfile(file):
+            problems.append(f"{page}: broken link {href}")
+            continue
+        if target.fragment and file.endswith(".html"):
+            if file not in cache:
+                with open(file, encoding="utf-8") as f:
+                    cache[file] = parse(f.read()).ids
+            if unquote(target.fragment) not in cache[file]:
+                problems.append(f"{page}: link {href} points to a missing anchor")
+    return problems
+
+
+def main(root):
+    root = os.path.abspath(root)
+    pages = toc_pages(root)
+    if not pages:
+        sys.exit(f"site check: no pages under {root}/book or {root}/notebooks; build the book first")
+    browser = find_chromium()
+    server = serve(root)
+    origin = f"http://127.0.0.1:{server.server_address[1]}/"
+    problems, anchors = [], {}
+    with tempfile.TemporaryDirectory() as tmp:
+        netlog = os.path.join(tmp, "netlog.json")
+        for page in pages:
+            with open(os.path.join(root, page), encoding="utf-8") as f:
+                static = parse(f.read())
+            problems += check_links(root, page, static, anchors)
+            dom = parse(chromium(browser, origin + page, os.path.join(tmp, "profile"),
+                                 "--dump-dom", f"--log-net-log={netlog}"))
+            leaks = outside_requests(netlog, origin)
+            problems += [f"{page}: request left the machine: {url}" for url in sorted(leaks)]
+            if static.math_sources and not dom.math_containers:
+                problems.append(f"{page}: has math but MathJax typeset none of it")
+            if dom.math_errors:
+                problems.append(f"{page}: MathJax reported {dom.math_errors} errors")
+            figures = [src for src in dom.images if "_images/" in src]
+            if page.startswith("notebooks/") and not figures:
+                problems.append(f"{page}: a chapter page without a figure (no cell output image)")
+            print(f"{page}: {dom.math_containers} math, {len(figures)} figures, "
+                  f"{len(static.links)} links, {len(leaks)} outside requests")
+        shot_page = next((p for p in pages if p.startswith("notebooks/")), pages[0])
+        shot = os.path.join(os.path.dirname(root), "screenshot.png")
+        chromium(browser, origin + shot_page, os.path.join(tmp, "profile"),
+                 f"--screenshot={shot}", "--window-size=1280,1600", "--hide-scrollbars")
+        print(f"screenshot of {shot_page}: {shot}")
+    server.shutdown()
+    if problems:
+        print("\nsite check FAILED:")
+        for problem in problems:
+            print("  - " + problem)
+        sys.exit(1)
+    print(f"site check passed: {len(pages)} pages")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "_build/html")

@@ -1,0 +1,75 @@
+"""Matplotlib drawings of frames, screw axes and screw motions (metres).
+
+>>> ax = axes3d()
+>>> draw_frame(ax, np.eye(4), label="0")
+>>> plt.close(ax.figure)
+"""
+import matplotlib.pyplot as plt
+import numpy as np
+
+from ._checks import as_float_array, check_shape, check_transform
+
+__all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion"]
+
+AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
+
+
+def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
+    """A 3D axes with equal scale on x, y, z (m) and labelled axes.
+
+    Parameters
+    ----------
+    limits : ((xmin, xmax), (ymin, ymax), (zmin, zmax)) in metres
+    ax : an existing 3D axes to set up, or None to create a figure
+    """
+    if ax is None:
+        figure = plt.figure(figsize=figsize)
+        ax = figure.add_subplot(projection="3d")
+    limits = as_float_array(limits, "limits")
+    if limits.shape != (3, 2):
+        raise ValueError(f"limits must be three (min, max) pairs, shape (3, 2), got shape {limits.shape}")
+    ax.set_xlim(*limits[0])
+    ax.set_ylim(*limits[1])
+    ax.set_zlim(*limits[2])
+    ax.set_box_aspect(limits[:, 1] - limits[:, 0])
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)")
+    return ax
+
+
+def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
+    """Draw the frame of a 4x4 transform ``T``: x red, y green, z blue, ``length`` in m."""
+    T = check_transform(np.asarray(T, dtype=float), "T")
+    if T.ndim != 2:
+        raise ValueError(f"T must be one transform of shape (4, 4), got shape {T.shape}")
+    origin = T[:3, 3]
+    for k in range(3):
+        tip = origin + length * T[:3, k]
+        ax.plot(*np.stack([origin, tip]).T, color=AXIS_COLOURS[k], lw=2, alpha=alpha)
+    if label is not None:
+        ax.text(*(origin - 0.12 * length * (T[:3, 0] + T[:3, 1])), f"{{{label}}}", fontsize=10)
+
+
+def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
+    """Draw the screw axis through point ``r`` with direction ``s`` as a dash-dot line."""
+    s = check_shape(as_float_array(s, "s"), "s", (3,))
+    r = check_shape(as_float_array(r, "r"), "r", (3,))
+    if np.linalg.norm(s) < 1e-12:
+        raise ValueError(f"s must be a non-zero 3-vector, got {s.tolist()}")
+    u = s / np.linalg.norm(s)
+    ends = np.stack([r - 0.5 * length * u, r + 0.5 * length * u])
+    ax.plot(*ends.T, color=color, ls="-.", lw=1.2)
+    ax.scatter(*r, color=color, s=12)
+    if label is not None:
+        ax.text(*ends[1], label, color=color)
+
+
+def draw_screw_motion(ax, Ts, every=1, length=0.2):
+    """Draw the path of the origin over a batch of transforms ``Ts`` (N, 4, 4), and every k-th frame."""
+    Ts = check_transform(np.asarray(Ts, dtype=float), "Ts")
+    if Ts.ndim != 3:
+        raise ValueError(f"Ts must be a batch of transforms of shape (N, 4, 4), got shape {Ts.shape}")
+    ax.plot(*Ts[:, :3, 3].T, color="0.4", lw=1)
+    for T in Ts[::every]:
+        draw_frame(ax, T, length=length, alpha=0.6)
