@@ -5,6 +5,10 @@ teaches (SymPy input gives SymPy output), fast where it computes (NumPy input
 gives float64 arrays, vectorised over a leading batch axis). SI units:
 metres and radians. Screws and twists are ordered [angular; linear].
 """
+from . import joints, robots
+from .mobility import Mobility, grubler_kutzbach, mobility
+from .screws import Screw, Twist, Wrench
+from .systems import ScrewSystem
 from .transforms import (
     exp_twist,
     homogeneous,
@@ -34,6 +38,15 @@ def __getattr__(name):
 
 
 __all__ = [
+    "Mobility",
+    "Screw",
+    "ScrewSystem",
+    "Twist",
+    "Wrench",
+    "grubler_kutzbach",
+    "joints",
+    "mobility",
+    "robots",
     "exp_twist",
     "homogeneous",
     "inv",

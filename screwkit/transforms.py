@@ -140,10 +140,10 @@ def rot_axis(axis, theta):
 def _unit_vector(value, name):
     v = _vector3(value, name)
     if isinstance(v, sp.MatrixBase):
-        norm = sp.sqrt(sum(e**2 for e in v))
-        if norm == 0:
+        norm_squared = sp.trigsimp(sum(e**2 for e in v))  # cos^2 + sin^2 is 1
+        if norm_squared == 0:
             raise ValueError(f"{name} must be a non-zero 3-vector, got {list(v)}")
-        return v if norm == 1 else v / norm
+        return v if norm_squared == 1 else v / sp.sqrt(norm_squared)
     if v.ndim != 1:
         raise ValueError(f"{name} must be a single 3-vector of shape (3,), got shape {v.shape}")
     norm = np.linalg.norm(v)

@@ -1,0 +1,153 @@
+"""The mobility of a parallel manipulator by screw theory, in four steps.
+
+Zeroth step (the user's): each limb as a list of (s, r, h) joint screws in the fixed frame.
+1. limb twist systems (LTS): the span of each limb's joint twists;
+2. limb wrench systems (LWS): the wrenches reciprocal to each LTS (the limb's constraints);
+3. platform wrench system (PWS): the span of all the LWS (every constraint on the platform);
+4. platform twist system (PTS): the twists reciprocal to the PWS (the platform's motions).
+
+The mobility is the order of the PTS; its twists give the type (e.g. 3T1R) and directions.
+
+>>> import sympy as sp
+>>> x, y, z = [1, 0, 0], [0, 1, 0], [0, 0, 1]
+>>> cartesian = [[(x, [0, 0, 0], sp.oo)], [(y, [0, 0, 0], sp.oo)], [(z, [0, 0, 0], sp.oo)]]
+>>> sk_result = mobility([limb + [(x, [0, 0, 0], sp.oo), (y, [0, 0, 0], sp.oo), (z, [0, 0, 0], sp.oo)]
+...                       for limb in cartesian])
+>>> sk_result.number, sk_result.type, sk_result.directions
+(3, '3T', ['Tx', 'Ty', 'Tz'])
+"""
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from . import _exact
+from .screws import Screw, Twist, Wrench
+from .systems import ScrewSystem
+
+__all__ = ["mobility", "Mobility", "grubler_kutzbach"]
+
+_SWAP = [3, 4, 5, 0, 1, 2]
+_AXES = "xyz"
+
+
+def grubler_kutzbach(links, joints, freedoms, order=6):
+    """The Grübler–Kutzbach count M = order (links - joints - 1) + sum of joint freedoms.
+
+    ``links`` includes the base and the platform; ``order`` is 6 in space, 3 in the plane.
+    """
+    for name, value in (("links", links), ("joints", joints), ("freedoms", freedoms), ("order", order)):
+        if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+            raise TypeError(f"{name} must be a non-negative integer, got {value!r}")
+    return order * (links - joints - 1) + freedoms
+
+
+@dataclass
+class Mobility:
+    """The result of :func:`mobility`: the number, type and directions of the platform's motions."""
+
+    number: int
+    type: str
+    directions: list
+    limb_twist_systems: list
+    limb_wrench_systems: list
+    platform_wrench_system: ScrewSystem
+    platform_twist_system: ScrewSystem
+    joints_per_limb: list
+    limb_twist_ranks: list
+    grubler_kutzbach: int
+    redundant_constraints: int
+    idle_mobility: int
+    notes: list = field(default_factory=list)
+
+    def as_dict(self):
+        """The paper's mobility dictionary: {'Number': ..., 'Type': ..., 'Direction': [...]}."""
+        return {"Number": self.number, "Type": self.type, "Direction": list(self.directions)}
+
+
+def _check_limbs(limbs):
+    if not isinstance(limbs, (list, tuple)) or not limbs:
+        raise ValueError(f"limbs must be a non-empty list of limbs, got {limbs!r}")
+    for i, limb in enumerate(limbs):
+        if not isinstance(limb, (list, tuple)) or not limb:
+            raise ValueError(f"limb {i} must be a non-empty list of (s, r, h) joint screws, got {limb!r}")
+        for j, joint in enumerate(limb):
+            if isinstance(joint, Screw):
+                if isinstance(joint, Wrench):
+                    raise TypeError(f"limb {i}, joint {j} is a wrench; a limb is made of joint twists")
+                continue
+            if not isinstance(joint, (list, tuple)) or len(joint) != 3:
+                raise TypeError(f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got {joint!r}")
+
+
+def _twist(joint, i, j):
+    if isinstance(joint, Screw):
+        return Twist(joint.vector)
+    try:
+        return Twist.from_axis(*joint)
+    except (TypeError, ValueError) as error:
+        raise type(error)(f"limb {i}, joint {j}: {error}") from None
+
+
+def _describe(vector):
+    """'Tx' / 'Rz' for an axis-aligned twist through the origin, else its coordinates."""
+    nonzero = [k for k, e in enumerate(vector) if e != 0]
+    if len(nonzero) == 1 and vector[nonzero[0]] == 1:
+        k = nonzero[0]
+        return ("R" if k < 3 else "T") + _AXES[k % 3]
+    return str(list(vector))
+
+
+def mobility(limbs):
+    """The mobility of a parallel manipulator whose limbs are lists of (s, r, h) joint screws.
+
+    Parameters
+    ----------
+    limbs : list of limbs; each limb a list of (s, r, h) triples in the fixed frame
+        (s, r: 3-vectors, SymPy symbols allowed; h: 0, a finite pitch, or sympy.oo), or Twists.
+
+    Returns
+    -------
+    Mobility with ``number``, ``type`` (e.g. '3T1R'), ``directions`` (e.g. ['Tx', 'Ty', 'Tz', 'Rz']),
+    the four screw systems, and the Grübler–Kutzbach comparison.
+    """
+    _check_limbs(limbs)
+    twists = [[_twist(joint, i, j) for j, joint in enumerate(limb)] for i, limb in enumerate(limbs)]
+
+    # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own symbols.
+    lts, lws, lts_ranks = [], [], []
+    for limb in twists:
+        F = _exact.Field([e for t in limb for e in t.vector])
+        M = F.matrix([list(t.vector) for t in limb])
+        independent = F.independent_rows(M)
+        N = _exact.null_space(F, M.extract(list(range(M.shape[0])), _SWAP), independent)
+        wrenches = [Wrench([F.to_sympy(e) for e in row]) for row in N.to_list()]
+        lts.append(ScrewSystem(limb, kind=Twist, _field=F, _rank=len(independent)))
+        lts_ranks.append(len(independent))
+        lws.append(ScrewSystem(wrenches, kind=Wrench, _rank=len(wrenches), _basis=wrenches))
+
+    # Steps 3 and 4: the platform's constraints, and the motions they leave.
+    constraints = [w for system in lws for w in system.screws]
+    pws = ScrewSystem(constraints, kind=Wrench)
+    pws = ScrewSystem(pws.basis(), kind=Wrench, _field=pws.field, _rank=pws.rank, _basis=pws.basis())
+    pts = pws.reciprocal()
+    return _result(limbs, lts, lws, pws, pts, lts_ranks)
+
+
+def _result(limbs, lts, lws, pws, pts, lts_ranks):
+    basis = pts.basis()
+    rotations = sp.Matrix([list(t.primary) for t in basis]).rank() if basis else 0
+    translations = len(basis) - rotations
+    kind = (f"{translations}T" if translations else "") + (f"{rotations}R" if rotations else "") or "0"
+    names = [_describe(t.vector) for t in basis]
+    directions = sorted(names, key=lambda n: (not n.startswith("T"), n))
+    joints = [len(limb) for limb in limbs]
+    links = sum(j - 1 for j in joints) + 2
+    gk = grubler_kutzbach(links, sum(joints), sum(joints))
+    redundant = sum(w.rank for w in lws) - pws.rank
+    idle = sum(j - r for j, r in zip(joints, lts_ranks))
+    return Mobility(
+        number=len(basis), type=kind, directions=directions, limb_twist_systems=lts,
+        limb_wrench_systems=lws, platform_wrench_system=pws, platform_twist_system=pts,
+        joints_per_limb=joints, limb_twist_ranks=lts_ranks, grubler_kutzbach=gk,
+        redundant_constraints=redundant, idle_mobility=idle,
+    )

@@ -1,0 +1,151 @@
+"""The catalogue of mechanisms and robots used in the course.
+
+Parallel manipulators are returned in the mobility paper's zeroth-step format: a list of
+limbs, each a list of (s, r, h) joint screws in the fixed frame, with the paper's symbols
+for lengths (a, b, L, R, ...), actuated displacements d_i and joint angles theta_ij.
+"""
+import sympy as sp
+
+from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
+from .transforms import rot_axis, rotx, roty, rotz
+
+__all__ = ["pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
+           "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH"]
+
+X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
+
+#: The paper's Grübler–Kutzbach inputs (links with base and platform, joints, freedoms) and counts.
+PAPER_GRUBLER_KUTZBACH = {
+    "3-PRRR": {"links": 11, "joints": 12, "freedoms": 12, "mobility": 0},
+    "3-PR(Pa)R": {"links": 17, "joints": 21, "freedoms": 21, "mobility": -9},
+    "4-PRRU": {"links": 14, "joints": 16, "freedoms": 20, "mobility": 2},
+    "6-UPS": {"links": 14, "joints": 18, "freedoms": 36, "mobility": 6},
+}
+
+
+def _symbols(names, limbs, first, last):
+    """theta_{i j} for limbs i = 1..limbs and joints j = first..last."""
+    return [[sp.Symbol(f"theta_{i}{j}") for j in range(first, last + 1)] for i in range(1, limbs + 1)]
+
+
+def pm_3prrr():
+    """Tripteron, 3-PRRR: limb i has four parallel axes along X, Y, Z (paper §3.2.1)."""
+    a, b, Ly, Lz = sp.symbols("a b L_y L_z")
+    d = sp.symbols("d_1:4")
+    theta = _symbols("theta", 3, 2, 3)
+    axes, rotations = [X, Y, Z], [rotx, roty, rotz]
+    offsets = [Y, Z, X]  # the links AB, BC lie along these axes before they turn
+    bases = [sp.Matrix([d[0], Ly, 0]), sp.Matrix([0, d[1], Lz]), sp.Matrix([0, 0, d[2]])]
+    limbs = []
+    for i in range(3):
+        A = bases[i]
+        B = A + rotations[i](theta[i][0]) * (a * offsets[i])
+        C = B + rotations[i](theta[i][1]) * (b * offsets[i])
+        s = axes[i]
+        limbs.append(prismatic(s, A) + revolute(s, A) + revolute(s, B) + revolute(s, C))
+    return limbs
+
+
+def pm_3prpar():
+    """STAR-like 3-PR(Pa)R: P and R along X, a parallelogram, and a last R along X (§3.2.2).
+
+    Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
+    """
+    L, b = sp.symbols("L b")
+    d = sp.symbols("d_1:4")
+    theta = _symbols("theta", 3, 2, 3)
+    limbs = []
+    for i in range(3):
+        t2, t3 = theta[i]
+        K = rotx(t2)                      # the plane of the parallelogram
+        N = rotx(t2) * roty(t3)           # the direction of its long sides
+        A0, A1, A2 = sp.Matrix([d[i], 0, 0]), sp.Matrix([d[i] - b / 2, 0, 0]), sp.Matrix([d[i] + b / 2, 0, 0])
+        side = N * sp.Matrix([L, 0, 0])
+        limb = (prismatic(X, A0) + revolute(X, A0)
+                + parallelogram(K * Y, A1, A2, A1 + side, A2 + side)
+                + revolute(X, A0 + side))
+        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
+    return limbs
+
+
+def pm_4prru():
+    """4-PRRU with Schönflies motion (§3.2.3, after Kong and Gosselin).
+
+    P along Z; three R axes parallel to Rx(alpha) Y (the first one at A, tilted by alpha
+    so it is not perpendicular to P); a U whose second axis is Z. Limbs are turned by
+    90-degree steps about Z. The paper's code places C with the rotation N applied twice
+    and never uses theta_i3; here B and C follow theta_i2 and theta_i3 about the tilted axis.
+    """
+    R, a, b, alpha = sp.symbols("R a b alpha")
+    d = sp.symbols("d_1:5")
+    theta = _symbols("theta", 4, 2, 3)
+    K = rotx(alpha)
+    w = K * Y  # the common direction of the three parallel R axes
+    limbs = []
+    for i in range(4):
+        A = sp.Matrix([R, 0, d[i]])
+        B = A + rot_axis(w, theta[i][0]) * sp.Matrix([a, 0, 0])
+        C = B + rot_axis(w, theta[i][1]) * sp.Matrix([b, 0, 0])
+        limb = prismatic(Z, A) + revolute(w, A) + revolute(w, B) + universal(w, Z, C)
+        limbs.append(rotate_limb(limb, rotz(sp.pi * i / 2)))
+    return limbs
+
+
+def pm_6ups():
+    """6-UPS (Gough–Stewart type): U at A, P along the leg, S at B; limbs turned by 60 degrees (§3.2.4)."""
+    R = sp.Symbol("R")
+    d = sp.symbols("d_1:7")
+    theta = _symbols("theta", 6, 1, 2)
+    limbs = []
+    for i in range(6):
+        t1, t2 = theta[i]
+        frame = rotx(t1) * roty(t2)          # the leg's frame after the U joint
+        A = sp.Matrix([R, 0, 0])
+        leg = frame * Z
+        B = A + d[i] * leg
+        limb = (universal(X, rotx(t1) * Y, A) + prismatic(leg, A)
+                + spherical(B, axes=[frame * X, frame * Y, frame * Z]))
+        limbs.append(rotate_limb(limb, rotz(sp.pi * i / 3)))
+    return limbs
+
+
+def planar_3rrr():
+    """Planar 3-RRR: three RRR limbs with all axes along Z (3 motions in the plane: 2T1R)."""
+    a, b = sp.symbols("a b")
+    theta = _symbols("theta", 3, 1, 2)
+    limbs = []
+    for i in range(3):
+        A = sp.Matrix([1, 0, 0])
+        B = A + rotz(theta[i][0]) * sp.Matrix([a, 0, 0])
+        C = B + rotz(theta[i][1]) * sp.Matrix([b, 0, 0])
+        limb = revolute(Z, A) + revolute(Z, B) + revolute(Z, C)
+        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
+    return limbs
+
+
+def pm_3rps():
+    """3-RPS: R tangent to the base circle, P along the leg, S on the platform (1T2R)."""
+    R = sp.Symbol("R")
+    d = sp.symbols("d_1:4")
+    theta = [sp.Symbol(f"theta_{i}") for i in range(1, 4)]
+    limbs = []
+    for i in range(3):
+        A = sp.Matrix([R, 0, 0])
+        leg = rotx(theta[i]) * Z
+        limb = revolute(X, A) + prismatic(leg, A) + spherical(A + d[i] * leg)
+        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
+    return limbs
+
+
+def spherical_3rrr():
+    """Spherical 3-RRR (agile eye type): every joint axis passes through the origin (3R)."""
+    theta = _symbols("theta", 3, 1, 2)
+    limbs = []
+    for i in range(3):
+        t1, t2 = theta[i]
+        s1 = Z
+        s2 = rotz(t1) * X
+        s3 = rotz(t1) * rot_axis(X, t2) * Y
+        limb = revolute(s1, O) + revolute(s2, O) + revolute(s3, O)
+        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
+    return limbs

@@ -1,0 +1,155 @@
+"""Screws, twists and wrenches: exact 6-vectors ordered [angular; linear].
+
+A screw with axis direction s through the point r and pitch h is
+$ = (s; r x s + h s), and (0; s) for h = oo. A twist is (w; v), a wrench (f; m).
+The reciprocal product $1 @ $2 = s1 . s0_2 + s0_1 . s2 is, for a twist and a
+wrench, the instantaneous power.
+
+>>> import sympy as sp
+>>> t = Twist.from_axis([0, 0, 1], [1, 0, 0], 0)      # revolute about z through (1, 0, 0)
+>>> t.vector.T
+Matrix([[0, 0, 1, 0, -1, 0]])
+>>> w = Wrench.from_axis([0, 0, 1], [0, 0, 0], sp.oo)  # a couple about z
+>>> t @ w
+1
+"""
+import sympy as sp
+
+from ._checks import as_sympy_matrix, describe
+
+__all__ = ["Screw", "Twist", "Wrench"]
+
+
+def _is_infinite_pitch(h):
+    return h is sp.oo or (isinstance(h, float) and h == float("inf"))
+
+
+class Screw:
+    """A screw as an exact 6-vector [angular; linear]; see Twist and Wrench for the typed kinds."""
+
+    kind = "screw"
+
+    def __init__(self, vector):
+        self.vector = as_sympy_matrix(vector, "vector", (6, 1))
+
+    # --- constructors -------------------------------------------------------------
+    @classmethod
+    def from_axis(cls, s, r, h):
+        """The screw of axis direction ``s`` (any non-zero length) through ``r`` with pitch ``h``.
+
+        Parameters
+        ----------
+        s, r : 3-sequences of numbers or SymPy expressions (r is ignored when h = oo)
+        h : 0 (revolute), a finite pitch (helical, m/rad), or ``sympy.oo`` (prismatic)
+        """
+        s = as_sympy_matrix(s, "s", (3, 1))
+        if all(e == 0 for e in s):
+            raise ValueError(f"s must be a non-zero direction, got {list(s)}")
+        if _is_infinite_pitch(h):
+            return cls(sp.Matrix.vstack(sp.zeros(3, 1), s))
+        if isinstance(h, str) or h is None:
+            raise TypeError(f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}")
+        h = as_sympy_matrix([h], "h", (1, 1))[0]
+        r = as_sympy_matrix(r, "r", (3, 1))
+        return cls(sp.Matrix.vstack(s, r.cross(s) + h * s))
+
+    @classmethod
+    def from_vector(cls, vector):
+        """The screw with the given 6 coordinates [angular; linear]."""
+        return cls(vector)
+
+    # --- geometry ----------------------------------------------------------------
+    @property
+    def primary(self):
+        """The first (angular) 3-vector: s for a twist's w, f for a wrench."""
+        return self.vector[:3, 0]
+
+    @property
+    def secondary(self):
+        """The second (linear) 3-vector: r x s + h s."""
+        return self.vector[3:, 0]
+
+    @property
+    def pitch(self):
+        """h = (s . s0) / (s . s); ``sympy.oo`` when s = 0."""
+        s, s0 = self.primary, self.secondary
+        ss = s.dot(s)
+        if sp.simplify(ss) == 0:
+            return sp.oo
+        return sp.simplify(s.dot(s0) / ss)
+
+    @property
+    def direction(self):
+        """The direction of the axis (not normalised): s, or s0 for an infinite pitch."""
+        s = self.primary
+        return self.secondary if all(sp.simplify(e) == 0 for e in s) else s
+
+    @property
+    def point(self):
+        """The point of the axis nearest the origin, s x s0 / (s . s); None for an infinite pitch."""
+        s, s0 = self.primary, self.secondary
+        ss = sp.simplify(s.dot(s))
+        if ss == 0:
+            return None
+        return (s.cross(s0) / ss).applyfunc(sp.simplify)
+
+    # --- algebra -----------------------------------------------------------------
+    def _same_kind(self, other, operation):
+        if not isinstance(other, Screw):
+            return False
+        if type(other) is not type(self):
+            raise TypeError(
+                f"cannot {operation} a {self.kind} and a {other.kind}: they live in different spaces "
+                "(use @ for the reciprocal product)"
+            )
+        return True
+
+    def __neg__(self):
+        return type(self)(-self.vector)
+
+    def __add__(self, other):
+        if not self._same_kind(other, "add"):
+            return NotImplemented
+        return type(self)(self.vector + other.vector)
+
+    def __sub__(self, other):
+        if not self._same_kind(other, "subtract"):
+            return NotImplemented
+        return type(self)(self.vector - other.vector)
+
+    def __mul__(self, scalar):
+        if isinstance(scalar, (Screw, sp.MatrixBase, list, tuple, str)):
+            return NotImplemented
+        return type(self)(self.vector * sp.sympify(scalar))
+
+    __rmul__ = __mul__
+
+    def __matmul__(self, other):
+        """The reciprocal product s . s0' + s0 . s' (for a twist and a wrench: the power)."""
+        if not isinstance(other, Screw):
+            return NotImplemented
+        return sp.expand(self.primary.dot(other.secondary) + self.secondary.dot(other.primary))
+
+    def __eq__(self, other):
+        return type(other) is type(self) and self.vector == other.vector
+
+    def __hash__(self):
+        return hash((type(self), tuple(self.vector)))
+
+    def __repr__(self):
+        return f"{type(self).__name__}({list(self.vector)})"
+
+    def _repr_latex_(self):
+        return f"$\\mathrm{{{type(self).__name__}}}\\;{sp.latex(self.vector.T)}^T$"
+
+
+class Twist(Screw):
+    """A twist (w; v): a joint's motion, or a platform's instantaneous motion."""
+
+    kind = "twist"
+
+
+class Wrench(Screw):
+    """A wrench (f; m): a force and moment, or a constraint a limb applies."""
+
+    kind = "wrench"

@@ -1,0 +1,106 @@
+"""Mobility of parallel manipulators: the paper's four mechanisms and classic ones."""
+import random
+
+import pytest
+import sympy as sp
+
+import screwkit as sk
+from screwkit.mobility import grubler_kutzbach, mobility
+from screwkit.transforms import rot_axis
+
+PAPER = {  # the paper's mobility dictionaries (its notebook's outputs, and Table/eqs. 4-6)
+    "pm_3prrr": {"Number": 3, "Type": "3T", "Direction": ["Tx", "Ty", "Tz"]},
+    "pm_3prpar": {"Number": 3, "Type": "3T", "Direction": ["Tx", "Ty", "Tz"]},
+    "pm_4prru": {"Number": 4, "Type": "3T1R", "Direction": ["Tx", "Ty", "Tz", "Rz"]},
+    "pm_6ups": {"Number": 6, "Type": "3T3R", "Direction": ["Tx", "Ty", "Tz", "Rx", "Ry", "Rz"]},
+}
+
+
+@pytest.mark.parametrize("name", sorted(PAPER))
+def test_the_paper_mechanisms_have_the_paper_mobility(name):
+    assert mobility(getattr(sk.robots, name)()).as_dict() == PAPER[name]
+
+
+def test_3prpar_limb_has_seven_joint_screws_but_rank_five():
+    m = mobility(sk.robots.pm_3prpar())
+    assert m.joints_per_limb == [7, 7, 7] and m.limb_twist_ranks == [5, 5, 5]
+    assert m.idle_mobility == 6  # two idle freedoms in each parallelogram limb
+
+
+def test_3prrr_systems_as_in_the_paper():
+    m = mobility(sk.robots.pm_3prrr())
+    assert [s.rank for s in m.limb_wrench_systems] == [2, 2, 2]  # each LWS is a couple 2-system
+    assert m.platform_wrench_system.rank == 3 and m.redundant_constraints == 3
+    couples = [list(w.vector) for w in m.platform_wrench_system.basis()]
+    assert couples == [[0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, 1]]
+
+
+def test_limb_wrenches_are_reciprocal_to_limb_twists():
+    m = mobility(sk.robots.pm_4prru())
+    for twists, wrenches in zip(m.limb_twist_systems, m.limb_wrench_systems):
+        for t in twists.screws:
+            for w in wrenches.basis():
+                assert sp.simplify(t @ w) == 0
+
+
+@pytest.mark.parametrize("name, expected", [("planar_3rrr", ("2T1R", ["Tx", "Ty", "Rz"])),
+                                            ("spherical_3rrr", ("3R", ["Rx", "Ry", "Rz"]))])
+def test_classic_mechanisms(name, expected):
+    m = mobility(getattr(sk.robots, name)())
+    assert (m.type, m.directions) == expected
+
+
+def test_grubler_kutzbach_reproduces_the_paper_counts():
+    for name, row in sk.robots.PAPER_GRUBLER_KUTZBACH.items():
+        assert grubler_kutzbach(row["links"], row["joints"], row["freedoms"]) == row["mobility"], name
+    # Counted as serial limbs of one-freedom screws, with the redundant constraints and the
+    # idle freedoms that screw theory finds, the corrected count gives the true mobility.
+    for name in ("pm_3prrr", "pm_4prru", "pm_3prpar"):
+        m = mobility(getattr(sk.robots, name)())
+        assert m.grubler_kutzbach + m.redundant_constraints - m.idle_mobility == m.number, name
+
+
+def test_mobility_does_not_depend_on_the_fixed_frame():
+    # A rational rotation (3-4-5 triangles) and a shift: exact, like the symbolic model.
+    R = sp.Matrix([[sp.Rational(3, 5), -sp.Rational(4, 5), 0], [sp.Rational(4, 5), sp.Rational(3, 5), 0], [0, 0, 1]])
+    R = R * sp.Matrix([[1, 0, 0], [0, sp.Rational(5, 13), -sp.Rational(12, 13)], [0, sp.Rational(12, 13), sp.Rational(5, 13)]])
+    p = sp.Matrix([1, -2, 3])
+    limbs = sk.robots.pm_4prru()
+    moved = [[(R * sp.Matrix(s), R * sp.Matrix(r) + p, h) for s, r, h in limb] for limb in limbs]
+    before, after = mobility(limbs), mobility(moved)
+    assert (after.number, after.type) == (before.number, before.type)
+
+
+def test_numeric_configurations_agree_with_the_symbolic_answer():
+    limbs = sk.robots.pm_3prrr()
+    symbols = sorted(set().union(*(sp.Matrix(r).free_symbols for limb in limbs for _, r, _ in limb)), key=str)
+    rng = random.Random(3)
+    for _ in range(2):
+        values = {s: sp.Rational(rng.randint(1, 90), rng.randint(7, 19)) for s in symbols}
+        numeric = [[(s, sp.Matrix(r).subs(values), h) for s, r, h in limb] for limb in limbs]
+        assert mobility(numeric).as_dict() == PAPER["pm_3prrr"]
+
+
+def test_a_singular_configuration_differs_from_the_generic_one():
+    # Tripteron limb 1 folded (theta_12 = theta_13): still 3T, the limbs stay independent.
+    # A planar 3-RRR with every limb stretched straight loses a motion: the answer says so.
+    limbs = sk.robots.planar_3rrr()
+    theta = {sp.Symbol(f"theta_{i}{j}"): 0 for i in (1, 2, 3) for j in (1, 2)}
+    stretched = [[(s, sp.Matrix(r).subs(theta), h) for s, r, h in limb] for limb in limbs]
+    assert mobility(stretched).number < mobility(limbs).number
+
+
+@pytest.mark.parametrize(
+    "limbs, error, message",
+    [
+        ([], ValueError, "limbs must be a non-empty list"),
+        ([[]], ValueError, "limb 0 must be a non-empty list"),
+        ([[([0, 0, 1], [0, 0, 0])]], TypeError, r"limb 0, joint 0 must be an \(s, r, h\) triple"),
+        ([[([0, 0, 0], [0, 0, 0], 0)]], ValueError, "limb 0, joint 0: s must be a non-zero direction"),
+        ([[([0, 0, 1], [0, 0, 0], "p")]], TypeError, "limb 0, joint 0: h must be a pitch"),
+        ([[sk.Wrench.from_axis([0, 0, 1], [0, 0, 0], 0)]], TypeError, "is a wrench"),
+    ],
+)
+def test_bad_limbs_are_named(limbs, error, message):
+    with pytest.raises(error, match=message):
+        mobility(limbs)
