@@ -3,25 +3,30 @@
 Two ideas keep it exact and fast (the pyScrew4Mobility paper spends its time
 simplifying trigonometric expressions inside ``Matrix.nullspace``):
 
-* **Rank is decided generically and exactly.** Entries are evaluated at random
-  rational points (sin and cos of each angle from the rational half-angle
-  substitution t -> (2t/(1+t^2), (1-t^2)/(1+t^2)), so sin^2 + cos^2 = 1 holds) and
-  the rank is computed in exact arithmetic over Q or Q(sqrt(3), ...). No
-  floating-point round-off is involved; the seed is fixed, so runs are identical.
-* **Bases are computed in a field of rational functions** whose generators are the
-  symbols and the sin/cos/tan atoms, without trigonometric simplification, from a set
-  of rows that is independent at the random points. Those rows have the generic rank in
-  the field too, so no identity such as sin^2 + cos^2 = 1 is ever needed.
+* **Rank is decided generically and exactly.** Every entry is a rational function of
+  generators: the symbols, the sin/cos/tan atoms and square roots such as sqrt(3). The
+  rank is computed exactly, modulo a large prime, at random points that respect every
+  relation: sin and cos of each angle come from the half-angle substitution
+  t -> (2t/(1+t^2), (1-t^2)/(1+t^2)), and sqrt(q) is a square root of q modulo the prime.
+  A minor that is nonzero there is nonzero as a function (Schwartz–Zippel), and a zero
+  minor at random points of a 61-bit field means zero with overwhelming probability. No
+  floating-point round-off is involved, and the seed is fixed, so runs are identical.
+* **Bases are computed in the field of rational functions** of those generators, from
+  rows that are independent at the sample points: those rows have full rank in the field,
+  so no identity such as sin^2 + cos^2 = 1 or sqrt(3)^2 = 3 is ever needed, and none of
+  SymPy's trigonometric simplification runs.
 """
 import random
 
 import sympy as sp
-from sympy import QQ
+from sympy import GF, QQ
+from sympy.ntheory import sqrt_mod
 from sympy.polys.matrices import DomainMatrix
 
 _TRIG = (sp.sin, sp.cos, sp.tan)
 _SAMPLE_POINTS = 2
 _SEED = 20201
+_PRIME = 2**61 - 1  # a Mersenne prime: arithmetic modulo it is exact and fast
 
 
 def _exact_numbers(e):
@@ -29,17 +34,18 @@ def _exact_numbers(e):
     return e.xreplace({f: sp.Rational(f) for f in e.atoms(sp.Float)}) if e.has(sp.Float) else e
 
 
-def _square_roots(exprs):
+def _roots(exprs):
+    """The numeric roots, such as sqrt(3), that occur in the expressions."""
     roots = set()
     for e in exprs:
         for p in e.atoms(sp.Pow):
             if p.base.is_Rational and p.exp.is_Rational and not p.exp.is_Integer:
-                roots.add(p.base ** sp.Rational(1, p.exp.q))
-    return sorted(roots, key=sp.default_sort_key)
+                roots.add(p)
+    return roots
 
 
 class Field:
-    """The field QQ<roots>(symbols, trig atoms) that holds every entry of one problem."""
+    """The field QQ(generators) that holds every entry of one problem, and its sample points."""
 
     def __init__(self, exprs):
         exprs = [_exact_numbers(sp.sympify(e)) for e in exprs]
@@ -52,16 +58,15 @@ class Field:
             other = {f for f in e.atoms(sp.Function) if not isinstance(f, _TRIG)}
             if other:
                 raise TypeError(f"screw coordinates may use sin, cos and tan only, got {sorted(map(str, other))}")
-        self.trig = sorted(trig, key=sp.default_sort_key)
-        self.dummy = {a: sp.Dummy(f"g{k}") for k, a in enumerate(self.trig)}
+        atoms = sorted(trig | _roots(exprs), key=sp.default_sort_key)
+        self.dummy = {a: sp.Dummy(f"g{k}") for k, a in enumerate(atoms)}
         self.atom = {d: a for a, d in self.dummy.items()}
         symbols = set().union(*(e.xreplace(self.dummy).free_symbols for e in exprs)) if exprs else set()
         self.symbols = sorted(symbols, key=sp.default_sort_key)
-        roots = _square_roots(exprs)
-        self.ground = QQ.algebraic_field(*roots) if roots else QQ
-        self.K = self.ground.frac_field(*self.symbols) if self.symbols else self.ground
+        self.K = QQ.frac_field(*self.symbols) if self.symbols else QQ
         self._cache = {}
-        self._points = self._sample_points()
+        self.prime, self._points = self._sample_points()
+        self.GF = GF(self.prime)
 
     def element(self, e):
         e = _exact_numbers(sp.sympify(e))
@@ -81,31 +86,38 @@ class Field:
         return self.K.to_sympy(element)
 
     def _sample_points(self):
-        """Exact random values of the generators, with sin^2 + cos^2 = 1 for each angle."""
+        """A prime, and exact random values of the generators modulo it that keep every relation."""
         rng = random.Random(_SEED)
-        angles = {a.args[0] for a in self.trig}
+        roots = [a for a in self.atom.values() if isinstance(a, sp.Pow)]
+        prime = _PRIME
+        while True:  # the prime must have the square roots we need
+            root_values = {}
+            for r in roots:
+                q = r.base ** r.exp.p  # r = q**(1/n) with q rational
+                values = sqrt_mod(int(q.p) * pow(int(q.q), -1, prime) % prime, prime, all_roots=False) \
+                    if r.exp.q == 2 else None
+                if values is None:
+                    break
+                root_values[r] = values
+            if len(root_values) == len(roots):
+                break
+            prime = int(sp.prevprime(prime))
+        angles = sorted({a.args[0] for a in self.atom.values() if isinstance(a, _TRIG)}, key=sp.default_sort_key)
         points = []
         for _ in range(_SAMPLE_POINTS):
-            trig_values = {}
-            for angle in sorted(angles, key=sp.default_sort_key):
-                t = sp.Rational(rng.randint(1, 97), rng.randint(98, 211)) * rng.choice((1, -1))
-                s, c = 2 * t / (1 + t**2), (1 - t**2) / (1 + t**2)
-                trig_values.update({sp.sin(angle): s, sp.cos(angle): c, sp.tan(angle): s / c})
-            values = []
-            for g in self.symbols:
-                if g in self.atom:
-                    values.append(self.ground.from_sympy(trig_values[self.atom[g]]))
-                else:
-                    values.append(self.ground.from_sympy(sp.Rational(rng.randint(-500, 500), rng.randint(7, 101))))
-            points.append(values)
-        return points
+            value = dict(root_values)
+            for angle in angles:
+                t = rng.randrange(2, prime - 1)
+                inverse = pow(1 + t * t, -1, prime)
+                sin, cos = 2 * t * inverse % prime, (1 - t * t) * inverse % prime
+                value[sp.sin(angle)], value[sp.cos(angle)] = sin, cos
+                value[sp.tan(angle)] = sin * pow(cos, -1, prime) % prime if cos else 0
+            points.append([value[self.atom[g]] if g in self.atom else rng.randrange(1, prime)
+                           for g in self.symbols])
+        return prime, points
 
     def independent_rows(self, M):
-        """Indices of a largest set of rows of M that are independent for generic values.
-
-        Found exactly at random rational points; using only these rows, the field never
-        needs an identity such as sin^2 + cos^2 = 1 to see the true rank.
-        """
+        """Indices of a largest set of rows of M that are independent for generic values."""
         rows, cols = M.shape
         if rows == 0:
             return []
@@ -115,7 +127,9 @@ class Field:
         entries = M.to_list()
         for values in self._points:
             numbers = [[self._evaluate(e, values) for e in row] for row in entries]
-            pivots = DomainMatrix(numbers, (rows, cols), self.ground).transpose().rref()[1]
+            if any(n is None for row in numbers for n in row):
+                continue  # a denominator vanishes at this point: use the other one
+            pivots = DomainMatrix(numbers, (rows, cols), self.GF).transpose().rref()[1]
             if len(pivots) > len(best):
                 best = list(pivots)
             if len(best) == min(rows, cols):
@@ -123,13 +137,29 @@ class Field:
         return best
 
     def rank(self, M):
-        """The generic rank of a DomainMatrix over this field (exact, at random points)."""
+        """The generic rank of a DomainMatrix over this field."""
         return len(self.independent_rows(M))
 
     def _evaluate(self, element, values):
+        """element(values) modulo the prime, or None where its denominator vanishes."""
         if not element:
-            return self.ground.zero
-        return self.ground.quo(element.numer(*values), element.denom(*values))
+            return self.GF.zero
+        numerator = _evaluate_polynomial(element.numer, values, self.prime)
+        denominator = _evaluate_polynomial(element.denom, values, self.prime)
+        if denominator == 0:
+            return None
+        return self.GF(numerator * pow(denominator, -1, self.prime))
+
+
+def _evaluate_polynomial(polynomial, values, prime):
+    total = 0
+    for monomial, coefficient in polynomial.terms():
+        term = int(coefficient.numerator) * pow(int(coefficient.denominator), -1, prime)
+        for value, exponent in zip(values, monomial):
+            if exponent:
+                term = term * pow(value, exponent, prime)
+        total = (total + term) % prime
+    return total
 
 
 def reduced_basis(field, M, rows=None):
