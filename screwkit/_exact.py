@@ -162,12 +162,40 @@ def _evaluate_polynomial(polynomial, values, prime):
     return total
 
 
+def _polynomial_rows(field, M, rows):
+    """The chosen rows of M with their denominators cleared: a matrix over the polynomial ring."""
+    K = field.K
+    if K is QQ:
+        return M.extract(rows, list(range(M.shape[1])))
+    ring = K.get_ring()
+    polynomial = []
+    for i in rows:
+        row = M.to_list()[i]
+        denominator = ring.one
+        for e in row:
+            denominator = denominator.lcm(e.denom) if e else denominator
+        polynomial.append([(e.numer * denominator.exquo(e.denom)) if e else ring.zero for e in row])
+    return DomainMatrix(polynomial, (len(rows), M.shape[1]), ring)
+
+
+def _normalised(field, R, pivots):
+    """Rows of a fraction-free echelon form divided by their pivots, over the field."""
+    K = field.K
+    out = []
+    for i, j in enumerate(pivots):
+        row = R.to_list()[i]
+        pivot = K.convert(row[j])
+        out.append([K.quo(K.convert(e), pivot) for e in row])
+    return DomainMatrix(out, (len(out), R.shape[1]), K)
+
+
 def reduced_basis(field, M, rows=None):
     """A canonical basis of the row space of M (DomainMatrix over ``field``), as a DomainMatrix.
 
     ``rows``: indices of generically independent rows (found if not given). Reduced from
     the right: each row has a 1 at its last nonzero coordinate and zeros in the other rows
-    there, so couples and forces read like (0, 0, 0, 0, 0, 1).
+    there, so couples and forces read like (0, 0, 0, 0, 0, 1). Elimination is fraction-free
+    over the polynomial ring (no gcds); the single division by each pivot comes last.
     """
     cols = M.shape[1]
     rows = field.independent_rows(M) if rows is None else rows
@@ -176,7 +204,9 @@ def reduced_basis(field, M, rows=None):
     if len(rows) == cols:  # the whole space: the identity is its reduced basis
         return DomainMatrix.eye(cols, field.K)
     flip = list(reversed(range(cols)))
-    R, pivots = M.extract(rows, flip).rref()
+    P = _polynomial_rows(field, M, rows).extract(list(range(len(rows))), flip)
+    R, _, pivots = P.rref_den()
+    R = _normalised(field, R, pivots)
     order = sorted(range(len(pivots)), key=lambda i: -pivots[i])
     return R.extract(order, flip)
 
@@ -189,5 +219,6 @@ def null_space(field, M, rows=None):
         return DomainMatrix.eye(cols, field.K)
     if len(rows) == cols:  # full rank: only the zero vector
         return DomainMatrix.zeros((0, cols), field.K)
-    N = M.extract(rows, list(range(cols))).nullspace()
+    N = _polynomial_rows(field, M, rows).nullspace(divide_last=False)
+    N = DomainMatrix([[field.K.convert(e) for e in row] for row in N.to_list()], N.shape, field.K)
     return reduced_basis(field, N, list(range(N.shape[0])))

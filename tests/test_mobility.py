@@ -104,3 +104,17 @@ def test_a_singular_configuration_differs_from_the_generic_one():
 def test_bad_limbs_are_named(limbs, error, message):
     with pytest.raises(error, match=message):
         mobility(limbs)
+
+
+def test_3prpar_limb_wrenches_equal_the_papers():
+    # The paper's notebook prints each LWS as (0, 0, 0, m_x, m_y, 1) with tan(theta_i2) terms.
+    t = [sp.Symbol(f"theta_{i}2") for i in (1, 2, 3)]
+    paper = [
+        [0, 0, 0, 0, -sp.tan(t[0]), 1],
+        [0, 0, 0, sp.sqrt(3) * sp.tan(t[1]) / 2, sp.tan(t[1]) / 2, 1],
+        [0, 0, 0, -sp.sqrt(3) * sp.tan(t[2]) / 2, sp.tan(t[2]) / 2, 1],
+    ]
+    m = mobility(sk.robots.pm_3prpar())
+    for system, expected in zip(m.limb_wrench_systems, paper):
+        (wrench,) = system.basis()
+        assert sp.simplify(wrench.vector - sp.Matrix(expected)) == sp.zeros(6, 1)
