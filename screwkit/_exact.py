@@ -185,7 +185,8 @@ def _normalised(field, R, pivots):
     for i, j in enumerate(pivots):
         row = R.to_list()[i]
         pivot = K.convert(row[j])
-        out.append([K.quo(K.convert(e), pivot) for e in row])
+        out.append([K.one if k == j else K.quo(K.convert(e), pivot) if e else K.zero
+                    for k, e in enumerate(row)])
     return DomainMatrix(out, (len(out), R.shape[1]), K)
 
 
