@@ -174,7 +174,12 @@ def _polynomial_rows(field, M, rows):
         denominator = ring.one
         for e in row:
             denominator = denominator.lcm(e.denom) if e else denominator
-        polynomial.append([(e.numer * denominator.exquo(e.denom)) if e else ring.zero for e in row])
+        cleared = [(e.numer * denominator.exquo(e.denom)) if e else ring.zero for e in row]
+        content = ring.zero
+        for e in cleared:  # divide out the row's common factor to keep the entries small
+            if e:
+                content = e if not content else content.gcd(e)
+        polynomial.append([e.exquo(content) if e else e for e in cleared])
     return DomainMatrix(polynomial, (len(rows), M.shape[1]), ring)
 
 

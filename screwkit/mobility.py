@@ -59,6 +59,23 @@ class Mobility:
     idle_mobility: int
     notes: list = field(default_factory=list)
 
+    def summary(self):
+        """The four systems and the counts as plain text, one screw per line."""
+        def block(title, systems):
+            lines = [title]
+            for i, system in enumerate(systems, 1):
+                prefix = f"  limb {i}: " if len(systems) > 1 else "  "
+                vectors = [str(list(s.vector)) for s in system.basis()] or ["(none)"]
+                lines.append(prefix + f"{system.rank}-system " + vectors[0])
+                lines += [" " * len(prefix + f"{system.rank}-system ") + v for v in vectors[1:]]
+            return lines
+        lines = block("Limb twist systems (LTS)", self.limb_twist_systems)
+        lines += block("Limb wrench systems (LWS)", self.limb_wrench_systems)
+        lines += block("Platform wrench system (PWS)", [self.platform_wrench_system])
+        lines += block("Platform twist system (PTS)", [self.platform_twist_system])
+        lines.append(f"Mobility: {self.number} ({self.type}) {self.directions}")
+        return "\n".join(lines)
+
     def as_dict(self):
         """The paper's mobility dictionary: {'Number': ..., 'Type': ..., 'Direction': [...]}."""
         return {"Number": self.number, "Type": self.type, "Direction": list(self.directions)}
