@@ -5,7 +5,8 @@ teaches (SymPy input gives SymPy output), fast where it computes (NumPy input
 gives float64 arrays, vectorised over a leading batch axis). SI units:
 metres and radians. Screws and twists are ordered [angular; linear].
 """
-from . import joints, robots
+from . import ik, jacobians, joints, robots
+from .chains import Chain, Convention, Joint, Link, textbook
 from .mobility import Mobility, grubler_kutzbach, mobility
 from .screws import Screw, Twist, Wrench
 from .systems import ScrewSystem
@@ -38,12 +39,19 @@ def __getattr__(name):
 
 
 __all__ = [
+    "Chain",
+    "Convention",
+    "Joint",
+    "Link",
+    "textbook",
     "Mobility",
     "Screw",
     "ScrewSystem",
     "Twist",
     "Wrench",
     "grubler_kutzbach",
+    "ik",
+    "jacobians",
     "joints",
     "mobility",
     "robots",

@@ -3,13 +3,17 @@
 Parallel manipulators are returned in the mobility paper's zeroth-step format: a list of
 limbs, each a list of (s, r, h) joint screws in the fixed frame, with the paper's symbols
 for lengths (a, b, L, R, ...), actuated displacements d_i and joint angles theta_ij.
+Serial arms are :class:`~screwkit.chains.Chain` objects (SI units).
 """
+import numpy as np
 import sympy as sp
+
+from .chains import Chain, Link
 
 from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .transforms import rot_axis, rotx, roty, rotz
 
-__all__ = ["pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
+__all__ = ["puma560", "pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
            "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH"]
 
 X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
@@ -149,3 +153,30 @@ def spherical_3rrr():
         limb = revolute(s1, O) + revolute(s2, O) + revolute(s3, O)
         limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
     return limbs
+
+
+def puma560():
+    """The PUMA 560 in standard DH, Corke's parameters (the PUMA paper's Table 2), in metres.
+
+    As in the paper there is no pedestal (d1 = 0: frame 0 is on the shoulder axis);
+    d3 = 0.15005 m (Table 2 rounds it to 0.15). Joint limits are those of Corke's model
+    (Robotics Toolbox, from Wang & Chen 1991): q2 in [-45, 225] deg and q3 in [-225, 45] deg.
+    Named configurations: 'zero', 'ready', 'stretch', 'nominal' (the paper's eqs. 32-35).
+    """
+    deg = np.pi / 180
+    links = [
+        Link.revolute(d=0, a=0, alpha=sp.pi / 2, qlim=(-160 * deg, 160 * deg)),
+        Link.revolute(d=0, a=0.4318, alpha=0, qlim=(-45 * deg, 225 * deg)),
+        Link.revolute(d=0.15005, a=0.0203, alpha=-sp.pi / 2, qlim=(-225 * deg, 45 * deg)),
+        Link.revolute(d=0.4318, a=0, alpha=sp.pi / 2, qlim=(-110 * deg, 170 * deg)),
+        Link.revolute(d=0, a=0, alpha=-sp.pi / 2, qlim=(-100 * deg, 100 * deg)),
+        Link.revolute(d=0, a=0, alpha=0, qlim=(-266 * deg, 266 * deg)),
+    ]
+    robot = Chain(links, name="PUMA 560")
+    robot.configurations = {
+        "zero": np.zeros(6),
+        "ready": np.array([0, np.pi / 2, -np.pi / 2, 0, 0, 0]),
+        "stretch": np.array([0, 0, -np.pi / 2, 0, 0, 0]),
+        "nominal": np.array([0, np.pi / 4, -np.pi, 0, np.pi / 4, 0]),
+    }
+    return robot
