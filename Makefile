@@ -34,9 +34,15 @@ lab: $(STAMP)
 	@test -x $(BIN)/jupyter-lab || $(BIN)/python -m pip install --quiet "jupyterlab>=4,<5"
 	$(BIN)/jupyter-lab notebooks
 
-## make bench: the speed tables of benchmarks/
-bench: $(STAMP)
-	@for script in benchmarks/*.py; do echo "== $$script"; $(BIN)/python $$script || exit 1; done
+## make bench: the speed tables of benchmarks/ (in .venv-bench, with the Robotics Toolbox beside screwkit)
+BENCH_STAMP := .venv-bench/.installed
+$(BENCH_STAMP): requirements.txt benchmarks/requirements.txt pyproject.toml
+	@test -x .venv-bench/bin/python || $(PYTHON) -m venv .venv-bench
+	.venv-bench/bin/python -m pip install --quiet --requirement benchmarks/requirements.txt
+	@touch $(BENCH_STAMP)
+
+bench: $(BENCH_STAMP)
+	@for script in benchmarks/*.py; do echo "== $$script"; .venv-bench/bin/python $$script || exit 1; done
 
 clean:
 	rm -rf _build

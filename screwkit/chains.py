@@ -28,6 +28,8 @@ from sympy.simplify.fu import TR10i
 from ._checks import as_float_array, check_transform, describe
 from .transforms import exp_twist
 
+_CHUNK = 8192  # poses per chunk of a batch
+
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook"]
 
 
@@ -293,9 +295,12 @@ class Chain:
             return np.array([top[0:4], top[4:8], top[8:12], [0.0, 0.0, 0.0, 1.0]])
         angles = np.ascontiguousarray(angles.T)
         T = np.empty((4, 4, q.shape[0]))
-        for k, value in enumerate(batch(angles, np.cos(angles), np.sin(angles))):
-            T[k // 4, k % 4] = value
         T[3] = np.array([0.0, 0.0, 0.0, 1.0])[:, None]
+        # in chunks, so that the temporaries stay in the cache and memory is reused
+        for start in range(0, q.shape[0], _CHUNK):
+            part = angles[:, start:start + _CHUNK]
+            for k, value in enumerate(batch(part, np.cos(part), np.sin(part))):
+                T[k // 4, k % 4, start:start + _CHUNK] = value
         return T.transpose(2, 0, 1)
 
     def link_matrices(self, q):

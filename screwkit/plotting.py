@@ -9,7 +9,7 @@ import numpy as np
 
 from ._checks import as_float_array, check_shape, check_transform
 
-__all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion"]
+__all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain"]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
@@ -73,3 +73,25 @@ def draw_screw_motion(ax, Ts, every=1, length=0.2):
     ax.plot(*Ts[:, :3, 3].T, color="0.4", lw=1)
     for T in Ts[::every]:
         draw_frame(ax, T, length=length, alpha=0.6)
+
+
+def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1.0, frame_length=0.1):
+    """Draw a serial chain at the joint vector q (n,) as a stick figure.
+
+    Links join the frame origins; each joint axis is a short black segment; the tool frame is
+    drawn, and with ``frames`` every link frame too. Returns the (n + 1, 4, 4) frames.
+    """
+    T = chain.frames(q)
+    if T.ndim != 3:
+        raise ValueError(f"q must be one joint vector of shape ({chain.n},), got a batch")
+    origins = T[:, :3, 3]
+    ax.plot(*origins.T, "-o", color=color, lw=4, ms=5, alpha=alpha, label=label,
+            solid_capstyle="round")
+    axes_at = T[:-1] if chain.convention.value == "standard" else T[1:]
+    for frame in axes_at:  # joint i moves about z of frame i-1 (standard DH)
+        z, o = frame[:3, 2], frame[:3, 3]
+        ax.plot(*np.stack([o - 0.04 * z, o + 0.04 * z]).T, color="k", lw=2.5, alpha=alpha)
+    for k, frame in enumerate(T):
+        if frames or k == len(T) - 1:
+            draw_frame(ax, frame, label=str(k) if frames else None, length=frame_length, alpha=alpha)
+    return T

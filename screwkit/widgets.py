@@ -7,7 +7,7 @@ from . import plotting
 from ._checks import check_transform
 from .transforms import screw_motion
 
-__all__ = ["screw_motion_slider"]
+__all__ = ["screw_motion_slider", "joint_sliders"]
 
 
 def screw_motion_slider(s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2))):
@@ -31,3 +31,30 @@ def screw_motion_slider(s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2))):
 
     slider = widgets.FloatSlider(value=90.0, min=-360.0, max=360.0, step=5.0, description="theta (deg)")
     return widgets.interactive(draw, theta_deg=slider)
+
+
+def joint_sliders(chain, q=None, limits=((-0.9, 0.9), (-0.9, 0.9), (-0.5, 1.0)), draw=None):
+    """One slider per joint (degrees, within the joint limits) that redraws the chain.
+
+    ``draw(ax, q)`` may add to each drawing (for example the pose's numbers). Returns the
+    widget to display.
+    """
+    q = np.zeros(chain.n) if q is None else chain.check_q(q)
+    qlim = np.degrees(np.clip(chain.qlim, -np.pi, np.pi))
+
+    def redraw(**degrees):
+        values = np.radians([degrees[f"q{i + 1}"] for i in range(chain.n)])
+        ax = plotting.axes3d(limits)
+        plotting.draw_chain(ax, chain, values)
+        position = chain.fk(values)[:3, 3]
+        ax.set_title(f"{chain.name}: tool at ({position[0]:.3f}, {position[1]:.3f}, {position[2]:.3f}) m")
+        if draw is not None:
+            draw(ax, values)
+        plt.show()
+
+    sliders = {
+        f"q{i + 1}": widgets.FloatSlider(value=float(np.degrees(q[i])), min=float(low), max=float(high),
+                                         step=1.0, description=f"q{i + 1} (deg)")
+        for i, (low, high) in enumerate(qlim)
+    }
+    return widgets.interactive(redraw, **sliders)
