@@ -57,6 +57,19 @@ for i, link in enumerate(puma.links, start=1):
           f"{float(link.alpha):>7.4f} {low:>6.0f}..{high:<6.0f}")
 """),
 md(r"""
+The frames of the table, drawn at $q = 0$ (x red, y green, z blue; joint $i$ turns about the blue
+$z$ axis of frame $i-1$, marked by a black segment). Frames 4, 5 and 6 share the wrist centre,
+and frames 0 and 1 the shoulder:
+"""),
+code("""
+# NBVAL_IGNORE_OUTPUT
+ax = sk.plotting.axes3d(((-0.2, 0.6), (-0.4, 0.4), (-0.2, 0.6)), figsize=(6, 6))
+sk.plotting.draw_chain(ax, puma, np.zeros(6), frames=True, frame_length=0.1)
+ax.view_init(elev=25, azim=-55)
+ax.set_title("PUMA 560 at q = 0: the DH frames {0} ... {6}")
+plt.show()
+"""),
+md(r"""
 The joint limits are those of Corke's model (from Wang and Chen, 1991). The paper's Table 1 lists
 other ranges, $q_2 \in [-245°, 45°]$ and $q_3 \in [-45°, 225°]$, taken from a source that uses
 **Lee's** joint conventions rather than Paul's (see below: the two differ in the sign of every
