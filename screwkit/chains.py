@@ -339,6 +339,19 @@ class Chain:
         frames[..., self.n, :, :] = frames[..., self.n, :, :] @ self.tool
         return frames
 
+    def joint_axes(self, q):
+        """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3).
+
+        Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
+        """
+        frames = self.frames(q)
+        if self.convention is Convention.STANDARD:
+            joint_frames = frames[..., :-1, :, :]
+        else:
+            joint_frames = frames[..., 1:, :, :].copy()
+            joint_frames[..., -1, :, :] = joint_frames[..., -1, :, :] @ np.linalg.inv(self.tool)
+        return joint_frames[..., :3, 2], joint_frames[..., :3, 3]
+
     # ---- Jacobians ------------------------------------------------------------------------
 
     def geometric_jacobian(self, q):
@@ -360,21 +373,10 @@ class Chain:
         return self.fk(np.zeros(self.n))
 
     def screw_axes(self):
-        """The joint screws at q = 0 in the base frame, (n, 6) rows [omega; v].
-
-        Revolute: (z, p x z) for the joint axis z through the point p; prismatic: (0, z).
+        """The joint screws at q = 0 in the base frame, (n, 6) rows [omega; v]: the columns of
+        the space Jacobian at q = 0. Revolute: (z, p x z) for the axis z through p; prismatic: (0, z).
         """
-        frames = self.frames(np.zeros(self.n))
-        axes = []
-        for i, link in enumerate(self.links):
-            # standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i
-            frame = frames[i] if self.convention is Convention.STANDARD else frames[i] @ _modified_joint_frame(link)
-            z, p = frame[:3, 2], frame[:3, 3]
-            if link.joint is Joint.REVOLUTE:
-                axes.append(np.concatenate([z, np.cross(p, z)]))
-            else:
-                axes.append(np.concatenate([np.zeros(3), z]))
-        return np.array(axes)
+        return self.space_jacobian(np.zeros(self.n)).T
 
     def fk_poe(self, q):
         """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M, q (n,) -> (4, 4)."""
@@ -385,23 +387,6 @@ class Chain:
         for S, qi in zip(self.screw_axes(), q):
             T = T @ exp_twist(S, qi)
         return T @ self.home()
-
-    def dh_table(self):
-        """The DH table as rows (joint, theta, d, a, alpha, qlim) of strings, for printing."""
-        rows = []
-        for i, (link, q) in enumerate(zip(self.links, self.q_symbols), start=1):
-            theta = q + link.offset if link.joint is Joint.REVOLUTE else link.theta
-            d = link.d if link.joint is Joint.REVOLUTE else q + link.offset
-            limits = "-" if link.qlim is None else f"[{np.degrees(link.qlim[0]):.0f}, {np.degrees(link.qlim[1]):.0f}] deg"
-            rows.append((str(i), str(theta), str(d), str(link.a), str(_exact(link.alpha)), limits))
-        return rows
-
-
-def _modified_joint_frame(link):
-    """In modified DH, frame i sits at Rx(alpha) Tx(a) from frame i-1 (before the joint moves)."""
-    alpha, a = float(sp.sympify(link.alpha)), float(sp.sympify(link.a))
-    c, s = np.cos(alpha), np.sin(alpha)
-    return np.array([[1, 0, 0, a], [0, c, -s, 0], [0, s, c, 0], [0, 0, 0, 1.0]])
 
 
 def _exact_matrix(T):

@@ -21,7 +21,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import as_float_array, check_transform, describe
-from .chains import Chain, Joint
+from .chains import Chain, Convention, Joint
 from .transforms import inv
 
 __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "puma560_ik", "puma560_ik_all",
@@ -91,7 +91,7 @@ def _puma_geometry(robot):
                 for link, alpha in zip(robot.links, expected_alpha))
         and value[0][1] == 0 and value[1][0] == 0 and value[3][1] == value[4][1] == value[5][1] == 0
         and value[4][0] == 0 and all(v[2] == 0 for v in value)
-        and robot.convention.value == "standard"
+        and robot.convention is Convention.STANDARD
     )
     if not ok:
         raise ValueError(

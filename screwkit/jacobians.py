@@ -9,19 +9,9 @@ Two Jacobians, with names that say which:
 """
 import numpy as np
 
-from .chains import Convention, Joint
+from .chains import Joint
 
 __all__ = ["geometric_jacobian", "space_jacobian"]
-
-
-def _joint_axes(chain, frames):
-    """Joint axes z_i and points o_i in the base frame, each (..., n, 3)."""
-    if chain.convention is Convention.STANDARD:
-        joint_frames = frames[..., :-1, :, :]
-    else:
-        joint_frames = frames[..., 1:, :, :].copy()
-        joint_frames[..., -1, :, :] = joint_frames[..., -1, :, :] @ np.linalg.inv(chain.tool)
-    return joint_frames[..., :3, 2], joint_frames[..., :3, 3]
 
 
 def geometric_jacobian(chain, q):
@@ -30,9 +20,8 @@ def geometric_jacobian(chain, q):
     Column i is (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic
     one, with p the end-effector point.
     """
-    frames = chain.frames(q)
-    z, o = _joint_axes(chain, frames)
-    p = frames[..., -1:, :3, 3]
+    z, o = chain.joint_axes(q)
+    p = chain.fk(q)[..., None, :3, 3]
     revolute = np.array([j is Joint.REVOLUTE for j in chain.joints])[:, None]
     v = np.where(revolute, np.cross(z, p - o), z)
     omega = np.where(revolute, z, 0.0)
@@ -45,8 +34,7 @@ def space_jacobian(chain, q):
     Column i is the twist of joint i in the base frame: (z_i; o_i x z_i) for a revolute
     joint (the velocity of the body point at the base origin), (0; z_i) for a prismatic one.
     """
-    frames = chain.frames(q)
-    z, o = _joint_axes(chain, frames)
+    z, o = chain.joint_axes(q)
     revolute = np.array([j is Joint.REVOLUTE for j in chain.joints])[:, None]
     omega = np.where(revolute, z, 0.0)
     v = np.where(revolute, np.cross(o, z), z)

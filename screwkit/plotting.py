@@ -87,9 +87,7 @@ def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1
     origins = T[:, :3, 3]
     ax.plot(*origins.T, "-o", color=color, lw=4, ms=5, alpha=alpha, label=label,
             solid_capstyle="round")
-    axes_at = T[:-1] if chain.convention.value == "standard" else T[1:]
-    for frame in axes_at:  # joint i moves about z of frame i-1 (standard DH)
-        z, o = frame[:3, 2], frame[:3, 3]
+    for z, o in zip(*chain.joint_axes(q)):
         ax.plot(*np.stack([o - 0.04 * z, o + 0.04 * z]).T, color="k", lw=2.5, alpha=alpha)
     for k, frame in enumerate(T):
         if frames or k == len(T) - 1:

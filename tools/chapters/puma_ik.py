@@ -211,7 +211,8 @@ closed form gives all eight.
 
 All eight solutions for a batch of poses is one vectorised call (`puma560_ik_all`, shape
 (N, 8, 6), NaN where a pose is out of reach): about 30 ms for 10,000 poses on this project's
-machines, against 0.44 ms per solution for the toolbox's `ikine_a` (see `benchmarks/`).
+machines, against about 0.26 ms per solution for the toolbox's `ikine_a` measured beside it
+(see `benchmarks/bench_puma.py`).
 """),
 code("""
 # NBVAL_IGNORE_OUTPUT
