@@ -262,46 +262,89 @@ class Chain:
                          for link in self.links])
 
     @cached_property
-    def _fk_functions(self):
-        """The exact product compiled once, (for one configuration, for a batch), as functions
-        of the joint angles theta = q + offset (revolute) or of q (prismatic).
-
-        The batch function takes the cosines and sines of the angles: trigonometric functions
-        of arrays cost far more than products, so each is computed once.
-        """
+    def _angle_chain(self):
+        """This chain with the revolute offsets moved into the joint symbols theta_i = q_i + offset_i."""
         angles = sp.symbols(f"theta1:{self.n + 1}", real=True)
         chain = Chain([Link(k.joint, k.d, k.a, k.alpha, k.theta, 0 if k.joint is Joint.REVOLUTE else k.offset)
                        for k in self.links], self.convention, self.base, self.tool)
         chain.q_symbols = angles
-        T = chain.fk_symbolic(simplify=True)
-        entries = [T[i, j] for i in range(3) for j in range(4)]
-        one = sp.lambdify([angles], entries, modules="math", cse=True)
-        c = sp.symbols(f"c1:{self.n + 1}")
-        s = sp.symbols(f"s1:{self.n + 1}")
-        trig = {sp.cos(t): ci for t, ci in zip(angles, c)} | {sp.sin(t): si for t, si in zip(angles, s)}
-        # cos(theta2 + theta3) -> c2 c3 - s2 s3: products of arrays are cheap, cosines are not
-        sums = {f: sp.expand_trig(f) for e in entries for f in e.atoms(sp.cos, sp.sin) if f not in trig}
-        batch_entries = [e.xreplace(sums).xreplace(trig) for e in entries]
-        batch = sp.lambdify([angles, c, s], batch_entries, modules="numpy", cse=True)
-        return one, batch
+        return chain
+
+    @cached_property
+    def _fk_functions(self):
+        """The exact end-effector pose compiled once (rows 0..2 of T, 12 entries)."""
+        T = self._angle_chain.fk_symbolic(simplify=True)
+        return _compile([T[i, j] for i in range(3) for j in range(4)], self._angle_chain.q_symbols)
+
+    @cached_property
+    def _frames_functions(self):
+        """Every frame base @ A_1 ... A_k (k = 0..n, the last with the tool) compiled once."""
+        entries = []
+        for T in self._symbolic_frames()[:-1] + [self._angle_chain.fk_symbolic()]:
+            entries += [T[i, j] for i in range(3) for j in range(4)]
+        return _compile(entries, self._angle_chain.q_symbols)
+
+    @cached_property
+    def _axes_functions(self):
+        """The joint axes (z_i, o_i, i = 1..n) and the end-effector point p compiled once, 6n + 3 entries."""
+        frames = self._symbolic_frames()
+        joint_frames = frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
+        entries = [T[i, j] for T in joint_frames for j in (2, 3) for i in range(3)]
+        end = self._angle_chain.fk_symbolic()
+        return _compile(entries + list(end[:3, 3]), self._angle_chain.q_symbols)
+
+    def _symbolic_frames(self):
+        """base @ A_1 ... A_k for k = 0..n (no tool), in the angles theta_i."""
+        base = _exact_matrix(self.base)
+        return [(base * self._angle_chain.fk_symbolic(upto=k)).applyfunc(sp.expand) for k in range(self.n + 1)]
+
+    def _evaluate(self, functions, q, out=None, rows=None):
+        """Run compiled ``functions`` (see :func:`_compile`) at q.
+
+        q (n,) gives the list of entries (floats). A batch Q (N, n) writes entry k into
+        ``out[rows[k]]`` (out of shape (M, N), the batch last: contiguous per entry) and returns out.
+        """
+        one, batch = functions
+        angles = q + self._revolute_offsets
+        if q.ndim == 1:
+            return one(angles.tolist())
+        angles = np.ascontiguousarray(angles.T)
+        # in chunks, so that the temporaries stay in the cache and memory is reused
+        for start in range(0, q.shape[0], _CHUNK):
+            part = angles[:, start:start + _CHUNK]
+            for row, value in zip(rows, batch(part, np.cos(part), np.sin(part))):
+                out[row, start:start + _CHUNK] = value
+        return out
 
     def fk(self, q):
         """The end-effector pose: q (n,) -> (4, 4); a batch Q (N, n) -> (N, 4, 4) (m)."""
         q = self.check_q(q)
-        one, batch = self._fk_functions
-        angles = q + self._revolute_offsets
         if q.ndim == 1:
-            top = one(angles.tolist())
-            return np.array([top[0:4], top[4:8], top[8:12], [0.0, 0.0, 0.0, 1.0]])
-        angles = np.ascontiguousarray(angles.T)
+            T = np.eye(4)
+            T[:3] = np.reshape(self._evaluate(self._fk_functions, q), (3, 4))
+            return T
         T = np.empty((4, 4, q.shape[0]))
         T[3] = np.array([0.0, 0.0, 0.0, 1.0])[:, None]
-        # in chunks, so that the temporaries stay in the cache and memory is reused
-        for start in range(0, q.shape[0], _CHUNK):
-            part = angles[:, start:start + _CHUNK]
-            for k, value in enumerate(batch(part, np.cos(part), np.sin(part))):
-                T[k // 4, k % 4, start:start + _CHUNK] = value
+        self._evaluate(self._fk_functions, q, T.reshape(16, -1), range(12))
         return T.transpose(2, 0, 1)
+
+    def frames(self, q):
+        """The base frame and every link frame: q (n,) -> (n + 1, 4, 4), (N, n) -> (N, n + 1, 4, 4).
+
+        Frame k is base @ A_1 ... A_k; the last frame also carries the tool.
+        """
+        q = self.check_q(q)
+        count = self.n + 1
+        if q.ndim == 1:
+            T = np.zeros((count, 4, 4))
+            T[:, :3] = np.reshape(self._evaluate(self._frames_functions, q), (count, 3, 4))
+            T[:, 3, 3] = 1.0
+            return T
+        T = np.zeros((count, 4, 4, q.shape[0]))
+        T[:, 3, 3] = 1.0
+        rows = [16 * (k // 12) + k % 12 for k in range(12 * count)]
+        self._evaluate(self._frames_functions, q, T.reshape(16 * count, -1), rows)
+        return T.transpose(3, 0, 1, 2)
 
     def link_matrices(self, q):
         """The numeric link transforms A_i(q_i): q (n,) -> (n, 4, 4); (N, n) -> (N, n, 4, 4)."""
@@ -326,31 +369,14 @@ class Chain:
                 Ai[..., 2, 0], Ai[..., 2, 1], Ai[..., 2, 2], Ai[..., 2, 3] = st * sa, ct * sa, ca, ca * d
         return A
 
-    def frames(self, q):
-        """The base frame and every link frame: q (n,) -> (n + 1, 4, 4), (N, n) -> (N, n + 1, 4, 4).
-
-        Frame k is base @ A_1 ... A_k; the last frame also carries the tool.
-        """
-        A = self.link_matrices(q)
-        frames = np.empty(A.shape[:-3] + (self.n + 1, 4, 4))
-        frames[..., 0, :, :] = self.base
-        for k in range(self.n):
-            frames[..., k + 1, :, :] = frames[..., k, :, :] @ A[..., k, :, :]
-        frames[..., self.n, :, :] = frames[..., self.n, :, :] @ self.tool
-        return frames
-
     def joint_axes(self, q):
         """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3).
 
         Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
         """
-        frames = self.frames(q)
-        if self.convention is Convention.STANDARD:
-            joint_frames = frames[..., :-1, :, :]
-        else:
-            joint_frames = frames[..., 1:, :, :].copy()
-            joint_frames[..., -1, :, :] = joint_frames[..., -1, :, :] @ np.linalg.inv(self.tool)
-        return joint_frames[..., :3, 2], joint_frames[..., :3, 3]
+        from .jacobians import joint_axes
+
+        return joint_axes(self, q)
 
     # ---- Jacobians ------------------------------------------------------------------------
 
@@ -365,6 +391,15 @@ class Chain:
         from .jacobians import space_jacobian
 
         return space_jacobian(self, q)
+
+    def manipulability(self, q, rows="all"):
+        """Yoshikawa's sqrt(det(J J^T)) of the geometric Jacobian: () or (N,); 0.0 where singular.
+
+        rows: 'all', 'position' (the rows v) or 'orientation' (the rows omega).
+        """
+        from .jacobians import manipulability
+
+        return manipulability(self, q, rows)
 
     # ---- product of exponentials ----------------------------------------------------------
 
@@ -387,6 +422,25 @@ class Chain:
         for S, qi in zip(self.screw_axes(), q):
             T = T @ exp_twist(S, qi)
         return T @ self.home()
+
+
+def _compile(entries, angles):
+    """Compile exact expressions of joint angles (and prismatic variables) once.
+
+    Returns (one, batch): ``one(angles)`` takes a list of n floats (math module, no array
+    overhead); ``batch(angles, cosines, sines)`` takes (n, M) arrays. Trigonometric functions
+    of arrays cost far more than products, so the batch version is given each cos/sin once
+    and sums of angles are expanded into products (cos(t2 + t3) -> c2 c3 - s2 s3).
+    """
+    n = len(angles)
+    one = sp.lambdify([angles], entries, modules="math", cse=True)
+    c = sp.symbols(f"c1:{n + 1}")
+    s = sp.symbols(f"s1:{n + 1}")
+    trig = {sp.cos(t): ci for t, ci in zip(angles, c)} | {sp.sin(t): si for t, si in zip(angles, s)}
+    sums = {f: sp.expand_trig(f) for e in entries for f in e.atoms(sp.cos, sp.sin) if f not in trig}
+    batch_entries = [sp.sympify(e).xreplace(sums).xreplace(trig) for e in entries]
+    batch = sp.lambdify([angles, c, s], batch_entries, modules="numpy", cse=True)
+    return one, batch
 
 
 def _exact_matrix(T):

@@ -9,7 +9,8 @@ import numpy as np
 
 from ._checks import as_float_array, check_shape, check_transform
 
-__all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain"]
+__all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain", "draw_ellipsoid",
+           "draw_planar"]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
@@ -93,3 +94,25 @@ def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1
         if frames or k == len(T) - 1:
             draw_frame(ax, frame, label=str(k) if frames else None, length=frame_length, alpha=alpha)
     return T
+
+
+def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha=0.35):
+    """Draw the ellipsoid centre + axes @ diag(radii) u over unit vectors u (see jacobians.ellipsoid).
+
+    ``scale`` converts the radii to metres on the drawing (e.g. 0.2 m per m/s).
+    """
+    centre = check_shape(as_float_array(centre, "centre"), "centre", (3,))
+    radii = check_shape(as_float_array(radii, "radii"), "radii", (3,))
+    axes = check_shape(as_float_array(axes, "axes"), "axes", (3, 3))
+    u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 37), np.linspace(0, np.pi, 19))
+    sphere = np.stack([np.cos(u) * np.sin(v), np.sin(u) * np.sin(v), np.cos(v)])
+    surface = centre[:, None, None] + scale * np.einsum("ij,j,jkl->ikl", axes, radii, sphere)
+    return ax.plot_surface(*surface, color=color, alpha=alpha, linewidth=0)
+
+
+def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0, 0.0)):
+    """Draw a planar arm (x-y plane) at q (n,) as a 2D stick figure; returns the line."""
+    origins = chain.frames(q)[:, :2, 3] + np.asarray(base, dtype=float)
+    (line,) = ax.plot(*origins.T, "-o", color=color, lw=3, ms=4, alpha=alpha, label=label,
+                      solid_capstyle="round")
+    return line

@@ -13,7 +13,7 @@ from .chains import Chain, Link
 from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .transforms import rot_axis, rotx, roty, rotz
 
-__all__ = ["puma560", "pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
+__all__ = ["puma560", "kawasaki_cx210l", "planar", "pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
            "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH"]
 
 X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
@@ -180,3 +180,48 @@ def puma560():
         "nominal": np.array([0, np.pi / 4, -np.pi, 0, np.pi / 4, 0]),
     }
     return robot
+
+
+def kawasaki_cx210l():
+    """The Kawasaki CX210L 6R arm in standard DH (m), reconstructed from the workspace paper.
+
+    Lengths are the paper's (Table 1): d1 = 0.55, a1 = 0.3, a2 = 1.19, a3 = 0.3, d4 = 1.19,
+    d6 = 0.235. Twists (-90, 0, -90, 90, -90, 0) deg and the offset of 180 deg on joint 2 are
+    the only choice that reproduces the paper's MATLAB validation poses (Table 2, to 0.05 mm):
+    alpha3 = -90 comes from the MATLAB listing (Table 1 prints +90), alpha5 = -90 and alpha6 = 0
+    from Table 1 (the listing has +90 and 180). q2 = 90 deg is the upper arm vertical, as in the
+    paper. No joint limits are set: the paper quotes only the maker's q3 >= -75 deg.
+    Named configurations: 'table2_1', 'table2_2', 'table2_3' (q2 = 30, q3 = -90, -80, -70 deg).
+    """
+    deg = sp.pi / 180
+    links = [
+        Link.revolute(d=0.55, a=0.3, alpha=-90 * deg),
+        Link.revolute(a=1.19, offset=sp.pi),
+        Link.revolute(a=0.3, alpha=-90 * deg),
+        Link.revolute(d=1.19, alpha=90 * deg),
+        Link.revolute(alpha=-90 * deg),
+        Link.revolute(d=0.235),
+    ]
+    robot = Chain(links, name="Kawasaki CX210L")
+    for k, q3 in enumerate((-90, -80, -70), start=1):
+        robot.configurations[f"table2_{k}"] = np.radians([0, 30, q3, 0, 0, 0])
+    return robot
+
+
+def planar(lengths, qlim=None):
+    """An n-link planar arm (n >= 2): revolute joints about z, link i of length lengths[i] (m).
+
+    Standard DH with a_i = lengths[i] and every other parameter zero, so the end effector
+    moves in the x-y plane; the rows 'position' of its geometric Jacobian hold the 2 x n
+    planar Jacobian in their first two rows. ``qlim`` is (n, 2) in rad, or None.
+    """
+    values = np.asarray(lengths, dtype=float) if not isinstance(lengths, str) else None
+    if values is None or values.ndim != 1 or values.size < 2 or not np.all(np.isfinite(values)) \
+            or np.any(values <= 0):
+        raise ValueError(f"lengths must be two or more positive link lengths (m), got {lengths!r}")
+    limits = [None] * values.size if qlim is None else np.asarray(qlim, dtype=float)
+    if qlim is not None and limits.shape != (values.size, 2):
+        raise ValueError(f"qlim must have shape ({values.size}, 2), got shape {limits.shape}")
+    links = [Link.revolute(a=float(a), qlim=None if lim is None else tuple(lim))
+             for a, lim in zip(values, limits)]
+    return Chain(links, name=f"planar {values.size}R")

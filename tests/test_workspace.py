@@ -1,0 +1,56 @@
+"""Workspace sweeps: the two-link annulus, the Kawasaki paper's extents, bad input."""
+import numpy as np
+import pytest
+
+import screwkit as sk
+
+DEG = np.pi / 180
+
+
+def test_two_link_sweep_fills_the_annulus():
+    l1, l2 = 1.0, 0.4
+    s = sk.workspace.sweep(sk.robots.planar([l1, l2]), {1: (-np.pi, np.pi), 2: (-np.pi, np.pi)}, num=(73, 91))
+    assert s.shape == (73, 91) and s.points.shape == (73, 91, 3)
+    inner, outer = s.reach([0, 0, 0])
+    assert np.isclose(inner, l1 - l2) and np.isclose(outer, l1 + l2)
+    # every point is q1, q2 of its grid entry
+    q1, q2 = s.q[..., 0], s.q[..., 1]
+    expected = np.stack([l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)], -1)
+    assert np.allclose(s.points[..., :2], expected, atol=1e-12)
+
+
+def test_kawasaki_conclusion_extents_come_from_a_ten_degree_grid():
+    # the paper's conclusion: x from -2114.7 to 2945.4 mm and "y" (the height z) from -905.4 to 3195.4 mm
+    robot = sk.robots.kawasaki_cx210l()
+    coarse = sk.workspace.sweep(robot, {2: (30 * DEG, 180 * DEG), 3: (-90 * DEG, 60 * DEG)}, num=(16, 16))
+    x, z = (np.array(coarse.extents()[axis]) * 1000 for axis in "xz")
+    assert np.allclose(x, [-2114.7, 2945.4], atol=0.1) and np.allclose(z, [-905.4, 3195.4], atol=0.1)
+    # the full reach from the shoulder is a1 + a2 + sqrt(a3^2 + (d4 + d6)^2) away in the arm plane
+    shoulder = [0.3, 0, 0.55]
+    fine = sk.workspace.sweep(robot, {2: (30 * DEG, 180 * DEG), 3: (-90 * DEG, 60 * DEG)}, num=1501)
+    assert np.isclose(fine.reach(shoulder)[1], 1.19 + np.hypot(0.3, 1.425), atol=1e-6)
+
+
+def test_sweep_determinant_changes_sign_across_the_elbow_singularity():
+    robot = sk.robots.kawasaki_cx210l()
+    s = sk.workspace.sweep(robot, {3: (-80 * DEG, -70 * DEG)}, num=101, q=np.radians([0, 60, 0, 0, 90, 0]))
+    det = s.determinant()
+    crossing = np.flatnonzero(np.diff(np.sign(det)))
+    assert crossing.size == 1
+    assert s.values[0][crossing[0]] <= np.arctan2(-1.19, 0.3) <= s.values[0][crossing[0] + 1]
+
+
+def test_bad_sweeps_are_clear_errors():
+    arm = sk.robots.planar([1.0, 1.0])
+    with pytest.raises(TypeError, match="ranges must be a dict"):
+        sk.workspace.sweep(arm, [(0, 1)])
+    with pytest.raises(ValueError, match="joint numbers 1..2"):
+        sk.workspace.sweep(arm, {0: (0, 1)})
+    with pytest.raises(ValueError, match=r"ranges\[1\] must be \(low, high\)"):
+        sk.workspace.sweep(arm, {1: (0, 1, 2)})
+    with pytest.raises(ValueError, match="num must be an integer >= 2"):
+        sk.workspace.sweep(arm, {1: (0, 1)}, num=1)
+    with pytest.raises(ValueError, match="finite"):
+        sk.workspace.sweep(arm, {1: (0, np.nan)})
+    with pytest.raises(ValueError, match="det J needs a square Jacobian"):
+        sk.workspace.sweep(arm, {1: (0, 1)}).determinant()
