@@ -337,9 +337,10 @@ md(r"""
 1. `sk.Chain.from_table([[0, 0, 1, 0], [0, 0, 0.5, 0]]).fk([0, q2])` has translation
    $(1 + 0.5\cos q_2, 0.5\sin q_2, 0)$.
 2. Joint 1: its axis is $z_0$, and in *ready* the wrist centre is at $(a_3, -d_3, a_2 + d_4)$, at
-   distance $\sqrt{a_3^2 + d_3^2}$ from the axis, so joint 1 does move it, on a small circle. It is
-   the **shoulder singularity** that needs the wrist centre *on* that axis (impossible here, since
-   $d_3 \neq 0$ keeps it at least 0.15 m away); see the inverse-kinematics chapter.
+   distance $\sqrt{a_3^2 + d_3^2}$ from the axis, so joint 1 does move it, on a small circle. The
+   **shoulder singularity** needs the wrist centre at distance exactly $d_3$ from $z_0$ (in the
+   vertical plane through $z_0$ and the axis of joint 2), where joint 1 moves it along a line that joints 2 and 3
+   can also produce; see the Jacobian chapter.
 3. `symbolic_puma(alphas, offset_link=1).fk_symbolic()` and `offset_link=2` differ by nothing once
    $d_2 = d_3$: $A_2$ translates along $z_1$ and $A_3$ along $z_2$, and $z_1 = z_2$ because
    $\alpha_2 = 0$.
