@@ -5,7 +5,7 @@ teaches (SymPy input gives SymPy output), fast where it computes (NumPy input
 gives float64 arrays, vectorised over a leading batch axis). SI units:
 metres and radians. Screws and twists are ordered [angular; linear].
 """
-from . import ik, jacobians, joints, robots, workspace
+from . import ik, jacobians, joints, redundancy, robots, workspace
 from .chains import Chain, Convention, Joint, Link, textbook
 from .mobility import Mobility, grubler_kutzbach, mobility
 from .screws import Screw, Twist, Wrench
@@ -54,6 +54,7 @@ __all__ = [
     "jacobians",
     "joints",
     "mobility",
+    "redundancy",
     "robots",
     "workspace",
     "exp_twist",

@@ -11,9 +11,9 @@ import sympy as sp
 from .chains import Chain, Link
 
 from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
-from .transforms import rot_axis, rotx, roty, rotz
+from .transforms import rot_axis, rotx, roty, rotz, transl
 
-__all__ = ["puma560", "kawasaki_cx210l", "planar", "pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
+__all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
            "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH"]
 
 X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
@@ -225,3 +225,15 @@ def planar(lengths, qlim=None):
     links = [Link.revolute(a=float(a), qlim=None if lim is None else tuple(lim))
              for a, lim in zip(values, limits)]
     return Chain(links, name=f"planar {values.size}R")
+
+
+def two_arm_planar(lengths=(0.3, 0.25, 0.2, 0.15, 0.1), separation=0.4, qlim=None):
+    """A two-arm planar robot: two copies of ``planar(lengths)`` (links l0..l4 as in the thesis)
+    with their bases on the x axis at x = -separation/2 (left) and +separation/2 (right), in m.
+    Returns (left, right)."""
+    half = float(separation) / 2
+    arms = []
+    for name, x in (("left", -half), ("right", half)):
+        arm = planar(lengths, qlim)
+        arms.append(Chain(list(arm.links), base=transl(x, 0, 0), name=f"{name} arm"))
+    return tuple(arms)

@@ -1,0 +1,312 @@
+"""Redundancy resolution for planar arms: paths, resolved-rate IK with the pseudo-inverse, and
+null-space motion that climbs the gradient of Yoshikawa's manipulability.
+
+A planar arm (``sk.robots.planar(lengths)``) has n joints and a 2D task, the point (x, y); with
+n > 2 it is redundant, and the joint rates
+
+    qdot = J+ (xdot_d + K e) + k (I - J+ J) grad w,       J+ = J^T (J J^T)^-1,
+
+follow the path (first term; K e corrects the drift of Euler integration) and, without
+disturbing the end effector, move the arm so that w = sqrt(det(J J^T)) grows (second term).
+Lengths in metres, angles in radians, time in seconds.
+
+>>> import numpy as np, screwkit as sk
+>>> arm = sk.robots.planar([0.4, 0.3, 0.2])
+>>> path = circle((0.5, 0.1), 0.1, duration=5.0, dt=0.01)
+>>> q0 = start_configuration(arm, path.position[0], [0.3, 0.6, 0.6])
+>>> run = resolve(arm, path, q0, null_space_gain=1.0)
+>>> bool(run.error.max() < 1e-4), run.q.shape
+(True, (501, 3))
+"""
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._checks import as_float_array, describe
+from .chains import Chain, Joint
+
+__all__ = ["Path", "circle", "line", "timing", "planar_kinematics", "manipulability_gradient",
+           "pseudo_inverse", "start_configuration", "Resolution", "resolve"]
+
+
+# ---- paths ---------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Path:
+    """A sampled path of the end effector: t (steps,) s, position and velocity (steps, 2) in m, m/s."""
+
+    t: np.ndarray
+    position: np.ndarray
+    velocity: np.ndarray
+    name: str = "path"
+
+    @property
+    def dt(self):
+        return float(self.t[1] - self.t[0])
+
+
+def timing(t, duration, kind="smooth"):
+    """The path parameter s(t) in [0, 1] and its rate ds/dt.
+
+    'smooth': the quintic s = 10 u^3 - 15 u^4 + 6 u^5 (u = t / duration), which starts and ends
+    at rest with zero acceleration; 'constant': s = u.
+    """
+    u = t / duration
+    if kind == "smooth":
+        return 10 * u**3 - 15 * u**4 + 6 * u**5, (30 * u**2 - 60 * u**3 + 30 * u**4) / duration
+    if kind == "constant":
+        return u, np.full_like(u, 1.0 / duration)
+    raise ValueError(f"timing must be 'smooth' or 'constant', got {kind!r}")
+
+
+def _samples(duration, dt):
+    duration = _positive(duration, "duration")
+    dt = _positive(dt, "dt")
+    steps = int(round(duration / dt))
+    if steps < 1 or not np.isclose(steps * dt, duration, rtol=1e-9, atol=0):
+        raise ValueError(f"duration must be a whole number of steps dt, got duration={duration} and dt={dt}")
+    return np.arange(steps + 1) * dt, duration
+
+
+def circle(center, radius, duration, dt, timing_kind="smooth"):
+    """A circle once counter-clockwise, from center + (radius, 0), over ``duration`` seconds."""
+    center = _point(center, "center")
+    radius = _positive(radius, "radius")
+    t, duration = _samples(duration, dt)
+    s, ds = timing(t, duration, timing_kind)
+    angle = 2 * np.pi * s
+    direction = np.stack([np.cos(angle), np.sin(angle)], axis=-1)
+    tangent = np.stack([-np.sin(angle), np.cos(angle)], axis=-1)
+    return Path(t, center + radius * direction, (2 * np.pi * radius * ds)[:, None] * tangent, "circle")
+
+
+def line(start, end, duration, dt, timing_kind="smooth"):
+    """A straight line from ``start`` to ``end`` (points (2,), m) over ``duration`` seconds."""
+    start, end = _point(start, "start"), _point(end, "end")
+    if np.allclose(start, end):
+        raise ValueError(f"start and end must differ, got {start.tolist()} twice")
+    t, duration = _samples(duration, dt)
+    s, ds = timing(t, duration, timing_kind)
+    return Path(t, start + s[:, None] * (end - start), ds[:, None] * (end - start), "line")
+
+
+def _point(value, name):
+    point = as_float_array(value, name)
+    if point.shape != (2,):
+        raise ValueError(f"{name} must be a planar point (x, y), shape (2,), got shape {point.shape}")
+    return point
+
+
+def _positive(value, name):
+    number = as_float_array(value, name)
+    if number.shape != () or number <= 0:
+        raise ValueError(f"{name} must be a positive number, got {value!r}")
+    return float(number)
+
+
+# ---- planar kinematics ---------------------------------------------------------------------
+
+def _lengths(arm):
+    """The link lengths of a planar arm (a Chain of revolute links with d = 0 and alpha = 0)."""
+    if not isinstance(arm, Chain):
+        raise TypeError(f"arm must be a planar Chain (sk.robots.planar), got {describe(arm)}")
+    planar = all(link.joint is Joint.REVOLUTE and float(link.d) == 0 and float(link.alpha) == 0
+                 and float(link.offset) == 0 for link in arm.links)
+    if not planar or not np.allclose(arm.tool, np.eye(4)):
+        raise ValueError(f"arm must be a planar arm of revolute links about z (sk.robots.planar), got {arm!r}")
+    return np.array([float(link.a) for link in arm.links])
+
+
+def _base_2d(arm):
+    """The arm's base as a planar rotation (2, 2) and origin (2,); an error if it is not planar."""
+    B = arm.base
+    if not (np.allclose(B[2], [0, 0, 1, 0]) and np.allclose(B[:2, 2], 0)):
+        raise ValueError("arm.base must be a rotation about z and a translation in the x-y plane")
+    return B[:2, :2], B[:2, 3]
+
+
+def planar_kinematics(lengths, q):
+    """Joint positions and the end-effector Jacobian of a planar arm in its own base frame.
+
+    q (n,) -> points (n + 1, 2) (the base, each joint, the end effector) and J (2, n);
+    a batch (N, n) -> (N, n + 1, 2) and (N, 2, n). Column i of J is z x (p - o_i).
+    """
+    angles = np.cumsum(q, axis=-1)
+    links = lengths[:, None] * np.stack([np.cos(angles), np.sin(angles)], axis=-1)
+    points = np.concatenate([np.zeros(links.shape[:-2] + (1, 2)), np.cumsum(links, axis=-2)], axis=-2)
+    r = points[..., -1:, :] - points[..., :-1, :]       # from each joint to the end effector
+    J = np.stack([-r[..., 1], r[..., 0]], axis=-2)
+    return points, J
+
+
+def manipulability_gradient(lengths, q):
+    """w = sqrt(det(J J^T)) and its exact gradient dw/dq: q (n,) -> (), (n,); (N, n) -> (N,), (N, n).
+
+    By Cauchy-Binet, w^2 = sum over i < j of m_ij^2 with m_ij = r_i x r_j, r_i the vector from
+    joint i to the end effector. Turning joint k rotates r_i by z x r_max(i,k), so
+    dm_ij/dq_k = r_i . r_max(j,k) - r_max(i,k) . r_j, and dw/dq_k = sum_ij m_ij dm_ij/dq_k / (2 w).
+    Where w = 0 the gradient is returned as 0.
+    """
+    points, _ = planar_kinematics(lengths, q)
+    r = points[..., -1:, :] - points[..., :-1, :]
+    n = r.shape[-2]
+    G = r @ np.swapaxes(r, -1, -2)                                   # r_i . r_j
+    M = r[..., :, None, 0] * r[..., None, :, 1] - r[..., :, None, 1] * r[..., None, :, 0]   # r_i x r_j
+    first, second = _gradient_indices(n)
+    dM = G[(Ellipsis, *first)] - G[(Ellipsis, *second)]              # (..., k, i, j)
+    w2 = 0.5 * np.sum(M**2, axis=(-1, -2))
+    w = np.sqrt(w2)
+    dw2 = np.sum(M[..., None, :, :] * dM, axis=(-1, -2))             # d(w^2)/dq_k = sum_ij m_ij dm_ij
+    with np.errstate(divide="ignore", invalid="ignore"):
+        gradient = np.where(w[..., None] > 0, dw2 / (2 * w[..., None]), 0.0)
+    return w[()], gradient
+
+
+@functools.lru_cache(maxsize=None)
+def _gradient_indices(n):
+    """Index pairs (i, max(j, k)) and (max(i, k), j) over (k, i, j), as flat indices into G (n, n)."""
+    k, i, j = np.meshgrid(np.arange(n), np.arange(n), np.arange(n), indexing="ij")
+    return (i, np.maximum(j, k)), (np.maximum(i, k), j)
+
+
+def pseudo_inverse(J, damping=0.0, singular_region=0.05):
+    """J+ = J^T (J J^T + lambda^2 I)^-1 for J (2, n).
+
+    lambda = 0 (the exact Moore-Penrose inverse of a full-rank J) unless ``damping`` > 0, then
+    lambda^2 = damping^2 (1 - (sigma_min / singular_region)^2) inside the singular region
+    sigma_min < singular_region (m): damped least squares that fades in near a singularity.
+    """
+    A = J @ J.T
+    if damping > 0:
+        half_trace, det = 0.5 * (A[0, 0] + A[1, 1]), A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
+        sigma_min2 = half_trace - np.sqrt(max(half_trace**2 - det, 0.0))
+        if sigma_min2 < singular_region**2:
+            A = A + damping**2 * (1 - sigma_min2 / singular_region**2) * np.eye(2)
+    det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
+    if det <= 1e-300:
+        return np.linalg.pinv(J)
+    inverse = np.array([[A[1, 1], -A[0, 1]], [-A[1, 0], A[0, 0]]]) / det
+    return J.T @ inverse
+
+
+# ---- resolution ----------------------------------------------------------------------------
+
+def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
+    """Joint angles that put the end effector at ``point`` (2,), by Newton steps with the
+    pseudo-inverse from ``q_guess`` (n,); the nearest solution to the guess, roughly."""
+    lengths = _lengths(arm)
+    q = arm.check_q(q_guess, "q_guess").copy()
+    R, origin = _base_2d(arm)
+    target = R.T @ (_point(point, "point") - origin)
+    for _ in range(max_iterations):
+        points, J = planar_kinematics(lengths, q)
+        error = target - points[-1]
+        if np.linalg.norm(error) < tol:
+            return q
+        q += pseudo_inverse(J, damping=0.01) @ error
+    raise ValueError(f"no configuration found that reaches point {np.round(point, 6).tolist()} "
+                     f"from q_guess; the residual is {np.linalg.norm(error):.3g} m")
+
+
+@dataclass(frozen=True)
+class Resolution:
+    """The result of :func:`resolve`; row i belongs to the path's sample i.
+
+    t (steps,) s; q (steps, n) rad; position (steps, 2) m, the end effector in the world frame;
+    error (steps,) m, its distance from the path; manipulability (steps,), sqrt(det(J J^T)) at q;
+    limited (steps,) bool, True where a joint limit clamped the step that led to row i.
+    """
+
+    t: np.ndarray
+    q: np.ndarray
+    position: np.ndarray
+    error: np.ndarray
+    manipulability: np.ndarray
+    limited: np.ndarray
+    path: Path
+
+
+def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0, joint_limits=None,
+            limit_gain=1.0, start_tolerance=1e-3):
+    """Follow ``path`` with the end effector of the planar ``arm`` from ``q0`` (n,).
+
+    Euler steps q_{k+1} = q_k + qdot dt with qdot = J+ (xdot_d + K e) + (I - J+ J) phi, where
+    K = ``feedback_gain`` (1/s; K dt < 2 for stability), e the position error, and phi =
+    ``null_space_gain`` * grad w (thesis eqs. 2.37-2.38). ``damping`` > 0 uses damped least
+    squares near singularities (see :func:`pseudo_inverse`).
+
+    joint_limits : None (ignored), 'clamp' (the arm's qlim cut the step: the end effector then
+        leaves the path), or 'avoid' (clamp, and add limit_gain * the gradient of
+        -sum(((q - q_mid) / (q_max - q_min))^2) to phi, pushing joints away from their limits).
+
+    A path that leaves the reachable annulus, a q0 of the wrong length, or a q0 whose end effector
+    is more than ``start_tolerance`` (m) from the path's start is refused with a ValueError.
+    """
+    lengths = _lengths(arm)
+    if not isinstance(path, Path):
+        raise TypeError(f"path must be a Path (from circle or line), got {describe(path)}")
+    q = arm.check_q(q0, "q0")
+    if q.ndim != 1:
+        raise ValueError(f"q0 must be one configuration of shape ({arm.n},), got shape {q.shape}")
+    if joint_limits not in (None, "clamp", "avoid"):
+        raise ValueError(f"joint_limits must be None, 'clamp' or 'avoid', got {joint_limits!r}")
+    dt = path.dt
+    if not 0 <= feedback_gain * dt < 2:
+        raise ValueError(f"feedback_gain * dt must be in [0, 2) for a stable loop, got {feedback_gain} * {dt}")
+    R, origin = _base_2d(arm)
+    target = (path.position - origin) @ R                   # the path in the arm's base frame
+    velocity = path.velocity @ R
+    _check_reachable(lengths, target, path)
+    start = planar_kinematics(lengths, q)[0][-1]
+    if np.linalg.norm(start - target[0]) > start_tolerance:
+        raise ValueError(
+            f"q0 puts the end effector at {np.round(start @ R.T + origin, 4).tolist()} m, "
+            f"{np.linalg.norm(start - target[0]):.4f} m from the path's start "
+            f"{np.round(path.position[0], 4).tolist()} (start_tolerance = {start_tolerance} m); "
+            "use start_configuration(arm, path.position[0], q_guess)")
+    low, high = arm.qlim[:, 0], arm.qlim[:, 1]
+    finite = np.isfinite(low) & np.isfinite(high)
+    middle = np.where(finite, 0.5 * (np.where(finite, low, 0) + np.where(finite, high, 0)), 0.0)
+    span2 = np.where(finite, (np.where(finite, high, 1) - np.where(finite, low, 0)) ** 2, np.inf)
+
+    steps = len(path.t)
+    Q = np.empty((steps, arm.n))
+    limited = np.zeros(steps, dtype=bool)
+    identity = np.eye(arm.n)
+    Q[0] = q
+    for k in range(steps - 1):
+        points, J = planar_kinematics(lengths, q)
+        J_plus = pseudo_inverse(J, damping)
+        qdot = J_plus @ (velocity[k] + feedback_gain * (target[k] - points[-1]))
+        phi = 0.0
+        if null_space_gain:
+            phi = null_space_gain * manipulability_gradient(lengths, q)[1]
+        if joint_limits == "avoid":
+            phi = phi - limit_gain * 2 * (q - middle) / span2
+        if null_space_gain or joint_limits == "avoid":
+            qdot = qdot + (identity - J_plus @ J) @ phi
+        q = q + qdot * dt
+        if joint_limits is not None:
+            clipped = np.clip(q, low, high)
+            limited[k + 1] = np.any(clipped != q)
+            q = clipped
+        Q[k + 1] = q
+    points, _ = planar_kinematics(lengths, Q)
+    w, _ = manipulability_gradient(lengths, Q)
+    position = points[:, -1] @ R.T + origin
+    return Resolution(path.t, Q, position, np.linalg.norm(position - path.position, axis=-1), w, limited, path)
+
+
+def _check_reachable(lengths, target, path):
+    """Refuse a path that leaves the annulus r_min <= |p| <= r_max around the arm's base."""
+    outer = lengths.sum()
+    inner = max(0.0, 2 * lengths.max() - outer)
+    radius = np.linalg.norm(target, axis=-1)
+    outside = np.flatnonzero((radius > outer) | (radius < inner))
+    if outside.size:
+        i = outside[0]
+        raise ValueError(
+            f"the path leaves the reachable annulus {inner:.4f} m <= |p| <= {outer:.4f} m around the arm's base: "
+            f"{outside.size} of {len(radius)} samples, the first at t = {path.t[i]:.3f} s, "
+            f"point {np.round(path.position[i], 4).tolist()} m, |p| = {radius[i]:.4f} m")

@@ -1,0 +1,133 @@
+"""Redundancy resolution: paths, planar kinematics against the general chain, the exact
+manipulability gradient, the null-space projector, tracking accuracy, joint limits, bad input."""
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra.numpy import arrays
+
+import screwkit as sk
+from screwkit import redundancy as rd
+
+LENGTHS = np.array([0.3, 0.25, 0.2, 0.15, 0.1])
+ARM = sk.robots.planar(LENGTHS)
+CIRCLE = rd.circle((0.45, 0.25), 0.15, duration=10.0, dt=0.01)
+Q0 = rd.start_configuration(ARM, CIRCLE.position[0], np.radians([30, -30, -30, -30, -30]))
+angles = arrays(float, 5, elements=st.floats(-np.pi, np.pi))
+
+
+def test_circle_starts_at_center_plus_radius_and_runs_counter_clockwise_once():
+    p, v = CIRCLE.position, CIRCLE.velocity
+    assert p.shape == v.shape == (1001, 2) and CIRCLE.t[-1] == pytest.approx(10.0)
+    assert np.allclose(p[0], [0.6, 0.25]) and np.allclose(p[-1], [0.6, 0.25])
+    assert np.allclose(np.linalg.norm(p - [0.45, 0.25], axis=1), 0.15)
+    relative = p - [0.45, 0.25]
+    assert np.all(relative[1:-1, 0] * v[1:-1, 1] - relative[1:-1, 1] * v[1:-1, 0] > 0)   # counter-clockwise
+    swept = np.unwrap(np.arctan2(relative[:, 1], relative[:, 0]))
+    assert swept[-1] - swept[0] == pytest.approx(2 * np.pi)
+    # smooth timing: at rest at both ends, and the velocity is the derivative of the position
+    assert np.allclose(v[[0, -1]], 0)
+    assert np.allclose(np.gradient(p, CIRCLE.t, axis=0)[1:-1], v[1:-1], atol=2e-4)
+
+
+def test_line_runs_from_start_to_end():
+    path = rd.line((0.6, -0.2), (0.6, 0.4), duration=4.0, dt=0.01, timing_kind="constant")
+    assert np.allclose(path.position[[0, -1]], [[0.6, -0.2], [0.6, 0.4]])
+    assert np.allclose(path.velocity, [0, 0.15])
+    assert np.allclose(path.position[:, 0], 0.6)
+
+
+@settings(max_examples=50, deadline=None)
+@given(angles)
+def test_planar_kinematics_equals_the_general_chain(q):
+    points, J = rd.planar_kinematics(LENGTHS, q)
+    assert np.allclose(points[-1], ARM.fk(q)[:2, 3], atol=1e-12)
+    assert np.allclose(J, ARM.geometric_jacobian(q)[:2], atol=1e-12)
+
+
+@settings(max_examples=50, deadline=None)
+@given(angles)
+def test_manipulability_gradient_is_exact(q):
+    w, gradient = rd.manipulability_gradient(LENGTHS, q)
+    assert np.isclose(w, ARM.manipulability(q, rows="planar"), atol=1e-12)   # by singular values
+    if w > 1e-3:
+        h = 1e-6
+        central = [(rd.manipulability_gradient(LENGTHS, q + h * e)[0] - rd.manipulability_gradient(LENGTHS, q - h * e)[0])
+                   / (2 * h) for e in np.eye(5)]
+        assert np.allclose(gradient, central, atol=1e-7)
+
+
+@settings(max_examples=50, deadline=None)
+@given(angles)
+def test_null_space_motion_never_moves_the_end_effector(q):
+    _, J = rd.planar_kinematics(LENGTHS, q)
+    if np.linalg.matrix_rank(J) == 2:
+        J_plus = rd.pseudo_inverse(J)
+        assert np.allclose(J_plus, np.linalg.pinv(J), atol=1e-9)
+        assert np.allclose(J @ (np.eye(5) - J_plus @ J), 0, atol=1e-12)
+        phi = rd.manipulability_gradient(LENGTHS, q)[1]
+        assert np.allclose(J @ (np.eye(5) - J_plus @ J) @ phi, 0, atol=1e-12)
+
+
+def test_circle_is_tracked_within_a_tenth_of_a_millimetre_and_null_space_raises_manipulability():
+    plain = rd.resolve(ARM, CIRCLE, Q0)
+    climbing = rd.resolve(ARM, CIRCLE, Q0, null_space_gain=5.0)
+    for run in (plain, climbing):
+        assert run.q.shape == (1001, 5) and run.error.max() < 1e-4
+        # the reported position and manipulability belong to the reported q
+        assert np.allclose(run.position, ARM.fk(run.q)[:, :2, 3], atol=1e-12)
+        assert np.allclose(run.manipulability, ARM.manipulability(run.q, rows="planar"), atol=1e-12)
+    assert climbing.manipulability.mean() > plain.manipulability.mean() + 0.01
+    assert climbing.manipulability.min() > plain.manipulability.min() + 0.01
+    # without the feedback term, Euler integration drifts off the path
+    open_loop = rd.resolve(ARM, CIRCLE, Q0, feedback_gain=0.0)
+    assert open_loop.error.max() > 10 * plain.error.max()
+
+
+def test_joint_limits_are_respected():
+    limits = np.radians([[-180, 180]] + [[-45, 45]] * 4)
+    arm = sk.robots.planar(LENGTHS, qlim=limits)
+    q0 = np.clip(Q0, limits[:, 0], limits[:, 1])
+    path = rd.circle(arm.fk(q0)[:2, 3] - [0.15, 0], 0.15, duration=10.0, dt=0.01)
+    for mode in ("clamp", "avoid"):
+        run = rd.resolve(arm, path, q0, null_space_gain=1.0, joint_limits=mode)
+        assert np.all((run.q >= limits[:, 0] - 1e-12) & (run.q <= limits[:, 1] + 1e-12))
+    free = rd.resolve(arm, path, q0)
+    assert np.any(~arm.within_limits(free.q))        # the limits matter on this path
+
+
+def test_two_arm_robot_tracks_two_paths_at_once():
+    left, right = sk.robots.two_arm_planar(LENGTHS, separation=0.4)
+    assert np.allclose(left.fk(np.zeros(5))[:2, 3], [-0.2 + LENGTHS.sum(), 0])
+    paths = [rd.circle((-0.4, 0.45), 0.1, 5.0, 0.01), rd.line((0.3, 0.3), (0.3, 0.6), 5.0, 0.01)]
+    for arm, path, guess in zip((left, right), paths, ([2.0, -0.5, -0.5, -0.5, -0.5], [1.0, 0.5, 0.5, 0.5, 0.5])):
+        q0 = rd.start_configuration(arm, path.position[0], guess)
+        run = rd.resolve(arm, path, q0, null_space_gain=1.0)
+        assert run.error.max() < 1e-4
+        assert np.allclose(run.position, arm.fk(run.q)[:, :2, 3], atol=1e-12)
+
+
+def test_bad_input_is_refused_with_a_clear_message():
+    far = rd.circle((0.8, 0.0), 0.3, duration=1.0, dt=0.01)
+    with pytest.raises(ValueError, match=r"leaves the reachable annulus 0.0000 m <= \|p\| <= 1.0000 m"):
+        rd.resolve(ARM, far, Q0)
+    with pytest.raises(ValueError, match=r"q0 must have 5 entries"):
+        rd.resolve(ARM, CIRCLE, Q0[:4])
+    with pytest.raises(ValueError, match=r"from the path's start"):
+        rd.resolve(ARM, CIRCLE, Q0 + 0.1)
+    with pytest.raises(ValueError, match="planar arm"):
+        rd.resolve(sk.robots.puma560(), CIRCLE, np.zeros(6))
+    with pytest.raises(TypeError, match="path must be a Path"):
+        rd.resolve(ARM, CIRCLE.position, Q0)
+    with pytest.raises(ValueError, match="stable loop"):
+        rd.resolve(ARM, CIRCLE, Q0, feedback_gain=500.0)
+    with pytest.raises(ValueError, match="joint_limits must be"):
+        rd.resolve(ARM, CIRCLE, Q0, joint_limits="soft")
+    with pytest.raises(ValueError, match="whole number of steps"):
+        rd.circle((0, 0), 0.1, duration=1.0, dt=0.3)
+    with pytest.raises(ValueError, match="radius must be a positive number"):
+        rd.circle((0, 0), -0.1, duration=1.0, dt=0.01)
+    with pytest.raises(ValueError, match=r"center must be a planar point"):
+        rd.circle((0, 0, 0), 0.1, duration=1.0, dt=0.01)
+    with pytest.raises(ValueError, match="start and end must differ"):
+        rd.line((0, 0), (0, 0), duration=1.0, dt=0.01)
