@@ -228,7 +228,7 @@ class Resolution:
 
 
 def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0, joint_limits=None,
-            limit_gain=1.0, start_tolerance=1e-3):
+            limit_gain=0.1, max_rate=5.0, start_tolerance=1e-3):
     """Follow ``path`` with the end effector of the planar ``arm`` from ``q0`` (n,).
 
     Euler steps q_{k+1} = q_k + qdot dt with qdot = J+ (xdot_d + K e) + (I - J+ J) phi, where
@@ -237,8 +237,10 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     squares near singularities (see :func:`pseudo_inverse`).
 
     joint_limits : None (ignored), 'clamp' (the arm's qlim cut the step: the end effector then
-        leaves the path), or 'avoid' (clamp, and add limit_gain * the gradient of
-        -sum(((q - q_mid) / (q_max - q_min))^2) to phi, pushing joints away from their limits).
+        leaves the path), or 'avoid' (clamp, and subtract limit_gain * grad H from phi, with
+        H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)), which is 1 per joint at mid-range
+        and grows without bound at a limit: the null space pushes joints away from their limits;
+        the push's length is capped at ``max_rate`` rad/s).
 
     A path that leaves the reachable annulus, a q0 of the wrong length, or a q0 whose end effector
     is more than ``start_tolerance`` (m) from the path's start is refused with a ValueError.
@@ -267,8 +269,6 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
             "use start_configuration(arm, path.position[0], q_guess)")
     low, high = arm.qlim[:, 0], arm.qlim[:, 1]
     finite = np.isfinite(low) & np.isfinite(high)
-    middle = np.where(finite, 0.5 * (np.where(finite, low, 0) + np.where(finite, high, 0)), 0.0)
-    span2 = np.where(finite, (np.where(finite, high, 1) - np.where(finite, low, 0)) ** 2, np.inf)
 
     steps = len(path.t)
     Q = np.empty((steps, arm.n))
@@ -283,7 +283,11 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
         if null_space_gain:
             phi = null_space_gain * manipulability_gradient(lengths, q)[1]
         if joint_limits == "avoid":
-            phi = phi - limit_gain * 2 * (q - middle) / span2
+            push = limit_gain * _limit_gradient(q, low, high, finite)
+            size = np.linalg.norm(push)
+            # the barrier's gradient is unbounded at a limit, an Euler step must not be: cap its
+            # length (not its entries, which would turn it away from the descent direction)
+            phi = phi - (push if size <= max_rate else push * (max_rate / size))
         if null_space_gain or joint_limits == "avoid":
             qdot = qdot + (identity - J_plus @ J) @ phi
         q = q + qdot * dt
@@ -296,6 +300,14 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     w, _ = manipulability_gradient(lengths, Q)
     position = points[:, -1] @ R.T + origin
     return Resolution(path.t, Q, position, np.linalg.norm(position - path.position, axis=-1), w, limited, path)
+
+
+def _limit_gradient(q, low, high, finite):
+    """grad H of H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)) over joints with finite limits."""
+    low, high = np.where(finite, low, -1.0), np.where(finite, high, 1.0)
+    inside = np.clip(q, low + 1e-9, high - 1e-9)
+    gradient = (high - low) ** 2 * (2 * inside - high - low) / (4 * (high - inside) ** 2 * (inside - low) ** 2)
+    return np.where(finite, gradient, 0.0)
 
 
 def _check_reachable(lengths, target, path):

@@ -84,16 +84,18 @@ def test_circle_is_tracked_within_a_tenth_of_a_millimetre_and_null_space_raises_
     assert open_loop.error.max() > 10 * plain.error.max()
 
 
-def test_joint_limits_are_respected():
-    limits = np.radians([[-180, 180]] + [[-45, 45]] * 4)
+def test_joint_limits_clamping_costs_accuracy_and_avoidance_recovers_it():
+    limits = np.radians([[-180, 180]] + [[-60, 60]] * 4)
     arm = sk.robots.planar(LENGTHS, qlim=limits)
-    q0 = np.clip(Q0, limits[:, 0], limits[:, 1])
-    path = rd.circle(arm.fk(q0)[:2, 3] - [0.15, 0], 0.15, duration=10.0, dt=0.01)
-    for mode in ("clamp", "avoid"):
-        run = rd.resolve(arm, path, q0, null_space_gain=1.0, joint_limits=mode)
-        assert np.all((run.q >= limits[:, 0] - 1e-12) & (run.q <= limits[:, 1] + 1e-12))
-    free = rd.resolve(arm, path, q0)
+    assert arm.within_limits(Q0)
+    free = rd.resolve(arm, CIRCLE, Q0, null_space_gain=5.0)
     assert np.any(~arm.within_limits(free.q))        # the limits matter on this path
+    clamped = rd.resolve(arm, CIRCLE, Q0, joint_limits="clamp")
+    avoided = rd.resolve(arm, CIRCLE, Q0, null_space_gain=5.0, joint_limits="avoid")
+    for run in (clamped, avoided):
+        assert np.all((run.q >= limits[:, 0] - 1e-12) & (run.q <= limits[:, 1] + 1e-12))
+    assert clamped.limited.any() and clamped.error.max() > 1e-3        # a clamped joint leaves the path
+    assert not avoided.limited.any() and avoided.error.max() < 1e-4    # the null space kept clear
 
 
 def test_two_arm_robot_tracks_two_paths_at_once():
