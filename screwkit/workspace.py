@@ -55,6 +55,17 @@ class Sweep:
         distance = np.linalg.norm(self.points - centre, axis=-1)
         return float(distance.min()), float(distance.max())
 
+    def section(self, axis="y", value=0.0, tolerance=0.01):
+        """The swept points within ``tolerance`` (m) of the plane ``axis`` = ``value``: (M, 3).
+
+        For a sweep that includes joint 1 this cuts the solid workspace, e.g. axis 'y', value 0
+        gives the points in the x-z plane.
+        """
+        if axis not in ("x", "y", "z"):
+            raise ValueError(f"axis must be 'x', 'y' or 'z', got {axis!r}")
+        flat = self.points.reshape(-1, 3)
+        return flat[np.abs(flat[:, "xyz".index(axis)] - float(value)) <= tolerance]
+
     def jacobians(self):
         """The geometric Jacobian at every grid point: grid + (6, n)."""
         J = geometric_jacobian(self.chain, self.q.reshape(-1, self.chain.n))

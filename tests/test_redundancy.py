@@ -133,3 +133,15 @@ def test_bad_input_is_refused_with_a_clear_message():
         rd.circle((0, 0, 0), 0.1, duration=1.0, dt=0.01)
     with pytest.raises(ValueError, match="start and end must differ"):
         rd.line((0, 0), (0, 0), duration=1.0, dt=0.01)
+
+
+def test_damping_slows_the_joints_near_a_singularity():
+    arm = sk.robots.planar([0.5, 0.4, 0.3])
+    # straight out to full reach at constant speed: the arm ends stretched, J loses rank
+    path = rd.line((0.9, 0.0), (1.2, 0.0), duration=1.0, dt=0.01, timing_kind="constant")
+    q0 = rd.start_configuration(arm, path.position[0], [0.3, -0.3, -0.3])
+    exact = rd.resolve(arm, path, q0)
+    damped = rd.resolve(arm, path, q0, damping=0.1)
+    largest_step = [np.abs(np.diff(run.q, axis=0)).max() for run in (exact, damped)]
+    assert largest_step[1] < 0.8 * largest_step[0]
+    assert np.all(np.isfinite(damped.q)) and damped.error.max() < 5e-3

@@ -54,3 +54,18 @@ def test_bad_sweeps_are_clear_errors():
         sk.workspace.sweep(arm, {1: (0, np.nan)})
     with pytest.raises(ValueError, match="det J needs a square Jacobian"):
         sk.workspace.sweep(arm, {1: (0, 1)}).determinant()
+
+
+def test_section_of_a_solid_sweep_is_the_swept_plane():
+    robot = sk.robots.kawasaki_cx210l()
+    solid = sk.workspace.sweep(robot, {1: (-np.pi, np.pi), 2: (30 * DEG, 180 * DEG), 3: (-90 * DEG, 60 * DEG)},
+                               num=(73, 31, 31))
+    cut = solid.section("y", 0.0, tolerance=1e-9)
+    plane = sk.workspace.sweep(robot, {2: (30 * DEG, 180 * DEG), 3: (-90 * DEG, 60 * DEG)}, num=31)
+    assert np.all(np.abs(cut[:, 1]) <= 1e-9)
+    # it holds the plane sweep at q1 = 0 and its mirror at q1 = +-pi (the section turned half way)
+    expected = np.concatenate([plane.points.reshape(-1, 3), plane.points.reshape(-1, 3) * [-1, 1, 1]])
+    nearest = np.min(np.linalg.norm(expected[:, None, [0, 2]] - cut[None, :, [0, 2]], axis=-1), axis=1)
+    assert np.all(nearest < 1e-9)
+    with pytest.raises(ValueError, match="axis must be"):
+        solid.section("w")
