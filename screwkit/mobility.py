@@ -114,19 +114,25 @@ def _describe(vector):
     return str(list(vector))
 
 
-def mobility(limbs):
+def mobility(limbs, at=None):
     """The mobility of a parallel manipulator whose limbs are lists of (s, r, h) joint screws.
 
     Parameters
     ----------
     limbs : list of limbs; each limb a list of (s, r, h) triples in the fixed frame
         (s, r: 3-vectors, SymPy symbols allowed; h: 0, a finite pitch, or sympy.oo), or Twists.
+    at : optional {symbol: value}, a particular configuration. The result is then the mobility
+        at those values, and its ``notes`` say whether it is the general answer (the symbols
+        free) or a singular configuration that gains or loses freedoms. Floats are read as the
+        exact rationals they store: ranks are never decided by round-off.
 
     Returns
     -------
     Mobility with ``number``, ``type`` (e.g. '3T1R'), ``directions`` (e.g. ['Tx', 'Ty', 'Tz', 'Rz']),
     the four screw systems, and the Grübler–Kutzbach comparison.
     """
+    if at is not None:
+        return _at_configuration(limbs, at)
     _check_limbs(limbs)
     twists = [[_twist(joint, i, j) for j, joint in enumerate(limb)] for i, limb in enumerate(limbs)]
 
@@ -148,6 +154,39 @@ def mobility(limbs):
     pws = ScrewSystem(pws.basis(), kind=Wrench, _field=pws.field, _rank=pws.rank, _basis=pws.basis())
     pts = pws.reciprocal()
     return _result(limbs, lts, lws, pws, pts, lts_ranks)
+
+
+def _at_configuration(limbs, at):
+    """The mobility at the values ``at``, with notes comparing it with the general configuration."""
+    if not isinstance(at, dict) or not all(isinstance(k, sp.Symbol) for k in at):
+        raise TypeError(f"at must be a dict {{sympy.Symbol: value}}, got {at!r}")
+    values = {k: sp.Rational(v) if isinstance(v, float) else sp.sympify(v) for k, v in at.items()}
+    _check_limbs(limbs)
+
+    def substitute(joint):
+        if isinstance(joint, Screw):
+            return Twist(sp.Matrix(joint.vector).subs(values))
+        s, r, h = joint
+        return (sp.Matrix(s).subs(values), sp.Matrix(r).subs(values), h)
+
+    general = mobility(limbs)
+    special = mobility([[substitute(joint) for joint in limb] for limb in limbs])
+    here = f"{special.number} ({special.type}: {', '.join(special.directions)})"
+    there = f"{general.number} ({general.type}: {', '.join(general.directions)})"
+    if (special.number, special.type, special.directions) == (general.number, general.type, general.directions):
+        special.notes.append(f"general configuration: the mobility at these values, {here}, is the general one")
+    else:
+        change = "gains" if special.number > general.number else "loses" if special.number < general.number else "changes"
+        special.notes.append(f"singular configuration: the platform {change} freedoms here, {here}, "
+                             f"against {there} in the general configuration")
+    ranks = [w.rank for w in special.limb_wrench_systems], [w.rank for w in general.limb_wrench_systems]
+    if ranks[0] != ranks[1]:
+        special.notes.append(f"limb wrench system ranks {ranks[0]} here, {ranks[1]} in general "
+                             "(a limb gains or loses constraints)")
+    if special.platform_wrench_system.rank != general.platform_wrench_system.rank:
+        special.notes.append(f"platform wrench system rank {special.platform_wrench_system.rank} here, "
+                             f"{general.platform_wrench_system.rank} in general")
+    return special
 
 
 def _result(limbs, lts, lws, pws, pts, lts_ranks):

@@ -118,3 +118,15 @@ def test_3prpar_limb_wrenches_equal_the_papers():
     for system, expected in zip(m.limb_wrench_systems, paper):
         (wrench,) = system.basis()
         assert sp.simplify(wrench.vector - sp.Matrix(expected)) == sp.zeros(6, 1)
+
+
+def test_a_configuration_given_with_at_says_whether_it_is_singular():
+    limbs = sk.robots.planar_3rrr()
+    stretched = {sp.Symbol(f"theta_{i}{j}"): 0 for i in (1, 2, 3) for j in (1, 2)}
+    special = mobility(limbs, at=stretched)
+    assert special.number == 1 and special.notes[0].startswith("singular configuration: the platform loses")
+    assert "3 (2T1R: Tx, Ty, Rz) in the general configuration" in special.notes[0]
+    ordinary = mobility(limbs, at={sp.Symbol("theta_11"): 0.3, sp.Symbol("theta_22"): sp.pi / 7})
+    assert ordinary.number == 3 and ordinary.notes[0].startswith("general configuration")
+    with pytest.raises(TypeError, match="at must be a dict"):
+        mobility(limbs, at={"theta_11": 0})
