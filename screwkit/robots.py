@@ -13,7 +13,7 @@ from .chains import Chain, Link
 from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .transforms import rot_axis, rotx, roty, rotz, transl
 
-__all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps",
+__all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "planar_3rrr", "pm_3rps", "pm_3ruu",
            "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH"]
 
 X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
@@ -137,6 +137,27 @@ def pm_3rps():
         A = sp.Matrix([R, 0, 0])
         leg = rotx(theta[i]) * Z
         limb = revolute(X, A) + prismatic(leg, A) + spherical(A + d[i] * leg)
+        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
+    return limbs
+
+
+def pm_3ruu():
+    """Delta-type translational 3-RUU (3T): the kinematic equivalent of Clavel's Delta with a U-U
+    link in place of each spatial parallelogram (Tsai's translational conditions).
+
+    Limb 1: R about u = Y at A = (R, 0, 0); a U at B (axes u, then v = rotation of Z about u by
+    theta_12); a U at C (axes v, then u). Each limb then constrains the one couple along u x v.
+    Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
+    """
+    R, a, b = sp.symbols("R a b")
+    limbs = []
+    for i in range(3):
+        t1, t2, t3 = sp.symbols(f"theta_{i + 1}1:{i + 1}4")
+        u, A = Y, sp.Matrix([R, 0, 0])
+        B = A + rot_axis(u, t1) * (a * X)
+        v = rot_axis(u, t2) * Z
+        C = B + rot_axis(v, t3) * (b * u.cross(v))
+        limb = revolute(u, A) + universal(u, v, B) + universal(v, u, C)
         limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
     return limbs
 

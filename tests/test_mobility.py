@@ -130,3 +130,18 @@ def test_a_configuration_given_with_at_says_whether_it_is_singular():
     assert ordinary.number == 3 and ordinary.notes[0].startswith("general configuration")
     with pytest.raises(TypeError, match="at must be a dict"):
         mobility(limbs, at={"theta_11": 0})
+
+
+def test_delta_type_3ruu_is_translational_and_each_limb_constrains_the_couple_u_cross_v():
+    limbs = sk.robots.pm_3ruu()
+    m = mobility(limbs)
+    assert (m.type, m.directions) == ("3T", ["Tx", "Ty", "Tz"])
+    # a couple (0; c) is reciprocal to a revolute (s; r x s) iff c . s = 0: c is along u x v
+    theta = sp.Symbol("theta_12")
+    u, v = sp.Matrix([0, 1, 0]), sp.Matrix([sp.sin(theta), 0, sp.cos(theta)])
+    couple = list(m.limb_wrench_systems[0].basis()[0].vector)
+    assert couple[:3] == [0, 0, 0]
+    assert sp.simplify(sp.Matrix(couple[3:]).cross(u.cross(v))) == sp.zeros(3, 1)
+    # with every v radial (theta_i2 = 90 deg) the three couples are parallel: a constraint singularity
+    radial = mobility(limbs, at={sp.Symbol(f"theta_{i}2"): sp.pi / 2 for i in (1, 2, 3)})
+    assert radial.number == 5 and "gains freedoms" in radial.notes[0]
