@@ -10,7 +10,7 @@ import numpy as np
 from ._checks import as_float_array, check_shape, check_transform
 
 __all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain", "draw_ellipsoid",
-           "draw_planar"]
+           "draw_planar", "animation_html"]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
@@ -116,3 +116,26 @@ def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0
     (line,) = ax.plot(*origins.T, "-o", color=color, lw=3, ms=4, alpha=alpha, label=label,
                       solid_capstyle="round")
     return line
+
+
+# matplotlib's player draws its buttons with Font Awesome from a CDN: the book must work offline
+_PLAYER_ICONS = {"fa fa-minus": "\u2212", "fa fa-fast-backward": "\u23ee", "fa fa-step-backward": "\u25c1|",
+                 "fa fa-play fa-flip-horizontal": "\u25c0", "fa fa-pause": "\u275a\u275a",
+                 "fa fa-play": "\u25b6", "fa fa-step-forward": "|\u25b7", "fa fa-fast-forward": "\u23ed",
+                 "fa fa-plus": "+"}
+
+
+def animation_html(animation):
+    """A matplotlib animation as self-contained JavaScript HTML (no request leaves the page).
+
+    Like ``animation.to_jshtml()``, with the player's Font Awesome stylesheet (a CDN link) removed
+    and its icons replaced by Unicode symbols. Display it with ``IPython.display.HTML``.
+    """
+    import re
+
+    html = re.sub(r'<link rel="stylesheet"\s+href="[^"]*font-awesome[^"]*">', "", animation.to_jshtml())
+    for icon, text in _PLAYER_ICONS.items():
+        html = html.replace(f'<i class="{icon}"></i>', text)
+    if "http://" in html or "https://" in html:
+        raise RuntimeError("the animation's HTML still refers to an outside address")
+    return html

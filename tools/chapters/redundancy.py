@@ -293,7 +293,7 @@ def update(k):
 
 movie = animation.FuncAnimation(fig, update, frames=frames, interval=160, blit=True)
 plt.close(fig)
-HTML(movie.to_jshtml())
+HTML(sk.plotting.animation_html(movie))
 """),
 md(r"""
 ### Try the gain
