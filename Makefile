@@ -42,7 +42,7 @@ $(BENCH_STAMP): requirements.txt benchmarks/requirements.txt pyproject.toml
 	@touch $(BENCH_STAMP)
 
 bench: $(BENCH_STAMP)
-	@for script in benchmarks/*.py; do echo "== $$script"; .venv-bench/bin/python $$script || exit 1; done
+	@for script in benchmarks/bench_*.py; do echo "== $$script"; .venv-bench/bin/python $$script || exit 1; done
 
 clean:
 	rm -rf _build

@@ -5,12 +5,12 @@ Prints (1) agreement: RTB's jacob0 against screwkit's geometric Jacobian on rand
 configurations (RTB's model gets d1 = 0, as in screwkit); (2) a timing table.
 Usage (from the top level): make bench, or .venv-bench/bin/python benchmarks/bench_jacobians.py
 """
-import timeit
 import warnings
 
 import numpy as np
 
 import screwkit as sk
+from _report import best, print_table
 
 warnings.filterwarnings("ignore")
 import roboticstoolbox as rtb  # noqa: E402
@@ -23,9 +23,6 @@ corke.links[0].d = 0.0
 ets = corke.ets()
 Q = np.random.default_rng(0).uniform(-np.pi, np.pi, (N, 6))
 
-
-def best(function, number=1, repeat=3):
-    return min(timeit.repeat(function, number=number, repeat=repeat)) / number
 
 
 # ---- agreement ---------------------------------------------------------------------------
@@ -55,12 +52,4 @@ rows = [
 ]
 
 
-def ms(seconds):
-    return f"{seconds * 1e3:>10.3f} ms" if seconds is not None else f"{'-':>13}"
-
-
-print(f"{'task':<25}{'screwkit':>13}{'RTB':>13}{'speed-up':>9}  {'RTB path':<21}{'goal':>13}  met")
-for task, t_ours, t_theirs, path, goal in rows:
-    ratio = f"{t_theirs / t_ours:>8.1f}x" if t_theirs else f"{'-':>9}"
-    met = "" if goal is None else ("yes" if t_ours < goal else "NO")
-    print(f"{task:<25}{ms(t_ours)}{ms(t_theirs)}{ratio}  {path:<21}{ms(goal)}  {met}")
+print_table(rows, width=25)

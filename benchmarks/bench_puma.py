@@ -6,12 +6,12 @@ issue's goals. RTB's model gets d1 = 0 (no pedestal), as in the paper and in scr
 Usage (from the top level): make bench, or .venv-bench/bin/python benchmarks/bench_puma.py
 """
 import time
-import timeit
 import warnings
 
 import numpy as np
 
 import screwkit as sk
+from _report import best, print_table
 
 warnings.filterwarnings("ignore")
 import roboticstoolbox as rtb  # noqa: E402
@@ -24,9 +24,6 @@ ets = corke.ets()
 rng = np.random.default_rng(0)
 Q = rng.uniform(-np.pi, np.pi, (N_FK, 6))
 
-
-def best(function, number=1, repeat=3):
-    return min(timeit.repeat(function, number=number, repeat=repeat)) / number
 
 
 # ---- agreement ---------------------------------------------------------------------------
@@ -61,13 +58,5 @@ rows = [
 theirs_fk_batch_dh = best(lambda: [corke.fkine(q) for q in Q[:2000]], 1, 1) * N_FK / 2000
 
 
-def ms(seconds):
-    return f"{seconds * 1e3:>10.3f} ms" if seconds is not None else f"{'-':>13}"
-
-
-print(f"{'task':<27}{'screwkit':>13}{'RTB':>13}{'speed-up':>9}  {'RTB path':<21}{'goal':>13}  met")
-for task, t_ours, t_theirs, path, goal in rows:
-    ratio = f"{t_theirs / t_ours:>8.1f}x" if t_theirs else f"{'-':>9}"
-    met = "" if goal is None else ("yes" if t_ours < goal else "NO")
-    print(f"{task:<27}{ms(t_ours)}{ms(t_theirs)}{ratio}  {path:<21}{ms(goal)}  {met}")
+print_table(rows, width=27)
 print(f"\n(RTB's DH fkine for 100,000 poses one by one, extrapolated from 2,000: {theirs_fk_batch_dh:.1f} s)")
