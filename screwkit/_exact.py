@@ -183,16 +183,73 @@ def _polynomial_rows(field, M, rows):
     return DomainMatrix(polynomial, (len(rows), M.shape[1]), ring)
 
 
-def _normalised(field, R, pivots):
-    """Rows of a fraction-free echelon form divided by their pivots, over the field."""
+def _determinants(rows, zero, one):
+    """det of the square submatrix of ``rows`` on an ordered list of columns, memoised.
+
+    Laplace expansion along the rows in turn, skipping zero entries: the matrices of joint
+    screws are sparse, and the minors that the columns share are computed once. No division
+    happens, so the entries may be polynomials.
+    """
+    memo = {}
+
+    def sorted_det(depth, cols):
+        if depth == len(rows):
+            return one
+        key = (depth, cols)
+        if key not in memo:
+            total = zero
+            for position, c in enumerate(cols):
+                if rows[depth][c]:
+                    minor = sorted_det(depth + 1, cols[:position] + cols[position + 1:])
+                    if minor:
+                        term = rows[depth][c] * minor
+                        total = total + term if position % 2 == 0 else total - term
+            memo[key] = total
+        return memo[key]
+
+    def det(cols):
+        if len(set(cols)) < len(cols):
+            return zero
+        order = sorted(range(len(cols)), key=lambda k: cols[k])
+        inversions = sum(1 for a in range(len(order)) for b in range(a + 1, len(order)) if order[a] > order[b])
+        value = sorted_det(0, tuple(sorted(cols)))
+        return -value if inversions % 2 else value
+
+    return det
+
+
+def _pivot_columns(field, rows, columns):
+    """The pivot columns (taken in the order ``columns``) of independent rows, for generic values."""
+    if field.symbols:
+        K = field.K
+        for values in field._points:
+            numbers = [[field._evaluate(K.convert(row[j]), values) for j in columns] for row in rows]
+            if any(n is None for row in numbers for n in row):
+                continue
+            pivots = DomainMatrix(numbers, (len(rows), len(columns)), field.GF).rref()[1]
+            if len(pivots) == len(rows):
+                return [columns[k] for k in pivots]
+        raise ArithmeticError("no sample point gives the generic rank; this should not happen")
+    M = DomainMatrix([[row[j] for j in columns] for row in rows], (len(rows), len(columns)), QQ)
+    return [columns[k] for k in M.rref()[1]]
+
+
+def _solve_by_minors(field, rows, pivots, others):
+    """Cramer's rule on A = rows with det(A_pivots) != 0: for each column j in ``others``, the
+    solution x of A_pivots x = A_j, as {pivot: K element}, each x_k = det(A_pivots, column k
+    replaced by column j) / det(A_pivots)."""
     K = field.K
-    out = []
-    for i, j in enumerate(pivots):
-        row = R.to_list()[i]
-        pivot = K.convert(row[j])
-        out.append([K.one if k == j else K.quo(K.convert(e), pivot) if e else K.zero
-                    for k, e in enumerate(row)])
-    return DomainMatrix(out, (len(out), R.shape[1]), K)
+    ring = K.get_ring() if field.symbols else K
+    det = _determinants(rows, ring.zero, ring.one)
+    denominator = K.convert(det(pivots))
+    solutions = []
+    for j in others:
+        x = {}
+        for k, p in enumerate(pivots):
+            value = det(pivots[:k] + [j] + pivots[k + 1:])
+            x[p] = K.quo(K.convert(value), denominator) if value else K.zero
+        solutions.append(x)
+    return solutions
 
 
 def reduced_basis(field, M, rows=None):
@@ -200,8 +257,9 @@ def reduced_basis(field, M, rows=None):
 
     ``rows``: indices of generically independent rows (found if not given). Reduced from
     the right: each row has a 1 at its last nonzero coordinate and zeros in the other rows
-    there, so couples and forces read like (0, 0, 0, 0, 0, 1). Elimination is fraction-free
-    over the polynomial ring (no gcds); the single division by each pivot comes last.
+    there, so couples and forces read like (0, 0, 0, 0, 0, 1). That is B = A_P^-1 A for the
+    pivot columns P found from the right; its entries are ratios of minors of A (Cramer's
+    rule), computed without fractions until the one division each.
     """
     cols = M.shape[1]
     rows = field.independent_rows(M) if rows is None else rows
@@ -209,22 +267,35 @@ def reduced_basis(field, M, rows=None):
         return DomainMatrix.zeros((0, cols), field.K)
     if len(rows) == cols:  # the whole space: the identity is its reduced basis
         return DomainMatrix.eye(cols, field.K)
-    flip = list(reversed(range(cols)))
-    P = _polynomial_rows(field, M, rows).extract(list(range(len(rows))), flip)
-    R, _, pivots = P.rref_den()
-    R = _normalised(field, R, pivots)
-    order = sorted(range(len(pivots)), key=lambda i: -pivots[i])
-    return R.extract(order, flip)
+    A = _polynomial_rows(field, M, rows).to_list()
+    pivots = sorted(_pivot_columns(field, A, list(reversed(range(cols)))))
+    K = field.K
+    basis = [[K.one if j == p else K.zero for j in range(cols)] for p in pivots]
+    others = [j for j in range(cols) if j not in pivots]
+    for j, x in zip(others, _solve_by_minors(field, A, pivots, others)):
+        for k, p in enumerate(pivots):
+            basis[k][j] = x[p]
+    return DomainMatrix(basis, (len(basis), cols), K)
 
 
 def null_space(field, M, rows=None):
-    """A canonical basis of {x : M x = 0} for generic values, as DomainMatrix rows."""
+    """A canonical basis of {x : M x = 0} for generic values, as DomainMatrix rows.
+
+    With the pivot columns P of M (from the left) and the free columns F, basis vector f has
+    x_f = 1, zeros at the other free columns and x_P = -A_P^-1 A_f (Cramer's rule): its last
+    nonzero coordinate is that 1, so the basis is already reduced from the right.
+    """
     cols = M.shape[1]
     rows = field.independent_rows(M) if rows is None else rows
     if not rows:
         return DomainMatrix.eye(cols, field.K)
     if len(rows) == cols:  # full rank: only the zero vector
         return DomainMatrix.zeros((0, cols), field.K)
-    N = _polynomial_rows(field, M, rows).nullspace(divide_last=False)
-    N = DomainMatrix([[field.K.convert(e) for e in row] for row in N.to_list()], N.shape, field.K)
-    return reduced_basis(field, N, list(range(N.shape[0])))
+    A = _polynomial_rows(field, M, rows).to_list()
+    pivots = _pivot_columns(field, A, list(range(cols)))
+    free = [j for j in range(cols) if j not in pivots]
+    K = field.K
+    basis = []
+    for f, x in zip(free, _solve_by_minors(field, A, pivots, free)):
+        basis.append([K.one if j == f else K.zero if j in free else K.neg(x[j]) for j in range(cols)])
+    return DomainMatrix(basis, (len(basis), cols), K)
