@@ -22,6 +22,7 @@ import sympy as sp
 from sympy import GF, QQ
 from sympy.ntheory import sqrt_mod
 from sympy.polys.matrices import DomainMatrix
+from sympy.polys.polyerrors import CoercionFailed
 
 _TRIG = (sp.sin, sp.cos, sp.tan)
 _SAMPLE_POINTS = 2
@@ -64,6 +65,7 @@ class Field:
         symbols = set().union(*(e.xreplace(self.dummy).free_symbols for e in exprs)) if exprs else set()
         self.symbols = sorted(symbols, key=sp.default_sort_key)
         self.K = QQ.frac_field(*self.symbols) if self.symbols else QQ
+        self._ring = self.K.get_ring() if self.symbols else QQ
         self._cache = {}
         self.prime, self._points = self._sample_points()
         self.GF = GF(self.prime)
@@ -71,8 +73,11 @@ class Field:
     def element(self, e):
         e = _exact_numbers(sp.sympify(e))
         if e not in self._cache:
-            plain = sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e
-            self._cache[e] = self.K.from_sympy(plain.xreplace(self.dummy))
+            plain = (sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e).xreplace(self.dummy)
+            try:  # most screw coordinates are polynomials: build them in the ring, no cancelling
+                self._cache[e] = self.K.convert(self._ring.from_sympy(plain)) if self.symbols else self.K.from_sympy(plain)
+            except (ValueError, CoercionFailed):
+                self._cache[e] = self.K.from_sympy(plain)
         return self._cache[e]
 
     def matrix(self, rows):
@@ -173,13 +178,17 @@ def _polynomial_rows(field, M, rows):
         row = M.to_list()[i]
         denominator = ring.one
         for e in row:
-            denominator = denominator.lcm(e.denom) if e else denominator
+            if e and not e.denom.is_ground:
+                denominator = denominator.lcm(e.denom)
         cleared = [(e.numer * denominator.exquo(e.denom)) if e else ring.zero for e in row]
-        content = ring.zero
-        for e in cleared:  # divide out the row's common factor to keep the entries small
-            if e:
-                content = e if not content else content.gcd(e)
-        polynomial.append([e.exquo(content) if e else e for e in cleared])
+        # divide out the row's common factor to keep the entries small (none if an entry is a number)
+        if not any(e and e.is_ground for e in cleared):
+            content = ring.zero
+            for e in cleared:
+                if e:
+                    content = e if not content else content.gcd(e)
+            cleared = [e.exquo(content) if e else e for e in cleared]
+        polynomial.append(cleared)
     return DomainMatrix(polynomial, (len(rows), M.shape[1]), ring)
 
 
@@ -221,15 +230,13 @@ def _determinants(rows, zero, one):
 def _pivot_columns(field, rows, columns):
     """The pivot columns (taken in the order ``columns``) of independent rows, for generic values."""
     if field.symbols:
-        K = field.K
         for values in field._points:
-            numbers = [[field._evaluate(K.convert(row[j]), values) for j in columns] for row in rows]
-            if any(n is None for row in numbers for n in row):
-                continue
+            numbers = [[field.GF(_evaluate_polynomial(row[j], values, field.prime)) if row[j] else field.GF.zero
+                        for j in columns] for row in rows]
             pivots = DomainMatrix(numbers, (len(rows), len(columns)), field.GF).rref()[1]
             if len(pivots) == len(rows):
                 return [columns[k] for k in pivots]
-        raise ArithmeticError("no sample point gives the generic rank; this should not happen")
+        raise ArithmeticError("no sample point gives the generic rank: the sample points are not generic")
     M = DomainMatrix([[row[j] for j in columns] for row in rows], (len(rows), len(columns)), QQ)
     return [columns[k] for k in M.rref()[1]]
 
