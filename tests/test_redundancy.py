@@ -50,7 +50,7 @@ def test_planar_kinematics_equals_the_general_chain(q):
 def test_manipulability_gradient_is_exact(q):
     w, gradient = rd.manipulability_gradient(LENGTHS, q)
     assert np.isclose(w, ARM.manipulability(q, rows="planar"), atol=1e-12)   # by singular values
-    if w > 1e-3:
+    if w > 0.05:  # central differences of sqrt(det) lose accuracy like 1/w^5 near a singularity
         h = 1e-6
         central = [(rd.manipulability_gradient(LENGTHS, q + h * e)[0] - rd.manipulability_gradient(LENGTHS, q - h * e)[0])
                    / (2 * h) for e in np.eye(5)]
@@ -61,12 +61,15 @@ def test_manipulability_gradient_is_exact(q):
 @given(angles)
 def test_null_space_motion_never_moves_the_end_effector(q):
     _, J = rd.planar_kinematics(LENGTHS, q)
-    if np.linalg.matrix_rank(J) == 2:
+    # the identity is exact; J^T (J J^T)^-1 squares the condition number, and so does its round-off
+    condition = np.linalg.cond(J)
+    if condition < 100:
+        tolerance = 1e-14 * condition**2
         J_plus = rd.pseudo_inverse(J)
-        assert np.allclose(J_plus, np.linalg.pinv(J), atol=1e-9)
-        assert np.allclose(J @ (np.eye(5) - J_plus @ J), 0, atol=1e-12)
+        assert np.allclose(J_plus, np.linalg.pinv(J), rtol=0, atol=tolerance * np.abs(J_plus).max())
+        assert np.allclose(J @ (np.eye(5) - J_plus @ J), 0, atol=tolerance)
         phi = rd.manipulability_gradient(LENGTHS, q)[1]
-        assert np.allclose(J @ (np.eye(5) - J_plus @ J) @ phi, 0, atol=1e-12)
+        assert np.allclose(J @ (np.eye(5) - J_plus @ J) @ phi, 0, atol=tolerance * (1 + np.abs(phi).max()))
 
 
 def test_circle_is_tracked_within_a_tenth_of_a_millimetre_and_null_space_raises_manipulability():
