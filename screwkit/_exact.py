@@ -35,45 +35,69 @@ def _exact_numbers(e):
     return e.xreplace({f: sp.Rational(f) for f in e.atoms(sp.Float)}) if e.has(sp.Float) else e
 
 
-def _roots(exprs):
-    """The numeric roots, such as sqrt(3), that occur in the expressions."""
-    roots = set()
-    for e in exprs:
-        for p in e.atoms(sp.Pow):
-            if p.base.is_Rational and p.exp.is_Rational and not p.exp.is_Integer:
-                roots.add(p)
-    return roots
+def _is_root(e):
+    """True for a numeric root such as sqrt(3) = 3**(1/2)."""
+    return e.is_Pow and e.base.is_Rational and e.exp.is_Rational and not e.exp.is_Integer
+
+
+def _scan(e, found, seen):
+    """Collect, in one walk of the tree, the generators of ``e``: trig atoms, numeric roots, and the
+    symbols outside them; other functions go to found['other'], and Floats set found['float']."""
+    if e in seen:
+        return
+    seen.add(e)
+    if isinstance(e, _TRIG):
+        found["trig"].add(e)
+    elif e.is_Symbol:
+        found["symbols"].add(e)
+    elif e.is_Float:
+        found["float"] = True
+    elif _is_root(e):
+        found["roots"].add(e)
+    else:
+        if isinstance(e, sp.Function):
+            found["other"].add(e)
+        for a in e.args:
+            _scan(a, found, seen)
 
 
 class Field:
-    """The field QQ(generators) that holds every entry of one problem, and its sample points."""
+    """The field QQ(generators) that holds every entry of one problem, and its sample points.
+
+    The generators are the symbols, the sin/cos/tan atoms and the numeric roots themselves
+    (SymPy's polynomial rings accept sin(theta) as a generator), so no substitution is needed.
+    """
 
     def __init__(self, exprs):
-        exprs = [_exact_numbers(sp.sympify(e)) for e in exprs]
-        trig = set().union(*(e.atoms(*_TRIG) for e in exprs)) if exprs else set()
-        self.expand = any(not a.args[0].is_Symbol for a in trig)
+        exprs = [sp.sympify(e) for e in exprs]
+        found = self._generators(exprs)
+        if found["float"]:
+            exprs = [_exact_numbers(e) for e in exprs]
+        self.expand = any(not a.args[0].is_Symbol for a in found["trig"])
         if self.expand:  # sin(a + b) and the like: write in sin/cos of single symbols
             exprs = [sp.expand_trig(e) for e in exprs]
-            trig = set().union(*(e.atoms(*_TRIG) for e in exprs))
-        for e in exprs:
-            other = {f for f in e.atoms(sp.Function) if not isinstance(f, _TRIG)}
-            if other:
-                raise TypeError(f"screw coordinates may use sin, cos and tan only, got {sorted(map(str, other))}")
-        atoms = sorted(trig | _roots(exprs), key=sp.default_sort_key)
-        self.dummy = {a: sp.Dummy(f"g{k}") for k, a in enumerate(atoms)}
-        self.atom = {d: a for a, d in self.dummy.items()}
-        symbols = set().union(*(e.xreplace(self.dummy).free_symbols for e in exprs)) if exprs else set()
-        self.symbols = sorted(symbols, key=sp.default_sort_key)
+            found = self._generators(exprs)
+        if found["other"]:
+            raise TypeError(f"screw coordinates may use sin, cos and tan only, got {sorted(map(str, found['other']))}")
+        self.symbols = sorted(found["trig"] | found["roots"] | found["symbols"], key=sp.default_sort_key)
         self.K = QQ.frac_field(*self.symbols) if self.symbols else QQ
         self._ring = self.K.get_ring() if self.symbols else QQ
         self._cache = {}
         self.prime, self._points = self._sample_points()
         self.GF = GF(self.prime)
 
+    @staticmethod
+    def _generators(exprs):
+        found = {"trig": set(), "roots": set(), "symbols": set(), "other": set(), "float": False}
+        seen = set()
+        for e in exprs:
+            _scan(e, found, seen)
+        return found
+
     def element(self, e):
         e = _exact_numbers(sp.sympify(e))
         if e not in self._cache:
-            plain = (sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e).xreplace(self.dummy)
+            plain = sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e
             try:  # most screw coordinates are polynomials: build them in the ring, no cancelling
                 self._cache[e] = self.K.convert(self._ring.from_sympy(plain)) if self.symbols else self.K.from_sympy(plain)
             except (ValueError, CoercionFailed):
@@ -87,27 +111,29 @@ class Field:
 
     def to_sympy(self, element):
         if self.symbols and not (element.numer.is_ground and element.denom.is_ground):
-            return sp.factor(self.K.to_sympy(element)).xreplace(self.atom)
+            return sp.factor(self.K.to_sympy(element))
         return self.K.to_sympy(element)
 
     def _sample_points(self):
         """A prime, and exact random values of the generators modulo it that keep every relation."""
         rng = random.Random(_SEED)
-        roots = [a for a in self.atom.values() if isinstance(a, sp.Pow)]
+        roots = [g for g in self.symbols if _is_root(g)]
+        for r in roots:
+            if r.exp.q != 2:
+                raise TypeError(f"screw coordinates may use square roots only, got {r}")
         prime = _PRIME
         while True:  # the prime must have the square roots we need
             root_values = {}
             for r in roots:
-                q = r.base ** r.exp.p  # r = q**(1/n) with q rational
-                values = sqrt_mod(int(q.p) * pow(int(q.q), -1, prime) % prime, prime, all_roots=False) \
-                    if r.exp.q == 2 else None
-                if values is None:
+                q = r.base ** r.exp.p  # r = q**(1/2) with q rational
+                value = sqrt_mod(int(q.p) * pow(int(q.q), -1, prime) % prime, prime, all_roots=False)
+                if value is None:
                     break
-                root_values[r] = values
+                root_values[r] = value
             if len(root_values) == len(roots):
                 break
             prime = int(sp.prevprime(prime))
-        angles = sorted({a.args[0] for a in self.atom.values() if isinstance(a, _TRIG)}, key=sp.default_sort_key)
+        angles = sorted({g.args[0] for g in self.symbols if isinstance(g, _TRIG)}, key=sp.default_sort_key)
         points = []
         for _ in range(_SAMPLE_POINTS):
             value = dict(root_values)
@@ -117,8 +143,7 @@ class Field:
                 sin, cos = 2 * t * inverse % prime, (1 - t * t) * inverse % prime
                 value[sp.sin(angle)], value[sp.cos(angle)] = sin, cos
                 value[sp.tan(angle)] = sin * pow(cos, -1, prime) % prime if cos else 0
-            points.append([value[self.atom[g]] if g in self.atom else rng.randrange(1, prime)
-                           for g in self.symbols])
+            points.append([value[g] if g in value else rng.randrange(1, prime) for g in self.symbols])
         return prime, points
 
     def independent_rows(self, M):
