@@ -17,7 +17,7 @@ CASES = [  # name, builder, paper Table 1 (s), paper's code on this machine (s)
 ]
 
 
-def best_of(function, repeat=3):
+def best_of(function, repeat=7):
     times = []
     for _ in range(repeat):
         start = time.perf_counter()

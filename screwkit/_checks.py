@@ -53,20 +53,25 @@ def as_float_array(value, name):
 
 def as_sympy_matrix(value, name, shape):
     """``value`` as an exact SymPy matrix of the given ``shape``."""
-    if _contains_string(value):
-        raise TypeError(f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
-    try:
-        matrix = sp.Matrix(value)
-    except (TypeError, ValueError, sp.SympifyError):
-        raise TypeError(f"{name} must be a matrix of shape {shape}, got {describe(value)}") from None
-    if shape[1] == 1 and matrix.shape == (1, shape[0]):
-        matrix = matrix.T
-    if matrix.shape != shape:
+    if isinstance(value, sp.MatrixBase):
+        matrix = value
+    else:
+        if _contains_string(value):
+            raise TypeError(f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
+        try:
+            matrix = sp.Matrix(value)
+        except (TypeError, ValueError, sp.SympifyError):
+            raise TypeError(f"{name} must be a matrix of shape {shape}, got {describe(value)}") from None
+    if matrix.shape != shape and not (shape[1] == 1 and matrix.shape == (1, shape[0])):
         raise ValueError(f"{name} must have shape {shape}, got {describe(matrix)}")
-    for entry in matrix:
-        if entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+    entries = matrix.flat()
+    for entry in entries:
+        if not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or entry in _INFINITE:
             raise ValueError(f"{name} must be finite, got an entry equal to {entry}")
-    return matrix.applyfunc(_exact_if_integral)
+    return sp.Matrix(shape[0], shape[1], [_exact_if_integral(e) for e in entries])
+
+
+_INFINITE = {sp.nan, sp.zoo, sp.oo, -sp.oo}
 
 
 def _contains_string(value):

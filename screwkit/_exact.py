@@ -206,13 +206,6 @@ def _polynomial_rows(field, M, rows):
             if e and not e.denom.is_ground:
                 denominator = denominator.lcm(e.denom)
         cleared = [(e.numer * denominator.exquo(e.denom)) if e else ring.zero for e in row]
-        # divide out the row's common factor to keep the entries small (none if an entry is a number)
-        if not any(e and e.is_ground for e in cleared):
-            content = ring.zero
-            for e in cleared:
-                if e:
-                    content = e if not content else content.gcd(e)
-            cleared = [e.exquo(content) if e else e for e in cleared]
         polynomial.append(cleared)
     return DomainMatrix(polynomial, (len(rows), M.shape[1]), ring)
 

@@ -46,12 +46,20 @@ class Screw:
         if all(e == 0 for e in s):
             raise ValueError(f"s must be a non-zero direction, got {list(s)}")
         if _is_infinite_pitch(h):
-            return cls(sp.Matrix.vstack(sp.zeros(3, 1), s))
+            return cls._checked(sp.Matrix(6, 1, [0, 0, 0] + s.flat()))
         if isinstance(h, str) or h is None:
             raise TypeError(f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}")
         h = as_sympy_matrix([h], "h", (1, 1))[0]
-        r = as_sympy_matrix(r, "r", (3, 1))
-        return cls(sp.Matrix.vstack(s, r.cross(s) + h * s))
+        (r1, r2, r3), (s1, s2, s3) = as_sympy_matrix(r, "r", (3, 1)).flat(), s.flat()
+        moment = [r2 * s3 - r3 * s2 + h * s1, r3 * s1 - r1 * s3 + h * s2, r1 * s2 - r2 * s1 + h * s3]
+        return cls._checked(sp.Matrix(6, 1, [s1, s2, s3] + moment))
+
+    @classmethod
+    def _checked(cls, vector):
+        """A screw from a 6 x 1 SymPy matrix built from checked parts (no second check)."""
+        screw = cls.__new__(cls)
+        screw.vector = vector
+        return screw
 
     @classmethod
     def from_vector(cls, vector):
