@@ -74,6 +74,21 @@ def as_sympy_matrix(value, name, shape):
 _INFINITE = {sp.nan, sp.zoo, sp.oo, -sp.oo}
 
 
+def as_sympy_scalar(value, name):
+    """``value`` as one exact, finite SymPy number or expression."""
+    if isinstance(value, (str, bytes)) or value is None:
+        raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
+    try:
+        entry = sp.sympify(value, strict=True)
+    except sp.SympifyError:
+        raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}") from None
+    if not isinstance(entry, sp.Expr):
+        raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
+    if entry in _INFINITE or not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise ValueError(f"{name} must be finite, got {entry}")
+    return _exact_if_integral(entry)
+
+
 def _contains_string(value):
     if isinstance(value, (str, bytes)):
         return True

@@ -143,7 +143,7 @@ def mobility(limbs, at=None):
         M = F.matrix([list(t.vector) for t in limb])
         independent = F.independent_rows(M)
         N = _exact.null_space(F, M.extract(list(range(M.shape[0])), _SWAP), independent)
-        wrenches = [Wrench([F.to_sympy(e) for e in row]) for row in N.to_list()]
+        wrenches = [Wrench._checked(sp.Matrix(6, 1, [F.to_sympy(e) for e in row])) for row in N.to_list()]
         lts.append(ScrewSystem(limb, kind=Twist, _field=F, _rank=len(independent)))
         lts_ranks.append(len(independent))
         lws.append(ScrewSystem(wrenches, kind=Wrench, _rank=len(wrenches), _basis=wrenches))

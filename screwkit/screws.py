@@ -15,7 +15,7 @@ Matrix([[0, 0, 1, 0, -1, 0]])
 """
 import sympy as sp
 
-from ._checks import as_sympy_matrix, describe
+from ._checks import as_sympy_matrix, as_sympy_scalar, describe
 
 __all__ = ["Screw", "Twist", "Wrench"]
 
@@ -49,7 +49,7 @@ class Screw:
             return cls._checked(sp.Matrix(6, 1, [0, 0, 0] + s.flat()))
         if isinstance(h, str) or h is None:
             raise TypeError(f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}")
-        h = as_sympy_matrix([h], "h", (1, 1))[0]
+        h = as_sympy_scalar(h, "h")
         (r1, r2, r3), (s1, s2, s3) = as_sympy_matrix(r, "r", (3, 1)).flat(), s.flat()
         moment = [r2 * s3 - r3 * s2 + h * s1, r3 * s1 - r1 * s3 + h * s2, r1 * s2 - r2 * s1 + h * s3]
         return cls._checked(sp.Matrix(6, 1, [s1, s2, s3] + moment))

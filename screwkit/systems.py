@@ -85,7 +85,8 @@ class ScrewSystem:
                 self._basis = []
             else:
                 R = _exact.reduced_basis(self.field, self._domain_matrix())
-                self._basis = [self.kind([self.field.to_sympy(e) for e in row]) for row in R.to_list()]
+                self._basis = [self.kind._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row]))
+                               for row in R.to_list()]
         return list(self._basis)
 
     def reciprocal(self):
@@ -95,7 +96,7 @@ class ScrewSystem:
             return ScrewSystem([other(v) for v in sp.eye(6).columnspace()], kind=other)
         M = self.field.matrix([_swap(s.vector) for s in self.screws])
         N = _exact.null_space(self.field, M)
-        basis = [other([self.field.to_sympy(e) for e in row]) for row in N.to_list()]
+        basis = [other._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])) for row in N.to_list()]
         return ScrewSystem(basis, kind=other, _rank=len(basis), _basis=basis)
 
     def union(self, other):
