@@ -181,6 +181,12 @@ class Field:
         return self.GF(numerator * pow(denominator, -1, self.prime))
 
 
+def generic_rank(rows):
+    """The rank, for generic values of the symbols, of a matrix given as rows of SymPy expressions."""
+    field = Field([e for row in rows for e in row])
+    return field.rank(field.matrix(rows))
+
+
 def _evaluate_polynomial(polynomial, values, prime):
     total = 0
     for monomial, coefficient in polynomial.terms():

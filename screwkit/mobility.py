@@ -191,7 +191,7 @@ def _at_configuration(limbs, at):
 
 def _result(limbs, lts, lws, pws, pts, lts_ranks):
     basis = pts.basis()
-    rotations = sp.Matrix([list(t.primary) for t in basis]).rank() if basis else 0
+    rotations = _exact.generic_rank([list(t.primary) for t in basis]) if basis else 0
     translations = len(basis) - rotations
     kind = (f"{translations}T" if translations else "") + (f"{rotations}R" if rotations else "") or "0"
     names = [_describe(t.vector) for t in basis]
