@@ -71,14 +71,17 @@ def test_mobility_does_not_depend_on_the_fixed_frame():
     assert (after.number, after.type) == (before.number, before.type)
 
 
-def test_numeric_configurations_agree_with_the_symbolic_answer():
-    limbs = sk.robots.pm_3prrr()
-    symbols = sorted(set().union(*(sp.Matrix(r).free_symbols for limb in limbs for _, r, _ in limb)), key=str)
+@pytest.mark.parametrize("name", ["pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups"])
+def test_numeric_configurations_agree_with_the_symbolic_answer(name):
+    limbs = getattr(sk.robots, name)()
+    symbols = sorted(set().union(*(sp.Matrix(r).free_symbols | sp.Matrix(s).free_symbols
+                                   for limb in limbs for s, r, _ in limb)), key=str)
     rng = random.Random(3)
     for _ in range(2):
         values = {s: sp.Rational(rng.randint(1, 90), rng.randint(7, 19)) for s in symbols}
-        numeric = [[(s, sp.Matrix(r).subs(values), h) for s, r, h in limb] for limb in limbs]
-        assert mobility(numeric).as_dict() == PAPER["pm_3prrr"]
+        numeric = [[(sp.Matrix(s).subs(values), sp.Matrix(r).subs(values), h) for s, r, h in limb] for limb in limbs]
+        assert mobility(numeric).as_dict() == PAPER[name]
+        assert mobility(limbs, at=values).notes[0].startswith("general configuration")
 
 
 def test_a_singular_configuration_differs_from_the_generic_one():
