@@ -1,6 +1,6 @@
 """Exact linear algebra on symbolic screw coordinates, fast enough for mobility analysis.
 
-Two ideas keep it exact and fast (the pyScrew4Mobility paper spends its time
+Three ideas keep it exact and fast (the pyScrew4Mobility paper spends its time
 simplifying trigonometric expressions inside ``Matrix.nullspace``):
 
 * **Rank is decided generically and exactly.** Every entry is a rational function of
@@ -15,6 +15,12 @@ simplifying trigonometric expressions inside ``Matrix.nullspace``):
   rows that are independent at the sample points: those rows have full rank in the field,
   so no identity such as sin^2 + cos^2 = 1 or sqrt(3)^2 = 3 is ever needed, and none of
   SymPy's trigonometric simplification runs.
+* **Bases come from minors, not elimination.** The canonical basis of a null space or a row
+  space is A_P^-1 times some columns of A, for the pivot columns P (found at the sample
+  points). Cramer's rule gives each entry as a ratio of minors of A, and the minors of these
+  sparse 6-column matrices are computed by Laplace expansion with memoisation, with no
+  division until the last: far cheaper than fraction-free elimination, whose intermediate
+  polynomials grow with a poor pivot order.
 """
 import random
 
