@@ -119,9 +119,9 @@ def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0
 
 
 # matplotlib's player draws its buttons with Font Awesome from a CDN: the book must work offline
-_PLAYER_ICONS = {"fa fa-minus": "\u2212", "fa fa-fast-backward": "\u23ee", "fa fa-step-backward": "\u25c1|",
+_PLAYER_ICONS = {"fa fa-minus": "\u2212", "fa fa-fast-backward": "|\u25c0", "fa fa-step-backward": "\u25c1|",
                  "fa fa-play fa-flip-horizontal": "\u25c0", "fa fa-pause": "\u275a\u275a",
-                 "fa fa-play": "\u25b6", "fa fa-step-forward": "|\u25b7", "fa fa-fast-forward": "\u23ed",
+                 "fa fa-play": "\u25b6", "fa fa-step-forward": "|\u25b7", "fa fa-fast-forward": "\u25b6|",
                  "fa fa-plus": "+"}
 
 
