@@ -78,6 +78,24 @@ class Sweep:
             raise ValueError(f"det J needs a square Jacobian (6 joints), the chain has {self.chain.n}")
         return np.linalg.det(self.jacobians())
 
+    def singular(self):
+        """A mask (shape grid) of the singular configurations: True where J has lost rank, and on
+        both sides of every sign change of det J between grid neighbours (a singular surface passes
+        between them). For a chain without a square Jacobian, only where J has lost rank."""
+        if self.chain.n != 6:
+            return self.manipulability() == 0.0
+        det = self.determinant()
+        mask = self.manipulability() == 0.0
+        sign = np.sign(det)
+        for axis in range(det.ndim):
+            change = np.diff(sign, axis=axis) != 0
+            before = [slice(None)] * det.ndim
+            after = [slice(None)] * det.ndim
+            before[axis], after[axis] = slice(0, -1), slice(1, None)
+            mask[tuple(before)] |= change
+            mask[tuple(after)] |= change
+        return mask
+
     def manipulability(self, rows="all"):
         """Yoshikawa's manipulability at every grid point: shape grid (0.0 where singular)."""
         w = manipulability(self.chain, self.q.reshape(-1, self.chain.n), rows)

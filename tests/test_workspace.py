@@ -38,6 +38,8 @@ def test_sweep_determinant_changes_sign_across_the_elbow_singularity():
     crossing = np.flatnonzero(np.diff(np.sign(det)))
     assert crossing.size == 1
     assert s.values[0][crossing[0]] <= np.arctan2(-1.19, 0.3) <= s.values[0][crossing[0] + 1]
+    # the singular mask marks the two grid points on either side of the crossing, and nothing else
+    assert np.flatnonzero(s.singular()).tolist() == [crossing[0], crossing[0] + 1]
 
 
 def test_bad_sweeps_are_clear_errors():
