@@ -105,9 +105,10 @@ class Field:
         if e not in self._cache:
             plain = sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e
             try:  # most screw coordinates are polynomials: build them in the ring, no cancelling
-                self._cache[e] = self.K.convert(self._ring.from_sympy(plain)) if self.symbols else self.K.from_sympy(plain)
+                value = self.K.convert(self._ring.from_sympy(plain))
             except (ValueError, CoercionFailed):
-                self._cache[e] = self.K.from_sympy(plain)
+                value = self.K.from_sympy(plain)
+            self._cache[e] = value
         return self._cache[e]
 
     def matrix(self, rows):

@@ -254,6 +254,19 @@ class Chain:
                 T = T.applyfunc(lambda e: TR10i(sp.expand(e)))
         return T
 
+    def frames_symbolic(self, symbolic_lengths=False):
+        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool): a list of n + 1 SymPy matrices."""
+        base = _exact_matrix(self.base)
+        return [(base * self.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k)).applyfunc(sp.expand)
+                for k in range(self.n + 1)]
+
+    def joint_frames(self, frames):
+        """Of the n + 1 frames (base first, no tool), the n whose z axis is a joint axis.
+
+        Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
+        """
+        return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
+
     # ---- fast -----------------------------------------------------------------------------
 
     @cached_property
@@ -277,26 +290,23 @@ class Chain:
         return _compile([T[i, j] for i in range(3) for j in range(4)], self._angle_chain.q_symbols)
 
     @cached_property
+    def _angle_frames(self):
+        """frames_symbolic() in the angles theta_i, and the pose with the tool: computed once."""
+        return self._angle_chain.frames_symbolic(), self._angle_chain.fk_symbolic()
+
+    @cached_property
     def _frames_functions(self):
         """Every frame base @ A_1 ... A_k (k = 0..n, the last with the tool) compiled once."""
-        entries = []
-        for T in self._symbolic_frames()[:-1] + [self._angle_chain.fk_symbolic()]:
-            entries += [T[i, j] for i in range(3) for j in range(4)]
+        frames, end = self._angle_frames
+        entries = [T[i, j] for T in frames[:-1] + [end] for i in range(3) for j in range(4)]
         return _compile(entries, self._angle_chain.q_symbols)
 
     @cached_property
     def _axes_functions(self):
         """The joint axes (z_i, o_i, i = 1..n) and the end-effector point p compiled once, 6n + 3 entries."""
-        frames = self._symbolic_frames()
-        joint_frames = frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
-        entries = [T[i, j] for T in joint_frames for j in (2, 3) for i in range(3)]
-        end = self._angle_chain.fk_symbolic()
+        frames, end = self._angle_frames
+        entries = [T[i, j] for T in self.joint_frames(frames) for j in (2, 3) for i in range(3)]
         return _compile(entries + list(end[:3, 3]), self._angle_chain.q_symbols)
-
-    def _symbolic_frames(self):
-        """base @ A_1 ... A_k for k = 0..n (no tool), in the angles theta_i."""
-        base = _exact_matrix(self.base)
-        return [(base * self._angle_chain.fk_symbolic(upto=k)).applyfunc(sp.expand) for k in range(self.n + 1)]
 
     def _evaluate(self, functions, q, out=None, rows=None):
         """Run compiled ``functions`` (see :func:`_compile`) at q.
@@ -346,29 +356,6 @@ class Chain:
         self._evaluate(self._frames_functions, q, T.reshape(16 * count, -1), rows)
         return T.transpose(3, 0, 1, 2)
 
-    def link_matrices(self, q):
-        """The numeric link transforms A_i(q_i): q (n,) -> (n, 4, 4); (N, n) -> (N, n, 4, 4)."""
-        q = self.check_q(q)
-        A = np.zeros(q.shape + (4, 4))
-        A[..., 3, 3] = 1.0
-        for i, link in enumerate(self.links):
-            revolute = link.joint is Joint.REVOLUTE
-            theta = q[..., i] + self._revolute_offsets[i] if revolute else float(sp.sympify(link.theta))
-            d = float(sp.sympify(link.d)) if revolute else q[..., i] + float(sp.sympify(link.offset))
-            a, alpha = float(sp.sympify(link.a)), float(sp.sympify(_exact(link.alpha)))
-            ct, st = np.cos(theta), np.sin(theta)
-            ca, sa = np.cos(alpha), np.sin(alpha)
-            Ai = A[..., i, :, :]
-            if self.convention is Convention.STANDARD:
-                Ai[..., 0, 0], Ai[..., 0, 1], Ai[..., 0, 2], Ai[..., 0, 3] = ct, -st * ca, st * sa, a * ct
-                Ai[..., 1, 0], Ai[..., 1, 1], Ai[..., 1, 2], Ai[..., 1, 3] = st, ct * ca, -ct * sa, a * st
-                Ai[..., 2, 1], Ai[..., 2, 2], Ai[..., 2, 3] = sa, ca, d
-            else:
-                Ai[..., 0, 0], Ai[..., 0, 1], Ai[..., 0, 3] = ct, -st, a
-                Ai[..., 1, 0], Ai[..., 1, 1], Ai[..., 1, 2], Ai[..., 1, 3] = st * ca, ct * ca, -sa, -sa * d
-                Ai[..., 2, 0], Ai[..., 2, 1], Ai[..., 2, 2], Ai[..., 2, 3] = st * sa, ct * sa, ca, ca * d
-        return A
-
     def joint_axes(self, q):
         """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3).
 
@@ -395,7 +382,7 @@ class Chain:
     def manipulability(self, q, rows="all"):
         """Yoshikawa's sqrt(det(J J^T)) of the geometric Jacobian: () or (N,); 0.0 where singular.
 
-        rows: 'all', 'position' (the rows v) or 'orientation' (the rows omega).
+        rows: 'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x, v_y).
         """
         from .jacobians import manipulability
 

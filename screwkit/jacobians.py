@@ -22,12 +22,13 @@ used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) 
 import numpy as np
 import sympy as sp
 
-from .chains import Convention, Joint
+from .chains import Joint
 
 __all__ = [
     "joint_axes",
     "geometric_jacobian",
     "space_jacobian",
+    "numerical_jacobian",
     "geometric_jacobian_symbolic",
     "determinant_symbolic",
     "singular_values",
@@ -99,6 +100,24 @@ def space_jacobian(chain, q):
     return J if q.ndim == 1 else J.transpose(2, 0, 1)
 
 
+def numerical_jacobian(chain, q, h=1e-6):
+    """The geometric Jacobian (6, n) of one configuration by central differences of FK.
+
+    Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the skew
+    matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian` (error O(h^2)).
+    """
+    q = chain.check_q(q)
+    if q.ndim != 1:
+        raise ValueError(f"q must be one configuration of shape ({chain.n},), got shape {q.shape}")
+    R = chain.fk(q)[:3, :3]
+    columns = []
+    for step in h * np.eye(chain.n):
+        plus, minus = chain.fk(q + step), chain.fk(q - step)
+        W = (plus[:3, :3] - minus[:3, :3]) / (2 * h) @ R.T
+        columns.append(np.r_[(plus[:3, 3] - minus[:3, 3]) / (2 * h), W[2, 1], W[0, 2], W[1, 0]])
+    return np.array(columns).T
+
+
 # ---- exact ---------------------------------------------------------------------------------
 
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
@@ -109,9 +128,7 @@ def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
         of expressions in the base frame.
     symbolic_lengths : lengths as the symbols a_i, d_i (see ``Chain.length_symbols``).
     """
-    frames = [chain.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k) for k in range(chain.n + 1)]
-    base = sp.Matrix(chain.base.tolist()).applyfunc(sp.nsimplify)
-    frames = [(base * T).applyfunc(sp.expand) for T in frames]
+    frames = chain.frames_symbolic(symbolic_lengths)
     end = chain.fk_symbolic(symbolic_lengths=symbolic_lengths)
     if point is None:
         p = end[:3, 3]
@@ -123,10 +140,7 @@ def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
         p = sp.Matrix(point)
         if p.shape != (3, 1):
             raise ValueError(f"point must be a frame number, a 3-vector or None, got shape {p.shape}")
-    if chain.convention is Convention.STANDARD:
-        joint_frames = frames[:-1]
-    else:
-        joint_frames = frames[1:]
+    joint_frames = chain.joint_frames(frames)
     columns = []
     for kind, T in zip(chain.joints, joint_frames):
         z, o = T[:3, 2], T[:3, 3]
@@ -162,15 +176,17 @@ def _rows(rows):
     return ROWS[rows]
 
 
+def _singular(sigma, rows, n):
+    """True where J (of the rows ``rows``, n columns) has lost rank: NumPy's rank rule on its
+    smallest singular value."""
+    m = len(range(6)[_rows(rows)])
+    return sigma[..., -1] <= sigma[..., 0] * max(m, n) * np.finfo(float).eps
+
+
 def singular_values(chain, q, rows="all"):
     """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
     J = geometric_jacobian(chain, q)[..., _rows(rows), :]
     return np.linalg.svd(J, compute_uv=False)
-
-
-def _numerically_zero(sigma, m, n):
-    """True where the smallest singular value is zero to working precision (NumPy's rank rule)."""
-    return sigma[..., -1] <= sigma[..., 0] * max(m, n) * np.finfo(float).eps
 
 
 def manipulability(chain, q, rows="all"):
@@ -182,15 +198,13 @@ def manipulability(chain, q, rows="all"):
     radians; 'position' gives the volume factor of the velocity ellipsoid in m/s.
     """
     sigma = singular_values(chain, q, rows)
-    w = np.prod(sigma, axis=-1)
-    rows_count = len(range(6)[_rows(rows)])
-    return np.where(_numerically_zero(sigma, rows_count, chain.n), 0.0, w)[()]
+    return np.where(_singular(sigma, rows, chain.n), 0.0, np.prod(sigma, axis=-1))[()]
 
 
 def condition_number(chain, q, rows="all"):
     """sigma_max / sigma_min of the Jacobian's rows (1 is isotropic); inf where singular."""
     sigma = singular_values(chain, q, rows)
-    singular = _numerically_zero(sigma, len(range(6)[_rows(rows)]), chain.n)
+    singular = _singular(sigma, rows, chain.n)
     with np.errstate(divide="ignore"):
         return np.where(singular, np.inf, sigma[..., 0] / sigma[..., -1])[()]
 

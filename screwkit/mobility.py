@@ -176,7 +176,9 @@ def _at_configuration(limbs, at):
     if (special.number, special.type, special.directions) == (general.number, general.type, general.directions):
         special.notes.append(f"general configuration: the mobility at these values, {here}, is the general one")
     else:
-        change = "gains" if special.number > general.number else "loses" if special.number < general.number else "changes"
+        change = "changes"
+        if special.number != general.number:
+            change = "gains" if special.number > general.number else "loses"
         special.notes.append(f"singular configuration: the platform {change} freedoms here, {here}, "
                              f"against {there} in the general configuration")
     ranks = [w.rank for w in special.limb_wrench_systems], [w.rank for w in general.limb_wrench_systems]

@@ -148,7 +148,11 @@ def manipulability_gradient(lengths, q):
     dm_ij/dq_k = r_i . r_max(j,k) - r_max(i,k) . r_j, and dw/dq_k = sum_ij m_ij dm_ij/dq_k / (2 w).
     Where w = 0 the gradient is returned as 0.
     """
-    points, _ = planar_kinematics(lengths, q)
+    return _gradient(planar_kinematics(lengths, q)[0])
+
+
+def _gradient(points):
+    """w and dw/dq from the joint positions (..., n + 1, 2) of planar_kinematics."""
     r = points[..., -1:, :] - points[..., :-1, :]
     n = r.shape[-2]
     G = r @ np.swapaxes(r, -1, -2)                                   # r_i . r_j
@@ -281,7 +285,7 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
         qdot = J_plus @ (velocity[k] + feedback_gain * (target[k] - points[-1]))
         phi = 0.0
         if null_space_gain:
-            phi = null_space_gain * manipulability_gradient(lengths, q)[1]
+            phi = null_space_gain * _gradient(points)[1]
         if joint_limits == "avoid":
             push = limit_gain * _limit_gradient(q, low, high, finite)
             size = np.linalg.norm(push)
@@ -297,7 +301,7 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
             q = clipped
         Q[k + 1] = q
     points, _ = planar_kinematics(lengths, Q)
-    w, _ = manipulability_gradient(lengths, Q)
+    w, _ = _gradient(points)
     position = points[:, -1] @ R.T + origin
     return Resolution(path.t, Q, position, np.linalg.norm(position - path.position, axis=-1), w, limited, path)
 

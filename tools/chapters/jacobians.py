@@ -50,22 +50,13 @@ print(J)
 """),
 md(r"""
 Is it right? Move each joint by $\pm h$ and difference the FK: the columns of $v$ are
-$\partial p / \partial q_i$, those of $\omega$ come from $\dot R R^T = [\omega]_\times$. The test
-suite does this on random configurations of every arm in the course; here once:
+$\partial p / \partial q_i$, those of $\omega$ come from $\dot R R^T = [\omega]_\times$
+(`jacobians.numerical_jacobian`, a dozen lines worth reading). The test suite does this on random
+configurations of every arm in the course; here once:
 """),
 code("""
-def finite_difference_jacobian(chain, q, h=1e-6):
-    columns = []
-    for i in range(chain.n):
-        dq = np.zeros(chain.n)
-        dq[i] = h
-        plus, minus = chain.fk(q + dq), chain.fk(q - dq)
-        W = (plus[:3, :3] - minus[:3, :3]) / (2 * h) @ chain.fk(q)[:3, :3].T
-        columns.append(np.r_[(plus[:3, 3] - minus[:3, 3]) / (2 * h), W[2, 1], W[0, 2], W[1, 0]])
-    return np.array(columns).T
-
 rng = np.random.default_rng(5)
-worst = max(np.abs(puma.geometric_jacobian(q) - finite_difference_jacobian(puma, q)).max()
+worst = max(np.abs(puma.geometric_jacobian(q) - jacobians.numerical_jacobian(puma, q)).max()
             for q in rng.uniform(-np.pi, np.pi, (200, 6)))
 print(f"geometric Jacobian = central differences of FK to 1e-9 on 200 random configurations: {worst < 1e-9}")
 """),

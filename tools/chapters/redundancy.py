@@ -53,8 +53,9 @@ has it right). The difference is not small:
 code("""
 y4_printed = y4 - l[3] * sp.sin(sums[3]) + l[3] * sp.cos(sums[3])
 print("eq. 2.2 as printed minus the correct y4:", sp.simplify(y4_printed - y4))
-arm = sk.robots.planar([0.3, 0.25, 0.2, 0.15, 0.1])
-lengths = dict(zip(l, [0.3, 0.25, 0.2, 0.15, 0.1]))
+LENGTHS = np.array([0.3, 0.25, 0.2, 0.15, 0.1])                 # m, the arm of this chapter
+arm = sk.robots.planar(LENGTHS)
+lengths = dict(zip(l, LENGTHS))
 q_test = np.radians([40, -30, -20, -50, 30])
 values = {**lengths, **dict(zip(theta, q_test))}
 print(f"at q = {np.degrees(q_test).round(0).tolist()} deg: y4 = {float(y4.subs(values)):.4f} m, "
@@ -118,13 +119,13 @@ $w$ and against finite differences:
 code("""
 w_symbolic = sp.sqrt((J * J.T).det())
 gradient_symbolic = [sp.lambdify(list(theta) + list(l), sp.diff(w_symbolic, t)) for t in theta]
-w, gradient = rd.manipulability_gradient(np.array([0.3, 0.25, 0.2, 0.15, 0.1]), q_test)
+w, gradient = rd.manipulability_gradient(LENGTHS, q_test)
 print("w =", round(float(w), 6), " = sqrt(det(J J^T)):", np.isclose(w, np.sqrt(np.linalg.det(J_num @ J_num.T))))
 print("grad w (closed form):", gradient.round(6))
-print("equals SymPy's diff:", np.allclose(gradient, [g(*q_test, 0.3, 0.25, 0.2, 0.15, 0.1) for g in gradient_symbolic]))
+print("equals SymPy's diff:", np.allclose(gradient, [g(*q_test, *LENGTHS) for g in gradient_symbolic]))
 h = 1e-6
-central = [(rd.manipulability_gradient(np.array([0.3, 0.25, 0.2, 0.15, 0.1]), q_test + h * e)[0]
-            - rd.manipulability_gradient(np.array([0.3, 0.25, 0.2, 0.15, 0.1]), q_test - h * e)[0]) / (2 * h)
+central = [(rd.manipulability_gradient(LENGTHS, q_test + h * e)[0]
+            - rd.manipulability_gradient(LENGTHS, q_test - h * e)[0]) / (2 * h)
            for e in np.eye(5)]
 print("equals central differences:", np.allclose(gradient, central, atol=1e-8))
 projector = np.eye(5) - J_plus @ J_num
@@ -177,7 +178,7 @@ q_i)(q_i - q_{i,\min}))$, which is 1 at mid-range and grows without bound at a l
 """),
 code("""
 limits = np.radians([[-180, 180]] + [[-60, 60]] * 4)
-limited_arm = sk.robots.planar([0.3, 0.25, 0.2, 0.15, 0.1], qlim=limits)
+limited_arm = sk.robots.planar(LENGTHS, qlim=limits)
 simulations = {
     "1 no redundancy, no limits": dict(robot=arm, null_space_gain=0.0, joint_limits=None),
     "2 no redundancy, limits": dict(robot=limited_arm, null_space_gain=0.0, joint_limits="clamp"),
@@ -286,7 +287,7 @@ ax_w.set_xlabel("t (s)"); ax_w.set_ylabel("w (m$^2$)"); ax_w.legend(loc="lower r
 
 def update(k):
     for line, run in ((grey, plain), (blue, climbing)):
-        points = rd.planar_kinematics(np.array([0.3, 0.25, 0.2, 0.15, 0.1]), run.q[k])[0]
+        points = rd.planar_kinematics(LENGTHS, run.q[k])[0]
         line.set_data(points[:, 0], points[:, 1])
     marker.set_xdata([circle.t[k]])
     return grey, blue, marker
@@ -325,7 +326,7 @@ resolve independently, on the same clock: here the left arm draws a circle while
 draws a vertical line.
 """),
 code("""
-left, right = sk.robots.two_arm_planar([0.3, 0.25, 0.2, 0.15, 0.1], separation=0.4)
+left, right = sk.robots.two_arm_planar(LENGTHS, separation=0.4)
 two_paths = {left: rd.circle((-0.45, 0.45), 0.12, duration=8.0, dt=0.01),
              right: rd.line((0.45, 0.2), (0.45, 0.6), duration=8.0, dt=0.01)}
 two_runs = {}
