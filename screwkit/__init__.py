@@ -7,6 +7,7 @@ metres and radians. Screws and twists are ordered [angular; linear].
 """
 from . import ik, jacobians, joints, redundancy, robots, workspace
 from .chains import Chain, Convention, Joint, Link, textbook
+from .lie import ad, adjoint, log_rotation, log_transform, vee
 from .mobility import Mobility, grubler_kutzbach, mobility
 from .screws import Screw, Twist, Wrench
 from .systems import ScrewSystem
@@ -40,6 +41,11 @@ def __getattr__(name):
 
 __all__ = [
     "Chain",
+    "ad",
+    "adjoint",
+    "log_rotation",
+    "log_transform",
+    "vee",
     "Convention",
     "Joint",
     "Link",

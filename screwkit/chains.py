@@ -1,10 +1,14 @@
-"""Serial chains described by Denavit–Hartenberg (DH) parameters.
+"""Serial chains: from a Denavit–Hartenberg (DH) table or from joint screws (product of exponentials).
 
-A :class:`Chain` is a fixed model (links, base and tool); it computes forward kinematics
-exactly (``fk_symbolic``: a SymPy matrix in the joint symbols q1..qn) or fast (``fk``:
-float64, one configuration ``(n,)`` or a batch ``(N, n)``). The fast path is the exact
-product compiled once with ``sympy.lambdify(..., cse=True)``, so both paths are the same
-formula.
+A :class:`Chain` is a fixed, immutable model. Underneath, every chain is its joint twists and
+a home pose: T(q) = base exp([S_1] q_1) ... exp([S_n] q_n) M tool (Lynch and Park's product of
+exponentials); a DH table is one way to write those screws down, :meth:`Chain.from_screws`
+another. Both kinds have the same methods:
+
+* exact (SymPy): ``fk_symbolic`` in the joint symbols q1..qn, ``joint_twists`` at exact values;
+* fast (NumPy): ``fk``, ``frames``, the Jacobians, one configuration ``(n,)`` or a batch
+  ``(N, n)``, computed by straight-line code generated from the chain's numbers when it is
+  first used (see :mod:`screwkit._compiled`; no SymPy, about a millisecond).
 
 Standard DH (the default):  A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i).
 Modified DH (Craig):        A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_i),
@@ -18,6 +22,7 @@ array([1. , 0.5])
 (10, 4, 4)
 """
 import enum
+import types
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -25,19 +30,23 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
+from . import _compiled
 from ._checks import as_float_array, check_transform, describe
+from ._notation import textbook
 from .transforms import exp_twist
-
-_CHUNK = 8192  # poses per chunk of a batch
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook"]
 
+#: How far from 1 the norm of a joint screw's omega (or of v, for a prismatic joint) may be.
+UNIT_TOL = 1e-9
+
 
 class Joint(enum.Enum):
-    """The kind of a joint: its variable q is an angle (revolute) or a length (prismatic)."""
+    """The kind of a joint: its variable q is an angle (revolute, helical) or a length (prismatic)."""
 
     REVOLUTE = "R"
     PRISMATIC = "P"
+    HELICAL = "H"  # rotation q (rad) with translation h q along the axis
 
 
 class Convention(enum.Enum):
@@ -47,13 +56,39 @@ class Convention(enum.Enum):
     MODIFIED = "modified"  # Craig: Rx(alpha) Tx(a) Rz(theta) Tz(d)
 
 
+def _check_convention(convention):
+    if not isinstance(convention, Convention):
+        raise TypeError(f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}")
+    return convention
+
+
+def _check_parameter(value, name):
+    """A DH number: a finite real number, or a SymPy expression (exact, possibly symbolic)."""
+    if isinstance(value, sp.Basic):
+        value = sp.sympify(value)
+        if not isinstance(value, sp.Expr) or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or value.is_real is False:
+            raise ValueError(f"{name} must be a finite real number or SymPy expression, got {value}")
+        return value
+    if isinstance(value, (bool, str, bytes)) or value is None or isinstance(value, (complex, np.complexfloating)):
+        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}")
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}") from None
+    if not np.isfinite(number):
+        raise ValueError(f"{name} must be finite, got {number}")
+    return int(value) if isinstance(value, (int, np.integer)) else number
+
+
 @dataclass(frozen=True)
 class Link:
     """One row of a DH table (m, rad).
 
     The joint variable q adds to ``offset``: theta = q + offset for a revolute joint (then
     ``theta`` is unused), d = q + offset for a prismatic one (then ``d`` is unused).
-    ``qlim`` is (min, max) of q, or None for no limit.
+    ``qlim`` is (min, max) of q, or None for no limit (+-inf in either place is no limit there).
+    Numbers may be floats or exact SymPy values (``sympy.pi / 2``); symbols are allowed for the
+    exact path (``fk_symbolic``) but the numeric path needs numbers.
     """
 
     joint: Joint
@@ -64,18 +99,26 @@ class Link:
     offset: object = 0
     qlim: tuple = None
 
+    def __post_init__(self):
+        if not isinstance(self.joint, Joint) or self.joint is Joint.HELICAL:
+            raise TypeError(f"joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got {self.joint!r}")
+        for name in ("d", "a", "alpha", "theta", "offset"):
+            object.__setattr__(self, name, _check_parameter(getattr(self, name), name))
+        object.__setattr__(self, "qlim", _check_qlim(self.qlim))
+
     @classmethod
     def revolute(cls, d=0, a=0, alpha=0, offset=0, qlim=None):
         """A revolute link: theta = q + offset."""
-        return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=_check_qlim(qlim))
+        return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=qlim)
 
     @classmethod
     def prismatic(cls, theta=0, a=0, alpha=0, offset=0, qlim=None):
         """A prismatic link: d = q + offset."""
-        return cls(Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=_check_qlim(qlim))
+        return cls(Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim)
 
     def transform(self, q, convention=Convention.STANDARD):
         """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or symbol q."""
+        _check_convention(convention)
         theta, d = (q + self.offset, self.d) if self.joint is Joint.REVOLUTE else (self.theta, q + self.offset)
         ct, st = sp.cos(theta), sp.sin(theta)
         ca, sa = sp.cos(_exact(self.alpha)), sp.sin(_exact(self.alpha))
@@ -90,13 +133,35 @@ class Link:
                           [st * sa, ct * sa, ca, ca * d],
                           [0, 0, 0, 1]])
 
+    def _numbers(self, index):
+        """(d, a, theta, offset) as floats and (cos alpha, sin alpha), for the numeric path."""
+        values = []
+        for name in ("d", "a", "theta", "offset"):
+            value = getattr(self, name)
+            if isinstance(value, sp.Basic) and value.free_symbols:
+                raise ValueError(f"link {index}'s {name} is the expression {value}: the numeric path "
+                                 "(fk, Jacobians) needs numbers; use fk_symbolic for symbols")
+            values.append(float(value))
+        alpha = _exact(self.alpha)
+        if alpha.free_symbols:
+            raise ValueError(f"link {index}'s alpha is the expression {alpha}: the numeric path needs numbers")
+        return values, (float(sp.cos(alpha)), float(sp.sin(alpha)))
 
-def _check_qlim(qlim):
+
+def _check_qlim(qlim, name="qlim"):
+    """(min, max) as floats, None for no limit; +-inf means no limit on that side."""
     if qlim is None:
         return None
-    limits = as_float_array(qlim, "qlim")
-    if limits.shape != (2,) or not limits[0] < limits[1]:
-        raise ValueError(f"qlim must be a pair (min, max) with min < max, got {qlim!r}")
+    if isinstance(qlim, (str, bytes)):
+        raise TypeError(f"{name} must be a pair (min, max) or None, got {qlim!r}")
+    try:
+        limits = np.asarray(qlim, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a pair of numbers (min, max) or None, got {qlim!r}") from None
+    if limits.shape != (2,) or np.any(np.isnan(limits)) or not limits[0] < limits[1]:
+        raise ValueError(f"{name} must be a pair (min, max) with min < max, got {qlim!r}")
+    if limits[0] == -np.inf and limits[1] == np.inf:
+        return None
     return (float(limits[0]), float(limits[1]))
 
 
@@ -110,31 +175,165 @@ def _exact(value):
     return value
 
 
+def _exact_matrix(T):
+    """A numeric 4x4 as a SymPy matrix, exact where the entries are integers."""
+    return sp.Matrix(4, 4, [sp.Integer(int(v)) if float(v).is_integer() else sp.Float(v) for v in T.flat])
+
+
+def _rigid(value, name):
+    """A 4x4 rigid transform as a fresh, read-only float array (never the caller's array)."""
+    if value is None:
+        T = np.eye(4)
+    else:
+        if isinstance(value, sp.MatrixBase):
+            value = np.array(value.evalf(), dtype=float) if not value.free_symbols else value
+        T = check_transform(as_float_array(value, name), name)
+        if T.shape != (4, 4):
+            raise ValueError(f"{name} must be one transform of shape (4, 4), got shape {T.shape}")
+        T = T.copy()
+    T.setflags(write=False)
+    return T
+
+
+def _translation(p):
+    T = np.eye(4)
+    T[:3, 3] = p
+    return T
+
+
+def _dh_matrices(link, index, convention):
+    """(pre, twist, post) of a DH link: A(q) = pre exp([X] (q + offset)) post (floats)."""
+    (d, a, theta, _), (ca, sa) = link._numbers(index)
+    Rx = np.array([[1.0, 0, 0, 0], [0, ca, -sa, 0], [0, sa, ca, 0], [0, 0, 0, 1]])
+    Tx, Tz = _translation([a, 0, 0]), _translation([0, 0, d])
+    ct, st = np.cos(theta), np.sin(theta)
+    Rz = np.array([[ct, -st, 0, 0], [st, ct, 0, 0], [0, 0, 1.0, 0], [0, 0, 0, 1]])
+    revolute = link.joint is Joint.REVOLUTE
+    twist = np.array([0, 0, 1.0, 0, 0, 0]) if revolute else np.array([0, 0, 0, 0, 0, 1.0])
+    if convention is Convention.STANDARD:
+        return np.eye(4), twist, (Tz if revolute else Rz) @ Tx @ Rx
+    return Rx @ Tx, twist, Tz if revolute else Rz
+
+
+def _check_screws(axes):
+    """The joint screws as an (n, 6) float array of unit screws, and their exact forms."""
+    from .screws import Screw
+
+    if isinstance(axes, np.ndarray) and axes.ndim == 2:
+        items = list(axes)
+    elif isinstance(axes, (list, tuple)):
+        items = list(axes)
+    else:
+        raise TypeError(f"axes must be a list of Twist objects or 6-vectors [omega; v], got {describe(axes)}")
+    if not items:
+        raise ValueError("axes must hold at least one joint screw, got none")
+    numbers, exact = [], []
+    for i, item in enumerate(items):
+        name = f"axes[{i}]"
+        if isinstance(item, Screw):
+            if item.kind == "wrench":
+                raise TypeError(f"{name} must be a twist (a joint's motion), got a Wrench")
+            vector = item.vector
+        elif isinstance(item, sp.MatrixBase) or (isinstance(item, (list, tuple, np.ndarray))
+                                                 and any(isinstance(e, sp.Basic) for e in np.ravel(item))):
+            vector = sp.Matrix(item)
+        else:
+            vector = None
+        if vector is not None:
+            if vector.shape not in ((6, 1), (1, 6)) or vector.free_symbols:
+                raise ValueError(f"{name} must be a 6-vector of numbers [omega; v], got {vector.T}")
+            values = np.array([float(e) for e in vector], dtype=float)
+            exact.append(sp.Matrix(6, 1, list(vector)))
+        else:
+            values = as_float_array(item, name)
+            if values.shape != (6,):
+                raise ValueError(f"{name} must be a 6-vector [omega; v], got shape {values.shape}")
+            exact.append(sp.Matrix(6, 1, [sp.Integer(int(v)) if v.is_integer() else sp.Float(v) for v in values]))
+        w, v = np.linalg.norm(values[:3]), np.linalg.norm(values[3:])
+        if w == 0 and v == 0:
+            raise ValueError(f"{name} must be a unit screw axis, got the zero twist")
+        if w != 0 and abs(w - 1) > UNIT_TOL:
+            raise ValueError(f"{name} must be a unit screw axis: |omega| = 1 for a revolute or helical "
+                             f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}")
+        if w == 0 and abs(v - 1) > UNIT_TOL:
+            raise ValueError(f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}")
+        numbers.append(values)
+    return np.array(numbers), exact
+
+
+def _joint_kind(screw):
+    if not np.any(screw[:3]):
+        return Joint.PRISMATIC
+    return Joint.HELICAL if abs(np.dot(screw[:3], screw[3:])) > 1e-12 else Joint.REVOLUTE
+
+
+def _axis_points(screws, start):
+    """A point on each screw axis (revolute/helical): the one nearest the previous joint's point.
+
+    Only for drawing: the first joint's point is the one nearest ``start``; a prismatic joint
+    keeps the previous point.
+    """
+    points, previous = [], np.asarray(start, dtype=float)
+    for screw in screws:
+        w, v = screw[:3], screw[3:]
+        if np.any(w):
+            h = np.dot(w, v)
+            nearest_origin = np.cross(w, v - h * w)  # the axis point nearest the origin
+            previous = nearest_origin + np.dot(previous - nearest_origin, w) * w
+        points.append(previous.copy())
+    return np.array(points)
+
+
 class Chain:
-    """A serial chain of DH links between a fixed ``base`` and a ``tool`` transform.
+    """A serial chain between a fixed ``base`` and a ``tool`` transform; immutable.
+
+    ``Chain(links, ...)`` describes it by a DH table; :meth:`from_table` takes the table as
+    an array, and :meth:`from_screws` builds a chain from joint screws and a home pose.
 
     Parameters
     ----------
     links : sequence of Link, one per joint (n >= 1)
     convention : Convention.STANDARD (default) or Convention.MODIFIED
-    base, tool : 4x4 transforms (default identity): T = base @ A_1 ... A_n @ tool
+    base, tool : 4x4 rigid transforms (default identity): T = base @ A_1 ... A_n @ tool
     name : str, used in messages and titles
+    configurations : optional {name: joint vector (n,)}, named configurations ('zero', ...)
     """
 
-    def __init__(self, links, convention=Convention.STANDARD, base=None, tool=None, name="chain"):
+    def __init__(self, links, convention=Convention.STANDARD, base=None, tool=None, name="chain",
+                 configurations=None):
         links = list(links) if isinstance(links, (list, tuple)) else links
         if not isinstance(links, list) or not links or not all(isinstance(k, Link) for k in links):
             raise TypeError(f"links must be a non-empty list of Link, got {describe(links)}")
-        if not isinstance(convention, Convention):
-            raise TypeError(f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}")
-        self.links = tuple(links)
-        self.convention = convention
-        self.base = np.eye(4) if base is None else check_transform(np.asarray(base, dtype=float), "base")
-        self.tool = np.eye(4) if tool is None else check_transform(np.asarray(tool, dtype=float), "tool")
-        self.name = name
-        self.q_symbols = sp.symbols(f"q1:{self.n + 1}", real=True)
-        #: named configurations (e.g. 'zero', 'ready'): name -> (n,) array
-        self.configurations = {}
+        self._setup(links=tuple(links), convention=_check_convention(convention), screws=None,
+                    base=base, tool=tool, name=name, configurations=configurations,
+                    qlim=[link.qlim for link in links], joints=tuple(link.joint for link in links))
+
+    def _setup(self, *, links, convention, screws, base, tool, name, configurations, qlim, joints,
+               home=None, frame=None, exact_screws=None):
+        if not isinstance(name, str):
+            raise TypeError(f"name must be a string, got {describe(name)}")
+        state = self.__dict__
+        state["links"], state["convention"] = links, convention
+        state["_screws"], state["_exact_screws"], state["_home"], state["frame"] = screws, exact_screws, home, frame
+        state["base"], state["tool"] = _rigid(base, "base"), _rigid(tool, "tool")
+        state["name"], state["joints"] = name, joints
+        state["q_symbols"] = sp.symbols(f"q1:{len(joints) + 1}", real=True)
+        limits = np.array([limit if limit else (-np.inf, np.inf) for limit in qlim], dtype=float)
+        limits.setflags(write=False)
+        state["_qlim"] = limits
+        named = {}
+        for key, value in (configurations or {}).items():
+            named[key] = self.check_q(value, f"configurations[{key!r}]").copy()
+            if named[key].ndim != 1:
+                raise ValueError(f"configurations[{key!r}] must be one joint vector of shape ({self.n},)")
+            named[key].setflags(write=False)
+        state["configurations"] = types.MappingProxyType(named)
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"a Chain is immutable: cannot set {name!r}; make a new chain "
+                             "(e.g. chain.with_tool(T), chain.with_base(T))")
+
+    # ---- constructors ---------------------------------------------------------------------
 
     @classmethod
     def from_table(cls, table, joints=None, convention=Convention.STANDARD, qlim=None, **options):
@@ -142,45 +341,94 @@ class Chain:
 
         For a revolute joint, theta is the joint offset (theta = q + offset); for a prismatic
         one, d is (d = q + offset). ``joints`` is a sequence of Joint, or a string such as
-        'RRP' (default all revolute); ``qlim`` an (n, 2) array or None.
+        'RRP' (default all revolute); ``qlim`` an (n, 2) array (+-inf: no limit) or None.
         """
         rows = as_float_array(table, "table")
         if rows.ndim != 2 or rows.shape[1] != 4 or rows.shape[0] < 1:
             raise ValueError(f"table must have shape (n, 4), columns (theta, d, a, alpha), got shape {rows.shape}")
         n = rows.shape[0]
-        kinds = [Joint.REVOLUTE] * n if joints is None else [Joint(j) if isinstance(j, str) else j for j in joints]
-        if len(kinds) != n or not all(isinstance(j, Joint) for j in kinds):
+        try:
+            kinds = [Joint.REVOLUTE] * n if joints is None else [Joint(j) if isinstance(j, str) else j for j in joints]
+        except (ValueError, TypeError):
+            kinds = None
+        if kinds is None or len(kinds) != n or not all(k in (Joint.REVOLUTE, Joint.PRISMATIC) for k in kinds):
             raise ValueError(f"joints must name {n} joints ('R' or 'P', or Joint members), got {joints!r}")
-        limits = [None] * n if qlim is None else as_float_array(qlim, "qlim")
-        if qlim is not None and limits.shape != (n, 2):
-            raise ValueError(f"qlim must have shape ({n}, 2), got shape {limits.shape}")
+        limits = [None] * n if qlim is None else _limits_table(qlim, n)
         links = []
         for (theta, d, a, alpha), kind, limit in zip(rows, kinds, limits):
-            limit = None if limit is None else tuple(limit)
             if kind is Joint.REVOLUTE:
                 links.append(Link.revolute(d=d, a=a, alpha=alpha, offset=theta, qlim=limit))
             else:
                 links.append(Link.prismatic(theta=theta, a=a, alpha=alpha, offset=d, qlim=limit))
         return cls(links, convention, **options)
 
+    @classmethod
+    def from_screws(cls, axes, home, frame="space", qlim=None, base=None, tool=None, name="chain",
+                    configurations=None):
+        """A chain from its joint screws and home pose: the product of exponentials.
+
+        frame="space": T(q) = base exp([S_1] q_1) ... exp([S_n] q_n) M tool, the S_i written in
+        the base frame at q = 0; frame="body": T(q) = base M exp([B_1] q_1) ... exp([B_n] q_n)
+        tool, the B_i written in the end-effector frame at q = 0.
+
+        Parameters
+        ----------
+        axes : list of n Twist objects or 6-vectors [omega; v] (or an (n, 6) array): unit screw
+            axes, |omega| = 1 for a revolute (pitch 0) or helical (pitch omega . v) joint,
+            omega = 0 and |v| = 1 for a prismatic one
+        home : (4, 4) rigid transform M, the end-effector pose at q = 0 (m)
+        frame : 'space' or 'body'
+        qlim : (n, 2) joint limits (rad, or m for prismatic joints; +-inf: none) or None
+        """
+        if frame not in ("space", "body"):
+            raise ValueError(f"frame must be 'space' or 'body', got {frame!r}")
+        screws, exact = _check_screws(axes)
+        n = screws.shape[0]
+        limits = [None] * n if qlim is None else _limits_table(qlim, n)
+        chain = cls.__new__(cls)
+        chain._setup(links=None, convention=None, screws=screws, exact_screws=exact, home=_rigid(home, "home"),
+                     frame=frame, base=base, tool=tool, name=name, configurations=configurations,
+                     qlim=limits, joints=tuple(_joint_kind(s) for s in screws))
+        return chain
+
+    def _copy(self, **changes):
+        """A new chain like this one with some constructor arguments changed."""
+        options = dict(base=self.base, tool=self.tool, name=self.name, configurations=dict(self.configurations))
+        options.update(changes)
+        if self.links is not None:
+            return Chain(self.links, self.convention, **options)
+        return Chain.from_screws(self._screws, self._home, self.frame,
+                                 qlim=[tuple(limit) for limit in self._qlim], **options)
+
+    def with_tool(self, tool):
+        """The same chain with another tool transform (4, 4)."""
+        return self._copy(tool=tool)
+
+    def with_base(self, base):
+        """The same chain on another base transform (4, 4)."""
+        return self._copy(base=base)
+
+    # ---- description ------------------------------------------------------------------------
+
     @property
     def n(self):
         """Number of joints."""
-        return len(self.links)
-
-    @property
-    def joints(self):
-        """The joint kinds, one per link."""
-        return tuple(link.joint for link in self.links)
+        return len(self.joints)
 
     @property
     def qlim(self):
         """Joint limits, shape (n, 2); -inf/inf where a joint has none."""
-        return np.array([link.qlim if link.qlim else (-np.inf, np.inf) for link in self.links])
+        return self._qlim.copy()
+
+    @property
+    def is_dh(self):
+        """True for a chain described by a DH table, False for one built from screws."""
+        return self.links is not None
 
     def __repr__(self):
         kinds = "".join(j.value for j in self.joints)
-        return f"Chain({self.name!r}, {self.n} joints {kinds}, {self.convention.value} DH)"
+        form = f"{self.convention.value} DH" if self.is_dh else f"product of exponentials, {self.frame} form"
+        return f"Chain({self.name!r}, {self.n} joints {kinds}, {form})"
 
     # ---- input checks -------------------------------------------------------------------
 
@@ -194,26 +442,37 @@ class Chain:
             )
         return q
 
+    def _check_one(self, q, name="q"):
+        q = self.check_q(q, name)
+        if q.ndim != 1:
+            raise ValueError(f"{name} must be one configuration of shape ({self.n},), got shape {q.shape}")
+        return q
+
     def within_limits(self, q):
         """True where every joint of q (shape (n,) or (N, n)) lies within its limits."""
         q = self.check_q(q)
-        limits = self.qlim
-        return np.all((q >= limits[:, 0]) & (q <= limits[:, 1]), axis=-1)
+        return np.all((q >= self._qlim[:, 0]) & (q <= self._qlim[:, 1]), axis=-1)
 
     # ---- exact ----------------------------------------------------------------------------
 
+    def _require_dh(self, what):
+        if not self.is_dh:
+            raise ValueError(f"{what} is defined for a DH chain; {self.name!r} is built from screws")
+
     def link_transforms(self, q=None):
-        """The n exact link transforms A_i(q_i); q defaults to the joint symbols."""
+        """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint symbols."""
+        self._require_dh("link_transforms")
         q = self.q_symbols if q is None else q
         return [link.transform(qi, self.convention) for link, qi in zip(self.links, q)]
 
     def length_symbols(self):
-        """Symbols a_i, d_i for every non-zero link length: {symbol: value} (m)."""
+        """Symbols a_i, d_i for every non-zero link length of a DH chain: {symbol: value} (m)."""
+        self._require_dh("length_symbols")
         table = {}
         for i, link in enumerate(self.links, start=1):
             lengths = {"a": link.a} if link.joint is Joint.PRISMATIC else {"a": link.a, "d": link.d}
             for kind, value in lengths.items():
-                if sp.sympify(value) != 0:
+                if not sp.sympify(value).is_zero:
                     index = i - 1 if self.convention is Convention.MODIFIED and kind == "a" else i
                     table[sp.Symbol(f"{kind}{index}", positive=True)] = value
         return table
@@ -234,10 +493,23 @@ class Chain:
         """The exact end-effector pose, a 4x4 SymPy matrix in the joint symbols q1..qn.
 
         simplify : combine sums of angles (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3))
-            after each link, as textbooks write c23
-        symbolic_lengths : use the symbols a_i, d_i of :meth:`length_symbols` for lengths
-        upto : k in 0..n gives the pose of frame k, 0T_k, without base or tool
+            after each factor, as textbooks write c23
+        symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for lengths
+        upto : (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool
         """
+        def tidy(T):
+            return T.applyfunc(lambda e: TR10i(sp.expand(e))) if simplify else T
+
+        if not self.is_dh:
+            if symbolic_lengths or upto is not None:
+                raise ValueError("symbolic_lengths and upto are for DH chains; this chain is built from screws")
+            T = _exact_matrix(self.base)
+            factors = [exp_twist(S, q) for S, q in zip(self._exact_screws, self.q_symbols)]
+            home = _exact_matrix(self._home)
+            factors = ([home] + factors if self.frame == "body" else factors + [home]) + [_exact_matrix(self.tool)]
+            for F in factors:
+                T = tidy(T * F)
+            return T
         links = self._with_symbolic_lengths() if symbolic_lengths else self.links
         count = self.n if upto is None else int(upto)
         if not 0 <= count <= self.n:
@@ -245,125 +517,176 @@ class Chain:
         full = upto is None
         T = _exact_matrix(self.base) if full else sp.eye(4)
         for link, q in zip(links[:count], self.q_symbols):
-            T = T * link.transform(q, self.convention)
-            if simplify:
-                T = T.applyfunc(lambda e: TR10i(sp.expand(e)))
+            T = tidy(T * link.transform(q, self.convention))
         if full:
-            T = T * _exact_matrix(self.tool)
-            if simplify:
-                T = T.applyfunc(lambda e: TR10i(sp.expand(e)))
+            T = tidy(T * _exact_matrix(self.tool))
         return T
 
     def frames_symbolic(self, symbolic_lengths=False):
-        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool): a list of n + 1 SymPy matrices."""
+        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain: n + 1 SymPy matrices."""
+        self._require_dh("frames_symbolic")
         base = _exact_matrix(self.base)
         return [(base * self.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k)).applyfunc(sp.expand)
                 for k in range(self.n + 1)]
 
     def joint_frames(self, frames):
-        """Of the n + 1 frames (base first, no tool), the n whose z axis is a joint axis.
+        """Of the n + 1 frames of a DH chain (base first, no tool), the n whose z axis is a joint axis.
 
         Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
         """
+        self._require_dh("joint_frames")
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
+
+    def twists_symbolic(self, q=None, symbolic_lengths=False):
+        """The joint twists [omega; v] in the base frame, exactly: a list of n SymPy 6-vectors.
+
+        ``q`` is a joint vector of exact values or symbols (default the joint symbols q1..qn).
+        These are the columns of the space Jacobian.
+        """
+        q = self.q_symbols if q is None else list(q)
+        if len(q) != self.n:
+            raise ValueError(f"q must have {self.n} entries for this chain, got {len(q)}")
+        values = dict(zip(self.q_symbols, [sp.nsimplify(v, rational=True) if isinstance(v, float) else v
+                                           for v in q]))
+        if self.is_dh:
+            twists = []
+            for kind, T in zip(self.joints, self.joint_frames(self.frames_symbolic(symbolic_lengths))):
+                z, o = T[:3, 2], T[:3, 3]
+                twists.append(sp.Matrix.vstack(z, o.cross(z)) if kind is Joint.REVOLUTE
+                              else sp.Matrix.vstack(sp.zeros(3, 1), z))
+            return [t.subs(values).applyfunc(sp.expand) for t in twists]
+        from .lie import adjoint
+
+        G = _exact_matrix(self.base) * (_exact_matrix(self._home) if self.frame == "body" else sp.eye(4))
+        twists = []
+        for S, qi in zip(self._exact_screws, self.q_symbols):
+            twists.append((adjoint(G) * S).subs(values).applyfunc(sp.simplify))
+            G = (G * exp_twist(S, qi)).applyfunc(sp.simplify)
+        return twists
+
+    def joint_twists(self, q):
+        """The joint twists at q in the base frame.
+
+        Exact q (SymPy numbers or symbols; floats are read as the decimals they print as):
+        a :class:`~screwkit.systems.ScrewSystem` of Twists, so that ``.rank`` and
+        ``.reciprocal()`` give a singular configuration's lost freedoms and the wrenches the
+        structure bears without motors. Numeric q (n,) or (N, n): the (n, 6) / (N, n, 6) array
+        of the space Jacobian's columns.
+        """
+        from ._checks import is_symbolic
+
+        if is_symbolic(q):
+            from .screws import Twist
+            from .systems import ScrewSystem
+
+            twists = self.twists_symbolic(q)
+            rational = [t.applyfunc(lambda e: e.xreplace({f: sp.nsimplify(f, rational=True)
+                                                          for f in e.atoms(sp.Float)})) for t in twists]
+            return ScrewSystem([Twist(t) for t in rational])
+        return np.swapaxes(self.space_jacobian(q), -1, -2)
 
     # ---- fast -----------------------------------------------------------------------------
 
     @cached_property
-    def _revolute_offsets(self):
-        return np.array([float(sp.sympify(link.offset)) if link.joint is Joint.REVOLUTE else 0.0
-                         for link in self.links])
+    def _program(self):
+        """The chain as constants and unit joint twists for :mod:`screwkit._compiled` (floats only)."""
+        if self.is_dh:
+            parts = [_dh_matrices(link, i, self.convention) for i, link in enumerate(self.links, start=1)]
+            pres = [pre for pre, _, _ in parts] + [np.eye(4)]
+            start = np.asarray(self.base) @ pres[0]
+            joints, marks = [], {0: np.linalg.inv(pres[0])}
+            for k, (_, twist, post) in enumerate(parts, start=1):
+                after = post @ pres[k]
+                if k == self.n:
+                    after = after @ self.tool
+                joints.append((twist, after, np.zeros(3)))
+                marks[k] = np.linalg.inv(pres[k])
+            offsets = np.array([float(link._numbers(i)[0][3]) for i, link in enumerate(self.links, 1)])
+            return _compiled.Program(start, joints, marks), offsets
+        home = np.asarray(self._home)
+        if self.frame == "space":
+            start, last = np.asarray(self.base), home @ self.tool
+            points = _axis_points(self._screws, np.zeros(3))
+        else:
+            start, last = np.asarray(self.base) @ home, np.asarray(self.tool)
+            # the screws are in end-effector coordinates: start from the base origin seen there
+            points = _axis_points(self._screws, -home[:3, :3].T @ home[:3, 3])
+        joints = [(S, np.eye(4), r) for S, r in zip(self._screws, points)]
+        joints[-1] = (joints[-1][0], last, joints[-1][2])
+        marks = {k: _translation(points[k]) for k in range(self.n)}
+        marks[self.n] = np.eye(4)
+        return _compiled.Program(start, joints, marks), np.zeros(self.n)
 
     @cached_property
-    def _angle_chain(self):
-        """This chain with the revolute offsets moved into the joint symbols theta_i = q_i + offset_i."""
-        angles = sp.symbols(f"theta1:{self.n + 1}", real=True)
-        chain = Chain([Link(k.joint, k.d, k.a, k.alpha, k.theta, 0 if k.joint is Joint.REVOLUTE else k.offset)
-                       for k in self.links], self.convention, self.base, self.tool)
-        chain.q_symbols = angles
-        return chain
+    def _functions(self):
+        program, _ = self._program
+        return {outputs: program.compile(outputs) for outputs in ("pose", "axes", "frames")}
 
-    @cached_property
-    def _fk_functions(self):
-        """The exact end-effector pose compiled once (rows 0..2 of T, 12 entries)."""
-        T = self._angle_chain.fk_symbolic(simplify=True)
-        return _compile([T[i, j] for i in range(3) for j in range(4)], self._angle_chain.q_symbols)
-
-    @cached_property
-    def _angle_frames(self):
-        """frames_symbolic() in the angles theta_i, and the pose with the tool: computed once."""
-        return self._angle_chain.frames_symbolic(), self._angle_chain.fk_symbolic()
-
-    @cached_property
-    def _frames_functions(self):
-        """Every frame base @ A_1 ... A_k (k = 0..n, the last with the tool) compiled once."""
-        frames, end = self._angle_frames
-        entries = [T[i, j] for T in frames[:-1] + [end] for i in range(3) for j in range(4)]
-        return _compile(entries, self._angle_chain.q_symbols)
-
-    @cached_property
-    def _axes_functions(self):
-        """The joint axes (z_i, o_i, i = 1..n) and the end-effector point p compiled once, 6n + 3 entries."""
-        frames, end = self._angle_frames
-        entries = [T[i, j] for T in self.joint_frames(frames) for j in (2, 3) for i in range(3)]
-        return _compile(entries + list(end[:3, 3]), self._angle_chain.q_symbols)
-
-    def _evaluate(self, functions, q, out=None, rows=None):
-        """Run compiled ``functions`` (see :func:`_compile`) at q.
-
-        q (n,) gives the list of entries (floats). A batch Q (N, n) writes entry k into
-        ``out[rows[k]]`` (out of shape (M, N), the batch last: contiguous per entry) and returns out.
-        """
-        one, batch = functions
-        angles = q + self._revolute_offsets
+    def _run(self, outputs, q, rows=None, out=None):
+        """Generated code ``outputs`` at q: a list of entries for (n,), else ``out[rows[k]]`` filled."""
+        function, offsets = self._functions[outputs], self._program[1]
         if q.ndim == 1:
-            return one(angles.tolist())
-        angles = np.ascontiguousarray(angles.T)
-        # in chunks, so that the temporaries stay in the cache and memory is reused
-        for start in range(0, q.shape[0], _CHUNK):
-            part = angles[:, start:start + _CHUNK]
-            for row, value in zip(rows, batch(part, np.cos(part), np.sin(part))):
-                out[row, start:start + _CHUNK] = value
-        return out
+            return _compiled.evaluate(function, q + offsets)
+        return _compiled.evaluate_batch(function, q + offsets, out, rows)
 
     def fk(self, q):
         """The end-effector pose: q (n,) -> (4, 4); a batch Q (N, n) -> (N, 4, 4) (m)."""
         q = self.check_q(q)
         if q.ndim == 1:
             T = np.eye(4)
-            T[:3] = np.reshape(self._evaluate(self._fk_functions, q), (3, 4))
+            T[:3] = np.reshape(self._run("pose", q), (3, 4))
             return T
         T = np.empty((4, 4, q.shape[0]))
         T[3] = np.array([0.0, 0.0, 0.0, 1.0])[:, None]
-        self._evaluate(self._fk_functions, q, T.reshape(16, -1), range(12))
-        return T.transpose(2, 0, 1)
+        self._run("pose", q, range(12), T.reshape(16, -1))
+        return np.ascontiguousarray(T.transpose(2, 0, 1))
 
     def frames(self, q):
         """The base frame and every link frame: q (n,) -> (n + 1, 4, 4), (N, n) -> (N, n + 1, 4, 4).
 
-        Frame k is base @ A_1 ... A_k; the last frame also carries the tool.
+        DH chain: frame k is base @ A_1 ... A_k; the last frame also carries the tool. Chain from
+        screws: frame k < n sits on the axis of joint k + 1 (a point of it, moved by joints
+        1..k), frame 0 has the base's orientation, and the last frame is the end effector.
         """
         q = self.check_q(q)
         count = self.n + 1
         if q.ndim == 1:
             T = np.zeros((count, 4, 4))
-            T[:, :3] = np.reshape(self._evaluate(self._frames_functions, q), (count, 3, 4))
+            T[:, :3] = np.reshape(self._run("frames", q), (count, 3, 4))
             T[:, 3, 3] = 1.0
             return T
         T = np.zeros((count, 4, 4, q.shape[0]))
         T[:, 3, 3] = 1.0
         rows = [16 * (k // 12) + k % 12 for k in range(12 * count)]
-        self._evaluate(self._frames_functions, q, T.reshape(16 * count, -1), rows)
-        return T.transpose(3, 0, 1, 2)
+        self._run("frames", q, rows, T.reshape(16 * count, -1))
+        return np.ascontiguousarray(T.transpose(3, 0, 1, 2))
+
+    def _twists_and_pose(self, q):
+        """Joint twists, axis points and pose, batch last: omega, v, point (3, n[, N]), T (3, 4[, N])."""
+        rows = 9 * self.n + 12
+        if q.ndim == 1:
+            values = np.array(self._run("axes", q))
+        else:
+            values = np.empty((rows, q.shape[0]))
+            self._run("axes", q, range(rows), values)
+        axes = values[:-12].reshape((self.n, 3, 3) + values.shape[1:])
+        axes = np.moveaxis(axes, 0, 2)  # (3 kinds, 3 coordinates, n[, N])
+        return axes[0], axes[1], axes[2], values[-12:].reshape((3, 4) + values.shape[1:])
 
     def joint_axes(self, q):
         """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3).
 
-        Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
+        DH: joint i moves about z of frame i-1 (standard) or of frame i (modified), through
+        its origin. A prismatic joint's direction is its translation; its point is for drawing.
         """
-        from .jacobians import joint_axes
-
-        return joint_axes(self, q)
+        q = self.check_q(q)
+        omega, v, point, _ = self._twists_and_pose(q)
+        prismatic = np.array([j is Joint.PRISMATIC for j in self.joints])
+        z = np.where(prismatic if q.ndim == 1 else prismatic[:, None], v, omega)
+        z, point = np.moveaxis(z, 0, -1), np.moveaxis(point, 0, -1)  # (n[, N], 3)
+        if q.ndim == 1:
+            return z, point
+        return np.swapaxes(z, 0, 1), np.swapaxes(point, 0, 1)
 
     # ---- Jacobians ------------------------------------------------------------------------
 
@@ -379,14 +702,27 @@ class Chain:
 
         return space_jacobian(self, q)
 
+    def body_jacobian(self, q):
+        """Columns are the joint twists [omega; v] in the end-effector frame: J_b = Ad(T^-1) J_s."""
+        from .jacobians import body_jacobian
+
+        return body_jacobian(self, q)
+
     def manipulability(self, q, rows="all"):
         """Yoshikawa's sqrt(det(J J^T)) of the geometric Jacobian: () or (N,); 0.0 where singular.
 
-        rows: 'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x, v_y).
+        rows: 'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x,
+        v_y in the chain's base frame).
         """
         from .jacobians import manipulability
 
         return manipulability(self, q, rows)
+
+    def numeric_ik(self, T, q0, **options):
+        """Numerical inverse kinematics of this chain: see :func:`screwkit.ik.numeric_ik`."""
+        from .ik import numeric_ik
+
+        return numeric_ik(self, T, q0, **options)
 
     # ---- product of exponentials ----------------------------------------------------------
 
@@ -400,78 +736,30 @@ class Chain:
         """
         return self.space_jacobian(np.zeros(self.n)).T
 
+    def body_screw_axes(self):
+        """The joint screws at q = 0 in the end-effector frame, (n, 6) rows [omega; v]."""
+        return self.body_jacobian(np.zeros(self.n)).T
+
     def fk_poe(self, q):
-        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M, q (n,) -> (4, 4)."""
-        q = self.check_q(q)
-        if q.ndim != 1:
-            raise ValueError(f"q must be one configuration of shape ({self.n},), got shape {q.shape}")
+        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M, q (n,) -> (4, 4).
+
+        An independent route to :meth:`fk` (a loop of 4x4 exponentials), for checking.
+        """
+        q = self._check_one(q)
         T = np.eye(4)
         for S, qi in zip(self.screw_axes(), q):
             T = T @ exp_twist(S, qi)
         return T @ self.home()
 
 
-def _compile(entries, angles):
-    """Compile exact expressions of joint angles (and prismatic variables) once.
-
-    Returns (one, batch): ``one(angles)`` takes a list of n floats (math module, no array
-    overhead); ``batch(angles, cosines, sines)`` takes (n, M) arrays. Trigonometric functions
-    of arrays cost far more than products, so the batch version is given each cos/sin once
-    and sums of angles are expanded into products (cos(t2 + t3) -> c2 c3 - s2 s3).
-    """
-    n = len(angles)
-    one = sp.lambdify([angles], entries, modules="math", cse=True)
-    c = sp.symbols(f"c1:{n + 1}")
-    s = sp.symbols(f"s1:{n + 1}")
-    trig = {sp.cos(t): ci for t, ci in zip(angles, c)} | {sp.sin(t): si for t, si in zip(angles, s)}
-    sums = {f: sp.expand_trig(f) for e in entries for f in e.atoms(sp.cos, sp.sin) if f not in trig}
-    batch_entries = [sp.sympify(e).xreplace(sums).xreplace(trig) for e in entries]
-    batch = sp.lambdify([angles, c, s], batch_entries, modules="numpy", cse=True)
-    return one, batch
-
-
-def _exact_matrix(T):
-    """A numeric 4x4 as a SymPy matrix, exact where the entries are integers."""
-    return sp.Matrix(4, 4, [sp.Integer(int(v)) if float(v).is_integer() else sp.Float(v) for v in T.flat])
-
-
-def textbook(expr, q_symbols=None, collect=True):
-    """``expr`` in textbook notation: cos(q1) -> c1, sin(q2 + q3) -> s23.
-
-    With ``collect``, sums are grouped by c1/s1 first, then by the next angles, which gives
-    nested forms like c1 (c23 (...) - s23 (...)) - s1 (...).
-    """
-    if isinstance(expr, sp.MatrixBase):
-        return expr.applyfunc(lambda e: textbook(e, q_symbols, collect))
-    expr = sp.sympify(expr)
-    q_symbols = q_symbols or sorted((s for s in expr.free_symbols if str(s).startswith("q")), key=str)
-    index = {q: str(q)[1:] for q in q_symbols}
-    replacements, order = {}, []
-    for function, letter in ((sp.cos, "c"), (sp.sin, "s")):
-        for call in expr.atoms(function):
-            argument = call.args[0]
-            terms = argument.args if isinstance(argument, sp.Add) else (argument,)
-            if all(t in index for t in terms):
-                label = "".join(sorted((index[t] for t in terms), key=int))
-                symbol = sp.Symbol(f"{letter}_{{{label}}}" if len(label) > 1 else f"{letter}{label}")
-                replacements[call] = symbol
-                order.append((label, letter, symbol))
-    result = expr.xreplace(replacements)
-    if collect and order:
-        order.sort(key=lambda item: (len(item[0]), item[0], item[1]))
-        result = _nested_collect(sp.expand(result), [symbol for _, _, symbol in order])
-    return result
-
-
-def _nested_collect(expr, symbols):
-    """Collect by the first symbol pair (c_k, s_k) present, then recurse into the coefficients."""
-    present = [s for s in symbols if expr.has(s)]
-    if not present or not isinstance(expr, sp.Add):
-        return expr
-    lead = str(present[0])[1:]
-    group = [s for s in present if str(s)[1:] == lead]
-    rest = [s for s in present if s not in group]
-    collected = sp.collect(expr, group, evaluate=False)
-    if len(collected) == 1 and sp.S.One in collected:
-        return _nested_collect(expr, rest)
-    return sp.Add(*[_nested_collect(coeff, rest) * key for key, coeff in collected.items()])
+def _limits_table(qlim, n):
+    """An (n, 2) table of limits as a list of (min, max) or None (+-inf: no limit)."""
+    if isinstance(qlim, (str, bytes)):
+        raise TypeError(f"qlim must be an (n, 2) array of limits or None, got {qlim!r}")
+    try:
+        limits = np.asarray(qlim, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"qlim must be an ({n}, 2) array of numbers or None, got {describe(qlim)}") from None
+    if limits.shape != (n, 2):
+        raise ValueError(f"qlim must have shape ({n}, 2), got shape {limits.shape}")
+    return [_check_qlim(row, f"qlim[{i}]") for i, row in enumerate(limits)]

@@ -28,6 +28,7 @@ __all__ = [
     "joint_axes",
     "geometric_jacobian",
     "space_jacobian",
+    "body_jacobian",
     "numerical_jacobian",
     "geometric_jacobian_symbolic",
     "determinant_symbolic",
@@ -38,29 +39,20 @@ __all__ = [
     "ellipsoid",
 ]
 
-#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y), the 2 x n Jacobian of a planar arm.
+#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n
+#: Jacobian of an arm that moves in its base's x-y plane.
 ROWS = {"all": slice(0, 6), "position": slice(0, 3), "orientation": slice(3, 6), "planar": slice(0, 2)}
 
-
-def _axes_and_point(chain, q):
-    """z_i, o_i of every joint axis, each (3, n, ...), and the end-effector point p (3, ...): batch last."""
-    q = chain.check_q(q)
-    if q.ndim == 1:
-        values = np.array(chain._evaluate(chain._axes_functions, q))
-    else:
-        values = np.empty((6 * chain.n + 3, q.shape[0]))
-        chain._evaluate(chain._axes_functions, q, values, range(values.shape[0]))
-    axes = values[:-3].reshape((chain.n, 2, 3) + values.shape[1:])
-    z, o = np.swapaxes(axes[:, 0], 0, 1), np.swapaxes(axes[:, 1], 0, 1)
-    return q, z, o, values[-3:]
+#: Configurations per chunk when a batch is reduced (SVDs): bounds the memory of big batches.
+BATCH_CHUNK = 65536
 
 
-def joint_axes(chain, q):
-    """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3)."""
-    q, z, o, _ = _axes_and_point(chain, q)
-    if q.ndim == 1:
-        return z.T, o.T
-    return z.transpose(2, 1, 0), o.transpose(2, 1, 0)
+def _check_chain(chain):
+    from .chains import Chain
+
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain must be a screwkit Chain, got {type(chain).__name__}")
+    return chain
 
 
 def _cross(a, b):
@@ -68,36 +60,52 @@ def _cross(a, b):
     return np.stack([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
 
 
-def _revolute(chain):
-    return np.array([j is Joint.REVOLUTE for j in chain.joints])
+def _batch_first(J, q):
+    """(6, n[, N]) -> (6, n) or (N, 6, n), contiguous."""
+    return J if q.ndim == 1 else np.ascontiguousarray(J.transpose(2, 0, 1))
 
 
-def geometric_jacobian(chain, q):
-    """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows [v; omega].
-
-    Column i is (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic
-    one, with p the end-effector point.
-    """
-    q, z, o, p = _axes_and_point(chain, q)
-    revolute = _revolute(chain).reshape((-1,) + (1,) * (q.ndim - 1))
-    J = np.empty((6,) + z.shape[1:])
-    J[:3] = np.where(revolute, _cross(z, p[:, None] - o), z)
-    J[3:] = np.where(revolute, z, 0.0)
-    return J if q.ndim == 1 else J.transpose(2, 0, 1)
+def joint_axes(chain, q):
+    """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3)."""
+    return _check_chain(chain).joint_axes(q)
 
 
 def space_jacobian(chain, q):
     """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
 
-    Column i is the twist of joint i in the base frame: (z_i; o_i x z_i) for a revolute
-    joint (the velocity of the body point at the base origin), (0; z_i) for a prismatic one.
+    Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i) for a
+    revolute joint about z_i through o_i (v is the velocity of the body point at the base
+    origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
     """
-    q, z, o, _ = _axes_and_point(chain, q)
-    revolute = _revolute(chain).reshape((-1,) + (1,) * (q.ndim - 1))
-    J = np.empty((6,) + z.shape[1:])
-    J[:3] = np.where(revolute, z, 0.0)
-    J[3:] = np.where(revolute, _cross(o, z), z)
-    return J if q.ndim == 1 else J.transpose(2, 0, 1)
+    q = _check_chain(chain).check_q(q)
+    omega, v, _, _ = chain._twists_and_pose(q)
+    return _batch_first(np.concatenate([omega, v]), q)
+
+
+def geometric_jacobian(chain, q):
+    """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows [v; omega].
+
+    Column i is the space twist moved to the end-effector point p: (v_i + omega_i x p; omega_i),
+    i.e. (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic one.
+    """
+    q = _check_chain(chain).check_q(q)
+    omega, v, _, T = chain._twists_and_pose(q)
+    p = T[:, 3][:, None]
+    return _batch_first(np.concatenate([v + _cross(omega, p), omega]), q)
+
+
+def body_jacobian(chain, q):
+    """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
+
+    Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
+    (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
+    """
+    q = _check_chain(chain).check_q(q)
+    omega, v, _, T = chain._twists_and_pose(q)
+    R, p = T[:, :3], T[:, 3][:, None]
+    linear = v + _cross(omega, p)
+    rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
+    return _batch_first(np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)]), q)
 
 
 def numerical_jacobian(chain, q, h=1e-6):
@@ -106,9 +114,10 @@ def numerical_jacobian(chain, q, h=1e-6):
     Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the skew
     matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian` (error O(h^2)).
     """
-    q = chain.check_q(q)
-    if q.ndim != 1:
-        raise ValueError(f"q must be one configuration of shape ({chain.n},), got shape {q.shape}")
+    q = _check_chain(chain)._check_one(q)
+    if isinstance(h, bool) or not isinstance(h, (int, float, np.floating, np.integer)) \
+            or not np.isfinite(h) or h <= 0:
+        raise ValueError(f"h must be a small positive step (rad or m), got {h!r}")
     R = chain.fk(q)[:3, :3]
     columns = []
     for step in h * np.eye(chain.n):
@@ -120,34 +129,49 @@ def numerical_jacobian(chain, q, h=1e-6):
 
 # ---- exact ---------------------------------------------------------------------------------
 
+def _symbolic_point(chain, point, end, frames):
+    if point is None:
+        return end[:3, 3]
+    if isinstance(point, (int, np.integer)) and not isinstance(point, bool):
+        if frames is None:
+            raise ValueError("point must be None or a 3-vector for a chain built from screws "
+                             f"(it has no DH frames), got {point!r}")
+        if not 0 <= point <= chain.n:
+            raise ValueError(f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}")
+        return frames[point][:3, 3]
+    p = sp.Matrix(point)
+    if p.shape not in ((3, 1), (1, 3)):
+        raise ValueError(f"point must be a frame number, a 3-vector or None, got shape {p.shape}")
+    return p.reshape(3, 1)
+
+
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     """The exact geometric Jacobian (6, n), a SymPy matrix in the joint symbols q1..qn.
 
     point : the reference point whose velocity the rows v give: None for the end-effector
-        point, an integer k for the origin of frame k (e.g. a wrist centre), or a 3-vector
-        of expressions in the base frame.
-    symbolic_lengths : lengths as the symbols a_i, d_i (see ``Chain.length_symbols``).
+        point, an integer k for the origin of frame k of a DH chain (e.g. a wrist centre), or
+        a 3-vector of expressions in the base frame.
+    symbolic_lengths : (DH) lengths as the symbols a_i, d_i (see ``Chain.length_symbols``).
+
+    Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the point:
+    (v_i + omega_i x p; omega_i).
     """
-    frames = chain.frames_symbolic(symbolic_lengths)
-    end = chain.fk_symbolic(symbolic_lengths=symbolic_lengths)
-    if point is None:
-        p = end[:3, 3]
-    elif isinstance(point, (int, np.integer)):
-        if not 0 <= point <= chain.n:
-            raise ValueError(f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}")
-        p = frames[point][:3, 3]
-    else:
-        p = sp.Matrix(point)
-        if p.shape != (3, 1):
-            raise ValueError(f"point must be a frame number, a 3-vector or None, got shape {p.shape}")
-    joint_frames = chain.joint_frames(frames)
+    _check_chain(chain)
+    frames = chain.frames_symbolic(symbolic_lengths) if chain.is_dh else None
+    end = chain.fk_symbolic(symbolic_lengths=symbolic_lengths) if chain.is_dh else chain.fk_symbolic()
+    p = _symbolic_point(chain, point, end, frames)
     columns = []
-    for kind, T in zip(chain.joints, joint_frames):
-        z, o = T[:3, 2], T[:3, 3]
-        if kind is Joint.REVOLUTE:
-            columns.append(sp.Matrix.vstack(z.cross(p - o), z))
-        else:
-            columns.append(sp.Matrix.vstack(z, sp.zeros(3, 1)))
+    if chain.is_dh:
+        for kind, T in zip(chain.joints, chain.joint_frames(frames)):
+            z, o = T[:3, 2], T[:3, 3]
+            if kind is Joint.REVOLUTE:
+                columns.append(sp.Matrix.vstack(z.cross(p - o), z))
+            else:
+                columns.append(sp.Matrix.vstack(z, sp.zeros(3, 1)))
+    else:
+        for twist in chain.twists_symbolic():
+            omega, v = twist[:3, 0], twist[3:, 0]
+            columns.append(sp.Matrix.vstack(v + omega.cross(p), omega))
     return sp.Matrix.hstack(*columns).applyfunc(lambda e: sp.trigsimp(sp.expand(e)))
 
 
@@ -157,23 +181,45 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
     det J does not depend on the reference point (moving it multiplies J by a matrix of
     determinant 1), so pick ``point`` where J is simple: at a wrist centre (frame 4 of an arm
     with a spherical wrist) J is block triangular, [[A, 0], [C, D]], and det J = det A det D.
+    A DH chain's lengths are factored as symbols and only then replaced by their numbers, so
+    the factors are exact (no round-off terms from decimal lengths).
     """
-    if chain.n != 6:
+    if _check_chain(chain).n != 6:
         raise ValueError(f"the chain must have 6 joints for a square Jacobian, got {chain.n}")
-    J = geometric_jacobian_symbolic(chain, point=point, symbolic_lengths=symbolic_lengths)
+    lengths = {} if symbolic_lengths or not chain.is_dh else chain.length_symbols()
+    J = geometric_jacobian_symbolic(chain, point=point, symbolic_lengths=bool(lengths) or symbolic_lengths)
     if J[:3, 3:].is_zero_matrix:
         factors = [J[:3, :3].det(method="berkowitz"), J[3:, 3:].det(method="berkowitz")]
     else:
         factors = [J.det(method="berkowitz")]
-    return sp.Mul(*[sp.factor(sp.trigsimp(sp.factor(f))) for f in factors])
+    result = sp.Mul(*[sp.factor(sp.trigsimp(sp.factor(f))) for f in factors])
+    return result.xreplace({s: sp.sympify(v) for s, v in lengths.items()})
 
 
 # ---- numbers from the Jacobian ---------------------------------------------------------------
 
 def _rows(rows):
-    if rows not in ROWS:
+    if not isinstance(rows, str) or rows not in ROWS:
         raise ValueError(f"rows must be one of {sorted(ROWS)}, got {rows!r}")
     return ROWS[rows]
+
+
+def _jacobian_rows(chain, q, rows):
+    """The rows ``rows`` of the geometric Jacobian; 'planar' reads v in the chain's base frame."""
+    selected = _rows(rows)
+    J = geometric_jacobian(chain, q)
+    if rows == "planar":
+        R = np.asarray(chain.base)[:3, :3]
+        return np.einsum("ji,...jk->...ik", R, J[..., :3, :])[..., selected, :]
+    return J[..., selected, :]
+
+
+def _in_chunks(chain, q, function):
+    """function(q_part) over chunks of a batch, concatenated: the memory stays bounded."""
+    q = _check_chain(chain).check_q(q)
+    if q.ndim == 1 or q.shape[0] <= BATCH_CHUNK:
+        return function(q)
+    return np.concatenate([function(q[k:k + BATCH_CHUNK]) for k in range(0, q.shape[0], BATCH_CHUNK)])
 
 
 def _singular(sigma, rows, n):
@@ -185,8 +231,9 @@ def _singular(sigma, rows, n):
 
 def singular_values(chain, q, rows="all"):
     """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
-    J = geometric_jacobian(chain, q)[..., _rows(rows), :]
-    return np.linalg.svd(J, compute_uv=False)
+    _rows(rows)
+    return _in_chunks(chain, q, lambda part: np.linalg.svd(_jacobian_rows(chain, part, rows),
+                                                            compute_uv=False))
 
 
 def manipulability(chain, q, rows="all"):
@@ -211,8 +258,8 @@ def condition_number(chain, q, rows="all"):
 
 def rank(chain, q, rows="all"):
     """The rank of the Jacobian's rows (NumPy's tolerance): an int, or (N,) ints."""
-    J = geometric_jacobian(chain, q)[..., _rows(rows), :]
-    return np.linalg.matrix_rank(J)
+    _rows(rows)
+    return _in_chunks(chain, q, lambda part: np.linalg.matrix_rank(_jacobian_rows(chain, part, rows)))
 
 
 def ellipsoid(chain, q, rows="position"):
@@ -222,9 +269,7 @@ def ellipsoid(chain, q, rows="position"):
     m/s (position) or rad/s (orientation) per unit joint-rate norm, and their directions as
     the columns of axes (3, 3). A zero radius is a direction the end effector cannot move in.
     """
-    q = chain.check_q(q)
-    if q.ndim != 1:
-        raise ValueError(f"q must be one configuration of shape ({chain.n},), got shape {q.shape}")
+    q = _check_chain(chain)._check_one(q)
     if rows not in ("position", "orientation"):
         raise ValueError(f"rows must be 'position' or 'orientation' for a 3D ellipsoid, got {rows!r}")
     J = geometric_jacobian(chain, q)[_rows(rows)]

@@ -14,7 +14,8 @@ from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, 
 from .transforms import rot_axis, rotx, roty, rotz, transl
 
 __all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru",
-           "pm_6ups", "planar_3rrr", "pm_3rps", "pm_3ruu", "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH"]
+           "pm_6ups", "planar_3rrr", "pm_3rps", "pm_3ruu", "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH",
+           "DRAWING_VALUES"]
 
 X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
 
@@ -24,6 +25,28 @@ PAPER_GRUBLER_KUTZBACH = {
     "3-PR(Pa)R": {"links": 17, "joints": 21, "freedoms": 21, "mobility": -9},
     "4-PRRU": {"links": 14, "joints": 16, "freedoms": 20, "mobility": 2},
     "6-UPS": {"links": 14, "joints": 18, "freedoms": 36, "mobility": 6},
+}
+
+
+#: Numbers (m, rad) for every symbol of each parallel mechanism, for sk.plotting.draw_mechanism.
+#: Every limb gets the same values, so the symmetric limbs end on a regular polygon: the drawn
+#: platform is rigid. Keys are the builders' names.
+DRAWING_VALUES = {
+    "pm_3prrr": {"a": 0.45, "b": 0.45, "L_y": 1.0, "L_z": 1.0, "d_1": 0.4, "d_2": 0.4, "d_3": 0.4,
+                 **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((2, 0.6), (3, -0.5))}},
+    "pm_3prpar": {"L": 0.7, "b": 0.25, "d_1": 0.8, "d_2": 0.8, "d_3": 0.8,
+                  **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((2, 0.9), (3, 0.6))}},
+    "pm_4prru": {"R": 1.0, "a": 0.35, "b": 0.35, "alpha": 0.3,
+                 **{f"d_{i}": 0.3 for i in (1, 2, 3, 4)},
+                 **{f"theta_{i}{j}": v for i in (1, 2, 3, 4) for j, v in ((2, 2.3), (3, 2.8))}},
+    "pm_6ups": {"R": 1.0, **{f"d_{i}": 1.1 for i in range(1, 7)},
+                **{f"theta_{i}{j}": v for i in range(1, 7) for j, v in ((1, 0.15), (2, -0.45))}},
+    "planar_3rrr": {"a": 0.6, "b": 0.5,
+                    **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 2.2), (2, 3.4))}},
+    "pm_3rps": {"R": 1.0, **{f"d_{i}": 1.0 for i in (1, 2, 3)}, **{f"theta_{i}": 0.35 for i in (1, 2, 3)}},
+    "pm_3ruu": {"R": 1.0, "a": 0.5, "b": 0.8,
+                **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 0.5), (2, 0.3), (3, 2.2))}},
+    "spherical_3rrr": {f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 0.6), (2, 0.8))},
 }
 
 
@@ -83,13 +106,18 @@ def pm_4prru():
     R, a, b, alpha = sp.symbols("R a b alpha")
     d = sp.symbols("d_1:5")
     theta = _symbols("theta", 4, 2, 3)
-    K = rotx(alpha)
-    w = K * Y  # the common direction of the three parallel R axes
+    w = rotx(alpha) * Y  # the common direction of the three parallel R axes, (0, cos, sin)
+
+    def turned(length, angle):
+        # length * X turned by angle about the unit axis w (Rodrigues, with w . X = 0):
+        # cos(angle) X + sin(angle) w x X, written out so no trigonometric simplification runs
+        return length * sp.Matrix([sp.cos(angle), sp.sin(angle) * w[2], -sp.sin(angle) * w[1]])
+
     limbs = []
     for i in range(4):
         A = sp.Matrix([R, 0, d[i]])
-        B = A + rot_axis(w, theta[i][0]) * sp.Matrix([a, 0, 0])
-        C = B + rot_axis(w, theta[i][1]) * sp.Matrix([b, 0, 0])
+        B = A + turned(a, theta[i][0])
+        C = B + turned(b, theta[i][1])
         limb = prismatic(Z, A) + revolute(w, A) + revolute(w, B) + universal(w, Z, C)
         limbs.append(rotate_limb(limb, rotz(sp.pi * i / 2)))
     return limbs
@@ -193,14 +221,13 @@ def puma560():
         Link.revolute(d=0, a=0, alpha=-sp.pi / 2, qlim=(-100 * deg, 100 * deg)),
         Link.revolute(d=0, a=0, alpha=0, qlim=(-266 * deg, 266 * deg)),
     ]
-    robot = Chain(links, name="PUMA 560")
-    robot.configurations = {
+    configurations = {
         "zero": np.zeros(6),
         "ready": np.array([0, np.pi / 2, -np.pi / 2, 0, 0, 0]),
         "stretch": np.array([0, 0, -np.pi / 2, 0, 0, 0]),
         "nominal": np.array([0, np.pi / 4, -np.pi, 0, np.pi / 4, 0]),
     }
-    return robot
+    return Chain(links, name="PUMA 560", configurations=configurations)
 
 
 def kawasaki_cx210l():
@@ -223,10 +250,9 @@ def kawasaki_cx210l():
         Link.revolute(alpha=-90 * deg),
         Link.revolute(d=0.235),
     ]
-    robot = Chain(links, name="Kawasaki CX210L")
-    for k, q3 in enumerate((-90, -80, -70), start=1):
-        robot.configurations[f"table2_{k}"] = np.radians([0, 30, q3, 0, 0, 0])
-    return robot
+    configurations = {f"table2_{k}": np.radians([0, 30, q3, 0, 0, 0])
+                      for k, q3 in enumerate((-90, -80, -70), start=1)}
+    return Chain(links, name="Kawasaki CX210L", configurations=configurations)
 
 
 def planar(lengths, qlim=None):
@@ -256,5 +282,5 @@ def two_arm_planar(lengths=(0.3, 0.25, 0.2, 0.15, 0.1), separation=0.4, qlim=Non
     arms = []
     for name, x in (("left", -half), ("right", half)):
         arm = planar(lengths, qlim)
-        arms.append(Chain(list(arm.links), base=transl(x, 0, 0), name=f"{name} arm"))
+        arms.append(Chain(arm.links, base=transl(x, 0, 0), name=f"{name} arm"))
     return tuple(arms)

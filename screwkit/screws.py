@@ -13,15 +13,43 @@ Matrix([[0, 0, 1, 0, -1, 0]])
 >>> t @ w
 1
 """
+import numpy as np
 import sympy as sp
 
-from ._checks import as_sympy_matrix, as_sympy_scalar, describe
+from ._checks import as_sympy_matrix, as_sympy_scalar, describe, is_symbolic
 
-__all__ = ["Screw", "Twist", "Wrench"]
+__all__ = ["Screw", "Twist", "Wrench", "axis_coordinates"]
+
+
+def axis_coordinates(s, r, h):
+    """The screw coordinates of an axis: (s; r x s + h s), or (0; s) for the pitch h = oo.
+
+    The one place screwkit writes this formula. ``s`` is used as given (not normalised).
+
+    Parameters
+    ----------
+    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3); r is unused
+        for h = oo
+    h : the pitch (m/rad): a number, a SymPy expression, or oo / inf for a translation
+
+    Returns
+    -------
+    sympy.Matrix (6, 1), or ndarray (6,) / (N, 6)
+    """
+    if isinstance(s, sp.MatrixBase):
+        if _is_infinite_pitch(h):
+            return sp.Matrix.vstack(sp.zeros(3, 1), s)
+        (r1, r2, r3), (s1, s2, s3) = r.flat(), s.flat()
+        moment = [r2 * s3 - r3 * s2 + h * s1, r3 * s1 - r1 * s3 + h * s2, r1 * s2 - r2 * s1 + h * s3]
+        return sp.Matrix(6, 1, [s1, s2, s3] + moment)
+    s = np.asarray(s, dtype=float)
+    if _is_infinite_pitch(h):
+        return np.concatenate([np.zeros_like(s), s], axis=-1)
+    return np.concatenate([s, np.cross(r, s) + h * s], axis=-1)
 
 
 def _is_infinite_pitch(h):
-    return h is sp.oo or (isinstance(h, float) and h == float("inf"))
+    return h is sp.oo or (isinstance(h, (float, np.floating)) and h == float("inf"))
 
 
 class Screw:
@@ -46,13 +74,11 @@ class Screw:
         if all(e == 0 for e in s):
             raise ValueError(f"s must be a non-zero direction, got {list(s)}")
         if _is_infinite_pitch(h):
-            return cls._checked(sp.Matrix(6, 1, [0, 0, 0] + s.flat()))
+            return cls._checked(axis_coordinates(s, None, sp.oo))
         if isinstance(h, str) or h is None:
             raise TypeError(f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}")
         h = as_sympy_scalar(h, "h")
-        (r1, r2, r3), (s1, s2, s3) = as_sympy_matrix(r, "r", (3, 1)).flat(), s.flat()
-        moment = [r2 * s3 - r3 * s2 + h * s1, r3 * s1 - r1 * s3 + h * s2, r1 * s2 - r2 * s1 + h * s3]
-        return cls._checked(sp.Matrix(6, 1, [s1, s2, s3] + moment))
+        return cls._checked(axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), h))
 
     @classmethod
     def _checked(cls, vector):
@@ -138,6 +164,19 @@ class Screw:
             return NotImplemented
         return sp.expand(self.primary.dot(other.secondary) + self.secondary.dot(other.primary))
 
+    def transform(self, T):
+        """This screw written in another frame: Ad(T) $ for the pose T (4, 4) of its frame there.
+
+        A twist (w; v) becomes (R w; R v + p x R w); a wrench (f; m), in the same [angular;
+        linear] order, changes the same way (Modern Robotics, ordering (m; f), writes this
+        as the transposed adjoint: F_b = Ad(T_ab)^T F_a). Exact for a SymPy T; a float T gives
+        Float coordinates.
+        """
+        from .lie import adjoint
+
+        T = T if isinstance(T, sp.MatrixBase) else sp.Matrix(np.asarray(T, dtype=float))
+        return type(self)._checked((adjoint(T) * self.vector).applyfunc(sp.expand))
+
     def __eq__(self, other):
         return type(other) is type(self) and self.vector == other.vector
 
@@ -155,6 +194,22 @@ class Twist(Screw):
     """A twist (w; v): a joint's motion, or a platform's instantaneous motion."""
 
     kind = "twist"
+
+    def exp(self, theta):
+        """The rigid motion exp([V] theta) (4, 4) of moving ``theta`` along this twist.
+
+        Exact (a SymPy matrix) when theta or the twist holds SymPy symbols or theta is a SymPy
+        number; float64 for a numeric theta, (N,) angles giving (N, 4, 4). See
+        :func:`screwkit.transforms.exp_twist`.
+
+        >>> np.round(Twist.from_axis([0, 0, 1], [1, 0, 0], 0).exp(np.pi)[:3, 3], 12)
+        array([2., 0., 0.])
+        """
+        from .transforms import exp_twist
+
+        if is_symbolic(theta) or self.vector.free_symbols:
+            return exp_twist(self.vector, theta)
+        return exp_twist(np.array(self.vector, dtype=float).ravel(), theta)
 
 
 class Wrench(Screw):

@@ -1,0 +1,46 @@
+"""Textbook notation for exact kinematics: cos(q1) -> c1, sin(q2 + q3) -> s23."""
+import sympy as sp
+
+__all__ = ["textbook"]
+
+
+def textbook(expr, q_symbols=None, collect=True):
+    """``expr`` in textbook notation: cos(q1) -> c1, sin(q2 + q3) -> s23.
+
+    With ``collect``, sums are grouped by c1/s1 first, then by the next angles, which gives
+    nested forms like c1 (c23 (...) - s23 (...)) - s1 (...).
+    """
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(lambda e: textbook(e, q_symbols, collect))
+    expr = sp.sympify(expr)
+    q_symbols = q_symbols or sorted((s for s in expr.free_symbols if str(s).startswith("q")), key=str)
+    index = {q: str(q)[1:] for q in q_symbols}
+    replacements, order = {}, []
+    for function, letter in ((sp.cos, "c"), (sp.sin, "s")):
+        for call in expr.atoms(function):
+            argument = call.args[0]
+            terms = argument.args if isinstance(argument, sp.Add) else (argument,)
+            if all(t in index for t in terms):
+                label = "".join(sorted((index[t] for t in terms), key=int))
+                symbol = sp.Symbol(f"{letter}_{{{label}}}" if len(label) > 1 else f"{letter}{label}")
+                replacements[call] = symbol
+                order.append((label, letter, symbol))
+    result = expr.xreplace(replacements)
+    if collect and order:
+        order.sort(key=lambda item: (len(item[0]), item[0], item[1]))
+        result = _nested_collect(sp.expand(result), [symbol for _, _, symbol in order])
+    return result
+
+
+def _nested_collect(expr, symbols):
+    """Collect by the first symbol pair (c_k, s_k) present, then recurse into the coefficients."""
+    present = [s for s in symbols if expr.has(s)]
+    if not present or not isinstance(expr, sp.Add):
+        return expr
+    lead = str(present[0])[1:]
+    group = [s for s in present if str(s)[1:] == lead]
+    rest = [s for s in present if s not in group]
+    collected = sp.collect(expr, group, evaluate=False)
+    if len(collected) == 1 and sp.S.One in collected:
+        return _nested_collect(expr, rest)
+    return sp.Add(*[_nested_collect(coeff, rest) * key for key, coeff in collected.items()])
