@@ -136,16 +136,21 @@ class Link:
     def _numbers(self, index):
         """(d, a, theta, offset) as floats and (cos alpha, sin alpha), for the numeric path."""
         values = []
-        for name in ("d", "a", "theta", "offset"):
+        for name in ("d", "a", "theta", "offset", "alpha"):
             value = getattr(self, name)
             if isinstance(value, sp.Basic) and value.free_symbols:
                 raise ValueError(f"link {index}'s {name} is the expression {value}: the numeric path "
                                  "(fk, Jacobians) needs numbers; use fk_symbolic for symbols")
-            values.append(float(value))
-        alpha = _exact(self.alpha)
-        if alpha.free_symbols:
-            raise ValueError(f"link {index}'s alpha is the expression {alpha}: the numeric path needs numbers")
-        return values, (float(sp.cos(alpha)), float(sp.sin(alpha)))
+            values.append(value)
+        alpha = values.pop()
+        if isinstance(alpha, sp.Basic):  # exact: cos(pi/2) is exactly 0
+            return [float(v) for v in values], (float(sp.cos(alpha)), float(sp.sin(alpha)))
+        quarter_turns = round(alpha / (np.pi / 2))
+        if abs(alpha / (np.pi / 2) - quarter_turns) < 1e-15:  # as _exact: a float multiple of pi/2
+            cos_sin = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][quarter_turns % 4]
+        else:
+            cos_sin = (float(np.cos(alpha)), float(np.sin(alpha)))
+        return [float(v) for v in values], cos_sin
 
 
 def _check_qlim(qlim, name="qlim"):
@@ -619,12 +624,15 @@ class Chain:
 
     @cached_property
     def _functions(self):
-        program, _ = self._program
-        return {outputs: program.compile(outputs) for outputs in ("pose", "axes", "frames")}
+        """The generated functions, compiled on first use: {'pose' | 'axes' | 'frames': function}."""
+        return {}
 
     def _run(self, outputs, q, rows=None, out=None):
         """Generated code ``outputs`` at q: a list of entries for (n,), else ``out[rows[k]]`` filled."""
-        function, offsets = self._functions[outputs], self._program[1]
+        program, offsets = self._program
+        if outputs not in self._functions:
+            self._functions[outputs] = program.compile(outputs)
+        function = self._functions[outputs]
         if q.ndim == 1:
             return _compiled.evaluate(function, q + offsets)
         return _compiled.evaluate_batch(function, q + offsets, out, rows)
