@@ -1,16 +1,22 @@
 # The two commands of the course: `make book` and `make test`.
 # Both create .venv on first use and install requirements.txt (which installs screwkit).
 
-PYTHON ?= $(shell command -v python3.11 || command -v python3)
+# The course supports Python 3.11 to 3.13 (pyproject.toml): the first of python3.11, python3.12,
+# python3.13 and python3 on PATH that is one of them, or choose with PYTHON=/path/to/python3.X.
+SUPPORTED := import sys; sys.exit(not (3, 11) <= sys.version_info[:2] <= (3, 13))
+PYTHON ?= $(firstword $(foreach p,python3.11 python3.12 python3.13 python3,\
+            $(shell $(p) -c '$(SUPPORTED)' 2>/dev/null && command -v $(p))))
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
-export PATH := $(CURDIR)/$(BIN):$(PATH)
+export PATH := $(abspath $(BIN)):$(PATH)
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: book test lab site-check bench notebooks clean
+.PHONY: book test lab site-check bench notebooks check-sources clean
 
 $(STAMP): requirements.txt pyproject.toml
+	@test -x $(BIN)/python || $(PYTHON) -c '$(SUPPORTED)' 2>/dev/null || { echo "make: .venv needs\
+	 Python 3.11, 3.12 or 3.13; PYTHON is '$(PYTHON)': run make PYTHON=/path/to/python3.X" >&2; exit 1; }
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --requirement requirements.txt
 	@touch $(STAMP)
@@ -26,13 +32,21 @@ book: $(STAMP)
 	@echo "The book is built: open _build/html/index.html in a browser."
 
 ## make site-check: serve _build/html on 127.0.0.1 and check every page in headless Chromium
+## (Playwright for Python from .ci/requirements.txt; it drives the system Chromium, downloads none)
 site-check: $(STAMP)
+	$(BIN)/python -m pip install --quiet --requirement .ci/requirements.txt
+	$(BIN)/python -m pytest .ci/test_viewer_browser.py -q
 	$(BIN)/python .ci/site_check.py _build/html
 
-## make lab: JupyterLab on the notebooks (installs JupyterLab into .venv on first use)
+## make lab: JupyterLab on notebooks/, opened on the first chapter of _toc.yml (installs the
+## JupyterLab that Binder pins into .venv on first use); options: make lab LAB_ARGS="--no-browser"
+LAB_ARGS ?=
+FIRST_CHAPTER = $(shell grep -m1 -o 'notebooks/[A-Za-z0-9_]*' _toc.yml).ipynb
 lab: $(STAMP)
-	@test -x $(BIN)/jupyter-lab || $(BIN)/python -m pip install --quiet "jupyterlab>=4,<5"
-	$(BIN)/jupyter-lab notebooks
+	@test -x $(BIN)/jupyter-lab || $(BIN)/python -m pip install --quiet \
+	  "$$(grep -m1 '^jupyterlab==' binder/requirements.txt)"
+	$(BIN)/jupyter-lab --ServerApp.root_dir=notebooks $(if $(filter 0,$(shell id -u)),--allow-root) \
+	  $(LAB_ARGS) $(FIRST_CHAPTER)
 
 ## make bench: the speed tables of benchmarks/ (in .venv-bench, with the Robotics Toolbox beside screwkit)
 BENCH_STAMP := .venv-bench/.installed
@@ -47,6 +61,11 @@ bench: $(BENCH_STAMP)
 clean:
 	rm -rf _build
 
-## make notebooks: re-execute every notebook and store its outputs (review the diff after)
+## make notebooks: rebuild each notebooks/NAME.ipynb from its MyST source NAME.md, execute it
+## and store its outputs (review the diff after)
 notebooks: $(STAMP)
 	$(BIN)/python tools/execute_notebooks.py
+
+## make check-sources: every .ipynb's inputs equal its .md source; code lines at most 88 chars
+check-sources: $(STAMP)
+	$(BIN)/python .ci/check_sources.py

@@ -6,7 +6,12 @@ Chromium (every host but 127.0.0.1 unresolvable), and fails unless:
     on every page that has math;
   - every chapter page (notebooks/) shows at least one figure whose file is in the build;
   - no page links to a missing file or anchor of the book;
-  - no page asked for anything off this machine (Chromium's net log lists every request).
+  - no page asked for anything off this machine (Chromium's net log lists every request);
+  - every slider or drop-down of every in-page interactive figure (screwkit.viewer), when
+    moved, changes the drawing, and no page logs a JavaScript error (Playwright driving the
+    system Chromium); the redraw time of each move is printed (goal: under 50 ms);
+  - no page holds a widget placeholder (a widget view with no fallback: blank in the book);
+  - the whole book stays under 60 MB.
 Keeps a screenshot of the first chapter in _build/.
 
 Usage: python .ci/site_check.py _build/html
@@ -153,6 +158,74 @@ def check_links(root, page, parser, cache):
     return problems
 
 
+BOOK_LIMIT_MB = 60
+REDRAW_GOAL_MS = 50
+
+# In the page: move control k of figure `id` to another value of its grid, return
+# [changed?, milliseconds, label]. A figure's drawing is its canvas pixels or its frame's HTML.
+MOVE_CONTROL = """([id, k]) => {
+    const root = document.getElementById(id);
+    const drawing = () => [...root.querySelectorAll("canvas")].map(c => c.toDataURL()).join()
+        + [...root.querySelectorAll(".screwkit-frame")].map(f => f.innerHTML).join();
+    const control = root.querySelectorAll("input[type=range], select")[k];
+    const before = drawing();
+    let label = control.getAttribute("aria-label");
+    if (control.tagName === "SELECT") {
+        control.selectedIndex = (control.selectedIndex + 1) % control.options.length;
+    } else {
+        const [low, high, step] = [+control.min, +control.max, +control.step];
+        const count = Math.round((high - low) / step);
+        const here = Math.round((+control.value - low) / step);
+        control.value = String(low + step * ((here + Math.max(1, Math.round(count / 3))) % (count + 1)));
+    }
+    const start = performance.now();
+    control.dispatchEvent(new Event(control.tagName === "SELECT" ? "change" : "input"));
+    const elapsed = performance.now() - start;
+    return [drawing() !== before, elapsed, label];
+}"""
+
+
+def check_interactive(browser, origin, pages):
+    """Move every control of every in-page figure; the drawing must change, without JS errors."""
+    from playwright.sync_api import sync_playwright
+
+    problems = []
+    flags = [f for f in CHROMIUM_FLAGS if f != "--headless"]
+    with sync_playwright() as p:
+        chromium = p.chromium.launch(executable_path=browser, args=flags)
+        for page_name in pages:
+            page = chromium.new_page()
+            errors = []
+            page.on("pageerror", lambda error: errors.append(str(error)))
+            page.on("console", lambda m: m.type == "error" and not m.location.get("url", "")
+                    .endswith("/favicon.ico") and errors.append(m.text))
+            page.goto(origin + page_name, wait_until="load")
+            placeholders = page.locator(
+                "script[type='application/vnd.jupyter.widget-view+json']").count()
+            if placeholders:
+                problems.append(f"{page_name}: {placeholders} widget placeholders (blank in the book)")
+            figures = page.eval_on_selector_all("div.screwkit-viewer", "d => d.map(e => e.id)")
+            times = []
+            for figure in figures:
+                if not page.evaluate("id => document.getElementById(id).dataset.mounted", figure):
+                    problems.append(f"{page_name}: figure {figure} was never drawn")
+                    continue
+                count = page.locator(f"[id='{figure}'] input[type=range], [id='{figure}'] select").count()
+                for k in range(count):
+                    changed, elapsed, label = page.evaluate(MOVE_CONTROL, [figure, k])
+                    times.append(elapsed)
+                    if not changed:
+                        problems.append(f"{page_name}: moving {label} of {figure} changed nothing")
+            problems += [f"{page_name}: JavaScript error: {e}" for e in errors]
+            if times:
+                print(f"{page_name}: {len(figures)} interactive figures, {len(times)} controls moved, "
+                      f"redraw median {sorted(times)[len(times) // 2]:.1f} ms, "
+                      f"max {max(times):.1f} ms (goal {REDRAW_GOAL_MS} ms)")
+            page.close()
+        chromium.close()
+    return problems
+
+
 def main(root):
     root = os.path.abspath(root)
     pages = toc_pages(root)
@@ -186,7 +259,12 @@ def main(root):
         chromium(browser, origin + shot_page, os.path.join(tmp, "profile"),
                  f"--screenshot={shot}", "--window-size=1280,1600", "--hide-scrollbars")
         print(f"screenshot of {shot_page}: {shot}")
+        problems += check_interactive(browser, origin, pages)
     server.shutdown()
+    size = sum(os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(root) for f in fs)
+    print(f"book size: {size / 1e6:.1f} MB (limit {BOOK_LIMIT_MB} MB)")
+    if size > BOOK_LIMIT_MB * 1e6:
+        problems.append(f"the book is {size / 1e6:.1f} MB, over the {BOOK_LIMIT_MB} MB limit")
     if problems:
         print("\nsite check FAILED:")
         for problem in problems:

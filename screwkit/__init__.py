@@ -27,8 +27,9 @@ from .transforms import (
 
 __version__ = "0.1.0"
 
-# Drawing and widgets load matplotlib and ipywidgets: imported on first use (sk.plotting, sk.widgets).
-_LAZY_SUBMODULES = ("plotting", "widgets")
+# Drawing, widgets and the in-page viewer load matplotlib and ipywidgets: imported on first use
+# (sk.plotting, sk.widgets, sk.viewer).
+_LAZY_SUBMODULES = ("plotting", "widgets", "viewer")
 
 
 def __getattr__(name):

@@ -1,60 +1,122 @@
-"""Interactive widgets (ipywidgets) for the chapters. They need a live kernel."""
+"""Interactive widgets (ipywidgets) for a live kernel, each with a figure for pages without one.
+
+Every function returns a ``LiveFigure``: in JupyterLab, Notebook 7, VS Code or Colab it is the
+ipywidgets slider that re-runs Python; its output also carries an HTML fallback (the same
+figure computed in the page by ``screwkit.viewer``, or precomputed frames) that the static
+book shows instead of a blank widget placeholder (``nb_mime_priority_overrides`` in
+``_config.yml``). Sliders follow the rules of ``screwkit._sliders``: default on the grid,
+0 reachable, unit in the label.
+"""
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
 import numpy as np
 
-from . import plotting
+from . import _sliders, plotting, viewer
 from ._checks import check_transform
 from .transforms import screw_motion
 
-__all__ = ["screw_motion_slider", "joint_sliders"]
+__all__ = ["LiveFigure", "screw_motion_slider", "joint_sliders", "figure_slider"]
 
 
-def screw_motion_slider(s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2))):
-    """A slider for theta (degrees) that moves the frame ``start`` about the screw (s, r, h).
+class LiveFigure:
+    """An ipywidget for live kernels plus ``fallback`` (an object with ``_repr_html_``) for pages.
 
-    The frame drawn is exp([xi] theta) @ start, with the twist xi of the axis through
-    ``r`` along ``s`` with pitch ``h`` (m/rad). Returns the widget to display.
+    ``widget`` is the ipywidgets object (its ``.children`` hold the sliders).
+    """
+
+    def __init__(self, widget, fallback):
+        self.widget = widget
+        self.fallback = fallback
+
+    def __repr__(self):
+        return f"LiveFigure({self.fallback!r})"
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        bundle = dict(self.widget._repr_mimebundle_(include=include, exclude=exclude) or {})
+        bundle["text/html"] = self.fallback._repr_html_()
+        bundle["text/plain"] = repr(self)
+        return bundle
+
+
+def _float_slider(spec):
+    return widgets.FloatSlider(value=spec.value, min=spec.low, max=spec.high, step=spec.step,
+                               description=spec.description, continuous_update=False,
+                               style={"description_width": "initial"})
+
+
+def screw_motion_slider(s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2)), theta=90.0):
+    """A slider for theta (deg) that moves the frame ``start`` about the screw (s, r, h).
+
+    The frame drawn is exp([xi] theta) @ start, with the twist xi of the axis through ``r``
+    along ``s`` with pitch ``h`` (m/rad). Without a kernel, the same motion is computed in
+    the page (``viewer.screw_motion_viewer``). Returns a LiveFigure.
     """
     start = np.eye(4) if start is None else check_transform(np.asarray(start, dtype=float), "start")
     screw_motion(s, r, h, 0.0)  # check s, r, h once, before any drawing
+    fallback = viewer.screw_motion_viewer(s, r, h, start=start, theta=theta)
+    spec = _sliders.slider_spec("theta", "deg", -360.0, 360.0, theta)
 
     def draw(theta_deg):
-        theta = np.radians(theta_deg)
+        angle = np.radians(theta_deg)
         ax = plotting.axes3d(limits)
         plotting.draw_screw_axis(ax, s, r, label="screw axis")
         plotting.draw_frame(ax, np.eye(4), label="0", alpha=0.4)
-        path = screw_motion(s, r, h, np.linspace(0.0, theta, 40)) @ start
+        path = screw_motion(s, r, h, np.linspace(0.0, angle, 40)) @ start
         plotting.draw_screw_motion(ax, path, every=39)
         ax.set_title(f"theta = {theta_deg:.0f} deg, pitch h = {h} m/rad")
         plt.show()
 
-    slider = widgets.FloatSlider(value=90.0, min=-360.0, max=360.0, step=5.0, description="theta (deg)")
-    return widgets.interactive(draw, theta_deg=slider)
+    return LiveFigure(widgets.interactive(draw, theta_deg=_float_slider(spec)), fallback)
 
 
 def joint_sliders(chain, q=None, limits=((-0.9, 0.9), (-0.9, 0.9), (-0.5, 1.0)), draw=None):
-    """One slider per joint (degrees, within the joint limits) that redraws the chain.
+    """One slider per joint (deg, or m for prismatic joints, within the limits) that redraws.
 
-    ``draw(ax, q)`` may add to each drawing (for example the pose's numbers). Returns the
-    widget to display.
+    ``draw(ax, q)`` may add to each drawing (for example the pose's numbers). Without a
+    kernel, the chain is drawn and moved in the page (``viewer.robot_viewer``). Returns a
+    LiveFigure.
     """
-    q = np.zeros(chain.n) if q is None else chain.check_q(q)
-    qlim = np.degrees(np.clip(chain.qlim, -np.pi, np.pi))
+    specs = _sliders.joint_sliders(chain, q)
+    fallback = viewer.robot_viewer(chain, q)
 
-    def redraw(**degrees):
-        values = np.radians([degrees[f"q{i + 1}"] for i in range(chain.n)])
+    def redraw(**values):
+        q = np.array([values[s.label] * s.scale for s in specs])
         ax = plotting.axes3d(limits)
-        plotting.draw_chain(ax, chain, values)
-        position = chain.fk(values)[:3, 3]
-        ax.set_title(f"{chain.name}: tool at ({position[0]:.3f}, {position[1]:.3f}, {position[2]:.3f}) m")
+        plotting.draw_chain(ax, chain, q)
+        x, y, z = chain.fk(q)[:3, 3]
+        ax.set_title(f"{chain.name}: tool at ({x:.3f}, {y:.3f}, {z:.3f}) m")
         if draw is not None:
-            draw(ax, values)
+            draw(ax, q)
         plt.show()
 
-    sliders = {
-        f"q{i + 1}": widgets.FloatSlider(value=float(np.degrees(q[i])), min=float(low), max=float(high),
-                                         step=1.0, description=f"q{i + 1} (deg)")
-        for i, (low, high) in enumerate(qlim)
-    }
-    return widgets.interactive(redraw, **sliders)
+    sliders = {spec.label: _float_slider(spec) for spec in specs}
+    return LiveFigure(widgets.interactive(redraw, **sliders), fallback)
+
+
+def figure_slider(draw, label, unit=None, values=None, choices=None, value=None):
+    """A slider over a grid ``values`` (or a drop-down over ``choices``) that shows ``draw(v)``.
+
+    ``draw(v)`` returns a matplotlib Figure or a str. With a kernel, every grid value is
+    computed when chosen; without one, the page steps through the figures computed now for
+    each value (``viewer.stepped_figure``). Give ``values`` from ``viewer.grid`` with its
+    ``unit``. Returns a LiveFigure.
+    """
+    fallback = viewer.stepped_figure(draw, label, unit, values=values, choices=choices,
+                                     value=value)
+    model = fallback.model
+
+    def show(v):
+        result = draw(v)
+        if isinstance(result, str):
+            print(result)
+        else:
+            plt.show()
+
+    if choices is not None:
+        control = widgets.Dropdown(options=model["choices"], description=label,
+                                   value=model["choices"][model["index"]])
+    else:
+        spec = model["slider"]
+        control = _float_slider(_sliders.SliderSpec(label, unit, spec["min"], spec["max"],
+                                                    spec["step"], spec["value"]))
+    return LiveFigure(widgets.interactive(show, v=control), fallback)

@@ -1,0 +1,170 @@
+"""Check that every chapter has one source and that its code fits on a page.
+
+Each chapter is a MyST Markdown notebook notebooks/NAME.md (what people edit) paired with
+notebooks/NAME.ipynb (generated from it by `make notebooks`, stored with outputs). Fails unless:
+  - every .ipynb has its .md and every .md its .ipynb;
+  - the .ipynb's cells equal the .md's: same cell types, sources and tags, in the same order;
+  - no code line of a chapter is longer than 88 characters;
+  - no code cell carries an nbval comment (nbval's cell tags do that job, unseen by readers);
+and, with --built DIR (the HTML book, e.g. _build/html), unless:
+  - no page contains the text "NBVAL";
+  - no code line of a code cell (its <pre> block) is longer than 88 characters.
+
+Usage: python .ci/check_sources.py [--notebooks notebooks] [--built _build/html]
+"""
+import argparse
+import glob
+import os
+import sys
+from html.parser import HTMLParser
+
+import jupytext
+import nbformat
+
+MAX_LINE = 88
+
+
+def _inputs(cell):
+    """What must agree between a notebook and its source: type, source and tags."""
+    return cell.cell_type, cell.source, list(cell.metadata.get("tags", []))
+
+
+def _compare(source_path, notebook_path):
+    source, notebook = jupytext.read(source_path), nbformat.read(notebook_path, 4)
+    problems = []
+    for i, (want, got) in enumerate(zip(source.cells, notebook.cells)):
+        (want_type, want_source, want_tags), (got_type, got_source, got_tags) = (
+            _inputs(want),
+            _inputs(got),
+        )
+        where = f"{notebook_path}: cell {i}"
+        if want_type != got_type:
+            problems.append(f"{where} is a {got_type} cell, {source_path} has a {want_type} cell")
+        elif want_source != got_source:
+            problems.append(f"{where} ({got_type}): source differs from {source_path}")
+        elif want_tags != got_tags:
+            problems.append(f"{where}: tags {got_tags}, {source_path} has {want_tags}")
+    if len(source.cells) != len(notebook.cells):
+        problems.append(
+            f"{notebook_path} has {len(notebook.cells)} cells, "
+            f"{source_path} has {len(source.cells)}"
+        )
+    return problems
+
+
+def _code_lines(source_path):
+    """Long lines and nbval comments in the code cells of one MyST source."""
+    text_lines = open(source_path, encoding="utf-8").read().splitlines()
+    problems = []
+    for i, cell in enumerate(jupytext.read(source_path).cells):
+        if cell.cell_type != "code":
+            continue
+        for line in cell.source.splitlines():
+            where = f"{source_path}:{_line_number(text_lines, line)}: cell {i}"
+            if len(line) > MAX_LINE:
+                problems.append(
+                    f"{where}: code line of {len(line)} characters (at most {MAX_LINE})"
+                )
+            if "NBVAL" in line:
+                problems.append(f"{where}: nbval comment; use the cell tag instead")
+    return problems
+
+
+def _line_number(text_lines, line):
+    """The 1-based number of `line` in the file (its first occurrence), or '?'."""
+    for number, text in enumerate(text_lines, start=1):
+        if text == line:
+            return number
+    return "?"
+
+
+def check_notebooks(folder):
+    """Problems of the chapter sources in `folder`, as sentences (empty: all good)."""
+    sources = {os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.md"))}
+    notebooks = {os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.ipynb"))}
+    problems = [f"{name}.ipynb has no MyST source {name}.md" for name in sorted(notebooks - sources)]
+    problems += [
+        f"{name}.md has no notebook {name}.ipynb (run `make notebooks`)"
+        for name in sorted(sources - notebooks)
+    ]
+    for name in sorted(sources):
+        if name in notebooks:
+            problems += _compare(name + ".md", name + ".ipynb")
+        problems += _code_lines(name + ".md")
+    return problems
+
+
+class _CodeCellParser(HTMLParser):
+    """Collects the text of the <pre> blocks inside the code-cell inputs of one page."""
+
+    def __init__(self):
+        super().__init__()
+        self.cells = []  # one text per <pre> of a cell input
+        self._div_depth = 0  # open <div>s since entering a cell input (0: outside one)
+        self._in_pre = False
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "div":
+            classes = (dict(attrs).get("class") or "").split()
+            if self._div_depth:
+                self._div_depth += 1
+            elif "cell_input" in classes:
+                self._div_depth = 1
+        elif tag == "pre" and self._div_depth:
+            self._in_pre = True
+            self.cells.append("")
+
+    def handle_endtag(self, tag):
+        if tag == "div" and self._div_depth:
+            self._div_depth -= 1
+        elif tag == "pre":
+            self._in_pre = False
+
+    def handle_data(self, data):
+        if self._in_pre:
+            self.cells[-1] += data
+
+
+def check_built(folder):
+    """Problems of the HTML pages under `folder`, as sentences (empty: all good)."""
+    problems = []
+    pages = sorted(glob.glob(os.path.join(folder, "**", "*.html"), recursive=True))
+    if not pages:
+        return [f"{folder} has no HTML pages: build the book first (make book)"]
+    for page in pages:
+        html = open(page, encoding="utf-8").read()
+        if "NBVAL" in html:
+            problems.append(f"{page}: contains the text NBVAL (use nbval's cell tags)")
+        parser = _CodeCellParser()
+        parser.feed(html)
+        for i, text in enumerate(parser.cells):
+            for line in text.splitlines():
+                if len(line) > MAX_LINE:
+                    problems.append(
+                        f"{page}: code cell {i}: line of {len(line)} characters "
+                        f"(at most {MAX_LINE}): {line[:40]}..."
+                    )
+    return problems
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--notebooks", default="notebooks", help="folder of the chapters")
+    parser.add_argument("--built", help="also check the HTML book in this folder")
+    args = parser.parse_args(argv)
+    problems = check_notebooks(args.notebooks)
+    if args.built:
+        problems += check_built(args.built)
+    for problem in problems:
+        print(problem)
+    if problems:
+        print(f"check_sources: {len(problems)} problem(s); `make notebooks` rebuilds the "
+              "notebooks from their .md sources")
+        return 1
+    print("check_sources: sources, notebooks" + (" and built pages" if args.built else "")
+          + " agree")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

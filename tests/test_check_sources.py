@@ -1,0 +1,156 @@
+"""The CI check of .ci/check_sources.py: chapter sources and notebooks agree, code fits a page."""
+import importlib.util
+import pathlib
+
+import jupytext
+import nbformat
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+_spec = importlib.util.spec_from_file_location("check_sources", ROOT / ".ci" / "check_sources.py")
+check_sources = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(check_sources)
+
+SOURCE = """\
+---
+jupytext:
+  formats: ipynb,md:myst
+  text_representation:
+    extension: .md
+    format_name: myst
+kernelspec:
+  display_name: Python 3
+  language: python
+  name: python3
+---
+
+# A chapter
+
+Some prose.
+
+```{code-cell} ipython3
+x = 1 + 1
+print(x)
+```
+
+```{code-cell} ipython3
+:tags: [nbval-ignore-output]
+
+print("a timing")
+```
+"""
+
+
+@pytest.fixture
+def chapter(tmp_path):
+    """A folder with one chapter: its MyST source and the notebook made from it."""
+    (tmp_path / "chapter.md").write_text(SOURCE)
+    jupytext.write(jupytext.read(tmp_path / "chapter.md"), tmp_path / "chapter.ipynb")
+    return tmp_path
+
+
+def edit_notebook(folder, change):
+    path = folder / "chapter.ipynb"
+    notebook = nbformat.read(path, 4)
+    change(notebook)
+    nbformat.write(notebook, path)
+
+
+def test_a_notebook_made_from_its_source_passes(chapter):
+    assert check_sources.check_notebooks(str(chapter)) == []
+
+
+def test_a_changed_cell_source_is_named_with_file_and_cell(chapter):
+    def change(notebook):
+        notebook.cells[1].source = "x = 1 + 2\nprint(x)"
+
+    edit_notebook(chapter, change)
+    problems = check_sources.check_notebooks(str(chapter))
+    assert len(problems) == 1
+    assert "chapter.ipynb: cell 1 (code): source differs from" in problems[0]
+    assert "chapter.md" in problems[0]
+
+
+def test_a_changed_tag_and_cell_type_and_count_are_caught(chapter):
+    def change(notebook):
+        notebook.cells[2].metadata["tags"] = []
+        notebook.cells[1].cell_type = "markdown"
+        notebook.cells.append(nbformat.v4.new_markdown_cell("extra"))
+
+    edit_notebook(chapter, change)
+    problems = "\n".join(check_sources.check_notebooks(str(chapter)))
+    assert "cell 1 is a markdown cell" in problems
+    assert "cell 2: tags []" in problems and "nbval-ignore-output" in problems
+    assert "chapter.ipynb has 4 cells" in problems and "has 3" in problems
+
+
+def test_a_notebook_without_source_and_a_source_without_notebook(tmp_path, chapter):
+    (chapter / "chapter.md").rename(chapter / "other.md")
+    problems = check_sources.check_notebooks(str(chapter))
+    assert any("chapter.ipynb has no MyST source" in p for p in problems)
+    assert any("other.md has no notebook" in p for p in problems)
+
+
+def test_a_long_code_line_and_an_nbval_comment_are_caught(chapter):
+    long_line = "y = [" + ", ".join(["1000"] * 16) + "]"  # 5 + 16 * 6 - 2 + 1 = 100 chars
+    assert len(long_line) == 100
+    source = SOURCE.replace("x = 1 + 1", long_line).replace(
+        'print("a timing")', '# NBVAL_IGNORE_OUTPUT\nprint("a timing")'
+    )
+    (chapter / "chapter.md").write_text(source)
+    jupytext.write(jupytext.read(chapter / "chapter.md"), chapter / "chapter.ipynb")
+    problems = check_sources.check_notebooks(str(chapter))
+    assert len(problems) == 2
+    line = source.splitlines().index(long_line) + 1
+    assert f"chapter.md:{line}: cell 1: code line of 100 characters" in problems[0]
+    assert "cell 2: nbval comment" in problems[1]
+
+
+def test_a_line_of_exactly_88_characters_passes(chapter):
+    line = "z = " + "1" * 84
+    assert len(line) == 88
+    (chapter / "chapter.md").write_text(SOURCE.replace("x = 1 + 1", line))
+    jupytext.write(jupytext.read(chapter / "chapter.md"), chapter / "chapter.ipynb")
+    assert check_sources.check_notebooks(str(chapter)) == []
+
+
+def page(code, prose="A page."):
+    """A built page in the shape Jupyter Book gives a code cell."""
+    return (
+        f"<html><body><p>{prose}</p>"
+        '<div class="cell docutils container"><div class="cell_input docutils container">'
+        '<div class="highlight-ipython3 notranslate"><div class="highlight"><pre>'
+        f"{code}</pre></div></div></div>"
+        '<div class="cell_output docutils container"><div class="output stream highlight-myst-ansi'
+        ' notranslate"><div class="highlight"><pre><span></span>' + "9" * 120 + "</pre>"
+        "</div></div></div></div></body></html>"
+    )
+
+
+def test_built_pages_with_nbval_text_or_long_code_lines_fail(tmp_path):
+    (tmp_path / "notebooks").mkdir()
+    short = '<span class="n">x</span> <span class="o">=</span> <span class="mi">1</span>'
+    (tmp_path / "notebooks" / "good.html").write_text(page(short))
+    (tmp_path / "notebooks" / "plumbing.html").write_text(
+        page("<span># NBVAL_IGNORE_OUTPUT</span>\nx = 1")
+    )
+    long_code = "x = [" + ", ".join(["&quot;ab&quot;"] * 20) + "]"  # 5 + 20 * 6 - 2 + 1 = 124
+    (tmp_path / "notebooks" / "wide.html").write_text(page("y = 2\n" + long_code))
+    problems = check_sources.check_built(str(tmp_path))
+    assert len(problems) == 2, problems
+    assert "plumbing.html: contains the text NBVAL" in problems[0]
+    assert "wide.html: code cell 0: line of 124 characters" in problems[1]
+
+
+def test_long_outputs_and_the_word_nbval_in_lower_case_are_not_code(tmp_path):
+    (tmp_path / "intro.html").write_text(page("x = 1", prose="run by nbval in CI"))
+    assert check_sources.check_built(str(tmp_path)) == []
+
+
+def test_an_empty_build_folder_is_reported(tmp_path):
+    assert "has no HTML pages" in check_sources.check_built(str(tmp_path))[0]
+
+
+def test_the_repository_chapters_pass(capsys):
+    assert check_sources.main(["--notebooks", str(ROOT / "notebooks")]) == 0
+    assert "agree" in capsys.readouterr().out

@@ -1,0 +1,168 @@
+"""The in-page viewers, Python side: what the page is given, the slider grids, bad input.
+
+The page's own kinematics is compared with screwkit's in Chromium by .ci/test_viewer_browser.py.
+"""
+import json
+import math
+import re
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import screwkit as sk
+from screwkit import _sliders, viewer
+
+
+def model_of(figure):
+    """The JSON the page receives, read back from the HTML (as the browser does)."""
+    html = figure._repr_html_()
+    match = re.search(r'<script type="application/json">(.*?)</script>', html, re.S)
+    return json.loads(match.group(1).replace("<\\/", "</"))
+
+
+def test_the_script_ships_inside_the_package_and_is_small():
+    script = viewer.viewer_script()
+    assert "window.screwkit" in script
+    assert len(script.encode()) < 100_000  # the issue allows 1 MB for the whole book
+    assert "http://" not in script and "https://" not in script  # nothing from the network
+
+
+def test_html_is_self_contained_and_names_its_root():
+    figure = viewer.robot_viewer(sk.robots.planar([0.3, 0.2]))
+    html = figure._repr_html_()
+    assert f'id="{figure.id}"' in html
+    assert viewer.viewer_script() in html
+    assert "<script src" not in html and "<link" not in html
+
+
+def test_robot_payload_is_the_product_of_exponentials():
+    # planar 2R, lengths 0.3 and 0.2: joint 1 about z through 0, joint 2 about z through
+    # (0.3, 0, 0); at q = 0 the tool is at (0.5, 0, 0). Screws (z; p x z) by hand.
+    model = model_of(viewer.robot_viewer(sk.robots.planar([0.3, 0.2])))
+    np.testing.assert_allclose(model["screws"], [[0, 0, 1, 0, 0, 0], [0, 0, 1, 0, -0.3, 0]],
+                               atol=1e-12)
+    np.testing.assert_allclose(model["home"], [[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0],
+                                               [0, 0, 0, 1]], atol=1e-12)
+    np.testing.assert_allclose(model["points"], [[0, 0, 0], [0.3, 0, 0]], atol=1e-12)
+    assert model["joints"] == ["R", "R"]
+    assert [s["label"] for s in model["sliders"]] == ["q1", "q2"]
+    assert all(s["unit"] == "deg" and s["scale"] == pytest.approx(math.pi / 180)
+               for s in model["sliders"])
+
+
+def test_payload_rebuilds_the_chain_fk():
+    # The product of exponentials of the payload, evaluated here with screwkit's own
+    # exponential, is the chain's DH forward kinematics.
+    puma = sk.robots.puma560()
+    model = model_of(viewer.robot_viewer(puma))
+    q = np.radians([10, 20, -30, 40, 50, 60])
+    T = np.eye(4)
+    for S, qi in zip(model["screws"], q):
+        T = T @ sk.exp_twist(np.array(S), qi)
+    np.testing.assert_allclose(T @ np.array(model["home"]), puma.fk(q), atol=1e-10)
+
+
+def test_same_figure_gives_the_same_payload_and_distinct_ids():
+    puma = sk.robots.puma560()
+    first, second = viewer.robot_viewer(puma), viewer.robot_viewer(puma)
+    assert first._payload == second._payload
+    assert first.id != second.id
+
+
+def test_screw_payload_normalises_the_axis_and_marks_a_translation():
+    model = model_of(viewer.screw_motion_viewer([0, 0, 2], [1, 0, 0], 0.5))
+    assert model["s"] == [0.0, 0.0, 1.0] and model["h"] == 0.5
+    assert model["slider"]["unit"] == "deg"
+    for infinity in (math.inf, sp.oo):
+        model = model_of(viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], infinity, theta=0.2))
+        assert model["h"] is None and model["slider"]["unit"] == "m"
+        assert model["slider"]["value"] == 0.2
+
+
+def test_a_chain_with_no_links_is_refused():
+    class Empty(sk.Chain):
+        n = 0  # a chain with no links cannot be built; a subclass can still claim it
+
+    empty = object.__new__(Empty)
+    with pytest.raises(ValueError, match="chain must have at least one link to be drawn, got 0"):
+        viewer.robot_viewer(empty)
+
+
+@pytest.mark.parametrize(
+    ("call", "error", "message"),
+    [
+        (lambda: viewer.robot_viewer("puma"), TypeError, "chain must be a screwkit Chain, got str"),
+        (lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), q=[0, 0, 0]), ValueError,
+         "q must have 2 entries"),
+        (lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), ellipsoid_scale=-1), ValueError,
+         "ellipsoid_scale must be one positive number"),
+        (lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), size=(10, 10)), ValueError,
+         r"size must be \(width, height\) in pixels"),
+        (lambda: viewer.screw_motion_viewer([0, 0, 0], [0, 0, 0], 0), ValueError,
+         "s must be a nonzero direction"),
+        (lambda: viewer.screw_motion_viewer([0, 1], [0, 0, 0], 0), ValueError,
+         r"s must have shape \(3\)"),
+        (lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], "x"), TypeError,
+         "h must be a number"),
+        (lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0, theta=400), ValueError,
+         r"default of slider 'theta' must lie in \[-360, 360\] deg, got 400 deg"),
+        (lambda: viewer.stepped_figure(str, "k", "1/s"), ValueError, "exactly one of values"),
+        (lambda: viewer.stepped_figure(str, "k", "1/s", values=[0.5, 1.5]), ValueError,
+         "grid anchored at 0"),
+        (lambda: viewer.stepped_figure(str, "pick", choices=["a"], value="b"), ValueError,
+         "value must be one of the choices"),
+        (lambda: viewer.stepped_figure(lambda v: 3, "k", "1/s", values=[0, 1]), TypeError,
+         "draw must return a matplotlib Figure or a str, got int"),
+        (lambda: viewer.grid(0.5, 2.5, 1), ValueError, "low must be a multiple of step"),
+    ],
+)
+def test_bad_input_is_refused_with_the_reason(call, error, message):
+    with pytest.raises(error, match=message):
+        call()
+
+
+def test_a_pose_outside_the_limits_is_refused_with_the_joint_named():
+    arm = sk.robots.planar([1, 1], qlim=np.radians([[-90, 90], [-90, 90]]))
+    with pytest.raises(ValueError, match=r"q\[1\] = 120 deg is outside joint 2's limits"):
+        viewer.robot_viewer(arm, np.radians([0, 120]))
+
+
+def test_stepped_figure_embeds_one_frame_per_value():
+    figure = viewer.stepped_figure(lambda k: f"k = {k:.1f}", "k", "1/s",
+                                   values=viewer.grid(0, 2, 0.5), value=1.0)
+    model = model_of(figure)
+    assert model["values"] == [0.0, 0.5, 1.0, 1.5, 2.0]
+    assert model["index"] == 2
+    assert model["frames"][2] == '<pre style="margin:0">k = 1.0</pre>'
+    choice = model_of(viewer.stepped_figure(lambda m: m.upper(), "mechanism",
+                                            choices=["a<b", "c"], value="c"))
+    assert choice["index"] == 1 and choice["frames"][0] == '<pre style="margin:0">A&lt;B</pre>'
+
+
+# ---- slider grids (the rules of issue 18, item 4; tests/test_sliders.py checks the chapters) --
+
+def test_slider_grid_holds_default_and_zero():
+    # The Jacobians chapter's old q3 slider: min -87.3, step 0.5, default -20.
+    spec = _sliders.slider_spec("q3", "deg", -87.3, 60, -20)
+    assert (spec.low, spec.high, spec.step, spec.value) == (-87.0, 60.0, 1.0, -20.0)
+    spec = _sliders.slider_spec("q3", "deg", -87.3, 60, -20.5)
+    assert (spec.low, spec.step, spec.value) == (-87.0, 0.5, -20.5)
+    spec = _sliders.slider_spec("q3", "deg", -87.3, 60, -87.3)  # at the limit, on purpose
+    assert (spec.low, spec.step, spec.value) == (-87.3, 0.1, -87.3)
+
+
+def test_puma_nominal_q3_is_inside_its_limits_not_at_an_edge():
+    puma = sk.robots.puma560()
+    q3 = _sliders.joint_sliders(puma, puma.configurations["nominal"])[2]
+    assert (q3.low, q3.high, q3.value) == (-225.0, 45.0, -180.0)
+
+
+@pytest.mark.parametrize(("degrees", "expected"), [
+    (0, (-180, 180, 0)), (100, (-180, 180, 100)), (180, (-90, 270, 180)),
+    (-180, (-270, 90, -180)), (540, (-90, 270, 180)), (-190, (-90, 270, 170)),
+])
+def test_a_joint_without_limits_gets_one_turn_around_its_default(degrees, expected):
+    arm = sk.robots.planar([1, 1])
+    spec = _sliders.joint_sliders(arm, np.radians([degrees, 0]))[0]
+    assert (spec.low, spec.high, spec.value) == pytest.approx(expected)
