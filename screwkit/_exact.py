@@ -31,6 +31,7 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyerrors import CoercionFailed
 
 _TRIG = (sp.sin, sp.cos, sp.tan)
+_TRANSCENDENTAL = (sp.pi, sp.E)
 _SAMPLE_POINTS = 2
 _SEED = 20201
 _PRIME = 2**61 - 1  # a Mersenne prime: arithmetic modulo it is exact and fast
@@ -58,7 +59,9 @@ def _scan(e, found, seen):
         found["symbols"].add(e)
     elif e.is_Float:
         found["float"] = True
-    elif _is_root(e):
+    elif e in _TRANSCENDENTAL:  # pi and E: generators like symbols (no algebraic relation)
+        found["symbols"].add(e)
+    elif e is sp.I or _is_root(e):
         found["roots"].add(e)
     else:
         if isinstance(e, sp.Function):
@@ -89,6 +92,8 @@ class Field:
         self.K = QQ.frac_field(*self.symbols) if self.symbols else QQ
         self._ring = self.K.get_ring() if self.symbols else QQ
         self._cache = {}
+        self._polynomials = {}
+        self._generator_index = {g: k for k, g in enumerate(self.symbols)}
         self.prime, self._points = self._sample_points()
         self.GF = GF(self.prime)
 
@@ -104,12 +109,44 @@ class Field:
         e = _exact_numbers(sp.sympify(e))
         if e not in self._cache:
             plain = sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e
-            try:  # most screw coordinates are polynomials: build them in the ring, no cancelling
-                value = self.K.convert(self._ring.from_sympy(plain))
-            except (ValueError, CoercionFailed):
-                value = self.K.from_sympy(plain)
+            # most screw coordinates are polynomials: build them in the ring, no cancelling
+            polynomial = self._polynomial(plain)
+            value = self.K.convert(polynomial) if polynomial is not None else self.K.from_sympy(plain)
             self._cache[e] = value
         return self._cache[e]
+
+    def _polynomial(self, e):
+        """``e`` as an element of the polynomial ring, or None if it is not a polynomial in the
+        generators. Subexpressions are memoised: the joint screws of one mechanism share many
+        products such as a*sin(theta)*cos(alpha)."""
+        if e in self._polynomials:
+            return self._polynomials[e]
+        ring = self._ring
+        if e in self._generator_index:
+            value = ring.gens[self._generator_index[e]] if self.symbols else None
+        elif e.is_Rational:
+            value = ring(QQ(int(e.p), int(e.q)))
+        elif e.is_Add or e.is_Mul:
+            terms = e.args
+            coefficient = None
+            if e.is_Mul and terms[0].is_Rational:  # a number times a product: scale once
+                coefficient, terms = QQ(int(terms[0].p), int(terms[0].q)), terms[1:]
+            value = ring.zero if e.is_Add else ring.one
+            for term in terms:
+                part = self._polynomial(term)
+                if part is None:
+                    value = None
+                    break
+                value = value + part if e.is_Add else value * part
+            if value is not None and coefficient is not None:
+                value = value.mul_ground(coefficient) if self.symbols else value * coefficient
+        elif e.is_Pow and e.exp.is_Integer and e.exp > 0:
+            base = self._polynomial(e.base)
+            value = None if base is None else base ** int(e.exp)
+        else:
+            value = None
+        self._polynomials[e] = value
+        return value
 
     def matrix(self, rows):
         """A DomainMatrix over this field from rows of SymPy expressions."""
@@ -124,15 +161,15 @@ class Field:
     def _sample_points(self):
         """A prime, and exact random values of the generators modulo it that keep every relation."""
         rng = random.Random(_SEED)
-        roots = [g for g in self.symbols if _is_root(g)]
+        roots = [g for g in self.symbols if g is sp.I or _is_root(g)]
         for r in roots:
-            if r.exp.q != 2:
+            if r is not sp.I and r.exp.q != 2:
                 raise TypeError(f"screw coordinates may use square roots only, got {r}")
         prime = _PRIME
         while True:  # the prime must have the square roots we need
             root_values = {}
             for r in roots:
-                q = r.base ** r.exp.p  # r = q**(1/2) with q rational
+                q = sp.Integer(-1) if r is sp.I else r.base ** r.exp.p  # r = q**(1/2), q rational
                 value = sqrt_mod(int(q.p) * pow(int(q.q), -1, prime) % prime, prime, all_roots=False)
                 if value is None:
                     break

@@ -18,11 +18,15 @@ The mobility is the order of the PTS; its twists give the type (e.g. 3T1R) and d
 """
 from dataclasses import dataclass, field
 
+import numbers
+
+import numpy as np
 import sympy as sp
 
-from . import _exact
+from . import _exact, _numeric
+from ._checks import as_sympy_matrix, as_sympy_scalar, describe
 from .screws import Screw, Twist, Wrench
-from .systems import ScrewSystem
+from .systems import ScrewSystem, html_table, latex_table
 
 __all__ = ["mobility", "Mobility", "grubler_kutzbach"]
 
@@ -76,6 +80,36 @@ class Mobility:
         lines.append(f"Mobility: {self.number} ({self.type}) {self.directions}")
         return "\n".join(lines)
 
+    def __repr__(self):
+        return f"Mobility({self.number}, {self.type!r}, {self.directions})"
+
+    def _systems(self):
+        rows = [(f"LTS, limb {i}", s) for i, s in enumerate(self.limb_twist_systems, 1)]
+        rows += [(f"LWS, limb {i}", s) for i, s in enumerate(self.limb_wrench_systems, 1)]
+        return rows + [("PWS", self.platform_wrench_system), ("PTS", self.platform_twist_system)]
+
+    def _repr_latex_(self):
+        lines = [rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & {latex_table(s.basis())}"
+                 for name, s in self._systems()]
+        lines.append(rf"\text{{mobility}} & \text{{{self.number} ({self.type}): {', '.join(self.directions)}}}")
+        return "$\\begin{array}{ll}" + r" \\ ".join(lines) + r"\end{array}$"
+
+    def _repr_html_(self):
+        steps = [("Limb twist systems (LTS)", "limb", self.limb_twist_systems),
+                 ("Limb wrench systems (LWS)", "limb", self.limb_wrench_systems),
+                 ("Platform wrench system (PWS)", "", [self.platform_wrench_system]),
+                 ("Platform twist system (PTS)", "", [self.platform_twist_system])]
+        rows = []
+        for title, prefix, systems in steps:
+            tables = "".join(
+                '<td style="vertical-align:top">'
+                + html_table(s.basis(), (f"{prefix} {i}: " if prefix else "") + f"{s.kind.kind} {s.rank}-system")
+                + "</td>" for i, s in enumerate(systems, 1))
+            rows.append(f"<p><b>{title}</b></p><div style=\"overflow-x:auto\"><table><tr>{tables}</tr></table></div>")
+        title = f"Mobility {self.number} ({self.type}): {', '.join(self.directions) or 'none'}"
+        notes = "".join(f"<p>{note}</p>" for note in self.notes)
+        return f"<div class=\"screwkit-mobility\">{''.join(rows)}<p><b>{title}</b></p>{notes}</div>"
+
     def as_dict(self):
         """The paper's mobility dictionary: {'Number': ..., 'Type': ..., 'Direction': [...]}."""
         return {"Number": self.number, "Type": self.type, "Direction": list(self.directions)}
@@ -96,9 +130,31 @@ def _check_limbs(limbs):
                 raise TypeError(f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got {joint!r}")
 
 
+_NOT_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
+
+
+def _checked_vector(v):
+    """A 3 x 1 SymPy matrix from the joint helpers, finite, as a list; None if it needs the full check."""
+    if isinstance(v, sp.MatrixBase) and v.shape == (3, 1):
+        entries = v.flat()
+        if not any(e.has(*_NOT_FINITE) for e in entries):
+            return entries
+    return None
+
+
 def _twist(joint, i, j):
+    """The joint's twist (s; r x s + h s), or (0; s) for h = oo. Joints from :mod:`.joints` hold
+    checked SymPy vectors and are built directly; anything else goes through Twist.from_axis."""
     if isinstance(joint, Screw):
-        return Twist(joint.vector)
+        return Twist._checked(joint.vector)
+    s, r, h = joint
+    direction, point = _checked_vector(s), _checked_vector(r)
+    if direction is not None and point is not None and any(e != 0 for e in direction) and (h is sp.oo or h == 0):
+        s1, s2, s3 = direction
+        if h is sp.oo:
+            return Twist._checked(sp.Matrix(6, 1, [0, 0, 0, s1, s2, s3]))
+        r1, r2, r3 = point
+        return Twist._checked(sp.Matrix(6, 1, [s1, s2, s3, r2 * s3 - r3 * s2, r3 * s1 - r1 * s3, r1 * s2 - r2 * s1]))
     try:
         return Twist.from_axis(*joint)
     except (TypeError, ValueError) as error:
@@ -114,27 +170,42 @@ def _describe(vector):
     return str(list(vector))
 
 
-def mobility(limbs, at=None):
+def mobility(limbs, at=None, tol=None):
     """The mobility of a parallel manipulator whose limbs are lists of (s, r, h) joint screws.
 
     Parameters
     ----------
     limbs : list of limbs; each limb a list of (s, r, h) triples in the fixed frame
-        (s, r: 3-vectors, SymPy symbols allowed; h: 0, a finite pitch, or sympy.oo), or Twists.
+        (s, r: 3-vectors in m, SymPy symbols allowed; h: 0, a finite pitch in m/rad, or
+        sympy.oo), or Twists.
     at : optional {symbol: value}, a particular configuration. The result is then the mobility
         at those values, and its ``notes`` say whether it is the general answer (the symbols
-        free) or a singular configuration that gains or loses freedoms. Floats are read as the
-        exact rationals they store: ranks are never decided by round-off.
+        free) or a singular configuration that gains or loses freedoms. Every key must be a
+        symbol of the limbs. Float values are read as the exact rationals they store (the
+        geometry stays exact; only the values are particular).
+    tol : relative tolerance of the ranks when the limbs are given with floats (default 1e-9).
 
     Returns
     -------
     Mobility with ``number``, ``type`` (e.g. '3T1R'), ``directions`` (e.g. ['Tx', 'Ty', 'Tz', 'Rz']),
     the four screw systems, and the Grübler–Kutzbach comparison.
+
+    Notes
+    -----
+    Exact limbs (integers, rationals, symbols, pi, square roots, sin/cos/tan of symbols) are
+    computed exactly, the ranks being generic in the symbols (see :mod:`screwkit._exact`).
+    Limbs given with floats and no symbols (say, a frame tilted with NumPy) are computed by SVD:
+    a rank counts the singular values above ``tol * max(1, the largest)``, so axes that differ
+    by round-off count as parallel (see :mod:`screwkit._numeric`). Floats together with symbols
+    are refused with a ValueError that says how to write them exactly.
     """
+    tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
     if at is not None:
-        return _at_configuration(limbs, at)
+        return _at_configuration(limbs, at, tol)
     _check_limbs(limbs)
     twists = [[_twist(joint, i, j) for j, joint in enumerate(limb)] for i, limb in enumerate(limbs)]
+    if _numeric.has_floats([e for limb in twists for t in limb for e in t.vector]):
+        return _mobility_of_floats(limbs, twists, tol)
 
     # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own symbols.
     lts, lws, lts_ranks = [], [], []
@@ -153,24 +224,81 @@ def mobility(limbs, at=None):
     pws = ScrewSystem(constraints, kind=Wrench)
     pws = ScrewSystem(pws.basis(), kind=Wrench, _field=pws.field, _rank=pws.rank, _basis=pws.basis())
     pts = pws.reciprocal()
-    return _result(limbs, lts, lws, pws, pts, lts_ranks)
+    basis = pts.basis()
+    rotations = _exact.generic_rank([list(t.primary) for t in basis]) if basis else 0
+    return _result(limbs, lts, lws, pws, pts, lts_ranks, rotations)
 
 
-def _at_configuration(limbs, at):
-    """The mobility at the values ``at``, with notes comparing it with the general configuration."""
+def _mobility_of_floats(limbs, twists, tol):
+    """The four steps by SVD with the relative tolerance ``tol`` (limbs given with floats)."""
+    for limb in twists:
+        _numeric.to_array([list(t.vector) for t in limb], "limbs")  # floats with symbols: refused
+    lts = [ScrewSystem(limb, kind=Twist, tol=tol) for limb in twists]
+    lws = [system.reciprocal() for system in lts]
+    pws = ScrewSystem([w for system in lws for w in system.screws], kind=Wrench, tol=tol)
+    pws = ScrewSystem(pws.basis(), kind=Wrench, tol=tol, _rank=pws.rank, _basis=pws.basis())
+    pts = pws.reciprocal()
+    basis = pts.basis()
+    angular = np.array([[float(e) for e in t.primary] for t in basis]).reshape(len(basis), 3)
+    return _result(limbs, lts, lws, pws, pts, [s.rank for s in lts], _numeric.rank(angular, tol))
+
+
+def _limb_symbols(limbs):
+    found = set()
+    for limb in limbs:
+        for joint in limb:
+            parts = [joint.vector] if isinstance(joint, Screw) else list(joint)
+            for part in parts:
+                if isinstance(part, sp.Basic):
+                    found |= part.free_symbols
+                elif isinstance(part, sp.MatrixBase) or isinstance(part, (list, tuple, np.ndarray)):
+                    for e in (part.flat() if isinstance(part, sp.MatrixBase) else np.ravel(np.asarray(part, dtype=object))):
+                        if isinstance(e, sp.Basic):
+                            found |= e.free_symbols
+    return found
+
+
+def _check_at(limbs, at):
+    """``at`` as {symbol: exact value}: keys are symbols of the limbs, values finite numbers or
+    SymPy expressions (floats become the exact rationals they store)."""
     if not isinstance(at, dict) or not all(isinstance(k, sp.Symbol) for k in at):
         raise TypeError(f"at must be a dict {{sympy.Symbol: value}}, got {at!r}")
-    values = {k: sp.Rational(v) if isinstance(v, float) else sp.sympify(v) for k, v in at.items()}
+    symbols = _limb_symbols(limbs)
+    unknown = sorted(str(k) for k in at if k not in symbols)
+    if unknown:
+        raise ValueError(f"at gives values for {unknown}, which are not symbols of the limbs "
+                         f"(their symbols are {sorted(map(str, symbols))})")
+    values = {}
+    for key, value in at.items():
+        name = f"at[{key}]"
+        if isinstance(value, (bool, np.bool_)) or isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
+        if isinstance(value, (float, np.floating)):
+            if not np.isfinite(value):
+                raise ValueError(f"{name} must be finite, got {value!r}")
+            values[key] = sp.Rational(float(value))
+        elif isinstance(value, (numbers.Integral, np.integer)):
+            values[key] = sp.Integer(int(value))
+        else:
+            expr = as_sympy_scalar(value, name)
+            values[key] = expr.xreplace({f: sp.Rational(f) for f in expr.atoms(sp.Float)})
+    return values
+
+
+def _at_configuration(limbs, at, tol):
+    """The mobility at the values ``at``, with notes comparing it with the general configuration."""
     _check_limbs(limbs)
+    values = _check_at(limbs, at)
 
     def substitute(joint):
         if isinstance(joint, Screw):
             return Twist(sp.Matrix(joint.vector).subs(values))
         s, r, h = joint
-        return (sp.Matrix(s).subs(values), sp.Matrix(r).subs(values), h)
+        h = h if h is sp.oo or not isinstance(h, sp.Basic) else h.subs(values)
+        return (as_sympy_matrix(s, "s", (3, 1)).subs(values), as_sympy_matrix(r, "r", (3, 1)).subs(values), h)
 
-    general = mobility(limbs)
-    special = mobility([[substitute(joint) for joint in limb] for limb in limbs])
+    general = mobility(limbs, tol=tol)
+    special = mobility([[substitute(joint) for joint in limb] for limb in limbs], tol=tol)
     here = f"{special.number} ({special.type}: {', '.join(special.directions)})"
     there = f"{general.number} ({general.type}: {', '.join(general.directions)})"
     if (special.number, special.type, special.directions) == (general.number, general.type, general.directions):
@@ -191,9 +319,8 @@ def _at_configuration(limbs, at):
     return special
 
 
-def _result(limbs, lts, lws, pws, pts, lts_ranks):
+def _result(limbs, lts, lws, pws, pts, lts_ranks, rotations):
     basis = pts.basis()
-    rotations = _exact.generic_rank([list(t.primary) for t in basis]) if basis else 0
     translations = len(basis) - rotations
     kind = (f"{translations}T" if translations else "") + (f"{rotations}R" if rotations else "") or "0"
     names = [_describe(t.vector) for t in basis]

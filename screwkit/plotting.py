@@ -6,13 +6,79 @@
 """
 import matplotlib.pyplot as plt
 import numpy as np
+import sympy as sp
 
-from ._checks import as_float_array, check_shape, check_transform
+from ._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    check_chain,
+    check_integer,
+    check_positive,
+    check_transform,
+    describe,
+    is_symbolic,
+)
+from ._mechanism_plot import draw_mechanism  # noqa: F401  (re-exported: sk.plotting.draw_mechanism)
 
 __all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain", "draw_ellipsoid",
            "draw_planar", "animation_html"]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
+
+
+# ---- argument checks -------------------------------------------------------------------
+
+def _check_axes(ax, three_d=True):
+    """``ax`` must be a matplotlib Axes (a 3D one for the 3D drawings)."""
+    from matplotlib.axes import Axes
+    from mpl_toolkits.mplot3d import Axes3D
+
+    kind, expected = (Axes3D, "a 3D matplotlib Axes (from axes3d())") if three_d else (
+        Axes, "a matplotlib Axes")
+    if not isinstance(ax, kind):
+        raise TypeError(f"ax must be {expected}, got {describe(ax)}")
+    return ax
+
+
+def _numeric(value, name):
+    """A float array from numbers, or from SymPy entries without free symbols (drawings are numeric)."""
+    if not is_symbolic(value):
+        return as_float_array(value, name)
+    if isinstance(value, sp.Basic) and not isinstance(value, sp.MatrixBase):
+        raise TypeError(f"{name} must be an array or matrix of numbers, got {describe(value)}")
+    matrix = sp.Matrix(value) if isinstance(value, sp.MatrixBase) else as_sympy_matrix(
+        value, name, (len(value), 1))
+    if matrix.free_symbols:
+        symbols = ", ".join(sorted(str(s) for s in matrix.free_symbols))
+        raise TypeError(f"{name} must be numeric to be drawn, got the symbols {symbols}; "
+                        "substitute values first")
+    try:
+        return as_float_array(np.array(matrix.evalf(), dtype=float), name)
+    except TypeError:
+        raise TypeError(f"{name} must hold real numbers, got {list(matrix)}") from None
+
+
+def _vector(value, name, size=3):
+    vector = _numeric(value, name)
+    if is_symbolic(value):
+        vector = vector.reshape(-1)
+    if vector.shape != (size,):
+        raise ValueError(f"{name} must have shape ({size},), got shape {vector.shape}")
+    return vector
+
+
+def _alpha(alpha):
+    alpha = as_float_array(alpha, "alpha")
+    if alpha.shape != () or not 0 <= alpha <= 1:
+        raise ValueError(f"alpha must be one number in [0, 1], got {alpha.tolist()!r}")
+    return float(alpha)
+
+
+def _one_q(chain, q):
+    q = chain.check_q(q, "q")
+    if q.ndim != 1:
+        raise ValueError(f"q must be one joint vector of shape ({chain.n},), got shape {q.shape}")
+    return q
 
 
 def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
@@ -23,12 +89,18 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
     limits : ((xmin, xmax), (ymin, ymax), (zmin, zmax)) in metres
     ax : an existing 3D axes to set up, or None to create a figure
     """
-    if ax is None:
-        figure = plt.figure(figsize=figsize)
-        ax = figure.add_subplot(projection="3d")
     limits = as_float_array(limits, "limits")
     if limits.shape != (3, 2):
         raise ValueError(f"limits must be three (min, max) pairs, shape (3, 2), got shape {limits.shape}")
+    if np.any(limits[:, 0] >= limits[:, 1]):
+        raise ValueError(f"limits must have min < max on each axis, got {limits.tolist()}")
+    if ax is None:
+        size = as_float_array(figsize, "figsize")
+        if size.shape != (2,) or np.any(size <= 0):
+            raise ValueError(f"figsize must be (width, height) in inches, both positive, got {figsize!r}")
+        figure = plt.figure(figsize=tuple(size))
+        ax = figure.add_subplot(projection="3d")
+    _check_axes(ax)
     ax.set_xlim(*limits[0])
     ax.set_ylim(*limits[1])
     ax.set_zlim(*limits[2])
@@ -41,9 +113,11 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
 
 def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
     """Draw the frame of a 4x4 transform ``T``: x red, y green, z blue, ``length`` in m."""
-    T = check_transform(np.asarray(T, dtype=float), "T")
+    _check_axes(ax)
+    T = check_transform(_numeric(T, "T"), "T")
     if T.ndim != 2:
         raise ValueError(f"T must be one transform of shape (4, 4), got shape {T.shape}")
+    length, alpha = check_positive(length, "length"), _alpha(alpha)
     origin = T[:3, 3]
     for k in range(3):
         tip = origin + length * T[:3, k]
@@ -54,8 +128,9 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
 
 def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
     """Draw the screw axis through point ``r`` with direction ``s`` as a dash-dot line."""
-    s = check_shape(as_float_array(s, "s"), "s", (3,))
-    r = check_shape(as_float_array(r, "r"), "r", (3,))
+    _check_axes(ax)
+    s, r = _vector(s, "s"), _vector(r, "r")
+    length = check_positive(length, "length")
     if np.linalg.norm(s) < 1e-12:
         raise ValueError(f"s must be a non-zero 3-vector, got {s.tolist()}")
     u = s / np.linalg.norm(s)
@@ -68,9 +143,12 @@ def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
 
 def draw_screw_motion(ax, Ts, every=1, length=0.2):
     """Draw the path of the origin over a batch of transforms ``Ts`` (N, 4, 4), and every k-th frame."""
-    Ts = check_transform(np.asarray(Ts, dtype=float), "Ts")
-    if Ts.ndim != 3:
-        raise ValueError(f"Ts must be a batch of transforms of shape (N, 4, 4), got shape {Ts.shape}")
+    _check_axes(ax)
+    Ts = check_transform(as_float_array(Ts, "Ts"), "Ts")
+    if Ts.ndim != 3 or len(Ts) < 1:
+        raise ValueError(f"Ts must be a batch of transforms of shape (N, 4, 4), N >= 1, got shape {Ts.shape}")
+    every = check_integer(every, "every", minimum=1)
+    length = check_positive(length, "length")
     ax.plot(*Ts[:, :3, 3].T, color="0.4", lw=1)
     for T in Ts[::every]:
         draw_frame(ax, T, length=length, alpha=0.6)
@@ -82,9 +160,11 @@ def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1
     Links join the frame origins; each joint axis is a short black segment; the tool frame is
     drawn, and with ``frames`` every link frame too. Returns the (n + 1, 4, 4) frames.
     """
+    _check_axes(ax)
+    chain = check_chain(chain)
+    q = _one_q(chain, q)
+    alpha, frame_length = _alpha(alpha), check_positive(frame_length, "frame_length")
     T = chain.frames(q)
-    if T.ndim != 3:
-        raise ValueError(f"q must be one joint vector of shape ({chain.n},), got a batch")
     origins = T[:, :3, 3]
     ax.plot(*origins.T, "-o", color=color, lw=4, ms=5, alpha=alpha, label=label,
             solid_capstyle="round")
@@ -101,9 +181,14 @@ def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha
 
     ``scale`` converts the radii to metres on the drawing (e.g. 0.2 m per m/s).
     """
-    centre = check_shape(as_float_array(centre, "centre"), "centre", (3,))
-    radii = check_shape(as_float_array(radii, "radii"), "radii", (3,))
-    axes = check_shape(as_float_array(axes, "axes"), "axes", (3, 3))
+    _check_axes(ax)
+    centre, radii = _vector(centre, "centre"), _vector(radii, "radii")
+    if np.any(radii < 0):
+        raise ValueError(f"radii must be >= 0, got {radii.tolist()}")
+    axes = as_float_array(axes, "axes")
+    if axes.shape != (3, 3):
+        raise ValueError(f"axes must have shape (3, 3), one axis per column, got shape {axes.shape}")
+    scale, alpha = check_positive(scale, "scale"), _alpha(alpha)
     u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 37), np.linspace(0, np.pi, 19))
     sphere = np.stack([np.cos(u) * np.sin(v), np.sin(u) * np.sin(v), np.cos(v)])
     surface = centre[:, None, None] + scale * np.einsum("ij,j,jkl->ikl", axes, radii, sphere)
@@ -112,7 +197,11 @@ def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha
 
 def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0, 0.0)):
     """Draw a planar arm (x-y plane) at q (n,) as a 2D stick figure; returns the line."""
-    origins = chain.frames(q)[:, :2, 3] + np.asarray(base, dtype=float)
+    _check_axes(ax, three_d=False)
+    chain = check_chain(chain)
+    q = _one_q(chain, q)
+    base, alpha = _vector(base, "base", size=2), _alpha(alpha)
+    origins = chain.frames(q)[:, :2, 3] + base
     (line,) = ax.plot(*origins.T, "-o", color=color, lw=3, ms=4, alpha=alpha, label=label,
                       solid_capstyle="round")
     return line
@@ -133,6 +222,10 @@ def animation_html(animation):
     """
     import re
 
+    from matplotlib.animation import Animation
+
+    if not isinstance(animation, Animation):
+        raise TypeError(f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}")
     html = re.sub(r'<link rel="stylesheet"\s+href="[^"]*font-awesome[^"]*">', "", animation.to_jshtml())
     for icon, text in _PLAYER_ICONS.items():
         html = html.replace(f'<i class="{icon}"></i>', text)

@@ -1,5 +1,12 @@
 """Screw systems: spans of screws, their rank, canonical basis and reciprocal system.
 
+Exact screws (integers, rationals, symbols, pi, square roots) are computed exactly by
+:mod:`._exact`: the rank is the generic rank in the symbols. Screws given with floats (and no
+symbols) are computed by SVD: the rank counts the singular values above
+``tol * max(1, the largest)``, ``tol = 1e-9`` by default (:mod:`._numeric`), so two axes that
+differ by round-off count as one. Floats mixed with symbols are refused with a message saying
+how to write them exactly.
+
 >>> import sympy as sp
 >>> prismatic_xy = ScrewSystem([([1, 0, 0], [0, 0, 0], sp.oo), ([0, 1, 0], [0, 0, 0], sp.oo)])
 >>> prismatic_xy.rank
@@ -9,7 +16,7 @@
 """
 import sympy as sp
 
-from . import _exact
+from . import _exact, _numeric
 from .screws import Screw, Twist, Wrench
 
 __all__ = ["ScrewSystem"]
@@ -23,22 +30,34 @@ def _swap(row):
 
 
 class ScrewSystem:
-    """The span of a list of screws (exact). ``kind`` is Twist (default), Wrench or Screw.
+    """The span of a list of screws. ``kind`` is Twist (default), Wrench or Screw.
 
-    ``screws`` may hold Screw objects, 6-vectors, or (s, r, h) triples as in the
-    mobility paper's zeroth step.
+    Parameters
+    ----------
+    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples as in
+        the mobility paper's zeroth step (s, r in m, h in m/rad or sympy.oo)
+    kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for vectors)
+    tol : relative tolerance of the rank when the screws hold floats (SVD; default 1e-9);
+        exact screws ignore it
     """
 
-    def __init__(self, screws, kind=None, _field=None, _rank=None, _basis=None):
+    def __init__(self, screws, kind=None, tol=None, _field=None, _rank=None, _basis=None):
         if isinstance(screws, ScrewSystem):
             screws = screws.screws
         if not isinstance(screws, (list, tuple)):
-            raise TypeError(f"screws must be a list of screws, 6-vectors or (s, r, h) triples, got {type(screws).__name__}")
+            raise TypeError("screws must be a list of screws, 6-vectors or (s, r, h) triples, "
+                            f"got {type(screws).__name__}")
+        if kind is not None and kind not in _OTHER:
+            raise TypeError(f"kind must be Twist, Wrench or Screw, got {kind!r}")
         kinds = {type(s) for s in screws if isinstance(s, Screw)}
         if len(kinds) > 1:
             raise TypeError(f"a screw system holds one kind of screw, got {sorted(k.kind for k in kinds)}")
         self.kind = kind or (kinds.pop() if kinds else Twist)
+        self.tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
         self.screws = [self._as_screw(s, i) for i, s in enumerate(screws)]
+        self.numeric = _numeric.has_floats([e for s in self.screws for e in s.vector])
+        if self.numeric:
+            self._array = _numeric.to_array([list(s.vector) for s in self.screws], "screws")
         self._field = _field
         self._rank = _rank
         self._basis = _basis
@@ -51,10 +70,14 @@ class ScrewSystem:
                 return self.kind.from_axis(*item)
             except (TypeError, ValueError) as error:
                 raise type(error)(f"screw {index}: {error}") from None
-        return self.kind(item)
+        try:
+            return self.kind(item)
+        except (TypeError, ValueError) as error:
+            raise type(error)(f"screw {index}: {error}") from None
 
     @property
     def field(self):
+        """The exact field of the screws' coordinates (exact systems only)."""
         if self._field is None:
             self._field = _exact.Field([e for s in self.screws for e in s.vector])
         return self._field
@@ -71,9 +94,15 @@ class ScrewSystem:
 
     @property
     def rank(self):
-        """The order of the system: the number of independent screws, for generic symbol values."""
+        """The order of the system: the number of independent screws, for generic symbol values
+        (exact), or by SVD with the tolerance ``tol`` (floats)."""
         if self._rank is None:
-            self._rank = self.field.rank(self._domain_matrix()) if self.screws else 0
+            if not self.screws:
+                self._rank = 0
+            elif self.numeric:
+                self._rank = _numeric.rank(self._array, self.tol)
+            else:
+                self._rank = self.field.rank(self._domain_matrix())
         return self._rank
 
     order = rank
@@ -83,6 +112,9 @@ class ScrewSystem:
         if self._basis is None:
             if not self.screws:
                 self._basis = []
+            elif self.numeric:
+                rows = _numeric.as_sympy_rows(_numeric.reduced_basis(self._array, self.tol))
+                self._basis = [self.kind._checked(sp.Matrix(6, 1, row)) for row in rows]
             else:
                 R = _exact.reduced_basis(self.field, self._domain_matrix())
                 self._basis = [self.kind._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row]))
@@ -94,6 +126,10 @@ class ScrewSystem:
         other = _OTHER[self.kind]
         if not self.screws:
             return ScrewSystem([other(v) for v in sp.eye(6).columnspace()], kind=other)
+        if self.numeric:
+            kernel = _numeric.null_space(self._array[:, [3, 4, 5, 0, 1, 2]], self.tol)
+            basis = [other._checked(sp.Matrix(6, 1, row)) for row in _numeric.as_sympy_rows(kernel)]
+            return ScrewSystem(basis, kind=other, tol=self.tol, _rank=len(basis), _basis=basis)
         M = self.field.matrix([_swap(s.vector) for s in self.screws])
         N = _exact.null_space(self.field, M)
         basis = [other._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])) for row in N.to_list()]
@@ -102,7 +138,7 @@ class ScrewSystem:
     def union(self, other):
         """The span of both systems (same kind)."""
         self._check_kind(other, "union")
-        return ScrewSystem(self.screws + other.screws, kind=self.kind)
+        return ScrewSystem(self.screws + other.screws, kind=self.kind, tol=min(self.tol, other.tol))
 
     def intersection(self, other):
         """The screws common to both spans: the reciprocal of the union of the reciprocals."""
@@ -111,7 +147,7 @@ class ScrewSystem:
 
     def contains(self, screw):
         """True if ``screw`` lies in the span (generically)."""
-        return ScrewSystem(self.screws + [screw], kind=self.kind).rank == self.rank
+        return ScrewSystem(self.screws + [screw], kind=self.kind, tol=self.tol).rank == self.rank
 
     def _check_kind(self, other, operation):
         if not isinstance(other, ScrewSystem):
@@ -125,6 +161,43 @@ class ScrewSystem:
     def __repr__(self):
         return f"ScrewSystem({len(self.screws)} {self.kind.kind}s, rank {self.rank})"
 
+    def summary(self):
+        """The system as plain text: its order and its canonical basis, one screw a line."""
+        rows = [str(list(s.vector)) for s in self.basis()] or ["(none)"]
+        return "\n".join([f"{self.kind.kind} {self.rank}-system"] + ["  " + r for r in rows])
+
     def _repr_latex_(self):
-        columns = sp.Matrix.hstack(*(s.vector for s in self.basis())) if self.rank else sp.zeros(6, 0)
-        return f"$\\text{{{self.kind.kind} {self.rank}-system: }}{sp.latex(columns)}$"
+        return f"$\\text{{{self.kind.kind} {self.rank}-system: }}{latex_table(self.basis())}$"
+
+    def _repr_html_(self):
+        return html_table(self.basis(), f"{self.kind.kind} {self.rank}-system")
+
+
+_HEADERS = {Twist: ("ω", "v"), Wrench: ("f", "m"), Screw: ("s", "s₀")}
+
+
+def latex_table(screws):
+    """The screws as the columns of a LaTeX matrix, angular part above the linear part."""
+    if not screws:
+        return r"\{0\}"
+    return sp.latex(sp.Matrix.hstack(*(s.vector for s in screws)))
+
+
+def _cell(entry):
+    if entry.is_Integer or entry.is_Float:
+        return str(entry)
+    return f"<math>{sp.mathml(entry, printer='presentation')}</math>"
+
+
+def html_table(screws, caption):
+    """The screws as an HTML table (one column per screw, MathML entries) under ``caption``."""
+    head = f"<table class=\"screwkit-system\"><caption>{caption}</caption>"
+    if not screws:
+        return head + "<tr><td>(no screw: the zero system)</td></tr></table>"
+    angular, linear = _HEADERS[type(screws[0])]
+    rows = []
+    for k in range(6):
+        label = f"{angular if k < 3 else linear}<sub>{'xyz'[k % 3]}</sub>"
+        cells = "".join(f"<td style=\"text-align:center\">{_cell(s.vector[k])}</td>" for s in screws)
+        rows.append(f"<tr><th>{label}</th>{cells}</tr>")
+    return head + "".join(rows) + "</table>"

@@ -1,6 +1,8 @@
 """Mobility of parallel manipulators: the paper's four mechanisms and classic ones."""
 import random
 
+import numpy as np
+
 import pytest
 import sympy as sp
 
@@ -148,3 +150,69 @@ def test_delta_type_3ruu_is_translational_and_each_limb_constrains_the_couple_u_
     # with every v radial (theta_i2 = 90 deg) the three couples are parallel: a constraint singularity
     radial = mobility(limbs, at={sp.Symbol(f"theta_{i}2"): sp.pi / 2 for i in (1, 2, 3)})
     assert radial.number == 5 and "gains freedoms" in radial.notes[0]
+
+
+def _tilted_planar_3rrr_from_floats():
+    """A planar 3-RRR (all axes along the plane's normal) in a plane tilted with NumPy floats."""
+    c, s = np.cos(0.4), np.sin(0.4)
+    tilt = np.array([[1, 0, 0], [0, c, -s], [0, s, c]]) @ np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+    values = {sp.Symbol(k): v for k, v in sk.robots.DRAWING_VALUES["planar_3rrr"].items()}
+    values.update({sp.Symbol("theta_21"): 1.7, sp.Symbol("theta_32"): 2.9})  # not symmetric
+    limbs = []
+    for limb in sk.robots.planar_3rrr():
+        limbs.append([(tilt @ np.array(sp.Matrix(s_).subs(values), dtype=float).ravel(),
+                       tilt @ np.array(sp.Matrix(r).subs(values), dtype=float).ravel(), h)
+                      for s_, r, h in limb])
+    return limbs, tilt
+
+
+def test_a_tilted_planar_3rrr_built_from_floats_has_planar_motion():
+    # Turning the fixed frame does not change the motions: in the tilted plane the platform
+    # translates two ways and turns about the plane's normal (2T1R), and each limb allows it.
+    limbs, tilt = _tilted_planar_3rrr_from_floats()
+    m = mobility(limbs)
+    assert (m.number, m.type) == (3, "2T1R")
+    normal = tilt @ np.array([0.0, 0.0, 1.0])
+    rotation = [t for t in m.platform_twist_system.basis() if any(e != 0 for e in t.primary)]
+    (w,) = [np.array([float(e) for e in t.primary]) for t in rotation]
+    np.testing.assert_allclose(np.cross(w, normal), 0, atol=1e-9)       # it turns about the normal
+    assert m.limb_twist_ranks == [3, 3, 3] and m.platform_wrench_system.rank == 3
+
+
+def test_float_tolerance_is_the_callers_to_choose():
+    limbs, _ = _tilted_planar_3rrr_from_floats()
+    # With a tolerance below round-off, the three limbs' axes (equal only to ~1e-16) count as
+    # different directions and the platform locks: the tolerance is what decides.
+    assert mobility(limbs, tol=1e-300).number < 3
+    with pytest.raises(ValueError, match="tol must be a positive number below 1"):
+        mobility(limbs, tol=0.0)
+
+
+def test_floats_and_symbols_together_are_refused_with_the_exact_way_to_write_them():
+    with pytest.raises(ValueError, match=r"sympy.Rational\('0.3'\)"):
+        mobility([[((0, 0, 1), (0.3, sp.Symbol("a"), 0), 0)]])
+
+
+def test_exact_coordinates_with_pi_and_square_roots():
+    # Three identical limbs P(x) P(y) H(z, pitch h): each allows Tx, Ty and the screw motion
+    # (e_z; h e_z); so does the platform (2T1R), and the screw's twist reduced to end in 1 at
+    # v_z is (0, 0, 1/h, 0, 0, 1) = (0, 0, 200 pi, 0, 0, 1).
+    h = 1 / (200 * sp.pi)
+    limb = sk.joints.prismatic([1, 0, 0]) + sk.joints.prismatic([0, 1, 0]) + sk.joints.helical([0, 0, 1], [0, 0, 0], h)
+    m = mobility([limb, limb, limb])
+    assert (m.number, m.type) == (3, "2T1R")
+    assert [list(t.vector) for t in m.platform_twist_system.basis()] == [
+        [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 200 * sp.pi, 0, 0, 1]]
+    # sqrt(2)/2 directions: a revolute about the diagonal of the x-y plane, three times
+    diagonal = sk.joints.revolute([sp.sqrt(2) / 2, sp.sqrt(2) / 2, 0], [0, 0, sp.pi])
+    assert mobility([diagonal, diagonal]).type == "1R"
+
+
+def test_typeset_results_keep_the_plain_text_for_terminals():
+    m = mobility(sk.robots.pm_3prrr())
+    assert m.summary().splitlines()[-1] == "Mobility: 3 (3T) ['Tx', 'Ty', 'Tz']"
+    assert repr(m) == "Mobility(3, '3T', ['Tx', 'Ty', 'Tz'])"
+    html = m._repr_html_()
+    assert html.count("<table class=\"screwkit-system\">") == 3 + 3 + 2 and "Mobility 3 (3T)" in html
+    latex = m._repr_latex_()
+    assert latex.startswith("$\\begin{array}") and latex.count("matrix}") == 2 * 8

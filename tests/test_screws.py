@@ -123,3 +123,28 @@ def test_symbolic_reciprocal_annihilates_symbolic_twists():
     for w in system.reciprocal().basis():
         for t in system.screws:
             assert sp.simplify(t @ w) == 0
+
+
+def test_floats_differing_by_round_off_are_one_direction_not_two():
+    nearly = ScrewSystem([([0, 0, 1], [0, 0, 0], 0), ([1e-16, 0, 1], [0, 0, 0], 0)])
+    assert nearly.numeric and nearly.rank == 1
+    assert ScrewSystem([([0, 0, 1], [0, 0, 0], 0), ([1e-6, 0, 1], [0, 0, 0], 0)], tol=1e-12).rank == 2
+    # the same system exactly: two different directions through one point
+    assert ScrewSystem([([0, 0, 1], [0, 0, 0], 0), ([sp.Rational(1, 10**16), 0, 1], [0, 0, 0], 0)]).rank == 2
+
+
+def test_a_float_system_has_the_canonical_basis_of_its_exact_twin():
+    # The planar system of the hand derivation above, with a = 0.6 m given as a float.
+    floats = ScrewSystem([([0, 0, 1], [0, 0, 0], 0), ([0, 0, 1], [0.6, 0, 0], 0), ([0, 0, 1], [0, 0.6, 0], 0)])
+    assert floats.rank == 3
+    assert [list(t.vector) for t in floats.basis()] == [[0, 0, 1, 0, 0, 0], [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0]]
+    assert [list(w.vector) for w in floats.reciprocal().basis()] == [
+        [0, 0, 1, 0, 0, 0], [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0]]
+
+
+def test_systems_typeset_as_tables_and_print_as_text():
+    system = ScrewSystem([([0, 0, 1], [0, 0, 0], 0), ([0, 0, 1], [a, 0, 0], 0)])
+    assert system.summary().splitlines() == ["twist 2-system", "  [0, 0, 1, 0, 0, 0]", "  [0, 0, 0, 0, 1, 0]"]
+    html = system._repr_html_()
+    assert "<caption>twist 2-system</caption>" in html and html.count("<tr>") == 6
+    assert system._repr_latex_().startswith("$\\text{twist 2-system: }\\left[\\begin{matrix}")
