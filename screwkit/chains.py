@@ -180,6 +180,26 @@ def _exact(value):
     return value
 
 
+def _decimal(value):
+    """A Float as the exact decimal it prints as (0.4318 -> 2159/5000); other values unchanged."""
+    value = sp.sympify(value)
+    if isinstance(value, sp.Float):
+        return sp.nsimplify(value, rational=True)
+    if value.has(sp.Float):
+        return value.xreplace({f: sp.nsimplify(f, rational=True) for f in value.atoms(sp.Float)})
+    return value
+
+
+def _numbers_out(matrix, values=None):
+    """``matrix`` at ``values``, expanded; with no symbol left, trigonometric functions of sums
+    are expanded too (sin(pi/4 - atan(u)) becomes an algebraic number), so that screw-system
+    ranks see the numbers themselves, not unrelated-looking trigonometric atoms."""
+    matrix = matrix.subs(values) if values else matrix
+    if matrix.free_symbols:
+        return matrix.applyfunc(sp.expand)
+    return matrix.applyfunc(lambda e: sp.radsimp(sp.expand(sp.expand_trig(e))))
+
+
 def _exact_matrix(T):
     """A numeric 4x4 as a SymPy matrix, exact where the entries are integers."""
     return sp.Matrix(4, 4, [sp.Integer(int(v)) if float(v).is_integer() else sp.Float(v) for v in T.flat])
@@ -542,41 +562,52 @@ class Chain:
         self._require_dh("joint_frames")
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
 
-    def twists_symbolic(self, q=None, symbolic_lengths=False):
+    def twists_symbolic(self, q=None, symbolic_lengths=False, rational=False):
         """The joint twists [omega; v] in the base frame, exactly: a list of n SymPy 6-vectors.
 
         ``q`` is a joint vector of exact values or symbols (default the joint symbols q1..qn).
-        These are the columns of the space Jacobian.
+        These are the columns of the space Jacobian. With ``rational``, every decimal number of
+        the model (lengths, pitches, base, tool, home) is read as the exact decimal it prints as
+        (0.4318 -> 2159/5000) before any product, so no round-off term can appear.
         """
         q = self.q_symbols if q is None else list(q)
         if len(q) != self.n:
             raise ValueError(f"q must have {self.n} entries for this chain, got {len(q)}")
-        values = dict(zip(self.q_symbols, [sp.nsimplify(v, rational=True) if isinstance(v, float) else v
-                                           for v in q]))
+        values = dict(zip(self.q_symbols, [_decimal(v) if isinstance(v, float) else v for v in q]))
+        base = _exact_matrix(self.base)
+        if rational:
+            base = base.applyfunc(_decimal)
         if self.is_dh:
+            lengths = self.length_symbols() if rational and not symbolic_lengths else {}
+            frames = self.frames_symbolic(symbolic_lengths or bool(lengths))
+            frames = [base * _exact_matrix(self.base).inv() * T for T in frames] if rational else frames
             twists = []
-            for kind, T in zip(self.joints, self.joint_frames(self.frames_symbolic(symbolic_lengths))):
+            for kind, T in zip(self.joints, self.joint_frames(frames)):
                 z, o = T[:3, 2], T[:3, 3]
                 twists.append(sp.Matrix.vstack(z, o.cross(z)) if kind is Joint.REVOLUTE
                               else sp.Matrix.vstack(sp.zeros(3, 1), z))
-            return [t.subs(values).applyfunc(sp.expand) for t in twists]
+            exact = {s: _decimal(sp.sympify(v)) for s, v in lengths.items()}
+            return [_numbers_out(t.xreplace(exact).subs(values)) for t in twists]
         from .lie import adjoint
 
-        G = _exact_matrix(self.base) * (_exact_matrix(self._home) if self.frame == "body" else sp.eye(4))
+        screws, home = self._exact_screws, _exact_matrix(self._home)
+        if rational:
+            screws, home = [S.applyfunc(_decimal) for S in screws], home.applyfunc(_decimal)
+        G = base * (home if self.frame == "body" else sp.eye(4))
         twists = []
-        for S, qi in zip(self._exact_screws, self.q_symbols):
-            twists.append((adjoint(G) * S).subs(values).applyfunc(sp.simplify))
+        for S, qi in zip(screws, self.q_symbols):
+            twists.append(_numbers_out(adjoint(G) * S, values))
             G = (G * exp_twist(S, qi)).applyfunc(sp.simplify)
         return twists
 
     def joint_twists(self, q):
         """The joint twists at q in the base frame.
 
-        Exact q (SymPy numbers or symbols; floats are read as the decimals they print as):
-        a :class:`~screwkit.systems.ScrewSystem` of Twists, so that ``.rank`` and
-        ``.reciprocal()`` give a singular configuration's lost freedoms and the wrenches the
-        structure bears without motors. Numeric q (n,) or (N, n): the (n, 6) / (N, n, 6) array
-        of the space Jacobian's columns.
+        Exact q (SymPy numbers or symbols; the model's decimals and float entries of q are read
+        as the exact decimals they print as): a :class:`~screwkit.systems.ScrewSystem` of Twists,
+        so that ``.rank`` and ``.reciprocal()`` give a singular configuration's lost freedoms
+        and the wrenches the structure bears without motors. Numeric q (n,) or (N, n): the
+        (n, 6) / (N, n, 6) array of the space Jacobian's columns.
         """
         from ._checks import is_symbolic
 
@@ -584,10 +615,7 @@ class Chain:
             from .screws import Twist
             from .systems import ScrewSystem
 
-            twists = self.twists_symbolic(q)
-            rational = [t.applyfunc(lambda e: e.xreplace({f: sp.nsimplify(f, rational=True)
-                                                          for f in e.atoms(sp.Float)})) for t in twists]
-            return ScrewSystem([Twist(t) for t in rational])
+            return ScrewSystem([Twist(t) for t in self.twists_symbolic(q, rational=True)])
         return np.swapaxes(self.space_jacobian(q), -1, -2)
 
     # ---- fast -----------------------------------------------------------------------------
