@@ -675,7 +675,7 @@ class Chain:
         T = np.empty((4, 4, q.shape[0]))
         T[3] = np.array([0.0, 0.0, 0.0, 1.0])[:, None]
         self._run("pose", q, range(12), T.reshape(16, -1))
-        return np.ascontiguousarray(T.transpose(2, 0, 1))
+        return T.transpose(2, 0, 1)  # a view: each entry was computed as one contiguous row
 
     def frames(self, q):
         """The base frame and every link frame: q (n,) -> (n + 1, 4, 4), (N, n) -> (N, n + 1, 4, 4).
