@@ -1,10 +1,20 @@
-"""Inverse kinematics: the PUMA 560 in closed form, and any chain numerically.
+"""Inverse kinematics: closed form for arms with a spherical wrist, and numeric for any chain.
 
-Closed form (:func:`puma560_ik`): the wrist centre fixes the arm (joint 1: left or right of
-the shoulder offset d3), the elbow (joints 2 and 3: a planar two-link problem, elbow above or
-below the line from the shoulder to the wrist centre) and the wrist (joints 4-6: Z-Y-Z Euler
-angles of 3R6, two solutions). Labels follow Corke's toolbox: l/r arm, u/d elbow, n/f wrist,
-where 'n' has q5 <= 0 and 'f' has q5 >= 0 for this model's signs.
+Closed form (:func:`analytic_ik`, :func:`analytic_ik_all`): any 6R arm whose last three axes
+meet in a point and whose joints 2 and 3 are parallel (the PUMA 560 with any lengths,
+offsets, base and tool; the Kawasaki CX210L), solved from the chain's own screws by the
+Paden–Kahan subproblems (:mod:`screwkit.subproblems`, re-exported here). Up to eight
+solutions, labelled l/r arm, u/d elbow, n/f wrist by the geometric definitions of
+:mod:`screwkit.spherical_wrist` (Corke's labels for the PUMA). :func:`puma560_ik` is the same
+solver under the PUMA's name.
+
+One angle convention: every closed-form angle is in (-pi, pi]. ``within_limits=True`` is
+the explicit option that moves angles by whole turns into the joint limits (e.g. q2 = -170
+deg becomes 190 deg for the PUMA) and drops the solutions that cannot be moved there.
+
+Numeric (:func:`numeric_ik`): Newton–Raphson on the twist of the pose error (the logarithm
+of T(q)^-1 T*, :func:`screwkit.log_transform`), damped least squares near singularities,
+joint limits respected; for any chain.
 
 >>> import numpy as np, screwkit as sk
 >>> robot = sk.robots.puma560()
@@ -15,30 +25,32 @@ where 'n' has q5 <= 0 and 'f' has q5 >= 0 for this model's signs.
 >>> np.round(solutions.by_config('ruf').q, 6)
 array([ 0.3,  0.5, -2. ,  0.4,  0.7,  0.2])
 """
+import weakref
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
-import sympy as sp
 
 from ._checks import as_float_array, check_transform, describe
-from .chains import Chain, Convention, Joint
+from .chains import Chain, Joint
+from .lie import log_transform
+from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
+from .subproblems import (Solutions, subproblem1, subproblem1_prismatic, subproblem2,
+                          subproblem3, subproblem3_prismatic, subproblem4)
 from .transforms import inv
 
-__all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "puma560_ik", "puma560_ik_all",
-           "puma560_config", "NumericIKResult", "numeric_ik", "pose_error"]
-
-#: The fixed order of the eight PUMA solutions in :func:`puma560_ik_all`.
-CONFIGURATIONS = ("lun", "luf", "ldn", "ldf", "run", "ruf", "rdn", "rdf")
-
-#: A singularity is reported when its measure (m or m^2, or |sin q5|) is below this.
-SINGULAR_TOL = 1e-9
+__all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",
+           "configuration", "puma560_ik", "puma560_ik_all", "puma560_config",
+           "NumericIKResult", "numeric_ik", "pose_error", "Solutions", "subproblem1",
+           "subproblem2", "subproblem3", "subproblem4", "subproblem1_prismatic",
+           "subproblem3_prismatic", "SINGULAR_TOL"]
 
 
 @dataclass(frozen=True)
 class IKSolution:
     """One closed-form solution: joint vector ``q`` (6,) rad, its ``config`` label, the
-    singularities it sits on (``'shoulder'``, ``'elbow'``, ``'wrist'``) and whether it
-    respects the joint limits."""
+    singularities it sits on (``'shoulder'``, ``'elbow'``, ``'wrist'``) and
+    ``within_limits``: whether q, or q moved by whole turns, respects the joint limits."""
 
     q: np.ndarray
     config: str
@@ -53,14 +65,19 @@ class IKSolution:
 
 class IKSolutions(list):
     """The solutions for one pose (a list of :class:`IKSolution`); ``reason`` says why it is
-    empty (out of reach) or None."""
+    empty (out of reach, or outside the joint limits) or is None."""
 
     def __init__(self, solutions=(), reason=None):
         super().__init__(solutions)
         self.reason = reason
 
     def by_config(self, config):
-        """The solution with this label ('lun', ...), or None."""
+        """The solution with this label ('lun', ...), or None if that branch has no solution.
+
+        A string that is not one of the eight labels is a ``ValueError``.
+        """
+        if config not in CONFIGURATIONS:
+            raise ValueError(f"config must be one of {', '.join(CONFIGURATIONS)}, got {config!r}")
         return next((s for s in self if s.config == config), None)
 
     def nearest(self, q):
@@ -78,208 +95,188 @@ def _wrap(angle):
     return np.pi - np.mod(np.pi - angle, 2 * np.pi)
 
 
-def _puma_geometry(robot):
-    """(d1, a2, a3, d3, d4, d6) of a chain that has the PUMA 560's structure, else ValueError."""
-    if not isinstance(robot, Chain):
-        raise TypeError(f"robot must be a Chain, got {describe(robot)}")
-    expected_alpha = [sp.pi / 2, 0, -sp.pi / 2, sp.pi / 2, -sp.pi / 2, 0]
-    value = [[float(sp.sympify(getattr(link, key))) for key in ("d", "a", "offset")] for link in robot.links]
-    ok = (
-        robot.n == 6
-        and all(link.joint is Joint.REVOLUTE for link in robot.links)
-        and all(abs(float(sp.sympify(link.alpha)) - float(alpha)) < 1e-12
-                for link, alpha in zip(robot.links, expected_alpha))
-        and value[0][1] == 0 and value[1][0] == 0 and value[3][1] == value[4][1] == value[5][1] == 0
-        and value[4][0] == 0 and all(v[2] == 0 for v in value)
-        and robot.convention is Convention.STANDARD
-    )
-    if not ok:
-        raise ValueError(
-            "robot must have the PUMA 560's standard-DH structure (alphas 90, 0, -90, 90, -90, 0 deg, "
-            f"a1 = a4 = a5 = a6 = 0, d2 = d5 = 0, no offsets), got {robot!r}"
-        )
-    return value[0][0], value[1][1], value[2][1], value[2][0], value[3][0], value[5][0]
+@lru_cache(maxsize=1)
+def _default_puma():
+    from .robots import puma560
+
+    return puma560()
 
 
-def puma560_ik_all(Ts, robot=None):
-    """All eight closed-form solutions for a batch of poses, in the order of CONFIGURATIONS.
+_ARMS = weakref.WeakKeyDictionary()  # chains are immutable: their geometry is found once
+
+
+def _arm(chain, name="chain"):
+    try:
+        return _ARMS[chain]
+    except (KeyError, TypeError):
+        arm = SphericalWristArm.from_chain(chain, name)
+        _ARMS[chain] = arm
+        return arm
+
+
+def _poses(T, name, single_only=False):
+    """T as float64 (4, 4) or (N, 4, 4) rigid transforms, checked."""
+    if isinstance(T, (str, bytes)) or T is None:
+        raise TypeError(f"{name} must be a 4x4 pose or an (N, 4, 4) batch, got {describe(T)}")
+    T = as_float_array(T, name)
+    if T.ndim not in (2, 3):
+        raise ValueError(f"{name} must have shape (4, 4) or (N, 4, 4), got shape {T.shape}")
+    T = check_transform(T, name)
+    if single_only and T.ndim != 2:
+        raise ValueError(f"{name} must be one pose of shape (4, 4), got shape {T.shape}")
+    return T
+
+
+def _check_flag(value, name):
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be True or False, got {describe(value)}")
+    return bool(value)
+
+
+def analytic_ik_all(chain, T):
+    """All eight closed-form solutions of one pose or a batch, in the order of CONFIGURATIONS.
 
     Parameters
     ----------
-    Ts : array, shape (N, 4, 4) (or (4, 4)), poses of the tool in the base frame (m)
-    robot : a Chain with the PUMA's structure (default ``robots.puma560()``)
+    chain : Chain, a 6R arm with a spherical wrist (see :mod:`screwkit.spherical_wrist`)
+    T : array, shape (4, 4) or (N, 4, 4), poses of the tool in the world frame (m)
 
     Returns
     -------
-    Q : array, shape (N, 8, 6) (or (8, 6)), rad in (-pi, pi]; NaN where a pose is out of reach
+    Q : array, shape (8, 6) or (N, 8, 6), rad in (-pi, pi]; NaN rows for the branches that
+        do not reach a pose (all eight when it is out of reach; see :func:`analytic_ik` for
+        the reason). Computed in chunks, so memory stays bounded for large batches.
     """
-    from .robots import puma560
-
-    robot = puma560() if robot is None else robot
-    d1, a2, a3, d3, d4, d6 = _puma_geometry(robot)
-    T = check_transform(np.asarray(Ts, dtype=float), "Ts")
-    single = T.ndim == 2
-    T = T[None] if single else T
-    Q, _ = _solve(T, robot, d1, a2, a3, d3, d4, d6)
-    return Q[0] if single else Q
+    arm = _arm(chain)
+    T = _poses(T, "T")
+    Q, _, _ = arm.solve(T[None] if T.ndim == 2 else T)
+    return Q[0] if T.ndim == 2 else Q
 
 
-def _solve(T, robot, d1, a2, a3, d3, d4, d6):
-    """The vectorised closed form: (N, 8, 6) joint vectors and (N, 8, 3) singularity flags."""
-    if not np.allclose(robot.base, np.eye(4)) or not np.allclose(robot.tool, np.eye(4)):
-        T = inv(robot.base) @ T @ inv(robot.tool)
-    R, p = T[:, :3, :3], T[:, :3, 3]
-    w = p - d6 * R[:, :, 2]  # the wrist centre
-    wx, wy, wz = w[:, 0], w[:, 1], w[:, 2] - d1
-    r2 = wx**2 + wy**2
-    with np.errstate(invalid="ignore", divide="ignore"):
-        horizontal = np.sqrt(r2 - d3**2)  # NaN inside the cylinder of radius d3 about joint 1's axis
-        phi, alpha = np.arctan2(wy, wx), np.arcsin(d3 / np.sqrt(r2))
-        rho, beta = np.hypot(a3, d4), np.arctan2(d4, a3)
-        kappa = ((r2 - d3**2 + wz**2 - a2**2 - rho**2) / (2 * a2 * rho))
-        kappa = np.where(np.abs(kappa) - 1 < 1e-12, np.clip(kappa, -1, 1), kappa)  # round-off at full stretch
-        gamma = np.arccos(kappa)  # NaN where the wrist centre is out of reach
-    Q = np.empty((T.shape[0], 8, 6))
-    flags = np.zeros((T.shape[0], 8, 3), dtype=bool)
-    for k, config in enumerate(CONFIGURATIONS):
-        arm = 1.0 if config[0] == "r" else -1.0
-        elbow = 1.0 if config[1] == "u" else -1.0
-        q1 = phi + alpha if arm > 0 else phi + np.pi - alpha
-        V = arm * horizontal  # reach of the wrist centre along x1
-        q3 = -beta - arm * elbow * gamma
-        c3, s3 = np.cos(q3), np.sin(q3)
-        q2 = np.arctan2(wz, V) - np.arctan2(a3 * s3 + d4 * c3, a2 + a3 * c3 - d4 * s3)
-        q4, q5, q6, wrist_singular = _wrist(R, q1, q2 + q3, flip=config[2] == "f")
-        q = _wrap(np.stack([q1, q2, q3, q4, q5, q6], axis=-1))
-        Q[:, k] = np.where(np.any(np.isnan(q), axis=-1, keepdims=True), np.nan, q)
-        flags[:, k] = np.stack([horizontal**2 < SINGULAR_TOL, np.abs(np.abs(kappa) - 1) < SINGULAR_TOL,
-                                wrist_singular], axis=-1)
-    return Q, flags
-
-
-def _wrist(R, q1, q23, flip):
-    """Joints 4-6 from 3R6 = R03^T R = Rz(q4) Ry(-q5) Rz(q6) (Z-Y-Z Euler angles)."""
-    c1, s1, c23, s23 = np.cos(q1), np.sin(q1), np.cos(q23), np.sin(q23)
-    # R03 = Rz(q1) Rx(90deg) Rz(q23) Rx(-90deg); its columns x3, y3, z3
-    x3 = np.stack([c1 * c23, s1 * c23, s23], axis=-1)
-    y3 = np.stack([-s1, c1, np.zeros_like(q1)], axis=-1)
-    z3 = np.stack([-c1 * s23, -s1 * s23, c23], axis=-1)
-    R03 = np.stack([x3, y3, z3], axis=-1)
-    M = np.swapaxes(R03, -1, -2) @ R
-    s5 = np.hypot(M[:, 0, 2], M[:, 1, 2])
-    singular = s5 < SINGULAR_TOL
-    q5 = -np.arctan2(s5, M[:, 2, 2])  # 'n': q5 <= 0
-    q4 = np.arctan2(M[:, 1, 2], M[:, 0, 2])
-    q6 = np.arctan2(M[:, 2, 1], -M[:, 2, 0])
-    # At q5 = 0 (or pi) only q4 + q6 (or q4 - q6) is fixed: the convention is q4 = 0.
-    q4 = np.where(singular, 0.0, q4)
-    q6 = np.where(singular, np.where(M[:, 2, 2] > 0, np.arctan2(M[:, 1, 0], M[:, 0, 0]),
-                                     np.arctan2(M[:, 1, 0], M[:, 1, 1])), q6)
-    if flip:
-        q4, q5, q6 = q4 + np.pi, -q5, q6 + np.pi
-    return q4, q5, q6, singular
-
-
-def puma560_ik(T, robot=None, within_limits=False, near=None):
-    """Every closed-form solution for one pose T (4, 4) of the PUMA 560.
+def analytic_ik(chain, T, within_limits=False, near=None):
+    """Every closed-form solution of a pose, labelled, for a 6R arm with a spherical wrist.
 
     Parameters
     ----------
-    T : array, shape (4, 4), pose of the tool in the base frame (m)
-    robot : a Chain with the PUMA's structure (default ``robots.puma560()``)
-    within_limits : keep only the solutions inside the joint limits (angles are shifted by
-        2 pi where that brings them inside, e.g. q6 in [-266, 266] deg)
-    near : a joint vector (6,): sort the solutions by their distance to it
+    chain : Chain, a 6R arm whose last three axes meet and whose joints 2, 3 are parallel
+    T : array, shape (4, 4) (or (N, 4, 4): a list of answers), the tool pose (m)
+    within_limits : False (default): angles in (-pi, pi]. True: each angle moved by whole
+        turns into its joint limits, the solutions that cannot be dropped; if none is left,
+        the answer is empty and its ``reason`` says so
+    near : optional joint vector (6,): sort the solutions by their distance to it
 
     Returns
     -------
-    IKSolutions : a list of IKSolution (eight for a generic reachable pose, none out of
-        reach, with ``.reason``)
+    IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS (sorted by distance
+        to ``near`` if given); empty with a ``reason`` when out of reach. For a batch, a list
+        of IKSolutions.
     """
-    from .robots import puma560
-
-    robot = puma560() if robot is None else robot
-    geometry = _puma_geometry(robot)
-    T = check_transform(np.asarray(T, dtype=float), "T")
+    arm = _arm(chain)
+    T = _poses(T, "T")
+    within_limits = _check_flag(within_limits, "within_limits")
     if near is not None:
         near = as_float_array(near, "near")
         if near.shape != (6,):
             raise ValueError(f"near must be a joint vector of 6 entries, got shape {near.shape}")
-    if T.ndim != 2:
-        raise ValueError(f"T must be one pose of shape (4, 4); use puma560_ik_all for a batch, got shape {T.shape}")
-    Q, flags = _solve(T[None], robot, *geometry)
-    if np.all(np.isnan(Q[0])):
-        return IKSolutions([], reason=_why_unreachable(T, robot, *geometry))
+    batch = T if T.ndim == 3 else T[None]
+    Q, flags, code = arm.solve(batch)
+    limits = chain.qlim
+    answers = [_answer(arm, batch[k], Q[k], flags[k], code[k], limits, within_limits, near)
+               for k in range(batch.shape[0])]
+    return answers if T.ndim == 3 else answers[0]
+
+
+def _answer(arm, T, Q, flags, code, limits, within_limits, near):
+    if code != 0:
+        return IKSolutions([], reason=arm.reason(T, code))
     names = ("shoulder", "elbow", "wrist")
     solutions = []
-    for q, config, flag in zip(Q[0], CONFIGURATIONS, flags[0]):
-        inside = _into_limits(q, robot.qlim)
-        solutions.append(IKSolution(q=inside if inside is not None else q, config=config,
-                                    singular=tuple(n for n, f in zip(names, flag) if f),
-                                    within_limits=inside is not None))
+    for q, config, flag in zip(Q, CONFIGURATIONS, flags):
+        if np.isnan(q[0]):
+            continue
+        inside = _into_limits(q, limits)
+        solutions.append(IKSolution(q=inside if within_limits and inside is not None else q,
+                                    config=config, within_limits=inside is not None,
+                                    singular=tuple(n for n, f in zip(names, flag) if f)))
     if within_limits:
         solutions = [s for s in solutions if s.within_limits]
     result = IKSolutions(solutions)
     if near is not None:
         result.sort(key=lambda s: np.linalg.norm(_wrap(s.q - near)))
     if not result:
-        result.reason = "every solution violates a joint limit"
+        result.reason = ("every solution violates a joint limit, even moved by whole turns: "
+                         + ", ".join(f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
+                                     for s in _answer(arm, T, Q, flags, code, limits, False, None)))
     return result
 
 
 def _into_limits(q, qlim):
-    """q with each angle moved by a multiple of 2 pi into its limits, or None if one cannot be."""
+    """q with each angle moved by a multiple of 2 pi into its limits (the value nearest to
+    its (-pi, pi] value), or None if one cannot be."""
     moved = q.copy()
     for i, (low, high) in enumerate(qlim):
-        candidates = q[i] + 2 * np.pi * np.arange(-2, 3)
+        if low <= q[i] <= high:
+            continue
+        candidates = q[i] + 2 * np.pi * np.arange(-3, 4)
         inside = candidates[(candidates >= low - 1e-12) & (candidates <= high + 1e-12)]
         if inside.size == 0:
             return None
-        moved[i] = inside[np.argmin(np.abs(inside))]
+        moved[i] = inside[np.argmin(np.abs(inside - q[i]))]
     return moved
 
 
-def _why_unreachable(T, robot, d1, a2, a3, d3, d4, d6):
-    R, p = T[:3, :3], T[:3, 3]
-    w = p - d6 * R[:, 2] - np.array([0.0, 0.0, d1])
-    radial = np.hypot(w[0], w[1])
-    if radial < d3:
-        return (f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer than the "
-                f"shoulder offset d3 = {d3:.5f} m")
-    reach = np.sqrt(radial**2 - d3**2 + w[2] ** 2)
-    rho = np.hypot(a3, d4)
-    return (f"the wrist centre is {reach:.4f} m from the shoulder in the arm's plane; the arm reaches "
-            f"from {abs(a2 - rho):.4f} m to {a2 + rho:.4f} m")
+def configuration(chain, q):
+    """The label ('ruf', ...) of a joint vector (6,) or the labels of a batch (N, 6), from the
+    geometric definitions of :mod:`screwkit.spherical_wrist`, singular cases included."""
+    arm = _arm(chain)
+    q = chain.check_q(q)
+    labels = arm.labels(q)
+    return str(labels) if q.ndim == 1 else labels.tolist()
+
+
+def puma560_ik(T, robot=None, within_limits=False, near=None):
+    """Every closed-form solution for one pose T (4, 4) of a PUMA 560: :func:`analytic_ik`.
+
+    ``robot`` is the chain the pose belongs to (any lengths d1, d3, a2, a3, d4, d6, offsets,
+    base and tool); without one, ``robots.puma560()`` is used: Corke's model with d1 = 0, the
+    base frame on the shoulder. Poses of a PUMA with a pedestal (the Robotics Toolbox's
+    d1 = 0.672 m) need that robot passed in.
+    """
+    robot = _default_puma() if robot is None else robot
+    T = _poses(T, "T", single_only=True)
+    return analytic_ik(robot, T, within_limits=within_limits, near=near)
+
+
+def puma560_ik_all(Ts, robot=None):
+    """All eight solutions of a batch of PUMA poses (N, 4, 4) -> (N, 8, 6), rad in (-pi, pi]
+    (NaN where out of reach): :func:`analytic_ik_all` with ``robots.puma560()`` by default."""
+    return analytic_ik_all(_default_puma() if robot is None else robot, Ts)
 
 
 def puma560_config(q, robot=None):
-    """The configuration label of a joint vector (6,), from the geometry alone.
+    """The configuration label of a PUMA joint vector (6,): Corke's l/r, u/d, n/f.
 
-    Arm 'r' if the wrist centre is in front of the shoulder along x1, i.e.
-    a2 c2 + a3 c23 - d4 s23 > 0; elbow 'u' if the elbow lies above the line from the
-    shoulder to the wrist centre (seen with the arm pointing forward); wrist 'n' if q5 < 0.
+    Arm 'r' when the wrist centre is in front of the shoulder along x1
+    (a2 c2 + a3 c23 - d4 s23 > 0); elbow 'u' when the elbow is above the line from the
+    shoulder to the wrist centre, seen with the arm pointing forward; wrist 'f' when q5 > 0.
+    Singular cases follow the rule of :mod:`screwkit.spherical_wrist` (shoulder: 'r',
+    elbow: 'd', wrist: 'f' when cos q4 >= 0), so that every label round-trips.
     """
-    from .robots import puma560
-
-    robot = puma560() if robot is None else robot
-    _, a2, a3, _, d4, _ = _puma_geometry(robot)
+    robot = _default_puma() if robot is None else robot
     q = robot.check_q(q)
     if q.shape != (6,):
         raise ValueError(f"q must be one joint vector of shape (6,), got shape {q.shape}")
-    q2, q3, q5 = q[..., 1], q[..., 2], q[..., 4]
-    forward = a2 * np.cos(q2) + a3 * np.cos(q2 + q3) - d4 * np.sin(q2 + q3)
-    wrist = np.stack([forward, a2 * np.sin(q2) + a3 * np.sin(q2 + q3) + d4 * np.cos(q2 + q3)])
-    elbow = a2 * np.stack([np.cos(q2), np.sin(q2)])
-    above = np.sign(forward) * (wrist[0] * elbow[1] - wrist[1] * elbow[0]) > 0
-    arm = "r" if forward > 0 else "l"
-    return arm + ("u" if above else "d") + ("n" if q5 < 0 else "f")
+    return configuration(robot, q)
+
+
+# ---- numeric ------------------------------------------------------------------------------
 
 
 @dataclass
 class NumericIKResult:
     """The result of :func:`numeric_ik`: ``q`` (n,) or (N, n) rad/m, ``success``, the
-    ``iterations`` used and the final pose ``error`` (norm of [position error (m);
-    rotation error (rad)]), one per start for a batch."""
+    ``iterations`` used and the final ``error``: the norm of the error twist
+    [omega; v] theta (rad and m), one per start for a batch."""
 
     q: np.ndarray
     success: np.ndarray
@@ -288,85 +285,111 @@ class NumericIKResult:
 
 
 def pose_error(T, T_target):
-    """The 6-vector [p* - p; omega] that moves T toward T_target (base frame), omega being the
-    axis-angle vector of R* R^T. T, T_target: (..., 4, 4) -> (..., 6)."""
-    R_error = T_target[..., :3, :3] @ np.swapaxes(T[..., :3, :3], -1, -2)
-    axis = np.stack([R_error[..., 2, 1] - R_error[..., 1, 2], R_error[..., 0, 2] - R_error[..., 2, 0],
-                     R_error[..., 1, 0] - R_error[..., 0, 1]], axis=-1)
-    sin_angle = 0.5 * np.linalg.norm(axis, axis=-1)
-    cos_angle = np.clip(0.5 * (np.trace(R_error, axis1=-2, axis2=-1) - 1), -1, 1)
-    angle = np.arctan2(sin_angle, cos_angle)
-    scale = np.where(sin_angle > 1e-12, angle / np.where(sin_angle > 1e-12, 2 * sin_angle, 1.0), 0.5)
-    omega = scale[..., None] * axis
-    # near a half turn the skew part vanishes: take the axis from the symmetric part instead
-    half_turn = (cos_angle < -0.99) & (sin_angle < 1e-6)
-    if np.any(half_turn):
-        B = 0.5 * (R_error[half_turn] + np.eye(3))
-        column = np.argmax(np.linalg.norm(B, axis=-2), axis=-1)
-        u = B[np.arange(B.shape[0]), :, column]
-        omega[half_turn] = np.pi * u / np.linalg.norm(u, axis=-1, keepdims=True)
-    return np.concatenate([T_target[..., :3, 3] - T[..., :3, 3], omega], axis=-1)
+    """The twist [omega; v] theta (body frame of T) of the motion from T to T_target:
+    ``log_transform(inv(T) @ T_target)``. T, T_target: (..., 4, 4) -> (..., 6)."""
+    return log_transform(inv(check_transform(as_float_array(T, "T"), "T"))
+                         @ check_transform(as_float_array(T_target, "T_target"), "T_target"))
 
 
-def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200):
-    """Numerical inverse kinematics by Levenberg–Marquardt, for any chain.
+def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200, frame="body", damping=None,
+               within_limits=True):
+    """Numerical inverse kinematics in twist coordinates, for any chain (DH or product of
+    exponentials; revolute, prismatic and helical joints).
 
-    Each step solves (J^T J + (E + 1e-9) I) dq = J^T e, with e the pose error of
-    :func:`pose_error`, J the geometric Jacobian and E = |e|^2 / 2 (Sugihara's damping:
-    strong far from the target, vanishing near it).
+    Each step is Newton–Raphson on the error twist: with V = log(T(q)^-1 T*) (body frame)
+    or Ad(T(q)) V (space frame) and J the body (space) Jacobian, it solves
+    (J^T J + lambda I) dq = J^T V. Damped least squares: lambda = |V|^2 / 2 + 1e-9 by default
+    (strong far from the target and near singularities, vanishing at the solution, Sugihara
+    2011); ``damping=0`` is the plain Newton–Raphson step dq = pinv(J) V (Lynch and Park,
+    sec. 6.2.2). With ``within_limits`` every iterate is clipped into the joint limits.
 
     Parameters
     ----------
     chain : Chain
-    T : array (4, 4), the target pose
-    q0 : array (n,) one start, or (N, n) several starts solved together
-    tol : success when the error norm is below tol (m and rad)
-    max_iterations : int
+    T : array (4, 4), the target pose (m)
+    q0 : array (n,) one start, or (N, n) several starts solved together (rad, m)
+    tol : success when the norm of V is below tol (rad and m)
+    max_iterations : int >= 1
+    frame : 'body' or 'space', the frame of the error twist and the Jacobian
+    damping : None (adaptive, above) or a number lambda >= 0
+    within_limits : True (default): the answer respects the joint limits, and revolute
+        joints without limits are wrapped into (-pi, pi]; False: limits ignored, every
+        revolute angle wrapped into (-pi, pi]
 
     Returns
     -------
-    NumericIKResult
+    NumericIKResult : success is False whenever the final error is not below tol (an
+        unreachable pose never reports success)
     """
     if not isinstance(chain, Chain):
         raise TypeError(f"chain must be a Chain, got {describe(chain)}")
-    T = check_transform(np.asarray(T, dtype=float), "T")
-    if T.ndim != 2:
-        raise ValueError(f"T must be one pose of shape (4, 4), got shape {T.shape}")
+    T = _poses(T, "T", single_only=True)
     q = chain.check_q(q0, "q0").copy()
-    if not (isinstance(max_iterations, int) and max_iterations >= 1):
+    if isinstance(max_iterations, bool) or not isinstance(max_iterations, (int, np.integer)) \
+            or max_iterations < 1:
         raise ValueError(f"max_iterations must be a positive integer, got {max_iterations!r}")
-    if not tol > 0:
-        raise ValueError(f"tol must be positive, got {tol!r}")
+    if isinstance(tol, bool) or not isinstance(tol, (int, float)) or not tol > 0:
+        raise ValueError(f"tol must be a positive number, got {tol!r}")
+    if frame not in ("body", "space"):
+        raise ValueError(f"frame must be 'body' or 'space', got {frame!r}")
+    if damping is not None and (isinstance(damping, bool) or not isinstance(damping, (int, float))
+                                or not damping >= 0):
+        raise ValueError(f"damping must be None or a number >= 0, got {damping!r}")
+    within_limits = _check_flag(within_limits, "within_limits")
     single = q.ndim == 1
     q = q[None] if single else q
+    low, high = chain.qlim.T
+    if within_limits:
+        q = np.clip(q, low, high)
     iterations = np.zeros(q.shape[0], dtype=int)
-    error = pose_error(chain.fk(q), T)
+    error = _error_twist(chain, q, T, frame)
     norm = np.linalg.norm(error, axis=-1)
     eye = np.eye(chain.n)
     for _ in range(max_iterations):
         active = norm >= tol
         if not np.any(active):
             break
-        J = chain.geometric_jacobian(q[active])
-        e = error[active]
-        damping = 0.5 * np.sum(e**2, axis=-1) + 1e-9
-        JT = np.swapaxes(J, -1, -2)
-        step = np.linalg.solve(JT @ J + damping[:, None, None] * eye, (JT @ e[..., None]))[..., 0]
+        J = chain.body_jacobian(q[active]) if frame == "body" else chain.space_jacobian(q[active])
+        V = error[active]
+        if damping == 0:
+            step = (np.linalg.pinv(J) @ V[..., None])[..., 0]
+        else:
+            lam = (0.5 * np.sum(V**2, axis=-1) + 1e-9 if damping is None
+                   else np.full(len(V), float(damping)))
+            JT = np.swapaxes(J, -1, -2)
+            step = np.linalg.solve(JT @ J + lam[:, None, None] * eye, JT @ V[..., None])[..., 0]
         candidate = q[active] + step
-        new_error = pose_error(chain.fk(candidate), T)
-        new_norm = np.linalg.norm(new_error, axis=-1)
-        q[active], error[active], norm[active] = candidate, new_error, new_norm
+        if within_limits:
+            candidate = np.clip(candidate, low, high)
+        q[active] = candidate
+        error[active] = _error_twist(chain, candidate, T, frame)
+        norm[active] = np.linalg.norm(error[active], axis=-1)
         iterations[active] += 1
-    q = _wrap_revolute(chain, q)
-    result = NumericIKResult(q=q, success=norm < tol, iterations=iterations, error=norm)
+    q = _wrap_revolute(chain, q, within_limits)
     if single:
-        return NumericIKResult(q=q[0], success=bool(result.success[0]),
+        return NumericIKResult(q=q[0], success=bool(norm[0] < tol),
                                iterations=int(iterations[0]), error=float(norm[0]))
-    return result
+    return NumericIKResult(q=q, success=norm < tol, iterations=iterations, error=norm)
 
 
-def _wrap_revolute(chain, q):
+def _error_twist(chain, q, T, frame):
+    """V (N, 6): the twist from T(q) to T, in the body frame or the space frame."""
+    Tq = chain.fk(q)
+    V = log_transform(inv(Tq) @ T)
+    if frame == "body":
+        return V
+    R, p = Tq[:, :3, :3], Tq[:, :3, 3]
+    omega = np.einsum("nij,nj->ni", R, V[:, :3])
+    return np.concatenate([omega, np.cross(p, omega) + np.einsum("nij,nj->ni", R, V[:, 3:])], -1)
+
+
+def _wrap_revolute(chain, q, within_limits):
+    """Revolute angles into (-pi, pi] (with limits: only those the wrap keeps inside them)."""
     revolute = np.array([j is Joint.REVOLUTE for j in chain.joints])
-    q = q.copy()
-    q[..., revolute] = _wrap(q[..., revolute])
-    return q
+    wrapped = q.copy()
+    wrapped[..., revolute] = _wrap(q[..., revolute])
+    if within_limits:
+        low, high = chain.qlim.T
+        keep = (wrapped >= low) & (wrapped <= high)
+        wrapped = np.where(keep, wrapped, q)
+    return wrapped

@@ -1,0 +1,399 @@
+"""Closed-form inverse kinematics of a 6R arm with a spherical wrist, from its screws.
+
+The arm fits when its last three axes meet in a point c (the wrist centre), the axes of
+joints 2 and 3 are parallel, and joint 1's axis is not parallel to them (the PUMA 560 with
+any lengths and offsets, the Kawasaki CX210L, and many industrial arms). With the joint
+screws xi_i at q = 0 and the home pose M, T = exp(xi_1 q1) ... exp(xi_6 q6) M, and the
+wrist joints leave c where it is, so the wrist centre of the target is w = T M^-1 c and
+
+1. joint 1 (:func:`~screwkit.subproblems.subproblem4`): joints 2 and 3 move c in a plane
+   perpendicular to their common axis direction u, so q1 must turn w back into the plane
+   u . x = u . c: two angles, the arm right ('r') or left ('l');
+2. joint 3 (:func:`~screwkit.subproblems.subproblem3`): the distance from axis 2 to the
+   wrist centre does not depend on q2: two angles, the elbow up ('u') or down ('d');
+3. joint 2 (:func:`~screwkit.subproblems.subproblem1`): turn exp(xi_3 q3) c onto w;
+4. joints 4, 5 (:func:`~screwkit.subproblems.subproblem2`): the rotation left for the
+   wrist takes the direction of axis 6 to where it must point: two pairs, flip ('f') or
+   not ('n'); joint 6 (:func:`~screwkit.subproblems.subproblem1`): the rest.
+
+Labels are geometric (they hold for any arm that fits, and equal Corke's for the PUMA 560),
+with w1 the wrist centre in the frame of link 1 (i.e. at q1 = 0) and w_i the axis directions:
+
+* arm 'r' when w1 lies on the side of axis 1 that w_1 x w_2 points to, 'l' otherwise;
+* elbow 'u' when, seen with the arm pointing forward (w_1 x w_2 for 'r', the opposite for
+  'l'), the elbow (axis 3) lies above the line from the shoulder (axis 2) to w1:
+  sigma ((w1 - p2) x (e - p2)) . w_2 > 0, with sigma = +1 for 'r' and -1 for 'l';
+* wrist 'f' when (w_4 x w_6) . w_5 > 0 at the current configuration (for the PUMA: q5 > 0).
+
+The singular cases, where labels tie or angles are free, follow one documented rule:
+
+* shoulder (w1 on the plane through axis 1 spanned by w_1 and w_2: the two arm solutions
+  coincide): the label is 'r'; if w1 is on axis 1 itself (only possible without a shoulder
+  offset), q1 is free and the solutions take q1 = 0;
+* elbow (stretched or folded: the two elbow solutions coincide): the label is 'd';
+* wrist (axes 4 and 6 aligned: only q4 + q6 or q4 - q6 is fixed): the 'f' solution takes
+  q4 = 0 and the 'n' solution q4 = pi; a configuration there is labelled 'f' when
+  cos q4 >= 0 and 'n' otherwise, so both labels round-trip.
+
+Round-off that pushes a square-root or arccos argument just outside its range (by less than
+:data:`CLIP_TOL`, relative) is clipped: a pose on a singularity is solved, not dropped.
+"""
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._checks import describe
+from .chains import Chain, Joint
+from .transforms import inv
+
+__all__ = ["CONFIGURATIONS", "SphericalWristArm"]
+
+#: The fixed order of the eight solutions: arm l/r, elbow u/d, wrist n/f.
+CONFIGURATIONS = ("lun", "luf", "ldn", "ldf", "run", "ruf", "rdn", "rdf")
+
+#: Relative tolerance for the structure checks and for clipping round-off.
+CLIP_TOL = 1e-10
+#: A solution is reported singular when its measure is below this: the squared distance
+#: (m^2, relative) of the wrist centre from the plane of axis 1 and w_1 x w_2 (shoulder),
+#: 1 - |cos| of the elbow angle (elbow), the sine between axes 4 and 6 (wrist).
+SINGULAR_TOL = 1e-9
+#: Poses per chunk of a batch (the temporaries stay small: memory is bounded).
+CHUNK = 4096
+
+
+def _unit(v):
+    return v / np.linalg.norm(v)
+
+
+def _rotate(w, angle, x):
+    """Rotate x (..., 3) about the unit direction w (3,) by angle (...): Rodrigues."""
+    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
+    return x * c + np.cross(w, x) * s + w * ((x @ w)[..., None] * (1 - c))
+
+
+def _wrap(angle):
+    """Angles wrapped into (-pi, pi]."""
+    return np.pi - np.mod(np.pi - angle, 2 * np.pi)
+
+
+def _polar(y, x):
+    """atan2(y, x) with its cosine and sine, without calling cos and sin (0 where x = y = 0)."""
+    h = np.hypot(x, y)
+    safe = np.where(h > 0, h, 1.0)
+    return np.arctan2(y, x), np.where(h > 0, x / safe, 1.0), y / safe
+
+
+def _dot(w, v):
+    """w . v for a fixed w (3,) and vectors v (3, ...): one BLAS call."""
+    return np.tensordot(w, v, axes=1)
+
+
+class _Rotor:
+    """Rotations about one fixed unit direction w, applied to vectors laid out (3, ...)."""
+
+    def __init__(self, w):
+        self.w = w
+        self.K = self.cross_matrix(w)
+
+    @staticmethod
+    def cross_matrix(w):
+        """K with K @ x = w x x."""
+        return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+
+    def cross(self, w, v):
+        """w x v for a fixed w (3,) and vectors v (3, ...)."""
+        return np.tensordot(self.cross_matrix(w), v, axes=1)
+
+    def rotate(self, v, cos, sin):
+        """v (3, ...) turned about w by the angles with these cosines and sines (...)."""
+        along = _dot(self.w, v) * (1 - cos)
+        return (v * cos + np.tensordot(self.K, v, axes=1) * sin
+                + self.w.reshape((3,) + (1,) * along.ndim) * along)
+
+
+def _rotation(w, angle):
+    """The rotation matrices about w (3,) by angle (...): (..., 3, 3)."""
+    K = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    s, c1 = np.sin(angle)[..., None, None], (1 - np.cos(angle))[..., None, None]
+    return np.eye(3) + s * K + c1 * (K @ K)
+
+
+def _angle(w, u, v):
+    """Subproblem 1 for directions: the angle about w from u to v (both (..., 3)); 0 where
+    u has no part perpendicular to w (every angle)."""
+    u1 = u - (u @ w)[..., None] * w
+    v1 = v - (v @ w)[..., None] * w
+    return np.arctan2(np.cross(u1, v1) @ w, np.sum(u1 * v1, axis=-1))
+
+
+@dataclass(frozen=True)
+class SphericalWristArm:
+    """The geometry of a 6R arm with a spherical wrist, taken from its screws (m, unit w_i).
+
+    Build it with :meth:`from_chain`; it raises ``ValueError`` naming the condition that
+    fails. ``w``, ``p``: (6, 3) axis directions and points at q = 0; ``c``: the wrist centre;
+    ``home``: M (4, 4).
+    """
+
+    w: np.ndarray
+    p: np.ndarray
+    c: np.ndarray
+    home: np.ndarray
+    scale: float
+
+    @classmethod
+    def from_chain(cls, chain, name="chain"):
+        if not isinstance(chain, Chain):
+            raise TypeError(f"{name} must be a Chain, got {describe(chain)}")
+        if chain.n != 6:
+            raise ValueError(f"{name} must have 6 joints for the closed form, got {chain.n}")
+        kinds = [i + 1 for i, j in enumerate(chain.joints) if j is not Joint.REVOLUTE]
+        if kinds:
+            raise ValueError(f"{name} must have revolute joints only, got other joints at "
+                             f"positions {kinds}")
+        S = chain.screw_axes()
+        w, v = S[:, :3], S[:, 3:]
+        norms = np.linalg.norm(w, axis=1)
+        pitch = np.sum(w * v, axis=1) / norms**2
+        if np.any(np.abs(pitch) > 1e-9):
+            i = int(np.argmax(np.abs(pitch)))
+            raise ValueError(f"{name} must have revolute joints of pitch 0, "
+                             f"joint {i + 1} is helical (pitch {pitch[i]:.6g} m/rad)")
+        w = w / norms[:, None]
+        p = np.cross(w, v / norms[:, None])  # the point of each axis nearest the base origin
+        scale = 1.0 + float(np.max(np.linalg.norm(p, axis=1)))
+        tol = 1e-9 * scale
+        # the wrist centre: the point nearest to axes 4, 5, 6 (least squares)
+        projectors = np.eye(3) - w[3:, :, None] * w[3:, None, :]
+        c = np.linalg.lstsq(projectors.sum(0), np.einsum("kij,kj->i", projectors, p[3:]),
+                            rcond=None)[0]
+        miss = np.linalg.norm(np.einsum("kij,kj->ki", projectors, c - p[3:]), axis=1).max()
+        parallel = [np.linalg.norm(np.cross(w[i], w[j])) for i, j in ((3, 4), (4, 5))]
+        if min(parallel) < 1e-9:
+            raise ValueError(f"{name} must have a spherical wrist: the axes of joints 4 and 5, "
+                             "and of joints 5 and 6, must not be parallel")
+        if miss > tol:
+            raise ValueError(f"{name} must have a spherical wrist: the axes of joints 4, 5 and "
+                             f"6 must meet in one point, they miss it by {miss:.3g} m")
+        angle23 = np.degrees(np.arcsin(min(1.0, np.linalg.norm(np.cross(w[1], w[2])))))
+        if angle23 > 1e-7:
+            raise ValueError(f"{name} must have parallel axes for joints 2 and 3, got an angle "
+                             f"of {angle23:.6g} deg between them")
+        if np.linalg.norm(np.cross(w[0], w[1])) < 1e-9:
+            raise ValueError(f"{name} must have the axis of joint 1 not parallel to the axes "
+                             "of joints 2 and 3")
+        gap = p[2] - p[1] - w[1] * (w[1] @ (p[2] - p[1]))
+        if np.linalg.norm(gap) < tol:
+            raise ValueError(f"{name} must have distinct axes for joints 2 and 3 (a2 > 0), "
+                             "got the same line")
+        reach = c - p[2] - w[2] * (w[2] @ (c - p[2]))
+        if np.linalg.norm(reach) < tol:
+            raise ValueError(f"{name} must have its wrist centre off the axis of joint 3")
+        return cls(w=w, p=p, c=c, home=chain.home(), scale=scale)
+
+    # ---- labels ---------------------------------------------------------------------------
+
+    def _arm_plane(self, q2, q3):
+        """The wrist centre w1 (..., 3) at q1 = 0 and the elbow point relative to axis 2."""
+        w, p, c = self.w, self.p, self.c
+        wrist = p[2] + _rotate(w[2], q3, np.broadcast_to(c - p[2], q3.shape + (3,)))
+        w1 = p[1] + _rotate(w[1], q2, wrist - p[1])
+        elbow = _rotate(w[1], q2, np.broadcast_to(p[2] - p[1], q2.shape + (3,)))
+        return w1, elbow
+
+    def measures(self, q):
+        """(forward, elbow, wrist) of q (..., 6): the signed measures the labels test."""
+        w, p = self.w, self.p
+        w1, elbow = self._arm_plane(q[..., 1], q[..., 2])
+        forward = (w1 - p[0]) @ np.cross(w[0], w[1])
+        above = np.cross(w1 - p[1], elbow) @ w[1]
+        A = np.cross(w[3], w[5]) @ w[4]
+        B = w[3] @ w[5] - (w[3] @ w[4]) * (w[4] @ w[5])
+        flip = A * np.cos(q[..., 4]) + B * np.sin(q[..., 4])
+        return forward, above, flip
+
+    def labels(self, q):
+        """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
+        forward, above, flip = self.measures(q)
+        tol = CLIP_TOL * self.scale
+        right = forward >= -tol
+        up = np.where(right, above, -above) > tol * self.scale
+        flipped = np.where(np.abs(flip) > CLIP_TOL, flip > 0, np.cos(q[..., 3]) >= 0)
+        arm = np.where(right, "r", "l")
+        return np.char.add(np.char.add(arm, np.where(up, "u", "d")), np.where(flipped, "f", "n"))
+
+    # ---- the closed form ------------------------------------------------------------------
+
+    def solve(self, T):
+        """All eight solutions of the poses T (N, 4, 4), in the order of CONFIGURATIONS.
+
+        Returns Q (N, 8, 6) in (-pi, pi], NaN where a branch does not reach the pose; the
+        singularity flags (N, 8, 3) (shoulder, elbow, wrist); and the reason code per pose
+        (N,): 0 reached, 1 shoulder offset, 2 out of the arm's reach, 3 wrist orientation.
+        """
+        N = T.shape[0]
+        Q = np.empty((N, 8, 6))
+        flags = np.empty((N, 8, 3), dtype=bool)
+        code = np.empty(N, dtype=int)
+        for start in range(0, N, CHUNK):
+            part = slice(start, start + CHUNK)
+            Q[part], flags[part], code[part] = self._solve(T[part])
+        return Q, flags, code
+
+    def _solve(self, T):
+        # vectors are laid out (3, ...): their components first, so that products with the
+        # fixed axis directions are single BLAS calls
+        w, p, c = self.w, self.p, self.c
+        w1, w2, w4, w5, w6 = w[0], w[1], w[3], w[4], w[5]
+        s3 = 1.0 if w2 @ w[2] > 0 else -1.0  # axis 3 is +-w2
+        N = T.shape[0]
+        G = T @ inv(self.home)
+        RG = G[:, :3, :3]
+        d = (RG @ c + G[:, :3, 3] - p[0]).T  # the wrist centre of the target, from p1
+
+        # joint 1 (subproblem 4): turn the wrist centre by theta = -q1 onto w2 . x = w2 . c
+        along1 = _dot(w1, d)
+        A = _dot(w2, d) - along1 * (w1 @ w2)
+        B = _dot(np.cross(w2, w1), d)
+        C = w2 @ (c - p[0]) - along1 * (w2 @ w1)
+        rho2 = A**2 + B**2
+        excess = rho2 - C**2
+        shoulder_ok = excess >= -CLIP_TOL * self.scale**2
+        forward = np.sqrt(np.maximum(excess, 0.0))
+        phi = np.arctan2(B, A)
+        half = np.arctan2(forward, C)
+        free = rho2 < (CLIP_TOL * self.scale) ** 2  # the wrist centre on axis 1
+        theta = np.stack([phi - half, phi + half], axis=1)  # (N, 2): arm l, r
+        theta = np.where(free[:, None], 0.0, theta)
+        ct, st = np.cos(theta), np.sin(theta)
+        turn1 = _Rotor(w1)
+        # b1 = w1 - p2: the wrist centre at q1 = 0 seen from axis 2, (3, N, 2)
+        b1 = turn1.rotate(np.repeat(d[:, :, None], 2, axis=2), ct, st)
+        b1 += (p[0] - p[1])[:, None, None]
+
+        # joint 3 (subproblem 3): |exp(xi3 q3) c - p2| = |w1 - p2|
+        u3 = c - p[2] - w2 * (w2 @ (c - p[2]))
+        v3 = p[1] - p[2] - w2 * (w2 @ (p[1] - p[2]))
+        lu, lv = np.linalg.norm(u3), np.linalg.norm(v3)
+        delta2 = np.sum(b1**2, axis=0) - (w2 @ (c - p[1])) ** 2
+        cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
+        elbow_ok = np.abs(cosine) <= 1 + CLIP_TOL
+        cosine = np.clip(cosine, -1.0, 1.0)
+        beta = np.arccos(cosine)
+        theta0 = s3 * np.arctan2(np.cross(u3, v3) @ w2, u3 @ v3)
+        q3 = theta0 + s3 * np.stack([-beta, beta], axis=-1)  # (N, 2, 2): arm, candidate
+
+        # joint 2 (subproblem 1): the angle about w2 from a = p3 - p2 + R3 (c - p3) to b1;
+        # a = k0 + cos(q3) k1 + sin(q3) k2, and b1 . (w2 x k) = -m . k with m = w2 x b1
+        c3, s3q = np.cos(s3 * q3), np.sin(s3 * q3)
+        k0 = p[2] - p[1] + w2 * (w2 @ (c - p[2]))
+        k1, k2 = u3, np.cross(w2, u3)
+        m = turn1.cross(w2, b1)
+        dots = [_dot(k, b1)[..., None] for k in (k0, k1, k2)]
+        crosses = [-_dot(k, m)[..., None] for k in (k0, k1, k2)]
+        along = (_dot(w2, b1) * (k0 @ w2))[..., None]
+        q2, c2, s2 = _polar(crosses[0] + c3 * crosses[1] + s3q * crosses[2],
+                            dots[0] + c3 * dots[1] + s3q * dots[2] - along)
+
+        # the elbow label: above = ((w1 - p2) x R2 (p3 - p2)) . w2; the larger sigma*above is 'u'
+        e = p[2] - p[1] - w2 * (w2 @ (p[2] - p[1]))
+        above = c2 * _dot(e, m)[..., None] + s2 * _dot(np.cross(w2, e), m)[..., None]
+        sigma = np.array([-1.0, 1.0])
+        swap = sigma * above[..., 0] < sigma * above[..., 1]  # (N, 2)
+        swap = swap[..., None]
+        q2, c2, s2, q3, c3, s3q = (np.where(swap, v[..., ::-1], v)  # u first, then d
+                                   for v in (q2, c2, s2, q3, c3, s3q))
+        q3 = _wrap(q3)
+
+        # the wrist: Rw = R23^T R1^T RG, R2 R3 = R(w2, q2 + s3 q3); t = Rw w6, b = Rw x6
+        x6 = _unit(np.cross(w5, w6))
+        g = np.stack([RG @ w6, RG @ x6], axis=-1).transpose(1, 0, 2)  # (3, N, 2)
+        g = turn1.rotate(np.repeat(g[:, :, None], 2, axis=2), ct[..., None], st[..., None])
+        c23, s23 = c2 * c3 - s2 * s3q, s2 * c3 + c2 * s3q  # of q2 + s3 q3: turn back by it
+        g = _Rotor(w2).rotate(np.repeat(g[:, :, :, None], 2, axis=3),
+                              c23[..., None], -s23[..., None])
+        t, b = g[..., 0], g[..., 1]  # (3, N, 2, 2)
+        c45, c46, c56 = w4 @ w5, w4 @ w6, w5 @ w6
+        n45 = np.cross(w4, w5)
+        t4, t5, tn, tm = (_dot(v, t) for v in (w4, w5, n45, np.cross(w4, n45)))
+        a = (c45 * c56 - t4) / (c45**2 - 1)
+        bb = (c45 * t4 - c56) / (c45**2 - 1)
+        # gamma^2 = |z_perp|^2 / |n45|^2 - bb^2 with |z_perp| = |t_perp| (no cancellation
+        # of 1 - t4^2 near the wrist singularity)
+        gamma2 = (tn**2 + tm**2) / (n45 @ n45) ** 2 - bb**2
+        wrist_ok = gamma2 >= -CLIP_TOL
+        gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array([1.0, -1.0])  # n, f
+        a, bb, t4, t5, tn, tm = (v[..., None] for v in (a, bb, t4, t5, tn, tm))
+        # q5: about w5 from w6 to z = a w4 + bb w5 + gamma n45; q4: about w4 from z to t
+        n56 = np.cross(w5, w6)
+        # (z . t - (z . w4)(t . w4) written without the cancelling terms)
+        q5, c5, s5 = _polar(a * (w4 @ n56) + gamma * (n45 @ n56),
+                            a * (c46 - c45 * c56) + gamma * (n45 @ w6))
+        q4, c4, s4 = _polar(bb * tn + gamma * tm, bb * (t5 - c45 * t4) + gamma * tn)
+        # the wrist singularity: t on axis 4, q4 free: 'n' takes pi, 'f' takes 0
+        on_axis4 = (1 - t4**2) < CLIP_TOL**2
+        if np.any(on_axis4):
+            free5 = _polar(_dot(n56, t)[..., None], _dot(w6, t)[..., None] - c56 * t5)
+            q5, c5, s5 = (np.where(on_axis4, new, old) for new, old in zip(free5, (q5, c5, s5)))
+            q4 = np.where(on_axis4, np.array([np.pi, 0.0]), q4)
+            c4 = np.where(on_axis4, np.array([-1.0, 1.0]), c4)
+            s4 = np.where(on_axis4, 0.0, s4)
+        # q6: about w6 from x6 to y = R5^T R4^T b, with y . e = b . (R4 R5 e) expanded by
+        # Rodrigues into dot products of b with fixed vectors (no rotated copies of b)
+        def along(e):  # b . R4 R5 e, (N, 2, 2, 2)
+            def turned4(f):  # b . R4 f
+                return (_dot(f, b)[..., None] * c4 + _dot(np.cross(w4, f), b)[..., None] * s4
+                        + _dot(w4, b)[..., None] * (w4 @ f) * (1 - c4))
+            return (turned4(e) * c5 + turned4(np.cross(w5, e)) * s5
+                    + turned4(w5) * (w5 @ e) * (1 - c5))
+        q6 = np.arctan2(along(np.cross(w6, x6)), along(x6))
+
+        # the answer: (N, 8, 6) in the order of CONFIGURATIONS, NaN where not reached
+        shape = (N, 2, 2, 2)
+        Q = np.empty(shape + (6,))
+        Q[..., 0] = _wrap(-theta)[:, :, None, None]
+        Q[..., 1] = q2[..., None]
+        Q[..., 2] = q3[..., None]
+        Q[..., 3], Q[..., 4], Q[..., 5] = q4, q5, q6
+        reached = (shoulder_ok[:, None, None, None] & elbow_ok[:, :, None, None]
+                   & wrist_ok[..., None])
+        if not np.all(reached):
+            Q[~np.broadcast_to(reached, shape)] = np.nan
+        Q = Q.reshape(N, 8, 6)
+        # singularity flags and the reason codes
+        flags = np.empty(shape + (3,), dtype=bool)
+        flags[..., 0] = (forward**2 < SINGULAR_TOL * self.scale**2)[:, None, None, None]
+        flags[..., 1] = (1 - np.abs(cosine) < SINGULAR_TOL)[:, :, None, None]
+        flags[..., 2] = (np.sqrt(np.maximum(gamma2, 0)) * np.linalg.norm(n45)
+                         < SINGULAR_TOL)[..., None]
+        code = np.where(~shoulder_ok, 1, np.where(~elbow_ok.any(axis=1), 2,
+                        np.where(np.all(np.isnan(Q[..., 0]), axis=1), 3, 0)))
+        return Q, flags.reshape(N, 8, 3), code
+
+    def reason(self, T, code):
+        """A sentence for an unreachable pose T (4, 4) with reason code 1, 2 or 3."""
+        w, p, c = self.w, self.p, self.c
+        G = T @ inv(self.home)
+        wc = G[:3, :3] @ c + G[:3, 3]
+        d = wc - p[0]
+        radial = np.linalg.norm(d - (d @ w[0]) * w[0])
+        offset = abs(w[1] @ (c - p[0]))
+        if code == 1:
+            return (f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer than "
+                    f"the shoulder offset {offset:.5f} m")
+        if code == 2:
+            u3 = np.linalg.norm(c - p[2] - w[2] * (w[2] @ (c - p[2])))
+            v3 = np.linalg.norm(p[1] - p[2] - w[2] * (w[2] @ (p[1] - p[2])))
+            along = d @ w[0]
+            A, B = (d - along * w[0]) @ w[1], d @ np.cross(w[1], w[0])
+            C = w[1] @ (c - p[0]) - along * (w[1] @ w[0])
+            half = np.arctan2(np.sqrt(max(A**2 + B**2 - C**2, 0.0)), C)
+            distances = []
+            for theta in (np.arctan2(B, A) - half, np.arctan2(B, A) + half):
+                w1 = p[0] + _rotate(w[0], np.array(theta), d)
+                distances.append(np.sqrt(max(np.sum((w1 - p[1]) ** 2)
+                                             - (w[2] @ (c - p[1])) ** 2, 0)))
+            return (f"the wrist centre is {min(distances):.4f} m from the shoulder axis "
+                    f"in the arm's plane; the arm reaches from {abs(u3 - v3):.4f} m to "
+                    f"{u3 + v3:.4f} m")
+        return "the wrist cannot turn the tool to this orientation"
