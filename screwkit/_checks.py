@@ -1,9 +1,22 @@
 """Input checks shared by every public function of screwkit.
 
 Each check either returns the input converted to the form the caller computes
-with (an exact SymPy matrix, or a float64 NumPy array) or raises a
-``TypeError``/``ValueError`` whose sentence names the argument, what was
-expected and what was given.
+with (an exact SymPy matrix or expression, a float64 NumPy array, a float or an
+int) or raises a ``TypeError``/``ValueError`` whose sentence names the argument,
+what was expected and what was given.
+
+Real numbers are Python ints and floats, NumPy integer and floating scalars and
+arrays, and real SymPy numbers. Refused where a real number is meant: strings
+(even numeric ones such as '0.5'), booleans, complex numbers and None.
+
+>>> as_float_array([1, 2.5], "x")
+array([1. , 2.5])
+>>> as_float_array(["0.5"], "theta")
+Traceback (most recent call last):
+...
+TypeError: theta must be a number or an array of numbers (real ones), got a string '0.5' in a list of length 1
+>>> as_real_scalar(np.int64(3), "steps")
+3.0
 """
 import numbers
 
@@ -13,16 +26,21 @@ import sympy as sp
 #: Tolerance for numeric orthonormality checks of rotation matrices.
 ORTHONORMAL_TOL = 1e-6
 
+_INFINITE = {sp.nan, sp.zoo, sp.oo, -sp.oo}
+
 
 def describe(value):
     """A short description of ``value`` for error messages: its shape or type."""
     if isinstance(value, sp.MatrixBase):
         return f"a SymPy matrix of shape {value.shape}"
     if isinstance(value, np.ndarray):
-        return f"an array of shape {value.shape}"
+        return f"an array of shape {value.shape} and dtype {value.dtype}"
     if isinstance(value, (list, tuple)):
         return f"a {type(value).__name__} of length {len(value)}"
-    return f"{value!r} ({type(value).__name__})"
+    text = repr(value)
+    if len(text) > 80:
+        text = text[:77] + "..."
+    return f"{text} ({type(value).__name__})"
 
 
 def is_symbolic(value):
@@ -36,56 +54,220 @@ def is_symbolic(value):
     return False
 
 
-def as_float_array(value, name):
-    """``value`` as a float64 array; ``TypeError`` if it is not numeric, ``ValueError`` on NaN/inf."""
-    if isinstance(value, (str, bytes)) or value is None:
-        raise TypeError(f"{name} must be a number or an array of numbers, got {describe(value)}")
+# ---- real numbers (NumPy) ---------------------------------------------------------------
+
+def _not_real(entry):
+    """A phrase naming why ``entry`` (one element) is not a real number, or None if it is one."""
+    if entry is None:
+        return "None"
+    if isinstance(entry, (bool, np.bool_)):
+        return f"a boolean {entry!r}"
+    if isinstance(entry, (str, bytes, np.str_, np.bytes_)):
+        return f"a string {str(entry)!r}"
+    if isinstance(entry, sp.Basic):
+        if not isinstance(entry, sp.Expr) or entry.is_Boolean:
+            return f"{entry!r} ({type(entry).__name__})"
+        if entry.free_symbols:
+            return f"the symbolic expression {entry}"
+        if entry.is_extended_real is False:
+            return f"the complex number {entry}"
+        return None
+    if isinstance(entry, numbers.Real):
+        return None
+    if isinstance(entry, numbers.Complex):
+        return f"the complex number {entry!r}"
+    return f"{describe(entry)}"
+
+
+def _first_not_real(value):
+    """The phrase of the first element of a nested list/tuple/object array that is not real."""
+    stack = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, (list, tuple)):
+            stack.extend(reversed(item))
+        elif isinstance(item, np.ndarray):
+            if item.dtype == object:
+                stack.extend(reversed(item.ravel().tolist()))
+            elif item.dtype.kind not in "iuf":
+                return _dtype_phrase(item)
+        else:
+            reason = _not_real(item)
+            if reason is not None:
+                return reason
+    return None
+
+
+_PLAIN = (float, int, np.floating, np.integer)
+
+
+def _plain_numbers(value):
+    """True if every element of a nested sequence is a float or a (non-bool) integer: a fast
+    test (types are collected in C), so that only unusual input is walked element by element."""
     try:
-        array = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(
-            f"{name} must be a number or an array of numbers, got {describe(value)}"
-        ) from None
-    if not np.all(np.isfinite(array)):
-        raise ValueError(f"{name} must be finite, got a value that is NaN or infinite: {value!r}")
+        elements = np.asarray(value, dtype=object).ravel().tolist()
+    except ValueError:
+        return False
+    return all(issubclass(kind, _PLAIN) and kind is not bool for kind in set(map(type, elements)))
+
+
+def _dtype_phrase(array):
+    kind = {"b": "booleans", "c": "complex numbers", "U": "strings", "S": "bytes",
+            "M": "dates", "m": "time deltas", "V": "raw records"}.get(array.dtype.kind, "")
+    return f"an array of {kind or array.dtype} (dtype {array.dtype})"
+
+
+def as_float_array(value, name):
+    """``value`` as a float64 array of real numbers (any shape, empty allowed).
+
+    ``TypeError`` for strings, booleans, complex numbers, None or other objects,
+    ``ValueError`` for a ragged nested list or an entry that is NaN or infinite.
+    """
+    if isinstance(value, np.ndarray) and value.dtype.kind in "iuf":
+        array = value.astype(float, copy=False)
+    else:
+        if isinstance(value, (list, tuple, np.ndarray)):
+            reason = None if _plain_numbers(value) else _first_not_real(value)
+        else:
+            reason = _not_real(value)
+        if reason is not None:
+            where = "" if not isinstance(value, (list, tuple)) else f" in {describe(value)}"
+            raise TypeError(
+                f"{name} must be a number or an array of numbers (real ones), got {reason}{where}")
+        try:
+            array = np.asarray(value, dtype=float)
+        except ValueError:
+            raise ValueError(
+                f"{name} must be a rectangular array of real numbers (rows of equal length), "
+                f"got {describe(value)} with rows of different lengths") from None
+        except TypeError:
+            raise TypeError(
+                f"{name} must be a number or an array of numbers (real ones), got {describe(value)}"
+            ) from None
+    check_finite(array, name)
     return array
 
 
+def check_finite(array, name):
+    """Raise ``ValueError`` naming the first NaN or infinite entry of the float ``array``."""
+    finite = np.isfinite(array)
+    if not finite.all():
+        index = tuple(int(i) for i in np.argwhere(~finite)[0])
+        where = f" at index {index}" if index else ""
+        raise ValueError(f"{name} must be finite, got {array[index]}{where}")
+    return array
+
+
+def as_real_scalar(value, name):
+    """One finite real number as a Python float (NumPy integers and 0-d arrays accepted)."""
+    array = as_float_array(value, name)
+    if array.shape != ():
+        raise TypeError(f"{name} must be a single real number, got {describe(value)}")
+    return float(array)
+
+
+def check_positive(value, name, allow_zero=False):
+    """One finite real number > 0 (or >= 0 with ``allow_zero``), as a float."""
+    number = as_real_scalar(value, name)
+    if number < 0 or (number == 0 and not allow_zero):
+        expected = "a number >= 0" if allow_zero else "a positive number"
+        raise ValueError(f"{name} must be {expected}, got {number!r}")
+    return number
+
+
+def check_integer(value, name, minimum=None):
+    """One integer (Python or NumPy; not a bool or a float) >= ``minimum``, as an int."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {describe(value)}")
+    if minimum is not None and value < minimum:
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {int(value)}")
+    return int(value)
+
+
+def check_option(value, name, options):
+    """``value`` if it is one of ``options`` (strings or None), else a ``ValueError`` naming them."""
+    if isinstance(value, (str, type(None))) and value in options:
+        return value
+    listed = ", ".join(repr(o) for o in options)
+    error = ValueError if isinstance(value, (str, type(None))) else TypeError
+    raise error(f"{name} must be one of {listed}, got {describe(value)}")
+
+
+def check_chain(value, name="chain"):
+    """``value`` if it is a screwkit Chain, else a ``TypeError`` naming ``name``."""
+    from .chains import Chain   # here, not at the top: chains imports this module
+
+    if not isinstance(value, Chain):
+        raise TypeError(
+            f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got {describe(value)}")
+    return value
+
+
+def check_shape(array, name, shape):
+    """Require ``array.shape`` to end with ``shape`` (leading axes are a batch)."""
+    tail = array.shape[array.ndim - len(shape):] if array.ndim >= len(shape) else None
+    if tail != tuple(shape):
+        expected = " x ".join(str(s) for s in shape)
+        raise ValueError(
+            f"{name} must have shape ({expected}) or (N, {expected}) for a batch, "
+            f"got shape {array.shape}"
+        )
+    return array
+
+
+# ---- exact numbers (SymPy) --------------------------------------------------------------
+
 def as_sympy_matrix(value, name, shape):
-    """``value`` as an exact SymPy matrix of the given ``shape``."""
+    """``value`` as an exact SymPy matrix of the given ``shape`` (a row is taken as a column).
+
+    Entries must be real numbers or SymPy expressions; strings, booleans, complex
+    numbers (such as ``sympy.I``) and non-finite values are refused.
+    """
     if isinstance(value, sp.MatrixBase):
         matrix = value
     else:
+        if value is None or isinstance(value, (str, bytes, bool, numbers.Number, sp.Basic)):
+            raise TypeError(f"{name} must be a matrix of shape {shape}, got {describe(value)}")
         if _contains_string(value):
-            raise TypeError(f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
+            raise TypeError(
+                f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
         try:
             matrix = sp.Matrix(value)
-        except (TypeError, ValueError, sp.SympifyError):
-            raise TypeError(f"{name} must be a matrix of shape {shape}, got {describe(value)}") from None
+        except (TypeError, ValueError, sp.SympifyError, AttributeError):
+            raise TypeError(
+                f"{name} must be a matrix of shape {shape}, got {describe(value)}") from None
     if matrix.shape != shape and not (shape[1] == 1 and matrix.shape == (1, shape[0])):
         raise ValueError(f"{name} must have shape {shape}, got {describe(matrix)}")
     entries = matrix.flat()
     for entry in entries:
-        if not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or entry in _INFINITE:
-            raise ValueError(f"{name} must be finite, got an entry equal to {entry}")
+        _check_exact_entry(entry, name)
     return sp.Matrix(shape[0], shape[1], [_exact_if_integral(e) for e in entries])
 
 
-_INFINITE = {sp.nan, sp.zoo, sp.oo, -sp.oo}
+def _check_exact_entry(entry, name):
+    if not isinstance(entry, sp.Expr) or entry.is_Boolean:
+        raise TypeError(f"{name} must hold numbers or SymPy expressions, got {entry!r}")
+    if entry in _INFINITE or not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise ValueError(f"{name} must be finite, got an entry equal to {entry}")
+    if entry.is_number and entry.is_extended_real is False:
+        raise TypeError(f"{name} must hold real numbers, got the complex number {entry}")
 
 
 def as_sympy_scalar(value, name):
-    """``value`` as one exact, finite SymPy number or expression."""
-    if isinstance(value, (str, bytes)) or value is None:
+    """``value`` as one exact, finite, real SymPy number or expression."""
+    if isinstance(value, (str, bytes, bool, np.bool_)) or value is None:
         raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
     try:
         entry = sp.sympify(value, strict=True)
     except sp.SympifyError:
-        raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}") from None
-    if not isinstance(entry, sp.Expr):
+        raise TypeError(
+            f"{name} must be a number or a SymPy expression, got {describe(value)}") from None
+    if not isinstance(entry, sp.Expr) or entry.is_Boolean:
         raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
     if entry in _INFINITE or not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise ValueError(f"{name} must be finite, got {entry}")
+    if entry.is_number and entry.is_extended_real is False:
+        raise TypeError(f"{name} must be a real number, got the complex number {entry}")
     return _exact_if_integral(entry)
 
 
@@ -106,31 +288,19 @@ def _exact_if_integral(entry):
     return entry
 
 
-def check_shape(array, name, shape):
-    """Require ``array.shape`` to end with ``shape`` (leading axes are a batch)."""
-    tail = array.shape[array.ndim - len(shape):] if array.ndim >= len(shape) else None
-    if tail != tuple(shape):
-        expected = " x ".join(str(s) for s in shape)
-        raise ValueError(
-            f"{name} must have shape ({expected}) or (N, {expected}) for a batch, "
-            f"got shape {array.shape}"
-        )
-    return array
-
-
 def as_scalar_or_batch(value, name):
-    """An angle or distance: a SymPy expression, or a float64 array of any shape."""
+    """An angle or distance: a real SymPy expression, or a float64 array of any shape."""
     if is_symbolic(value):
         if isinstance(value, (list, tuple, np.ndarray, sp.MatrixBase)):
             raise TypeError(f"{name} must be a single SymPy expression, got {describe(value)}")
-        expr = sp.sympify(value)
-        if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-            raise ValueError(f"{name} must be finite, got {expr}")
-        return expr
-    if isinstance(value, bool) or not isinstance(value, (numbers.Real, list, tuple, np.ndarray)):
+        return as_sympy_scalar(value, name)
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+            value, (numbers.Real, list, tuple, np.ndarray)):
         raise TypeError(f"{name} must be a real number or an array of them, got {describe(value)}")
     return as_float_array(value, name)
 
+
+# ---- rotations and transforms -----------------------------------------------------------
 
 def check_rotation(rotation, name="R"):
     """A rotation matrix: shape (3, 3) or (N, 3, 3), orthonormal, determinant +1.
@@ -156,9 +326,11 @@ def _sample_numeric(matrix):
 
 
 def _check_rotation_numeric(R, name):
+    if R.size == 0:
+        return
     gram = np.swapaxes(R, -1, -2) @ R
     deviation = np.max(np.abs(gram - np.eye(3)))
-    if deviation > ORTHONORMAL_TOL:
+    if not deviation <= ORTHONORMAL_TOL:
         raise ValueError(
             f"{name} must be a rotation matrix (orthonormal columns), "
             f"but R^T R differs from the identity by {deviation:.3g}"
@@ -181,6 +353,8 @@ def check_transform(transform, name="T"):
         return T
     T = check_shape(as_float_array(transform, name), name, (4, 4))
     if not np.allclose(T[..., 3, :], [0.0, 0.0, 0.0, 1.0], atol=1e-12):
-        raise ValueError(f"{name} must have last row [0, 0, 0, 1], got {T[..., 3, :].tolist()}")
+        bad = T[..., 3, :].reshape(-1, 4)
+        first = bad[~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=1e-12), axis=-1)][0]
+        raise ValueError(f"{name} must have last row [0, 0, 0, 1], got {first.tolist()}")
     check_rotation(T[..., :3, :3], f"the rotation block of {name}")
     return T

@@ -225,7 +225,8 @@ def animation_html(animation):
     from matplotlib.animation import Animation
 
     if not isinstance(animation, Animation):
-        raise TypeError(f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}")
+        raise TypeError(
+            f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}")
     html = re.sub(r'<link rel="stylesheet"\s+href="[^"]*font-awesome[^"]*">', "", animation.to_jshtml())
     for icon, text in _PLAYER_ICONS.items():
         html = html.replace(f'<i class="{icon}"></i>', text)

@@ -23,8 +23,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import as_float_array, describe
-from .chains import Chain, Joint
+from ._checks import (
+    as_float_array,
+    as_real_scalar,
+    check_chain,
+    check_integer,
+    check_option,
+    check_positive,
+    describe,
+)
+from .chains import Joint
 
 __all__ = ["Path", "circle", "line", "timing", "planar_kinematics", "manipulability_gradient",
            "pseudo_inverse", "start_configuration", "Resolution", "resolve"]
@@ -34,15 +42,44 @@ __all__ = ["Path", "circle", "line", "timing", "planar_kinematics", "manipulabil
 
 @dataclass(frozen=True)
 class Path:
-    """A sampled path of the end effector: t (steps,) s, position and velocity (steps, 2) in m, m/s."""
+    """A sampled path of the end effector: t (steps,) s, position and velocity (steps, 2) in m, m/s.
+
+    The samples are uniform in time (Euler steps of one dt), at least two, and the arrays are
+    copied, so changing the caller's arrays later does not change the path.
+    """
 
     t: np.ndarray
     position: np.ndarray
     velocity: np.ndarray
     name: str = "path"
 
+    def __post_init__(self):
+        t = np.array(as_float_array(self.t, "t"))
+        if t.ndim != 1 or t.size < 2:
+            raise ValueError(f"t must be a 1-D array of at least two sample times (s), got shape {t.shape}")
+        steps = np.diff(t)
+        dt = steps[0]
+        if dt <= 0:
+            raise ValueError(f"t must increase: the time step dt must be positive, got dt = {dt!r} s")
+        if not np.allclose(steps, dt, rtol=1e-9, atol=0):
+            worst = int(np.argmax(np.abs(steps - dt)))
+            raise ValueError(
+                f"t must be uniform (one time step dt = {dt:.6g} s), but the step after sample "
+                f"{worst} is {steps[worst]:.6g} s")
+        for field in ("position", "velocity"):
+            array = np.array(as_float_array(getattr(self, field), field))
+            if array.shape != (t.size, 2):
+                raise ValueError(
+                    f"{field} must have shape ({t.size}, 2), one planar point per sample of t, "
+                    f"got shape {array.shape}")
+            object.__setattr__(self, field, array)
+        if not isinstance(self.name, str):
+            raise TypeError(f"name must be a string, got {describe(self.name)}")
+        object.__setattr__(self, "t", t)
+
     @property
     def dt(self):
+        """The time step (s) between samples."""
         return float(self.t[1] - self.t[0])
 
 
@@ -50,19 +87,31 @@ def timing(t, duration, kind="smooth"):
     """The path parameter s(t) in [0, 1] and its rate ds/dt.
 
     'smooth': the quintic s = 10 u^3 - 15 u^4 + 6 u^5 (u = t / duration), which starts and ends
-    at rest with zero acceleration; 'constant': s = u.
+    at rest with zero acceleration; 'constant': s = u. ``t`` (s) must lie in [0, duration].
     """
+    kind = check_option(kind, "kind", ("smooth", "constant"))
+    duration = check_positive(duration, "duration")
+    t = as_float_array(t, "t")
+    if t.size and (t.min() < 0 or t.max() > duration * (1 + 1e-9)):
+        raise ValueError(f"t must lie in [0, duration] = [0, {duration:g}] s, "
+                         f"got values from {t.min():g} to {t.max():g} s")
     u = t / duration
     if kind == "smooth":
         return 10 * u**3 - 15 * u**4 + 6 * u**5, (30 * u**2 - 60 * u**3 + 30 * u**4) / duration
     if kind == "constant":
         return u, np.full_like(u, 1.0 / duration)
-    raise ValueError(f"timing must be 'smooth' or 'constant', got {kind!r}")
+
+
+#: The most time steps a path may have (its arrays then take about 0.5 GB).
+MAX_SAMPLES = 10_000_000
 
 
 def _samples(duration, dt):
-    duration = _positive(duration, "duration")
-    dt = _positive(dt, "dt")
+    duration = check_positive(duration, "duration")
+    dt = check_positive(dt, "dt")
+    if duration / dt > MAX_SAMPLES:
+        raise ValueError(f"duration / dt must be at most {MAX_SAMPLES:,} steps, got {duration / dt:.3g} "
+                         f"(duration={duration} s, dt={dt} s); use a larger dt")
     steps = int(round(duration / dt))
     if steps < 1 or not np.isclose(steps * dt, duration, rtol=1e-9, atol=0):
         raise ValueError(f"duration must be a whole number of steps dt, got duration={duration} and dt={dt}")
@@ -71,8 +120,9 @@ def _samples(duration, dt):
 
 def circle(center, radius, duration, dt, timing_kind="smooth"):
     """A circle once counter-clockwise, from center + (radius, 0), over ``duration`` seconds."""
+    check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     center = _point(center, "center")
-    radius = _positive(radius, "radius")
+    radius = check_positive(radius, "radius")
     t, duration = _samples(duration, dt)
     s, ds = timing(t, duration, timing_kind)
     angle = 2 * np.pi * s
@@ -83,6 +133,7 @@ def circle(center, radius, duration, dt, timing_kind="smooth"):
 
 def line(start, end, duration, dt, timing_kind="smooth"):
     """A straight line from ``start`` to ``end`` (points (2,), m) over ``duration`` seconds."""
+    check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     start, end = _point(start, "start"), _point(end, "end")
     if np.allclose(start, end):
         raise ValueError(f"start and end must differ, got {start.tolist()} twice")
@@ -98,24 +149,21 @@ def _point(value, name):
     return point
 
 
-def _positive(value, name):
-    number = as_float_array(value, name)
-    if number.shape != () or number <= 0:
-        raise ValueError(f"{name} must be a positive number, got {value!r}")
-    return float(number)
-
-
 # ---- planar kinematics ---------------------------------------------------------------------
 
 def _lengths(arm):
     """The link lengths of a planar arm (a Chain of revolute links with d = 0 and alpha = 0)."""
-    if not isinstance(arm, Chain):
-        raise TypeError(f"arm must be a planar Chain (sk.robots.planar), got {describe(arm)}")
-    planar = all(link.joint is Joint.REVOLUTE and float(link.d) == 0 and float(link.alpha) == 0
-                 and float(link.offset) == 0 for link in arm.links)
+    check_chain(arm, "arm")
+    try:
+        planar = all(link.joint is Joint.REVOLUTE and float(link.d) == 0 and float(link.alpha) == 0
+                     and float(link.offset) == 0 for link in arm.links)
+        lengths = np.array([float(link.a) for link in arm.links])
+    except (TypeError, ValueError):     # a symbolic link length
+        planar = False
     if not planar or not np.allclose(arm.tool, np.eye(4)):
-        raise ValueError(f"arm must be a planar arm of revolute links about z (sk.robots.planar), got {arm!r}")
-    return np.array([float(link.a) for link in arm.links])
+        raise ValueError(
+            f"arm must be a planar arm of revolute links about z (sk.robots.planar), got {arm!r}")
+    return lengths
 
 
 def _base_2d(arm):
@@ -131,7 +179,9 @@ def planar_kinematics(lengths, q):
 
     q (n,) -> points (n + 1, 2) (the base, each joint, the end effector) and J (2, n);
     a batch (N, n) -> (N, n + 1, 2) and (N, 2, n). Column i of J is z x (p - o_i).
+    ``lengths`` (n,) in m, q in rad.
     """
+    lengths, q = _lengths_and_q(lengths, q)
     angles = np.cumsum(q, axis=-1)
     links = lengths[:, None] * np.stack([np.cos(angles), np.sin(angles)], axis=-1)
     points = np.concatenate([np.zeros(links.shape[:-2] + (1, 2)), np.cumsum(links, axis=-2)], axis=-2)
@@ -149,6 +199,19 @@ def manipulability_gradient(lengths, q):
     Where w = 0 the gradient is returned as 0.
     """
     return _gradient(planar_kinematics(lengths, q)[0])
+
+
+def _lengths_and_q(lengths, q):
+    lengths = as_float_array(lengths, "lengths")
+    if lengths.ndim != 1 or lengths.size < 1:
+        raise ValueError(f"lengths must be a 1-D array of link lengths (m), got shape {lengths.shape}")
+    if np.any(lengths < 0):
+        raise ValueError(f"lengths must be >= 0 (m), got {lengths.tolist()}")
+    q = as_float_array(q, "q")
+    if q.ndim not in (1, 2) or q.shape[-1] != lengths.size:
+        raise ValueError(f"q must have {lengths.size} entries, one per length, shape ({lengths.size},) "
+                         f"or (N, {lengths.size}), got shape {q.shape}")
+    return lengths, q
 
 
 def _gradient(points):
@@ -181,6 +244,11 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
     lambda^2 = damping^2 (1 - (sigma_min / singular_region)^2) inside the singular region
     sigma_min < singular_region (m): damped least squares that fades in near a singularity.
     """
+    J = as_float_array(J, "J")
+    if J.ndim != 2 or J.shape[0] != 2 or J.shape[1] < 1:
+        raise ValueError(f"J must be a planar Jacobian of shape (2, n), got shape {J.shape}")
+    damping = check_positive(damping, "damping", allow_zero=True)
+    singular_region = check_positive(singular_region, "singular_region")
     A = J @ J.T
     if damping > 0:
         half_trace, det = 0.5 * (A[0, 0] + A[1, 1]), A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
@@ -198,19 +266,29 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
 
 def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
     """Joint angles that put the end effector at ``point`` (2,), by Newton steps with the
-    pseudo-inverse from ``q_guess`` (n,); the nearest solution to the guess, roughly."""
+    pseudo-inverse from ``q_guess`` (n,); the nearest solution to the guess, roughly.
+
+    ``tol`` (m) is the distance accepted, ``max_iterations`` (>= 1) the Newton steps allowed; a
+    point out of reach, or one not reached in time, is a ValueError with the residual.
+    """
     lengths = _lengths(arm)
-    q = arm.check_q(q_guess, "q_guess").copy()
+    q = np.array(arm.check_q(q_guess, "q_guess"))       # a copy: the caller's array stays
+    if q.ndim != 1:
+        raise ValueError(f"q_guess must be one configuration of shape ({arm.n},), got shape {q.shape}")
+    point = _point(point, "point")
+    tol = check_positive(tol, "tol")
+    max_iterations = check_integer(max_iterations, "max_iterations", minimum=1)
     R, origin = _base_2d(arm)
-    target = R.T @ (_point(point, "point") - origin)
-    for _ in range(max_iterations):
+    target = R.T @ (point - origin)
+    for _ in range(max_iterations + 1):
         points, J = planar_kinematics(lengths, q)
-        error = target - points[-1]
-        if np.linalg.norm(error) < tol:
+        error = np.linalg.norm(target - points[-1])
+        if error < tol:
             return q
-        q += pseudo_inverse(J, damping=0.01) @ error
-    raise ValueError(f"no configuration found that reaches point {np.round(point, 6).tolist()} "
-                     f"from q_guess; the residual is {np.linalg.norm(error):.3g} m")
+        q += pseudo_inverse(J, damping=0.01) @ (target - points[-1])
+    raise ValueError(f"point must be reachable from q_guess: no configuration found that reaches "
+                     f"point {np.round(point, 6).tolist()} in {max_iterations} iterations, got a "
+                     f"residual of {error:.3g} m")
 
 
 @dataclass(frozen=True)
@@ -247,7 +325,10 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
         the push's length is capped at ``max_rate`` rad/s).
 
     A path that leaves the reachable annulus, a q0 of the wrong length, or a q0 whose end effector
-    is more than ``start_tolerance`` (m) from the path's start is refused with a ValueError.
+    is more than ``start_tolerance`` (m) from the path's start is refused with a ValueError; so is
+    a q0 outside the arm's joint limits when ``joint_limits`` is 'clamp' or 'avoid'. Gains are
+    finite real numbers: ``null_space_gain`` of either sign (negative lowers w), the others >= 0;
+    ``max_rate`` and ``start_tolerance`` positive.
     """
     lengths = _lengths(arm)
     if not isinstance(path, Path):
@@ -255,11 +336,23 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     q = arm.check_q(q0, "q0")
     if q.ndim != 1:
         raise ValueError(f"q0 must be one configuration of shape ({arm.n},), got shape {q.shape}")
-    if joint_limits not in (None, "clamp", "avoid"):
-        raise ValueError(f"joint_limits must be None, 'clamp' or 'avoid', got {joint_limits!r}")
+    joint_limits = check_option(joint_limits, "joint_limits", (None, "clamp", "avoid"))
+    null_space_gain = as_real_scalar(null_space_gain, "null_space_gain")
+    feedback_gain = check_positive(feedback_gain, "feedback_gain", allow_zero=True)
+    damping = check_positive(damping, "damping", allow_zero=True)
+    limit_gain = check_positive(limit_gain, "limit_gain", allow_zero=True)
+    max_rate = check_positive(max_rate, "max_rate")
+    start_tolerance = check_positive(start_tolerance, "start_tolerance")
     dt = path.dt
-    if not 0 <= feedback_gain * dt < 2:
-        raise ValueError(f"feedback_gain * dt must be in [0, 2) for a stable loop, got {feedback_gain} * {dt}")
+    if not feedback_gain * dt < 2:
+        raise ValueError(
+            f"feedback_gain * dt must be in [0, 2) for a stable loop, got {feedback_gain} * {dt}")
+    if joint_limits is not None and not arm.within_limits(q):
+        outside = [i for i in range(arm.n) if not arm.qlim[i, 0] <= q[i] <= arm.qlim[i, 1]]
+        i = outside[0]
+        raise ValueError(
+            f"q0 must lie within the arm's joint limits when joint_limits={joint_limits!r}, but "
+            f"joint {i + 1} is {q[i]:.4f} rad, outside [{arm.qlim[i, 0]:.4f}, {arm.qlim[i, 1]:.4f}]")
     R, origin = _base_2d(arm)
     target = (path.position - origin) @ R                   # the path in the arm's base frame
     velocity = path.velocity @ R
@@ -267,9 +360,10 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     start = planar_kinematics(lengths, q)[0][-1]
     if np.linalg.norm(start - target[0]) > start_tolerance:
         raise ValueError(
-            f"q0 puts the end effector at {np.round(start @ R.T + origin, 4).tolist()} m, "
-            f"{np.linalg.norm(start - target[0]):.4f} m from the path's start "
-            f"{np.round(path.position[0], 4).tolist()} (start_tolerance = {start_tolerance} m); "
+            f"q0 must put the end effector within start_tolerance = {start_tolerance} m of the "
+            f"path's start {np.round(path.position[0], 4).tolist()}, got "
+            f"{np.round(start @ R.T + origin, 4).tolist()} m, "
+            f"{np.linalg.norm(start - target[0]):.4f} m from the path's start; "
             "use start_configuration(arm, path.position[0], q_guess)")
     low, high = arm.qlim[:, 0], arm.qlim[:, 1]
     finite = np.isfinite(low) & np.isfinite(high)
@@ -323,6 +417,7 @@ def _check_reachable(lengths, target, path):
     if outside.size:
         i = outside[0]
         raise ValueError(
-            f"the path leaves the reachable annulus {inner:.4f} m <= |p| <= {outer:.4f} m around the arm's base: "
-            f"{outside.size} of {len(radius)} samples, the first at t = {path.t[i]:.3f} s, "
+            f"path must stay in the reachable annulus {inner:.4f} m <= |p| <= {outer:.4f} m around "
+            f"the arm's base, got {outside.size} of {len(radius)} samples outside it (the path "
+            f"leaves the reachable annulus), the first at t = {path.t[i]:.3f} s, "
             f"point {np.round(path.position[i], 4).tolist()} m, |p| = {radius[i]:.4f} m")

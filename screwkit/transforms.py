@@ -13,13 +13,17 @@ Matrix([
 >>> rotz([0.0, 0.1]).shape
 (2, 3, 3)
 """
+import numbers
+
 import numpy as np
 import sympy as sp
 
 from ._checks import (
     as_float_array,
+    as_real_scalar,
     as_scalar_or_batch,
     as_sympy_matrix,
+    as_sympy_scalar,
     check_rotation,
     check_shape,
     check_transform,
@@ -118,8 +122,13 @@ def rot_axis(axis, theta):
 
     Parameters
     ----------
-    axis : array-like, shape (3,), non-zero (it is normalised)
+    axis : array-like, shape (3,), non-zero (it is normalised), or a SymPy 3-vector
     theta : float, array of shape (N,), or a SymPy expression
+
+    Returns
+    -------
+    sympy.Matrix (3, 3) if ``axis`` or ``theta`` is symbolic (a float angle then becomes a
+    SymPy Float), else ndarray, shape (3, 3) or (N, 3, 3)
 
     >>> rot_axis([0, 0, 2], np.pi / 2).round(12)
     array([[ 0., -1.,  0.],
@@ -127,14 +136,28 @@ def rot_axis(axis, theta):
            [ 0.,  0.,  1.]])
     """
     w = _unit_vector(axis, "axis")
+    if isinstance(w, sp.MatrixBase) or is_symbolic(theta):
+        theta = _exact_angle(theta, "theta")
+        W = sp.Matrix(skew(w))
+        return sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
     theta = as_scalar_or_batch(theta, "theta")
     W = skew(w)
-    if isinstance(W, sp.MatrixBase) or isinstance(theta, sp.Basic):
-        W = sp.Matrix(W)
-        return sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
     s = np.sin(theta)[..., None, None]
     c = np.cos(theta)[..., None, None]
     return np.eye(3) + s * W + (1.0 - c) * (W @ W)
+
+
+def _exact_angle(theta, name):
+    """One angle for an exact (SymPy) result: a float becomes a SymPy Float, a batch is refused."""
+    if isinstance(theta, (list, tuple, np.ndarray, sp.MatrixBase)):
+        raise TypeError(
+            f"{name} must be a single number or SymPy expression when the result is symbolic "
+            f"(SymPy in, SymPy out), got {describe(theta)}; for a batch of angles pass numbers")
+    return as_sympy_scalar(theta, name)
+
+
+#: A numeric axis shorter than this (m, or unitless) is taken as zero and refused.
+ZERO_AXIS = 1e-12
 
 
 def _unit_vector(value, name):
@@ -146,10 +169,19 @@ def _unit_vector(value, name):
         return v if norm_squared == 1 else v / sp.sqrt(norm_squared)
     if v.ndim != 1:
         raise ValueError(f"{name} must be a single 3-vector of shape (3,), got shape {v.shape}")
-    norm = np.linalg.norm(v)
-    if norm < 1e-12:
-        raise ValueError(f"{name} must be a non-zero 3-vector, got {v.tolist()}")
-    return v / norm
+    norm = _norm(v)
+    if norm < ZERO_AXIS:
+        raise ValueError(
+            f"{name} must be a non-zero 3-vector (norm at least {ZERO_AXIS:g}), got {v.tolist()}")
+    scale = np.abs(v).max()
+    u = v / scale     # scaled first: the norm of [1e200, 0, 0] must not overflow to inf
+    return u / np.linalg.norm(u)
+
+
+def _norm(v):
+    """|v| of a 1-D float array without overflow or underflow in the squares."""
+    scale = np.abs(v).max()
+    return 0.0 if scale == 0 else float(scale * np.linalg.norm(v / scale))
 
 
 def transl(*p):
@@ -163,9 +195,17 @@ def transl(*p):
     if len(p) == 3:
         p = [p[0], p[1], p[2]]
         if not is_symbolic(p):
-            p = np.stack(np.broadcast_arrays(*(as_float_array(x, "p") for x in p)), -1)
+            x, y, z = (as_float_array(v, n) for v, n in zip(p, "xyz"))
+            try:
+                p = np.stack(np.broadcast_arrays(x, y, z), -1)
+            except ValueError:
+                raise ValueError(
+                    "x, y and z must be numbers or batches of one length, got shapes "
+                    f"{x.shape}, {y.shape} and {z.shape}") from None
     elif len(p) == 1:
         p = p[0]
+        if p is None:
+            raise TypeError("p must be a 3-vector (x, y, z) or a batch (N, 3), got None")
     else:
         raise TypeError(f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} arguments")
     return homogeneous(None, p)
@@ -189,6 +229,12 @@ def homogeneous(R=None, p=None):
         return sp.Matrix(sp.BlockMatrix([[sp.Matrix(R), p], [sp.zeros(1, 3), sp.ones(1, 1)]]))
     R = np.eye(3) if R is None else check_rotation(R, "R")
     p = np.zeros(3) if p is None else _vector3(p, "p")
+    try:
+        np.broadcast_shapes(R.shape[:-2], p.shape[:-1])
+    except ValueError:
+        raise ValueError(
+            "R and p must be one of each or batches of one length, got R of shape "
+            f"{R.shape} and p of shape {p.shape}") from None
     return _assemble(R, p)
 
 
@@ -231,13 +277,13 @@ def twist_from_axis(s, r, h):
     >>> twist_from_axis([0, 0, 1], [1, 0, 0], 0)
     array([ 0.,  0.,  1.,  0., -1.,  0.])
     """
-    prismatic = h is sp.oo or (not is_symbolic(h) and np.isposinf(_pitch_as_float(h)))
+    prismatic = _is_translation(h)
     if is_symbolic(s) or is_symbolic(r) or (is_symbolic(h) and not prismatic):
         s = _unit_vector(as_sympy_matrix(s, "s", (3, 1)), "s")
         if prismatic:
             return sp.Matrix.vstack(sp.zeros(3, 1), s)
         r = as_sympy_matrix(r, "r", (3, 1))
-        h = as_sympy_matrix([h], "h", (1, 1))[0]
+        h = _pitch(h, exact=True)
         return sp.Matrix.vstack(s, r.cross(s) + h * s)
     s = _unit_vector(s, "s")
     if prismatic:
@@ -245,21 +291,30 @@ def twist_from_axis(s, r, h):
     r = _vector3(r, "r")
     if r.ndim != 1:
         raise ValueError(f"r must be a single point of shape (3,), got shape {r.shape}")
-    h = _pitch_as_float(h)
-    if np.isinf(h):
-        raise ValueError("h must be finite or +sympy.oo (a translation), got -inf")
+    h = _pitch(h, exact=False)
     return np.concatenate([s, np.cross(r, s) + h * s])
 
 
-def _pitch_as_float(h):
-    """The pitch as a float, allowing +inf (a prismatic joint) but not NaN."""
+_PITCH = "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
+
+
+def _is_translation(h):
+    """True for the pitch of a pure translation: sympy.oo or a float +inf."""
+    if h is sp.oo:
+        return True
+    return (isinstance(h, (numbers.Real, np.ndarray)) and not isinstance(h, (bool, np.bool_))
+            and np.ndim(h) == 0 and np.asarray(h).dtype.kind in "iuf"
+            and bool(np.isposinf(h)))
+
+
+def _pitch(h, exact):
+    """A finite pitch (m/rad): a SymPy expression if ``exact``, else a float."""
     try:
-        value = float(h)
-    except (TypeError, ValueError):
-        raise TypeError(f"h must be a pitch: a number, or sympy.oo for a translation, got {describe(h)}") from None
-    if np.isnan(value):
-        raise ValueError("h must be a pitch: a number, or sympy.oo for a translation, got NaN")
-    return value
+        return as_sympy_scalar(h, "h") if exact else as_real_scalar(h, "h")
+    except TypeError:
+        raise TypeError(f"{_PITCH}, got {describe(h)}") from None
+    except ValueError:
+        raise ValueError(f"{_PITCH}, got {h!r}") from None
 
 
 def exp_twist(twist, theta):
@@ -287,17 +342,21 @@ def exp_twist(twist, theta):
     """
     if is_symbolic(twist) or is_symbolic(theta):
         xi = as_sympy_matrix(twist, "twist", (6, 1))
-        theta = as_scalar_or_batch(theta, "theta")
-        return _exp_twist_symbolic(xi, sp.sympify(theta))
+        return _exp_twist_symbolic(xi, _exact_angle(theta, "theta"))
     xi = as_float_array(twist, "twist")
     if xi.shape != (6,):
         raise ValueError(f"twist must have shape (6,), ordered [w; v], got shape {xi.shape}")
     theta = as_scalar_or_batch(theta, "theta")
     w, v = xi[:3], xi[3:]
-    norm = np.linalg.norm(w)
-    if norm < 1e-12:
-        return _assemble(np.eye(3), theta[..., None] * v)
-    w, v, theta = w / norm, v / norm, theta * norm
+    norm = _norm(w)
+    if norm < ZERO_AXIS:
+        with np.errstate(over="ignore"):
+            p = theta[..., None] * v
+        _check_finite_product(p, "twist * theta")
+        return _assemble(np.eye(3), p)
+    with np.errstate(over="ignore"):
+        w, v, theta = w / norm, v / norm, theta * norm
+    _check_finite_product(theta, "|w| * theta")
     W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
     W2 = W @ W
     s = np.sin(theta)[..., None, None]
@@ -305,8 +364,17 @@ def exp_twist(twist, theta):
     t = theta[..., None, None]
     R = np.eye(3) + s * W + c1 * W2
     # p = G v with G = I theta + (1 - cos) [w] + (theta - sin) [w]^2, applied to v directly
-    p = t[..., 0] * v + c1[..., 0] * (W @ v) + (t - s)[..., 0] * (W2 @ v)
+    with np.errstate(over="ignore", invalid="ignore"):
+        p = t[..., 0] * v + c1[..., 0] * (W @ v) + (t - s)[..., 0] * (W2 @ v)
+    _check_finite_product(p, "twist * theta")
     return _assemble(R, p)
+
+
+def _check_finite_product(value, what):
+    """Finite inputs whose product overflows give a clear error, not a silent inf or NaN."""
+    if not np.all(np.isfinite(value)):
+        raise ValueError(
+            f"{what} overflows float64: twist and theta must be far below 1e308 in size")
 
 
 def _exp_twist_symbolic(xi, theta):

@@ -1,6 +1,10 @@
-"""Workspaces by sweeping joints over grids (vectorised: one batched FK for the whole grid).
+"""Workspaces by sweeping joints over grids, computed in chunks so memory stays bounded.
 
 Joints are numbered 1..n as in the text (q1..qn); angles in radians, lengths in metres.
+A sweep keeps only its end-effector points (24 bytes per configuration); the joint values
+of the grid, the Jacobians, determinants and manipulabilities are computed chunk by chunk
+from the grid's axes. A sweep of more than ``MAX_CONFIGURATIONS`` configurations is refused
+up front with its size and a suggestion.
 
 >>> import numpy as np, screwkit as sk
 >>> arm = sk.robots.planar([1.0, 0.5])
@@ -10,14 +14,32 @@ Joints are numbered 1..n as in the text (q1..qn); angles in radians, lengths in 
 >>> [round(v, 6) for v in s.extents()["x"]]  # the annulus 0.5 <= r <= 1.5
 [-1.5, 1.5]
 """
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import as_float_array, describe
-from .jacobians import geometric_jacobian, manipulability
+from ._checks import (
+    as_float_array,
+    check_chain,
+    check_integer,
+    check_option,
+    check_positive,
+    describe,
+)
+from .jacobians import ROWS, geometric_jacobian, manipulability
 
-__all__ = ["Sweep", "sweep"]
+__all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]
+
+#: The largest sweep that :func:`sweep` builds by default: 10^7 configurations, whose points
+#: take 240 MB (and the grid of joint values, if asked for with ``Sweep.q``, 80 MB per joint).
+MAX_CONFIGURATIONS = 10_000_000
+
+#: Configurations per chunk of every batched computation (a few MB of temporaries).
+CHUNK = 65_536
+
+#: The largest result (bytes) that ``Sweep.q`` or ``Sweep.jacobians`` builds in one array.
+MAX_RESULT_BYTES = 1_000_000_000
 
 
 @dataclass(frozen=True)
@@ -27,20 +49,54 @@ class Sweep:
     chain : the swept chain
     joints : the swept joint numbers (1..n), one grid axis each
     values : the joint values of each grid axis (rad, or m for a prismatic joint)
-    q : every configuration, shape grid + (n,)
+    fixed : the values of every joint off the grid, shape (n,)
     points : the end-effector point of each configuration, shape grid + (3,) (m)
     """
 
     chain: object
     joints: tuple
     values: tuple
-    q: np.ndarray
+    fixed: np.ndarray
     points: np.ndarray
 
     @property
     def shape(self):
         """The grid's shape: one axis per swept joint."""
-        return self.q.shape[:-1]
+        return self.points.shape[:-1]
+
+    @property
+    def size(self):
+        """The number of configurations in the grid."""
+        return math.prod(self.shape)
+
+    def configurations(self, start=0, stop=None):
+        """The joint vectors of grid points start..stop-1 in C order: shape (stop - start, n)."""
+        stop = self.size if stop is None else stop
+        index = np.unravel_index(np.arange(start, stop), self.shape)
+        q = np.empty((stop - start, self.chain.n))
+        q[:] = self.fixed
+        for axis, (joint, values) in enumerate(zip(self.joints, self.values)):
+            q[:, joint - 1] = values[index[axis]]
+        return q
+
+    @property
+    def q(self):
+        """Every configuration, shape grid + (n,) (built on demand: 8 bytes x n per point)."""
+        _check_result_size(self.size * self.chain.n * 8, "Sweep.q",
+                           "use Sweep.configurations(start, stop) for a part of the grid")
+        return self.configurations().reshape(self.shape + (self.chain.n,))
+
+    def _chunks(self):
+        for start in range(0, self.size, CHUNK):
+            stop = min(start + CHUNK, self.size)
+            yield slice(start, stop), self.configurations(start, stop)
+
+    def _per_point(self, function):
+        """``function`` (a batch (m, n) -> (m,)) at every grid point, chunk by chunk: shape grid."""
+        out = np.empty(self.size)
+        for part, q in self._chunks():
+            out[part] = function(q)
+        return out.reshape(self.shape)
 
     def extents(self):
         """{'x': (min, max), 'y': ..., 'z': ...} of the swept points (m)."""
@@ -52,8 +108,12 @@ class Sweep:
         centre = as_float_array(centre, "centre")
         if centre.shape != (3,):
             raise ValueError(f"centre must be a point of shape (3,), got shape {centre.shape}")
-        distance = np.linalg.norm(self.points - centre, axis=-1)
-        return float(distance.min()), float(distance.max())
+        flat = self.points.reshape(-1, 3)
+        low, high = np.inf, -np.inf
+        for start in range(0, len(flat), CHUNK):
+            distance = np.linalg.norm(flat[start:start + CHUNK] - centre, axis=-1)
+            low, high = min(low, distance.min()), max(high, distance.max())
+        return float(low), float(high)
 
     def section(self, axis="y", value=0.0, tolerance=0.01):
         """The swept points within ``tolerance`` (m) of the plane ``axis`` = ``value``: (M, 3).
@@ -61,77 +121,136 @@ class Sweep:
         For a sweep that includes joint 1 this cuts the solid workspace, e.g. axis 'y', value 0
         gives the points in the x-z plane.
         """
-        if axis not in ("x", "y", "z"):
-            raise ValueError(f"axis must be 'x', 'y' or 'z', got {axis!r}")
+        check_option(axis, "axis", ("x", "y", "z"))
+        value = as_float_array(value, "value")
+        if value.shape != ():
+            raise TypeError(f"value must be one number (m), got {describe(value)}")
+        tolerance = check_positive(tolerance, "tolerance", allow_zero=True)
         flat = self.points.reshape(-1, 3)
         return flat[np.abs(flat[:, "xyz".index(axis)] - float(value)) <= tolerance]
 
-    def jacobians(self):
-        """The geometric Jacobian at every grid point: grid + (6, n)."""
-        J = geometric_jacobian(self.chain, self.q.reshape(-1, self.chain.n))
-        return J.reshape(self.shape + J.shape[-2:])
+    def jacobians(self, rows="all"):
+        """The geometric Jacobian's ``rows`` at every grid point: grid + (rows, n)."""
+        block = ROWS[check_option(rows, "rows", tuple(ROWS))]
+        m = len(range(6)[block])
+        _check_result_size(self.size * m * self.chain.n * 8, "Sweep.jacobians",
+                           "use determinant(), manipulability() or singular(), which stream")
+        out = np.empty((self.size, m, self.chain.n))
+        for part, q in self._chunks():
+            out[part] = geometric_jacobian(self.chain, q)[:, block]
+        return out.reshape(self.shape + (m, self.chain.n))
 
-    def determinant(self):
-        """det J at every grid point (a six-joint chain): shape grid. Its sign changes across
-        a singular surface, so ``contour(..., levels=[0])`` draws the singular curves."""
-        if self.chain.n != 6:
-            raise ValueError(f"det J needs a square Jacobian (6 joints), the chain has {self.chain.n}")
-        return np.linalg.det(self.jacobians())
+    def determinant(self, rows="all"):
+        """det J at every grid point, J the Jacobian's ``rows`` (square: as many rows as joints,
+        e.g. rows='all' for six joints, 'planar' for a two-link planar arm): shape grid. Its
+        sign changes across a singular surface, so ``contour(..., levels=[0])`` draws it."""
+        block = ROWS[check_option(rows, "rows", tuple(ROWS))]
+        m = len(range(6)[block])
+        if m != self.chain.n:
+            raise ValueError(
+                f"rows must select {self.chain.n} rows, one per joint, for det J (a square "
+                f"Jacobian), got rows={rows!r} with {m} rows; use manipulability() instead")
+        return self._per_point(lambda q: np.linalg.det(geometric_jacobian(self.chain, q)[:, block]))
 
-    def singular(self):
-        """A mask (shape grid) of the singular configurations: True where J has lost rank, and on
-        both sides of every sign change of det J between grid neighbours (a singular surface passes
-        between them). For a chain without a square Jacobian, only where J has lost rank."""
-        if self.chain.n != 6:
-            return self.manipulability() == 0.0
-        det = self.determinant()
-        mask = self.manipulability() == 0.0
-        sign = np.sign(det)
-        for axis in range(det.ndim):
-            change = np.diff(sign, axis=axis) != 0
-            before = [slice(None)] * det.ndim
-            after = [slice(None)] * det.ndim
+    def manipulability(self, rows="all"):
+        """Yoshikawa's manipulability of the Jacobian's ``rows`` at every grid point: shape grid
+        (0.0 where singular)."""
+        check_option(rows, "rows", tuple(ROWS))
+        return self._per_point(lambda q: manipulability(self.chain, q, rows))
+
+    def singular(self, rows="all"):
+        """A mask (shape grid) of the singular configurations of the Jacobian's ``rows``.
+
+        True where J has lost rank (manipulability 0), and, for a square J, on both sides of
+        every strict sign change of det J between grid neighbours (a singular surface passes
+        between them). ``rows`` as in :func:`screwkit.jacobians.manipulability`: use
+        ``rows='planar'`` for a planar arm, whose six-row Jacobian never loses rank.
+        """
+        block = ROWS[check_option(rows, "rows", tuple(ROWS))]
+        lost = self.manipulability(rows) == 0.0
+        if len(range(6)[block]) != self.chain.n:
+            return lost
+        sign = np.where(lost, 0.0, np.sign(self.determinant(rows)))
+        mask = lost.copy()
+        for axis in range(sign.ndim):
+            before = [slice(None)] * sign.ndim
+            after = [slice(None)] * sign.ndim
             before[axis], after[axis] = slice(0, -1), slice(1, None)
+            change = sign[tuple(before)] * sign[tuple(after)] < 0
             mask[tuple(before)] |= change
             mask[tuple(after)] |= change
         return mask
 
-    def manipulability(self, rows="all"):
-        """Yoshikawa's manipulability at every grid point: shape grid (0.0 where singular)."""
-        w = manipulability(self.chain, self.q.reshape(-1, self.chain.n), rows)
-        return np.reshape(w, self.shape)
+
+def _check_result_size(nbytes, what, suggestion):
+    if nbytes > MAX_RESULT_BYTES:
+        raise ValueError(
+            f"{what} would build one array of {nbytes / 1e9:.2f} GB, more than the limit of "
+            f"{MAX_RESULT_BYTES / 1e9:.0f} GB; {suggestion}, or sweep a coarser grid")
 
 
-def sweep(chain, ranges, num=301, q=None):
+def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS):
     """Sweep some joints of ``chain`` over a grid and compute every end-effector point.
 
+    Parameters
+    ----------
+    chain : Chain
     ranges : {joint number (1..n): (low, high)} for each swept joint, in rad (or m)
-    num : points per swept joint (an int, or one per joint)
+    num : points per swept joint (an int >= 2, or a sequence of one per joint)
     q : the values of the other joints, shape (n,) (default zero)
+    max_configurations : the largest grid built (default ``MAX_CONFIGURATIONS``, 10^7); a
+        larger sweep is refused before anything is allocated
+
+    Returns
+    -------
+    Sweep, with points of shape grid + (3,) (m), computed in chunks of ``CHUNK`` poses
     """
+    chain = check_chain(chain)
     if not isinstance(ranges, dict) or not ranges:
-        raise TypeError(f"ranges must be a dict {{joint number: (low, high)}}, got {describe(ranges)}")
+        raise TypeError("ranges must be a dict {joint number: (low, high)} with at least one joint, "
+                        f"got {describe(ranges)}")
     joints = tuple(ranges)
     for joint in joints:
-        if not isinstance(joint, (int, np.integer)) or not 1 <= joint <= chain.n:
+        if isinstance(joint, (bool, np.bool_)) or not isinstance(joint, (int, np.integer)):
+            raise TypeError(f"ranges keys must be joint numbers 1..{chain.n} (integers), got {joint!r}")
+        if not 1 <= joint <= chain.n:
             raise ValueError(f"ranges keys must be joint numbers 1..{chain.n}, got {joint!r}")
-    counts = np.broadcast_to(np.asarray(num), (len(joints),))
-    if not np.issubdtype(counts.dtype, np.integer) or np.any(counts < 2):
-        raise ValueError(f"num must be an integer >= 2 (or one per swept joint), got {num!r}")
+    joints = tuple(int(joint) for joint in joints)
+    counts = _counts(num, len(joints))
     values = []
     for joint, count in zip(joints, counts):
         bounds = as_float_array(ranges[joint], f"ranges[{joint}]")
         if bounds.shape != (2,):
             raise ValueError(f"ranges[{joint}] must be (low, high), got shape {bounds.shape}")
-        values.append(np.linspace(bounds[0], bounds[1], int(count)))
+        if bounds[0] == bounds[1]:
+            raise ValueError(f"ranges[{joint}] must have low != high, got {bounds.tolist()}; "
+                             "to hold the joint still, give its value in q instead")
+        values.append(np.linspace(bounds[0], bounds[1], count))
+    limit = check_integer(max_configurations, "max_configurations", minimum=1)
+    size = math.prod(counts)
+    if size > limit:
+        grid = " x ".join(str(c) for c in counts)
+        fewer = max(2, int(limit ** (1 / len(counts))))
+        raise ValueError(
+            f"a sweep must have at most max_configurations = {limit:,} configurations, got "
+            f"{grid} = {size:,} (its points alone would take {size * 24 / 1e9:.2f} GB); "
+            f"use fewer steps (e.g. num={fewer}), or sweep fewer joints and fix the others "
+            "with q (a section)")
     fixed = np.zeros(chain.n) if q is None else chain.check_q(q, "q")
     if fixed.ndim != 1:
         raise ValueError(f"q must be one configuration of shape ({chain.n},), got shape {fixed.shape}")
-    grid = np.empty(tuple(int(c) for c in counts) + (chain.n,))
-    grid[...] = fixed
-    for axis, (joint, v) in enumerate(zip(joints, values)):
-        shape = [1] * len(joints)
-        shape[axis] = v.size
-        grid[..., joint - 1] = v.reshape(shape)
-    points = chain.fk(grid.reshape(-1, chain.n))[:, :3, 3].reshape(grid.shape[:-1] + (3,))
-    return Sweep(chain, joints, tuple(values), grid, points)
+    result = Sweep(chain, joints, tuple(values), fixed.copy(), np.empty(tuple(counts) + (3,)))
+    flat = result.points.reshape(-1, 3)    # a view: the chunks fill the grid in place
+    for part, configurations in result._chunks():
+        flat[part] = chain.fk(configurations)[:, :3, 3]
+    return result
+
+
+def _counts(num, joints):
+    """Points per swept joint: ``num`` is one int >= 2 or a sequence of ``joints`` of them."""
+    if isinstance(num, (list, tuple, np.ndarray)):
+        if len(num) != joints:
+            raise ValueError(
+                f"num must be one integer or one per swept joint ({joints}), got {describe(num)}")
+        return [check_integer(n, "num", minimum=2) for n in num]
+    return [check_integer(num, "num", minimum=2)] * joints

@@ -114,7 +114,7 @@ def test_two_arm_robot_tracks_two_paths_at_once():
 
 def test_bad_input_is_refused_with_a_clear_message():
     far = rd.circle((0.8, 0.0), 0.3, duration=1.0, dt=0.01)
-    with pytest.raises(ValueError, match=r"leaves the reachable annulus 0.0000 m <= \|p\| <= 1.0000 m"):
+    with pytest.raises(ValueError, match=r"reachable annulus 0.0000 m <= \|p\| <= 1.0000 m"):
         rd.resolve(ARM, far, Q0)
     with pytest.raises(ValueError, match=r"q0 must have 5 entries"):
         rd.resolve(ARM, CIRCLE, Q0[:4])
@@ -148,3 +148,49 @@ def test_damping_slows_the_joints_near_a_singularity():
     largest_step = [np.abs(np.diff(run.q, axis=0)).max() for run in (exact, damped)]
     assert largest_step[1] < 0.8 * largest_step[0]
     assert np.all(np.isfinite(damped.q)) and damped.error.max() < 5e-3
+
+
+def test_a_negative_null_space_gain_lowers_manipulability():
+    # the null-space term follows k grad w: with k < 0 it descends, so w falls below the plain run
+    plain = rd.resolve(ARM, CIRCLE, Q0)
+    lowering = rd.resolve(ARM, CIRCLE, Q0, null_space_gain=-2.0)
+    assert lowering.error.max() < 1e-3 and lowering.manipulability.mean() < plain.manipulability.mean() - 0.005
+
+
+def test_q0_outside_the_limits_is_refused_only_where_the_limits_are_used():
+    limits = np.radians([[-180, 180]] + [[-60, 60]] * 4)
+    arm = sk.robots.planar(LENGTHS, qlim=limits)
+    q0 = rd.start_configuration(arm, CIRCLE.position[0], np.radians([30, 70, -30, -30, -30]))
+    assert not arm.within_limits(q0)
+    joint = int(np.flatnonzero((q0 < limits[:, 0]) | (q0 > limits[:, 1]))[0]) + 1
+    for mode in ("clamp", "avoid"):
+        with pytest.raises(ValueError, match=rf"q0 must lie within .* joint {joint} is"):
+            rd.resolve(arm, CIRCLE, q0, joint_limits=mode)
+    assert rd.resolve(arm, CIRCLE, q0).error.max() < 1e-4          # joint_limits=None ignores them
+
+
+def test_start_configuration_needs_one_iteration_and_reports_its_budget():
+    with pytest.raises(ValueError, match="max_iterations must be an integer >= 1, got 0"):
+        rd.start_configuration(ARM, CIRCLE.position[0], Q0, max_iterations=0)
+    # from the answer itself, no step is needed; from a guess, one Newton step is not enough
+    assert np.array_equal(rd.start_configuration(ARM, CIRCLE.position[0], Q0, max_iterations=1), Q0)
+    with pytest.raises(ValueError, match=r"in 1 iterations, got a residual of"):
+        rd.start_configuration(ARM, CIRCLE.position[0], Q0 + 0.3, max_iterations=1)
+
+
+def test_paths_must_be_uniform_in_time_with_two_samples_or_more():
+    position = np.zeros((3, 2))
+    assert rd.Path([0.0, 0.5, 1.0], position, position).dt == 0.5
+    for t, message in [([0.0, 0.5, 1.5], "t must be uniform"), ([0.0, 0.0, 0.0], "dt must be positive"),
+                       ([1.0, 0.5, 0.0], "dt must be positive")]:
+        with pytest.raises(ValueError, match=message):
+            rd.Path(t, position, position)
+    with pytest.raises(ValueError, match="at least two sample times"):
+        rd.Path([0.0], position[:1], position[:1])
+
+
+def test_timing_ends_at_one_and_refuses_a_zero_duration():
+    s, ds = rd.timing(np.array([0.0, 1.0, 2.0]), 2.0)
+    assert np.allclose(s, [0.0, 0.5, 1.0]) and np.allclose(ds, [0.0, 30 / 16 / 2, 0.0])   # quintic by hand
+    with pytest.raises(ValueError, match="duration must be a positive number, got 0.0"):
+        rd.timing(np.array([0.0]), 0)

@@ -195,3 +195,36 @@ def test_strings_are_not_sympified_into_symbols():
         sk.twist_from_axis([0, 0, 1], [theta, "x", 0], 0)
     with pytest.raises(TypeError, match="h must be a pitch"):
         sk.twist_from_axis([0, 0, 1], [theta, 0, 0], "h")
+
+
+# --- edge cases that used to be silent ----------------------------------------------------
+
+@pytest.mark.parametrize("axis, rot", [([1e200, 0, 0], sk.rotx), ([0, -1e-11, 0], None), ([0, 0, 3e307], sk.rotz),
+                                       ([1e154, 1e154, 0], None)])
+def test_huge_and_tiny_axes_are_normalised_without_overflow(axis, rot):
+    u = np.array(axis) / np.max(np.abs(axis))
+    u = u / np.linalg.norm(u)               # the direction, from the scaled vector
+    R = sk.rot_axis(axis, 0.7)
+    # Rodrigues' formula by hand: I + sin [u] + (1 - cos) [u]^2
+    U = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
+    assert np.allclose(R, np.eye(3) + np.sin(0.7) * U + (1 - np.cos(0.7)) * U @ U, atol=1e-15)
+    if rot is not None:
+        assert np.allclose(R, rot(0.7), atol=1e-15)
+    assert not np.allclose(R, np.eye(3))
+
+
+def test_sympy_axis_with_a_float_angle_is_exact_in_exact_out():
+    R = sk.rot_axis(sp.Matrix([0, 0, 1]), 0.5)
+    assert isinstance(R, sp.MatrixBase)
+    c, s = np.cos(0.5), np.sin(0.5)
+    assert np.allclose(np.array(R, dtype=float), [[c, -s, 0], [s, c, 0], [0, 0, 1]], atol=1e-15)
+    T = sk.exp_twist(sp.Matrix([0, 0, 1, 0, 0, 0]), 0.5)
+    assert isinstance(T, sp.MatrixBase) and np.allclose(np.array(T[:3, :3], dtype=float), np.array(R, dtype=float))
+    # and a numeric axis with a symbolic angle
+    assert sp.simplify(sk.rot_axis([0, 0, 2], theta) - sk.rotz(theta)) == sp.zeros(3, 3)
+
+
+def test_an_infinite_float_pitch_is_a_translation():
+    assert np.array_equal(sk.twist_from_axis([0, 0, 2], [5, 6, 7], np.inf), [0, 0, 0, 0, 0, 1])
+    assert np.array_equal(sk.twist_from_axis([0, 0, 2], [5, 6, 7], float("inf")),
+                          sk.twist_from_axis([0, 0, 1], [0, 0, 0], sp.oo))
