@@ -182,6 +182,15 @@ class Program:
                                  + [self._term(p[r])]) for r in range(3)]
         return omega + moment + located
 
+    def _at_point(self, twist, p):
+        """A space twist (omega; v) as a geometric Jacobian column: (v + omega x p; omega)."""
+        omega, v = twist[:3], twist[3:]
+        linear = []
+        for r, (a, b, c, d) in enumerate([(1, 2, 2, 1), (2, 0, 0, 2), (0, 1, 1, 0)]):
+            ab, cd = self._product(omega[a], p[b]), self._product(omega[c], p[d])
+            linear.append(self._combine([self._term(v[r]), ab, (-cd[0], cd[1])]))
+        return linear + omega
+
     @staticmethod
     def _text(entry):
         if isinstance(entry, float):
@@ -193,8 +202,9 @@ class Program:
         """Python source of ``kinematics(t, c, s)`` returning a tuple of entries.
 
         outputs : 'pose' (the 12 entries of T's top rows), 'axes' (per joint the twist
-            [omega; v] and a point, 9 entries, then the pose) or 'frames' (12 entries per
-            recorded frame, in the order of ``marks``).
+            [omega; v] and a point, 9 entries, then the pose), 'frames' (12 entries per
+            recorded frame, in the order of ``marks``), 'space' (the space Jacobian, 6 x n,
+            row by row) or 'geometric' (the geometric Jacobian [v + omega x p; omega], 6 x n).
         """
         self._lines, self._count = [], 0
         T = self._constant(self.start)[:3]
@@ -202,15 +212,21 @@ class Program:
         if 0 in self.marks and outputs == "frames":
             recorded[0] = self._times(T, self._constant(self.marks[0]))
         for k, (twist, post, point) in enumerate(self.joints, start=1):
-            if outputs == "axes":
+            if outputs in ("axes", "space", "geometric"):
                 axes += self._axis(T, twist, point)
             T = self._times(T, self._factor(k, twist, post))
             if k in self.marks and outputs == "frames":
                 recorded[k] = self._times(T, self._constant(self.marks[k]))
+        joints = [axes[9 * j:9 * j + 6] for j in range(self.n)]  # (omega; v) of each joint
         if outputs == "pose":
             result = [e for row in T for e in row]
         elif outputs == "axes":
             result = axes + [e for row in T for e in row]
+        elif outputs == "space":
+            result = [twist[r] for r in range(6) for twist in joints]
+        elif outputs == "geometric":
+            moved = [self._at_point(twist, [T[r][3] for r in range(3)]) for twist in joints]
+            result = [column[r] for r in range(6) for column in moved]
         else:
             result = [e for k in sorted(recorded) for row in recorded[k] for e in row]
         body = "\n".join(self._lines)

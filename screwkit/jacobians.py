@@ -60,9 +60,36 @@ def _cross(a, b):
     return np.stack([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
 
 
-def _batch_first(J, q):
-    """(6, n[, N]) -> (6, n) or (N, 6, n), contiguous."""
-    return J if q.ndim == 1 else np.ascontiguousarray(J.transpose(2, 0, 1))
+def _generated(chain, q, outputs):
+    """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n) or (N, 6, n)."""
+    q = _check_chain(chain).check_q(q)
+    rows = 6 * chain.n
+    if q.ndim == 1:
+        return np.reshape(chain._run(outputs, q), (6, chain.n))
+    out = np.empty((q.shape[0], 6, chain.n))
+    for start in range(0, q.shape[0], BATCH_CHUNK):
+        part = q[start:start + BATCH_CHUNK]
+        values = chain._run(outputs, part, range(rows), np.empty((rows, part.shape[0])))
+        out[start:start + BATCH_CHUNK] = values.reshape(6, chain.n, -1).transpose(2, 0, 1)
+    return out
+
+
+def _by_chunks(chain, q, columns):
+    """``columns(omega, v, T)`` -> (6, n[, N]) for q (n,) or (N, n), a big batch in chunks.
+
+    The joint twists and poses of a whole batch take 9n + 12 numbers per configuration: a
+    batch is processed :data:`BATCH_CHUNK` configurations at a time, so that memory stays
+    bounded by the result itself.
+    """
+    q = _check_chain(chain).check_q(q)
+    if q.ndim == 1:
+        omega, v, _, T = chain._twists_and_pose(q)
+        return columns(omega, v, T)
+    out = np.empty((q.shape[0], 6, chain.n))
+    for start in range(0, q.shape[0], BATCH_CHUNK):
+        omega, v, _, T = chain._twists_and_pose(q[start:start + BATCH_CHUNK])
+        out[start:start + BATCH_CHUNK] = columns(omega, v, T).transpose(2, 0, 1)
+    return out
 
 
 def joint_axes(chain, q):
@@ -77,9 +104,7 @@ def space_jacobian(chain, q):
     revolute joint about z_i through o_i (v is the velocity of the body point at the base
     origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
     """
-    q = _check_chain(chain).check_q(q)
-    omega, v, _, _ = chain._twists_and_pose(q)
-    return _batch_first(np.concatenate([omega, v]), q)
+    return _generated(chain, q, "space")
 
 
 def geometric_jacobian(chain, q):
@@ -88,10 +113,7 @@ def geometric_jacobian(chain, q):
     Column i is the space twist moved to the end-effector point p: (v_i + omega_i x p; omega_i),
     i.e. (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic one.
     """
-    q = _check_chain(chain).check_q(q)
-    omega, v, _, T = chain._twists_and_pose(q)
-    p = T[:, 3][:, None]
-    return _batch_first(np.concatenate([v + _cross(omega, p), omega]), q)
+    return _generated(chain, q, "geometric")
 
 
 def body_jacobian(chain, q):
@@ -100,12 +122,12 @@ def body_jacobian(chain, q):
     Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
     """
-    q = _check_chain(chain).check_q(q)
-    omega, v, _, T = chain._twists_and_pose(q)
-    R, p = T[:, :3], T[:, 3][:, None]
-    linear = v + _cross(omega, p)
-    rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
-    return _batch_first(np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)]), q)
+    def columns(omega, v, T):
+        R, linear = T[:, :3], v + _cross(omega, T[:, 3][:, None])
+        rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
+        return np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)])
+
+    return _by_chunks(chain, q, columns)
 
 
 def numerical_jacobian(chain, q, h=1e-6):
