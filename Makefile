@@ -48,15 +48,31 @@ lab: $(STAMP)
 	$(BIN)/jupyter-lab --ServerApp.root_dir=notebooks $(if $(filter 0,$(shell id -u)),--allow-root) \
 	  $(LAB_ARGS) $(FIRST_CHAPTER)
 
-## make bench: the speed tables of benchmarks/ (in .venv-bench, with the Robotics Toolbox beside screwkit)
+## make bench: the speed tables of benchmarks/ (in .venv-bench, with the Robotics Toolbox beside screwkit),
+## also written to benchmarks/results/ for the book
 BENCH_STAMP := .venv-bench/.installed
 $(BENCH_STAMP): requirements.txt benchmarks/requirements.txt pyproject.toml
 	@test -x .venv-bench/bin/python || $(PYTHON) -m venv .venv-bench
 	.venv-bench/bin/python -m pip install --quiet --requirement benchmarks/requirements.txt
 	@touch $(BENCH_STAMP)
 
+# Each script's tables also go to benchmarks/results/NAME.txt, headed by the date and the machine;
+# the book's appendix "screwkit against other libraries" (book/benchmarks.md) prints those files.
+BENCH_RESULTS := benchmarks/results
 bench: $(BENCH_STAMP)
-	@for script in benchmarks/bench_*.py; do echo "== $$script"; .venv-bench/bin/python $$script || exit 1; done
+	@mkdir -p $(BENCH_RESULTS)
+	@for script in benchmarks/bench_*.py; do \
+	  out=$(BENCH_RESULTS)/$$(basename $$script .py).txt; echo "== $$script"; \
+	  { echo "# $$script, measured $$(date -u '+%Y-%m-%d %H:%M UTC')"; \
+	    echo "# on $$(uname -sm), $$(getconf _NPROCESSORS_ONLN) cores:\
+	 $$(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo 2>/dev/null | head -1),\
+	 load average $$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null),\
+	 $$(.venv-bench/bin/python -c 'import platform; print("Python", platform.python_version())')"; \
+	    echo; } > $$out.tmp; \
+	  .venv-bench/bin/python $$script >> $$out.tmp 2>&1; status=$$?; cat $$out.tmp; \
+	  if [ $$status -ne 0 ]; then rm -f $$out.tmp; echo "make bench: $$script failed" >&2; exit $$status; fi; \
+	  mv $$out.tmp $$out; \
+	done
 
 clean:
 	rm -rf _build

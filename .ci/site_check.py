@@ -11,7 +11,14 @@ Chromium (every host but 127.0.0.1 unresolvable), and fails unless:
     moved, changes the drawing, and no page logs a JavaScript error (Playwright driving the
     system Chromium); the redraw time of each move is printed (goal: under 50 ms);
   - no page holds a widget placeholder (a widget view with no fallback: blank in the book);
-  - the whole book stays under 60 MB.
+  - every chapter says what the student will learn ("What you will learn") and ends with a
+    "Summary";
+  - no link (a launch button above all) points to a placeholder host such as hub.example.edu;
+  - every file a page asks the server for exists (MathJax fonts and extensions included);
+  - in Chromium at 1280 px, no figure image is wider than the content column (it would be shrunk
+    and its text with it) and no code cell's output is wider than the column (clipped, or behind
+    a scroll bar); the same is counted, not failed, at a phone's 390 px;
+  - the whole book stays under 20 MB.
 Keeps a screenshot of the first chapter in _build/.
 
 Usage: python .ci/site_check.py _build/html
@@ -20,6 +27,7 @@ import functools
 import http.server
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -89,8 +97,17 @@ def serve(root):
 
 
 class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    """Serves the book silently, remembering every request it could not answer."""
+
+    missing = set()
+
     def log_message(self, *args):
         pass
+
+    def send_error(self, code, message=None, explain=None):
+        if code >= 400 and not self.path.endswith("/favicon.ico"):
+            QuietHandler.missing.add(f"{code} {self.path}")
+        super().send_error(code, message, explain)
 
 
 def chromium(browser, url, profile, *extra):
@@ -158,8 +175,86 @@ def check_links(root, page, parser, cache):
     return problems
 
 
-BOOK_LIMIT_MB = 60
+BOOK_LIMIT_MB = 20
 REDRAW_GOAL_MS = 50
+# What a chapter must show, as a heading or an admonition's title (the text of one element).
+CHAPTER_SHAPE = {
+    "What you will learn": re.compile(r">\s*What you will learn\s*<"),
+    "Summary": re.compile(r"<h[2-6][^>]*>\s*Summary\s*<"),
+}
+PLACEHOLDER_HOSTS = ("example.",)  # example.com, hub.example.edu, ...
+
+
+def check_chapter_shape(page, html):
+    """A chapter page must say what the student will learn and end with a summary."""
+    if not page.startswith("notebooks/"):
+        return []
+    return [f"{page}: a chapter without \"{words}\"" for words, pattern in CHAPTER_SHAPE.items()
+            if not pattern.search(html)]
+
+
+def check_placeholder_links(page, parser):
+    """Links (launch buttons among them) must not point to a placeholder such as hub.example.edu."""
+    problems = []
+    for href in parser.links:
+        host = urlsplit(href).hostname or ""
+        if any(marker in host for marker in PLACEHOLDER_HOSTS):
+            problems.append(f"{page}: a link to the placeholder {host}: {href[:120]}")
+    return problems
+
+
+# In the page: the content column's width, figures wider than it (as the image is meant to be
+# shown: its width attribute, else its natural width) and code cell outputs wider than it.
+MEASURE_LAYOUT = """() => {
+    const article = document.querySelector("article.bd-article") || document.querySelector("main");
+    const style = getComputedStyle(article);
+    const column = article.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight);
+    const figures = [...article.querySelectorAll("img")].map(img => {
+        const intended = img.getAttribute("width") ? parseFloat(img.getAttribute("width"))
+                                                  : img.naturalWidth;
+        return [img.getAttribute("src"), intended];
+    }).filter(([src, width]) => width > column + 1);
+    const outputs = [...article.querySelectorAll("div.cell_output")].map((output, k) => {
+        const parts = [output, ...output.querySelectorAll("pre, mjx-container, table, .output")];
+        const widest = Math.max(...parts.map(e => Math.max(e.scrollWidth,
+                                                           e.getBoundingClientRect().width)));
+        const text = (output.innerText || "").trim().split("\\n")[0].slice(0, 60);
+        return [k, Math.round(widest), text];
+    }).filter(([k, width]) => width > column + 1);
+    return [Math.round(column), figures, outputs];
+}"""
+
+
+def check_layout(browser, pages):
+    """Figures and code cell outputs no wider than the content column, at 1280 px and 390 px."""
+    from playwright.sync_api import sync_playwright
+
+    problems = []
+    flags = [f for f in CHROMIUM_FLAGS if f != "--headless"]
+    with sync_playwright() as p:
+        chromium = p.chromium.launch(executable_path=browser, args=flags)
+        for width, fail in ((1280, True), (390, False)):
+            context = chromium.new_context(viewport={"width": width, "height": 900})
+            wide_on_phone = 0
+            for page_name, url in pages:
+                page = context.new_page()
+                page.goto(url, wait_until="load")
+                page.wait_for_timeout(300)  # MathJax typesets after load
+                column, figures, outputs = page.evaluate(MEASURE_LAYOUT)
+                if fail:
+                    problems += [f"{page_name}: figure {src} is {w:.0f} px wide, the column "
+                                 f"{column} px" for src, w in figures]
+                    problems += [f"{page_name}: code cell output {k + 1} is {w} px wide, the "
+                                 f"column {column} px: {text!r}" for k, w, text in outputs]
+                else:
+                    wide_on_phone += len(figures) + len(outputs)
+                page.close()
+            if not fail:
+                print(f"at {width} px: {wide_on_phone} figures or outputs wider than the column "
+                      "(scroll sideways on a phone; not a failure)")
+            context.close()
+        chromium.close()
+    return problems
 
 # In the page: move control k of figure `id` to another value of its grid, return
 # [changed?, milliseconds, label]. A figure's drawing is its canvas pixels or its frame's HTML.
@@ -241,6 +336,9 @@ def main(root):
             with open(os.path.join(root, page), encoding="utf-8") as f:
                 static = parse(f.read())
             problems += check_links(root, page, static, anchors)
+            problems += check_placeholder_links(page, static)
+            with open(os.path.join(root, page), encoding="utf-8") as f:
+                problems += check_chapter_shape(page, f.read())
             dom = parse(chromium(browser, origin + page, os.path.join(tmp, "profile"),
                                  "--dump-dom", f"--log-net-log={netlog}"))
             leaks = outside_requests(netlog, origin)
@@ -260,7 +358,9 @@ def main(root):
                  f"--screenshot={shot}", "--window-size=1280,1600", "--hide-scrollbars")
         print(f"screenshot of {shot_page}: {shot}")
         problems += check_interactive(browser, origin, pages)
+        problems += check_layout(browser, [(page, origin + page) for page in pages])
     server.shutdown()
+    problems += [f"the server had no answer for {request}" for request in sorted(QuietHandler.missing)]
     size = sum(os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(root) for f in fs)
     print(f"book size: {size / 1e6:.1f} MB (limit {BOOK_LIMIT_MB} MB)")
     if size > BOOK_LIMIT_MB * 1e6:

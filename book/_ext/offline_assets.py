@@ -1,10 +1,13 @@
 """Serve MathJax 3 from the book itself, so pages typeset math with no network.
 
 The files come from the PyPI package ``sphinx-mathjax-offline`` (MathJax 3.2.2),
-installed by requirements.txt. They are copied into ``_build/html/_static/mathjax``
-when the build finishes; ``mathjax_path`` in ``_config.yml`` points there. They
-are deliberately not in a top-level ``_static/`` folder, whose every ``.js``
-Jupyter Book would add to every page.
+installed by requirements.txt. Only what the pages load is copied into
+``_build/html/_static/mathjax`` when the build finishes (``mathjax_path`` in
+``_config.yml`` points there): the combined component ``tex-chtml.js``, the CHTML
+fonts it asks for, and the TeX extensions its autoloader fetches when a page uses a
+macro outside the base set (``\\boldsymbol``, ``\\color``, ...). That is about 2 MB of
+the package's 24 MB. They are deliberately not in a top-level ``_static/`` folder, whose
+every ``.js`` Jupyter Book would add to every page.
 """
 import importlib.util
 import os
@@ -13,6 +16,12 @@ from sphinx.errors import ExtensionError
 from sphinx.util.fileutil import copy_asset
 
 PACKAGE = "sphinx-mathjax-offline"
+# Paths relative to the package's static/mathjax folder: a file or a whole folder.
+SHIPPED = (
+    "tex-chtml.js",
+    os.path.join("output", "chtml", "fonts", "woff-v2"),
+    os.path.join("input", "tex", "extensions"),
+)
 
 
 def mathjax_source():
@@ -20,14 +29,21 @@ def mathjax_source():
     if spec is None or not spec.submodule_search_locations:
         raise ExtensionError(f"the package {PACKAGE} is missing: run `pip install -r requirements.txt`")
     folder = os.path.join(list(spec.submodule_search_locations)[0], "static", "mathjax")
-    if not os.path.isfile(os.path.join(folder, "tex-chtml.js")):
-        raise ExtensionError(f"{PACKAGE} has no static/mathjax/tex-chtml.js in {folder}")
+    missing = [path for path in SHIPPED if not os.path.exists(os.path.join(folder, path))]
+    if missing:
+        raise ExtensionError(f"{PACKAGE} has no {', '.join(missing)} under {folder}")
     return folder
 
 
 def copy_mathjax(app, exception):
     if exception is None and app.builder.format == "html":
-        copy_asset(mathjax_source(), os.path.join(app.outdir, "_static", "mathjax"))
+        source, target = mathjax_source(), os.path.join(app.outdir, "_static", "mathjax")
+        for path in SHIPPED:
+            destination = os.path.join(target, path)
+            if os.path.isdir(os.path.join(source, path)):
+                copy_asset(os.path.join(source, path), destination)
+            else:
+                copy_asset(os.path.join(source, path), os.path.dirname(destination))
 
 
 def check_config(app, config):

@@ -1,0 +1,91 @@
+"""The book's own checks: the site check's page rules and the bibliography's labels."""
+import importlib.util
+import pathlib
+
+import pytest
+from pybtex.database import parse_string
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def load(path, name):
+    spec = importlib.util.spec_from_file_location(name, ROOT / path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+site_check = load(".ci/site_check.py", "site_check")
+bibliography_style = load("book/_ext/bibliography_style.py", "bibliography_style")
+
+CHAPTER = """<h1>A chapter</h1>
+<div class="admonition tip"><p class="admonition-title">What you will learn</p></div>
+<h2>Summary<a class="headerlink" href="#summary">#</a></h2>"""
+
+
+def test_a_chapter_with_both_blocks_passes():
+    assert site_check.check_chapter_shape("notebooks/a.html", CHAPTER) == []
+
+
+def test_a_chapter_without_summary_fails():
+    html = CHAPTER.replace("<h2>Summary", "<h2>Speed")
+    assert site_check.check_chapter_shape("notebooks/a.html", html) == [
+        'notebooks/a.html: a chapter without "Summary"']
+
+
+def test_the_word_summary_in_prose_is_not_a_summary():
+    html = CHAPTER.replace("<h2>Summary", "<h2>Speed") + "<p>In Summary, nothing.</p>"
+    assert len(site_check.check_chapter_shape("notebooks/a.html", html)) == 1
+
+
+def test_a_chapter_without_outcomes_fails_and_front_matter_is_exempt():
+    html = CHAPTER.replace("What you will learn", "Overview")
+    assert len(site_check.check_chapter_shape("notebooks/a.html", html)) == 1
+    assert site_check.check_chapter_shape("book/intro.html", html) == []
+
+
+def test_placeholder_launch_url_fails():
+    parser = site_check.parse(
+        '<a href="https://hub.example.edu/hub/user-redirect/git-pull?repo=x">JupyterHub</a>'
+        '<a href="https://mybinder.org/v2/gh/screwkit/x/main">Binder</a>')
+    problems = site_check.check_placeholder_links("notebooks/a.html", parser)
+    assert len(problems) == 1 and "hub.example.edu" in problems[0]
+
+
+BIB = r"""
+@article{three, author = {Surriani, Atikah and Arrofiq, Muhammad and Fahmizal}, year = {2018}}
+@book{two, author = {Lynch, Kevin M. and Park, Frank C.}, year = {2017}}
+@book{one, author = {Craig, John J.}, year = {2005}}
+@misc{anonymous, title = {A study}, shorthand = {CX210L study 2021}, year = {2021}}
+@misc{undated, author = {Adriyan}}
+@misc{nobody, title = {Nothing to go by}}
+"""
+
+
+@pytest.mark.parametrize("key, label", [
+    ("three", "Surriani et al. 2018"),
+    ("two", "Lynch and Park 2017"),
+    ("one", "Craig 2005"),
+    ("anonymous", "CX210L study 2021"),
+    ("undated", "Adriyan n.d."),
+])
+def test_author_year_labels(key, label):
+    entry = parse_string(BIB, "bibtex").entries[key]
+    assert bibliography_style.author_year_label(entry) == label
+
+
+def test_an_entry_without_author_or_shorthand_is_refused():
+    entry = parse_string(BIB, "bibtex").entries["nobody"]
+    with pytest.raises(ValueError, match="'nobody' has no author, editor or shorthand"):
+        bibliography_style.author_year_label(entry)
+
+
+def test_the_four_source_papers_are_marked_and_labelled():
+    entries = parse_string((ROOT / "book/references.bib").read_text(), "bibtex").entries
+    sources = {key for key, e in entries.items() if e.fields.get("keywords") == "source"}
+    assert len(sources) == 4
+    labels = {bibliography_style.author_year_label(entries[key]) for key in sources}
+    assert labels == {"Adriyan 2020", "Surriani et al. 2018", "CX210L study 2021",
+                      "Redundancy thesis n.d."}
+    text = (ROOT / "book/references.bib").read_text().lower()
+    assert "seed" not in text and "2021, 2021" not in text
