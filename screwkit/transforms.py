@@ -18,6 +18,7 @@ import numbers
 import numpy as np
 import sympy as sp
 
+from .screws import axis_coordinates
 from ._checks import (
     as_float_array,
     as_real_scalar,
@@ -281,18 +282,15 @@ def twist_from_axis(s, r, h):
     if is_symbolic(s) or is_symbolic(r) or (is_symbolic(h) and not prismatic):
         s = _unit_vector(as_sympy_matrix(s, "s", (3, 1)), "s")
         if prismatic:
-            return sp.Matrix.vstack(sp.zeros(3, 1), s)
-        r = as_sympy_matrix(r, "r", (3, 1))
-        h = _pitch(h, exact=True)
-        return sp.Matrix.vstack(s, r.cross(s) + h * s)
+            return axis_coordinates(s, None, sp.oo)
+        return axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), _pitch(h, exact=True))
     s = _unit_vector(s, "s")
     if prismatic:
-        return np.concatenate([np.zeros(3), s])
+        return axis_coordinates(s, None, np.inf)
     r = _vector3(r, "r")
     if r.ndim != 1:
         raise ValueError(f"r must be a single point of shape (3,), got shape {r.shape}")
-    h = _pitch(h, exact=False)
-    return np.concatenate([s, np.cross(r, s) + h * s])
+    return axis_coordinates(s, r, _pitch(h, exact=False))
 
 
 _PITCH = "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
@@ -360,12 +358,16 @@ def exp_twist(twist, theta):
     W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
     W2 = W @ W
     s = np.sin(theta)[..., None, None]
-    c1 = 1.0 - np.cos(theta)[..., None, None]
+    c1 = (2.0 * np.sin(theta / 2) ** 2)[..., None, None]  # 1 - cos, without cancellation
     t = theta[..., None, None]
+    # theta - sin(theta) cancels for small theta: its series there (error below 1e-20 rad)
+    small = np.abs(theta) < 1e-2
+    series = theta**3 / 6 - theta**5 / 120 + theta**7 / 5040
+    t_minus_s = np.where(small, series, theta - np.sin(theta))[..., None, None]
     R = np.eye(3) + s * W + c1 * W2
     # p = G v with G = I theta + (1 - cos) [w] + (theta - sin) [w]^2, applied to v directly
     with np.errstate(over="ignore", invalid="ignore"):
-        p = t[..., 0] * v + c1[..., 0] * (W @ v) + (t - s)[..., 0] * (W2 @ v)
+        p = t[..., 0] * v + c1[..., 0] * (W @ v) + t_minus_s[..., 0] * (W2 @ v)
     _check_finite_product(p, "twist * theta")
     return _assemble(R, p)
 
