@@ -422,7 +422,7 @@ class Chain:
         options.update(changes)
         if self.links is not None:
             return Chain(self.links, self.convention, **options)
-        return Chain.from_screws(self._screws, self._home, self.frame,
+        return Chain.from_screws(self._exact_screws, self._home, self.frame,
                                  qlim=[tuple(limit) for limit in self._qlim], **options)
 
     def with_tool(self, tool):
