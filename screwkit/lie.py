@@ -69,7 +69,7 @@ def adjoint(T):
     -------
     ndarray, shape (6, 6) or (N, 6, 6); sympy.Matrix (6, 6) for SymPy input
 
-    >>> adjoint(np.eye(4)).trace()
+    >>> float(adjoint(np.eye(4)).trace())
     6.0
     """
     T = check_transform(T, "T")
