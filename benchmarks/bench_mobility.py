@@ -12,6 +12,7 @@ Two times per mechanism:
 
 Usage: python benchmarks/bench_mobility.py
 """
+import os
 import subprocess
 import sys
 import time
@@ -50,6 +51,8 @@ def best_of(function, repeat=7):
 
 
 def main():
+    load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
+    print(f"load average (1, 5, 15 min): {load} on {os.cpu_count()} cores")
     print(f"{'mechanism':<11}{'type':>6}{'paper code':>12}{'goal':>9}{'first call':>12}{'speed-up':>10}"
           f"{'best of 7':>11}{'speed-up':>10}")
     print(f"{'':<11}{'':>6}{'here (s)':>12}{'(ms)':>9}{'(ms)':>12}{'':>10}{'(ms)':>11}")

@@ -22,10 +22,12 @@ simplifying trigonometric expressions inside ``Matrix.nullspace``):
   division until the last: far cheaper than fraction-free elimination, whose intermediate
   polynomials grow with a poor pivot order.
 """
+import functools
+import math
 import random
 
 import sympy as sp
-from sympy import GF, QQ
+from sympy import GF, QQ, ZZ
 from sympy.ntheory import sqrt_mod
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyerrors import CoercionFailed
@@ -35,6 +37,16 @@ _TRANSCENDENTAL = (sp.pi, sp.E)
 _SAMPLE_POINTS = 2
 _SEED = 20201
 _PRIME = 2**61 - 1  # a Mersenne prime: arithmetic modulo it is exact and fast
+
+
+def entries(matrix):
+    """The entries of a SymPy matrix as a flat list, row by row.
+
+    SymPy's ``flat()`` and iteration convert entry by entry; a matrix of expressions holds
+    them as they are in its EXRAW representation, read here in one call.
+    """
+    rep = matrix._rep
+    return rep.to_list_flat() if rep.domain.is_EXRAW else matrix.flat()
 
 
 def _exact_numbers(e):
@@ -80,7 +92,8 @@ class Field:
     def __init__(self, exprs):
         exprs = [sp.sympify(e) for e in exprs]
         found = self._generators(exprs)
-        if found["float"]:
+        self._floats = found["float"]
+        if self._floats:
             exprs = [_exact_numbers(e) for e in exprs]
         self.expand = any(not a.args[0].is_Symbol for a in found["trig"])
         if self.expand:  # sin(a + b) and the like: write in sin/cos of single symbols
@@ -89,8 +102,8 @@ class Field:
         if found["other"]:
             raise TypeError(f"screw coordinates may use sin, cos and tan only, got {sorted(map(str, found['other']))}")
         self.symbols = sorted(found["trig"] | found["roots"] | found["symbols"], key=sp.default_sort_key)
-        self.K = QQ.frac_field(*self.symbols) if self.symbols else QQ
-        self._ring = self.K.get_ring() if self.symbols else QQ
+        # the minors are computed with integer coefficients (see _polynomial_rows)
+        self.K, self.integer_ring = _domains(tuple(self.symbols))
         self._cache = {}
         self._polynomials = {}
         self._generator_index = {g: k for k, g in enumerate(self.symbols)}
@@ -106,43 +119,57 @@ class Field:
         return found
 
     def element(self, e):
-        e = _exact_numbers(sp.sympify(e))
-        if e not in self._cache:
+        e = e if isinstance(e, sp.Basic) else sp.sympify(e)
+        if self._floats:
+            e = _exact_numbers(e)
+        value = self._cache.get(e)
+        if value is None:
             plain = sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e
-            # most screw coordinates are polynomials: build them in the ring, no cancelling
-            polynomial = self._polynomial(plain)
-            value = self.K.convert(polynomial) if polynomial is not None else self.K.from_sympy(plain)
+            # most screw coordinates are polynomials: build their terms directly, no cancelling
+            terms = self._terms(plain)
+            if terms is None:
+                value = self.K.from_sympy(plain)
+            elif self.symbols:
+                value = self.K.field.raw_new(self.K.field.ring.dtype(terms))
+            else:
+                value = terms.get((), QQ.zero)
             self._cache[e] = value
-        return self._cache[e]
+        return value
 
-    def _polynomial(self, e):
-        """``e`` as an element of the polynomial ring, or None if it is not a polynomial in the
-        generators. Subexpressions are memoised: the joint screws of one mechanism share many
+    def _terms(self, e):
+        """``e`` as a polynomial in the generators, {exponents: QQ coefficient}, or None if it
+        is not one. Subexpressions are memoised: the joint screws of one mechanism share many
         products such as a*sin(theta)*cos(alpha)."""
         if e in self._polynomials:
             return self._polynomials[e]
-        ring = self._ring
+        n = len(self.symbols)
         if e in self._generator_index:
-            value = ring.gens[self._generator_index[e]] if self.symbols else None
+            k = self._generator_index[e]
+            value = {tuple(int(i == k) for i in range(n)): QQ.one}
         elif e.is_Rational:
-            value = ring(QQ(int(e.p), int(e.q)))
-        elif e.is_Add or e.is_Mul:
-            terms = e.args
-            coefficient = None
-            if e.is_Mul and terms[0].is_Rational:  # a number times a product: scale once
-                coefficient, terms = QQ(int(terms[0].p), int(terms[0].q)), terms[1:]
-            value = ring.zero if e.is_Add else ring.one
-            for term in terms:
-                part = self._polynomial(term)
+            value = {(0,) * n: QQ(int(e.p), int(e.q))} if e else {}
+        elif e.is_Add:
+            value = {}
+            for term in e.args:
+                part = self._terms(term)
                 if part is None:
                     value = None
                     break
-                value = value + part if e.is_Add else value * part
-            if value is not None and coefficient is not None:
-                value = value.mul_ground(coefficient) if self.symbols else value * coefficient
-        elif e.is_Pow and e.exp.is_Integer and e.exp > 0:
-            base = self._polynomial(e.base)
-            value = None if base is None else base ** int(e.exp)
+                for monomial, c in part.items():
+                    c += value.get(monomial, QQ.zero)
+                    if c:
+                        value[monomial] = c
+                    else:
+                        del value[monomial]
+        elif e.is_Mul or e.is_Pow and e.exp.is_Integer and e.exp > 0:
+            factors = e.args if e.is_Mul else [e.base] * int(e.exp)
+            value = {(0,) * n: QQ.one}
+            for factor in factors:
+                part = self._terms(factor)
+                if part is None:
+                    value = None
+                    break
+                value = _product(value, part)
         else:
             value = None
         self._polynomials[e] = value
@@ -154,9 +181,13 @@ class Field:
         return DomainMatrix([[self.element(e) for e in r] for r in rows], (len(rows), len(rows[0])), self.K)
 
     def to_sympy(self, element):
-        if self.symbols and not (element.numer.is_ground and element.denom.is_ground):
-            return sp.factor(self.K.to_sympy(element))
-        return self.K.to_sympy(element)
+        if not self.symbols:
+            return self.K.to_sympy(element)
+        numerator, denominator = element.numer, element.denom
+        if numerator.is_ground and denominator.is_ground:  # a number: no printing, no factoring
+            a, b = numerator.LC, denominator.LC
+            return sp.Rational(int(a.numerator) * int(b.denominator), int(a.denominator) * int(b.numerator))
+        return sp.factor(self.K.to_sympy(element))
 
     def _sample_points(self):
         """A prime, and exact random values of the generators modulo it that keep every relation."""
@@ -170,7 +201,7 @@ class Field:
             root_values = {}
             for r in roots:
                 q = sp.Integer(-1) if r is sp.I else r.base ** r.exp.p  # r = q**(1/2), q rational
-                value = sqrt_mod(int(q.p) * pow(int(q.q), -1, prime) % prime, prime, all_roots=False)
+                value = _sqrt_mod(int(q.p) * pow(int(q.q), -1, prime) % prime, prime)
                 if value is None:
                     break
                 root_values[r] = value
@@ -225,6 +256,39 @@ class Field:
         return self.GF(numerator * pow(denominator, -1, self.prime))
 
 
+_DOMAINS = {}
+
+
+@functools.lru_cache(maxsize=256)
+def _sqrt_mod(a, prime):
+    """A square root of a modulo the prime, or None (the same few roots, such as sqrt(3), recur)."""
+    return sqrt_mod(a, prime, all_roots=False)
+
+
+def _domains(symbols):
+    """QQ(symbols) and ZZ[symbols], built once per set of generators (SymPy rebuilds them)."""
+    if not symbols:
+        return QQ, None
+    if symbols not in _DOMAINS:
+        K = QQ.frac_field(*symbols)
+        _DOMAINS[symbols] = K, K.field.ring.clone(domain=ZZ)
+    return _DOMAINS[symbols]
+
+
+def _product(a, b):
+    """The product of two polynomials held as {exponents: coefficient}."""
+    product = {}
+    for ma, ca in a.items():
+        for mb, cb in b.items():
+            monomial = tuple(x + y for x, y in zip(ma, mb))
+            c = product.get(monomial, QQ.zero) + ca * cb
+            if c:
+                product[monomial] = c
+            else:
+                del product[monomial]
+    return product
+
+
 def generic_rank(rows):
     """The rank, for generic values of the symbols, of a matrix given as rows of SymPy expressions."""
     field = Field([e for row in rows for e in row])
@@ -243,21 +307,35 @@ def _evaluate_polynomial(polynomial, values, prime):
 
 
 def _polynomial_rows(field, M, rows):
-    """The chosen rows of M with their denominators cleared: a matrix over the polynomial ring."""
+    """The chosen rows of M, each multiplied by a nonzero factor that clears its denominators:
+    rows of polynomials with integer coefficients (over QQ when there are no symbols).
+
+    Scaling a row changes neither its null space nor its row space, nor the ratios of minors
+    that Cramer's rule takes; integer coefficients make the minors plain ``int`` arithmetic.
+    """
     K = field.K
     if K is QQ:
-        return M.extract(rows, list(range(M.shape[1])))
-    ring = K.get_ring()
+        return M.extract(rows, list(range(M.shape[1]))).to_list()
+    integer_ring = field.integer_ring
+    entries = M.to_list()
     polynomial = []
     for i in rows:
-        row = M.to_list()[i]
-        denominator = ring.one
+        row = entries[i]
+        denominator = None
         for e in row:
             if e and not e.denom.is_ground:
-                denominator = denominator.lcm(e.denom)
-        cleared = [(e.numer * denominator.exquo(e.denom)) if e else ring.zero for e in row]
-        polynomial.append(cleared)
-    return DomainMatrix(polynomial, (len(rows), M.shape[1]), ring)
+                denominator = e.denom if denominator is None else denominator.lcm(e.denom)
+        if denominator is None:
+            cleared = [e.numer.quo_ground(e.denom.LC) if e and e.denom != 1 else e.numer for e in row]
+        else:
+            cleared = [e.numer * denominator.exquo(e.denom) if e else e.numer for e in row]
+        scale = 1
+        for p in cleared:
+            for c in p.values():
+                scale = math.lcm(scale, int(c.denominator))
+        polynomial.append([integer_ring.dtype({m: int(c.numerator) * (scale // int(c.denominator))
+                                               for m, c in p.items()}) for p in cleared])
+    return polynomial
 
 
 def _determinants(rows, zero, one):
@@ -314,17 +392,38 @@ def _solve_by_minors(field, rows, pivots, others):
     solution x of A_pivots x = A_j, as {pivot: K element}, each x_k = det(A_pivots, column k
     replaced by column j) / det(A_pivots)."""
     K = field.K
-    ring = K.get_ring() if field.symbols else K
+    if not field.symbols:
+        det = _determinants(rows, K.zero, K.one)
+        denominator = det(pivots)
+        return [{p: K.quo(det(pivots[:k] + [j] + pivots[k + 1:]), denominator)
+                 for k, p in enumerate(pivots)} for j in others]
+    ring = field.integer_ring
     det = _determinants(rows, ring.zero, ring.one)
-    denominator = K.convert(det(pivots))
+    denominator = det(pivots)
     solutions = []
     for j in others:
         x = {}
         for k, p in enumerate(pivots):
             value = det(pivots[:k] + [j] + pivots[k + 1:])
-            x[p] = K.quo(K.convert(value), denominator) if value else K.zero
+            x[p] = _fraction(K, *_cancel(value, denominator)) if value else K.zero
         solutions.append(x)
     return solutions
+
+
+def _cancel(numerator, denominator):
+    """numerator / denominator in lowest terms, the denominator's leading coefficient positive.
+    Most ratios of minors here are polynomials (often numbers): an exact division is tried
+    before the gcd."""
+    quotient, remainder = numerator.div(denominator)
+    if not remainder:
+        return quotient, quotient.ring.one
+    return numerator.cancel(denominator)
+
+
+def _fraction(K, numerator, denominator):
+    """The element numerator / denominator of K from coprime integer polynomials."""
+    ring = K.field.ring
+    return K.field.raw_new(numerator.set_ring(ring), denominator.set_ring(ring))
 
 
 def reduced_basis(field, M, rows=None):
@@ -342,7 +441,7 @@ def reduced_basis(field, M, rows=None):
         return DomainMatrix.zeros((0, cols), field.K)
     if len(rows) == cols:  # the whole space: the identity is its reduced basis
         return DomainMatrix.eye(cols, field.K)
-    A = _polynomial_rows(field, M, rows).to_list()
+    A = _polynomial_rows(field, M, rows)
     pivots = sorted(_pivot_columns(field, A, list(reversed(range(cols)))))
     K = field.K
     basis = [[K.one if j == p else K.zero for j in range(cols)] for p in pivots]
@@ -366,7 +465,7 @@ def null_space(field, M, rows=None):
         return DomainMatrix.eye(cols, field.K)
     if len(rows) == cols:  # full rank: only the zero vector
         return DomainMatrix.zeros((0, cols), field.K)
-    A = _polynomial_rows(field, M, rows).to_list()
+    A = _polynomial_rows(field, M, rows)
     pivots = _pivot_columns(field, A, list(range(cols)))
     free = [j for j in range(cols) if j not in pivots]
     K = field.K

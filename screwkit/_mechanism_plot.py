@@ -161,7 +161,7 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
             ax.scatter(*point, color=colour, marker=marker, s=30, label=label, gid=f"joint-{kind}")
     if twists is not None:
         _draw_twists(ax, twists, platform.mean(axis=0), length)
-    _frame_box(ax, points, length)
+    _frame_box(ax, points, 1.6 * length if twists is not None else length)  # room for the arrows
     ax.legend(loc="upper left", fontsize=8)
     if title:
         ax.set_title(title)

@@ -85,7 +85,10 @@ def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
     """S: three independent revolute axes through the centre r."""
     if isinstance(axes, (str, bytes)) or not hasattr(axes, "__len__") or len(axes) != 3:
         raise ValueError(f"axes of a spherical joint must be three directions, got {describe(axes)}")
-    joints = [joint for k, axis in enumerate(axes) for joint in revolute(_direction(axis, f"axes[{k}]"), r)]
+    first = _direction(axes[0], "axes[0]")
+    centre = _vec(r, "r")  # checked in the order a revolute() per axis would check them
+    joints = [(first, centre, 0)] + [(_direction(axis, f"axes[{k}]"), centre.copy(), 0)
+                                     for k, axis in enumerate(axes) if k]
     if _is_zero(sp.Matrix.hstack(*(s for s, _, _ in joints)).det()):
         raise ValueError("axes of a spherical joint must be independent (not in one plane), got "
                          f"{[list(s) for s, _, _ in joints]}")
@@ -106,7 +109,8 @@ def parallelogram(s, a1, a2, b1, b2):
     for P, Q, names in ((A1, A2, "a1 and a2"), (A1, B1, "a1 and b1")):
         if all(_is_zero(e) for e in P - Q):
             raise ValueError(f"{names} of a parallelogram must be different points, got {list(P)} for both")
-    return [joint for corner in corners for joint in revolute(s, corner)]
+    s = _direction(s, "s")
+    return [(s.copy(), corner, 0) for corner in corners]
 
 
 def rotate_limb(limb, R):
@@ -116,17 +120,29 @@ def rotate_limb(limb, R):
     """
     if not (isinstance(R, sp.MatrixBase) and _exact_rotation(R)):
         R = check_rotation(R, "R")  # refuses a scaling or a reflection, with the reason
-    R = as_sympy_matrix(R, "R", (3, 3))
-    return [((R * _vec(s, "s")).applyfunc(sp.expand), (R * _vec(r, "r")).applyfunc(sp.expand), h)
-            for s, r, h in limb]
+    rows = as_sympy_matrix(R, "R", (3, 3)).tolist()
+
+    def turn(v, name):
+        # R v entry by entry (no matrix product), each entry expanded
+        v = _vec(v, name).flat()
+        return sp.Matrix(3, 1, [sp.expand(sp.Add(*[c * e for c, e in zip(row, v) if c != 0 and e != 0]))
+                                for row in rows])
+
+    return [(turn(s, "s"), turn(r, "r"), h) for s, r, h in limb]
 
 
 def _exact_rotation(R):
     """True if R is a constant 3x3 SymPy matrix with R^T R = I and det R = 1 exactly."""
     if R.shape != (3, 3) or R.free_symbols or R.has(sp.Float):
         return False
-    gram = (R.T * R).applyfunc(sp.expand)
-    return gram == sp.eye(3) and sp.expand(R.det()) == 1
+    key = tuple(R.flat())
+    if key not in _EXACT_ROTATIONS:  # the same few turns (by 2 pi k / n) come back often
+        gram = (R.T * R).applyfunc(sp.expand)
+        _EXACT_ROTATIONS[key] = gram == sp.eye(3) and sp.expand(R.det()) == 1
+    return _EXACT_ROTATIONS[key]
+
+
+_EXACT_ROTATIONS = {}
 
 
 def translate_limb(limb, p):

@@ -136,7 +136,7 @@ _NOT_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 def _checked_vector(v):
     """A 3 x 1 SymPy matrix from the joint helpers, finite, as a list; None if it needs the full check."""
     if isinstance(v, sp.MatrixBase) and v.shape == (3, 1):
-        entries = v.flat()
+        entries = _exact.entries(v)
         if not any(e.has(*_NOT_FINITE) for e in entries):
             return entries
     return None
@@ -204,25 +204,27 @@ def mobility(limbs, at=None, tol=None):
         return _at_configuration(limbs, at, tol)
     _check_limbs(limbs)
     twists = [[_twist(joint, i, j) for j, joint in enumerate(limb)] for i, limb in enumerate(limbs)]
-    if _numeric.has_floats([e for limb in twists for t in limb for e in t.vector]):
+    if _numeric.has_floats([e for limb in twists for t in limb for e in _exact.entries(t.vector)]):
         return _mobility_of_floats(limbs, twists, tol)
 
     # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own symbols.
     lts, lws, lts_ranks = [], [], []
     for limb in twists:
-        F = _exact.Field([e for t in limb for e in t.vector])
-        M = F.matrix([list(t.vector) for t in limb])
+        rows = [_exact.entries(t.vector) for t in limb]
+        F = _exact.Field([e for row in rows for e in row])
+        M = F.matrix(rows)
         independent = F.independent_rows(M)
         N = _exact.null_space(F, M.extract(list(range(M.shape[0])), _SWAP), independent)
         wrenches = [Wrench._checked(sp.Matrix(6, 1, [F.to_sympy(e) for e in row])) for row in N.to_list()]
-        lts.append(ScrewSystem(limb, kind=Twist, _field=F, _rank=len(independent)))
+        lts.append(ScrewSystem(limb, kind=Twist, _field=F, _rank=len(independent), _floats=False))
         lts_ranks.append(len(independent))
-        lws.append(ScrewSystem(wrenches, kind=Wrench, _rank=len(wrenches), _basis=wrenches))
+        lws.append(ScrewSystem(wrenches, kind=Wrench, _rank=len(wrenches), _basis=wrenches, _floats=False))
 
     # Steps 3 and 4: the platform's constraints, and the motions they leave.
     constraints = [w for system in lws for w in system.screws]
-    pws = ScrewSystem(constraints, kind=Wrench)
-    pws = ScrewSystem(pws.basis(), kind=Wrench, _field=pws.field, _rank=pws.rank, _basis=pws.basis())
+    pws = ScrewSystem(constraints, kind=Wrench, _floats=False)
+    pws = ScrewSystem(pws.basis(), kind=Wrench, _field=pws.field, _rank=pws.rank, _basis=pws.basis(),
+                      _floats=False)
     pts = pws.reciprocal()
     basis = pts.basis()
     rotations = _exact.generic_rank([list(t.primary) for t in basis]) if basis else 0

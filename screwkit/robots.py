@@ -60,14 +60,19 @@ def pm_3prrr():
     a, b, Ly, Lz = sp.symbols("a b L_y L_z")
     d = sp.symbols("d_1:4")
     theta = _symbols("theta", 3, 2, 3)
-    axes, rotations = [X, Y, Z], [rotx, roty, rotz]
-    offsets = [Y, Z, X]  # the links AB, BC lie along these axes before they turn
+    axes = [X, Y, Z]
+
+    # the links AB, BC start along Y, Z, X and turn about the limb's axis X, Y, Z
+    def link(i, length, angle):
+        c, s = length * sp.cos(angle), length * sp.sin(angle)
+        return sp.Matrix([[0, c, s], [s, 0, c], [c, s, 0]][i])
+
     bases = [sp.Matrix([d[0], Ly, 0]), sp.Matrix([0, d[1], Lz]), sp.Matrix([0, 0, d[2]])]
     limbs = []
     for i in range(3):
         A = bases[i]
-        B = A + rotations[i](theta[i][0]) * (a * offsets[i])
-        C = B + rotations[i](theta[i][1]) * (b * offsets[i])
+        B = A + link(i, a, theta[i][0])
+        C = B + link(i, b, theta[i][1])
         s = axes[i]
         limbs.append(prismatic(s, A) + revolute(s, A) + revolute(s, B) + revolute(s, C))
     return limbs
@@ -84,15 +89,29 @@ def pm_3prpar():
     limbs = []
     for i in range(3):
         t2, t3 = theta[i]
-        K = rotx(t2)                      # the plane of the parallelogram
-        N = rotx(t2) * roty(t3)           # the direction of its long sides
-        A0, A1, A2 = sp.Matrix([d[i], 0, 0]), sp.Matrix([d[i] - b / 2, 0, 0]), sp.Matrix([d[i] + b / 2, 0, 0])
-        side = N * sp.Matrix([L, 0, 0])
-        limb = (prismatic(X, A0) + revolute(X, A0)
-                + parallelogram(K * Y, A1, A2, A1 + side, A2 + side)
-                + revolute(X, A0 + side))
-        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
+        turn = _turn_about_z(2 * sp.pi * i / 3)
+        x = turn(X)
+        # the parallelogram's axes Rx(t2) Y, and its long sides Rx(t2) Ry(t3) (L, 0, 0)
+        w = turn([0, sp.cos(t2), sp.sin(t2)])
+        side = [L * sp.cos(t3), L * sp.sin(t2) * sp.sin(t3), -L * sp.cos(t2) * sp.sin(t3)]
+        A0, A1, A2 = ([d[i] + shift, 0, 0] for shift in (0, -b / 2, b / 2))
+        B0, B1, B2 = ([p + q for p, q in zip(A, side)] for A in (A0, A1, A2))
+        A0, A1, A2, B0, B1, B2 = map(turn, (A0, A1, A2, B0, B1, B2))
+        limbs.append(prismatic(x, A0) + revolute(x, A0) + parallelogram(w, A1, A2, B1, B2)
+                     + revolute(x, B0))
     return limbs
+
+
+def _turn_about_z(angle):
+    """v -> Rz(angle) v with expanded entries, written out (no matrix product): a limb turned
+    about Z, as rotate_limb(limb, rotz(angle)) gives it."""
+    c, s = sp.cos(angle), sp.sin(angle)
+
+    def turn(v):
+        x, y, z = v
+        return sp.Matrix([sp.expand(c * x - s * y), sp.expand(s * x + c * y), sp.expand(z)])
+
+    return turn
 
 
 def pm_4prru():

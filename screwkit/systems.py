@@ -41,7 +41,7 @@ class ScrewSystem:
         exact screws ignore it
     """
 
-    def __init__(self, screws, kind=None, tol=None, _field=None, _rank=None, _basis=None):
+    def __init__(self, screws, kind=None, tol=None, _field=None, _rank=None, _basis=None, _floats=None):
         if isinstance(screws, ScrewSystem):
             screws = screws.screws
         if not isinstance(screws, (list, tuple)):
@@ -55,7 +55,9 @@ class ScrewSystem:
         self.kind = kind or (kinds.pop() if kinds else Twist)
         self.tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
         self.screws = [self._as_screw(s, i) for i, s in enumerate(screws)]
-        self.numeric = _numeric.has_floats([e for s in self.screws for e in s.vector])
+        if _floats is None:  # mobility() knows, and says so
+            _floats = _numeric.has_floats([e for s in self.screws for e in _exact.entries(s.vector)])
+        self.numeric = _floats
         if self.numeric:
             self._array = _numeric.to_array([list(s.vector) for s in self.screws], "screws")
         self._field = _field
@@ -79,7 +81,7 @@ class ScrewSystem:
     def field(self):
         """The exact field of the screws' coordinates (exact systems only)."""
         if self._field is None:
-            self._field = _exact.Field([e for s in self.screws for e in s.vector])
+            self._field = _exact.Field([e for s in self.screws for e in _exact.entries(s.vector)])
         return self._field
 
     @property
@@ -90,7 +92,7 @@ class ScrewSystem:
         return sp.Matrix.hstack(*(s.vector for s in self.screws))
 
     def _domain_matrix(self):
-        return self.field.matrix([list(s.vector) for s in self.screws]) if self.screws else None
+        return self.field.matrix([_exact.entries(s.vector) for s in self.screws]) if self.screws else None
 
     @property
     def rank(self):
@@ -130,10 +132,10 @@ class ScrewSystem:
             kernel = _numeric.null_space(self._array[:, [3, 4, 5, 0, 1, 2]], self.tol)
             basis = [other._checked(sp.Matrix(6, 1, row)) for row in _numeric.as_sympy_rows(kernel)]
             return ScrewSystem(basis, kind=other, tol=self.tol, _rank=len(basis), _basis=basis)
-        M = self.field.matrix([_swap(s.vector) for s in self.screws])
+        M = self.field.matrix([_swap(_exact.entries(s.vector)) for s in self.screws])
         N = _exact.null_space(self.field, M)
         basis = [other._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])) for row in N.to_list()]
-        return ScrewSystem(basis, kind=other, _rank=len(basis), _basis=basis)
+        return ScrewSystem(basis, kind=other, _rank=len(basis), _basis=basis, _floats=False)
 
     def union(self, other):
         """The span of both systems (same kind)."""

@@ -216,3 +216,77 @@ def test_typeset_results_keep_the_plain_text_for_terminals():
     assert html.count("<table class=\"screwkit-system\">") == 3 + 3 + 2 and "Mobility 3 (3T)" in html
     latex = m._repr_latex_()
     assert latex.startswith("$\\begin{array}") and latex.count("matrix}") == 2 * 8
+
+
+def test_builders_write_the_limbs_their_rotation_matrices_give():
+    """The builders write entries directly; the reference turns the paper's limbs with SymPy's
+    matrix products (rotx, roty, rotz) and expands, as the paper's code does."""
+    from screwkit.joints import parallelogram, prismatic, revolute
+    from screwkit.transforms import rotx, roty, rotz
+
+    X, Y, Z = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1])
+
+    def turned(limb, R):
+        return [((R * s).expand(), (R * r).expand(), h) for s, r, h in limb]
+
+    L, b = sp.symbols("L b")
+    expected = []
+    for i in range(3):
+        d, t2, t3 = sp.Symbol(f"d_{i + 1}"), sp.Symbol(f"theta_{i + 1}2"), sp.Symbol(f"theta_{i + 1}3")
+        A0, A1, A2 = (sp.Matrix([d + shift, 0, 0]) for shift in (0, -b / 2, b / 2))
+        side = rotx(t2) * roty(t3) * sp.Matrix([L, 0, 0])
+        limb = (prismatic(X, A0) + revolute(X, A0)
+                + parallelogram(rotx(t2) * Y, A1, A2, A1 + side, A2 + side) + revolute(X, A0 + side))
+        expected.append(turned(limb, rotz(2 * sp.pi * i / 3)))
+    assert _as_lists(sk.robots.pm_3prpar()) == _as_lists(expected)
+
+    a, b, Ly, Lz = sp.symbols("a b L_y L_z")
+    expected = []
+    bases = [sp.Matrix([sp.Symbol("d_1"), Ly, 0]), sp.Matrix([0, sp.Symbol("d_2"), Lz]),
+             sp.Matrix([0, 0, sp.Symbol("d_3")])]
+    for i, (axis, rotation, offset) in enumerate(zip([X, Y, Z], [rotx, roty, rotz], [Y, Z, X])):
+        t2, t3 = sp.Symbol(f"theta_{i + 1}2"), sp.Symbol(f"theta_{i + 1}3")
+        A = bases[i]
+        B = A + rotation(t2) * (a * offset)
+        C = B + rotation(t3) * (b * offset)
+        expected.append(prismatic(axis, A) + revolute(axis, A) + revolute(axis, B) + revolute(axis, C))
+    assert _as_lists(sk.robots.pm_3prrr()) == _as_lists(expected)
+
+
+def _as_lists(limbs):
+    return [[(list(s.expand()), list(r.expand()), h) for s, r, h in limb] for limb in limbs]
+
+
+def test_rotate_limb_is_the_matrix_product():
+    from screwkit.joints import rotate_limb
+    from screwkit.transforms import rotz
+
+    t, c = sp.symbols("t c")
+    limb = [(sp.Matrix([sp.cos(t), sp.sin(t), 1]), sp.Matrix([c, c / 3, sp.sqrt(2)]), 0),
+            (sp.Matrix([0, 0, 1]), sp.Matrix([1, 2, 3]), sp.oo)]
+    for R in (rotz(2 * sp.pi / 3), rot_axis([1, 1, 1], sp.pi / 3)):
+        R = sp.Matrix(R).applyfunc(sp.nsimplify)
+        got = rotate_limb(limb, R)
+        for (s, r, h), (s2, r2, h2) in zip(limb, got):
+            assert (R * s - s2).expand() == sp.zeros(3, 1) and (R * r - r2).expand() == sp.zeros(3, 1)
+            assert h2 == h
+
+
+def test_null_space_of_rows_with_fractions_and_denominators():
+    """Rows with rational coefficients and rational-function entries: the exact null space is
+    checked by M N^T = 0 and by its canonical form (each basis row ends in its own 1)."""
+    from screwkit import _exact
+
+    a, t = sp.symbols("a t")
+    rows = [[1, a / 3, 0, sp.sin(t) / 2, 0, 1 / (a + 1)],
+            [0, 1, sp.Rational(2, 7), 0, a * sp.cos(t), 0],
+            [sp.Rational(1, 5), 0, 1, a / (1 + a ** 2), 0, 0]]
+    field = _exact.Field([e for row in rows for e in row])
+    N = _exact.null_space(field, field.matrix(rows))
+    basis = [[field.to_sympy(e) for e in row] for row in N.to_list()]
+    assert len(basis) == 3
+    for x in basis:
+        for row in rows:
+            assert sp.simplify(sum(sp.sympify(m) * e for m, e in zip(row, x))) == 0
+    last = [max(k for k, e in enumerate(x) if e != 0) for x in basis]
+    assert [basis[i][k] for i, k in enumerate(last)] == [1, 1, 1] and len(set(last)) == 3
