@@ -39,6 +39,8 @@ rows = [
     ("Kawasaki all, 10,000 poses", best(lambda: sk.ik.analytic_ik_all(
         kawasaki, poses["Kawasaki CX210L"]), 3, 5), None, "", 100e-3),
     ("PUMA all 8, one pose", best(lambda: sk.ik.puma560_ik(T_one), 200), None, "", None),
+    ("Kawasaki all, one pose", best(lambda: sk.ik.analytic_ik(
+        kawasaki, poses["Kawasaki CX210L"][0]), 200), None, "", None),
     ("numeric IK, PUMA, 1 start", best(lambda: sk.ik.numeric_ik(
         puma, puma.fk(target_q), target_q + 0.2), 20), None, "", None),
     ("numeric IK, PUMA, 100 starts", best(lambda: sk.ik.numeric_ik(

@@ -1,8 +1,10 @@
 """The PUMA 560: screwkit against the Robotics Toolbox for Python (RTB), run side by side.
 
 Prints (1) agreement: RTB's ikine_a for each of the eight configuration labels against
-screwkit's solution with the same label, on random poses; (2) a timing table with the
-issue's goals. RTB's model gets d1 = 0 (no pedestal), as in the paper and in screwkit.
+screwkit's solution with the same label, on 200 random poses, twice: RTB's model with d1 = 0
+(no pedestal, as in the paper and screwkit's puma560()) against sk.ik.puma560_ik_all, and
+RTB's own Puma560 (pedestal d1 = 0.67183 m) against sk.ik.puma560_ik(T, robot=...) with a
+screwkit chain built from the same DH table; (2) a timing table with the issue's goals.
 Usage (from the top level): make bench, or .venv-bench/bin/python benchmarks/bench_puma.py
 """
 import time
@@ -27,16 +29,53 @@ Q = rng.uniform(-np.pi, np.pi, (N_FK, 6))
 
 
 # ---- agreement ---------------------------------------------------------------------------
-poses = puma.fk(Q[:200])
-ours = sk.ik.puma560_ik_all(poses)
-same, total = 0, 0
-for T, solutions in zip(poses, ours):
-    for config, q in zip(sk.ik.CONFIGURATIONS, solutions):
-        theirs = corke.ikine_a(T, config).q
-        total += 1
-        same += np.allclose(np.angle(np.exp(1j * (theirs - q))), 0, atol=1e-8)
+def wrapped(angles):
+    return np.angle(np.exp(1j * angles))
+
+
+def agreement(rtb_robot, screwkit_answers, poses):
+    """(same, total, rtb_failed): (pose, label) pairs where RTB's ikine_a and screwkit give
+    the same joint vector (mod 2 pi, to 1e-8 rad), of those where both give one."""
+    same = total = failed = 0
+    for T, answer in zip(poses, screwkit_answers):
+        for config, q in answer:
+            solution = rtb_robot.ikine_a(T, config)
+            if not solution.success or q is None:
+                failed += 1
+                continue
+            total += 1
+            same += bool(np.allclose(wrapped(solution.q - q), 0, atol=1e-8))
+    return same, total, failed
+
+
 assert np.allclose(corke.fkine(Q[0]).A, puma.fk(Q[0]), atol=1e-12), "the two models differ"
-print(f"agreement: {same} of {total} (pose, label) pairs give the same joint vector in RTB and screwkit\n")
+poses = puma.fk(Q[:200])
+ours = [list(zip(sk.ik.CONFIGURATIONS, row)) for row in sk.ik.puma560_ik_all(poses)]
+same, total, failed = agreement(corke, ours, poses)
+print(f"d1 = 0: {same} of {total} (pose, label) pairs give the same joint vector in RTB "
+      f"(ikine_a) and screwkit (puma560_ik_all); RTB found no solution for {failed}")
+
+# RTB's own PUMA, on its pedestal, and a screwkit chain read from the same DH table
+corke_pedestal = rtb.models.DH.Puma560()
+pedestal = sk.Chain([sk.Link.revolute(d=L.d, a=L.a, alpha=L.alpha, offset=L.offset)
+                     for L in corke_pedestal.links], base=corke_pedestal.base.A,
+                    tool=corke_pedestal.tool.A, name="RTB Puma560")
+assert np.allclose(corke_pedestal.fkine(Q[0]).A, pedestal.fk(Q[0]), atol=1e-12)
+poses_pedestal = pedestal.fk(Q[:200])
+ours = []
+for T in poses_pedestal:
+    answer = sk.ik.puma560_ik(T, robot=pedestal)
+    ours.append([(c, None if answer.by_config(c) is None else answer.by_config(c).q)
+                 for c in sk.ik.CONFIGURATIONS])
+same, total, failed = agreement(corke_pedestal, ours, poses_pedestal)
+print(f"d1 = {corke_pedestal.links[0].d:.5f} m (RTB's Puma560): {same} of {total} pairs agree "
+      f"(puma560_ik(T, robot=...)); RTB or screwkit found no solution for {failed}")
+answers = [sk.ik.puma560_ik(T) for T in poses_pedestal]  # without robot=: d1 = 0
+misses = [np.linalg.norm(pedestal.fk(sol.q)[:3, 3] - T[:3, 3])
+          for T, answer in zip(poses_pedestal, answers) for sol in answer]
+print(f"  the same poses given to puma560_ik without robot= (screwkit's d1 = 0 model): "
+      f"{sum(not a for a in answers)} of {len(answers)} out of reach; the {len(misses)} "
+      f"solutions of the others miss their pose by {min(misses):.4f} m or more\n")
 
 # ---- timings -----------------------------------------------------------------------------
 start = time.perf_counter()

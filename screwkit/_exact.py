@@ -75,6 +75,8 @@ def _scan(e, found, seen):
         found["symbols"].add(e)
     elif e is sp.I or _is_root(e):
         found["roots"].add(e)
+    elif e.is_Pow and not e.exp.is_Integer:  # a nested or symbolic root: no polynomial generator
+        found["other"].add(e)
     else:
         if isinstance(e, sp.Function):
             found["other"].add(e)
@@ -100,7 +102,8 @@ class Field:
             exprs = [sp.expand_trig(e) for e in exprs]
             found = self._generators(exprs)
         if found["other"]:
-            raise TypeError(f"screw coordinates may use sin, cos and tan only, got {sorted(map(str, found['other']))}")
+            raise TypeError("screw coordinates may hold numbers, symbols, pi, square roots of rational "
+                            f"numbers and sin, cos, tan of expressions, got {sorted(map(str, found['other']))}")
         self.symbols = sorted(found["trig"] | found["roots"] | found["symbols"], key=sp.default_sort_key)
         # the minors are computed with integer coefficients (see _polynomial_rows)
         self.K, self.integer_ring = _domains(tuple(self.symbols))
@@ -196,18 +199,22 @@ class Field:
         for r in roots:
             if r is not sp.I and r.exp.q != 2:
                 raise TypeError(f"screw coordinates may use square roots only, got {r}")
+        # sqrt(6) must be sqrt(2) sqrt(3) at the sample points too: every root is built from the
+        # square roots of the primes (and of -1) that divide its radicand, each chosen once
+        radicands = {r: sp.Integer(-1) if r is sp.I else r.base for r in roots}
+        primes = sorted({p for q in radicands.values() for n in (q.p, q.q) for p in sp.factorint(abs(n))}
+                        | ({-1} if any(q < 0 for q in radicands.values()) else set()))
         prime = _PRIME
         while True:  # the prime must have the square roots we need
-            root_values = {}
-            for r in roots:
-                q = sp.Integer(-1) if r is sp.I else r.base ** r.exp.p  # r = q**(1/2), q rational
-                value = _sqrt_mod(int(q.p) * pow(int(q.q), -1, prime) % prime, prime)
-                if value is None:
-                    break
-                root_values[r] = value
-            if len(root_values) == len(roots):
+            prime_roots = {p: _sqrt_mod(p % prime, prime) for p in primes}
+            if all(v is not None for v in prime_roots.values()):
                 break
             prime = int(sp.prevprime(prime))
+        root_values = {}
+        for r, q in radicands.items():
+            value = _root_of_rational(q, prime_roots, prime)
+            exponent = 1 if r is sp.I else int(r.exp.p)  # r = sqrt(q) ** exponent
+            root_values[r] = pow(value, exponent, prime)
         angles = sorted({g.args[0] for g in self.symbols if isinstance(g, _TRIG)}, key=sp.default_sort_key)
         points = []
         for _ in range(_SAMPLE_POINTS):
@@ -257,6 +264,16 @@ class Field:
 
 
 _DOMAINS = {}
+
+
+def _root_of_rational(q, prime_roots, prime):
+    """sqrt(q) modulo the prime for a rational q, from the chosen roots of its prime factors."""
+    value = prime_roots[-1] if q < 0 else 1
+    for n, sign in ((abs(q.p), 1), (q.q, -1)):
+        for p, k in sp.factorint(n).items():
+            part = pow(p, k // 2, prime) * (prime_roots[p] if k % 2 else 1)
+            value = value * pow(part, sign, prime) % prime
+    return value
 
 
 @functools.lru_cache(maxsize=256)

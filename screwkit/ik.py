@@ -171,8 +171,11 @@ def analytic_ik(chain, T, within_limits=False, near=None):
         to ``near`` if given); empty with a ``reason`` when out of reach. For a batch, a list
         of IKSolutions.
     """
-    arm = _arm(chain)
-    T = _poses(T, "T")
+    return _analytic_ik(_arm(chain), chain, _poses(T, "T"), within_limits, near)
+
+
+def _analytic_ik(arm, chain, T, within_limits, near):
+    """analytic_ik for poses T already checked."""
     within_limits = _check_flag(within_limits, "within_limits")
     if near is not None:
         near = as_float_array(near, "near")
@@ -190,13 +193,13 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     if code != 0:
         return IKSolutions([], reason=arm.reason(T, code))
     names = ("shoulder", "elbow", "wrist")
+    moved, inside = _into_limits(Q, limits)
     solutions = []
-    for q, config, flag in zip(Q, CONFIGURATIONS, flags):
+    for q, q_moved, ok, config, flag in zip(Q, moved, inside, CONFIGURATIONS, flags):
         if np.isnan(q[0]):
             continue
-        inside = _into_limits(q, limits)
-        solutions.append(IKSolution(q=inside if within_limits and inside is not None else q,
-                                    config=config, within_limits=inside is not None,
+        solutions.append(IKSolution(q=q_moved if within_limits and ok else q,
+                                    config=config, within_limits=bool(ok),
                                     singular=tuple(n for n, f in zip(names, flag) if f)))
     if within_limits:
         solutions = [s for s in solutions if s.within_limits]
@@ -210,19 +213,16 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     return result
 
 
-def _into_limits(q, qlim):
-    """q with each angle moved by a multiple of 2 pi into its limits (the value nearest to
-    its (-pi, pi] value), or None if one cannot be."""
-    moved = q.copy()
-    for i, (low, high) in enumerate(qlim):
-        if low <= q[i] <= high:
-            continue
-        candidates = q[i] + 2 * np.pi * np.arange(-3, 4)
-        inside = candidates[(candidates >= low - 1e-12) & (candidates <= high + 1e-12)]
-        if inside.size == 0:
-            return None
-        moved[i] = inside[np.argmin(np.abs(inside - q[i]))]
-    return moved
+def _into_limits(Q, qlim):
+    """Q (k, 6) with each angle moved by a multiple of 2 pi into its limits (the value
+    nearest to its (-pi, pi] value), and whether each row could be moved there, (k,)."""
+    low, high = qlim[:, 0], qlim[:, 1]
+    already = (Q >= low) & (Q <= high)
+    candidates = Q[..., None] + 2 * np.pi * np.arange(-3, 4)  # (k, 6, 7)
+    fits = (candidates >= low[:, None] - 1e-12) & (candidates <= high[:, None] + 1e-12)
+    distance = np.where(fits, np.abs(candidates - Q[..., None]), np.inf)
+    nearest = np.take_along_axis(candidates, distance.argmin(axis=-1)[..., None], -1)[..., 0]
+    return np.where(already, Q, nearest), np.all(already | fits.any(axis=-1), axis=-1)
 
 
 def configuration(chain, q):
@@ -243,8 +243,8 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
     d1 = 0.672 m) need that robot passed in.
     """
     robot = _default_puma() if robot is None else robot
-    T = _poses(T, "T", single_only=True)
-    return analytic_ik(robot, T, within_limits=within_limits, near=near)
+    arm = _arm(robot, "robot")
+    return _analytic_ik(arm, robot, _poses(T, "T", single_only=True), within_limits, near)
 
 
 def puma560_ik_all(Ts, robot=None):

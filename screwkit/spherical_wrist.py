@@ -84,8 +84,19 @@ def _polar(y, x):
 
 
 def _dot(w, v):
-    """w . v for a fixed w (3,) and vectors v (3, ...): one BLAS call."""
-    return np.tensordot(w, v, axes=1)
+    """w . v for a fixed w (3,) and vectors v (3, ...): one matrix product."""
+    return (w @ v.reshape(3, -1)).reshape(v.shape[1:])
+
+
+def _apply(K, v):
+    """K @ v for a fixed K (3, 3) and vectors v (3, ...)."""
+    return (K @ v.reshape(3, -1)).reshape(v.shape)
+
+
+def _cross3(a, b):
+    """a x b for two single 3-vectors (np.cross costs more than the arithmetic here)."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]])
 
 
 class _Rotor:
@@ -102,12 +113,12 @@ class _Rotor:
 
     def cross(self, w, v):
         """w x v for a fixed w (3,) and vectors v (3, ...)."""
-        return np.tensordot(self.cross_matrix(w), v, axes=1)
+        return _apply(self.cross_matrix(w), v)
 
     def rotate(self, v, cos, sin):
         """v (3, ...) turned about w by the angles with these cosines and sines (...)."""
         along = _dot(self.w, v) * (1 - cos)
-        return (v * cos + np.tensordot(self.K, v, axes=1) * sin
+        return (v * cos + _apply(self.K, v) * sin
                 + self.w.reshape((3,) + (1,) * along.ndim) * along)
 
 
@@ -254,7 +265,7 @@ class SphericalWristArm:
         # joint 1 (subproblem 4): turn the wrist centre by theta = -q1 onto w2 . x = w2 . c
         along1 = _dot(w1, d)
         A = _dot(w2, d) - along1 * (w1 @ w2)
-        B = _dot(np.cross(w2, w1), d)
+        B = _dot(_cross3(w2, w1), d)
         C = w2 @ (c - p[0]) - along1 * (w2 @ w1)
         rho2 = A**2 + B**2
         excess = rho2 - C**2
@@ -280,14 +291,14 @@ class SphericalWristArm:
         elbow_ok = np.abs(cosine) <= 1 + CLIP_TOL
         cosine = np.clip(cosine, -1.0, 1.0)
         beta = np.arccos(cosine)
-        theta0 = s3 * np.arctan2(np.cross(u3, v3) @ w2, u3 @ v3)
+        theta0 = s3 * np.arctan2(_cross3(u3, v3) @ w2, u3 @ v3)
         q3 = theta0 + s3 * np.stack([-beta, beta], axis=-1)  # (N, 2, 2): arm, candidate
 
         # joint 2 (subproblem 1): the angle about w2 from a = p3 - p2 + R3 (c - p3) to b1;
         # a = k0 + cos(q3) k1 + sin(q3) k2, and b1 . (w2 x k) = -m . k with m = w2 x b1
         c3, s3q = np.cos(s3 * q3), np.sin(s3 * q3)
         k0 = p[2] - p[1] + w2 * (w2 @ (c - p[2]))
-        k1, k2 = u3, np.cross(w2, u3)
+        k1, k2 = u3, _cross3(w2, u3)
         m = turn1.cross(w2, b1)
         dots = [_dot(k, b1)[..., None] for k in (k0, k1, k2)]
         crosses = [-_dot(k, m)[..., None] for k in (k0, k1, k2)]
@@ -297,7 +308,7 @@ class SphericalWristArm:
 
         # the elbow label: above = ((w1 - p2) x R2 (p3 - p2)) . w2; the larger sigma*above is 'u'
         e = p[2] - p[1] - w2 * (w2 @ (p[2] - p[1]))
-        above = c2 * _dot(e, m)[..., None] + s2 * _dot(np.cross(w2, e), m)[..., None]
+        above = c2 * _dot(e, m)[..., None] + s2 * _dot(_cross3(w2, e), m)[..., None]
         sigma = np.array([-1.0, 1.0])
         swap = sigma * above[..., 0] < sigma * above[..., 1]  # (N, 2)
         swap = swap[..., None]
@@ -306,7 +317,7 @@ class SphericalWristArm:
         q3 = _wrap(q3)
 
         # the wrist: Rw = R23^T R1^T RG, R2 R3 = R(w2, q2 + s3 q3); t = Rw w6, b = Rw x6
-        x6 = _unit(np.cross(w5, w6))
+        x6 = _unit(_cross3(w5, w6))
         g = np.stack([RG @ w6, RG @ x6], axis=-1).transpose(1, 0, 2)  # (3, N, 2)
         g = turn1.rotate(np.repeat(g[:, :, None], 2, axis=2), ct[..., None], st[..., None])
         c23, s23 = c2 * c3 - s2 * s3q, s2 * c3 + c2 * s3q  # of q2 + s3 q3: turn back by it
@@ -314,8 +325,8 @@ class SphericalWristArm:
                               c23[..., None], -s23[..., None])
         t, b = g[..., 0], g[..., 1]  # (3, N, 2, 2)
         c45, c46, c56 = w4 @ w5, w4 @ w6, w5 @ w6
-        n45 = np.cross(w4, w5)
-        t4, t5, tn, tm = (_dot(v, t) for v in (w4, w5, n45, np.cross(w4, n45)))
+        n45 = _cross3(w4, w5)
+        t4, t5, tn, tm = (_dot(v, t) for v in (w4, w5, n45, _cross3(w4, n45)))
         a = (c45 * c56 - t4) / (c45**2 - 1)
         bb = (c45 * t4 - c56) / (c45**2 - 1)
         # gamma^2 = |z_perp|^2 / |n45|^2 - bb^2 with |z_perp| = |t_perp| (no cancellation
@@ -325,7 +336,7 @@ class SphericalWristArm:
         gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array([1.0, -1.0])  # n, f
         a, bb, t4, t5, tn, tm = (v[..., None] for v in (a, bb, t4, t5, tn, tm))
         # q5: about w5 from w6 to z = a w4 + bb w5 + gamma n45; q4: about w4 from z to t
-        n56 = np.cross(w5, w6)
+        n56 = _cross3(w5, w6)
         # (z . t - (z . w4)(t . w4) written without the cancelling terms)
         q5, c5, s5 = _polar(a * (w4 @ n56) + gamma * (n45 @ n56),
                             a * (c46 - c45 * c56) + gamma * (n45 @ w6))
@@ -342,11 +353,11 @@ class SphericalWristArm:
         # Rodrigues into dot products of b with fixed vectors (no rotated copies of b)
         def along(e):  # b . R4 R5 e, (N, 2, 2, 2)
             def turned4(f):  # b . R4 f
-                return (_dot(f, b)[..., None] * c4 + _dot(np.cross(w4, f), b)[..., None] * s4
+                return (_dot(f, b)[..., None] * c4 + _dot(_cross3(w4, f), b)[..., None] * s4
                         + _dot(w4, b)[..., None] * (w4 @ f) * (1 - c4))
-            return (turned4(e) * c5 + turned4(np.cross(w5, e)) * s5
+            return (turned4(e) * c5 + turned4(_cross3(w5, e)) * s5
                     + turned4(w5) * (w5 @ e) * (1 - c5))
-        q6 = np.arctan2(along(np.cross(w6, x6)), along(x6))
+        q6 = np.arctan2(along(_cross3(w6, x6)), along(x6))
 
         # the answer: (N, 8, 6) in the order of CONFIGURATIONS, NaN where not reached
         shape = (N, 2, 2, 2)

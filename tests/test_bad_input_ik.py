@@ -39,7 +39,7 @@ CASES = [
     ("within_limits not bool", lambda: ik.puma560_ik(T0, within_limits="yes"), TypeError,
      "within_limits must be True or False"),
     ("robot not a chain", lambda: ik.puma560_ik(T0, robot="puma"), TypeError,
-     "chain must be a Chain"),
+     "robot must be a Chain, got 'puma'"),
     ("chain of 3 joints", lambda: ik.analytic_ik(PLANAR_3R, T0), ValueError,
      "chain must have 6 joints for the closed form, got 3"),
     ("prismatic joint", lambda: ik.analytic_ik(PRISMATIC, T0), ValueError,
