@@ -186,3 +186,18 @@ def test_planar_rows_use_the_plane_of_the_chain():
 def test_bad_input_names_the_argument(call, error, words):
     with pytest.raises(error, match=words):
         call()
+
+
+def test_the_lost_wrench_of_a_stretched_elbow_is_a_force_along_the_arm():
+    puma = sk.robots.puma560()
+    a3, d4 = sp.Rational("0.0203"), sp.Rational("0.4318")
+    q = [0, 0, sp.atan2(a3, d4) - sp.pi / 2, 0, sp.pi / 2, 0]  # a3 s3 + d4 c3 = 0 exactly
+    twists = puma.joint_twists(q)
+    lost = twists.reciprocal()
+    assert (twists.rank, lost.rank) == (5, 1)
+    wrench = lost.basis()[0]
+    assert all(sp.simplify(t @ wrench) == 0 for t in twists.screws)
+    # a pure force (zero moment about the shoulder at the origin) along the line to the wrist centre
+    f, m = np.array(wrench.vector, dtype=float).reshape(2, 3)
+    wrist_centre = puma.fk(np.array([float(v) for v in q]))[:3, 3]
+    assert np.allclose(m, 0) and np.allclose(np.cross(f, wrist_centre), 0, atol=1e-12)

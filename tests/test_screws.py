@@ -148,3 +148,14 @@ def test_systems_typeset_as_tables_and_print_as_text():
     html = system._repr_html_()
     assert "<caption>twist 2-system</caption>" in html and html.count("<tr>") == 6
     assert system._repr_latex_().startswith("$\\text{twist 2-system: }\\left[\\begin{matrix}")
+
+
+def test_square_roots_keep_their_products_exact():
+    # sqrt(6) written two ways: the same screw, so the system has rank 1 (the sample values of
+    # the roots must satisfy sqrt(6) = sqrt(2) sqrt(3), or the rank comes out 2)
+    one = Twist(sp.Matrix([sp.sqrt(6), 1, 0, 0, 0, 0]))
+    other = Twist(sp.Matrix([sp.sqrt(2) * sp.sqrt(3), 1, 0, 0, 0, 0]))
+    assert ScrewSystem([one, sp.Matrix([sp.sqrt(2), 0, 0, 0, 0, 0]) * sp.sqrt(3) + sp.Matrix([0, 1, 0, 0, 0, 0])]).rank == 1
+    assert ScrewSystem([one, other]).reciprocal().rank == 5
+    with pytest.raises(TypeError, match="square roots of rational"):
+        ScrewSystem([sp.Matrix([sp.sqrt(5 - sp.sqrt(5)), 1, 0, 0, 0, 0])]).rank
