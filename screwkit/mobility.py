@@ -25,7 +25,7 @@ import sympy as sp
 
 from . import _exact, _numeric
 from ._checks import as_sympy_matrix, as_sympy_scalar, describe
-from .screws import Screw, Twist, Wrench
+from .screws import Screw, Twist, Wrench, axis_coordinates
 from .systems import ScrewSystem, html_table, latex_table
 
 __all__ = ["mobility", "Mobility", "grubler_kutzbach"]
@@ -150,11 +150,7 @@ def _twist(joint, i, j):
     s, r, h = joint
     direction, point = _checked_vector(s), _checked_vector(r)
     if direction is not None and point is not None and any(e != 0 for e in direction) and (h is sp.oo or h == 0):
-        s1, s2, s3 = direction
-        if h is sp.oo:
-            return Twist._checked(sp.Matrix(6, 1, [0, 0, 0, s1, s2, s3]))
-        r1, r2, r3 = point
-        return Twist._checked(sp.Matrix(6, 1, [s1, s2, s3, r2 * s3 - r3 * s2, r3 * s1 - r1 * s3, r1 * s2 - r2 * s1]))
+        return Twist._checked(axis_coordinates(s, r, h))
     try:
         return Twist.from_axis(*joint)
     except (TypeError, ValueError) as error:

@@ -40,7 +40,9 @@ def axis_coordinates(s, r, h):
         if _is_infinite_pitch(h):
             return sp.Matrix.vstack(sp.zeros(3, 1), s)
         (r1, r2, r3), (s1, s2, s3) = r.flat(), s.flat()
-        moment = [r2 * s3 - r3 * s2 + h * s1, r3 * s1 - r1 * s3 + h * s2, r1 * s2 - r2 * s1 + h * s3]
+        moment = [r2 * s3 - r3 * s2, r3 * s1 - r1 * s3, r1 * s2 - r2 * s1]
+        if h != 0:
+            moment = [m + h * si for m, si in zip(moment, (s1, s2, s3))]
         return sp.Matrix(6, 1, [s1, s2, s3] + moment)
     s = np.asarray(s, dtype=float)
     if _is_infinite_pitch(h):
