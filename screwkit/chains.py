@@ -455,6 +455,46 @@ class Chain:
         form = f"{self.convention.value} DH" if self.is_dh else f"product of exponentials, {self.frame} form"
         return f"Chain({self.name!r}, {self.n} joints {kinds}, {form})"
 
+    def table(self):
+        """The chain's parameters as rows of strings, with a header: the DH table (theta, d, a,
+        alpha; the joint variable marked q_i) or the joint screws (omega, v, pitch), and limits."""
+        def number(value, scale=1.0):
+            value = float(value) * scale
+            return f"{value:.6g}" if value != 0 else "0"
+
+        def limits(row):
+            return "" if row[0] == -np.inf and row[1] == np.inf else \
+                f"[{number(row[0], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}, " \
+                f"{number(row[1], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}]"
+
+        rows = []
+        if self.is_dh:
+            header = ["joint", "θ (deg)", "d (m)", "a (m)", "α (deg)", "limits"]
+            for i, (link, kind, row) in enumerate(zip(self.links, self.joints, self._qlim), start=1):
+                degrees = 180 / np.pi
+                offset = f" + {number(link.offset, degrees)}" if float(link.offset) else ""
+                theta = f"q{i}{offset}" if kind is Joint.REVOLUTE else number(link.theta, degrees)
+                d = number(link.d) if kind is Joint.REVOLUTE else f"q{i}" + (
+                    f" + {number(link.offset)}" if float(link.offset) else "")
+                rows.append([f"{i} {kind.value}", theta, d, number(link.a), number(link.alpha, degrees),
+                             limits(row)])
+        else:
+            header = ["joint", "ω", "v (m)", "pitch (m/rad)", "limits"]
+            for i, (screw, kind, row) in enumerate(zip(self._screws, self.joints, self._qlim), start=1):
+                pitch = "∞" if kind is Joint.PRISMATIC else number(np.dot(screw[:3], screw[3:]))
+                rows.append([f"{i} {kind.value}", "(" + ", ".join(number(x) for x in screw[:3]) + ")",
+                             "(" + ", ".join(number(x) for x in screw[3:]) + ")", pitch, limits(row)])
+        return header, rows
+
+    def _repr_html_(self):
+        """The parameter table, typeset (Jupyter and the book); ``repr`` stays one line."""
+        header, rows = self.table()
+        form = f"{self.convention.value} DH" if self.is_dh else f"joint screws, {self.frame} form"
+        cells = "".join(f"<th>{h}</th>" for h in header)
+        body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows)
+        return (f'<table class="screwkit-chain"><caption>{self.name}: {form}</caption>'
+                f"<tr>{cells}</tr>{body}</table>")
+
     # ---- input checks -------------------------------------------------------------------
 
     def check_q(self, q, name="q"):

@@ -201,3 +201,13 @@ def test_the_lost_wrench_of_a_stretched_elbow_is_a_force_along_the_arm():
     f, m = np.array(wrench.vector, dtype=float).reshape(2, 3)
     wrist_centre = puma.fk(np.array([float(v) for v in q]))[:3, 3]
     assert np.allclose(m, 0) and np.allclose(np.cross(f, wrist_centre), 0, atol=1e-12)
+
+
+def test_the_parameter_table_of_each_kind_of_chain():
+    header, rows = sk.robots.puma560().table()
+    assert header == ["joint", "θ (deg)", "d (m)", "a (m)", "α (deg)", "limits"]
+    assert rows[2] == ["3 R", "q3", "0.15005", "0.0203", "-90", "[-225, 45]"]
+    assert sk.robots.kawasaki_cx210l().table()[1][1][1] == "q2 + 180"  # the joint-2 offset
+    header, rows = sk.Chain.from_screws(S_LIST, M).table()
+    assert rows[2] == ["3 H", "(0, 0, -1)", "(-6, 0, -0.1)", "0.1", ""]
+    assert "<caption>PUMA 560: standard DH</caption>" in sk.robots.puma560()._repr_html_()
