@@ -282,7 +282,7 @@ def _check_screws(axes):
                              f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}")
         if w == 0 and abs(v - 1) > UNIT_TOL:
             raise ValueError(f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}")
-        numbers.append(values)
+        numbers.append(values / (w or v))  # unit to the last bit: the exponential assumes it
     return np.array(numbers), exact
 
 

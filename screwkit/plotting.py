@@ -1,4 +1,7 @@
-"""Matplotlib drawings of frames, screw axes and screw motions (metres).
+"""Matplotlib drawings of frames, screw axes and screw motions (metres), in the course's style.
+
+Every chapter calls ``use_course_style()`` before its first figure: figures then fit the book's
+content column (688 px, at most ``COLUMN_WIDTH`` inches at ``DPI``) with text of at least 9 pt.
 
 >>> ax = axes3d()
 >>> draw_frame(ax, np.eye(4), label="0")
@@ -20,10 +23,41 @@ from ._checks import (
 )
 from ._mechanism_plot import draw_mechanism  # noqa: F401  (re-exported: sk.plotting.draw_mechanism)
 
-__all__ = ["axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain", "draw_ellipsoid",
+__all__ = ["COLUMN_WIDTH", "COURSE_STYLE", "DPI", "use_course_style", "axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain", "draw_ellipsoid",
            "draw_planar", "animation_html"]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
+
+#: Pixels per inch of the course's figures: a figure shows at its natural size in the book, where
+#: 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's 1.33 px per pt.
+DPI = 100
+#: The widest figure, in inches: 660 px at ``DPI``, plus the 0.1 in margin IPython adds on
+#: each side when it trims a figure (savefig.pad_inches): 680 px, within the 688 px column.
+COLUMN_WIDTH = 6.6
+#: The course's matplotlib style. Constrained layout keeps titles, labels and legends inside the
+#: figure, so a saved figure is never wider than its figsize and IPython's margin.
+COURSE_STYLE = {
+    "figure.dpi": DPI,
+    "savefig.dpi": DPI,
+    "figure.figsize": (COLUMN_WIDTH, 4.0),
+    "figure.constrained_layout.use": True,
+    "font.size": 10.0,
+    "axes.titlesize": 10.0,
+    "axes.labelsize": 10.0,
+    "xtick.labelsize": 9.0,
+    "ytick.labelsize": 9.0,
+    "legend.fontsize": 9.0,
+    "legend.title_fontsize": 9.0,
+    "figure.titlesize": 11.0,
+}
+
+
+def use_course_style():
+    """Apply ``COURSE_STYLE`` to matplotlib: every figure made after the call uses it.
+
+    Called once per chapter, before its first figure (in the book, a live notebook or Colab).
+    """
+    plt.rcParams.update(COURSE_STYLE)
 
 
 # ---- argument checks -------------------------------------------------------------------
@@ -123,7 +157,10 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
         tip = origin + length * T[:3, k]
         ax.plot(*np.stack([origin, tip]).T, color=AXIS_COLOURS[k], lw=2, alpha=alpha)
     if label is not None:
-        ax.text(*(origin - 0.12 * length * (T[:3, 0] + T[:3, 1])), f"{{{label}}}", fontsize=10)
+        # beside the origin, away from the x and y arrows, on a pale patch over the links
+        ax.text(*(origin - 0.35 * length * (T[:3, 0] + T[:3, 1])), f"{{{label}}}", fontsize=10,
+                ha="center", va="center",
+                bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8})
 
 
 def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
@@ -158,7 +195,9 @@ def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1
     """Draw a serial chain at the joint vector q (n,) as a stick figure.
 
     Links join the frame origins; each joint axis is a short black segment; the tool frame is
-    drawn, and with ``frames`` every link frame too. Returns the (n + 1, 4, 4) frames.
+    drawn, and with ``frames`` every link frame too, labelled once per point: frames that share
+    an origin (the PUMA's {0} and {1}, or {4}, {5} and {6} at its wrist) get one label
+    "{0, 1}". Returns the (n + 1, 4, 4) frames.
     """
     _check_axes(ax)
     chain = check_chain(chain)
@@ -170,10 +209,24 @@ def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1
             solid_capstyle="round")
     for z, o in zip(*chain.joint_axes(q)):
         ax.plot(*np.stack([o - 0.04 * z, o + 0.04 * z]).T, color="k", lw=2.5, alpha=alpha)
+    labels = _shared_origin_labels(origins) if frames else {}
     for k, frame in enumerate(T):
         if frames or k == len(T) - 1:
-            draw_frame(ax, frame, label=str(k) if frames else None, length=frame_length, alpha=alpha)
+            draw_frame(ax, frame, label=labels.get(k), length=frame_length, alpha=alpha)
     return T
+
+
+def _shared_origin_labels(origins, tolerance=1e-6):
+    """{index of the last frame at a point: "0, 1"} for frame origins (m) that coincide."""
+    groups = []
+    for k, origin in enumerate(origins):
+        for group in groups:
+            if np.linalg.norm(origins[group[0]] - origin) < tolerance:
+                group.append(k)
+                break
+        else:
+            groups.append([k])
+    return {group[-1]: ", ".join(str(k) for k in group) for group in groups}
 
 
 def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha=0.35):

@@ -1,5 +1,7 @@
 """The book's own checks: the site check's page rules and the bibliography's labels."""
+import base64
 import importlib.util
+import json
 import pathlib
 
 import pytest
@@ -89,3 +91,33 @@ def test_the_four_source_papers_are_marked_and_labelled():
                       "Redundancy thesis n.d."}
     text = (ROOT / "book/references.bib").read_text().lower()
     assert "seed" not in text and "2021, 2021" not in text
+
+
+BOOK_COLUMN_PX = 688  # the book's content column at 1280 px (pydata-sphinx-theme)
+
+
+def stored_figures():
+    """(notebook, cell number, PNG bytes) of every figure stored in the chapter notebooks."""
+    for path in sorted((ROOT / "notebooks").glob("*.ipynb")):
+        cells = json.loads(path.read_text())["cells"]
+        for k, cell in enumerate(cells):
+            for output in cell.get("outputs", []):
+                if "image/png" in output.get("data", {}):
+                    yield path.name, k, base64.b64decode(output["data"]["image/png"])
+
+
+def test_every_stored_figure_fits_the_book_column():
+    # myst-nb shows a PNG at its natural size (one pixel a CSS pixel): wider than the column,
+    # the browser shrinks it and its text with it. The width is bytes 16-19 of the PNG header.
+    figures = list(stored_figures())
+    assert len(figures) >= 9  # every chapter shows at least one
+    wide = [(name, k, int.from_bytes(png[16:20], "big")) for name, k, png in figures
+            if int.from_bytes(png[16:20], "big") > BOOK_COLUMN_PX]
+    assert wide == []
+
+
+def test_no_stored_figure_is_a_thumbnail():
+    # A formula rendered as a tiny PNG (SymPy's LaTeX image) is blurry: show it as MathJax.
+    small = [(name, k) for name, k, png in stored_figures()
+             if int.from_bytes(png[16:20], "big") < 100]
+    assert small == []
