@@ -11,6 +11,7 @@ every ``.js`` Jupyter Book would add to every page.
 """
 import importlib.util
 import os
+import shutil
 
 from sphinx.errors import ExtensionError
 from sphinx.util.fileutil import copy_asset
@@ -46,6 +47,20 @@ def copy_mathjax(app, exception):
                 copy_asset(os.path.join(source, path), os.path.dirname(destination))
 
 
+def drop_unloaded_files(app, exception):
+    """Remove from the build what no page loads: the themes' source maps (``*.map``, read only
+    by a browser's developer tools) and pydata-sphinx-theme's translation catalogues
+    (``_static/locales``, used when Sphinx writes the pages, never by the browser): 4 MB."""
+    if exception is not None or app.builder.format != "html":
+        return
+    static = os.path.join(app.outdir, "_static")
+    shutil.rmtree(os.path.join(static, "locales"), ignore_errors=True)
+    for folder, _, files in os.walk(static):
+        for name in files:
+            if name.endswith(".map"):
+                os.remove(os.path.join(folder, name))
+
+
 def check_config(app, config):
     if config.mathjax_path != "mathjax/tex-chtml.js":
         raise ExtensionError(
@@ -57,4 +72,5 @@ def check_config(app, config):
 def setup(app):
     app.connect("config-inited", check_config)
     app.connect("build-finished", copy_mathjax)
+    app.connect("build-finished", drop_unloaded_files)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
