@@ -193,6 +193,29 @@ def check_chapter_shape(page, html):
             if not pattern.search(html)]
 
 
+# The parallel mechanisms of the catalogue (screwkit.robots): a chapter that analyses them with
+# sk.mobility must draw each one.
+MECHANISM_BUILDER = re.compile(r"robots\.(pm_\w+|planar_3rrr|spherical_3rrr)\b")
+
+
+def check_mechanism_drawings(root, page, figures):
+    """A chapter of the mobility kind (its code calls sk.mobility) must show at least as many
+    figures as the catalogue mechanisms its code builds (read from the page's .ipynb source)."""
+    source = os.path.join(root, "_sources", os.path.splitext(page)[0] + ".ipynb")
+    if not page.startswith("notebooks/") or not os.path.exists(source):
+        return []
+    with open(source, encoding="utf-8") as f:
+        cells = json.load(f)["cells"]
+    code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    if "sk.mobility(" not in code:
+        return []
+    mechanisms = sorted(set(MECHANISM_BUILDER.findall(code)))
+    if len(figures) < len(mechanisms):
+        return [f"{page}: {len(mechanisms)} mechanisms analysed ({', '.join(mechanisms)}) but only "
+                f"{len(figures)} figures: draw each one (sk.plotting.draw_mechanism)"]
+    return []
+
+
 def check_placeholder_links(page, parser):
     """Links (launch buttons among them) must not point to a placeholder such as hub.example.edu."""
     problems = []
@@ -351,6 +374,7 @@ def main(root):
             figures = [src for src in dom.images if "_images/" in src]
             if page.startswith("notebooks/") and not figures:
                 problems.append(f"{page}: a chapter page without a figure (no cell output image)")
+            problems += check_mechanism_drawings(root, page, figures)
             print(f"{page}: {dom.math_containers} math, {len(figures)} figures, "
                   f"{len(static.links)} links, {len(leaks)} outside requests")
         shot_page = next((p for p in pages if p.startswith("notebooks/")), pages[0])

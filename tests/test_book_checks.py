@@ -121,3 +121,18 @@ def test_no_stored_figure_is_a_thumbnail():
     small = [(name, k) for name, k, png in stored_figures()
              if int.from_bytes(png[16:20], "big") < 100]
     assert small == []
+
+
+def test_a_mobility_chapter_must_draw_every_mechanism(tmp_path):
+    source = tmp_path / "_sources" / "notebooks" / "m.ipynb"
+    source.parent.mkdir(parents=True)
+    code = ["for build in (sk.robots.pm_3prrr, sk.robots.pm_6ups):\n",
+            "    print(sk.mobility(build()).type)"]
+    source.write_text(json.dumps({"cells": [{"cell_type": "code", "source": code}]}))
+    one, two = ["_images/a.png"], ["_images/a.png", "_images/b.png"]
+    assert "2 mechanisms analysed" in site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html",
+                                                                       one)[0]
+    assert site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", two) == []
+    # a chapter that builds mechanisms without analysing their mobility is not of that kind
+    source.write_text(json.dumps({"cells": [{"cell_type": "code", "source": ["sk.robots.pm_3prrr()"]}]}))
+    assert site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", []) == []
