@@ -162,7 +162,7 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
     if twists is not None:
         _draw_twists(ax, twists, platform.mean(axis=0), length)
     _frame_box(ax, points, 1.6 * length if twists is not None else length)  # room for the arrows
-    ax.legend(loc="upper left", fontsize=8)
+    ax.legend(loc="upper left")  # the style's size: 9 pt in the course style
     if title:
         ax.set_title(title)
     return ax

@@ -19,7 +19,7 @@ from importlib import resources
 import numpy as np
 
 from . import _sliders
-from ._checks import as_float_array, check_shape, check_transform
+from ._checks import as_float_array, check_positive, check_shape, check_transform
 
 __all__ = ["robot_viewer", "screw_motion_viewer", "stepped_figure", "grid", "Viewer"]
 
@@ -191,19 +191,31 @@ def _check_size(size):
     return int(values[0]), int(values[1])
 
 
-def stepped_figure(draw, label, unit=None, values=None, choices=None, value=None, dpi=80):
+def stepped_figure(draw, label, unit=None, values=None, choices=None, value=None, dpi=None):
     """Figures computed now for a set of slider values, stepped through in the page.
 
     For results too heavy for the browser (a whole resolved-rate run, a mobility analysis).
     Give either ``values`` (a grid from ``grid``: a slider, with its ``unit``) or ``choices``
-    (a list of names: a drop-down). ``draw(v)`` returns a matplotlib Figure (embedded as a
-    PNG at ``dpi``, then closed) or a str (shown as preformatted text). ``value`` is the first
-    value shown (default: the first).
+    (a list of names: a drop-down). ``draw(v)`` returns a matplotlib Figure or a str (shown as
+    preformatted text). ``draw`` runs in the course style (``plotting.COURSE_STYLE``: its
+    figure size, fonts and layout) and each Figure is embedded as a 256-colour PNG at ``dpi``
+    (default ``plotting.DPI``, so that text of 9 pt shows at 9 pt in the page), then closed.
+    ``value`` is the first value shown (default: the first).
     """
     if (values is None) == (choices is None):
         raise ValueError("stepped_figure needs exactly one of values (a slider grid) or choices")
     if not callable(draw):
         raise TypeError(f"draw must be a function of one value, got {type(draw).__name__}")
+    from . import plotting  # matplotlib only when figures are drawn
+
+    dpi = plotting.DPI if dpi is None else check_positive(dpi, "dpi")
+
+    def frames(keys):
+        import matplotlib
+
+        with matplotlib.rc_context(plotting.COURSE_STYLE):
+            return [_frame(draw(k), dpi) for k in keys]
+
     if choices is not None:
         keys = list(choices)
         if not keys or not all(isinstance(k, str) for k in keys):
@@ -212,7 +224,7 @@ def stepped_figure(draw, label, unit=None, values=None, choices=None, value=None
         if value is not None and value not in keys:
             raise ValueError(f"value must be one of the choices {keys}, got {value!r}")
         model = {"kind": "steps", "choices": keys, "label": label, "index": index,
-                 "frames": [_frame(draw(k), dpi) for k in keys]}
+                 "frames": frames(keys)}
         return Viewer(model, f"{label}: {len(keys)} choices, showing {keys[index]}")
     grid = [float(v) for v in values]
     if len(grid) < 2 or len(grid) > 101:
@@ -225,7 +237,7 @@ def stepped_figure(draw, label, unit=None, values=None, choices=None, value=None
                                 steps=(step,))
     index = int(round((spec.value - spec.low) / step))
     model = {"kind": "steps", "slider": spec.as_dict(), "values": grid, "index": index,
-             "frames": [_frame(draw(v), dpi) for v in grid]}
+             "frames": frames(grid)}
     return Viewer(model, f"{spec.description}: {len(grid)} precomputed values from "
                          f"{spec.low:g} to {spec.high:g}, showing {spec.value:g}")
 
@@ -249,7 +261,15 @@ def _frame(result, dpi):
     buffer = io.BytesIO()
     savefig(buffer, format="png", dpi=dpi)
     import matplotlib.pyplot as plt
+    from PIL import Image  # matplotlib's own dependency
 
     plt.close(result)
+    # 256 colours (median cut, no dithering) draw a figure's flat colours and antialiased
+    # edges alike at a third of the bytes: a page of stepped frames stays small.
+    image = Image.open(buffer).convert("RGB")
+    palette = image.quantize(colors=256, method=Image.Quantize.MEDIANCUT,
+                             dither=Image.Dither.NONE)
+    buffer = io.BytesIO()
+    palette.save(buffer, format="png", optimize=True)
     data = base64.b64encode(buffer.getvalue()).decode("ascii")
     return f'<img alt="precomputed figure" src="data:image/png;base64,{data}">'

@@ -58,6 +58,20 @@ def test_platform_twists_are_drawn_one_arrow_each():
     plt.close(ax.figure)
 
 
+def test_every_text_of_a_mechanism_drawing_is_at_least_9_pt_in_the_course_style():
+    # The course's minimum (screwkit.plotting): legend, title, axis and tick labels alike.
+    limbs = sk.robots.pm_4prru()
+    with plt.rc_context(sk.plotting.COURSE_STYLE):
+        ax = sk.plotting.draw_mechanism(limbs, sk.robots.DRAWING_VALUES["pm_4prru"],
+                                        twists=sk.mobility(limbs), title="4-PRRU: 3T1R")
+        ax.figure.canvas.draw()
+        sizes = {text.get_text(): text.get_fontsize()
+                 for text in ax.figure.findobj(matplotlib.text.Text) if text.get_text()}
+    plt.close(ax.figure)
+    assert {"prismatic", "revolute", "4-PRRU: 3T1R", "x (m)"} <= set(sizes)
+    assert min(sizes.values()) >= 9, sizes
+
+
 @pytest.mark.parametrize(
     "limbs, values, error, phrase",
     [

@@ -140,6 +140,75 @@ def test_stepped_figure_embeds_one_frame_per_value():
     assert choice["index"] == 1 and choice["frames"][0] == '<pre style="margin:0">A&lt;B</pre>'
 
 
+def _frame_images(figure):
+    """The PNG frames of a stepped figure, decoded (Pillow, matplotlib's own dependency)."""
+    import base64
+    import io
+
+    from PIL import Image
+
+    return [Image.open(io.BytesIO(base64.b64decode(data)))
+            for data in re.findall(r"base64,([^\"]+)", "".join(model_of(figure)["frames"]))]
+
+
+def test_stepped_frames_are_drawn_in_the_course_style_at_its_dpi():
+    # A figure made with matplotlib's defaults inside draw gets the course's size and fonts,
+    # and is rendered at the course's DPI: 6.6 in x 4 in at 100 px/in is 660 x 400 px, so a
+    # 9 pt text is 12.5 px high in the page, no less than the browser's 9 pt (12 px).
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    font_sizes = []
+
+    def draw(k):
+        fig, ax = plt.subplots()
+        ax.plot([0, k], [0, 1])
+        font_sizes.append(ax.xaxis.label.get_fontsize())
+        return fig
+
+    before = dict(plt.rcParams)
+    figure = viewer.stepped_figure(draw, "k", "1/s", values=viewer.grid(0, 1, 0.5))
+    images = _frame_images(figure)
+    assert [image.size for image in images] == [(660, 400)] * 3
+    assert font_sizes == [sk.plotting.COURSE_STYLE["axes.labelsize"]] * 3 == [10.0] * 3
+    assert dict(plt.rcParams) == before  # the style holds inside draw only
+    assert not plt.get_fignums()  # every frame's figure is closed
+
+
+def test_stepped_frames_keep_a_figure_size_and_its_colours_exactly():
+    # 256 colours keep the page small; a flat colour must come through unchanged: the
+    # background stays white (255, 255, 255) and tab:blue stays #1f77b4 = (31, 119, 180).
+    import matplotlib.pyplot as plt
+
+    def draw(name):
+        fig, (blank, blue) = plt.subplots(1, 2, figsize=(3, 2))
+        blank.set_axis_off()
+        blue.set_facecolor("tab:blue")
+        blue.set_xticks([])
+        blue.set_yticks([])
+        return fig
+
+    (image,) = _frame_images(viewer.stepped_figure(draw, "pick", choices=["one"]))
+    assert image.size == (300, 200) and image.mode == "P"
+    rgb = image.convert("RGB")
+    assert rgb.getpixel((50, 100)) == (255, 255, 255)
+    assert rgb.getpixel((230, 100)) == (31, 119, 180)
+
+
+def test_stepped_figure_renders_at_a_given_dpi_and_refuses_a_bad_one():
+    import matplotlib.pyplot as plt
+
+    def draw(name):
+        return plt.figure(figsize=(2, 1))
+
+    (image,) = _frame_images(viewer.stepped_figure(draw, "pick", choices=["a"], dpi=150))
+    assert image.size == (300, 150)
+    with pytest.raises(ValueError, match="dpi must be a positive number, got -80.0"):
+        viewer.stepped_figure(draw, "pick", choices=["a"], dpi=-80)
+
+
 # ---- slider grids (the rules of issue 18, item 4; tests/test_sliders.py checks the chapters) --
 
 def test_slider_grid_holds_default_and_zero():
