@@ -211,3 +211,15 @@ def test_the_parameter_table_of_each_kind_of_chain():
     header, rows = sk.Chain.from_screws(S_LIST, M).table()
     assert rows[2] == ["3 H", "(0, 0, -1)", "(-6, 0, -0.1)", "0.1", ""]
     assert "<caption>PUMA 560: standard DH</caption>" in sk.robots.puma560()._repr_html_()
+
+
+def test_batch_cosines_and_sines_from_the_half_angle_tangent():
+    from screwkit._compiled import cos_sin
+
+    special = [0.0, np.pi / 2, -np.pi / 2, np.pi, -np.pi, 1e-300, 3 * np.pi, 50.0, -1234.5]
+    angles = np.concatenate([np.linspace(-4 * np.pi, 4 * np.pi, 400_001), special])
+    c, s = cos_sin(angles)
+    assert np.abs(c - np.cos(angles)).max() < 4e-16 and np.abs(s - np.sin(angles)).max() < 4e-16
+    puma = sk.robots.puma560()
+    Q = np.random.default_rng(12).uniform(-np.pi, np.pi, (3000, 6))
+    assert np.abs(puma.fk(Q) - np.array([puma.fk(q) for q in Q])).max() < 1e-14
