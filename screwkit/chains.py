@@ -153,16 +153,21 @@ class Link:
         return [float(v) for v in values], cos_sin
 
 
+def _limit_numbers(qlim, name, expected):
+    """Joint limits as a float array (+-inf allowed: no limit); TypeError for anything else."""
+    if isinstance(qlim, (str, bytes)):
+        raise TypeError(f"{name} must be {expected} or None, got {qlim!r}")
+    try:
+        return np.asarray(qlim, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be {expected} of numbers or None, got {describe(qlim)}") from None
+
+
 def _check_qlim(qlim, name="qlim"):
     """(min, max) as floats, None for no limit; +-inf means no limit on that side."""
     if qlim is None:
         return None
-    if isinstance(qlim, (str, bytes)):
-        raise TypeError(f"{name} must be a pair (min, max) or None, got {qlim!r}")
-    try:
-        limits = np.asarray(qlim, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a pair of numbers (min, max) or None, got {qlim!r}") from None
+    limits = _limit_numbers(qlim, name, "a pair (min, max)")
     if limits.shape != (2,) or np.any(np.isnan(limits)) or not limits[0] < limits[1]:
         raise ValueError(f"{name} must be a pair (min, max) with min < max, got {qlim!r}")
     if limits[0] == -np.inf and limits[1] == np.inf:
@@ -830,12 +835,7 @@ class Chain:
 
 def _limits_table(qlim, n):
     """An (n, 2) table of limits as a list of (min, max) or None (+-inf: no limit)."""
-    if isinstance(qlim, (str, bytes)):
-        raise TypeError(f"qlim must be an (n, 2) array of limits or None, got {qlim!r}")
-    try:
-        limits = np.asarray(qlim, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"qlim must be an ({n}, 2) array of numbers or None, got {describe(qlim)}") from None
+    limits = _limit_numbers(qlim, "qlim", f"an ({n}, 2) array")
     if limits.shape != (n, 2):
         raise ValueError(f"qlim must have shape ({n}, 2), got shape {limits.shape}")
     return [_check_qlim(row, f"qlim[{i}]") for i, row in enumerate(limits)]
