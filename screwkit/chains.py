@@ -21,9 +21,7 @@ array([1. , 0.5])
 >>> arm.fk(np.zeros((10, 2))).shape
 (10, 4, 4)
 """
-import enum
 import types
-from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
@@ -31,169 +29,13 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 
 from . import _compiled
-from ._checks import as_float_array, check_transform, describe
+from ._checks import as_float_array, describe
 from ._notation import textbook
+from .links import (Convention, Joint, Link, axis_points, check_convention, check_screws, decimal,
+                    dh_factors, exact_matrix, joint_kind, limits_table, rigid, translation)
 from .transforms import exp_twist
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook"]
-
-#: How far from 1 the norm of a joint screw's omega (or of v, for a prismatic joint) may be.
-UNIT_TOL = 1e-9
-
-
-class Joint(enum.Enum):
-    """The kind of a joint: its variable q is an angle (revolute, helical) or a length (prismatic)."""
-
-    REVOLUTE = "R"
-    PRISMATIC = "P"
-    HELICAL = "H"  # rotation q (rad) with translation h q along the axis
-
-
-class Convention(enum.Enum):
-    """Which DH convention a chain's table follows."""
-
-    STANDARD = "standard"  # Rz(theta) Tz(d) Tx(a) Rx(alpha)
-    MODIFIED = "modified"  # Craig: Rx(alpha) Tx(a) Rz(theta) Tz(d)
-
-
-def _check_convention(convention):
-    if not isinstance(convention, Convention):
-        raise TypeError(f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}")
-    return convention
-
-
-def _check_parameter(value, name):
-    """A DH number: a finite real number, or a SymPy expression (exact, possibly symbolic)."""
-    if isinstance(value, sp.Basic):
-        value = sp.sympify(value)
-        if not isinstance(value, sp.Expr) or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or value.is_real is False:
-            raise ValueError(f"{name} must be a finite real number or SymPy expression, got {value}")
-        return value
-    if isinstance(value, (bool, str, bytes)) or value is None or isinstance(value, (complex, np.complexfloating)):
-        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}")
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}") from None
-    if not np.isfinite(number):
-        raise ValueError(f"{name} must be finite, got {number}")
-    return int(value) if isinstance(value, (int, np.integer)) else number
-
-
-@dataclass(frozen=True)
-class Link:
-    """One row of a DH table (m, rad).
-
-    The joint variable q adds to ``offset``: theta = q + offset for a revolute joint (then
-    ``theta`` is unused), d = q + offset for a prismatic one (then ``d`` is unused).
-    ``qlim`` is (min, max) of q, or None for no limit (+-inf in either place is no limit there).
-    Numbers may be floats or exact SymPy values (``sympy.pi / 2``); symbols are allowed for the
-    exact path (``fk_symbolic``) but the numeric path needs numbers.
-    """
-
-    joint: Joint
-    d: object = 0
-    a: object = 0
-    alpha: object = 0
-    theta: object = 0
-    offset: object = 0
-    qlim: tuple = None
-
-    def __post_init__(self):
-        if not isinstance(self.joint, Joint) or self.joint is Joint.HELICAL:
-            raise TypeError(f"joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got {self.joint!r}")
-        for name in ("d", "a", "alpha", "theta", "offset"):
-            object.__setattr__(self, name, _check_parameter(getattr(self, name), name))
-        object.__setattr__(self, "qlim", _check_qlim(self.qlim))
-
-    @classmethod
-    def revolute(cls, d=0, a=0, alpha=0, offset=0, qlim=None):
-        """A revolute link: theta = q + offset."""
-        return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=qlim)
-
-    @classmethod
-    def prismatic(cls, theta=0, a=0, alpha=0, offset=0, qlim=None):
-        """A prismatic link: d = q + offset."""
-        return cls(Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim)
-
-    def transform(self, q, convention=Convention.STANDARD):
-        """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or symbol q."""
-        _check_convention(convention)
-        theta, d = (q + self.offset, self.d) if self.joint is Joint.REVOLUTE else (self.theta, q + self.offset)
-        ct, st = sp.cos(theta), sp.sin(theta)
-        ca, sa = sp.cos(_exact(self.alpha)), sp.sin(_exact(self.alpha))
-        a = _exact(self.a)
-        if convention is Convention.STANDARD:
-            return sp.Matrix([[ct, -st * ca, st * sa, a * ct],
-                              [st, ct * ca, -ct * sa, a * st],
-                              [0, sa, ca, d],
-                              [0, 0, 0, 1]])
-        return sp.Matrix([[ct, -st, 0, a],
-                          [st * ca, ct * ca, -sa, -sa * d],
-                          [st * sa, ct * sa, ca, ca * d],
-                          [0, 0, 0, 1]])
-
-    def _numbers(self, index):
-        """(d, a, theta, offset) as floats and (cos alpha, sin alpha), for the numeric path."""
-        values = []
-        for name in ("d", "a", "theta", "offset", "alpha"):
-            value = getattr(self, name)
-            if isinstance(value, sp.Basic) and value.free_symbols:
-                raise ValueError(f"link {index}'s {name} is the expression {value}: the numeric path "
-                                 "(fk, Jacobians) needs numbers; use fk_symbolic for symbols")
-            values.append(value)
-        alpha = values.pop()
-        if isinstance(alpha, sp.Basic):  # exact: cos(pi/2) is exactly 0
-            return [float(v) for v in values], (float(sp.cos(alpha)), float(sp.sin(alpha)))
-        quarter_turns = round(alpha / (np.pi / 2))
-        if abs(alpha / (np.pi / 2) - quarter_turns) < 1e-15:  # as _exact: a float multiple of pi/2
-            cos_sin = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][quarter_turns % 4]
-        else:
-            cos_sin = (float(np.cos(alpha)), float(np.sin(alpha)))
-        return [float(v) for v in values], cos_sin
-
-
-def _limit_numbers(qlim, name, expected):
-    """Joint limits as a float array (+-inf allowed: no limit); TypeError for anything else."""
-    if isinstance(qlim, (str, bytes)):
-        raise TypeError(f"{name} must be {expected} or None, got {qlim!r}")
-    try:
-        return np.asarray(qlim, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be {expected} of numbers or None, got {describe(qlim)}") from None
-
-
-def _check_qlim(qlim, name="qlim"):
-    """(min, max) as floats, None for no limit; +-inf means no limit on that side."""
-    if qlim is None:
-        return None
-    limits = _limit_numbers(qlim, name, "a pair (min, max)")
-    if limits.shape != (2,) or np.any(np.isnan(limits)) or not limits[0] < limits[1]:
-        raise ValueError(f"{name} must be a pair (min, max) with min < max, got {qlim!r}")
-    if limits[0] == -np.inf and limits[1] == np.inf:
-        return None
-    return (float(limits[0]), float(limits[1]))
-
-
-def _exact(value):
-    """Floats that are integers or multiples of pi/2 become exact, so cos(pi/2) is exactly 0."""
-    value = sp.sympify(value)
-    if isinstance(value, sp.Float):
-        quarter_turns = float(value) / (np.pi / 2)
-        if abs(quarter_turns - round(quarter_turns)) < 1e-15:
-            return sp.pi / 2 * round(quarter_turns)
-    return value
-
-
-def _decimal(value):
-    """A Float as the exact decimal it prints as (0.4318 -> 2159/5000); other values unchanged."""
-    value = sp.sympify(value)
-    if isinstance(value, sp.Float):
-        return sp.nsimplify(value, rational=True)
-    if value.has(sp.Float):
-        return value.xreplace({f: sp.nsimplify(f, rational=True) for f in value.atoms(sp.Float)})
-    return value
-
 
 def _numbers_out(matrix, values=None):
     """``matrix`` at ``values``, expanded; with no symbol left, trigonometric functions of sums
@@ -203,115 +45,6 @@ def _numbers_out(matrix, values=None):
     if matrix.free_symbols:
         return matrix.applyfunc(sp.expand)
     return matrix.applyfunc(lambda e: sp.radsimp(sp.expand(sp.expand_trig(e))))
-
-
-def _exact_matrix(T):
-    """A numeric 4x4 as a SymPy matrix, exact where the entries are integers."""
-    return sp.Matrix(4, 4, [sp.Integer(int(v)) if float(v).is_integer() else sp.Float(v) for v in T.flat])
-
-
-def _rigid(value, name):
-    """A 4x4 rigid transform as a fresh, read-only float array (never the caller's array)."""
-    if value is None:
-        T = np.eye(4)
-    else:
-        if isinstance(value, sp.MatrixBase):
-            value = np.array(value.evalf(), dtype=float) if not value.free_symbols else value
-        T = check_transform(as_float_array(value, name), name)
-        if T.shape != (4, 4):
-            raise ValueError(f"{name} must be one transform of shape (4, 4), got shape {T.shape}")
-        T = T.copy()
-    T.setflags(write=False)
-    return T
-
-
-def _translation(p):
-    T = np.eye(4)
-    T[:3, 3] = p
-    return T
-
-
-def _dh_matrices(link, index, convention):
-    """(pre, twist, post) of a DH link: A(q) = pre exp([X] (q + offset)) post (floats)."""
-    (d, a, theta, _), (ca, sa) = link._numbers(index)
-    Rx = np.array([[1.0, 0, 0, 0], [0, ca, -sa, 0], [0, sa, ca, 0], [0, 0, 0, 1]])
-    Tx, Tz = _translation([a, 0, 0]), _translation([0, 0, d])
-    ct, st = np.cos(theta), np.sin(theta)
-    Rz = np.array([[ct, -st, 0, 0], [st, ct, 0, 0], [0, 0, 1.0, 0], [0, 0, 0, 1]])
-    revolute = link.joint is Joint.REVOLUTE
-    twist = np.array([0, 0, 1.0, 0, 0, 0]) if revolute else np.array([0, 0, 0, 0, 0, 1.0])
-    if convention is Convention.STANDARD:
-        return np.eye(4), twist, (Tz if revolute else Rz) @ Tx @ Rx
-    return Rx @ Tx, twist, Tz if revolute else Rz
-
-
-def _check_screws(axes):
-    """The joint screws as an (n, 6) float array of unit screws, and their exact forms."""
-    from .screws import Screw
-
-    if isinstance(axes, np.ndarray) and axes.ndim == 2:
-        items = list(axes)
-    elif isinstance(axes, (list, tuple)):
-        items = list(axes)
-    else:
-        raise TypeError(f"axes must be a list of Twist objects or 6-vectors [omega; v], got {describe(axes)}")
-    if not items:
-        raise ValueError("axes must hold at least one joint screw, got none")
-    numbers, exact = [], []
-    for i, item in enumerate(items):
-        name = f"axes[{i}]"
-        if isinstance(item, Screw):
-            if item.kind == "wrench":
-                raise TypeError(f"{name} must be a twist (a joint's motion), got a Wrench")
-            vector = item.vector
-        elif isinstance(item, sp.MatrixBase) or (isinstance(item, (list, tuple, np.ndarray))
-                                                 and any(isinstance(e, sp.Basic) for e in np.ravel(item))):
-            vector = sp.Matrix(item)
-        else:
-            vector = None
-        if vector is not None:
-            if vector.shape not in ((6, 1), (1, 6)) or vector.free_symbols:
-                raise ValueError(f"{name} must be a 6-vector of numbers [omega; v], got {vector.T}")
-            values = np.array([float(e) for e in vector], dtype=float)
-            exact.append(sp.Matrix(6, 1, list(vector)))
-        else:
-            values = as_float_array(item, name)
-            if values.shape != (6,):
-                raise ValueError(f"{name} must be a 6-vector [omega; v], got shape {values.shape}")
-            exact.append(sp.Matrix(6, 1, [sp.Integer(int(v)) if v.is_integer() else sp.Float(v) for v in values]))
-        w, v = np.linalg.norm(values[:3]), np.linalg.norm(values[3:])
-        if w == 0 and v == 0:
-            raise ValueError(f"{name} must be a unit screw axis, got the zero twist")
-        if w != 0 and abs(w - 1) > UNIT_TOL:
-            raise ValueError(f"{name} must be a unit screw axis: |omega| = 1 for a revolute or helical "
-                             f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}")
-        if w == 0 and abs(v - 1) > UNIT_TOL:
-            raise ValueError(f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}")
-        numbers.append(values / (w or v))  # unit to the last bit: the exponential assumes it
-    return np.array(numbers), exact
-
-
-def _joint_kind(screw):
-    if not np.any(screw[:3]):
-        return Joint.PRISMATIC
-    return Joint.HELICAL if abs(np.dot(screw[:3], screw[3:])) > 1e-12 else Joint.REVOLUTE
-
-
-def _axis_points(screws, start):
-    """A point on each screw axis (revolute/helical): the one nearest the previous joint's point.
-
-    Only for drawing: the first joint's point is the one nearest ``start``; a prismatic joint
-    keeps the previous point.
-    """
-    points, previous = [], np.asarray(start, dtype=float)
-    for screw in screws:
-        w, v = screw[:3], screw[3:]
-        if np.any(w):
-            h = np.dot(w, v)
-            nearest_origin = np.cross(w, v - h * w)  # the axis point nearest the origin
-            previous = nearest_origin + np.dot(previous - nearest_origin, w) * w
-        points.append(previous.copy())
-    return np.array(points)
 
 
 class Chain:
@@ -334,7 +67,7 @@ class Chain:
         links = list(links) if isinstance(links, (list, tuple)) else links
         if not isinstance(links, list) or not links or not all(isinstance(k, Link) for k in links):
             raise TypeError(f"links must be a non-empty list of Link, got {describe(links)}")
-        self._setup(links=tuple(links), convention=_check_convention(convention), screws=None,
+        self._setup(links=tuple(links), convention=check_convention(convention), screws=None,
                     base=base, tool=tool, name=name, configurations=configurations,
                     qlim=[link.qlim for link in links], joints=tuple(link.joint for link in links))
 
@@ -345,7 +78,7 @@ class Chain:
         state = self.__dict__
         state["links"], state["convention"] = links, convention
         state["_screws"], state["_exact_screws"], state["_home"], state["frame"] = screws, exact_screws, home, frame
-        state["base"], state["tool"] = _rigid(base, "base"), _rigid(tool, "tool")
+        state["base"], state["tool"] = rigid(base, "base"), rigid(tool, "tool")
         state["name"], state["joints"] = name, joints
         state["q_symbols"] = sp.symbols(f"q1:{len(joints) + 1}", real=True)
         limits = np.array([limit if limit else (-np.inf, np.inf) for limit in qlim], dtype=float)
@@ -383,7 +116,7 @@ class Chain:
             kinds = None
         if kinds is None or len(kinds) != n or not all(k in (Joint.REVOLUTE, Joint.PRISMATIC) for k in kinds):
             raise ValueError(f"joints must name {n} joints ('R' or 'P', or Joint members), got {joints!r}")
-        limits = [None] * n if qlim is None else _limits_table(qlim, n)
+        limits = [None] * n if qlim is None else limits_table(qlim, n)
         links = []
         for (theta, d, a, alpha), kind, limit in zip(rows, kinds, limits):
             if kind is Joint.REVOLUTE:
@@ -412,13 +145,13 @@ class Chain:
         """
         if frame not in ("space", "body"):
             raise ValueError(f"frame must be 'space' or 'body', got {frame!r}")
-        screws, exact = _check_screws(axes)
+        screws, exact = check_screws(axes)
         n = screws.shape[0]
-        limits = [None] * n if qlim is None else _limits_table(qlim, n)
+        limits = [None] * n if qlim is None else limits_table(qlim, n)
         chain = cls.__new__(cls)
-        chain._setup(links=None, convention=None, screws=screws, exact_screws=exact, home=_rigid(home, "home"),
+        chain._setup(links=None, convention=None, screws=screws, exact_screws=exact, home=rigid(home, "home"),
                      frame=frame, base=base, tool=tool, name=name, configurations=configurations,
-                     qlim=limits, joints=tuple(_joint_kind(s) for s in screws))
+                     qlim=limits, joints=tuple(joint_kind(s) for s in screws))
         return chain
 
     def _copy(self, **changes):
@@ -573,10 +306,10 @@ class Chain:
         if not self.is_dh:
             if symbolic_lengths or upto is not None:
                 raise ValueError("symbolic_lengths and upto are for DH chains; this chain is built from screws")
-            T = _exact_matrix(self.base)
+            T = exact_matrix(self.base)
             factors = [exp_twist(S, q) for S, q in zip(self._exact_screws, self.q_symbols)]
-            home = _exact_matrix(self._home)
-            factors = ([home] + factors if self.frame == "body" else factors + [home]) + [_exact_matrix(self.tool)]
+            home = exact_matrix(self._home)
+            factors = ([home] + factors if self.frame == "body" else factors + [home]) + [exact_matrix(self.tool)]
             for F in factors:
                 T = tidy(T * F)
             return T
@@ -585,17 +318,17 @@ class Chain:
         if not 0 <= count <= self.n:
             raise ValueError(f"upto must be between 0 and {self.n}, got {upto!r}")
         full = upto is None
-        T = _exact_matrix(self.base) if full else sp.eye(4)
+        T = exact_matrix(self.base) if full else sp.eye(4)
         for link, q in zip(links[:count], self.q_symbols):
             T = tidy(T * link.transform(q, self.convention))
         if full:
-            T = tidy(T * _exact_matrix(self.tool))
+            T = tidy(T * exact_matrix(self.tool))
         return T
 
     def frames_symbolic(self, symbolic_lengths=False):
         """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain: n + 1 SymPy matrices."""
         self._require_dh("frames_symbolic")
-        base = _exact_matrix(self.base)
+        base = exact_matrix(self.base)
         return [(base * self.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k)).applyfunc(sp.expand)
                 for k in range(self.n + 1)]
 
@@ -618,26 +351,26 @@ class Chain:
         q = self.q_symbols if q is None else list(q)
         if len(q) != self.n:
             raise ValueError(f"q must have {self.n} entries for this chain, got {len(q)}")
-        values = dict(zip(self.q_symbols, [_decimal(v) if isinstance(v, float) else v for v in q]))
-        base = _exact_matrix(self.base)
+        values = dict(zip(self.q_symbols, [decimal(v) if isinstance(v, float) else v for v in q]))
+        base = exact_matrix(self.base)
         if rational:
-            base = base.applyfunc(_decimal)
+            base = base.applyfunc(decimal)
         if self.is_dh:
             lengths = self.length_symbols() if rational and not symbolic_lengths else {}
             frames = self.frames_symbolic(symbolic_lengths or bool(lengths))
-            frames = [base * _exact_matrix(self.base).inv() * T for T in frames] if rational else frames
+            frames = [base * exact_matrix(self.base).inv() * T for T in frames] if rational else frames
             twists = []
             for kind, T in zip(self.joints, self.joint_frames(frames)):
                 z, o = T[:3, 2], T[:3, 3]
                 twists.append(sp.Matrix.vstack(z, o.cross(z)) if kind is Joint.REVOLUTE
                               else sp.Matrix.vstack(sp.zeros(3, 1), z))
-            exact = {s: _decimal(sp.sympify(v)) for s, v in lengths.items()}
+            exact = {s: decimal(sp.sympify(v)) for s, v in lengths.items()}
             return [_numbers_out(t.xreplace(exact).subs(values)) for t in twists]
         from .lie import adjoint
 
-        screws, home = self._exact_screws, _exact_matrix(self._home)
+        screws, home = self._exact_screws, exact_matrix(self._home)
         if rational:
-            screws, home = [S.applyfunc(_decimal) for S in screws], home.applyfunc(_decimal)
+            screws, home = [S.applyfunc(decimal) for S in screws], home.applyfunc(decimal)
         G = base * (home if self.frame == "body" else sp.eye(4))
         twists = []
         for S, qi in zip(screws, self.q_symbols):
@@ -669,7 +402,7 @@ class Chain:
     def _program(self):
         """The chain as constants and unit joint twists for :mod:`screwkit._compiled` (floats only)."""
         if self.is_dh:
-            parts = [_dh_matrices(link, i, self.convention) for i, link in enumerate(self.links, start=1)]
+            parts = [dh_factors(link, i, self.convention) for i, link in enumerate(self.links, start=1)]
             pres = [pre for pre, _, _ in parts] + [np.eye(4)]
             start = np.asarray(self.base) @ pres[0]
             joints, marks = [], {0: np.linalg.inv(pres[0])}
@@ -684,14 +417,14 @@ class Chain:
         home = np.asarray(self._home)
         if self.frame == "space":
             start, last = np.asarray(self.base), home @ self.tool
-            points = _axis_points(self._screws, np.zeros(3))
+            points = axis_points(self._screws, np.zeros(3))
         else:
             start, last = np.asarray(self.base) @ home, np.asarray(self.tool)
             # the screws are in end-effector coordinates: start from the base origin seen there
-            points = _axis_points(self._screws, -home[:3, :3].T @ home[:3, 3])
+            points = axis_points(self._screws, -home[:3, :3].T @ home[:3, 3])
         joints = [(S, np.eye(4), r) for S, r in zip(self._screws, points)]
         joints[-1] = (joints[-1][0], last, joints[-1][2])
-        marks = {k: _translation(points[k]) for k in range(self.n)}
+        marks = {k: translation(points[k]) for k in range(self.n)}
         marks[self.n] = np.eye(4)
         return _compiled.Program(start, joints, marks), np.zeros(self.n)
 
@@ -831,11 +564,3 @@ class Chain:
         for S, qi in zip(self.screw_axes(), q):
             T = T @ exp_twist(S, qi)
         return T @ self.home()
-
-
-def _limits_table(qlim, n):
-    """An (n, 2) table of limits as a list of (min, max) or None (+-inf: no limit)."""
-    limits = _limit_numbers(qlim, "qlim", f"an ({n}, 2) array")
-    if limits.shape != (n, 2):
-        raise ValueError(f"qlim must have shape ({n}, 2), got shape {limits.shape}")
-    return [_check_qlim(row, f"qlim[{i}]") for i, row in enumerate(limits)]

@@ -1,0 +1,294 @@
+"""What a serial chain is made of: DH links and joint screws, checked once.
+
+* :class:`Link` is one row of a Denavit–Hartenberg table (standard or modified, see
+  :class:`Convention`), with numbers that are floats or exact SymPy values;
+* a joint screw (omega; v) is checked to be a unit screw (:func:`check_screws`) and named a
+  :class:`Joint` kind by its pitch: revolute (0), helical (finite) or prismatic (omega = 0).
+
+:mod:`screwkit.chains` builds chains from either. Every DH link is also, numerically, a pre
+transform, a joint twist and a post transform: A(q) = pre exp([X] (q + offset)) post
+(:func:`dh_factors`), which is how a DH chain joins the product of exponentials.
+"""
+import enum
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from ._checks import as_float_array, check_transform, describe
+
+__all__ = ["Joint", "Convention", "Link"]
+
+#: How far from 1 the norm of a joint screw's omega (or of v, for a prismatic joint) may be.
+UNIT_TOL = 1e-9
+
+
+class Joint(enum.Enum):
+    """The kind of a joint: its variable q is an angle (revolute, helical) or a length (prismatic)."""
+
+    REVOLUTE = "R"
+    PRISMATIC = "P"
+    HELICAL = "H"  # rotation q (rad) with translation h q along the axis
+
+
+class Convention(enum.Enum):
+    """Which DH convention a chain's table follows."""
+
+    STANDARD = "standard"  # Rz(theta) Tz(d) Tx(a) Rx(alpha)
+    MODIFIED = "modified"  # Craig: Rx(alpha) Tx(a) Rz(theta) Tz(d)
+
+
+def check_convention(convention):
+    if not isinstance(convention, Convention):
+        raise TypeError(f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}")
+    return convention
+
+
+def _check_parameter(value, name):
+    """A DH number: a finite real number, or a SymPy expression (exact, possibly symbolic)."""
+    if isinstance(value, sp.Basic):
+        value = sp.sympify(value)
+        if not isinstance(value, sp.Expr) or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or value.is_real is False:
+            raise ValueError(f"{name} must be a finite real number or SymPy expression, got {value}")
+        return value
+    if isinstance(value, (bool, str, bytes)) or value is None or isinstance(value, (complex, np.complexfloating)):
+        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}")
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}") from None
+    if not np.isfinite(number):
+        raise ValueError(f"{name} must be finite, got {number}")
+    return int(value) if isinstance(value, (int, np.integer)) else number
+
+
+@dataclass(frozen=True)
+class Link:
+    """One row of a DH table (m, rad).
+
+    The joint variable q adds to ``offset``: theta = q + offset for a revolute joint (then
+    ``theta`` is unused), d = q + offset for a prismatic one (then ``d`` is unused).
+    ``qlim`` is (min, max) of q, or None for no limit (+-inf in either place is no limit there).
+    Numbers may be floats or exact SymPy values (``sympy.pi / 2``); symbols are allowed for the
+    exact path (``fk_symbolic``) but the numeric path needs numbers.
+    """
+
+    joint: Joint
+    d: object = 0
+    a: object = 0
+    alpha: object = 0
+    theta: object = 0
+    offset: object = 0
+    qlim: tuple = None
+
+    def __post_init__(self):
+        if not isinstance(self.joint, Joint) or self.joint is Joint.HELICAL:
+            raise TypeError(f"joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got {self.joint!r}")
+        for name in ("d", "a", "alpha", "theta", "offset"):
+            object.__setattr__(self, name, _check_parameter(getattr(self, name), name))
+        object.__setattr__(self, "qlim", _check_qlim(self.qlim))
+
+    @classmethod
+    def revolute(cls, d=0, a=0, alpha=0, offset=0, qlim=None):
+        """A revolute link: theta = q + offset."""
+        return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=qlim)
+
+    @classmethod
+    def prismatic(cls, theta=0, a=0, alpha=0, offset=0, qlim=None):
+        """A prismatic link: d = q + offset."""
+        return cls(Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim)
+
+    def transform(self, q, convention=Convention.STANDARD):
+        """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or symbol q."""
+        check_convention(convention)
+        theta, d = (q + self.offset, self.d) if self.joint is Joint.REVOLUTE else (self.theta, q + self.offset)
+        ct, st = sp.cos(theta), sp.sin(theta)
+        ca, sa = sp.cos(_exact(self.alpha)), sp.sin(_exact(self.alpha))
+        a = _exact(self.a)
+        if convention is Convention.STANDARD:
+            return sp.Matrix([[ct, -st * ca, st * sa, a * ct],
+                              [st, ct * ca, -ct * sa, a * st],
+                              [0, sa, ca, d],
+                              [0, 0, 0, 1]])
+        return sp.Matrix([[ct, -st, 0, a],
+                          [st * ca, ct * ca, -sa, -sa * d],
+                          [st * sa, ct * sa, ca, ca * d],
+                          [0, 0, 0, 1]])
+
+    def _numbers(self, index):
+        """(d, a, theta, offset) as floats and (cos alpha, sin alpha), for the numeric path."""
+        values = []
+        for name in ("d", "a", "theta", "offset", "alpha"):
+            value = getattr(self, name)
+            if isinstance(value, sp.Basic) and value.free_symbols:
+                raise ValueError(f"link {index}'s {name} is the expression {value}: the numeric path "
+                                 "(fk, Jacobians) needs numbers; use fk_symbolic for symbols")
+            values.append(value)
+        alpha = values.pop()
+        if isinstance(alpha, sp.Basic):  # exact: cos(pi/2) is exactly 0
+            return [float(v) for v in values], (float(sp.cos(alpha)), float(sp.sin(alpha)))
+        quarter_turns = round(alpha / (np.pi / 2))
+        if abs(alpha / (np.pi / 2) - quarter_turns) < 1e-15:  # as _exact: a float multiple of pi/2
+            cos_sin = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][quarter_turns % 4]
+        else:
+            cos_sin = (float(np.cos(alpha)), float(np.sin(alpha)))
+        return [float(v) for v in values], cos_sin
+
+
+def _limit_numbers(qlim, name, expected):
+    """Joint limits as a float array (+-inf allowed: no limit); TypeError for anything else."""
+    if isinstance(qlim, (str, bytes)):
+        raise TypeError(f"{name} must be {expected} or None, got {qlim!r}")
+    try:
+        return np.asarray(qlim, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be {expected} of numbers or None, got {describe(qlim)}") from None
+
+
+def _check_qlim(qlim, name="qlim"):
+    """(min, max) as floats, None for no limit; +-inf means no limit on that side."""
+    if qlim is None:
+        return None
+    limits = _limit_numbers(qlim, name, "a pair (min, max)")
+    if limits.shape != (2,) or np.any(np.isnan(limits)) or not limits[0] < limits[1]:
+        raise ValueError(f"{name} must be a pair (min, max) with min < max, got {qlim!r}")
+    if limits[0] == -np.inf and limits[1] == np.inf:
+        return None
+    return (float(limits[0]), float(limits[1]))
+
+
+def _exact(value):
+    """Floats that are integers or multiples of pi/2 become exact, so cos(pi/2) is exactly 0."""
+    value = sp.sympify(value)
+    if isinstance(value, sp.Float):
+        quarter_turns = float(value) / (np.pi / 2)
+        if abs(quarter_turns - round(quarter_turns)) < 1e-15:
+            return sp.pi / 2 * round(quarter_turns)
+    return value
+
+
+def decimal(value):
+    """A Float as the exact decimal it prints as (0.4318 -> 2159/5000); other values unchanged."""
+    value = sp.sympify(value)
+    if isinstance(value, sp.Float):
+        return sp.nsimplify(value, rational=True)
+    if value.has(sp.Float):
+        return value.xreplace({f: sp.nsimplify(f, rational=True) for f in value.atoms(sp.Float)})
+    return value
+
+
+def exact_matrix(T):
+    """A numeric 4x4 as a SymPy matrix, exact where the entries are integers."""
+    return sp.Matrix(4, 4, [sp.Integer(int(v)) if float(v).is_integer() else sp.Float(v) for v in T.flat])
+
+
+def rigid(value, name):
+    """A 4x4 rigid transform as a fresh, read-only float array (never the caller's array)."""
+    if value is None:
+        T = np.eye(4)
+    else:
+        if isinstance(value, sp.MatrixBase):
+            value = np.array(value.evalf(), dtype=float) if not value.free_symbols else value
+        T = check_transform(as_float_array(value, name), name)
+        if T.shape != (4, 4):
+            raise ValueError(f"{name} must be one transform of shape (4, 4), got shape {T.shape}")
+        T = T.copy()
+    T.setflags(write=False)
+    return T
+
+
+def translation(p):
+    T = np.eye(4)
+    T[:3, 3] = p
+    return T
+
+
+def dh_factors(link, index, convention):
+    """(pre, twist, post) of a DH link: A(q) = pre exp([X] (q + offset)) post (floats)."""
+    (d, a, theta, _), (ca, sa) = link._numbers(index)
+    Rx = np.array([[1.0, 0, 0, 0], [0, ca, -sa, 0], [0, sa, ca, 0], [0, 0, 0, 1]])
+    Tx, Tz = translation([a, 0, 0]), translation([0, 0, d])
+    ct, st = np.cos(theta), np.sin(theta)
+    Rz = np.array([[ct, -st, 0, 0], [st, ct, 0, 0], [0, 0, 1.0, 0], [0, 0, 0, 1]])
+    revolute = link.joint is Joint.REVOLUTE
+    twist = np.array([0, 0, 1.0, 0, 0, 0]) if revolute else np.array([0, 0, 0, 0, 0, 1.0])
+    if convention is Convention.STANDARD:
+        return np.eye(4), twist, (Tz if revolute else Rz) @ Tx @ Rx
+    return Rx @ Tx, twist, Tz if revolute else Rz
+
+
+def check_screws(axes):
+    """The joint screws as an (n, 6) float array of unit screws, and their exact forms."""
+    from .screws import Screw
+
+    if isinstance(axes, np.ndarray) and axes.ndim == 2:
+        items = list(axes)
+    elif isinstance(axes, (list, tuple)):
+        items = list(axes)
+    else:
+        raise TypeError(f"axes must be a list of Twist objects or 6-vectors [omega; v], got {describe(axes)}")
+    if not items:
+        raise ValueError("axes must hold at least one joint screw, got none")
+    numbers, exact = [], []
+    for i, item in enumerate(items):
+        name = f"axes[{i}]"
+        if isinstance(item, Screw):
+            if item.kind == "wrench":
+                raise TypeError(f"{name} must be a twist (a joint's motion), got a Wrench")
+            vector = item.vector
+        elif isinstance(item, sp.MatrixBase) or (isinstance(item, (list, tuple, np.ndarray))
+                                                 and any(isinstance(e, sp.Basic) for e in np.ravel(item))):
+            vector = sp.Matrix(item)
+        else:
+            vector = None
+        if vector is not None:
+            if vector.shape not in ((6, 1), (1, 6)) or vector.free_symbols:
+                raise ValueError(f"{name} must be a 6-vector of numbers [omega; v], got {vector.T}")
+            values = np.array([float(e) for e in vector], dtype=float)
+            exact.append(sp.Matrix(6, 1, list(vector)))
+        else:
+            values = as_float_array(item, name)
+            if values.shape != (6,):
+                raise ValueError(f"{name} must be a 6-vector [omega; v], got shape {values.shape}")
+            exact.append(sp.Matrix(6, 1, [sp.Integer(int(v)) if v.is_integer() else sp.Float(v) for v in values]))
+        w, v = np.linalg.norm(values[:3]), np.linalg.norm(values[3:])
+        if w == 0 and v == 0:
+            raise ValueError(f"{name} must be a unit screw axis, got the zero twist")
+        if w != 0 and abs(w - 1) > UNIT_TOL:
+            raise ValueError(f"{name} must be a unit screw axis: |omega| = 1 for a revolute or helical "
+                             f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}")
+        if w == 0 and abs(v - 1) > UNIT_TOL:
+            raise ValueError(f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}")
+        numbers.append(values / (w or v))  # unit to the last bit: the exponential assumes it
+    return np.array(numbers), exact
+
+
+def joint_kind(screw):
+    if not np.any(screw[:3]):
+        return Joint.PRISMATIC
+    return Joint.HELICAL if abs(np.dot(screw[:3], screw[3:])) > 1e-12 else Joint.REVOLUTE
+
+
+def axis_points(screws, start):
+    """A point on each screw axis (revolute/helical): the one nearest the previous joint's point.
+
+    Only for drawing: the first joint's point is the one nearest ``start``; a prismatic joint
+    keeps the previous point.
+    """
+    points, previous = [], np.asarray(start, dtype=float)
+    for screw in screws:
+        w, v = screw[:3], screw[3:]
+        if np.any(w):
+            h = np.dot(w, v)
+            nearest_origin = np.cross(w, v - h * w)  # the axis point nearest the origin
+            previous = nearest_origin + np.dot(previous - nearest_origin, w) * w
+        points.append(previous.copy())
+    return np.array(points)
+
+
+def limits_table(qlim, n):
+    """An (n, 2) table of limits as a list of (min, max) or None (+-inf: no limit)."""
+    limits = _limit_numbers(qlim, "qlim", f"an ({n}, 2) array")
+    if limits.shape != (n, 2):
+        raise ValueError(f"qlim must have shape ({n}, 2), got shape {limits.shape}")
+    return [_check_qlim(row, f"qlim[{i}]") for i, row in enumerate(limits)]
