@@ -253,8 +253,8 @@ def cos_sin(angles):
     cos = 2 / (1 + t^2) - 1 and sin = 2 t / (1 + t^2).
 
     NumPy computes tan with SIMD instructions and cos, sin without on many machines: this is
-    about three times faster for a batch, and as accurate (within 4e-16 of np.cos and np.sin,
-    tested). At theta = pi, t is about 1.6e16 and the formulas give -1 and 1.2e-16, as np.cos
+    about three times faster for a batch, and as accurate (within 6e-16, 3 units in the last
+    place, of the C library's cos and sin; tested). At theta = pi, t is about 1.6e16 and the formulas give -1 and 1.2e-16, as np.cos
     and np.sin do.
     """
     t = np.tan(0.5 * angles)
