@@ -244,13 +244,15 @@ def as_sympy_matrix(value, name, shape):
     return sp.Matrix(shape[0], shape[1], [_exact_if_integral(e) for e in entries])
 
 
-def _check_exact_entry(entry, name):
+def _check_exact_entry(entry, name, what="an entry equal to"):
+    """A finite, real SymPy expression; ``what`` introduces it in the messages."""
+    what = f"{what} " if what else ""
     if not isinstance(entry, sp.Expr) or entry.is_Boolean:
         raise TypeError(f"{name} must hold numbers or SymPy expressions, got {entry!r}")
     if entry in _INFINITE or not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise ValueError(f"{name} must be finite, got an entry equal to {entry}")
+        raise ValueError(f"{name} must be finite, got {what}{entry}")
     if entry.is_number and entry.is_extended_real is False:
-        raise TypeError(f"{name} must hold real numbers, got the complex number {entry}")
+        raise TypeError(f"{name} must be real, got {what}the complex number {entry}")
 
 
 def as_sympy_scalar(value, name):
@@ -264,10 +266,7 @@ def as_sympy_scalar(value, name):
             f"{name} must be a number or a SymPy expression, got {describe(value)}") from None
     if not isinstance(entry, sp.Expr) or entry.is_Boolean:
         raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
-    if entry in _INFINITE or not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise ValueError(f"{name} must be finite, got {entry}")
-    if entry.is_number and entry.is_extended_real is False:
-        raise TypeError(f"{name} must be a real number, got the complex number {entry}")
+    _check_exact_entry(entry, name, what="")
     return _exact_if_integral(entry)
 
 
