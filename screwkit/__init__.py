@@ -23,6 +23,7 @@ from .transforms import (
     skew,
     transl,
     twist_from_axis,
+    wrap_angle,
 )
 
 __version__ = "0.1.0"
@@ -75,4 +76,5 @@ __all__ = [
     "skew",
     "transl",
     "twist_from_axis",
+    "wrap_angle",
 ]

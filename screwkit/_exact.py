@@ -30,7 +30,6 @@ import sympy as sp
 from sympy import GF, QQ, ZZ
 from sympy.ntheory import sqrt_mod
 from sympy.polys.matrices import DomainMatrix
-from sympy.polys.polyerrors import CoercionFailed
 
 _TRIG = (sp.sin, sp.cos, sp.tan)
 _TRANSCENDENTAL = (sp.pi, sp.E)

@@ -37,7 +37,7 @@ from .lie import log_transform
 from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
 from .subproblems import (Solutions, subproblem1, subproblem1_prismatic, subproblem2,
                           subproblem3, subproblem3_prismatic, subproblem4)
-from .transforms import inv
+from .transforms import _wrap_angle, inv
 
 __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",
            "configuration", "puma560_ik", "puma560_ik_all", "puma560_config",
@@ -87,12 +87,7 @@ class IKSolutions(list):
             raise ValueError(f"q must have 6 entries, got shape {q.shape}")
         if not self:
             return None
-        return min(self, key=lambda s: np.linalg.norm(_wrap(s.q - q)))
-
-
-def _wrap(angle):
-    """Angles wrapped into (-pi, pi]."""
-    return np.pi - np.mod(np.pi - angle, 2 * np.pi)
+        return min(self, key=lambda s: np.linalg.norm(_wrap_angle(s.q - q)))
 
 
 @lru_cache(maxsize=1)
@@ -205,7 +200,7 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
         solutions = [s for s in solutions if s.within_limits]
     result = IKSolutions(solutions)
     if near is not None:
-        result.sort(key=lambda s: np.linalg.norm(_wrap(s.q - near)))
+        result.sort(key=lambda s: np.linalg.norm(_wrap_angle(s.q - near)))
     if not result:
         result.reason = ("every solution violates a joint limit, even moved by whole turns: "
                          + ", ".join(f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
@@ -387,7 +382,7 @@ def _wrap_revolute(chain, q, within_limits):
     """Revolute angles into (-pi, pi] (with limits: only those the wrap keeps inside them)."""
     revolute = np.array([j is Joint.REVOLUTE for j in chain.joints])
     wrapped = q.copy()
-    wrapped[..., revolute] = _wrap(q[..., revolute])
+    wrapped[..., revolute] = _wrap_angle(q[..., revolute])
     if within_limits:
         low, high = chain.qlim.T
         keep = (wrapped >= low) & (wrapped <= high)

@@ -24,7 +24,7 @@ from ._checks import (
 from ._mechanism_plot import draw_mechanism  # noqa: F401  (re-exported: sk.plotting.draw_mechanism)
 
 __all__ = ["COLUMN_WIDTH", "COURSE_STYLE", "DPI", "use_course_style", "axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain", "draw_ellipsoid",
-           "draw_planar", "animation_html"]
+           "draw_planar", "animation_html", "draw_mechanism"]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 

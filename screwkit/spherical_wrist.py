@@ -44,7 +44,7 @@ import numpy as np
 
 from ._checks import describe
 from .chains import Chain, Joint
-from .transforms import inv
+from .transforms import _wrap_angle, inv
 
 __all__ = ["CONFIGURATIONS", "SphericalWristArm"]
 
@@ -69,11 +69,6 @@ def _rotate(w, angle, x):
     """Rotate x (..., 3) about the unit direction w (3,) by angle (...): Rodrigues."""
     c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
     return x * c + np.cross(w, x) * s + w * ((x @ w)[..., None] * (1 - c))
-
-
-def _wrap(angle):
-    """Angles wrapped into (-pi, pi]."""
-    return np.pi - np.mod(np.pi - angle, 2 * np.pi)
 
 
 def _polar(y, x):
@@ -120,21 +115,6 @@ class _Rotor:
         along = _dot(self.w, v) * (1 - cos)
         return (v * cos + _apply(self.K, v) * sin
                 + self.w.reshape((3,) + (1,) * along.ndim) * along)
-
-
-def _rotation(w, angle):
-    """The rotation matrices about w (3,) by angle (...): (..., 3, 3)."""
-    K = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-    s, c1 = np.sin(angle)[..., None, None], (1 - np.cos(angle))[..., None, None]
-    return np.eye(3) + s * K + c1 * (K @ K)
-
-
-def _angle(w, u, v):
-    """Subproblem 1 for directions: the angle about w from u to v (both (..., 3)); 0 where
-    u has no part perpendicular to w (every angle)."""
-    u1 = u - (u @ w)[..., None] * w
-    v1 = v - (v @ w)[..., None] * w
-    return np.arctan2(np.cross(u1, v1) @ w, np.sum(u1 * v1, axis=-1))
 
 
 @dataclass(frozen=True)
@@ -314,7 +294,7 @@ class SphericalWristArm:
         swap = swap[..., None]
         q2, c2, s2, q3, c3, s3q = (np.where(swap, v[..., ::-1], v)  # u first, then d
                                    for v in (q2, c2, s2, q3, c3, s3q))
-        q3 = _wrap(q3)
+        q3 = _wrap_angle(q3)
 
         # the wrist: Rw = R23^T R1^T RG, R2 R3 = R(w2, q2 + s3 q3); t = Rw w6, b = Rw x6
         x6 = _unit(_cross3(w5, w6))
@@ -362,7 +342,7 @@ class SphericalWristArm:
         # the answer: (N, 8, 6) in the order of CONFIGURATIONS, NaN where not reached
         shape = (N, 2, 2, 2)
         Q = np.empty(shape + (6,))
-        Q[..., 0] = _wrap(-theta)[:, :, None, None]
+        Q[..., 0] = _wrap_angle(-theta)[:, :, None, None]
         Q[..., 1] = q2[..., None]
         Q[..., 2] = q3[..., None]
         Q[..., 3], Q[..., 4], Q[..., 5] = q4, q5, q6

@@ -42,6 +42,7 @@ __all__ = [
     "homogeneous",
     "inv",
     "twist_from_axis",
+    "wrap_angle",
     "exp_twist",
     "screw_motion",
 ]
@@ -264,6 +265,20 @@ def inv(T):
         return homogeneous(Rt, -Rt * T[:3, 3])
     Rt = np.swapaxes(T[..., :3, :3], -1, -2)
     return _assemble(Rt, -np.einsum("...ij,...j->...i", Rt, T[..., :3, 3]))
+
+
+def wrap_angle(angle):
+    """Angles (rad) wrapped into (-pi, pi]: a float, or an array of any shape.
+
+    >>> float(wrap_angle(3 * np.pi / 2)), float(wrap_angle(-np.pi))
+    (-1.5707963267948966, 3.141592653589793)
+    """
+    return _wrap_angle(as_scalar_or_batch(angle, "angle"))
+
+
+def _wrap_angle(angle):
+    """wrap_angle without the input check, for the numeric layer's own arrays."""
+    return np.pi - np.mod(np.pi - angle, 2 * np.pi)
 
 
 def twist_from_axis(s, r, h):

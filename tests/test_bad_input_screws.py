@@ -6,7 +6,7 @@ import sympy as sp
 
 import screwkit as sk
 from screwkit import joints
-from screwkit.screws import Screw, Twist, Wrench
+from screwkit.screws import Twist, Wrench
 from screwkit.systems import ScrewSystem
 
 X, Y, Z, O = [1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]

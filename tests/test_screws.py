@@ -1,6 +1,4 @@
 """Screws, twists, wrenches and screw systems: exact results from hand derivations."""
-import random
-
 import pytest
 import sympy as sp
 from hypothesis import given, settings
