@@ -29,8 +29,8 @@ from .transforms import (
 __version__ = "0.1.0"
 
 # Drawing, widgets and the in-page viewer load matplotlib and ipywidgets: imported on first use
-# (sk.plotting, sk.widgets, sk.viewer).
-_LAZY_SUBMODULES = ("plotting", "widgets", "viewer")
+# (sk.plotting, sk.widgets, sk.viewer); sk.exercises, the display of self-checks, too.
+_LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises")
 
 
 def __getattr__(name):

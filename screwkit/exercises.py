@@ -1,0 +1,598 @@
+"""Self-checking exercises: answer keys, a check in the notebook and a box in the page.
+
+Each chapter's answer key is package data, ``screwkit/answers/CHAPTER.toml`` (CHAPTER
+is the notebook's stem, e.g. ``puma_ik``)::
+
+    [exercise.4]
+    answer = "atan2(0.4318, 0.0203)"   # a SymPy expression, or a list of them
+    unit = "rad"                       # "rad", "deg", "m", "mm", "m/s", "" ...
+    tolerance = 1e-3                   # absolute, in the answer's unit
+    rtol = 0.0                         # optional, relative
+    hint = "The elbow angle is measured from the forearm's line."
+    forms = ["modulo 2pi"]             # optional: "modulo 2pi", "either sign",
+                                       # "any order"
+    alternatives = ["-pi/2"]           # optional: other accepted answers
+
+``check(chapter, number, answer)`` returns a :class:`Verdict` (right or wrong, and
+why); ``answer_box(chapter, number)`` returns a field and a Check button for the
+page, answered by ``static/exercises.js`` in the browser with the same rules, with
+no kernel. Student answers are read by a small parser of numbers, ``pi``, ``sqrt``,
+the trigonometric functions, units (``60 deg``, ``12 mm``) and comma-separated
+vectors; it never evaluates Python code.
+"""
+
+import html
+import itertools
+import json
+import math
+import re
+import tomllib
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+import numpy as np
+import sympy as sp
+
+from ._checks import describe
+
+__all__ = ["Verdict", "AnswerBox", "check", "answer_box", "answer_key", "parse_answer"]
+
+FORMS = ("modulo 2pi", "either sign", "any order")
+
+# factor to the base unit (radian, metre, metre per second) and the quantity
+_UNITS = {
+    "rad": (1.0, "angle"),
+    "deg": (math.pi / 180, "angle"),
+    "°": (math.pi / 180, "angle"),
+    "m": (1.0, "length"),
+    "cm": (1e-2, "length"),
+    "mm": (1e-3, "length"),
+    "m/s": (1.0, "speed"),
+    "mm/s": (1e-3, "speed"),
+    "rad/s": (1.0, "angular speed"),
+    "deg/s": (math.pi / 180, "angular speed"),
+}
+_UNIT_NAMES = {"degree": "deg", "degrees": "deg", "radian": "rad", "radians": "rad"}
+
+_FUNCTIONS = {
+    "sqrt": math.sqrt,
+    "sin": math.sin,
+    "cos": math.cos,
+    "tan": math.tan,
+    "asin": math.asin,
+    "acos": math.acos,
+    "atan": math.atan,
+    "atan2": math.atan2,
+    "exp": math.exp,
+    "ln": math.log,
+    "log": math.log,
+    "abs": abs,
+}
+_CONSTANTS = {"pi": math.pi, "π": math.pi, "e": math.e}
+
+_TOKEN = re.compile(
+    r"\s*(?:(?P<number>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)"
+    r"|(?P<unit>m/s|mm/s|rad/s|deg/s|°)"
+    r"|(?P<name>[A-Za-zπ_][A-Za-z0-9_]*)"
+    r"|(?P<op>\*\*|[-+*/^(),;\[\]]))"
+)
+
+
+# ---- reading an answer ---------------------------------------------------------------
+
+
+class _Parser:
+    """Recursive descent over numbers, + - * / ^, functions, constants and units."""
+
+    def __init__(self, text):
+        text = text.replace("−", "-").replace("×", "*").replace("·", "*")
+        text = text.replace("√", "sqrt")
+        self.tokens = []
+        position = 0
+        while position < len(text):
+            if text[position:].strip() == "":
+                break
+            match = _TOKEN.match(text, position)
+            if match is None or match.end() == position:
+                raise ValueError(f"cannot read {text[position:].strip()[:12]!r}")
+            kind = match.lastgroup
+            self.tokens.append((kind, match.group(kind)))
+            position = match.end()
+        self.at = 0
+
+    def peek(self):
+        return self.tokens[self.at] if self.at < len(self.tokens) else (None, None)
+
+    def take(self, value=None):
+        token = self.peek()
+        if token[0] is None or (value is not None and token[1] != value):
+            found = "the end" if token[0] is None else repr(token[1])
+            raise ValueError(f"expected {value!r}, found {found}")
+        self.at += 1
+        return token
+
+    def items(self):
+        """Comma- or semicolon-separated items; brackets group and are flattened."""
+        values = self.item()
+        while self.peek()[1] in (",", ";"):
+            self.take()
+            values += self.item()
+        return values
+
+    def item(self):
+        if self.peek()[1] == "[":
+            self.take("[")
+            values = self.items()
+            self.take("]")
+            return values
+        value = self.expression()
+        return [value * self.unit()]
+
+    def unit(self):
+        kind, word = self.peek()
+        word = _UNIT_NAMES.get(word, word)
+        if kind in ("unit", "name") and word in _UNITS:
+            self.take()
+            factor, quantity = _UNITS[word]
+            self.units.append(quantity)
+            return factor
+        self.units.append(None)
+        return 1.0
+
+    def expression(self):
+        value = self.term()
+        while self.peek()[1] in ("+", "-"):
+            sign = self.take()[1]
+            value = value + self.term() if sign == "+" else value - self.term()
+        return value
+
+    def term(self):
+        value = self.signed()
+        while True:
+            kind, token = self.peek()
+            if token in ("*", "/"):
+                self.take()
+                right = self.signed()
+                value = value * right if token == "*" else value / right
+            elif (
+                kind == "number"
+                or token == "("
+                or (kind == "name" and _UNIT_NAMES.get(token, token) not in _UNITS)
+            ):
+                value = value * self.power()  # implicit product: 2pi, 2 sqrt(3)
+            else:
+                return value
+
+    def signed(self):
+        if self.peek()[1] in ("+", "-"):
+            sign = self.take()[1]
+            value = self.signed()
+            return value if sign == "+" else -value
+        return self.power()
+
+    def power(self):
+        value = self.atom()
+        if self.peek()[1] in ("^", "**"):
+            self.take()
+            value = value ** self.signed()
+        return value
+
+    def atom(self):
+        kind, token = self.peek()
+        if kind == "number":
+            self.take()
+            return float(token)
+        if token == "(":
+            self.take("(")
+            value = self.expression()
+            self.take(")")
+            return value
+        if kind == "name" and token in _FUNCTIONS:
+            self.take()
+            self.take("(")
+            arguments = [self.expression()]
+            while self.peek()[1] == ",":
+                self.take()
+                arguments.append(self.expression())
+            self.take(")")
+            try:
+                return _FUNCTIONS[token](*arguments)
+            except (ValueError, TypeError, OverflowError) as error:
+                raise ValueError(f"cannot evaluate {token}(...): {error}") from None
+        if kind == "name" and token in _CONSTANTS:
+            self.take()
+            return _CONSTANTS[token]
+        found = "the end" if kind is None else repr(token)
+        raise ValueError(f"expected a number, found {found}")
+
+
+def parse_answer(text):
+    """Read a typed answer: ``"pi/3"``, ``"60 deg"``, ``"0.1, -0.2, 0.3"``, ``"12 mm"``.
+
+    Returns
+    -------
+    values : list of float
+        The numbers, with units converted to the base unit (rad, m, m/s).
+    units : list of str or None
+        Per number, the quantity its unit names (``"angle"``, ``"length"``...), or
+        None where no unit was written.
+
+    Raises ValueError with a sentence saying what could not be read. Nothing is
+    evaluated as Python.
+
+    >>> parse_answer("pi/2, 90 deg")[0]
+    [1.5707963267948966, 1.5707963267948966]
+    """
+    if not isinstance(text, str):
+        raise TypeError(f"the answer text must be a string, got {describe(text)}")
+    parser = _Parser(text)
+    parser.units = []
+    if not parser.tokens:
+        raise ValueError("the answer is empty")
+    try:
+        values = parser.items()
+    except RecursionError:
+        raise ValueError("it is nested too deeply") from None
+    except (ZeroDivisionError, OverflowError, TypeError) as error:
+        raise ValueError(f"cannot evaluate it ({error})") from None
+    if parser.peek()[0] is not None:
+        raise ValueError(f"unexpected {parser.peek()[1]!r}")
+    if any(isinstance(v, complex) or not math.isfinite(v) for v in values):
+        raise ValueError("it is not a finite real number")
+    return [float(v) for v in values], parser.units
+
+
+# ---- answer keys ---------------------------------------------------------------------
+
+
+@lru_cache(maxsize=None)
+def _key_file(chapter):
+    if not isinstance(chapter, str) or not re.fullmatch(r"[a-z0-9_]+", chapter):
+        raise ValueError(
+            f"chapter must be a notebook name such as 'puma_ik', got "
+            f"{describe(chapter)}"
+        )
+    path = resources.files("screwkit").joinpath(f"answers/{chapter}.toml")
+    if not path.is_file():
+        raise ValueError(
+            f"chapter must be one with an answer key, got {chapter!r} "
+            f"(no screwkit/answers/{chapter}.toml)"
+        )
+    return tomllib.loads(path.read_text(encoding="utf-8")).get("exercise", {})
+
+
+def _numbers(answer):
+    """Floats and shape of a key's answer: an expression string or nested lists."""
+    array = np.array(answer, dtype=object)
+    values = [float(sp.N(sp.sympify(v), 17)) for v in array.ravel()]
+    return values, list(array.shape)
+
+
+def answer_key(chapter, number):
+    """The checked answer of an exercise, as a dict of floats, ready for the page.
+
+    Keys: ``values`` (list of float, row-major), ``shape``, ``exact`` (the key's
+    expression text), ``unit``, ``tolerance``, ``rtol``, ``hint``, ``forms`` and
+    ``alternatives`` (lists of float lists).
+    """
+    exercises = _key_file(chapter)
+    if isinstance(number, bool) or not isinstance(number, (int, np.integer)):
+        raise TypeError(
+            f"number must be an exercise number (int), got {describe(number)}"
+        )
+    if str(number) not in exercises:
+        raise ValueError(
+            f"number must be a self-checking exercise of {chapter!r} "
+            f"(one of {sorted(int(k) for k in exercises)}), got {number}"
+        )
+    entry = exercises[str(number)]
+    values, shape = _numbers(entry["answer"])
+    forms = list(entry.get("forms", []))
+    unknown = [form for form in forms if form not in FORMS]
+    if unknown:
+        raise ValueError(
+            f"forms of {chapter} exercise {number} must be among {FORMS}, got {unknown}"
+        )
+    unit = entry.get("unit", "")
+    return {
+        "chapter": chapter,
+        "number": int(number),
+        "values": values,
+        "shape": shape,
+        "exact": entry["answer"],
+        "unit": unit,
+        "tolerance": float(entry["tolerance"]),
+        "rtol": float(entry.get("rtol", 0.0)),
+        "hint": entry.get("hint", ""),
+        "forms": forms,
+        "alternatives": [_numbers(a)[0] for a in entry.get("alternatives", [])],
+    }
+
+
+# ---- checking ------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The result of :func:`check`: ``correct`` and a ``message`` saying why."""
+
+    correct: bool
+    message: str
+    chapter: str = ""
+    number: int = 0
+
+    def __bool__(self):
+        return self.correct
+
+    def __repr__(self):
+        mark = "✓ right" if self.correct else "✗ not yet"
+        return f"{self.chapter} exercise {self.number}: {mark}. {self.message}"
+
+    def _repr_html_(self):
+        colour = "#1a7f37" if self.correct else "#b35900"
+        mark = "✓ Right" if self.correct else "✗ Not yet"
+        return (
+            f'<div role="status" style="color:{colour}"><b>{mark}</b> '
+            f"({html.escape(self.chapter)} exercise {self.number}): "
+            f"{html.escape(self.message)}</div>"
+        )
+
+
+def _as_values(answer):
+    """Floats from whatever a student passes; ValueError/TypeError with a reason."""
+    if isinstance(answer, str):
+        return parse_answer(answer)
+    if isinstance(answer, sp.MatrixBase):
+        answer = np.array(answer.tolist(), dtype=object)
+    if isinstance(answer, (list, tuple, np.ndarray)):
+        flat = np.array(answer, dtype=object).ravel().tolist()
+        if any(isinstance(v, (list, tuple, np.ndarray)) for v in flat):
+            raise ValueError("its rows have different lengths")
+        values, units = [], []
+        for entry in flat:
+            v, u = _as_values(entry)
+            values += v
+            units += u
+        return values, units
+    if isinstance(answer, (bool, np.bool_)) or answer is None:
+        raise TypeError(f"expected a number, got {describe(answer)}")
+    if isinstance(answer, sp.Basic) or hasattr(answer, "__float__"):
+        try:
+            value = (
+                float(sp.N(answer)) if isinstance(answer, sp.Basic) else float(answer)
+            )
+        except (TypeError, ValueError):
+            raise TypeError(f"expected a real number, got {describe(answer)}") from None
+        if not math.isfinite(value):
+            raise ValueError(f"expected a finite number, got {value}")
+        return [value], [None]
+    raise TypeError(
+        f"expected a number, a list of numbers or a text, got {describe(answer)}"
+    )
+
+
+def _unit_text(key):
+    return f" {key['unit']}" if key["unit"] else ""
+
+
+def _base_factor(unit):
+    return _UNITS.get(unit, (1.0, None))
+
+
+def _close(x, a, key):
+    x, a = np.asarray(x, float), np.asarray(a, float)
+    d = x - a
+    if "modulo 2pi" in key["forms"]:
+        period = 360.0 if key["unit"] == "deg" else 2 * math.pi
+        d = (d + period / 2) % period - period / 2
+    return bool(np.all(np.abs(d) <= key["tolerance"] + key["rtol"] * np.abs(a) + 1e-12))
+
+
+def _matches(x, key):
+    """True if ``x`` (floats in the key's unit) is one of the accepted forms."""
+    candidates = [key["values"], *key["alternatives"]]
+    if "either sign" in key["forms"]:
+        candidates += [[-v for v in c] for c in candidates]
+    for a in candidates:
+        if len(a) != len(x):
+            continue
+        if "any order" in key["forms"]:
+            if "modulo 2pi" in key["forms"]:
+                period = 360.0 if key["unit"] == "deg" else 2 * math.pi
+                wrap = lambda v: sorted(
+                    (u + period / 2) % period - period / 2 for u in v
+                )
+                if _close(wrap(x), wrap(a), key):
+                    return True
+            elif _close(sorted(x), sorted(a), key):
+                return True
+        elif _close(x, a, key):
+            return True
+    return False
+
+
+def _diagnose(x, key):
+    """Why ``x`` is wrong, where a common slip explains it."""
+    unit, n = key["unit"], len(key["values"])
+    if len(x) != n:
+        what = "one number" if n == 1 else f"{n} numbers"
+        return f"expected {what}, got {len(x)}."
+    slips = [
+        ("rad", math.pi / 180, "looks like degrees, radians expected"),
+        ("deg", 180 / math.pi, "looks like radians, degrees expected"),
+        ("m", 1e-3, "looks like millimetres, metres expected"),
+        ("mm", 1e3, "looks like metres, millimetres expected"),
+    ]
+    for slip_unit, factor, text in slips:
+        if unit == slip_unit and _matches([v * factor for v in x], key):
+            return text + "."
+    if _matches([-v for v in x], key):
+        return "the sign is flipped."
+    if n > 1 and _matches_abs(x, key):
+        return "the magnitudes are right but some signs are wrong."
+    if (
+        n > 1
+        and "any order" not in key["forms"]
+        and _close(sorted(x), sorted(key["values"]), key)
+    ):
+        return "the right numbers in the wrong order."
+    return None
+
+
+def _matches_abs(x, key):
+    return _close(np.abs(x), np.abs(key["values"]), key)
+
+
+def _verdict(x, units, key):
+    chapter, number = key["chapter"], key["number"]
+    factor, quantity = _base_factor(key["unit"])
+    given = {u for u in units if u is not None}
+    if given:
+        if quantity is None or given != {quantity}:
+            expected = f"in {key['unit']}" if key["unit"] else "a pure number"
+            return Verdict(
+                False,
+                f"The answer is {expected}, but the units typed are "
+                f"{' and '.join(sorted(given))}.",
+                chapter,
+                number,
+            )
+        x = [v / factor if u is not None else v for v, u in zip(x, units)]
+    within = f"within ±{key['tolerance']:g}{_unit_text(key)}"
+    if _matches(x, key):
+        return Verdict(
+            True,
+            f"Within ±{key['tolerance']:g}{_unit_text(key)} of the answer.",
+            chapter,
+            number,
+        )
+    reason = _diagnose(x, key) or f"not {within} of the answer."
+    hint = f" Hint: {key['hint']}" if key["hint"] else ""
+    return Verdict(False, reason[0].upper() + reason[1:] + hint, chapter, number)
+
+
+def check(chapter, number, answer):
+    """Check an answer to a self-checking exercise.
+
+    Parameters
+    ----------
+    chapter : str
+        The chapter's notebook name, e.g. ``"puma_ik"``.
+    number : int
+        The exercise number in that chapter.
+    answer : number, str, sequence or array
+        A number, a SymPy expression, a text (``"pi/3"``, ``"60 deg"``,
+        ``"0.1, 0.2"``), or a list or array (flattened row-major). Numbers without
+        a unit are in the exercise's unit.
+
+    Returns
+    -------
+    Verdict
+        ``.correct`` and ``.message`` (why a wrong answer is wrong: units, sign,
+        length, order, else the exercise's hint). Text that cannot be read gives a
+        wrong verdict saying so, never an exception.
+
+    >>> check("rigid_motions", 2, "2, 0, 0").correct
+    True
+    """
+    key = answer_key(chapter, number)
+    try:
+        values, units = _as_values(answer)
+    except (TypeError, ValueError) as error:
+        return Verdict(False, f"Could not read the answer: {error}", chapter, number)
+    return _verdict(values, units, key)
+
+
+# ---- the box in the page -------------------------------------------------------------
+
+_ids = itertools.count(1)
+_script_sent = False
+
+
+def exercises_script():
+    """The JavaScript of the answer boxes (package data ``static/exercises.js``)."""
+    return (
+        resources.files("screwkit")
+        .joinpath("static/exercises.js")
+        .read_text(encoding="utf-8")
+    )
+
+
+class AnswerBox:
+    """A field and a Check button in the page, checked by ``exercises.js``, no kernel.
+
+    The script is inlined into the first box of a kernel session (one page) and
+    defines ``window.screwkitExercises``; every box mounts itself with it.
+    """
+
+    def __init__(self, key, script):
+        self.key = key
+        self.script = script
+        self.id = f"sk-exercise-{key['chapter']}-{key['number']}-{next(_ids)}"
+
+    def __repr__(self):
+        return (
+            f"Answer box for {self.key['chapter']} exercise {self.key['number']} "
+            f"(check it in the notebook with sk.exercises.check("
+            f"{self.key['chapter']!r}, {self.key['number']}, answer))"
+        )
+
+    def _repr_html_(self):
+        key = {
+            k: self.key[k]
+            for k in (
+                "values",
+                "shape",
+                "unit",
+                "tolerance",
+                "rtol",
+                "hint",
+                "forms",
+                "alternatives",
+            )
+        }
+        payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
+        unit = html.escape(self.key["unit"]) or "no unit"
+        ident = self.id
+        script = f"<script>\n{exercises_script()}</script>\n" if self.script else ""
+        return (
+            f'<div class="sk-answer-box" id="{ident}" style="font:14px sans-serif;'
+            f'margin:0.5em 0">\n'
+            f'<script type="application/json">{payload}</script>\n'
+            f'<label for="{ident}-input">Exercise {self.key["number"]}, your answer '
+            f"({unit}): </label>\n"
+            f'<input id="{ident}-input" type="text" size="28" autocomplete="off" '
+            f'spellcheck="false">\n'
+            f'<button type="button">Check</button>\n'
+            f'<div class="sk-verdict" role="status" aria-live="polite"></div>\n'
+            f"<noscript>Check your answer in the notebook: sk.exercises.check("
+            f"{html.escape(repr(self.key['chapter']))}, {self.key['number']}, answer)"
+            f"</noscript>\n</div>\n{script}"
+            f"<script>window.screwkitExercises && window.screwkitExercises.mountAll();"
+            f"</script>\n"
+        )
+
+
+def answer_box(chapter, number, script=None):
+    """A self-checking answer box for the page.
+
+    Parameters
+    ----------
+    chapter, number : as in :func:`check`.
+    script : bool, optional
+        Inline ``exercises.js`` with this box; by default only the first box of the
+        session carries it (once per page).
+
+    Returns
+    -------
+    AnswerBox
+        Displayed as an HTML field, a Check button and a verdict announced to
+        screen readers; the check runs in the browser with the key's tolerance,
+        forms and hint.
+    """
+    global _script_sent
+    key = answer_key(chapter, number)
+    if script is None:
+        script, _script_sent = not _script_sent, True
+    return AnswerBox(key, bool(script))

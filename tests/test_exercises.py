@@ -1,0 +1,426 @@
+"""Self-checking exercises: every answer key against an independent computation.
+
+Each key in ``screwkit/answers/*.toml`` was derived by hand in its chapter; here it
+is recomputed another way (a formula written out in the test, a finite difference,
+or screwkit on the problem as stated) and must agree far inside its tolerance. Then
+the checking rules (forms, units, signs, text input) and the page's JavaScript,
+which must give the same verdict as ``sk.exercises.check`` on the same text.
+"""
+
+import json
+import math
+import shutil
+import subprocess
+import tomllib
+from importlib import resources
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import screwkit as sk
+from screwkit import exercises
+
+REFERENCES = {}
+
+
+def reference(chapter, number):
+    """Register the independent computation of one exercise's answer."""
+
+    def register(function):
+        REFERENCES[chapter, number] = function
+        return function
+
+    return register
+
+
+def all_keys():
+    folder = resources.files("screwkit").joinpath("answers")
+    keys = []
+    for path in sorted(folder.iterdir(), key=lambda p: p.name):
+        if path.name.endswith(".toml"):
+            data = tomllib.loads(path.read_text(encoding="utf-8"))
+            chapter = path.name[: -len(".toml")]
+            keys += [(chapter, int(n)) for n in data.get("exercise", {})]
+    return keys
+
+
+def rot(axis, angle):
+    """An elementary rotation written out by hand (axis 'x', 'y' or 'z')."""
+    c, s = math.cos(angle), math.sin(angle)
+    return {
+        "x": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]),
+        "y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]),
+        "z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]]),
+    }[axis]
+
+
+# ---- rigid_motions --------------------------------------------------------------------
+
+
+@reference("rigid_motions", 2)
+def _():
+    # rotate the origin by pi about the z-line through (1, 0, 0): p' = c + Rz(pi)(p - c)
+    c = np.array([1.0, 0.0, 0.0])
+    return c + rot("z", math.pi) @ (np.zeros(3) - c)
+
+
+@reference("rigid_motions", 5)
+def _():
+    # x -> y -> z -> x: the columns of R are e_y, e_z, e_x
+    R = np.array([[0.0, 0, 1], [1, 0, 0], [0, 1, 0]])
+    np.testing.assert_allclose(
+        sk.rot_axis([1.0, 1.0, 1.0], 2 * math.pi / 3), R, atol=1e-12
+    )
+    return math.acos((np.trace(R) - 1) / 2)
+
+
+@reference("rigid_motions", 6)
+def _():
+    R = rot("z", math.pi / 6) @ rot("y", math.pi / 4) @ rot("x", math.pi / 3)
+    roll = math.atan2(R[2, 1], R[2, 2])
+    pitch = -math.asin(R[2, 0])
+    yaw = math.atan2(R[1, 0], R[0, 0])
+    return [roll, pitch, yaw]
+
+
+@reference("rigid_motions", 7)
+def _():
+    q = np.array([math.cos(math.pi / 4), 0, 0, math.sin(math.pi / 4)])
+    # the Hamilton product q v q* rotates v = e_x into Rz(pi/2) e_x = e_y
+    w, u = q[0], q[1:]
+    v = np.array([1.0, 0, 0])
+    rotated = v + 2 * w * np.cross(u, v) + 2 * np.cross(u, np.cross(u, v))
+    np.testing.assert_allclose(rotated, [0, 1, 0], atol=1e-12)
+    return q
+
+
+@reference("rigid_motions", 10)
+def _():
+    # T(t): spin at 2 rad/s about the z-line through (1, 0, 0); twist from Tdot T^-1
+    def pose(t):
+        T = np.eye(4)
+        T[:3, :3] = rot("z", 2 * t)
+        T[:3, 3] = np.array([1.0, 0, 0]) - rot("z", 2 * t) @ np.array([1.0, 0, 0])
+        return T
+
+    t, h = 0.3, 1e-6
+    Tdot = (pose(t + h) - pose(t - h)) / (2 * h)
+    V = Tdot @ np.linalg.inv(pose(t))
+    return [V[2, 1], V[0, 2], V[1, 0], *V[:3, 3]]
+
+
+# ---- the keys --------------------------------------------------------------------------
+
+
+def test_every_key_has_an_independent_reference():
+    missing = sorted(set(all_keys()) - set(REFERENCES))
+    assert missing == []
+
+
+@pytest.mark.parametrize("chapter, number", all_keys())
+def test_key_agrees_with_its_reference(chapter, number):
+    key = exercises.answer_key(chapter, number)
+    expected = np.ravel(np.asarray(REFERENCES[chapter, number](), dtype=float))
+    assert key["unit"] in ("", "rad", "deg", "m", "mm", "m/s", "rad/s")
+    assert key["hint"], "every exercise needs a hint shown when the answer is wrong"
+    assert len(expected) == len(key["values"])
+    np.testing.assert_allclose(
+        key["values"], expected, rtol=0, atol=key["tolerance"] / 100
+    )
+    assert exercises.check(chapter, number, expected).correct
+    text = ", ".join(f"{v:.6f}" for v in expected)
+    assert exercises.check(chapter, number, text).correct, text
+
+
+@pytest.mark.parametrize("chapter, number", all_keys())
+def test_key_refuses_a_wrong_answer(chapter, number):
+    key = exercises.answer_key(chapter, number)
+    wrong = np.asarray(key["values"]) + 10 * key["tolerance"] + 0.37
+    verdict = exercises.check(chapter, number, wrong)
+    assert not verdict.correct
+    assert verdict.message
+
+
+# ---- the rules, on keys written for the test --------------------------------------------
+
+FAKE = {
+    "1": {"answer": "pi/3", "unit": "rad", "tolerance": 1e-3, "hint": "h1"},
+    "2": {"answer": "60", "unit": "deg", "tolerance": 0.1, "hint": "h2"},
+    "3": {"answer": "0.15", "unit": "m", "tolerance": 1e-4, "hint": "h3"},
+    "4": {
+        "answer": ["0", "0", "1"],
+        "unit": "",
+        "tolerance": 1e-3,
+        "forms": ["either sign"],
+        "hint": "h4",
+    },
+    "5": {
+        "answer": "-pi/2",
+        "unit": "rad",
+        "tolerance": 1e-3,
+        "forms": ["modulo 2pi"],
+        "hint": "h5",
+    },
+    "6": {
+        "answer": ["0.1", "0.7", "-2.1"],
+        "unit": "rad",
+        "tolerance": 1e-3,
+        "forms": ["any order", "modulo 2pi"],
+        "hint": "h6",
+    },
+    "7": {"answer": "12", "unit": "mm", "tolerance": 0.01, "rtol": 0.01, "hint": "h7"},
+    "8": {
+        "answer": [["1", "2"], ["3", "4"]],
+        "unit": "",
+        "tolerance": 1e-6,
+        "alternatives": [[["4", "3"], ["2", "1"]]],
+        "hint": "h8",
+    },
+}
+
+
+@pytest.fixture
+def fake(monkeypatch):
+    original = exercises._key_file
+    monkeypatch.setattr(
+        exercises, "_key_file", lambda c: FAKE if c == "fake" else original(c)
+    )
+    return lambda number, answer: exercises.check("fake", number, answer)
+
+
+CASES = [
+    # (exercise, answer, correct, a phrase the message must contain)
+    (1, "pi/3", True, "within ±0.001 rad"),
+    (1, "1.0472", True, ""),
+    (1, "60 deg", True, ""),
+    (1, "60°", True, ""),
+    (1, 60, False, "looks like degrees, radians expected"),
+    (1, "-pi/3", False, "sign is flipped"),
+    (1, "pi/4", False, "h1"),
+    (1, "pi/3, 0", False, "expected one number, got 2"),
+    (1, "12 mm", False, "units typed are length"),
+    (2, 60, True, ""),
+    (2, "pi/3 rad", True, ""),
+    (2, math.pi / 3, False, "looks like radians, degrees expected"),
+    (3, 150, False, "looks like millimetres, metres expected"),
+    (3, "150 mm", True, ""),
+    (3, "15 cm", True, ""),
+    (4, [0, 0, -1], True, ""),
+    (4, "0, 0, 1", True, ""),
+    (4, "[0, 0, 1.0005]", True, ""),
+    (4, "0, 1, 0", False, "wrong order"),
+    (4, "0, 0", False, "expected 3 numbers, got 2"),
+    (5, "3pi/2", True, ""),
+    (5, "-pi/2 + 4 pi", True, ""),
+    (5, "270 deg", True, ""),
+    (5, "pi/2", False, "sign is flipped"),
+    (6, "-2.1, 0.1, 0.7", True, ""),
+    (6, [0.7, 0.1, -2.1 + 2 * math.pi], True, ""),
+    (6, "0.1, 0.7", False, "expected 3 numbers"),
+    (7, 12.1, True, ""),
+    (7, 12.5, False, "h7"),
+    (7, 0.012, False, "looks like metres, millimetres expected"),
+    (8, np.array([[1, 2], [3, 4]]), True, ""),
+    (8, sp.Matrix([[4, 3], [2, 1]]), True, ""),
+    (8, "1, 2, 3, 4", True, ""),
+    (8, "1, -2, 3, 4", False, "some signs are wrong"),
+]
+
+
+@pytest.mark.parametrize("number, answer, correct, phrase", CASES)
+def test_rules(fake, number, answer, correct, phrase):
+    verdict = fake(number, answer)
+    assert verdict.correct is correct, verdict.message
+    assert phrase.lower() in verdict.message.lower()
+    assert ("✓" in repr(verdict)) is correct
+    assert 'role="status"' in verdict._repr_html_()
+
+
+TEXTS = [
+    "",
+    "   ",
+    "hello",
+    "import os",
+    "__import__('os').system('ls')",
+    "1/0",
+    "sqrt(-1)",
+    "pi/",
+    "(1",
+    "1)",
+    "1,,2",
+    "[1, 2",
+    "2**9999",
+    "9" * 400,
+    "(" * 3000 + "1" + ")" * 3000,
+    "atan2(1)",
+    "nan",
+    "inf",
+    "1 + ",
+    "1e",
+    "π/3 rad rad",
+    "😀",
+    "1; 2",
+    "—1",
+]
+
+
+@pytest.mark.parametrize("text", TEXTS)
+def test_text_input_never_crashes(fake, text):
+    verdict = fake(1, text)
+    assert verdict.correct is False
+    assert verdict.message
+
+
+@pytest.mark.parametrize(
+    "answer",
+    [None, True, 1j, object(), {"a": 1}, sp.Symbol("x"), [[1, 2], [3]], float("nan")],
+)
+def test_odd_python_values_never_crash(fake, answer):
+    verdict = fake(1, answer)
+    assert verdict.correct is False and "Could not read" in verdict.message
+
+
+def test_parser_reads_the_usual_forms():
+    values, units = exercises.parse_answer("2 pi/3, sqrt(2)/2, 90 deg, -1.5e-3, 2^3")
+    np.testing.assert_allclose(
+        values, [2 * math.pi / 3, math.sqrt(2) / 2, math.pi / 2, -1.5e-3, 8]
+    )
+    assert units == [None, None, "angle", None, None]
+
+
+@pytest.mark.parametrize(
+    "chapter, number, error",
+    [
+        ("no_such_chapter", 1, ValueError),
+        ("../etc", 1, ValueError),
+        (3, 1, ValueError),
+        ("rigid_motions", 99, ValueError),
+        ("rigid_motions", "2", TypeError),
+    ],
+)
+def test_bad_exercise_is_refused_with_a_sentence(chapter, number, error):
+    with pytest.raises(error, match="chapter|number"):
+        exercises.check(chapter, number, 1)
+
+
+def test_answer_box_html_is_accessible_and_carries_the_script_once():
+    first = exercises.answer_box("rigid_motions", 5, script=True)
+    second = exercises.answer_box("rigid_motions", 5, script=False)
+    page = first._repr_html_()
+    assert "<label for=" in page and 'aria-live="polite"' in page
+    assert "screwkitExercises" in page and "exercises.js" not in repr(first)
+    assert exercises.exercises_script() in page
+    assert exercises.exercises_script() not in second._repr_html_()
+    assert first.id != second.id
+
+
+# ---- the page's JavaScript gives the same verdicts ---------------------------------------
+
+JS_INPUTS = [(n, a) for n, a, _, _ in CASES if isinstance(a, (str, int, float))]
+JS_INPUTS += [(1, t) for t in TEXTS if len(t) < 100]
+
+
+def python_verdicts(inputs):
+    out = []
+    for number, answer in inputs:
+        verdict = exercises.check("fake", number, str(answer))
+        out.append([verdict.correct, verdict.message])
+    return out
+
+
+def fake_keys():
+    keys = {}
+    original = exercises._key_file
+    exercises._key_file = lambda c: FAKE if c == "fake" else original(c)
+    try:
+        for number in FAKE:
+            keys[number] = exercises.answer_key("fake", int(number))
+    finally:
+        exercises._key_file = original
+    return keys
+
+
+NODE = shutil.which("node")
+
+
+@pytest.mark.skipif(NODE is None, reason="needs Node.js")
+def test_javascript_verdicts_equal_python_ones(fake):
+    keys = fake_keys()
+    inputs = [(n, str(a)) for n, a in JS_INPUTS]
+    program = (
+        "global.window = {}; global.document = {querySelectorAll: () => []};\n"
+        + exercises.exercises_script()
+        + f"\nconst keys = {json.dumps(keys)};\nconst inputs = {json.dumps(inputs)};\n"
+        "const out = inputs.map(([n, t]) => {\n"
+        "  const v = window.screwkitExercises.verdict(t, keys[String(n)]);\n"
+        "  return [v.correct, v.message]; });\n"
+        "console.log(JSON.stringify(out));\n"
+    )
+    result = subprocess.run(
+        [NODE, "-e", program], capture_output=True, text=True, timeout=60, check=True
+    )
+    page = json.loads(result.stdout)
+    python = python_verdicts(inputs)
+    assert [p[0] for p in page] == [p[0] for p in python]
+    for (n, text), got, want in zip(inputs, page, python):
+        if not want[1].startswith("Could not read"):  # parse errors are worded apart
+            assert got[1] == want[1], (n, text)
+
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+FLAGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
+]
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
+def test_answer_boxes_answer_in_the_browser(fake):
+    sync_api = pytest.importorskip("playwright.sync_api")
+    boxes = [
+        exercises.answer_box("fake", 1, script=True),
+        exercises.answer_box("fake", 4, script=False),
+        exercises.answer_box("rigid_motions", 5, script=False),
+    ]
+    content = (
+        "<html><body>" + "".join(b._repr_html_() for b in boxes) + "</body></html>"
+    )
+    trials = [
+        (0, "pi/3", True),
+        (0, "60", False),
+        (1, "0, 0, -1", True),
+        (1, "hello", False),
+        (2, "120 deg", True),
+        (2, "2pi", False),
+    ]
+    with sync_api.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        try:
+            page = browser.new_page()
+            errors = []
+            page.on("pageerror", lambda error: errors.append(str(error)))
+            page.set_content(content)
+            for index, text, correct in trials:
+                box = f"#{boxes[index].id}"
+                page.fill(f"{box} input", text)
+                page.click(f"{box} button")
+                shown = page.inner_text(f"{box} .sk-verdict")
+                assert shown.startswith("✓ Right" if correct else "✗ Not yet"), shown
+                expected = exercises.check(
+                    "fake" if index < 2 else "rigid_motions", [1, 4, 5][index], text
+                ).message
+                if not expected.startswith("Could not read"):
+                    assert expected in shown
+            page.fill(f"#{boxes[0].id} input", "60 deg")
+            page.press(f"#{boxes[0].id} input", "Enter")
+            assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
+            assert errors == []
+        finally:
+            browser.close()
