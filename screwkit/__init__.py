@@ -9,6 +9,17 @@ from . import ik, jacobians, joints, redundancy, robots, workspace
 from .chains import Chain, Convention, Joint, Link, textbook
 from .lie import ad, adjoint, log_rotation, log_transform, vee
 from .mobility import Mobility, grubler_kutzbach, mobility
+from .orientation import (
+    euler_from_rotation,
+    euler_rate_matrix,
+    gimbal_lock,
+    quaternion_from_rotation,
+    quaternion_multiply,
+    rotation_from_euler,
+    rotation_from_quaternion,
+    rotation_from_rpy,
+    rpy_from_rotation,
+)
 from .screws import Screw, Twist, Wrench
 from .systems import ScrewSystem
 from .transforms import (
@@ -62,6 +73,7 @@ __all__ = [
     "jacobians",
     "joints",
     "mobility",
+    "orientation",
     "redundancy",
     "robots",
     "workspace",
@@ -77,4 +89,13 @@ __all__ = [
     "transl",
     "twist_from_axis",
     "wrap_angle",
+    "euler_from_rotation",
+    "euler_rate_matrix",
+    "gimbal_lock",
+    "quaternion_from_rotation",
+    "quaternion_multiply",
+    "rotation_from_euler",
+    "rotation_from_quaternion",
+    "rotation_from_rpy",
+    "rpy_from_rotation",
 ]
