@@ -3,6 +3,7 @@ recomputed independently: a screwkit computation that does not read the key's fo
 (a root found by bisection, a maximum over a grid, a mobility analysis) or a formula
 written here.
 """
+
 import math
 import tomllib
 from importlib import resources
@@ -12,7 +13,6 @@ import pytest
 import sympy as sp
 
 import screwkit as sk
-from screwkit import jacobians
 
 
 def key(chapter, number):
@@ -41,10 +41,13 @@ def bisect(f, low, high, steps=80):
 def assert_key(chapter, number, expected):
     entry = key(chapter, number)
     assert abs(value(chapter, number) - expected) <= entry["tolerance"] / 10, (
-        f"{chapter} exercise {number}: key {value(chapter, number)}, computed {expected}")
+        f"{chapter} exercise {number}: key {value(chapter, number)}, "
+        f"computed {expected}"
+    )
 
 
-# --- jacobians -------------------------------------------------------------------------
+# --- jacobians ---
+
 
 def test_jacobians_1_largest_manipulability_of_two_links():
     arm = sk.robots.planar([0.7, 0.4])
@@ -57,7 +60,9 @@ def test_jacobians_4_elbow_singularity_is_where_det_J_vanishes():
     puma = sk.robots.puma560()
 
     def det(q3):
-        return np.linalg.det(puma.geometric_jacobian(np.array([0.3, 0.5, q3, 0.2, 0.9, 0])))
+        return np.linalg.det(
+            puma.geometric_jacobian(np.array([0.3, 0.5, q3, 0.2, 0.9, 0]))
+        )
 
     assert_key("jacobians", 4, bisect(det, -1.6, -1.45))
     q3_folded = float(sp.sympify(key("jacobians", 4)["alternatives"][0]))
@@ -79,7 +84,7 @@ def test_jacobians_6_largest_force_by_sampling_directions():
     assert_key("jacobians", 6, (1 / np.linalg.norm(u @ J, axis=1)).max())
 
 
-# --- kawasaki_workspace ----------------------------------------------------------------
+# --- kawasaki_workspace ---
 
 KAWASAKI = sk.robots.kawasaki_cx210l()
 SHOULDER = np.array([0.3, 0, 0.55])
@@ -119,7 +124,7 @@ def test_kawasaki_5_elbow_singularity_of_the_6r_arm():
 
 
 def test_kawasaki_6_highest_wrist_centre():
-    # the upper arm vertical (theta2 = 90 deg) and theta3 over a fine grid; then theta2 too
+    # theta3 over a fine grid, for theta2 near the vertical upper arm (90 deg)
     best = -np.inf
     for theta2 in np.radians(np.linspace(80, 100, 201)):
         theta3 = np.linspace(-np.pi, np.pi, 20_001)
@@ -129,7 +134,8 @@ def test_kawasaki_6_highest_wrist_centre():
     assert_key("kawasaki_workspace", 6, best)
 
 
-# --- redundancy ------------------------------------------------------------------------
+# --- redundancy ---
+
 
 def test_redundancy_4_least_norm_rates():
     rates = np.linalg.pinv(np.array([[1.0, 1.0, 1.0]])) @ np.array([0.3])
@@ -147,7 +153,9 @@ def test_redundancy_5_manipulability_of_three_links():
 
 def test_redundancy_6_null_space_rate_of_joint_3():
     J = THREE.geometric_jacobian(Q_THREE)[:2]
-    null = np.linalg.svd(J)[2][-1]  # the right singular vector of the zero singular value
+    null = np.linalg.svd(J)[2][
+        -1
+    ]  # the right singular vector of the zero singular value
     assert np.allclose(J @ null, 0, atol=1e-12)
     assert_key("redundancy", 6, (0.1 / null[0] * null)[2])
 
@@ -167,7 +175,8 @@ def test_redundancy_7_largest_stable_feedback_gain():
     assert_key("redundancy", 7, math.floor(largest) + 1)
 
 
-# --- mobility --------------------------------------------------------------------------
+# --- mobility ---
+
 
 def test_mobility_3_the_4prru_with_alpha_zero():
     m = sk.mobility(sk.robots.pm_4prru(), at={sp.Symbol("alpha"): 0})

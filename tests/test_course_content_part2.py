@@ -2,6 +2,7 @@
 chapters, the course plan and the references, read from the sources and the stored
 notebooks: exercises with their own solutions and answer boxes, the slips of issue 26
 fixed, the plan's weeks, every cited key in the bibliography."""
+
 import json
 import pathlib
 import re
@@ -20,7 +21,9 @@ def source(name):
 
 def outputs(name):
     """Each code cell's source and its printed text, from the stored notebook."""
-    notebook = json.loads((ROOT / "notebooks" / f"{name}.ipynb").read_text(encoding="utf-8"))
+    notebook = json.loads(
+        (ROOT / "notebooks" / f"{name}.ipynb").read_text(encoding="utf-8")
+    )
     for cell in notebook["cells"]:
         if cell["cell_type"] == "code":
             text = "".join("".join(o.get("text", "")) for o in cell.get("outputs", []))
@@ -51,12 +54,19 @@ def test_by_hand_and_implement_it_exercises(name):
 
 @pytest.mark.parametrize("name", CHAPTERS)
 def test_answer_boxes_match_the_answer_keys(name):
-    boxes = {(int(n)) for c, n in re.findall(
-        r'sk\.exercises\.answer_box\("(\w+)", (\d+)\)', source(name)) if c == name}
+    boxes = {
+        (int(n))
+        for c, n in re.findall(
+            r'sk\.exercises\.answer_box\("(\w+)", (\d+)\)', source(name)
+        )
+        if c == name
+    }
     keys = tomllib.loads((ROOT / "screwkit" / "answers" / f"{name}.toml").read_text())
     assert len(boxes) >= 2
     assert boxes == {int(n) for n in keys["exercise"]}
-    for number in boxes:  # each box sits in its own exercise, whose solution shows the check
+    for (
+        number
+    ) in boxes:  # each box sits in its own exercise, whose solution shows the check
         body = exercises(name)[number]
         assert f'sk.exercises.answer_box("{name}", {number})' in body
         assert f'sk.exercises.check("{name}", {number},' in body
@@ -84,8 +94,11 @@ def _gain_table():
     """{k: (max error in mm, clamped %)} as the Try-the-gain cell printed it."""
     cell = [text for code, text, _ in outputs("redundancy") if "gain_runs = {" in code]
     assert len(cell) == 1
-    rows = re.findall(r"^\s*([\d.]+)\s+[\d.]+\s+[\d.]+\s+([\d.]+) mm\s+([\d.]+)%$", cell[0],
-                      re.MULTILINE)
+    rows = re.findall(
+        r"^\s*([\d.]+)\s+[\d.]+\s+[\d.]+\s+([\d.]+) mm\s+([\d.]+)%$",
+        cell[0],
+        re.MULTILINE,
+    )
     return {float(k): (float(e), float(c)) for k, e, c in rows}
 
 
@@ -116,8 +129,13 @@ def test_jacobians_force_ellipsoid_section_with_a_figure():
     section = text.split("## The force ellipsoid")[1].split("\n## ")[0]
     assert "1/\\sigma_i" in section and "J J^\\mathsf{T} F" in section
     cells = list(outputs("jacobians"))
-    figures = [o for code, _, outs in cells if "force = tip" in code for o in outs
-               if "image/png" in o.get("data", {})]
+    figures = [
+        o
+        for code, _, outs in cells
+        if "force = tip" in code
+        for o in outs
+        if "image/png" in o.get("data", {})
+    ]
     assert len(figures) == 1
 
 
@@ -128,7 +146,9 @@ def test_course_plan_has_at_least_twelve_weeks_and_is_in_the_toc():
     assert files.index("book/course_plan") == files.index("book/how_to_use") + 1
     plan = (ROOT / "book" / "course_plan.md").read_text(encoding="utf-8")
     weeks = re.findall(r"^### Week (\d+)", plan, re.MULTILINE)
-    assert 12 <= len(weeks) <= 14 and weeks == [str(i) for i in range(1, len(weeks) + 1)]
+    assert 12 <= len(weeks) <= 14 and weeks == [
+        str(i) for i in range(1, len(weeks) + 1)
+    ]
     for week in plan.split("### Week ")[1:]:
         assert "**Exercises**" in week and "**Lab**" in week and "{doc}`" in week
     assert "parallel_kinematics" in plan and "shorter course" in plan.lower()
@@ -139,17 +159,22 @@ def test_every_cited_key_is_in_the_bibliography():
     pages = list((ROOT / "notebooks").glob("*.md")) + list((ROOT / "book").glob("*.md"))
     cited = set()
     for page in pages:
-        for group in re.findall(r"\{cite(?::\w+)?\}`([^`]+)`", page.read_text(encoding="utf-8")):
+        for group in re.findall(
+            r"\{cite(?::\w+)?\}`([^`]+)`", page.read_text(encoding="utf-8")
+        ):
             cited.update(k.strip() for k in group.split(","))
     assert cited and cited <= set(bib)
 
 
-@pytest.mark.parametrize("key, names", [
-    ("murray1994mathematical", ["Murray, Li and Sastry"]),
-    ("spong2006robot", ["Spong"]),
-    ("fu1987robotics", ["Fu, Gonzalez and Lee"]),
-    ("sugihara2011solvability", ["Sugihara"]),
-])
+@pytest.mark.parametrize(
+    "key, names",
+    [
+        ("murray1994mathematical", ["Murray, Li and Sastry"]),
+        ("spong2006robot", ["Spong"]),
+        ("fu1987robotics", ["Fu, Gonzalez and Lee"]),
+        ("sugihara2011solvability", ["Sugihara"]),
+    ],
+)
 def test_works_named_in_the_text_are_cited_where_named(key, names):
     bib = parse_file(str(ROOT / "book" / "references.bib")).entries
     assert key in bib
@@ -157,5 +182,5 @@ def test_works_named_in_the_text_are_cited_where_named(key, names):
     text = "\n".join(p.read_text(encoding="utf-8") for p in pages)
     for name in names:
         for match in re.finditer(re.escape(name), text):
-            nearby = text[match.start(): match.start() + 200]
+            nearby = text[match.start() : match.start() + 200]
             assert f"{{cite}}`{key}`" in nearby, f"{name!r} named without {key}"
