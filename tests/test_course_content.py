@@ -1,0 +1,67 @@
+"""The chapters' slips stay fixed, and their problem sets stay complete.
+
+Read from the chapters' sources (notebooks/NAME.md) and stored outputs
+(notebooks/NAME.ipynb), or by running the call a chapter tells the reader to run.
+"""
+import json
+import re
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from screwkit import exercises
+
+NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
+CHAPTERS = ["rigid_motions"]
+
+
+def source(name):
+    return (NOTEBOOKS / f"{name}.md").read_text(encoding="utf-8")
+
+
+def outputs(name):
+    """The text each code cell printed or displayed, in order."""
+    notebook = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text(encoding="utf-8"))
+    texts = []
+    for cell in notebook["cells"]:
+        if cell["cell_type"] != "code":
+            continue
+        text = ""
+        for out in cell.get("outputs", []):
+            text += "".join(out.get("text", "")) + "".join(
+                out.get("data", {}).get("text/plain", "")
+            )
+        texts.append(text)
+    return texts
+
+
+def exercises_section(name):
+    text = source(name)
+    return text[text.index("## Exercises") :]
+
+
+@pytest.mark.parametrize("name", CHAPTERS)
+def test_problem_set_is_complete(name):
+    section = exercises_section(name)
+    numbers = [int(n) for n in re.findall(r"^\*\*(\d+)\.\*\*", section, flags=re.M)]
+    assert len(numbers) >= 8 and numbers == list(range(1, len(numbers) + 1))
+    solutions = section.count(":::{admonition} Solution")
+    assert solutions == len(numbers), "one hidden solution per exercise"
+    assert section.count("*(by hand") >= 2
+    assert section.count("*(implement it yourself") >= 2
+    boxes = re.findall(rf'sk\.exercises\.answer_box\("{name}", (\d+)\)', section)
+    checks = re.findall(rf'sk\.exercises\.check\("{name}", (\d+),', section)
+    assert len(boxes) >= 2 and set(boxes) <= set(checks)
+    for number in boxes:  # every box has a key
+        exercises.answer_key(name, int(number))
+
+
+def test_rigid_motions_try_it_runs_with_an_infinite_pitch():
+    # the page says: change `pitch` to `sp.oo` for a prismatic joint and run the cell again
+    from screwkit.viewer import screw_motion_viewer
+
+    assert "to `sp.oo` for a prismatic one" in source("rigid_motions")
+    figure = screw_motion_viewer([0, 0, 1], [0.5, 0.0, 0.0], sp.oo)
+    assert "slider d (m) [-1, 1]" in repr(figure)
+    assert "slider theta (deg)" in repr(screw_motion_viewer([0, 0, 1], [0.5, 0, 0], 0))
