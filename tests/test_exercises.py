@@ -110,6 +110,44 @@ def _():
     return [V[2, 1], V[0, 2], V[1, 0], *V[:3, 3]]
 
 
+# ---- screws ----------------------------------------------------------------------------
+
+SCREW = np.array([0, 0, 1, 1, 2, 0.5])
+
+
+@reference("screws", 4)
+def _():
+    s, s0 = SCREW[:3], SCREW[3:]
+    return s @ s0 / (s @ s)
+
+
+@reference("screws", 5)
+def _():
+    s, s0 = SCREW[:3], SCREW[3:]
+    r0 = np.cross(s, s0) / (s @ s)
+    # the axis through r0 with the pitch of exercise 4 gives the screw back
+    np.testing.assert_allclose(np.cross(r0, s) + 0.5 * s, s0, atol=1e-15)
+    return r0
+
+
+@reference("screws", 6)
+def _():
+    f, r = np.array([0.0, 10, 0]), np.array([0.5, 0, 0])
+    omega, v = np.array([0.0, 0, 2]), np.zeros(3)
+    power = omega @ np.cross(r, f) + v @ f
+    # the lever arm: torque 0.5 m x 10 N about z, times 2 rad/s
+    assert power == 0.5 * 10 * 2
+    return power
+
+
+@reference("screws", 10)
+def _():
+    twists = np.array([[1.0, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0]])  # axes x, y at 0
+    rank = np.linalg.matrix_rank(twists)
+    assert sk.ScrewSystem([([1, 0, 0], [0, 0, 0], 0), ([0, 1, 0], [0, 0, 0], 0)]).rank == 2
+    return 6 - rank
+
+
 # ---- the keys --------------------------------------------------------------------------
 
 
