@@ -13,7 +13,7 @@ import sympy as sp
 from screwkit import exercises
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
-CHAPTERS = ["rigid_motions", "screws"]
+CHAPTERS = ["rigid_motions", "screws", "poe"]
 
 
 def source(name):

@@ -148,6 +148,50 @@ def _():
     return 6 - rank
 
 
+# ---- poe --------------------------------------------------------------------------------
+
+
+@reference("poe", 3)
+def _():
+    # matrix logarithm of a translation by the series log(I + N) = N - N^2/2 ... with N^2 = 0
+    T = np.eye(4)
+    T[:3, 3] = [1, 2, 2]
+    N = T - np.eye(4)
+    assert np.allclose(N @ N, 0)
+    return [0, 0, 0, *N[:3, 3]]
+
+
+@reference("poe", 7)
+def _():
+    # rotate the tool point about the line x = 0, y = 6 (direction -z) and slide h q along -z
+    p, c, q, h = np.array([0.0, 6, 2]), np.array([0.0, 6, 0]), math.pi / 2, 0.1
+    p_new = c + rot("z", -q) @ (p - c) + h * q * np.array([0, 0, -1.0])
+    M = np.array([[-1, 0, 0, 0], [0, 1, 0, 6], [0, 0, -1, 2], [0, 0, 0, 1.0]])
+    arm = sk.Chain.from_screws(
+        [[0, 0, 1, 4, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, -1, -6, 0, -0.1]], M
+    )
+    np.testing.assert_allclose(arm.fk([0, 0, q])[:3, 3], p_new, atol=1e-12)
+    return p_new
+
+
+@reference("poe", 8)
+def _():
+    q = 2 * math.pi / 3
+    c = np.array([1.0, 0, 0])
+    return c + rot("z", q) @ (np.array([2.0, 0, 0]) - c) + [0, 0, 0.05 * q]
+
+
+@reference("poe", 10)
+def _():
+    # T [V_b] T^-1 for T a translation by (0, 2, 0), then read the twist off the matrix
+    T = np.eye(4)
+    T[:3, 3] = [0, 2, 0]
+    V_b = np.zeros((4, 4))
+    V_b[0, 1], V_b[1, 0] = -1, 1  # [omega] for omega = (0, 0, 1), v = 0
+    V_a = T @ V_b @ np.linalg.inv(T)
+    return [V_a[2, 1], V_a[0, 2], V_a[1, 0], *V_a[:3, 3]]
+
+
 # ---- the keys --------------------------------------------------------------------------
 
 
