@@ -13,7 +13,7 @@ import sympy as sp
 from screwkit import exercises
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
-CHAPTERS = ["rigid_motions", "screws", "poe"]
+CHAPTERS = ["rigid_motions", "screws", "poe", "puma_fk"]
 
 
 def source(name):
@@ -65,3 +65,34 @@ def test_rigid_motions_try_it_runs_with_an_infinite_pitch():
     figure = screw_motion_viewer([0, 0, 1], [0.5, 0.0, 0.0], sp.oo)
     assert "slider d (m) [-1, 1]" in repr(figure)
     assert "slider theta (deg)" in repr(screw_motion_viewer([0, 0, 1], [0.5, 0, 0], 0))
+
+
+def test_puma_fk_prints_its_dh_table_once_with_units_and_separated_columns():
+    texts = outputs("puma_fk")
+    tables = [t for t in texts if "α (deg)" in t or "PUMA 560: standard DH" in t]
+    assert len(tables) == 1, "the DH table is shown once"
+    (table,) = tables
+    assert "limits (deg)" in table
+    assert re.search(r"3 R\s+q3\s+0\.15005\s+0\.0203\s+-90\s+\[-225, 45\]", table)
+    notebook = json.loads((NOTEBOOKS / "puma_fk.ipynb").read_text(encoding="utf-8"))
+    html = [
+        out["data"]["text/html"]
+        for cell in notebook["cells"]
+        for out in cell.get("outputs", [])
+        if "screwkit-chain" in "".join(out.get("data", {}).get("text/html", ""))
+    ]
+    assert html == [], "no second, typeset copy of the table"
+
+
+def test_puma_fk_viewer_text_points_to_the_poe_chapter():
+    text = source("puma_fk")
+    viewer = text[: text.index("robot_viewer(puma")]
+    paragraph = viewer[viewer.rindex("Move the arm yourself") :]
+    assert "next section" not in paragraph and "{doc}`poe`" in paragraph
+
+
+def test_puma_fk_teaches_the_common_normal_procedure():
+    text = source("puma_fk")
+    assert text.count("common normal") >= 5
+    assert "## Assigning DH frames to an arm: the procedure" in text
+    assert "On a new arm" in text

@@ -144,7 +144,9 @@ def _():
 def _():
     twists = np.array([[1.0, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0]])  # axes x, y at 0
     rank = np.linalg.matrix_rank(twists)
-    assert sk.ScrewSystem([([1, 0, 0], [0, 0, 0], 0), ([0, 1, 0], [0, 0, 0], 0)]).rank == 2
+    assert (
+        sk.ScrewSystem([([1, 0, 0], [0, 0, 0], 0), ([0, 1, 0], [0, 0, 0], 0)]).rank == 2
+    )
     return 6 - rank
 
 
@@ -190,6 +192,65 @@ def _():
     V_b[0, 1], V_b[1, 0] = -1, 1  # [omega] for omega = (0, 0, 1), v = 0
     V_a = T @ V_b @ np.linalg.inv(T)
     return [V_a[2, 1], V_a[0, 2], V_a[1, 0], *V_a[:3, 3]]
+
+
+# ---- puma_fk ----------------------------------------------------------------------------
+
+# the PUMA 560 of Corke's table, written here: (d, a, alpha) per link
+PUMA_TABLE = [
+    (0, 0, math.pi / 2),
+    (0, 0.4318, 0),
+    (0.15005, 0.0203, -math.pi / 2),
+    (0.4318, 0, math.pi / 2),
+    (0, 0, -math.pi / 2),
+    (0, 0, 0),
+]
+
+
+def dh(theta, d, a, alpha):
+    ct, st, ca, sa = math.cos(theta), math.sin(theta), math.cos(alpha), math.sin(alpha)
+    return np.array(
+        [
+            [ct, -st * ca, st * sa, a * ct],
+            [st, ct * ca, -ct * sa, a * st],
+            [0, sa, ca, d],
+            [0, 0, 0, 1],
+        ]
+    )
+
+
+def dh_fk(table, q):
+    T = np.eye(4)
+    for qi, row in zip(q, table):
+        T = T @ dh(qi, *row)
+    return T
+
+
+@reference("puma_fk", 2)
+def _():
+    ready = [0, math.pi / 2, -math.pi / 2, 0, 0, 0]
+    x, y, _ = dh_fk(PUMA_TABLE, ready)[:3, 3]
+    return math.hypot(x, y)
+
+
+@reference("puma_fk", 4)
+def _():
+    return dh_fk(PUMA_TABLE, np.zeros(6))[:3, 3]
+
+
+@reference("puma_fk", 8)
+def _():
+    table = [(0.4, 0.1, -math.pi / 2), (0, 0.4, 0), (0, 0.3, 0)]
+    return dh_fk(table, [0, -math.pi / 2, 0])[:3, 3]
+
+
+@reference("puma_fk", 9)
+def _():
+    # the distance between the elbow and forearm-roll axes, from screwkit's joint screws
+    axes = sk.robots.puma560().screw_axes()
+    z, points = axes[:, :3], np.cross(axes[:, :3], axes[:, 3:])
+    n = np.cross(z[2], z[3])
+    return abs((points[3] - points[2]) @ n) / np.linalg.norm(n) * 1000
 
 
 # ---- the keys --------------------------------------------------------------------------
