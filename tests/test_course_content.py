@@ -13,7 +13,7 @@ import sympy as sp
 from screwkit import exercises
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
-CHAPTERS = ["rigid_motions", "screws", "poe", "puma_fk"]
+CHAPTERS = ["rigid_motions", "screws", "poe", "puma_fk", "puma_ik"]
 
 
 def source(name):
@@ -96,3 +96,38 @@ def test_puma_fk_teaches_the_common_normal_procedure():
     assert text.count("common normal") >= 5
     assert "## Assigning DH frames to an arm: the procedure" in text
     assert "On a new arm" in text
+
+
+def code_cells(name):
+    return re.findall(r"```\{code-cell\} ipython3\n(.*?)```", source(name), flags=re.S)
+
+
+def test_puma_ik_basins_figure_says_how_it_shows_all_eight_solutions():
+    (cell,) = [c for c in code_cells("puma_ik") if "Basins of attraction" in c]
+    assert "(dots: the solutions)" not in cell
+    assert "dots: the eight solutions" in cell and "shift" in cell
+    # the eight (q1, q3) dots are distinct once the wrist pairs are drawn apart
+    import numpy as np
+
+    import screwkit as sk
+    from screwkit.ik import CONFIGURATIONS
+
+    puma = sk.robots.puma560()
+    closed = sk.ik.puma560_ik_all(puma.fk(np.radians([20, 40, -110, 30, 50, -20])))
+    shifts = np.array([-4 if c[2] == "n" else 4 for c in CONFIGURATIONS])
+    dots = np.c_[np.degrees(closed[:, 0]) + shifts, np.degrees(closed[:, 2])]
+    gaps = np.linalg.norm(dots[:, None] - dots[None], axis=-1) + 100 * np.eye(8)
+    assert gaps.min() > 3
+
+
+def test_puma_ik_exercise_3_solution_gives_numbers():
+    section = exercises_section("puma_ik")
+    solution = section[section.index("**3.**") : section.index("**4.**")]
+    assert "2.6" in solution and "`ruf`" in solution and "`run`" in solution
+
+
+def test_puma_ik_newton_raphson_is_written_out_and_compared():
+    text = source("puma_ik")
+    assert "def newton_ik(" in text and "sk.ik.numeric_ik(puma, T, q0, damping=0)" in text
+    printed = "\n".join(outputs("puma_ik"))
+    assert "same joint vector to 1e-12: True" in printed

@@ -253,6 +253,89 @@ def _():
     return abs((points[3] - points[2]) @ n) / np.linalg.norm(n) * 1000
 
 
+# ---- puma_ik ----------------------------------------------------------------------------
+
+D3, A2, A3, D4 = 0.15005, 0.4318, 0.0203, 0.4318
+
+
+def elbow_grid():
+    """The squared shoulder-to-wrist distance in the arm's plane on a fine grid of q3."""
+    q3 = np.linspace(-math.pi, math.pi, 2_000_001)
+    c3, s3 = np.cos(q3), np.sin(q3)
+    return q3, (A2 + A3 * c3 - D4 * s3) ** 2 + (A3 * s3 + D4 * c3) ** 2
+
+
+@reference("puma_ik", 4)
+def _():
+    q3, distance2 = elbow_grid()
+    return q3[np.argmax(distance2)]
+
+
+@reference("puma_ik", 5)
+def _():
+    q3, distance2 = elbow_grid()
+    best = q3[np.argmax(distance2)]
+    # the same through the DH table: at full stretch the wrist centre is that far from the
+    # shoulder in the arm's plane, which is d3 to the side of the base origin
+    p = dh_fk(PUMA_TABLE, [0.2, 0.3, best, 0, 0, 0])[:3, 3]
+    np.testing.assert_allclose(
+        math.sqrt(p @ p - D3**2), math.sqrt(distance2.max()), atol=1e-9
+    )
+    return math.sqrt(distance2.max())
+
+
+def puma_limits_ok(q):
+    low = np.radians([-160, -45, -225, -110, -100, -266])
+    high = np.radians([160, 225, 45, 170, 100, 266])
+    shifts = 2 * math.pi * np.arange(-2, 3)
+    return all(
+        np.any((v + shifts >= lo) & (v + shifts <= hi))
+        for v, lo, hi in zip(q, low, high)
+    )
+
+
+@reference("puma_ik", 9)
+def _():
+    # the chapter's eight solutions by its own formulas, written again here
+    q_true = np.radians([20, 40, -110, 30, 50, -20])
+    T = dh_fk(PUMA_TABLE, q_true)
+    wx, wy, wz = T[:3, 3]
+    r, phi = math.hypot(wx, wy), math.atan2(wy, wx)
+    rho, beta = math.hypot(A3, D4), math.atan2(D4, A3)
+    count, found = 0, 0
+    for arm in (1, -1):
+        q1 = phi + math.asin(D3 / r) if arm == 1 else phi + math.pi - math.asin(D3 / r)
+        V = arm * math.sqrt(r**2 - D3**2)
+        cosine = (V**2 + wz**2 - A2**2 - rho**2) / (2 * A2 * rho)
+        for elbow in (1, -1):
+            q3 = elbow * math.acos(cosine) - beta
+            c3, s3 = math.cos(q3), math.sin(q3)
+            q2 = math.atan2(wz, V) - math.atan2(
+                A3 * s3 + D4 * c3, A2 + A3 * c3 - D4 * s3
+            )
+            R03 = dh_fk(PUMA_TABLE[:3], [q1, q2, q3])[:3, :3]
+            R36 = R03.T @ T[:3, :3]
+            m5 = math.atan2(math.hypot(R36[0, 2], R36[1, 2]), R36[2, 2])
+            q4, q6 = math.atan2(R36[1, 2], R36[0, 2]), math.atan2(R36[2, 1], -R36[2, 0])
+            for q in (
+                [q1, q2, q3, q4, -m5, q6],
+                [q1, q2, q3, q4 + math.pi, m5, q6 + math.pi],
+            ):
+                np.testing.assert_allclose(dh_fk(PUMA_TABLE, q), T, atol=1e-9)
+                found += 1
+                count += puma_limits_ok(q)
+    assert found == 8
+    return count
+
+
+@reference("puma_ik", 10)
+def _():
+    twin = [0.3 + math.pi, -0.5, 0.2 + math.pi]
+    wrist = lambda q4, q5, q6: rot("z", q4) @ rot("y", -q5) @ rot("z", q6)  # noqa: E731
+    np.testing.assert_allclose(wrist(*twin), wrist(0.3, 0.5, 0.2), atol=1e-12)
+    return twin
+
+
 # ---- the keys --------------------------------------------------------------------------
 
 
