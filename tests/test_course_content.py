@@ -115,7 +115,7 @@ def test_puma_ik_basins_figure_says_how_it_shows_all_eight_solutions():
     puma = sk.robots.puma560()
     closed = sk.ik.puma560_ik_all(puma.fk(np.radians([20, 40, -110, 30, 50, -20])))
     shifts = np.array([-4 if c[2] == "n" else 4 for c in CONFIGURATIONS])
-    dots = np.c_[np.degrees(closed[:, 0]) + shifts, np.degrees(closed[:, 2])]
+    dots = np.c_[np.degrees(closed[:, 0]), np.degrees(closed[:, 2]) + shifts]
     gaps = np.linalg.norm(dots[:, None] - dots[None], axis=-1) + 100 * np.eye(8)
     assert gaps.min() > 3
 
