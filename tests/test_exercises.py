@@ -153,6 +153,16 @@ def _():
 # ---- poe --------------------------------------------------------------------------------
 
 
+@reference("poe", 2)
+def _():
+    # B = Ad(M^-1) S with M a translation by (2, 0, 0): omega unchanged, v = v_s + omega x p
+    p = np.array([2.0, 0, 0])
+    rows = []
+    for w, v in (([0, 0, 1.0], [0, 0, 0.0]), ([0, 0, 1.0], [0, -1.0, 0])):
+        rows.append([*w, *(np.array(v) + np.cross(w, p))])
+    return rows
+
+
 @reference("poe", 3)
 def _():
     # matrix logarithm of a translation by the series log(I + N) = N - N^2/2 ... with N^2 = 0
