@@ -13,6 +13,7 @@ import shutil
 import subprocess
 import tomllib
 from importlib import resources
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -657,6 +658,45 @@ def test_answer_boxes_answer_in_the_browser(fake):
             page.fill(f"#{boxes[0].id} input", "60 deg")
             page.press(f"#{boxes[0].id} input", "Enter")
             assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
+            assert errors == []
+        finally:
+            browser.close()
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
+@pytest.mark.parametrize("chapter", ["rigid_motions", "puma_ik"])
+def test_stored_chapter_boxes_answer_in_the_page(chapter):
+    # the chapter's stored HTML outputs, in order, as the book shows them: the script is
+    # inlined once, in the first box, and every box answers without a kernel
+    sync_api = pytest.importorskip("playwright.sync_api")
+    path = Path(__file__).resolve().parent.parent / "notebooks" / f"{chapter}.ipynb"
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    boxes = [
+        "".join(out["data"]["text/html"])
+        for cell in cells
+        for out in cell.get("outputs", [])
+        if "sk-answer-box" in "".join(out.get("data", {}).get("text/html", ""))
+    ]
+    assert len(boxes) >= 2
+    assert sum("window.screwkitExercises = {" in b for b in boxes) == 1
+    with sync_api.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        try:
+            page = browser.new_page()
+            errors = []
+            page.on("pageerror", lambda error: errors.append(str(error)))
+            page.set_content("<html><body>" + "".join(boxes) + "</body></html>")
+            ids = page.eval_on_selector_all(".sk-answer-box", "d => d.map(e => e.id)")
+            assert len(ids) == len(boxes)
+            for box in ids:
+                number = int(box.split("-")[-2])
+                key = exercises.answer_key(chapter, number)
+                right = ", ".join(repr(v) for v in key["values"])
+                for text, correct in ((right, True), ("1e6", False)):
+                    page.fill(f"[id='{box}'] input", text)
+                    page.click(f"[id='{box}'] button")
+                    shown = page.inner_text(f"[id='{box}'] .sk-verdict")
+                    assert shown.startswith("✓" if correct else "✗"), (box, shown)
             assert errors == []
         finally:
             browser.close()
