@@ -449,7 +449,7 @@ CASES = [
     (4, "0, 1, 0", False, "wrong order"),
     (4, "0, 0", False, "expected 3 numbers, got 2"),
     (5, "3pi/2", True, ""),
-    (5, "-pi/2 + 4 pi", True, ""),
+    (5, "-pi/2 + 4pi", True, ""),
     (5, "270 deg", True, ""),
     (5, "pi/2", False, "sign is flipped"),
     (6, "-2.1, 0.1, 0.7", True, ""),
@@ -462,6 +462,17 @@ CASES = [
     (8, sp.Matrix([[4, 3], [2, 1]]), True, ""),
     (8, "1, 2, 3, 4", True, ""),
     (8, "1, -2, 3, 4", False, "some signs are wrong"),
+    # whitespace separates numbers, as NumPy prints arrays; a glued product is a product
+    (4, "[ 0.   0.  -1.]", True, ""),
+    (4, "0 0 1", True, ""),
+    (8, "[[1. 2.]\n [3. 4.]]", True, ""),
+    (8, "1 2 3 4", True, ""),
+    (6, "0.1 0.7 -2.1", True, ""),
+    (6, "0.1 0.7 - 2.1", False, "expected 3 numbers, got 2"),
+    (1, "2pi/6", True, ""),
+    (1, "2 pi/6", False, "expected one number, got 2"),
+    (5, "-pi/2", True, ""),
+    (5, "- pi/2", True, ""),
 ]
 
 
@@ -519,7 +530,7 @@ def test_odd_python_values_never_crash(fake, answer):
 
 
 def test_parser_reads_the_usual_forms():
-    values, units = exercises.parse_answer("2 pi/3, sqrt(2)/2, 90 deg, -1.5e-3, 2^3")
+    values, units = exercises.parse_answer("2pi/3, sqrt(2)/2, 90 deg, -1.5e-3, 2^3")
     np.testing.assert_allclose(
         values, [2 * math.pi / 3, math.sqrt(2) / 2, math.pi / 2, -1.5e-3, 8]
     )
