@@ -79,7 +79,7 @@ _TOKEN = re.compile(
 )
 
 
-# ---- reading an answer ---------------------------------------------------------------
+# ---- reading an answer -------------------------------------------------------------
 
 
 class _Parser:
@@ -121,7 +121,7 @@ class _Parser:
         return kind in ("number", "name") or token in ("(", "[", "+", "-")
 
     def sign_starts_item(self):
-        """A sign after whitespace and glued to what follows ("1 -2") opens a new item."""
+        """A sign after whitespace, glued to what follows ("1 -2"), opens a new item."""
         glued = self.at + 1 < len(self.tokens) and not self.spaced[self.at + 1]
         return self.space_before() and glued
 
@@ -264,7 +264,7 @@ def parse_answer(text):
     return [float(v) for v in values], parser.units
 
 
-# ---- answer keys ---------------------------------------------------------------------
+# ---- answer keys -------------------------------------------------------------------
 
 
 @lru_cache(maxsize=None)
@@ -331,7 +331,7 @@ def answer_key(chapter, number):
     }
 
 
-# ---- checking ------------------------------------------------------------------------
+# ---- checking ----------------------------------------------------------------------
 
 
 @dataclass(frozen=True)
@@ -410,6 +410,12 @@ def _close(x, a, key):
     return bool(np.all(np.abs(d) <= key["tolerance"] + key["rtol"] * np.abs(a) + 1e-12))
 
 
+def _wrapped_sorted(values, key):
+    """Angles wrapped into half a period either side of 0, sorted (for "any order")."""
+    period = 360.0 if key["unit"] == "deg" else 2 * math.pi
+    return sorted((u + period / 2) % period - period / 2 for u in values)
+
+
 def _matches(x, key):
     """True if ``x`` (floats in the key's unit) is one of the accepted forms."""
     candidates = [key["values"], *key["alternatives"]]
@@ -420,11 +426,7 @@ def _matches(x, key):
             continue
         if "any order" in key["forms"]:
             if "modulo 2pi" in key["forms"]:
-                period = 360.0 if key["unit"] == "deg" else 2 * math.pi
-                wrap = lambda v: sorted(
-                    (u + period / 2) % period - period / 2 for u in v
-                )
-                if _close(wrap(x), wrap(a), key):
+                if _close(_wrapped_sorted(x, key), _wrapped_sorted(a, key), key):
                     return True
             elif _close(sorted(x), sorted(a), key):
                 return True
@@ -445,8 +447,10 @@ def _diagnose(x, key):
         ("m", 1e-3, "looks like millimetres, metres expected"),
         ("mm", 1e3, "looks like metres, millimetres expected"),
     ]
+    # a unit slip only explains an answer that is not zero (where any small number fits)
+    nonzero = any(abs(v) > key["tolerance"] for v in key["values"])
     for slip_unit, factor, text in slips:
-        if unit == slip_unit and _matches([v * factor for v in x], key):
+        if nonzero and unit == slip_unit and _matches([v * factor for v in x], key):
             return text + "."
     if _matches([-v for v in x], key):
         return "the sign is flipped."
@@ -525,7 +529,7 @@ def check(chapter, number, answer):
     return _verdict(values, units, key)
 
 
-# ---- the box in the page -------------------------------------------------------------
+# ---- the box in the page -----------------------------------------------------------
 
 _ids = itertools.count(1)
 _script_sent = False

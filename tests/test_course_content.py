@@ -3,6 +3,7 @@
 Read from the chapters' sources (notebooks/NAME.md) and stored outputs
 (notebooks/NAME.ipynb), or by running the call a chapter tells the reader to run.
 """
+
 import json
 import re
 from pathlib import Path
@@ -58,7 +59,7 @@ def test_problem_set_is_complete(name):
 
 
 def test_rigid_motions_try_it_runs_with_an_infinite_pitch():
-    # the page says: change `pitch` to `sp.oo` for a prismatic joint and run the cell again
+    # the page says: change `pitch` to `sp.oo` for a prismatic one and run the cell
     from screwkit.viewer import screw_motion_viewer
 
     assert "to `sp.oo` for a prismatic one" in source("rigid_motions")
@@ -128,6 +129,7 @@ def test_puma_ik_exercise_3_solution_gives_numbers():
 
 def test_puma_ik_newton_raphson_is_written_out_and_compared():
     text = source("puma_ik")
-    assert "def newton_ik(" in text and "sk.ik.numeric_ik(puma, T, q0, damping=0)" in text
+    assert "def newton_ik(" in text
+    assert "sk.ik.numeric_ik(puma, T, q0, damping=0)" in text
     printed = "\n".join(outputs("puma_ik"))
     assert "same joint vector to 1e-12: True" in printed

@@ -56,7 +56,7 @@ def rot(axis, angle):
     }[axis]
 
 
-# ---- rigid_motions --------------------------------------------------------------------
+# ---- rigid_motions -----------------------------------------------------------------
 
 
 @reference("rigid_motions", 2)
@@ -111,7 +111,7 @@ def _():
     return [V[2, 1], V[0, 2], V[1, 0], *V[:3, 3]]
 
 
-# ---- screws ----------------------------------------------------------------------------
+# ---- screws ------------------------------------------------------------------------
 
 SCREW = np.array([0, 0, 1, 1, 2, 0.5])
 
@@ -151,12 +151,12 @@ def _():
     return 6 - rank
 
 
-# ---- poe --------------------------------------------------------------------------------
+# ---- poe ---------------------------------------------------------------------------
 
 
 @reference("poe", 2)
 def _():
-    # B = Ad(M^-1) S with M a translation by (2, 0, 0): omega unchanged, v = v_s + omega x p
+    # B = Ad(M^-1) S, M a translation by p = (2, 0, 0): same omega, v = v_s + omega x p
     p = np.array([2.0, 0, 0])
     rows = []
     for w, v in (([0, 0, 1.0], [0, 0, 0.0]), ([0, 0, 1.0], [0, -1.0, 0])):
@@ -166,7 +166,7 @@ def _():
 
 @reference("poe", 3)
 def _():
-    # matrix logarithm of a translation by the series log(I + N) = N - N^2/2 ... with N^2 = 0
+    # the logarithm of a translation by the series log(I + N) = N - N^2/2 ..., N^2 = 0
     T = np.eye(4)
     T[:3, 3] = [1, 2, 2]
     N = T - np.eye(4)
@@ -176,7 +176,7 @@ def _():
 
 @reference("poe", 7)
 def _():
-    # rotate the tool point about the line x = 0, y = 6 (direction -z) and slide h q along -z
+    # turn the tool point about the line x = 0, y = 6 (along -z), slide h q along -z
     p, c, q, h = np.array([0.0, 6, 2]), np.array([0.0, 6, 0]), math.pi / 2, 0.1
     p_new = c + rot("z", -q) @ (p - c) + h * q * np.array([0, 0, -1.0])
     M = np.array([[-1, 0, 0, 0], [0, 1, 0, 6], [0, 0, -1, 2], [0, 0, 0, 1.0]])
@@ -205,7 +205,7 @@ def _():
     return [V_a[2, 1], V_a[0, 2], V_a[1, 0], *V_a[:3, 3]]
 
 
-# ---- puma_fk ----------------------------------------------------------------------------
+# ---- puma_fk -----------------------------------------------------------------------
 
 # the PUMA 560 of Corke's table, written here: (d, a, alpha) per link
 PUMA_TABLE = [
@@ -264,13 +264,13 @@ def _():
     return abs((points[3] - points[2]) @ n) / np.linalg.norm(n) * 1000
 
 
-# ---- puma_ik ----------------------------------------------------------------------------
+# ---- puma_ik -----------------------------------------------------------------------
 
 D3, A2, A3, D4 = 0.15005, 0.4318, 0.0203, 0.4318
 
 
 def elbow_grid():
-    """The squared shoulder-to-wrist distance in the arm's plane on a fine grid of q3."""
+    """The squared shoulder-to-wrist distance in the arm's plane on a grid of q3."""
     q3 = np.linspace(-math.pi, math.pi, 2_000_001)
     c3, s3 = np.cos(q3), np.sin(q3)
     return q3, (A2 + A3 * c3 - D4 * s3) ** 2 + (A3 * s3 + D4 * c3) ** 2
@@ -286,8 +286,8 @@ def _():
 def _():
     q3, distance2 = elbow_grid()
     best = q3[np.argmax(distance2)]
-    # the same through the DH table: at full stretch the wrist centre is that far from the
-    # shoulder in the arm's plane, which is d3 to the side of the base origin
+    # the same through the DH table: at full stretch the wrist centre is that far from
+    # the shoulder in the arm's plane, which is d3 to the side of the base origin
     p = dh_fk(PUMA_TABLE, [0.2, 0.3, best, 0, 0, 0])[:3, 3]
     np.testing.assert_allclose(
         math.sqrt(p @ p - D3**2), math.sqrt(distance2.max()), atol=1e-9
@@ -347,7 +347,7 @@ def _():
     return twin
 
 
-# ---- the keys --------------------------------------------------------------------------
+# ---- the keys ----------------------------------------------------------------------
 
 
 def test_every_key_has_an_independent_reference():
@@ -379,7 +379,7 @@ def test_key_refuses_a_wrong_answer(chapter, number):
     assert verdict.message
 
 
-# ---- the rules, on keys written for the test --------------------------------------------
+# ---- the rules, on keys written for the test ---------------------------------------
 
 FAKE = {
     "1": {"answer": "pi/3", "unit": "rad", "tolerance": 1e-3, "hint": "h1"},
@@ -407,6 +407,7 @@ FAKE = {
         "hint": "h6",
     },
     "7": {"answer": "12", "unit": "mm", "tolerance": 0.01, "rtol": 0.01, "hint": "h7"},
+    "9": {"answer": "0", "unit": "rad", "tolerance": 1e-3, "hint": "h9"},
     "8": {
         "answer": [["1", "2"], ["3", "4"]],
         "unit": "",
@@ -462,6 +463,8 @@ CASES = [
     (8, sp.Matrix([[4, 3], [2, 1]]), True, ""),
     (8, "1, 2, 3, 4", True, ""),
     (8, "1, -2, 3, 4", False, "some signs are wrong"),
+    (9, "0.05", False, "h9"),  # no "looks like degrees" for a zero answer
+    (9, "0.0005", True, ""),
     # whitespace separates numbers, as NumPy prints arrays; a glued product is a product
     (4, "[ 0.   0.  -1.]", True, ""),
     (4, "0 0 1", True, ""),
@@ -563,7 +566,7 @@ def test_answer_box_html_is_accessible_and_carries_the_script_once():
     assert first.id != second.id
 
 
-# ---- the page's JavaScript gives the same verdicts ---------------------------------------
+# ---- the page's JavaScript gives the same verdicts ---------------------------------
 
 JS_INPUTS = [(n, a) for n, a, _, _ in CASES if isinstance(a, (str, int, float))]
 JS_INPUTS += [(1, t) for t in TEXTS if len(t) < 100]

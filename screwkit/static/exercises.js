@@ -227,8 +227,10 @@
       ["m", 1e-3, "looks like millimetres, metres expected"],
       ["mm", 1e3, "looks like metres, millimetres expected"],
     ];
+    // a unit slip only explains an answer that is not zero (any small number fits 0)
+    const nonzero = key.values.some((v) => Math.abs(v) > key.tolerance);
     for (const [unit, factor, text] of slips) {
-      if (key.unit === unit && matches(x.map((v) => v * factor), key)) {
+      if (nonzero && key.unit === unit && matches(x.map((v) => v * factor), key)) {
         return text + ".";
       }
     }
