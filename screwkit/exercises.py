@@ -79,7 +79,7 @@ _TOKEN = re.compile(
 )
 
 
-# ---- reading an answer ---------------------------------------------------------------
+# ---- reading an answer -------------------------------------------------------------
 
 
 class _Parser:
@@ -88,7 +88,7 @@ class _Parser:
     def __init__(self, text):
         text = text.replace("−", "-").replace("×", "*").replace("·", "*")
         text = text.replace("√", "sqrt")
-        self.tokens = []
+        self.tokens, self.spaced = [], []
         position = 0
         while position < len(text):
             if text[position:].strip() == "":
@@ -98,6 +98,7 @@ class _Parser:
                 raise ValueError(f"cannot read {text[position:].strip()[:12]!r}")
             kind = match.lastgroup
             self.tokens.append((kind, match.group(kind)))
+            self.spaced.append(match.start(kind) > position)  # whitespace before it
             position = match.end()
         self.at = 0
 
@@ -112,13 +113,28 @@ class _Parser:
         self.at += 1
         return token
 
+    def space_before(self):
+        return self.at < len(self.tokens) and self.spaced[self.at]
+
+    def starts_item(self):
+        kind, token = self.peek()
+        return kind in ("number", "name") or token in ("(", "[", "+", "-")
+
+    def sign_starts_item(self):
+        """A sign after whitespace, glued to what follows ("1 -2"), opens a new item."""
+        glued = self.at + 1 < len(self.tokens) and not self.spaced[self.at + 1]
+        return self.space_before() and glued
+
     def items(self):
-        """Comma- or semicolon-separated items; brackets group and are flattened."""
+        """Items separated by commas, semicolons or whitespace (as NumPy prints arrays);
+        brackets group and are flattened."""
         values = self.item()
-        while self.peek()[1] in (",", ";"):
-            self.take()
+        while True:
+            if self.peek()[1] in (",", ";"):
+                self.take()
+            elif not (self.space_before() and self.starts_item()):
+                return values
             values += self.item()
-        return values
 
     def item(self):
         if self.peek()[1] == "[":
@@ -142,7 +158,7 @@ class _Parser:
 
     def expression(self):
         value = self.term()
-        while self.peek()[1] in ("+", "-"):
+        while self.peek()[1] in ("+", "-") and not self.sign_starts_item():
             sign = self.take()[1]
             value = value + self.term() if sign == "+" else value - self.term()
         return value
@@ -155,12 +171,12 @@ class _Parser:
                 self.take()
                 right = self.signed()
                 value = value * right if token == "*" else value / right
-            elif (
+            elif not self.space_before() and (
                 kind == "number"
                 or token == "("
                 or (kind == "name" and _UNIT_NAMES.get(token, token) not in _UNITS)
             ):
-                value = value * self.power()  # implicit product: 2pi, 2 sqrt(3)
+                value = value * self.power()  # implicit product, written glued: 2pi
             else:
                 return value
 
@@ -210,6 +226,11 @@ class _Parser:
 def parse_answer(text):
     """Read a typed answer: ``"pi/3"``, ``"60 deg"``, ``"0.1, -0.2, 0.3"``, ``"12 mm"``.
 
+    Numbers are separated by commas, semicolons or whitespace (``"[0.5 -1.2 0.]"``, as
+    NumPy prints an array; ``"1 - 2"`` with spaces on both sides is a subtraction).
+    A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"2 pi"`` two
+    numbers.
+
     Returns
     -------
     values : list of float
@@ -243,7 +264,7 @@ def parse_answer(text):
     return [float(v) for v in values], parser.units
 
 
-# ---- answer keys ---------------------------------------------------------------------
+# ---- answer keys -------------------------------------------------------------------
 
 
 @lru_cache(maxsize=None)
@@ -310,7 +331,7 @@ def answer_key(chapter, number):
     }
 
 
-# ---- checking ------------------------------------------------------------------------
+# ---- checking ----------------------------------------------------------------------
 
 
 @dataclass(frozen=True)
@@ -389,6 +410,12 @@ def _close(x, a, key):
     return bool(np.all(np.abs(d) <= key["tolerance"] + key["rtol"] * np.abs(a) + 1e-12))
 
 
+def _wrapped_sorted(values, key):
+    """Angles wrapped into half a period either side of 0, sorted (for "any order")."""
+    period = 360.0 if key["unit"] == "deg" else 2 * math.pi
+    return sorted((u + period / 2) % period - period / 2 for u in values)
+
+
 def _matches(x, key):
     """True if ``x`` (floats in the key's unit) is one of the accepted forms."""
     candidates = [key["values"], *key["alternatives"]]
@@ -399,11 +426,7 @@ def _matches(x, key):
             continue
         if "any order" in key["forms"]:
             if "modulo 2pi" in key["forms"]:
-                period = 360.0 if key["unit"] == "deg" else 2 * math.pi
-                wrap = lambda v: sorted(
-                    (u + period / 2) % period - period / 2 for u in v
-                )
-                if _close(wrap(x), wrap(a), key):
+                if _close(_wrapped_sorted(x, key), _wrapped_sorted(a, key), key):
                     return True
             elif _close(sorted(x), sorted(a), key):
                 return True
@@ -424,8 +447,10 @@ def _diagnose(x, key):
         ("m", 1e-3, "looks like millimetres, metres expected"),
         ("mm", 1e3, "looks like metres, millimetres expected"),
     ]
+    # a unit slip only explains an answer that is not zero (where any small number fits)
+    nonzero = any(abs(v) > key["tolerance"] for v in key["values"])
     for slip_unit, factor, text in slips:
-        if unit == slip_unit and _matches([v * factor for v in x], key):
+        if nonzero and unit == slip_unit and _matches([v * factor for v in x], key):
             return text + "."
     if _matches([-v for v in x], key):
         return "the sign is flipped."
@@ -504,7 +529,7 @@ def check(chapter, number, answer):
     return _verdict(values, units, key)
 
 
-# ---- the box in the page -------------------------------------------------------------
+# ---- the box in the page -----------------------------------------------------------
 
 _ids = itertools.count(1)
 _script_sent = False

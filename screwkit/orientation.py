@@ -81,7 +81,7 @@ def _simplify(expression):
     return sp.simplify(sp.radsimp(expression))
 
 
-# ---- Euler angles ---------------------------------------------------------------------
+# ---- Euler angles ------------------------------------------------------------------
 
 
 def rotation_from_euler(angles, convention="ZYZ"):
@@ -142,7 +142,7 @@ def _euler_numeric(R, zyz):
         beta = np.arctan2(sin_beta, r(3, 3))
         alpha = np.arctan2(r(2, 3), r(1, 3))
         gamma = np.arctan2(r(3, 2), -r(3, 1))
-        # locked: beta = 0 gives Rz(alpha + gamma), beta = pi gives Rz(alpha - gamma) Ry(pi)
+        # locked: beta = 0 is Rz(alpha + gamma), beta = pi is Rz(alpha - gamma) Ry(pi)
         up = r(3, 3) > 0
         locked_gamma = np.where(
             up, np.arctan2(r(2, 1), r(1, 1)), np.arctan2(r(2, 1), -r(1, 1))
@@ -244,7 +244,7 @@ def rpy_from_rotation(R):
     return angles[..., ::-1].copy()
 
 
-# ---- unit quaternions -----------------------------------------------------------------
+# ---- unit quaternions --------------------------------------------------------------
 
 
 def _quaternion(value):
@@ -405,7 +405,7 @@ def quaternion_multiply(p, q):
     return np.concatenate([w[..., None], u], axis=-1)
 
 
-# ---- the analytic Jacobian of Euler rates ---------------------------------------------
+# ---- the analytic Jacobian of Euler rates ------------------------------------------
 
 
 def euler_rate_matrix(angles, convention="ZYZ", frame="space"):

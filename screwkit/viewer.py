@@ -127,7 +127,7 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     return Viewer(model, f"{chain.name}{extra}: sliders {sliders}")
 
 
-def screw_motion_viewer(s, r, h, start=None, theta=90.0, size=(520, 420)):
+def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
     """A frame moved about the screw axis (s, r, h) by exp([xi] theta), computed in the page.
 
     Parameters
@@ -136,7 +136,8 @@ def screw_motion_viewer(s, r, h, start=None, theta=90.0, size=(520, 420)):
     r : array-like, shape (3,), a point of the axis (m)
     h : float, the pitch (m/rad); ``math.inf`` or ``sympy.oo`` for a pure translation along s
     start : array-like, shape (4, 4), the frame before the motion (default identity)
-    theta : float, the slider's first value: deg (or m for a translation)
+    theta : float, the slider's first value: deg, default 90 (or m for a translation,
+        default 0.5)
 
     Returns
     -------
@@ -158,6 +159,8 @@ def screw_motion_viewer(s, r, h, start=None, theta=90.0, size=(520, 420)):
     if start.ndim != 2:
         raise ValueError(f"start must be one transform of shape (4, 4), got shape {start.shape}")
     width, height = _check_size(size)
+    if theta is None:
+        theta = 0.5 if translation else 90.0
     if translation:
         slider = _sliders.slider_spec("d", "m", -1.0, 1.0, theta, _sliders.LENGTH_STEPS)
     else:

@@ -52,7 +52,7 @@ def random_rotations(n, seed):
     ), q
 
 
-# ---- Euler angles and roll-pitch-yaw ---------------------------------------------------
+# ---- Euler angles and roll-pitch-yaw -----------------------------------------------
 
 
 def test_zyz_matrix_written_out():
@@ -156,7 +156,7 @@ def test_gimbal_lock_exact_and_batched():
     assert sk.gimbal_lock(Rs, "ZYZ").tolist() == [True, False, True]
 
 
-# ---- quaternions ------------------------------------------------------------------------
+# ---- quaternions -------------------------------------------------------------------
 
 
 def test_quaternion_to_rotation_matches_written_out_formula():
@@ -220,7 +220,7 @@ def test_non_unit_quaternion_is_refused():
         sk.rotation_from_quaternion(sp.Matrix([1, 1, 0, 0]))
 
 
-# ---- the Euler-rate matrix ---------------------------------------------------------------
+# ---- the Euler-rate matrix ---------------------------------------------------------
 
 
 def vee(W):

@@ -38,7 +38,9 @@
         throw new Error("cannot read '" + rest.trim().slice(0, 12) + "'");
       }
       const group = [1, 2, 3, 4].find((i) => match[i] !== undefined);
-      tokens.push([KINDS[group - 1], match[group]]);
+      // the third entry: whitespace before the token
+      const spaced = match[0].length > match[group].length;
+      tokens.push([KINDS[group - 1], match[group], spaced]);
       rest = rest.slice(match[0].length);
     }
     return tokens;
@@ -61,14 +63,27 @@
     };
     const isUnit = (token) =>
       (token[0] === "unit" || token[0] === "name") && own(UNITS, unitName(token[1]));
+    const spaceBefore = () => at < tokens.length && tokens[at][2];
+    const startsItem = () => {
+      const [kind, token] = peek();
+      return kind === "number" || kind === "name" ||
+        ["(", "[", "+", "-"].includes(token);
+    };
+    // a sign after whitespace and glued to what follows ("1 -2") opens a new item
+    const signStartsItem = () =>
+      spaceBefore() && at + 1 < tokens.length && !tokens[at + 1][2];
 
+    // items separated by commas, semicolons or whitespace (as NumPy prints arrays)
     function items() {
       let values = item();
-      while (peek()[1] === "," || peek()[1] === ";") {
-        take();
+      for (;;) {
+        if (peek()[1] === "," || peek()[1] === ";") {
+          take();
+        } else if (!(spaceBefore() && startsItem())) {
+          return values;
+        }
         values = values.concat(item());
       }
-      return values;
     }
     function item() {
       if (peek()[1] === "[") {
@@ -88,7 +103,7 @@
     }
     function expression() {
       let value = term();
-      while (peek()[1] === "+" || peek()[1] === "-") {
+      while ((peek()[1] === "+" || peek()[1] === "-") && !signStartsItem()) {
         const sign = take()[1];
         const right = term();
         value = sign === "+" ? value + right : value - right;
@@ -103,9 +118,9 @@
           take();
           const right = signed();
           value = token[1] === "*" ? value * right : value / right;
-        } else if (token[0] === "number" || token[1] === "(" ||
-                   (token[0] === "name" && !isUnit(token))) {
-          value *= power();
+        } else if (!spaceBefore() && (token[0] === "number" || token[1] === "(" ||
+                   (token[0] === "name" && !isUnit(token)))) {
+          value *= power(); // implicit product, written glued: 2pi
         } else {
           return value;
         }
@@ -212,8 +227,10 @@
       ["m", 1e-3, "looks like millimetres, metres expected"],
       ["mm", 1e3, "looks like metres, millimetres expected"],
     ];
+    // a unit slip only explains an answer that is not zero (any small number fits 0)
+    const nonzero = key.values.some((v) => Math.abs(v) > key.tolerance);
     for (const [unit, factor, text] of slips) {
-      if (key.unit === unit && matches(x.map((v) => v * factor), key)) {
+      if (nonzero && key.unit === unit && matches(x.map((v) => v * factor), key)) {
         return text + ".";
       }
     }
