@@ -30,8 +30,26 @@ import numpy as np
 #: Coefficients this close to 0 or +-1 are taken as exact (cos(pi/2) computes as 6e-17).
 SNAP = 1e-14
 
-#: Configurations evaluated per chunk of a batch, so that temporaries stay in the cache.
+#: Configurations per chunk of a batch: the one chunk size of screwkit (the generated code,
+#: the Jacobians and their measures, the closed-form IK, the workspace sweeps). The temporaries
+#: of a chunk stay in the cache, and the memory of a big batch stays bounded.
 CHUNK = 8192
+
+
+def in_chunks(batch, function, out=None):
+    """``function(part)`` over chunks of :data:`CHUNK` rows of ``batch`` (N, ...).
+
+    With ``out`` (an array of N rows), each result is written into its rows and ``out`` is
+    returned; without, the results are concatenated (one call for a batch of one chunk).
+    """
+    if out is None:
+        if batch.shape[0] <= CHUNK:
+            return function(batch)
+        return np.concatenate([function(batch[k:k + CHUNK])
+                               for k in range(0, batch.shape[0], CHUNK)])
+    for k in range(0, batch.shape[0], CHUNK):
+        out[k:k + CHUNK] = function(batch[k:k + CHUNK])
+    return out
 
 
 def _snap(array):

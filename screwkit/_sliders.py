@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import as_float_array
+from .links import Joint
 
 #: Candidate steps, coarsest first: the first on which the default lies is used.
 ANGLE_STEPS = (1.0, 0.5, 0.1, 0.05, 0.01)
@@ -100,8 +101,6 @@ def joint_sliders(chain, q=None):
     Revolute (and other angular) joints in degrees, prismatic joints in metres. A revolute
     default outside its limits is wrapped by whole turns into them; ValueError if that fails.
     """
-    from .chains import Joint
-
     q = np.zeros(chain.n) if q is None else chain.check_q(q)
     if q.ndim != 1:
         raise ValueError(f"q must be one configuration of shape ({chain.n},), got shape {q.shape}")

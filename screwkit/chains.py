@@ -28,14 +28,26 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _compiled
-from ._checks import as_float_array, describe
+from . import _compiled, _newton, _numeric
+from ._checks import ChainType, as_float_array, check_option, describe, is_symbolic
 from ._notation import textbook
+from .lie import adjoint
 from .links import (Convention, Joint, Link, axis_points, check_convention, check_screws, decimal,
                     dh_factors, exact_matrix, joint_kind, limits_table, rigid, translation)
-from .transforms import exp_twist
+from .screws import Twist
+from .systems import ScrewSystem
+from .transforms import _cross, exp_twist
 
-__all__ = ["Joint", "Convention", "Link", "Chain", "textbook"]
+__all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
+
+#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n
+#: Jacobian of an arm that moves in its base's x-y plane.
+ROWS = {"all": slice(0, 6), "position": slice(0, 3), "orientation": slice(3, 6), "planar": slice(0, 2)}
+
+
+def check_rows(rows):
+    """The slice of the geometric Jacobian's rows named ``rows`` (one of :data:`ROWS`)."""
+    return ROWS[check_option(rows, "rows", tuple(ROWS))]
 
 def _numbers_out(matrix, values=None):
     """``matrix`` at ``values``, expanded; with no symbol left, trigonometric functions of sums
@@ -47,7 +59,7 @@ def _numbers_out(matrix, values=None):
     return matrix.applyfunc(lambda e: sp.radsimp(sp.expand(sp.expand_trig(e))))
 
 
-class Chain:
+class Chain(ChainType):
     """A serial chain between a fixed ``base`` and a ``tool`` transform; immutable.
 
     ``Chain(links, ...)`` describes it by a DH table; :meth:`from_table` takes the table as
@@ -366,8 +378,6 @@ class Chain:
                               else sp.Matrix.vstack(sp.zeros(3, 1), z))
             exact = {s: decimal(sp.sympify(v)) for s, v in lengths.items()}
             return [_numbers_out(t.xreplace(exact).subs(values)) for t in twists]
-        from .lie import adjoint
-
         screws, home = self._exact_screws, exact_matrix(self._home)
         if rational:
             screws, home = [S.applyfunc(decimal) for S in screws], home.applyfunc(decimal)
@@ -387,12 +397,7 @@ class Chain:
         and the wrenches the structure bears without motors. Numeric q (n,) or (N, n): the
         (n, 6) / (N, n, 6) array of the space Jacobian's columns.
         """
-        from ._checks import is_symbolic
-
         if is_symbolic(q):
-            from .screws import Twist
-            from .systems import ScrewSystem
-
             return ScrewSystem([Twist(t) for t in self.twists_symbolic(q, rational=True)])
         return np.swapaxes(self.space_jacobian(q), -1, -2)
 
@@ -502,41 +507,99 @@ class Chain:
             return z, point
         return np.swapaxes(z, 0, 1), np.swapaxes(point, 0, 1)
 
-    # ---- Jacobians ------------------------------------------------------------------------
+    # ---- Jacobians: outputs of the generated program -----------------------------------------
 
-    def geometric_jacobian(self, q):
-        """Rows [v; omega] in the base frame at the end-effector point: (n,) -> (6, n), (N, n) -> (N, 6, n)."""
-        from .jacobians import geometric_jacobian
+    def _generated_jacobian(self, q, outputs):
+        """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n) or (N, 6, n)."""
+        q = self.check_q(q)
+        n, rows = self.n, 6 * self.n
+        if q.ndim == 1:
+            return np.reshape(self._run(outputs, q), (6, n))
 
-        return geometric_jacobian(self, q)
+        def part(q_part):
+            values = self._run(outputs, q_part, range(rows), np.empty((rows, q_part.shape[0])))
+            return values.reshape(6, n, -1).transpose(2, 0, 1)
+
+        return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
     def space_jacobian(self, q):
-        """Columns are the joint twists [omega; v] in the base frame: (n,) -> (6, n), (N, n) -> (N, 6, n)."""
-        from .jacobians import space_jacobian
+        """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
 
-        return space_jacobian(self, q)
+        Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i) for a
+        revolute joint about z_i through o_i (v is the velocity of the body point at the base
+        origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
+        """
+        return self._generated_jacobian(q, "space")
+
+    def geometric_jacobian(self, q):
+        """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows [v; omega].
+
+        Column i is the space twist moved to the end-effector point p: (v_i + omega_i x p; omega_i),
+        i.e. (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic one.
+        """
+        return self._generated_jacobian(q, "geometric")
 
     def body_jacobian(self, q):
-        """Columns are the joint twists [omega; v] in the end-effector frame: J_b = Ad(T^-1) J_s."""
-        from .jacobians import body_jacobian
+        """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
 
-        return body_jacobian(self, q)
+        Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
+        (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
+        """
+        def columns(q_part):
+            omega, v, _, T = self._twists_and_pose(q_part)
+            R, linear = T[:, :3], v + _cross(omega, T[:, 3][:, None])
+            rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
+            J = np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)])
+            return J if q_part.ndim == 1 else J.transpose(2, 0, 1)
+
+        q = self.check_q(q)
+        if q.ndim == 1:
+            return columns(q)
+        return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, self.n)))
+
+    def jacobian_rows(self, q, rows="all"):
+        """The rows ``rows`` (a key of :data:`ROWS`) of the geometric Jacobian: (m, n) or (N, m, n).
+
+        'planar' reads v_x, v_y in the chain's base frame.
+        """
+        selected = check_rows(rows)
+        J = self.geometric_jacobian(q)
+        if rows == "planar":
+            R = np.asarray(self.base)[:3, :3]
+            return np.einsum("ji,...jk->...ik", R, J[..., :3, :])[..., selected, :]
+        return J[..., selected, :]
+
+    def singular_values(self, q, rows="all"):
+        """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
+        check_rows(rows)
+        q = self.check_q(q)
+
+        def part(q_part):
+            return np.linalg.svd(self.jacobian_rows(q_part, rows), compute_uv=False)
+
+        return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
+
+    def lost_rank(self, sigma, rows="all"):
+        """True where the Jacobian rows with singular values ``sigma`` (..., k) have lost rank:
+        NumPy's rank rule on the smallest singular value."""
+        return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), self.n)
 
     def manipulability(self, q, rows="all"):
-        """Yoshikawa's sqrt(det(J J^T)) of the geometric Jacobian: () or (N,); 0.0 where singular.
+        """Yoshikawa's manipulability, the product of the singular values: () or (N,).
 
-        rows: 'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x,
-        v_y in the chain's base frame).
+        That is sqrt(det(J J^T)) for J with no more rows than columns (sqrt(det(J^T J)) otherwise).
+        Exactly 0.0 where J has lost rank (by NumPy's rank tolerance), so a singular
+        configuration is an answer, not noise. With rows='all' the product mixes metres and
+        radians; 'position' gives the volume factor of the velocity ellipsoid in m/s. rows:
+        'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x, v_y in
+        the chain's base frame).
         """
-        from .jacobians import manipulability
-
-        return manipulability(self, q, rows)
+        sigma = self.singular_values(q, rows)
+        return np.where(self.lost_rank(sigma, rows), 0.0, np.prod(sigma, axis=-1))[()]
 
     def numeric_ik(self, T, q0, **options):
         """Numerical inverse kinematics of this chain: see :func:`screwkit.ik.numeric_ik`."""
-        from .ik import numeric_ik
-
-        return numeric_ik(self, T, q0, **options)
+        return _newton.numeric_ik(self, T, q0, **options)
 
     # ---- product of exponentials ----------------------------------------------------------
 

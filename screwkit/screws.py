@@ -17,41 +17,10 @@ import numpy as np
 import sympy as sp
 
 from ._checks import as_sympy_matrix, as_sympy_scalar, describe, is_symbolic
+from .lie import adjoint
+from .transforms import _is_infinite_pitch, axis_coordinates, exp_twist
 
 __all__ = ["Screw", "Twist", "Wrench", "axis_coordinates"]
-
-
-def axis_coordinates(s, r, h):
-    """The screw coordinates of an axis: (s; r x s + h s), or (0; s) for the pitch h = oo.
-
-    The one place screwkit writes this formula. ``s`` is used as given (not normalised).
-
-    Parameters
-    ----------
-    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3); r is unused
-        for h = oo
-    h : the pitch (m/rad): a number, a SymPy expression, or oo / inf for a translation
-
-    Returns
-    -------
-    sympy.Matrix (6, 1), or ndarray (6,) / (N, 6)
-    """
-    if isinstance(s, sp.MatrixBase):
-        if _is_infinite_pitch(h):
-            return sp.Matrix.vstack(sp.zeros(3, 1), s)
-        (r1, r2, r3), (s1, s2, s3) = r.flat(), s.flat()
-        moment = [r2 * s3 - r3 * s2, r3 * s1 - r1 * s3, r1 * s2 - r2 * s1]
-        if h != 0:
-            moment = [m + h * si for m, si in zip(moment, (s1, s2, s3))]
-        return sp.Matrix(6, 1, [s1, s2, s3] + moment)
-    s = np.asarray(s, dtype=float)
-    if _is_infinite_pitch(h):
-        return np.concatenate([np.zeros_like(s), s], axis=-1)
-    return np.concatenate([s, np.cross(r, s) + h * s], axis=-1)
-
-
-def _is_infinite_pitch(h):
-    return h is sp.oo or (isinstance(h, (float, np.floating)) and h == float("inf"))
 
 
 class Screw:
@@ -174,8 +143,6 @@ class Screw:
         as the transposed adjoint: F_b = Ad(T_ab)^T F_a). Exact for a SymPy T; a float T gives
         Float coordinates.
         """
-        from .lie import adjoint
-
         T = T if isinstance(T, sp.MatrixBase) else sp.Matrix(np.asarray(T, dtype=float))
         return type(self)._checked((adjoint(T) * self.vector).applyfunc(sp.expand))
 
@@ -207,8 +174,6 @@ class Twist(Screw):
         >>> np.round(Twist.from_axis([0, 0, 1], [1, 0, 0], 0).exp(np.pi)[:3, 3], 12)
         array([2., 0., 0.])
         """
-        from .transforms import exp_twist
-
         if is_symbolic(theta) or self.vector.free_symbols:
             return exp_twist(self.vector, theta)
         return exp_twist(np.array(self.vector, dtype=float).ravel(), theta)

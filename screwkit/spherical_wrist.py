@@ -42,8 +42,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import describe
-from .chains import Chain, Joint
+from ._checks import check_chain
+from .links import Joint
 from .transforms import _wrap_angle, inv
 
 __all__ = ["CONFIGURATIONS", "SphericalWristArm"]
@@ -134,8 +134,7 @@ class SphericalWristArm:
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
-        if not isinstance(chain, Chain):
-            raise TypeError(f"{name} must be a Chain, got {describe(chain)}")
+        check_chain(chain, name)
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints for the closed form, got {chain.n}")
         kinds = [i + 1 for i, j in enumerate(chain.joints) if j is not Joint.REVOLUTE]
