@@ -9,8 +9,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import (as_float_array, check_chain, check_flag, check_poses,
-                      check_positive, check_transform, describe)
+from ._checks import (
+    as_float_array,
+    check_chain,
+    check_flag,
+    check_poses,
+    check_positive,
+    check_transform,
+    describe,
+)
 from .lie import log_transform
 from .links import Joint
 from .transforms import _wrap_angle, inv

@@ -32,8 +32,21 @@ from . import _compiled, _newton, _numeric
 from ._checks import ChainType, as_float_array, check_option, describe, is_symbolic
 from ._notation import textbook
 from .lie import adjoint
-from .links import (Convention, Joint, Link, axis_points, check_convention, check_screws, decimal,
-                    dh_factors, exact_matrix, joint_kind, limits_table, rigid, translation)
+from .links import (
+    Convention,
+    Joint,
+    Link,
+    axis_points,
+    check_convention,
+    check_screws,
+    decimal,
+    dh_factors,
+    exact_matrix,
+    joint_kind,
+    limits_table,
+    rigid,
+    translation,
+)
 from .screws import Twist
 from .systems import ScrewSystem
 from .transforms import _cross, exp_twist

@@ -35,8 +35,15 @@ from ._checks import as_float_array, check_flag, check_poses
 from ._newton import NumericIKResult, numeric_ik, pose_error
 from .robots import puma560
 from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
-from .subproblems import (Solutions, subproblem1, subproblem1_prismatic, subproblem2,
-                          subproblem3, subproblem3_prismatic, subproblem4)
+from .subproblems import (
+    Solutions,
+    subproblem1,
+    subproblem1_prismatic,
+    subproblem2,
+    subproblem3,
+    subproblem3_prismatic,
+    subproblem4,
+)
 from .transforms import _wrap_angle
 
 __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",

@@ -23,7 +23,13 @@ array([1.5708, 0.    , 0.    , 0.    , 2.3562, 2.3562])
 import numpy as np
 import sympy as sp
 
-from ._checks import as_float_array, as_sympy_matrix, check_rotation, check_transform, is_symbolic
+from ._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    check_rotation,
+    check_transform,
+    is_symbolic,
+)
 from .transforms import _skew, _skew_exact
 
 __all__ = ["adjoint", "ad", "log_rotation", "log_transform", "vee"]

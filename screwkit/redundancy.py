@@ -230,7 +230,7 @@ def _gradient(points):
     return w[()], gradient
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _gradient_indices(n):
     """Index pairs (i, max(j, k)) and (max(i, k), j) over (k, i, j), as flat indices into G (n, n)."""
     k, i, j = np.meshgrid(np.arange(n), np.arange(n), np.arange(n), indexing="ij")

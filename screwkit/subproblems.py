@@ -28,7 +28,13 @@ Robotic Manipulation* (1994), sec. 3.3; subproblem 4 after Elias and Wen's IK-Ge
 import numpy as np
 import sympy as sp
 
-from ._checks import as_float_array, as_sympy_matrix, as_sympy_scalar, describe, is_symbolic
+from ._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    as_sympy_scalar,
+    describe,
+    is_symbolic,
+)
 
 __all__ = ["Solutions", "subproblem1", "subproblem2", "subproblem3", "subproblem4",
            "subproblem1_prismatic", "subproblem3_prismatic"]

@@ -92,7 +92,9 @@ def random_chain(seed, convention=sk.Convention.STANDARD):
     return links
 
 
-def dh_by_hand(links, q, base=np.eye(4), tool=np.eye(4)):
+def dh_by_hand(links, q, base=None, tool=None):
+    base = np.eye(4) if base is None else base
+    tool = np.eye(4) if tool is None else tool
     T = base
     for link, qi in zip(links, q):
         if link.joint is sk.Joint.REVOLUTE:

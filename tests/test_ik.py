@@ -8,8 +8,15 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 import screwkit as sk
-from screwkit.ik import (CONFIGURATIONS, analytic_ik, analytic_ik_all, configuration,
-                         puma560_config, puma560_ik, puma560_ik_all)
+from screwkit.ik import (
+    CONFIGURATIONS,
+    analytic_ik,
+    analytic_ik_all,
+    configuration,
+    puma560_config,
+    puma560_ik,
+    puma560_ik_all,
+)
 
 PUMA = sk.robots.puma560()
 A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
@@ -101,7 +108,7 @@ def test_labels_of_solutions_are_their_branches():
 
 
 def test_kawasaki_paper_poses():
-    for name, q in KAWASAKI.configurations.items():
+    for q in KAWASAKI.configurations.values():
         solutions = analytic_ik(KAWASAKI, KAWASAKI.fk(q))
         assert 4 <= len(solutions) <= 8
         same = solutions.by_config(configuration(KAWASAKI, q))

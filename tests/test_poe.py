@@ -214,9 +214,9 @@ def test_the_parameter_table_of_each_kind_of_chain():
 
 
 def test_batch_cosines_and_sines_from_the_half_angle_tangent():
-    from screwkit._compiled import cos_sin
-
     import math
+
+    from screwkit._compiled import cos_sin
 
     special = [0.0, np.pi / 2, -np.pi / 2, np.pi, -np.pi, 1e-300, 3 * np.pi, 50.0, -1234.5]
     angles = np.concatenate([np.linspace(-4 * np.pi, 4 * np.pi, 100_001), special])
