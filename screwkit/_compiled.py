@@ -27,6 +27,8 @@ import re
 
 import numpy as np
 
+from .transforms import _skew
+
 #: Coefficients this close to 0 or +-1 are taken as exact (cos(pi/2) computes as 6e-17).
 SNAP = 1e-14
 
@@ -71,7 +73,7 @@ def exponential_coefficients(twist):
         K1[:3, :3] = np.eye(3)
         Kt[:3, 3] = v
         return K1, Kc, Ks, Kt
-    W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    W = _skew(w)
     W2 = W @ W
     K1[:3, :3], Ks[:3, :3], Kc[:3, :3] = np.eye(3) + W2, W, -W2
     K1[:3, 3], Kt[:3, 3], Kc[:3, 3], Ks[:3, 3] = W @ v, v + W2 @ v, -(W @ v), -(W2 @ v)

@@ -49,7 +49,7 @@ from .links import (
 )
 from .screws import Twist
 from .systems import ScrewSystem
-from .transforms import _cross, exp_twist
+from .transforms import _cross, axis_coordinates, exp_twist
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
 
@@ -111,9 +111,7 @@ class Chain(ChainType):
         state["_qlim"] = limits
         named = {}
         for key, value in (configurations or {}).items():
-            named[key] = self.check_q(value, f"configurations[{key!r}]").copy()
-            if named[key].ndim != 1:
-                raise ValueError(f"configurations[{key!r}] must be one joint vector of shape ({self.n},)")
+            named[key] = self.check_one(value, f"configurations[{key!r}]").copy()
             named[key].setflags(write=False)
         state["configurations"] = types.MappingProxyType(named)
 
@@ -270,7 +268,8 @@ class Chain(ChainType):
             )
         return q
 
-    def _check_one(self, q, name="q"):
+    def check_one(self, q, name="q"):
+        """``q`` as float64 of shape (n,): one configuration (a batch is refused, clearly)."""
         q = self.check_q(q, name)
         if q.ndim != 1:
             raise ValueError(f"{name} must be one configuration of shape ({self.n},), got shape {q.shape}")
@@ -387,8 +386,8 @@ class Chain(ChainType):
             twists = []
             for kind, T in zip(self.joints, self.joint_frames(frames)):
                 z, o = T[:3, 2], T[:3, 3]
-                twists.append(sp.Matrix.vstack(z, o.cross(z)) if kind is Joint.REVOLUTE
-                              else sp.Matrix.vstack(sp.zeros(3, 1), z))
+                twists.append(axis_coordinates(z, o, 0) if kind is Joint.REVOLUTE
+                              else axis_coordinates(z, None, sp.oo))
             exact = {s: decimal(sp.sympify(v)) for s, v in lengths.items()}
             return [_numbers_out(t.xreplace(exact).subs(values)) for t in twists]
         screws, home = self._exact_screws, exact_matrix(self._home)
@@ -635,7 +634,7 @@ class Chain(ChainType):
 
         An independent route to :meth:`fk` (a loop of 4x4 exponentials), for checking.
         """
-        q = self._check_one(q)
+        q = self.check_one(q)
         T = np.eye(4)
         for S, qi in zip(self.screw_axes(), q):
             T = T @ exp_twist(S, qi)

@@ -31,7 +31,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ._checks import as_float_array, check_flag, check_poses
+from ._checks import as_float_array, check_chain, check_flag, check_poses
 from ._newton import NumericIKResult, numeric_ik, pose_error
 from .robots import puma560
 from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
@@ -243,8 +243,5 @@ def puma560_config(q, robot=None):
     Singular cases follow the rule of :mod:`screwkit.spherical_wrist` (shoulder: 'r',
     elbow: 'd', wrist: 'f' when cos q4 >= 0), so that every label round-trips.
     """
-    robot = _default_puma() if robot is None else robot
-    q = robot.check_q(q)
-    if q.shape != (6,):
-        raise ValueError(f"q must be one joint vector of shape (6,), got shape {q.shape}")
-    return configuration(robot, q)
+    robot = _default_puma() if robot is None else check_chain(robot, "robot")
+    return configuration(robot, robot.check_one(q))

@@ -81,7 +81,7 @@ def numerical_jacobian(chain, q, h=1e-6):
     Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the skew
     matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian` (error O(h^2)).
     """
-    q = check_chain(chain)._check_one(q)
+    q = check_chain(chain).check_one(q)
     if isinstance(h, bool) or not isinstance(h, (int, float, np.floating, np.integer)) \
             or not np.isfinite(h) or h <= 0:
         raise ValueError(f"h must be a small positive step (rad or m), got {h!r}")
@@ -207,7 +207,7 @@ def ellipsoid(chain, q, rows="position"):
     m/s (position) or rad/s (orientation) per unit joint-rate norm, and their directions as
     the columns of axes (3, 3). A zero radius is a direction the end effector cannot move in.
     """
-    q = check_chain(chain)._check_one(q)
+    q = check_chain(chain).check_one(q)
     if rows not in ("position", "orientation"):
         raise ValueError(f"rows must be 'position' or 'orientation' for a 3D ellipsoid, got {rows!r}")
     J = geometric_jacobian(chain, q)[check_rows(rows)]

@@ -10,7 +10,7 @@ import sympy as sp
 
 from .chains import Chain, Link
 
-from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
+from .limbs import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .transforms import rot_axis, rotx, roty, rotz, transl
 
 __all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru",

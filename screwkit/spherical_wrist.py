@@ -43,8 +43,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import check_chain
+from ._compiled import CHUNK
 from .links import Joint
-from .transforms import _wrap_angle, inv
+from .transforms import _skew, _wrap_angle, inv
 
 __all__ = ["CONFIGURATIONS", "SphericalWristArm"]
 
@@ -57,8 +58,6 @@ CLIP_TOL = 1e-10
 #: (m^2, relative) of the wrist centre from the plane of axis 1 and w_1 x w_2 (shoulder),
 #: 1 - |cos| of the elbow angle (elbow), the sine between axes 4 and 6 (wrist).
 SINGULAR_TOL = 1e-9
-#: Poses per chunk of a batch (the temporaries stay small: memory is bounded).
-CHUNK = 4096
 
 
 def _unit(v):
@@ -104,7 +103,7 @@ class _Rotor:
     @staticmethod
     def cross_matrix(w):
         """K with K @ x = w x x."""
-        return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+        return _skew(np.asarray(w, dtype=float))
 
     def cross(self, w, v):
         """w x v for a fixed w (3,) and vectors v (3, ...)."""

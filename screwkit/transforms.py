@@ -83,8 +83,13 @@ def _rodrigues_exact(W, theta):
 
 
 def _is_infinite_pitch(h):
-    """True for the pitch of a pure translation: sympy.oo or a float +inf (no other check)."""
-    return h is sp.oo or (isinstance(h, (float, np.floating)) and h == float("inf"))
+    """True for the pitch of a pure translation: sympy.oo, or a real +inf (a Python or NumPy
+    float, or a 0-d array); the one test of an infinite pitch (no other check)."""
+    if h is sp.oo:
+        return True
+    return (isinstance(h, (numbers.Real, np.ndarray)) and not isinstance(h, (bool, np.bool_))
+            and np.ndim(h) == 0 and np.asarray(h).dtype.kind in "iuf"
+            and bool(np.isposinf(h)))
 
 
 def _axis_point(w, v):
@@ -363,7 +368,7 @@ def twist_from_axis(s, r, h):
     >>> twist_from_axis([0, 0, 1], [1, 0, 0], 0)
     array([ 0.,  0.,  1.,  0., -1.,  0.])
     """
-    prismatic = _is_translation(h)
+    prismatic = _is_infinite_pitch(h)
     if is_symbolic(s) or is_symbolic(r) or (is_symbolic(h) and not prismatic):
         s = _unit_vector(as_sympy_matrix(s, "s", (3, 1)), "s")
         if prismatic:
@@ -379,15 +384,6 @@ def twist_from_axis(s, r, h):
 
 
 _PITCH = "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
-
-
-def _is_translation(h):
-    """True for the pitch of a pure translation: sympy.oo or a float +inf."""
-    if h is sp.oo:
-        return True
-    return (isinstance(h, (numbers.Real, np.ndarray)) and not isinstance(h, (bool, np.bool_))
-            and np.ndim(h) == 0 and np.asarray(h).dtype.kind in "iuf"
-            and bool(np.isposinf(h)))
 
 
 def _pitch(h, exact):

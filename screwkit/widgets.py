@@ -76,7 +76,7 @@ def joint_sliders(chain, q=None, limits=((-0.9, 0.9), (-0.9, 0.9), (-0.5, 1.0)),
     kernel, the chain is drawn and moved in the page (``viewer.robot_viewer``). Returns a
     LiveFigure.
     """
-    specs = _sliders.joint_sliders(chain, q)
+    specs = _sliders.slider_specs(chain, q)
     fallback = viewer.robot_viewer(chain, q)
 
     def redraw(**values):

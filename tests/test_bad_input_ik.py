@@ -51,7 +51,7 @@ CASES = [
     ("config q short", lambda: ik.puma560_config(np.zeros(5)), ValueError,
      "q must have 6 entries"),
     ("config q batch", lambda: ik.puma560_config(np.zeros((2, 6))), ValueError,
-     r"q must be one joint vector of shape \(6,\)"),
+     r"q must be one configuration of shape \(6,\)"),
     ("numeric q0 short", lambda: ik.numeric_ik(PUMA, T0, np.zeros(4)), ValueError,
      "q0 must have 6 entries"),
     ("numeric chain", lambda: ik.numeric_ik("puma", T0, np.zeros(6)), TypeError,

@@ -339,3 +339,12 @@ def test_numeric_ik_helical_chain():
     result = sk.ik.numeric_ik(chain, chain.fk(q), q + 0.15)
     assert result.success and np.allclose(chain.fk(result.q), chain.fk(q), atol=1e-9)
     assert np.isclose(result.q[0], q[0])  # a helical angle is not wrapped
+
+
+def test_numeric_ik_takes_a_numpy_tolerance():
+    """tol=np.float32(1e-6) is a positive number like any other (the checks of _checks)."""
+    puma = sk.robots.puma560()
+    q = np.array([0.3, 0.5, -2.0, 0.4, 0.7, 0.2])
+    result = sk.ik.numeric_ik(puma, puma.fk(q), q + 0.05, tol=np.float32(1e-6))
+    assert result.success and result.error < 1e-6
+    assert np.allclose(puma.fk(result.q), puma.fk(q), atol=1e-5)

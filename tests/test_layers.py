@@ -151,3 +151,11 @@ def test_the_checker_sees_an_upward_import(module, source):
 ])
 def test_the_checker_sees_a_lazy_import(module, source, flagged):
     assert bool(lazy(module, imports(module, source))) is flagged
+
+
+def test_the_old_module_path_of_the_limb_builders_still_works():
+    import screwkit as sk
+    from screwkit import joints, limbs
+
+    assert joints.revolute is limbs.revolute and sk.joints.spherical is sk.limbs.spherical
+    assert sorted(joints.__all__) == sorted(limbs.__all__)
