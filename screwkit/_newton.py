@@ -5,6 +5,7 @@ The algorithm needs of a chain only what every chain offers (``fk``, ``space_jac
 (as the Robotics Toolbox's kinematics mixin sits below its robot classes): ``Chain.numeric_ik``
 calls it without an import circle. Public as :func:`screwkit.ik.numeric_ik`.
 """
+
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,12 +41,22 @@ class NumericIKResult:
 def pose_error(T, T_target):
     """The twist [omega; v] theta (body frame of T) of the motion from T to T_target:
     ``log_transform(inv(T) @ T_target)``. T, T_target: (..., 4, 4) -> (..., 6)."""
-    return log_transform(inv(check_transform(as_float_array(T, "T"), "T"))
-                         @ check_transform(as_float_array(T_target, "T_target"), "T_target"))
+    return log_transform(
+        inv(check_transform(as_float_array(T, "T"), "T"))
+        @ check_transform(as_float_array(T_target, "T_target"), "T_target")
+    )
 
 
-def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200, frame="body", damping=None,
-               within_limits=True):
+def numeric_ik(
+    chain,
+    T,
+    q0,
+    tol=1e-10,
+    max_iterations=200,
+    frame="body",
+    damping=None,
+    within_limits=True,
+):
     """Numerical inverse kinematics in twist coordinates, for any chain (DH or product of
     exponentials; revolute, prismatic and helical joints).
 
@@ -77,9 +88,14 @@ def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200, frame="body", dampin
     check_chain(chain)
     T = check_poses(T, "T", single_only=True)
     q = chain.check_q(q0, "q0").copy()
-    if isinstance(max_iterations, bool) or not isinstance(max_iterations, (int, np.integer)) \
-            or max_iterations < 1:
-        raise ValueError(f"max_iterations must be a positive integer, got {max_iterations!r}")
+    if (
+        isinstance(max_iterations, bool)
+        or not isinstance(max_iterations, (int, np.integer))
+        or max_iterations < 1
+    ):
+        raise ValueError(
+            f"max_iterations must be a positive integer, got {max_iterations!r}"
+        )
     tol = check_positive(tol, "tol")
     if frame not in ("body", "space"):
         raise ValueError(f"frame must be 'body' or 'space', got {describe(frame)}")
@@ -87,8 +103,9 @@ def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200, frame="body", dampin
         try:
             damping = check_positive(damping, "damping", allow_zero=True)
         except (TypeError, ValueError) as error:
-            raise type(error)(f"damping must be None or a number >= 0, got {describe(damping)}") \
-                from None
+            raise type(error)(
+                f"damping must be None or a number >= 0, got {describe(damping)}"
+            ) from None
     within_limits = check_flag(within_limits, "within_limits")
     single = q.ndim == 1
     q = q[None] if single else q
@@ -103,15 +120,24 @@ def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200, frame="body", dampin
         active = norm >= tol
         if not np.any(active):
             break
-        J = chain.body_jacobian(q[active]) if frame == "body" else chain.space_jacobian(q[active])
+        J = (
+            chain.body_jacobian(q[active])
+            if frame == "body"
+            else chain.space_jacobian(q[active])
+        )
         V = error[active]
         if damping == 0:
             step = (np.linalg.pinv(J) @ V[..., None])[..., 0]
         else:
-            lam = (0.5 * np.sum(V**2, axis=-1) + 1e-9 if damping is None
-                   else np.full(len(V), float(damping)))
+            lam = (
+                0.5 * np.sum(V**2, axis=-1) + 1e-9
+                if damping is None
+                else np.full(len(V), float(damping))
+            )
             JT = np.swapaxes(J, -1, -2)
-            step = np.linalg.solve(JT @ J + lam[:, None, None] * eye, JT @ V[..., None])[..., 0]
+            step = np.linalg.solve(
+                JT @ J + lam[:, None, None] * eye, JT @ V[..., None]
+            )[..., 0]
         candidate = q[active] + step
         if within_limits:
             candidate = np.clip(candidate, low, high)
@@ -121,8 +147,12 @@ def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200, frame="body", dampin
         iterations[active] += 1
     q = _wrap_revolute(chain, q, within_limits)
     if single:
-        return NumericIKResult(q=q[0], success=bool(norm[0] < tol),
-                               iterations=int(iterations[0]), error=float(norm[0]))
+        return NumericIKResult(
+            q=q[0],
+            success=bool(norm[0] < tol),
+            iterations=int(iterations[0]),
+            error=float(norm[0]),
+        )
     return NumericIKResult(q=q, success=norm < tol, iterations=iterations, error=norm)
 
 
@@ -134,7 +164,9 @@ def _error_twist(chain, q, T, frame):
         return V
     R, p = Tq[:, :3, :3], Tq[:, :3, 3]
     omega = np.einsum("nij,nj->ni", R, V[:, :3])
-    return np.concatenate([omega, np.cross(p, omega) + np.einsum("nij,nj->ni", R, V[:, 3:])], -1)
+    return np.concatenate(
+        [omega, np.cross(p, omega) + np.einsum("nij,nj->ni", R, V[:, 3:])], -1
+    )
 
 
 def _wrap_revolute(chain, q, within_limits):

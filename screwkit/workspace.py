@@ -27,7 +27,9 @@ from ._checks import (
     check_positive,
     describe,
 )
-from ._compiled import CHUNK  # the one chunk size (a module global here: tests shrink it)
+from ._compiled import (
+    CHUNK,  # the one chunk size (a module global here: tests shrink it)
+)
 from .jacobians import ROWS, geometric_jacobian, manipulability
 
 __all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]

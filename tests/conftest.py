@@ -1,4 +1,7 @@
-"""Test configuration: the hypothesis profiles.
+"""Test configuration: the hypothesis profiles, and the fixtures the test files share.
+
+Robots and figures are fixtures, built on first use (once per session for the immutable
+chains), never at the import of a test file.
 
 ``ci`` (the default, so CI and ``make test`` use it whether or not ``CI`` is set) is
 derandomized: every run draws the same examples, so a failure in CI reproduces on any
@@ -7,7 +10,11 @@ locally: ``HYPOTHESIS_PROFILE=explore pytest tests``.
 """
 import os
 
+import numpy as np
+import pytest
 from hypothesis import HealthCheck, settings
+
+import screwkit as sk
 
 settings.register_profile(
     "ci",
@@ -19,3 +26,46 @@ settings.register_profile(
 )
 settings.register_profile("explore", max_examples=1000, deadline=None, print_blob=True)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+# ---- robots: chains are immutable, so one of each serves the whole session ----------------
+
+
+@pytest.fixture(scope="session")
+def puma():
+    """The PUMA 560 of the catalogue (Corke's standard DH model, SI units)."""
+    return sk.robots.puma560()
+
+
+@pytest.fixture(scope="session")
+def kawasaki():
+    """The Kawasaki CX210L of the catalogue."""
+    return sk.robots.kawasaki_cx210l()
+
+
+@pytest.fixture(scope="session")
+def planar_2r():
+    """A planar 2R arm with unit links (l1 = l2 = 1 m)."""
+    return sk.robots.planar([1.0, 1.0])
+
+
+@pytest.fixture
+def rng():
+    """A seeded generator: the same draws on every run."""
+    return np.random.default_rng(20241201)
+
+
+# ---- figures --------------------------------------------------------------------------------
+
+
+@pytest.fixture
+def figure():
+    """A new matplotlib figure, closed after the test (so no test sees another's figures)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure()
+    yield fig
+    plt.close(fig)
