@@ -450,6 +450,25 @@ class Chain(ChainType):
         """The generated functions, compiled on first use: {'pose' | 'axes' | 'frames': function}."""
         return {}
 
+    def source(self, outputs="pose"):
+        """The straight-line Python that computes this chain's ``outputs`` (a string).
+
+        The function ``kinematics(t, c, s)`` generated from the chain's numbers (see
+        :mod:`screwkit._compiled`): ``t`` the joint angles plus their offsets (t = q + offset;
+        the DH theta or d offsets), ``c``, ``s`` their cosines and sines; it returns the entries
+        row by row. ``outputs``: 'pose' (the 12 entries of T's top three rows), 'frames',
+        'space' or 'geometric' (the Jacobians, 6 x n) or 'axes' (each joint's twist and a
+        point, then the pose). What :meth:`fk` and the Jacobians run, as text to read.
+
+        >>> print(Chain([Link.revolute(a=1.0)]).source())  # doctest: +NORMALIZE_WHITESPACE
+        def kinematics(t, c, s):
+            c1 = c[0]
+            s1 = s[0]
+            return (c1, -1.0*s1, 0.0, c1, s1, c1, 0.0, s1, 0.0, 0.0, 1.0, 0.0,)
+        """
+        check_option(outputs, "outputs", ("pose", "frames", "space", "geometric", "axes"))
+        return self._program[0].source(outputs)
+
     def _run(self, outputs, q, rows=None, out=None):
         """Generated code ``outputs`` at q: a list of entries for (n,), else ``out[rows[k]]`` filled."""
         program, offsets = self._program

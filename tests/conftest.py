@@ -8,6 +8,7 @@ derandomized: every run draws the same examples, so a failure in CI reproduces o
 machine. ``explore`` draws fresh random examples, more of them, for hunting new bugs
 locally: ``HYPOTHESIS_PROFILE=explore pytest tests``.
 """
+
 import os
 
 import numpy as np
@@ -18,10 +19,10 @@ import screwkit as sk
 
 settings.register_profile(
     "ci",
-    derandomize=True,          # a fixed seed per test: the same examples on every run
-    database=None,             # nothing remembered between runs, nothing written to disk
-    deadline=None,             # timing on a shared 2-core machine is not a failure
-    print_blob=True,           # a failure prints the @reproduce_failure line
+    derandomize=True,  # a fixed seed per test: the same examples on every run
+    database=None,  # nothing remembered between runs, nothing written to disk
+    deadline=None,  # timing on a shared 2-core machine is not a failure
+    print_blob=True,  # a failure prints the @reproduce_failure line
     suppress_health_check=[HealthCheck.too_slow],
 )
 settings.register_profile("explore", max_examples=1000, deadline=None, print_blob=True)
