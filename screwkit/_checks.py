@@ -144,6 +144,10 @@ def as_float_array(value, name):
             raise TypeError(
                 f"{name} must be a number or an array of numbers (real ones), got {describe(value)}"
             ) from None
+        except OverflowError:
+            raise ValueError(
+                f"{name} must be finite, got an integer too large for a float (above 1.8e308) "
+                f"in {describe(value)}") from None
     check_finite(array, name)
     return array
 
@@ -249,6 +253,8 @@ def as_sympy_matrix(value, name, shape):
         if _contains_string(value):
             raise TypeError(
                 f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
+        if _contains_none(value):
+            raise TypeError(f"{name} must hold numbers or SymPy expressions, got None in {value!r}")
         try:
             matrix = sp.Matrix(value)
         except (TypeError, ValueError, sp.SympifyError, AttributeError):
@@ -296,6 +302,15 @@ def _contains_string(value):
     return isinstance(value, np.ndarray) and value.dtype.kind in "USO" and any(
         isinstance(v, (str, bytes)) for v in value.flat
     )
+
+
+def _contains_none(value):
+    if value is None:
+        return True
+    if isinstance(value, (list, tuple)):
+        return any(_contains_none(v) for v in value)
+    return isinstance(value, np.ndarray) and value.dtype.kind == "O" and any(
+        v is None for v in value.flat)
 
 
 def _exact_if_integral(entry):

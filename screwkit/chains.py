@@ -29,7 +29,8 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 
 from . import _compiled, _newton, _numeric
-from ._checks import ChainType, as_float_array, check_option, describe, is_symbolic
+from ._checks import (ChainType, as_float_array, as_sympy_scalar, check_flag, check_integer,
+                      check_option, describe, is_symbolic)
 from ._notation import textbook
 from .lie import adjoint
 from .links import (
@@ -286,10 +287,24 @@ class Chain(ChainType):
         if not self.is_dh:
             raise ValueError(f"{what} is defined for a DH chain; {self.name!r} is built from screws")
 
+    def _exact_q(self, q, name="q"):
+        """q for the exact routines: n numbers or SymPy expressions (the joint symbols if None)."""
+        if q is None:
+            return list(self.q_symbols)
+        if isinstance(q, (str, bytes)) or not isinstance(q, (list, tuple, np.ndarray,
+                                                               sp.MatrixBase)):
+            raise TypeError(f"{name} must be a joint vector of {self.n} numbers or SymPy "
+                            f"expressions, got {describe(q)}")
+        values = list(q) if not isinstance(q, np.ndarray) else q.ravel().tolist()
+        if len(values) != self.n or (isinstance(q, np.ndarray) and q.ndim != 1):
+            raise ValueError(f"{name} must have {self.n} entries for this chain, got {len(values)}")
+        return [v if isinstance(v, float) else as_sympy_scalar(v, f"{name}[{i}]")
+                for i, v in enumerate(values)]
+
     def link_transforms(self, q=None):
         """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint symbols."""
         self._require_dh("link_transforms")
-        q = self.q_symbols if q is None else q
+        q = self._exact_q(q)
         return [link.transform(qi, self.convention) for link, qi in zip(self.links, q)]
 
     def length_symbols(self):
@@ -324,6 +339,9 @@ class Chain(ChainType):
         symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for lengths
         upto : (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool
         """
+        simplify = check_flag(simplify, "simplify")
+        symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
+
         def tidy(T):
             return T.applyfunc(lambda e: TR10i(sp.expand(e))) if simplify else T
 
@@ -338,8 +356,8 @@ class Chain(ChainType):
                 T = tidy(T * F)
             return T
         links = self._with_symbolic_lengths() if symbolic_lengths else self.links
-        count = self.n if upto is None else int(upto)
-        if not 0 <= count <= self.n:
+        count = self.n if upto is None else check_integer(upto, "upto", minimum=0)
+        if count > self.n:
             raise ValueError(f"upto must be between 0 and {self.n}, got {upto!r}")
         full = upto is None
         T = exact_matrix(self.base) if full else sp.eye(4)
@@ -352,6 +370,7 @@ class Chain(ChainType):
     def frames_symbolic(self, symbolic_lengths=False):
         """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain: n + 1 SymPy matrices."""
         self._require_dh("frames_symbolic")
+        symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
         base = exact_matrix(self.base)
         return [(base * self.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k)).applyfunc(sp.expand)
                 for k in range(self.n + 1)]
@@ -372,9 +391,9 @@ class Chain(ChainType):
         the model (lengths, pitches, base, tool, home) is read as the exact decimal it prints as
         (0.4318 -> 2159/5000) before any product, so no round-off term can appear.
         """
-        q = self.q_symbols if q is None else list(q)
-        if len(q) != self.n:
-            raise ValueError(f"q must have {self.n} entries for this chain, got {len(q)}")
+        q = self._exact_q(q)
+        symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
+        rational = check_flag(rational, "rational")
         values = dict(zip(self.q_symbols, [decimal(v) if isinstance(v, float) else v for v in q]))
         base = exact_matrix(self.base)
         if rational:
@@ -406,12 +425,18 @@ class Chain(ChainType):
         Exact q (SymPy numbers or symbols; the model's decimals and float entries of q are read
         as the exact decimals they print as): a :class:`~screwkit.systems.ScrewSystem` of Twists,
         so that ``.rank`` and ``.reciprocal()`` give a singular configuration's lost freedoms
-        and the wrenches the structure bears without motors. Numeric q (n,) or (N, n): the
-        (n, 6) / (N, n, 6) array of the space Jacobian's columns.
+        and the wrenches the structure bears without motors. Numeric q (n,): the same
+        ScrewSystem, of float twists, whose rank is by SVD with its tolerance (1e-9 relative,
+        :mod:`screwkit.systems`), as :func:`screwkit.mobility` does. A batch (N, n): the
+        (N, n, 6) array of the space Jacobians' columns (``space_jacobian(q).T`` is one
+        configuration's (n, 6) array).
         """
         if is_symbolic(q):
             return ScrewSystem([Twist(t) for t in self.twists_symbolic(q, rational=True)])
-        return np.swapaxes(self.space_jacobian(q), -1, -2)
+        twists = np.swapaxes(self.space_jacobian(q), -1, -2)
+        if twists.ndim == 3:
+            return twists
+        return ScrewSystem([Twist(t) for t in twists])
 
     # ---- fast -----------------------------------------------------------------------------
 

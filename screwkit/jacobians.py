@@ -22,7 +22,7 @@ used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) 
 import numpy as np
 import sympy as sp
 
-from ._checks import check_chain
+from ._checks import as_sympy_matrix, check_chain, check_flag, describe
 from ._compiled import in_chunks
 from .chains import ROWS, check_rows  # noqa: F401  (ROWS re-exported: sk.jacobians.ROWS)
 from .links import Joint
@@ -99,17 +99,18 @@ def numerical_jacobian(chain, q, h=1e-6):
 def _symbolic_point(chain, point, end, frames):
     if point is None:
         return end[:3, 3]
-    if isinstance(point, (int, np.integer)) and not isinstance(point, bool):
+    if isinstance(point, (bool, np.bool_, float, np.floating, str, bytes, complex)) \
+            or (isinstance(point, sp.Basic) and not isinstance(point, sp.MatrixBase)):
+        raise TypeError(f"point must be a frame number (an integer), a 3-vector or None, "
+                        f"got {describe(point)}")
+    if isinstance(point, (int, np.integer)):
         if frames is None:
             raise ValueError("point must be None or a 3-vector for a chain built from screws "
                              f"(it has no DH frames), got {point!r}")
         if not 0 <= point <= chain.n:
             raise ValueError(f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}")
         return frames[point][:3, 3]
-    p = sp.Matrix(point)
-    if p.shape not in ((3, 1), (1, 3)):
-        raise ValueError(f"point must be a frame number, a 3-vector or None, got shape {p.shape}")
-    return p.reshape(3, 1)
+    return as_sympy_matrix(point, "point", (3, 1))
 
 
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
@@ -124,6 +125,7 @@ def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     (v_i + omega_i x p; omega_i).
     """
     check_chain(chain)
+    symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
     frames = chain.frames_symbolic(symbolic_lengths) if chain.is_dh else None
     end = chain.fk_symbolic(symbolic_lengths=symbolic_lengths) if chain.is_dh else chain.fk_symbolic()
     p = _symbolic_point(chain, point, end, frames)

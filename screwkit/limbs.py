@@ -117,11 +117,21 @@ def parallelogram(s, a1, a2, b1, b2):
     return [(s.copy(), corner, 0) for corner in corners]
 
 
+def _check_limb(limb, name="limb"):
+    """A limb: a list of (s, r, h) triples, as every builder here returns."""
+    if not isinstance(limb, (list, tuple)) or not all(
+            isinstance(joint, (list, tuple)) and len(joint) == 3 for joint in limb):
+        raise TypeError(f"{name} must be a list of (s, r, h) triples (e.g. revolute(s, r) + "
+                        f"prismatic(s)), got {describe(limb)}")
+    return limb
+
+
 def rotate_limb(limb, R):
     """The limb turned by the rotation matrix R (3x3) about the origin of the fixed frame.
 
     R must be a rotation (orthonormal, determinant +1): a scaling or a reflection is refused.
     """
+    _check_limb(limb)
     if not (isinstance(R, sp.MatrixBase) and _exact_rotation(R)):
         R = check_rotation(R, "R")  # refuses a scaling or a reflection, with the reason
     rows = as_sympy_matrix(R, "R", (3, 3)).tolist()
@@ -151,5 +161,6 @@ _EXACT_ROTATIONS = {}
 
 def translate_limb(limb, p):
     """The limb moved by the vector p."""
+    _check_limb(limb)
     p = _vec(p, "p")
     return [(_vec(s, "s"), _vec(r, "r") + p, h) for s, r, h in limb]
