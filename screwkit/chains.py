@@ -285,7 +285,8 @@ class Chain(ChainType):
 
     def _require_dh(self, what):
         if not self.is_dh:
-            raise ValueError(f"{what} is defined for a DH chain; {self.name!r} is built from screws")
+            raise ValueError(f"{what} is defined for a DH chain; {self.name!r} is built from "
+                             "screws (it must be built by Chain(links) or Chain.from_table)")
 
     def _exact_q(self, q, name="q"):
         """q for the exact routines: n numbers or SymPy expressions (the joint symbols if None)."""
@@ -381,6 +382,9 @@ class Chain(ChainType):
         Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
         """
         self._require_dh("joint_frames")
+        if not isinstance(frames, (list, tuple)) or len(frames) != self.n + 1:
+            raise TypeError(f"frames must be the n + 1 = {self.n + 1} frames of "
+                            f"frames_symbolic(), got {describe(frames)}")
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
 
     def twists_symbolic(self, q=None, symbolic_lengths=False, rational=False):

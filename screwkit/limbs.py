@@ -78,7 +78,7 @@ def cylindrical(s, r):
 
 def universal(s1, s2, r):
     """U: two revolute axes s1, s2 crossing at r (they must not be parallel)."""
-    first, second = revolute(s1, r), revolute(s2, r)
+    first, second = revolute(_vec(s1, "s1"), r), revolute(_vec(s2, "s2"), r)
     if _parallel(first[0][0], second[0][0]):
         raise ValueError(f"s1 and s2 of a universal joint must not be parallel, got s1 = {list(first[0][0])} "
                          f"and s2 = {list(second[0][0])} (two parallel axes make a planar pair, not a U)")

@@ -125,9 +125,9 @@ class Screw:
 
     def _same_kind(self, other, operation):
         if not isinstance(other, Screw):
-            raise TypeError(f"cannot {operation} a {self.kind} and {describe(other)}: "
-                            f"{operation} two {self.kind}s (Twist.from_vector makes one from a "
-                            "6-vector)")
+            raise TypeError(f"cannot {operation} a {self.kind} and {describe(other)}: the other "
+                            f"operand must be a {self.kind} too (Twist.from_vector, "
+                            "Wrench.from_vector make one from a 6-vector)")
         if type(other) is not type(self):
             raise TypeError(
                 f"cannot {operation} a {self.kind} and a {other.kind}: they live in different spaces "
@@ -154,8 +154,8 @@ class Screw:
 
     def __mul__(self, scalar):
         if isinstance(scalar, Screw):
-            raise TypeError(f"cannot multiply a {self.kind} by a {scalar.kind}: scale it by one "
-                            "number, or use @ for the reciprocal product")
+            raise TypeError(f"cannot multiply a {self.kind} by a {scalar.kind}: a {self.kind} must "
+                            "be scaled by one number (use @ for the reciprocal product)")
         if isinstance(scalar, (sp.MatrixBase, list, tuple, np.ndarray)):
             raise TypeError(f"a {self.kind} is scaled by one number, got {describe(scalar)}")
         return type(self)(self.vector * as_sympy_scalar(scalar, "scalar"))

@@ -72,7 +72,10 @@ class Sweep:
 
     def configurations(self, start=0, stop=None):
         """The joint vectors of grid points start..stop-1 in C order: shape (stop - start, n)."""
-        stop = self.size if stop is None else stop
+        start = check_integer(start, "start", minimum=0)
+        stop = self.size if stop is None else check_integer(stop, "stop", minimum=start)
+        if stop > self.size:
+            raise ValueError(f"stop must be at most the grid's size {self.size}, got {stop}")
         index = np.unravel_index(np.arange(start, stop), self.shape)
         q = np.empty((stop - start, self.chain.n))
         q[:] = self.fixed
