@@ -25,6 +25,7 @@ axis, and any intermediate frame the chain asks to record (its link frames).
 import math
 import re
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -81,6 +82,14 @@ def exponential_coefficients(twist):
     return K1, Kc, Ks, Kt
 
 
+class JointFactor(NamedTuple):
+    """One joint of a Program: exp([twist] theta_k) post, and a point on the axis (drawing)."""
+
+    twist: np.ndarray   # X_k (6,), a unit twist in the frame just before the joint
+    post: np.ndarray    # C_k (4, 4), the constant after the exponential
+    point: np.ndarray   # (3,) a point of the axis in that frame
+
+
 @dataclass(frozen=True)
 class Term:
     """coefficient * f1 * f2 * ...: a number times a product of named values.
@@ -116,18 +125,19 @@ class Program:
     Parameters
     ----------
     start : (4, 4) the constant C_0
-    joints : list of (twist (6,), post (4, 4), point (3,)): X_k, the constant C_k after the
+    factors : list of (twist (6,), post (4, 4), point (3,)) per joint, a JointFactor: X_k, the
+        constant C_k after the
         exponential, and a point on the joint axis in the frame just before it
     marks : dict {k: (4, 4) offset}: record the frame reached after joint k (k = 0 before any
         joint) times the offset, as a link frame
     """
 
-    def __init__(self, start, joints, marks=None):
+    def __init__(self, start, factors, marks=None):
         self.start = np.asarray(start, dtype=float)
-        self.joints = [(np.asarray(x, dtype=float), np.asarray(c, dtype=float), np.asarray(r, dtype=float))
-                       for x, c, r in joints]
+        self.factors = [JointFactor(np.asarray(x, dtype=float), np.asarray(c, dtype=float),
+                                    np.asarray(r, dtype=float)) for x, c, r in factors]
         self.marks = dict(marks or {})
-        self.n = len(self.joints)
+        self.n = len(self.factors)
 
     # ---- code generation -------------------------------------------------------------
     # An entry of a matrix being multiplied out is a float (a constant) or a Term.
@@ -249,21 +259,21 @@ class Program:
         recorded, axes = {}, []
         if 0 in self.marks and outputs == "frames":
             recorded[0] = self._times(T, self._constant(self.marks[0]))
-        for k, (twist, post, point) in enumerate(self.joints, start=1):
+        for k, (twist, post, point) in enumerate(self.factors, start=1):
             if outputs in ("axes", "space", "geometric"):
                 axes += self._axis(T, twist, point)
             T = self._times(T, self._factor(k, twist, post))
             if k in self.marks and outputs == "frames":
                 recorded[k] = self._times(T, self._constant(self.marks[k]))
-        joints = [axes[9 * j:9 * j + 6] for j in range(self.n)]  # (omega; v) of each joint
+        twists = [axes[9 * j:9 * j + 6] for j in range(self.n)]  # (omega; v) of each joint
         if outputs == "pose":
             result = [e for row in T for e in row]
         elif outputs == "axes":
             result = axes + [e for row in T for e in row]
         elif outputs == "space":
-            result = [twist[r] for r in range(6) for twist in joints]
+            result = [twist[r] for r in range(6) for twist in twists]
         elif outputs == "geometric":
-            moved = [self._at_point(twist, [T[r][3] for r in range(3)]) for twist in joints]
+            moved = [self._at_point(twist, [T[r][3] for r in range(3)]) for twist in twists]
             result = [column[r] for r in range(6) for column in moved]
         else:
             result = [e for k in sorted(recorded) for row in recorded[k] for e in row]

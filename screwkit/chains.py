@@ -451,15 +451,15 @@ class Chain(ChainType):
             parts = [dh_factors(link, i, self.convention) for i, link in enumerate(self.links, start=1)]
             pres = [pre for pre, _, _ in parts] + [np.eye(4)]
             start = np.asarray(self.base) @ pres[0]
-            joints, marks = [], {0: np.linalg.inv(pres[0])}
+            factors, marks = [], {0: np.linalg.inv(pres[0])}
             for k, (_, twist, post) in enumerate(parts, start=1):
                 after = post @ pres[k]
                 if k == self.n:
                     after = after @ self.tool
-                joints.append((twist, after, np.zeros(3)))
+                factors.append((twist, after, np.zeros(3)))
                 marks[k] = np.linalg.inv(pres[k])
             offsets = np.array([float(link._numbers(i)[0][3]) for i, link in enumerate(self.links, 1)])
-            return _compiled.Program(start, joints, marks), offsets
+            return _compiled.Program(start, factors, marks), offsets
         home = np.asarray(self._home)
         if self.frame == "space":
             start, last = np.asarray(self.base), home @ self.tool
@@ -468,11 +468,11 @@ class Chain(ChainType):
             start, last = np.asarray(self.base) @ home, np.asarray(self.tool)
             # the screws are in end-effector coordinates: start from the base origin seen there
             points = axis_points(self._screws, -home[:3, :3].T @ home[:3, 3])
-        joints = [(S, np.eye(4), r) for S, r in zip(self._screws, points)]
-        joints[-1] = (joints[-1][0], last, joints[-1][2])
+        factors = [(S, np.eye(4), r) for S, r in zip(self._screws, points)]
+        factors[-1] = (factors[-1][0], last, factors[-1][2])
         marks = {k: translation(points[k]) for k in range(self.n)}
         marks[self.n] = np.eye(4)
-        return _compiled.Program(start, joints, marks), np.zeros(self.n)
+        return _compiled.Program(start, factors, marks), np.zeros(self.n)
 
     @cached_property
     def _functions(self):
