@@ -16,8 +16,14 @@ Matrix([[0, 0, 1, 0, -1, 0]])
 import numpy as np
 import sympy as sp
 
-from ._checks import (as_float_array, as_sympy_matrix, as_sympy_scalar, check_transform, describe,
-                      is_symbolic)
+from ._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    as_sympy_scalar,
+    check_transform,
+    describe,
+    is_symbolic,
+)
 from .lie import adjoint
 from .transforms import _is_infinite_pitch, axis_coordinates, exp_twist
 

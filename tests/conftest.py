@@ -44,12 +44,6 @@ def kawasaki():
     return sk.robots.kawasaki_cx210l()
 
 
-@pytest.fixture(scope="session")
-def planar_2r():
-    """A planar 2R arm with unit links (l1 = l2 = 1 m)."""
-    return sk.robots.planar([1.0, 1.0])
-
-
 @pytest.fixture
 def rng():
     """A seeded generator: the same draws on every run."""

@@ -9,7 +9,6 @@ from hypothesis.extra.numpy import arrays
 import screwkit as sk
 from screwkit.transforms import rotx, roty, rotz, transl
 
-
 A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
 joint_vectors = arrays(float, 6, elements=st.floats(-np.pi, np.pi, allow_nan=False))
 

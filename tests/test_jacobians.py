@@ -8,7 +8,6 @@ import screwkit as sk
 from screwkit import jacobians
 
 
-
 def mixed(convention):
     """A chain with a prismatic joint, a base and a tool, in either DH convention."""
     links = [sk.Link.revolute(d=0.3, a=0.2, alpha=0.4), sk.Link.prismatic(a=0.1, alpha=-1.2),
