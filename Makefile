@@ -86,7 +86,7 @@ notebooks: $(STAMP)
 ## and .ci, with the rules of pyproject.toml [tool.ruff]
 LINTED := screwkit tests .ci
 lint: $(STAMP)
-	@test -x $(BIN)/ruff || $(BIN)/python -m pip install --quiet --requirement .ci/lint-requirements.txt
+	$(BIN)/python -m pip install --quiet --requirement .ci/lint-requirements.txt
 	$(BIN)/ruff check $(LINTED)
 	$(BIN)/ruff format --check $(LINTED)
 
