@@ -47,6 +47,9 @@ import numpy as np
 from ._checks import check_chain
 from ._compiled import CHUNK
 from .links import Joint
+from .subproblems import _cross_fixed as _cross3
+from .subproblems import _dot_batch as _dot
+from .subproblems import distance_angles, plane_angles
 from .transforms import _skew, _wrap_angle, inv
 
 __all__ = ["CONFIGURATIONS", "SphericalWristArm", "WRIST_TOL"]
@@ -129,20 +132,9 @@ def _polar(y, x):
     return np.arctan2(y, x), np.where(h > 0, x / safe, 1.0), y / safe
 
 
-def _dot(w, v):
-    """w . v for a fixed w (3,) and vectors v (3, ...): one matrix product."""
-    return (w @ v.reshape(3, -1)).reshape(v.shape[1:])
-
-
 def _apply(K, v):
     """K @ v for a fixed K (3, 3) and vectors v (3, ...)."""
     return (K @ v.reshape(3, -1)).reshape(v.shape)
-
-
-def _cross3(a, b):
-    """a x b for two single 3-vectors (np.cross costs more than the arithmetic here)."""
-    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                     a[0] * b[1] - a[1] * b[0]])
 
 
 class _Rotor:
@@ -312,16 +304,9 @@ class SphericalWristArm:
         plane w2 . x = w2 . c; two angles (N, 2), the arm l and r."""
         w, p, c = self.w, self.p, self.c
         w1, w2 = w[0], w[1]
-        along1 = _dot(w1, d)
-        A = _dot(w2, d) - along1 * (w1 @ w2)
-        B = _dot(_cross3(w2, w1), d)
-        C = w2 @ (c - p[0]) - along1 * (w2 @ w1)
-        rho2 = A**2 + B**2
-        excess = rho2 - C**2
+        phi, half, excess, rho2 = plane_angles(w1, w2, w2 @ (c - p[0]), d)
         ok = excess >= -CLIP_TOL * self.scale**2
         forward = np.sqrt(np.maximum(excess, 0.0))
-        phi = np.arctan2(B, A)
-        half = np.arctan2(forward, C)
         free = rho2 < (CLIP_TOL * self.scale) ** 2  # the wrist centre on axis 1
         theta = np.stack([phi - half, phi + half], axis=1)  # (N, 2): arm l, r
         theta = np.where(free[:, None], 0.0, theta)
@@ -340,13 +325,12 @@ class SphericalWristArm:
         s3 = 1.0 if w2 @ w[2] > 0 else -1.0  # axis 3 is +-w2
         u3 = c - p[2] - w2 * (w2 @ (c - p[2]))
         v3 = p[1] - p[2] - w2 * (w2 @ (p[1] - p[2]))
-        lu, lv = np.linalg.norm(u3), np.linalg.norm(v3)
         delta2 = np.sum(b1**2, axis=0) - (w2 @ (c - p[1])) ** 2
-        cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
+        theta0, cosine = distance_angles(w2, u3, v3, delta2)
         ok = np.abs(cosine) <= 1 + CLIP_TOL
         cosine = np.clip(cosine, -1.0, 1.0)
         beta = np.arccos(cosine)
-        theta0 = s3 * np.arctan2(_cross3(u3, v3) @ w2, u3 @ v3)
+        theta0 = s3 * theta0
         q3 = theta0 + s3 * np.stack([-beta, beta], axis=-1)  # (N, 2, 2): arm, candidate
         return _Elbow(q3, s3, u3, cosine, ok)
 
