@@ -92,12 +92,6 @@ def _is_infinite_pitch(h):
             and bool(np.isposinf(h)))
 
 
-def _axis_point(w, v):
-    """The point of the axis of the twist (w; v) nearest the origin, w x v / (w . w), for
-    float arrays of shape (..., 3) with w != 0 (the pitch term drops out of the cross)."""
-    return np.cross(w, v) / np.sum(w * w, axis=-1, keepdims=True)
-
-
 def axis_coordinates(s, r, h):
     """The screw coordinates of an axis: (s; r x s + h s), or (0; s) for the pitch h = oo.
 
