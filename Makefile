@@ -12,7 +12,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(abspath $(BIN)):$(PATH)
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: book test lab site-check bench notebooks check-sources clean
+.PHONY: book test lab site-check bench notebooks check-sources lint clean
 
 $(STAMP): requirements.txt pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -c '$(SUPPORTED)' 2>/dev/null || { echo "make: .venv needs\
@@ -81,6 +81,14 @@ clean:
 ## and store its outputs (review the diff after)
 notebooks: $(STAMP)
 	$(BIN)/python tools/execute_notebooks.py
+
+## make lint: ruff (pinned in .ci/lint-requirements.txt) checks and format-checks screwkit, tests
+## and .ci, with the rules of pyproject.toml [tool.ruff]
+LINTED := screwkit tests .ci
+lint: $(STAMP)
+	$(BIN)/python -m pip install --quiet --requirement .ci/lint-requirements.txt
+	$(BIN)/ruff check $(LINTED)
+	$(BIN)/ruff format --check $(LINTED)
 
 ## make check-sources: every .ipynb's inputs equal its .md source; code lines at most 88 chars
 check-sources: $(STAMP)

@@ -144,6 +144,10 @@ def as_float_array(value, name):
             raise TypeError(
                 f"{name} must be a number or an array of numbers (real ones), got {describe(value)}"
             ) from None
+        except OverflowError:
+            raise ValueError(
+                f"{name} must be finite, got an integer too large for a float (above 1.8e308) "
+                f"in {describe(value)}") from None
     check_finite(array, name)
     return array
 
@@ -184,6 +188,13 @@ def check_integer(value, name, minimum=None):
     return int(value)
 
 
+def check_flag(value, name):
+    """``value`` as a bool if it is True or False (NumPy's too), else a ``TypeError``."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be True or False, got {describe(value)}")
+    return bool(value)
+
+
 def check_option(value, name, options):
     """``value`` if it is one of ``options`` (strings or None), else a ``ValueError`` naming them."""
     if isinstance(value, (str, type(None))) and value in options:
@@ -193,11 +204,22 @@ def check_option(value, name, options):
     raise error(f"{name} must be one of {listed}, got {describe(value)}")
 
 
-def check_chain(value, name="chain"):
-    """``value`` if it is a screwkit Chain, else a ``TypeError`` naming ``name``."""
-    from .chains import Chain   # here, not at the top: chains imports this module
+class ChainType:
+    """The type the checks recognise as a chain: :class:`screwkit.Chain` derives from it.
 
-    if not isinstance(value, Chain):
+    The checks are the lowest layer and the chains a higher one: this marker lets
+    :func:`check_chain` recognise a chain without importing the layer above it.
+    """
+
+    __slots__ = ()
+
+
+def check_chain(value, name="chain"):
+    """``value`` if it is a screwkit Chain, else a ``TypeError`` naming ``name``.
+
+    The one check (and the one message) of every function that takes a chain.
+    """
+    if not isinstance(value, ChainType):
         raise TypeError(
             f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got {describe(value)}")
     return value
@@ -231,6 +253,8 @@ def as_sympy_matrix(value, name, shape):
         if _contains_string(value):
             raise TypeError(
                 f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
+        if _contains_none(value):
+            raise TypeError(f"{name} must hold numbers or SymPy expressions, got None in {value!r}")
         try:
             matrix = sp.Matrix(value)
         except (TypeError, ValueError, sp.SympifyError, AttributeError):
@@ -278,6 +302,15 @@ def _contains_string(value):
     return isinstance(value, np.ndarray) and value.dtype.kind in "USO" and any(
         isinstance(v, (str, bytes)) for v in value.flat
     )
+
+
+def _contains_none(value):
+    if value is None:
+        return True
+    if isinstance(value, (list, tuple)):
+        return any(_contains_none(v) for v in value)
+    return isinstance(value, np.ndarray) and value.dtype.kind == "O" and any(
+        v is None for v in value.flat)
 
 
 def _exact_if_integral(entry):
@@ -356,4 +389,17 @@ def check_transform(transform, name="T"):
         first = bad[~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=1e-12), axis=-1)][0]
         raise ValueError(f"{name} must have last row [0, 0, 0, 1], got {first.tolist()}")
     check_rotation(T[..., :3, :3], f"the rotation block of {name}")
+    return T
+
+
+def check_poses(T, name="T", single_only=False):
+    """``T`` as float64 (4, 4) or (N, 4, 4) rigid transforms (one pose if ``single_only``)."""
+    if isinstance(T, (str, bytes)) or T is None:
+        raise TypeError(f"{name} must be a 4x4 pose or an (N, 4, 4) batch, got {describe(T)}")
+    T = as_float_array(T, name)
+    if T.ndim not in (2, 3):
+        raise ValueError(f"{name} must have shape (4, 4) or (N, 4, 4), got shape {T.shape}")
+    T = check_transform(T, name)
+    if single_only and T.ndim != 2:
+        raise ValueError(f"{name} must be one pose of shape (4, 4), got shape {T.shape}")
     return T

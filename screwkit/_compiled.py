@@ -24,14 +24,36 @@ axis, and any intermediate frame the chain asks to record (its link frames).
 """
 import math
 import re
+from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
+
+from .transforms import _skew
 
 #: Coefficients this close to 0 or +-1 are taken as exact (cos(pi/2) computes as 6e-17).
 SNAP = 1e-14
 
-#: Configurations evaluated per chunk of a batch, so that temporaries stay in the cache.
+#: Configurations per chunk of a batch: the one chunk size of screwkit (the generated code,
+#: the Jacobians and their measures, the closed-form IK, the workspace sweeps). The temporaries
+#: of a chunk stay in the cache, and the memory of a big batch stays bounded.
 CHUNK = 8192
+
+
+def in_chunks(batch, function, out=None):
+    """``function(part)`` over chunks of :data:`CHUNK` rows of ``batch`` (N, ...).
+
+    With ``out`` (an array of N rows), each result is written into its rows and ``out`` is
+    returned; without, the results are concatenated (one call for a batch of one chunk).
+    """
+    if out is None:
+        if batch.shape[0] <= CHUNK:
+            return function(batch)
+        return np.concatenate([function(batch[k:k + CHUNK])
+                               for k in range(0, batch.shape[0], CHUNK)])
+    for k in range(0, batch.shape[0], CHUNK):
+        out[k:k + CHUNK] = function(batch[k:k + CHUNK])
+    return out
 
 
 def _snap(array):
@@ -53,11 +75,48 @@ def exponential_coefficients(twist):
         K1[:3, :3] = np.eye(3)
         Kt[:3, 3] = v
         return K1, Kc, Ks, Kt
-    W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    W = _skew(w)
     W2 = W @ W
     K1[:3, :3], Ks[:3, :3], Kc[:3, :3] = np.eye(3) + W2, W, -W2
     K1[:3, 3], Kt[:3, 3], Kc[:3, 3], Ks[:3, 3] = W @ v, v + W2 @ v, -(W @ v), -(W2 @ v)
     return K1, Kc, Ks, Kt
+
+
+class JointFactor(NamedTuple):
+    """One joint of a Program: exp([twist] theta_k) post, and a point on the axis (drawing)."""
+
+    twist: np.ndarray   # X_k (6,), a unit twist in the frame just before the joint
+    post: np.ndarray    # C_k (4, 4), the constant after the exponential
+    point: np.ndarray   # (3,) a point of the axis in that frame
+
+
+@dataclass(frozen=True)
+class Term:
+    """coefficient * f1 * f2 * ...: a number times a product of named values.
+
+    The names are those of the generated code: ``c3``, ``s3``, ``t3`` (cos, sin and the angle
+    of joint 3) and ``e12`` (an earlier line). No factors: the constant ``coefficient``.
+    """
+
+    coefficient: float
+    factors: tuple = ()
+
+    def times(self, other):
+        """The product of two terms (coefficients multiplied, factors side by side)."""
+        return Term(self.coefficient * other.coefficient, self.factors + other.factors)
+
+    def negated(self):
+        return Term(-self.coefficient, self.factors)
+
+    def magnitude_text(self):
+        """|coefficient| * factors as code: 'c1*e4', or '0.4318*c1*e4'."""
+        product, size = "*".join(self.factors), abs(self.coefficient)
+        return product if size == 1.0 else f"{size!r}*{product}"
+
+    def text(self):
+        """The term as code, sign included: 'e4', '-1.0*c2', '0.4318*s1'."""
+        product = "*".join(self.factors)
+        return product if self.coefficient == 1.0 else f"{self.coefficient!r}*{product}"
 
 
 class Program:
@@ -66,20 +125,22 @@ class Program:
     Parameters
     ----------
     start : (4, 4) the constant C_0
-    joints : list of (twist (6,), post (4, 4), point (3,)): X_k, the constant C_k after the
+    factors : list of (twist (6,), post (4, 4), point (3,)) per joint, a JointFactor: X_k, the
+        constant C_k after the
         exponential, and a point on the joint axis in the frame just before it
     marks : dict {k: (4, 4) offset}: record the frame reached after joint k (k = 0 before any
         joint) times the offset, as a link frame
     """
 
-    def __init__(self, start, joints, marks=None):
+    def __init__(self, start, factors, marks=None):
         self.start = np.asarray(start, dtype=float)
-        self.joints = [(np.asarray(x, dtype=float), np.asarray(c, dtype=float), np.asarray(r, dtype=float))
-                       for x, c, r in joints]
+        self.factors = [JointFactor(np.asarray(x, dtype=float), np.asarray(c, dtype=float),
+                                    np.asarray(r, dtype=float)) for x, c, r in factors]
         self.marks = dict(marks or {})
-        self.n = len(self.joints)
+        self.n = len(self.factors)
 
     # ---- code generation -------------------------------------------------------------
+    # An entry of a matrix being multiplied out is a float (a constant) or a Term.
 
     def _new(self, expression):
         name = f"e{self._count}"
@@ -87,53 +148,42 @@ class Program:
         self._lines.append(f"    {name} = {expression}")
         return name
 
-    # An entry is a float (a constant) or a pair (coefficient, name): coefficient * variable.
-
     def _combine(self, terms):
-        """The sum of ``terms``, each (coefficient, factor) with factor a product of names or None.
+        """The sum of ``terms`` (Terms; a Term without factors is a constant).
 
-        Returns a float when nothing variable remains, (coefficient, name) for a single
-        scaled factor, otherwise (1.0, name of a new line).
+        Returns a float when nothing variable remains, the Term itself for a single scaled
+        name, otherwise Term(1.0, (name of a new line,)).
         """
         constant, parts = 0.0, []
-        for coefficient, factor in terms:
-            coefficient = float(coefficient)
+        for term in terms:
+            coefficient = float(term.coefficient)
             if coefficient == 0.0:
                 continue
-            if factor is None:
+            if not term.factors:
                 constant += coefficient
             else:
-                parts.append((coefficient, factor))
+                parts.append(Term(coefficient, term.factors))
         if not parts:
             return constant
-        if constant == 0.0 and len(parts) == 1 and "*" not in parts[0][1]:
+        if constant == 0.0 and len(parts) == 1 and len(parts[0].factors) == 1:
             return parts[0]
-        pieces = []
-        for coefficient, factor in parts:
-            sign = "-" if coefficient < 0 else "+"
-            size = abs(coefficient)
-            pieces.append(f"{sign} {factor}" if size == 1.0 else f"{sign} {size!r}*{factor}")
+        pieces = [(part.coefficient < 0, part.magnitude_text()) for part in parts]
         if constant != 0.0:
-            pieces.append(f"{'-' if constant < 0 else '+'} {abs(constant)!r}")
-        expression = " ".join(pieces)
-        expression = expression[2:] if expression.startswith("+ ") else "-" + expression[2:]
-        return 1.0, self._new(expression)
+            pieces.append((constant < 0, repr(abs(constant))))
+        (negative, first), rest = pieces[0], pieces[1:]
+        expression = " ".join([("-" if negative else "") + first]
+                              + [f"{'-' if minus else '+'} {text}" for minus, text in rest])
+        return Term(1.0, (self._new(expression),))
 
     @staticmethod
     def _term(entry):
-        """An entry as one (coefficient, factor) term."""
-        return (entry, None) if isinstance(entry, float) else entry
+        """An entry as one Term (a constant has no factors)."""
+        return Term(entry, ()) if isinstance(entry, float) else entry
 
     @staticmethod
     def _product(a, b):
-        """(coefficient, factor) of the product of two entries."""
-        if isinstance(a, float) and isinstance(b, float):
-            return a * b, None
-        if isinstance(a, float):
-            return a * b[0], b[1]
-        if isinstance(b, float):
-            return b * a[0], a[1]
-        return a[0] * b[0], f"{a[1]}*{b[1]}"
+        """The Term of the product of two entries."""
+        return Program._term(a).times(Program._term(b))
 
     def _times(self, T, F):
         """T (3x4 entries) times F (4x4 entries, last row 0 0 0 1)."""
@@ -159,7 +209,8 @@ class Program:
         for r in range(4):
             row = []
             for j in range(4):
-                terms = [(K1[r, j], None), (Kc[r, j], f"c{k}"), (Ks[r, j], f"s{k}"), (Kt[r, j], f"t{k}")]
+                terms = [Term(K1[r, j], ()), Term(Kc[r, j], (f"c{k}",)),
+                         Term(Ks[r, j], (f"s{k}",)), Term(Kt[r, j], (f"t{k}",))]
                 row.append(self._combine(terms))
             entries.append(row)
         return entries
@@ -177,7 +228,7 @@ class Program:
         moment = []
         for r, (a, b, c, d) in enumerate([(1, 2, 2, 1), (2, 0, 0, 2), (0, 1, 1, 0)]):
             ab, cd = self._product(p[a], omega[b]), self._product(p[c], omega[d])
-            moment.append(self._combine([self._term(linear[r]), ab, (-cd[0], cd[1])]))
+            moment.append(self._combine([self._term(linear[r]), ab, cd.negated()]))
         located = [self._combine([self._product(G[r][j], float(point[j])) for j in range(3)]
                                  + [self._term(p[r])]) for r in range(3)]
         return omega + moment + located
@@ -188,15 +239,12 @@ class Program:
         linear = []
         for r, (a, b, c, d) in enumerate([(1, 2, 2, 1), (2, 0, 0, 2), (0, 1, 1, 0)]):
             ab, cd = self._product(omega[a], p[b]), self._product(omega[c], p[d])
-            linear.append(self._combine([self._term(v[r]), ab, (-cd[0], cd[1])]))
+            linear.append(self._combine([self._term(v[r]), ab, cd.negated()]))
         return linear + omega
 
     @staticmethod
     def _text(entry):
-        if isinstance(entry, float):
-            return repr(entry)
-        coefficient, name = entry
-        return name if coefficient == 1.0 else f"{coefficient!r}*{name}"
+        return repr(entry) if isinstance(entry, float) else entry.text()
 
     def source(self, outputs):
         """Python source of ``kinematics(t, c, s)`` returning a tuple of entries.
@@ -211,21 +259,21 @@ class Program:
         recorded, axes = {}, []
         if 0 in self.marks and outputs == "frames":
             recorded[0] = self._times(T, self._constant(self.marks[0]))
-        for k, (twist, post, point) in enumerate(self.joints, start=1):
+        for k, (twist, post, point) in enumerate(self.factors, start=1):
             if outputs in ("axes", "space", "geometric"):
                 axes += self._axis(T, twist, point)
             T = self._times(T, self._factor(k, twist, post))
             if k in self.marks and outputs == "frames":
                 recorded[k] = self._times(T, self._constant(self.marks[k]))
-        joints = [axes[9 * j:9 * j + 6] for j in range(self.n)]  # (omega; v) of each joint
+        twists = [axes[9 * j:9 * j + 6] for j in range(self.n)]  # (omega; v) of each joint
         if outputs == "pose":
             result = [e for row in T for e in row]
         elif outputs == "axes":
             result = axes + [e for row in T for e in row]
         elif outputs == "space":
-            result = [twist[r] for r in range(6) for twist in joints]
+            result = [twist[r] for r in range(6) for twist in twists]
         elif outputs == "geometric":
-            moved = [self._at_point(twist, [T[r][3] for r in range(3)]) for twist in joints]
+            moved = [self._at_point(twist, [T[r][3] for r in range(3)]) for twist in twists]
             result = [column[r] for r in range(6) for column in moved]
         else:
             result = [e for k in sorted(recorded) for row in recorded[k] for e in row]

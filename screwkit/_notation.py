@@ -1,5 +1,9 @@
 """Textbook notation for exact kinematics: cos(q1) -> c1, sin(q2 + q3) -> s23."""
+import numbers
+
 import sympy as sp
+
+from ._checks import describe
 
 __all__ = ["textbook"]
 
@@ -12,7 +16,14 @@ def textbook(expr, q_symbols=None, collect=True):
     """
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: textbook(e, q_symbols, collect))
+    if isinstance(expr, (str, bytes)) or not isinstance(expr, (sp.Basic, numbers.Number)):
+        raise TypeError(f"expr must be a SymPy expression or matrix (e.g. chain.fk_symbolic()), "
+                        f"got {describe(expr)}")
     expr = sp.sympify(expr)
+    if q_symbols is not None and (isinstance(q_symbols, (str, sp.Basic)) or not isinstance(
+            q_symbols, (list, tuple)) or not all(isinstance(q, sp.Symbol) for q in q_symbols)):
+        raise TypeError(f"q_symbols must be a list of SymPy symbols (e.g. chain.q_symbols), "
+                        f"got {describe(q_symbols)}")
     q_symbols = q_symbols or sorted((s for s in expr.free_symbols if str(s).startswith("q")), key=str)
     index = {q: str(q)[1:] for q in q_symbols}
     replacements, order = {}, []

@@ -41,6 +41,12 @@ def to_array(rows, name="screws"):
     return np.array([[float(e) for e in row] for row in rows], dtype=float).reshape(len(rows), -1)
 
 
+def lost_rank(sigma, m, n):
+    """True where an m x n matrix with singular values ``sigma`` (..., k), largest first, has
+    lost rank: NumPy's rank rule (``matrix_rank``) on the smallest one."""
+    return sigma[..., -1] <= sigma[..., 0] * max(m, n) * np.finfo(float).eps
+
+
 def _threshold(singular_values, tol):
     return tol * max(1.0, float(singular_values[0])) if singular_values.size else tol
 

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import as_float_array
+from .links import Joint
 
 #: Candidate steps, coarsest first: the first on which the default lies is used.
 ANGLE_STEPS = (1.0, 0.5, 0.1, 0.05, 0.01)
@@ -94,17 +95,13 @@ def _one_turn(value_deg):
     return wrapped, centre - 180.0, centre + 180.0
 
 
-def joint_sliders(chain, q=None):
+def slider_specs(chain, q=None):
     """One SliderSpec per joint of ``chain`` at ``q`` (rad / m, default zeros).
 
     Revolute (and other angular) joints in degrees, prismatic joints in metres. A revolute
     default outside its limits is wrapped by whole turns into them; ValueError if that fails.
     """
-    from .chains import Joint
-
-    q = np.zeros(chain.n) if q is None else chain.check_q(q)
-    if q.ndim != 1:
-        raise ValueError(f"q must be one configuration of shape ({chain.n},), got shape {q.shape}")
+    q = np.zeros(chain.n) if q is None else chain.check_one(q)
     specs = []
     for i, (kind, (low, high), qi) in enumerate(zip(chain.joints, chain.qlim, q), start=1):
         if kind is Joint.PRISMATIC:
@@ -138,3 +135,7 @@ def grid_values(low, high, step, name="values"):
         raise ValueError(f"{name} must be a grid low < high with (high - low) a whole number of "
                          f"steps > 0, got low={low:g}, high={high:g}, step={step:g}")
     return [round(low + k * step, 10) + 0.0 for k in range(int(round(count)) + 1)]
+
+
+#: The old name of :func:`slider_specs` (``widgets.joint_sliders`` is the widget); for one release.
+joint_sliders = slider_specs

@@ -28,14 +28,40 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _compiled
-from ._checks import as_float_array, describe
+from . import _compiled, _newton, _numeric
+from ._checks import (ChainType, as_float_array, as_sympy_scalar, check_flag, check_integer,
+                      check_option, describe, is_symbolic)
 from ._notation import textbook
-from .links import (Convention, Joint, Link, axis_points, check_convention, check_screws, decimal,
-                    dh_factors, exact_matrix, joint_kind, limits_table, rigid, translation)
-from .transforms import exp_twist
+from .lie import adjoint
+from .links import (
+    Convention,
+    Joint,
+    Link,
+    axis_points,
+    check_convention,
+    check_screws,
+    decimal,
+    dh_factors,
+    exact_matrix,
+    joint_kind,
+    limits_table,
+    rigid,
+    translation,
+)
+from .screws import Twist
+from .systems import ScrewSystem
+from .transforms import _cross, axis_coordinates, exp_twist
 
-__all__ = ["Joint", "Convention", "Link", "Chain", "textbook"]
+__all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
+
+#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n
+#: Jacobian of an arm that moves in its base's x-y plane.
+ROWS = {"all": slice(0, 6), "position": slice(0, 3), "orientation": slice(3, 6), "planar": slice(0, 2)}
+
+
+def check_rows(rows):
+    """The slice of the geometric Jacobian's rows named ``rows`` (one of :data:`ROWS`)."""
+    return ROWS[check_option(rows, "rows", tuple(ROWS))]
 
 def _numbers_out(matrix, values=None):
     """``matrix`` at ``values``, expanded; with no symbol left, trigonometric functions of sums
@@ -47,7 +73,7 @@ def _numbers_out(matrix, values=None):
     return matrix.applyfunc(lambda e: sp.radsimp(sp.expand(sp.expand_trig(e))))
 
 
-class Chain:
+class Chain(ChainType):
     """A serial chain between a fixed ``base`` and a ``tool`` transform; immutable.
 
     ``Chain(links, ...)`` describes it by a DH table; :meth:`from_table` takes the table as
@@ -86,9 +112,7 @@ class Chain:
         state["_qlim"] = limits
         named = {}
         for key, value in (configurations or {}).items():
-            named[key] = self.check_q(value, f"configurations[{key!r}]").copy()
-            if named[key].ndim != 1:
-                raise ValueError(f"configurations[{key!r}] must be one joint vector of shape ({self.n},)")
+            named[key] = self.check_one(value, f"configurations[{key!r}]").copy()
             named[key].setflags(write=False)
         state["configurations"] = types.MappingProxyType(named)
 
@@ -245,7 +269,8 @@ class Chain:
             )
         return q
 
-    def _check_one(self, q, name="q"):
+    def check_one(self, q, name="q"):
+        """``q`` as float64 of shape (n,): one configuration (a batch is refused, clearly)."""
         q = self.check_q(q, name)
         if q.ndim != 1:
             raise ValueError(f"{name} must be one configuration of shape ({self.n},), got shape {q.shape}")
@@ -260,12 +285,27 @@ class Chain:
 
     def _require_dh(self, what):
         if not self.is_dh:
-            raise ValueError(f"{what} is defined for a DH chain; {self.name!r} is built from screws")
+            raise ValueError(f"{what} is defined for a DH chain; {self.name!r} is built from "
+                             "screws (it must be built by Chain(links) or Chain.from_table)")
+
+    def _exact_q(self, q, name="q"):
+        """q for the exact routines: n numbers or SymPy expressions (the joint symbols if None)."""
+        if q is None:
+            return list(self.q_symbols)
+        if isinstance(q, (str, bytes)) or not isinstance(q, (list, tuple, np.ndarray,
+                                                               sp.MatrixBase)):
+            raise TypeError(f"{name} must be a joint vector of {self.n} numbers or SymPy "
+                            f"expressions, got {describe(q)}")
+        values = list(q) if not isinstance(q, np.ndarray) else q.ravel().tolist()
+        if len(values) != self.n or (isinstance(q, np.ndarray) and q.ndim != 1):
+            raise ValueError(f"{name} must have {self.n} entries for this chain, got {len(values)}")
+        return [v if isinstance(v, float) else as_sympy_scalar(v, f"{name}[{i}]")
+                for i, v in enumerate(values)]
 
     def link_transforms(self, q=None):
         """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint symbols."""
         self._require_dh("link_transforms")
-        q = self.q_symbols if q is None else q
+        q = self._exact_q(q)
         return [link.transform(qi, self.convention) for link, qi in zip(self.links, q)]
 
     def length_symbols(self):
@@ -300,6 +340,9 @@ class Chain:
         symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for lengths
         upto : (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool
         """
+        simplify = check_flag(simplify, "simplify")
+        symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
+
         def tidy(T):
             return T.applyfunc(lambda e: TR10i(sp.expand(e))) if simplify else T
 
@@ -314,8 +357,8 @@ class Chain:
                 T = tidy(T * F)
             return T
         links = self._with_symbolic_lengths() if symbolic_lengths else self.links
-        count = self.n if upto is None else int(upto)
-        if not 0 <= count <= self.n:
+        count = self.n if upto is None else check_integer(upto, "upto", minimum=0)
+        if count > self.n:
             raise ValueError(f"upto must be between 0 and {self.n}, got {upto!r}")
         full = upto is None
         T = exact_matrix(self.base) if full else sp.eye(4)
@@ -328,6 +371,7 @@ class Chain:
     def frames_symbolic(self, symbolic_lengths=False):
         """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain: n + 1 SymPy matrices."""
         self._require_dh("frames_symbolic")
+        symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
         base = exact_matrix(self.base)
         return [(base * self.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k)).applyfunc(sp.expand)
                 for k in range(self.n + 1)]
@@ -338,6 +382,9 @@ class Chain:
         Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
         """
         self._require_dh("joint_frames")
+        if not isinstance(frames, (list, tuple)) or len(frames) != self.n + 1:
+            raise TypeError(f"frames must be the n + 1 = {self.n + 1} frames of "
+                            f"frames_symbolic(), got {describe(frames)}")
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
 
     def twists_symbolic(self, q=None, symbolic_lengths=False, rational=False):
@@ -348,9 +395,9 @@ class Chain:
         the model (lengths, pitches, base, tool, home) is read as the exact decimal it prints as
         (0.4318 -> 2159/5000) before any product, so no round-off term can appear.
         """
-        q = self.q_symbols if q is None else list(q)
-        if len(q) != self.n:
-            raise ValueError(f"q must have {self.n} entries for this chain, got {len(q)}")
+        q = self._exact_q(q)
+        symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
+        rational = check_flag(rational, "rational")
         values = dict(zip(self.q_symbols, [decimal(v) if isinstance(v, float) else v for v in q]))
         base = exact_matrix(self.base)
         if rational:
@@ -362,12 +409,10 @@ class Chain:
             twists = []
             for kind, T in zip(self.joints, self.joint_frames(frames)):
                 z, o = T[:3, 2], T[:3, 3]
-                twists.append(sp.Matrix.vstack(z, o.cross(z)) if kind is Joint.REVOLUTE
-                              else sp.Matrix.vstack(sp.zeros(3, 1), z))
+                twists.append(axis_coordinates(z, o, 0) if kind is Joint.REVOLUTE
+                              else axis_coordinates(z, None, sp.oo))
             exact = {s: decimal(sp.sympify(v)) for s, v in lengths.items()}
             return [_numbers_out(t.xreplace(exact).subs(values)) for t in twists]
-        from .lie import adjoint
-
         screws, home = self._exact_screws, exact_matrix(self._home)
         if rational:
             screws, home = [S.applyfunc(decimal) for S in screws], home.applyfunc(decimal)
@@ -384,17 +429,18 @@ class Chain:
         Exact q (SymPy numbers or symbols; the model's decimals and float entries of q are read
         as the exact decimals they print as): a :class:`~screwkit.systems.ScrewSystem` of Twists,
         so that ``.rank`` and ``.reciprocal()`` give a singular configuration's lost freedoms
-        and the wrenches the structure bears without motors. Numeric q (n,) or (N, n): the
-        (n, 6) / (N, n, 6) array of the space Jacobian's columns.
+        and the wrenches the structure bears without motors. Numeric q (n,): the same
+        ScrewSystem, of float twists, whose rank is by SVD with its tolerance (1e-9 relative,
+        :mod:`screwkit.systems`), as :func:`screwkit.mobility` does. A batch (N, n): the
+        (N, n, 6) array of the space Jacobians' columns (``space_jacobian(q).T`` is one
+        configuration's (n, 6) array).
         """
-        from ._checks import is_symbolic
-
         if is_symbolic(q):
-            from .screws import Twist
-            from .systems import ScrewSystem
-
             return ScrewSystem([Twist(t) for t in self.twists_symbolic(q, rational=True)])
-        return np.swapaxes(self.space_jacobian(q), -1, -2)
+        twists = np.swapaxes(self.space_jacobian(q), -1, -2)
+        if twists.ndim == 3:
+            return twists
+        return ScrewSystem([Twist(t) for t in twists])
 
     # ---- fast -----------------------------------------------------------------------------
 
@@ -405,15 +451,15 @@ class Chain:
             parts = [dh_factors(link, i, self.convention) for i, link in enumerate(self.links, start=1)]
             pres = [pre for pre, _, _ in parts] + [np.eye(4)]
             start = np.asarray(self.base) @ pres[0]
-            joints, marks = [], {0: np.linalg.inv(pres[0])}
+            factors, marks = [], {0: np.linalg.inv(pres[0])}
             for k, (_, twist, post) in enumerate(parts, start=1):
                 after = post @ pres[k]
                 if k == self.n:
                     after = after @ self.tool
-                joints.append((twist, after, np.zeros(3)))
+                factors.append((twist, after, np.zeros(3)))
                 marks[k] = np.linalg.inv(pres[k])
             offsets = np.array([float(link._numbers(i)[0][3]) for i, link in enumerate(self.links, 1)])
-            return _compiled.Program(start, joints, marks), offsets
+            return _compiled.Program(start, factors, marks), offsets
         home = np.asarray(self._home)
         if self.frame == "space":
             start, last = np.asarray(self.base), home @ self.tool
@@ -422,16 +468,35 @@ class Chain:
             start, last = np.asarray(self.base) @ home, np.asarray(self.tool)
             # the screws are in end-effector coordinates: start from the base origin seen there
             points = axis_points(self._screws, -home[:3, :3].T @ home[:3, 3])
-        joints = [(S, np.eye(4), r) for S, r in zip(self._screws, points)]
-        joints[-1] = (joints[-1][0], last, joints[-1][2])
+        factors = [(S, np.eye(4), r) for S, r in zip(self._screws, points)]
+        factors[-1] = (factors[-1][0], last, factors[-1][2])
         marks = {k: translation(points[k]) for k in range(self.n)}
         marks[self.n] = np.eye(4)
-        return _compiled.Program(start, joints, marks), np.zeros(self.n)
+        return _compiled.Program(start, factors, marks), np.zeros(self.n)
 
     @cached_property
     def _functions(self):
         """The generated functions, compiled on first use: {'pose' | 'axes' | 'frames': function}."""
         return {}
+
+    def source(self, outputs="pose"):
+        """The straight-line Python that computes this chain's ``outputs`` (a string).
+
+        The function ``kinematics(t, c, s)`` generated from the chain's numbers (see
+        :mod:`screwkit._compiled`): ``t`` the joint angles plus their offsets (t = q + offset;
+        the DH theta or d offsets), ``c``, ``s`` their cosines and sines; it returns the entries
+        row by row. ``outputs``: 'pose' (the 12 entries of T's top three rows), 'frames',
+        'space' or 'geometric' (the Jacobians, 6 x n) or 'axes' (each joint's twist and a
+        point, then the pose). What :meth:`fk` and the Jacobians run, as text to read.
+
+        >>> print(Chain([Link.revolute(a=1.0)]).source())  # doctest: +NORMALIZE_WHITESPACE
+        def kinematics(t, c, s):
+            c1 = c[0]
+            s1 = s[0]
+            return (c1, -1.0*s1, 0.0, c1, s1, c1, 0.0, s1, 0.0, 0.0, 1.0, 0.0,)
+        """
+        check_option(outputs, "outputs", ("pose", "frames", "space", "geometric", "axes"))
+        return self._program[0].source(outputs)
 
     def _run(self, outputs, q, rows=None, out=None):
         """Generated code ``outputs`` at q: a list of entries for (n,), else ``out[rows[k]]`` filled."""
@@ -502,41 +567,99 @@ class Chain:
             return z, point
         return np.swapaxes(z, 0, 1), np.swapaxes(point, 0, 1)
 
-    # ---- Jacobians ------------------------------------------------------------------------
+    # ---- Jacobians: outputs of the generated program -----------------------------------------
 
-    def geometric_jacobian(self, q):
-        """Rows [v; omega] in the base frame at the end-effector point: (n,) -> (6, n), (N, n) -> (N, 6, n)."""
-        from .jacobians import geometric_jacobian
+    def _generated_jacobian(self, q, outputs):
+        """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n) or (N, 6, n)."""
+        q = self.check_q(q)
+        n, rows = self.n, 6 * self.n
+        if q.ndim == 1:
+            return np.reshape(self._run(outputs, q), (6, n))
 
-        return geometric_jacobian(self, q)
+        def part(q_part):
+            values = self._run(outputs, q_part, range(rows), np.empty((rows, q_part.shape[0])))
+            return values.reshape(6, n, -1).transpose(2, 0, 1)
+
+        return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
     def space_jacobian(self, q):
-        """Columns are the joint twists [omega; v] in the base frame: (n,) -> (6, n), (N, n) -> (N, 6, n)."""
-        from .jacobians import space_jacobian
+        """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
 
-        return space_jacobian(self, q)
+        Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i) for a
+        revolute joint about z_i through o_i (v is the velocity of the body point at the base
+        origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
+        """
+        return self._generated_jacobian(q, "space")
+
+    def geometric_jacobian(self, q):
+        """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows [v; omega].
+
+        Column i is the space twist moved to the end-effector point p: (v_i + omega_i x p; omega_i),
+        i.e. (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic one.
+        """
+        return self._generated_jacobian(q, "geometric")
 
     def body_jacobian(self, q):
-        """Columns are the joint twists [omega; v] in the end-effector frame: J_b = Ad(T^-1) J_s."""
-        from .jacobians import body_jacobian
+        """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
 
-        return body_jacobian(self, q)
+        Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
+        (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
+        """
+        def columns(q_part):
+            omega, v, _, T = self._twists_and_pose(q_part)
+            R, linear = T[:, :3], v + _cross(omega, T[:, 3][:, None])
+            rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
+            J = np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)])
+            return J if q_part.ndim == 1 else J.transpose(2, 0, 1)
+
+        q = self.check_q(q)
+        if q.ndim == 1:
+            return columns(q)
+        return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, self.n)))
+
+    def jacobian_rows(self, q, rows="all"):
+        """The rows ``rows`` (a key of :data:`ROWS`) of the geometric Jacobian: (m, n) or (N, m, n).
+
+        'planar' reads v_x, v_y in the chain's base frame.
+        """
+        selected = check_rows(rows)
+        J = self.geometric_jacobian(q)
+        if rows == "planar":
+            R = np.asarray(self.base)[:3, :3]
+            return np.einsum("ji,...jk->...ik", R, J[..., :3, :])[..., selected, :]
+        return J[..., selected, :]
+
+    def singular_values(self, q, rows="all"):
+        """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
+        check_rows(rows)
+        q = self.check_q(q)
+
+        def part(q_part):
+            return np.linalg.svd(self.jacobian_rows(q_part, rows), compute_uv=False)
+
+        return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
+
+    def lost_rank(self, sigma, rows="all"):
+        """True where the Jacobian rows with singular values ``sigma`` (..., k) have lost rank:
+        NumPy's rank rule on the smallest singular value."""
+        return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), self.n)
 
     def manipulability(self, q, rows="all"):
-        """Yoshikawa's sqrt(det(J J^T)) of the geometric Jacobian: () or (N,); 0.0 where singular.
+        """Yoshikawa's manipulability, the product of the singular values: () or (N,).
 
-        rows: 'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x,
-        v_y in the chain's base frame).
+        That is sqrt(det(J J^T)) for J with no more rows than columns (sqrt(det(J^T J)) otherwise).
+        Exactly 0.0 where J has lost rank (by NumPy's rank tolerance), so a singular
+        configuration is an answer, not noise. With rows='all' the product mixes metres and
+        radians; 'position' gives the volume factor of the velocity ellipsoid in m/s. rows:
+        'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x, v_y in
+        the chain's base frame).
         """
-        from .jacobians import manipulability
-
-        return manipulability(self, q, rows)
+        sigma = self.singular_values(q, rows)
+        return np.where(self.lost_rank(sigma, rows), 0.0, np.prod(sigma, axis=-1))[()]
 
     def numeric_ik(self, T, q0, **options):
         """Numerical inverse kinematics of this chain: see :func:`screwkit.ik.numeric_ik`."""
-        from .ik import numeric_ik
-
-        return numeric_ik(self, T, q0, **options)
+        return _newton.numeric_ik(self, T, q0, **options)
 
     # ---- product of exponentials ----------------------------------------------------------
 
@@ -559,7 +682,7 @@ class Chain:
 
         An independent route to :meth:`fk` (a loop of 4x4 exponentials), for checking.
         """
-        q = self._check_one(q)
+        q = self.check_one(q)
         T = np.eye(4)
         for S, qi in zip(self.screw_axes(), q):
             T = T @ exp_twist(S, qi)

@@ -31,13 +31,20 @@ from functools import lru_cache
 
 import numpy as np
 
-from ._checks import as_float_array, check_transform, describe
-from .chains import Chain, Joint
-from .lie import log_transform
+from ._checks import as_float_array, check_chain, check_flag, check_poses
+from ._newton import NumericIKResult, numeric_ik, pose_error
+from .robots import puma560
 from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
-from .subproblems import (Solutions, subproblem1, subproblem1_prismatic, subproblem2,
-                          subproblem3, subproblem3_prismatic, subproblem4)
-from .transforms import _wrap_angle, inv
+from .subproblems import (
+    Solutions,
+    subproblem1,
+    subproblem1_prismatic,
+    subproblem2,
+    subproblem3,
+    subproblem3_prismatic,
+    subproblem4,
+)
+from .transforms import _wrap_angle
 
 __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",
            "configuration", "puma560_ik", "puma560_ik_all", "puma560_config",
@@ -92,8 +99,6 @@ class IKSolutions(list):
 
 @lru_cache(maxsize=1)
 def _default_puma():
-    from .robots import puma560
-
     return puma560()
 
 
@@ -107,25 +112,6 @@ def _arm(chain, name="chain"):
         arm = SphericalWristArm.from_chain(chain, name)
         _ARMS[chain] = arm
         return arm
-
-
-def _poses(T, name, single_only=False):
-    """T as float64 (4, 4) or (N, 4, 4) rigid transforms, checked."""
-    if isinstance(T, (str, bytes)) or T is None:
-        raise TypeError(f"{name} must be a 4x4 pose or an (N, 4, 4) batch, got {describe(T)}")
-    T = as_float_array(T, name)
-    if T.ndim not in (2, 3):
-        raise ValueError(f"{name} must have shape (4, 4) or (N, 4, 4), got shape {T.shape}")
-    T = check_transform(T, name)
-    if single_only and T.ndim != 2:
-        raise ValueError(f"{name} must be one pose of shape (4, 4), got shape {T.shape}")
-    return T
-
-
-def _check_flag(value, name):
-    if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be True or False, got {describe(value)}")
-    return bool(value)
 
 
 def analytic_ik_all(chain, T):
@@ -143,7 +129,7 @@ def analytic_ik_all(chain, T):
         the reason). Computed in chunks, so memory stays bounded for large batches.
     """
     arm = _arm(chain)
-    T = _poses(T, "T")
+    T = check_poses(T, "T")
     Q, _, _ = arm.solve(T[None] if T.ndim == 2 else T)
     return Q[0] if T.ndim == 2 else Q
 
@@ -166,12 +152,12 @@ def analytic_ik(chain, T, within_limits=False, near=None):
         to ``near`` if given); empty with a ``reason`` when out of reach. For a batch, a list
         of IKSolutions.
     """
-    return _analytic_ik(_arm(chain), chain, _poses(T, "T"), within_limits, near)
+    return _analytic_ik(_arm(chain), chain, check_poses(T, "T"), within_limits, near)
 
 
 def _analytic_ik(arm, chain, T, within_limits, near):
     """analytic_ik for poses T already checked."""
-    within_limits = _check_flag(within_limits, "within_limits")
+    within_limits = check_flag(within_limits, "within_limits")
     if near is not None:
         near = as_float_array(near, "near")
         if near.shape != (6,):
@@ -239,7 +225,7 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
     """
     robot = _default_puma() if robot is None else robot
     arm = _arm(robot, "robot")
-    return _analytic_ik(arm, robot, _poses(T, "T", single_only=True), within_limits, near)
+    return _analytic_ik(arm, robot, check_poses(T, "T", single_only=True), within_limits, near)
 
 
 def puma560_ik_all(Ts, robot=None):
@@ -257,134 +243,5 @@ def puma560_config(q, robot=None):
     Singular cases follow the rule of :mod:`screwkit.spherical_wrist` (shoulder: 'r',
     elbow: 'd', wrist: 'f' when cos q4 >= 0), so that every label round-trips.
     """
-    robot = _default_puma() if robot is None else robot
-    q = robot.check_q(q)
-    if q.shape != (6,):
-        raise ValueError(f"q must be one joint vector of shape (6,), got shape {q.shape}")
-    return configuration(robot, q)
-
-
-# ---- numeric ------------------------------------------------------------------------------
-
-
-@dataclass
-class NumericIKResult:
-    """The result of :func:`numeric_ik`: ``q`` (n,) or (N, n) rad/m, ``success``, the
-    ``iterations`` used and the final ``error``: the norm of the error twist
-    [omega; v] theta (rad and m), one per start for a batch."""
-
-    q: np.ndarray
-    success: np.ndarray
-    iterations: np.ndarray
-    error: np.ndarray
-
-
-def pose_error(T, T_target):
-    """The twist [omega; v] theta (body frame of T) of the motion from T to T_target:
-    ``log_transform(inv(T) @ T_target)``. T, T_target: (..., 4, 4) -> (..., 6)."""
-    return log_transform(inv(check_transform(as_float_array(T, "T"), "T"))
-                         @ check_transform(as_float_array(T_target, "T_target"), "T_target"))
-
-
-def numeric_ik(chain, T, q0, tol=1e-10, max_iterations=200, frame="body", damping=None,
-               within_limits=True):
-    """Numerical inverse kinematics in twist coordinates, for any chain (DH or product of
-    exponentials; revolute, prismatic and helical joints).
-
-    Each step is Newton–Raphson on the error twist: with V = log(T(q)^-1 T*) (body frame)
-    or Ad(T(q)) V (space frame) and J the body (space) Jacobian, it solves
-    (J^T J + lambda I) dq = J^T V. Damped least squares: lambda = |V|^2 / 2 + 1e-9 by default
-    (strong far from the target and near singularities, vanishing at the solution, Sugihara
-    2011); ``damping=0`` is the plain Newton–Raphson step dq = pinv(J) V (Lynch and Park,
-    sec. 6.2.2). With ``within_limits`` every iterate is clipped into the joint limits.
-
-    Parameters
-    ----------
-    chain : Chain
-    T : array (4, 4), the target pose (m)
-    q0 : array (n,) one start, or (N, n) several starts solved together (rad, m)
-    tol : success when the norm of V is below tol (rad and m)
-    max_iterations : int >= 1
-    frame : 'body' or 'space', the frame of the error twist and the Jacobian
-    damping : None (adaptive, above) or a number lambda >= 0
-    within_limits : True (default): the answer respects the joint limits, and revolute
-        joints without limits are wrapped into (-pi, pi]; False: limits ignored, every
-        revolute angle wrapped into (-pi, pi]
-
-    Returns
-    -------
-    NumericIKResult : success is False whenever the final error is not below tol (an
-        unreachable pose never reports success)
-    """
-    if not isinstance(chain, Chain):
-        raise TypeError(f"chain must be a Chain, got {describe(chain)}")
-    T = _poses(T, "T", single_only=True)
-    q = chain.check_q(q0, "q0").copy()
-    if isinstance(max_iterations, bool) or not isinstance(max_iterations, (int, np.integer)) \
-            or max_iterations < 1:
-        raise ValueError(f"max_iterations must be a positive integer, got {max_iterations!r}")
-    if isinstance(tol, bool) or not isinstance(tol, (int, float)) or not tol > 0:
-        raise ValueError(f"tol must be a positive number, got {tol!r}")
-    if frame not in ("body", "space"):
-        raise ValueError(f"frame must be 'body' or 'space', got {frame!r}")
-    if damping is not None and (isinstance(damping, bool) or not isinstance(damping, (int, float))
-                                or not damping >= 0):
-        raise ValueError(f"damping must be None or a number >= 0, got {damping!r}")
-    within_limits = _check_flag(within_limits, "within_limits")
-    single = q.ndim == 1
-    q = q[None] if single else q
-    low, high = chain.qlim.T
-    if within_limits:
-        q = np.clip(q, low, high)
-    iterations = np.zeros(q.shape[0], dtype=int)
-    error = _error_twist(chain, q, T, frame)
-    norm = np.linalg.norm(error, axis=-1)
-    eye = np.eye(chain.n)
-    for _ in range(max_iterations):
-        active = norm >= tol
-        if not np.any(active):
-            break
-        J = chain.body_jacobian(q[active]) if frame == "body" else chain.space_jacobian(q[active])
-        V = error[active]
-        if damping == 0:
-            step = (np.linalg.pinv(J) @ V[..., None])[..., 0]
-        else:
-            lam = (0.5 * np.sum(V**2, axis=-1) + 1e-9 if damping is None
-                   else np.full(len(V), float(damping)))
-            JT = np.swapaxes(J, -1, -2)
-            step = np.linalg.solve(JT @ J + lam[:, None, None] * eye, JT @ V[..., None])[..., 0]
-        candidate = q[active] + step
-        if within_limits:
-            candidate = np.clip(candidate, low, high)
-        q[active] = candidate
-        error[active] = _error_twist(chain, candidate, T, frame)
-        norm[active] = np.linalg.norm(error[active], axis=-1)
-        iterations[active] += 1
-    q = _wrap_revolute(chain, q, within_limits)
-    if single:
-        return NumericIKResult(q=q[0], success=bool(norm[0] < tol),
-                               iterations=int(iterations[0]), error=float(norm[0]))
-    return NumericIKResult(q=q, success=norm < tol, iterations=iterations, error=norm)
-
-
-def _error_twist(chain, q, T, frame):
-    """V (N, 6): the twist from T(q) to T, in the body frame or the space frame."""
-    Tq = chain.fk(q)
-    V = log_transform(inv(Tq) @ T)
-    if frame == "body":
-        return V
-    R, p = Tq[:, :3, :3], Tq[:, :3, 3]
-    omega = np.einsum("nij,nj->ni", R, V[:, :3])
-    return np.concatenate([omega, np.cross(p, omega) + np.einsum("nij,nj->ni", R, V[:, 3:])], -1)
-
-
-def _wrap_revolute(chain, q, within_limits):
-    """Revolute angles into (-pi, pi] (with limits: only those the wrap keeps inside them)."""
-    revolute = np.array([j is Joint.REVOLUTE for j in chain.joints])
-    wrapped = q.copy()
-    wrapped[..., revolute] = _wrap_angle(q[..., revolute])
-    if within_limits:
-        low, high = chain.qlim.T
-        keep = (wrapped >= low) & (wrapped <= high)
-        wrapped = np.where(keep, wrapped, q)
-    return wrapped
+    robot = _default_puma() if robot is None else check_chain(robot, "robot")
+    return configuration(robot, robot.check_one(q))

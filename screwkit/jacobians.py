@@ -22,7 +22,10 @@ used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) 
 import numpy as np
 import sympy as sp
 
-from .chains import Joint
+from ._checks import as_sympy_matrix, check_chain, check_flag, describe
+from ._compiled import in_chunks
+from .chains import ROWS, check_rows  # noqa: F401  (ROWS re-exported: sk.jacobians.ROWS)
+from .links import Joint
 
 __all__ = [
     "joint_axes",
@@ -39,62 +42,9 @@ __all__ = [
     "ellipsoid",
 ]
 
-#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n
-#: Jacobian of an arm that moves in its base's x-y plane.
-ROWS = {"all": slice(0, 6), "position": slice(0, 3), "orientation": slice(3, 6), "planar": slice(0, 2)}
-
-#: Configurations per chunk when a batch is reduced (SVDs): bounds the memory of big batches.
-BATCH_CHUNK = 65536
-
-
-def _check_chain(chain):
-    from .chains import Chain
-
-    if not isinstance(chain, Chain):
-        raise TypeError(f"chain must be a screwkit Chain, got {type(chain).__name__}")
-    return chain
-
-
-def _cross(a, b):
-    """Cross product along axis 0 (arrays laid out (3, ...)), cheaper than np.cross on strided data."""
-    return np.stack([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
-
-
-def _generated(chain, q, outputs):
-    """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n) or (N, 6, n)."""
-    q = _check_chain(chain).check_q(q)
-    rows = 6 * chain.n
-    if q.ndim == 1:
-        return np.reshape(chain._run(outputs, q), (6, chain.n))
-    out = np.empty((q.shape[0], 6, chain.n))
-    for start in range(0, q.shape[0], BATCH_CHUNK):
-        part = q[start:start + BATCH_CHUNK]
-        values = chain._run(outputs, part, range(rows), np.empty((rows, part.shape[0])))
-        out[start:start + BATCH_CHUNK] = values.reshape(6, chain.n, -1).transpose(2, 0, 1)
-    return out
-
-
-def _by_chunks(chain, q, columns):
-    """``columns(omega, v, T)`` -> (6, n[, N]) for q (n,) or (N, n), a big batch in chunks.
-
-    The joint twists and poses of a whole batch take 9n + 12 numbers per configuration: a
-    batch is processed :data:`BATCH_CHUNK` configurations at a time, so that memory stays
-    bounded by the result itself.
-    """
-    q = _check_chain(chain).check_q(q)
-    if q.ndim == 1:
-        omega, v, _, T = chain._twists_and_pose(q)
-        return columns(omega, v, T)
-    out = np.empty((q.shape[0], 6, chain.n))
-    for start in range(0, q.shape[0], BATCH_CHUNK):
-        omega, v, _, T = chain._twists_and_pose(q[start:start + BATCH_CHUNK])
-        out[start:start + BATCH_CHUNK] = columns(omega, v, T).transpose(2, 0, 1)
-    return out
-
-
 def joint_axes(chain, q):
     """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3)."""
-    return _check_chain(chain).joint_axes(q)
+    return check_chain(chain).joint_axes(q)
 
 
 def space_jacobian(chain, q):
@@ -104,7 +54,7 @@ def space_jacobian(chain, q):
     revolute joint about z_i through o_i (v is the velocity of the body point at the base
     origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
     """
-    return _generated(chain, q, "space")
+    return check_chain(chain).space_jacobian(q)
 
 
 def geometric_jacobian(chain, q):
@@ -113,7 +63,7 @@ def geometric_jacobian(chain, q):
     Column i is the space twist moved to the end-effector point p: (v_i + omega_i x p; omega_i),
     i.e. (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic one.
     """
-    return _generated(chain, q, "geometric")
+    return check_chain(chain).geometric_jacobian(q)
 
 
 def body_jacobian(chain, q):
@@ -122,12 +72,7 @@ def body_jacobian(chain, q):
     Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
     """
-    def columns(omega, v, T):
-        R, linear = T[:, :3], v + _cross(omega, T[:, 3][:, None])
-        rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
-        return np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)])
-
-    return _by_chunks(chain, q, columns)
+    return check_chain(chain).body_jacobian(q)
 
 
 def numerical_jacobian(chain, q, h=1e-6):
@@ -136,7 +81,7 @@ def numerical_jacobian(chain, q, h=1e-6):
     Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the skew
     matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian` (error O(h^2)).
     """
-    q = _check_chain(chain)._check_one(q)
+    q = check_chain(chain).check_one(q)
     if isinstance(h, bool) or not isinstance(h, (int, float, np.floating, np.integer)) \
             or not np.isfinite(h) or h <= 0:
         raise ValueError(f"h must be a small positive step (rad or m), got {h!r}")
@@ -154,17 +99,18 @@ def numerical_jacobian(chain, q, h=1e-6):
 def _symbolic_point(chain, point, end, frames):
     if point is None:
         return end[:3, 3]
-    if isinstance(point, (int, np.integer)) and not isinstance(point, bool):
+    if isinstance(point, (bool, np.bool_, float, np.floating, str, bytes, complex)) \
+            or (isinstance(point, sp.Basic) and not isinstance(point, sp.MatrixBase)):
+        raise TypeError(f"point must be a frame number (an integer), a 3-vector or None, "
+                        f"got {describe(point)}")
+    if isinstance(point, (int, np.integer)):
         if frames is None:
             raise ValueError("point must be None or a 3-vector for a chain built from screws "
                              f"(it has no DH frames), got {point!r}")
         if not 0 <= point <= chain.n:
             raise ValueError(f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}")
         return frames[point][:3, 3]
-    p = sp.Matrix(point)
-    if p.shape not in ((3, 1), (1, 3)):
-        raise ValueError(f"point must be a frame number, a 3-vector or None, got shape {p.shape}")
-    return p.reshape(3, 1)
+    return as_sympy_matrix(point, "point", (3, 1))
 
 
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
@@ -178,7 +124,8 @@ def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the point:
     (v_i + omega_i x p; omega_i).
     """
-    _check_chain(chain)
+    check_chain(chain)
+    symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
     frames = chain.frames_symbolic(symbolic_lengths) if chain.is_dh else None
     end = chain.fk_symbolic(symbolic_lengths=symbolic_lengths) if chain.is_dh else chain.fk_symbolic()
     p = _symbolic_point(chain, point, end, frames)
@@ -206,7 +153,7 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
     A DH chain's lengths are factored as symbols and only then replaced by their numbers, so
     the factors are exact (no round-off terms from decimal lengths).
     """
-    if _check_chain(chain).n != 6:
+    if check_chain(chain).n != 6:
         raise ValueError(f"the chain must have 6 joints for a square Jacobian, got {chain.n}")
     lengths = {} if symbolic_lengths or not chain.is_dh else chain.length_symbols()
     J = geometric_jacobian_symbolic(chain, point=point, symbolic_lengths=bool(lengths) or symbolic_lengths)
@@ -220,42 +167,9 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
 
 # ---- numbers from the Jacobian ---------------------------------------------------------------
 
-def _rows(rows):
-    if not isinstance(rows, str) or rows not in ROWS:
-        raise ValueError(f"rows must be one of {sorted(ROWS)}, got {rows!r}")
-    return ROWS[rows]
-
-
-def _jacobian_rows(chain, q, rows):
-    """The rows ``rows`` of the geometric Jacobian; 'planar' reads v in the chain's base frame."""
-    selected = _rows(rows)
-    J = geometric_jacobian(chain, q)
-    if rows == "planar":
-        R = np.asarray(chain.base)[:3, :3]
-        return np.einsum("ji,...jk->...ik", R, J[..., :3, :])[..., selected, :]
-    return J[..., selected, :]
-
-
-def _in_chunks(chain, q, function):
-    """function(q_part) over chunks of a batch, concatenated: the memory stays bounded."""
-    q = _check_chain(chain).check_q(q)
-    if q.ndim == 1 or q.shape[0] <= BATCH_CHUNK:
-        return function(q)
-    return np.concatenate([function(q[k:k + BATCH_CHUNK]) for k in range(0, q.shape[0], BATCH_CHUNK)])
-
-
-def _singular(sigma, rows, n):
-    """True where J (of the rows ``rows``, n columns) has lost rank: NumPy's rank rule on its
-    smallest singular value."""
-    m = len(range(6)[_rows(rows)])
-    return sigma[..., -1] <= sigma[..., 0] * max(m, n) * np.finfo(float).eps
-
-
 def singular_values(chain, q, rows="all"):
     """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
-    _rows(rows)
-    return _in_chunks(chain, q, lambda part: np.linalg.svd(_jacobian_rows(chain, part, rows),
-                                                            compute_uv=False))
+    return check_chain(chain).singular_values(q, rows)
 
 
 def manipulability(chain, q, rows="all"):
@@ -266,22 +180,26 @@ def manipulability(chain, q, rows="all"):
     configuration is an answer, not noise. With rows='all' the product mixes metres and
     radians; 'position' gives the volume factor of the velocity ellipsoid in m/s.
     """
-    sigma = singular_values(chain, q, rows)
-    return np.where(_singular(sigma, rows, chain.n), 0.0, np.prod(sigma, axis=-1))[()]
+    return check_chain(chain).manipulability(q, rows)
 
 
 def condition_number(chain, q, rows="all"):
     """sigma_max / sigma_min of the Jacobian's rows (1 is isotropic); inf where singular."""
     sigma = singular_values(chain, q, rows)
-    singular = _singular(sigma, rows, chain.n)
+    singular = check_chain(chain).lost_rank(sigma, rows)
     with np.errstate(divide="ignore"):
         return np.where(singular, np.inf, sigma[..., 0] / sigma[..., -1])[()]
 
 
 def rank(chain, q, rows="all"):
     """The rank of the Jacobian's rows (NumPy's tolerance): an int, or (N,) ints."""
-    _rows(rows)
-    return _in_chunks(chain, q, lambda part: np.linalg.matrix_rank(_jacobian_rows(chain, part, rows)))
+    check_rows(rows)
+    q = check_chain(chain).check_q(q)
+
+    def part(q_part):
+        return np.linalg.matrix_rank(chain.jacobian_rows(q_part, rows))
+
+    return part(q) if q.ndim == 1 else in_chunks(q, part)
 
 
 def ellipsoid(chain, q, rows="position"):
@@ -291,10 +209,10 @@ def ellipsoid(chain, q, rows="position"):
     m/s (position) or rad/s (orientation) per unit joint-rate norm, and their directions as
     the columns of axes (3, 3). A zero radius is a direction the end effector cannot move in.
     """
-    q = _check_chain(chain)._check_one(q)
+    q = check_chain(chain).check_one(q)
     if rows not in ("position", "orientation"):
         raise ValueError(f"rows must be 'position' or 'orientation' for a 3D ellipsoid, got {rows!r}")
-    J = geometric_jacobian(chain, q)[_rows(rows)]
+    J = geometric_jacobian(chain, q)[check_rows(rows)]
     U, sigma, _ = np.linalg.svd(J)
     radii = np.zeros(3)
     radii[: sigma.size] = sigma

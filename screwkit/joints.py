@@ -1,151 +1,20 @@
-"""Joint screws for the mobility zeroth step: each helper returns a list of (s, r, h) triples.
+"""Deprecated alias of :mod:`screwkit.limbs`, the limb builders, kept for one release.
 
-A limb reads like its name: ``prismatic(x) + revolute(x, A) + universal(y, z, B)`` is a PRU limb.
-Multi-freedom joints are sets of 1-freedom screws through one point: C = R + P on one
-axis, U = two crossing R, S = three crossing R.
-
->>> import sympy as sp
->>> len(spherical([0, 0, 1]))
-3
+"joints" also names the joint kinds (:class:`screwkit.Joint`), a chain's ``joints`` and the
+DH rows (``Link.revolute``); the builders of (s, r, h) limbs are :mod:`screwkit.limbs`:
+``sk.joints.revolute`` is ``sk.limbs.revolute``.
 """
-import random
-
-import sympy as sp
-
-from ._checks import as_sympy_matrix, as_sympy_scalar, check_rotation, describe
+from .limbs import (
+    cylindrical,
+    helical,
+    parallelogram,
+    prismatic,
+    revolute,
+    rotate_limb,
+    spherical,
+    translate_limb,
+    universal,
+)
 
 __all__ = ["revolute", "prismatic", "helical", "cylindrical", "universal", "spherical",
            "parallelogram", "rotate_limb", "translate_limb"]
-
-
-def _vec(v, name):
-    return as_sympy_matrix(v, name, (3, 1))
-
-
-def _direction(v, name):
-    v = _vec(v, name)
-    if all(e == 0 for e in v):
-        raise ValueError(f"{name} must be a non-zero direction, got {list(v)}")
-    return v
-
-
-def _is_zero(expr):
-    """True if ``expr`` is zero for every value of its symbols: exactly after expansion, or,
-    when trigonometric identities are needed, at three random points (to 1e-9)."""
-    expr = sp.expand(expr)
-    if expr == 0:
-        return True
-    symbols = sorted(expr.free_symbols, key=str)
-    if not symbols:
-        return abs(complex(expr.evalf())) < 1e-12
-    rng = random.Random(7)
-    for _ in range(3):
-        point = {x: sp.Float(rng.uniform(0.3, 1.7)) for x in symbols}
-        if abs(complex(expr.evalf(subs=point))) > 1e-9:
-            return False
-    return True
-
-
-def _parallel(u, v):
-    return all(_is_zero(e) for e in u.cross(v))
-
-
-def revolute(s, r):
-    """R: rotation about the axis ``s`` through the point ``r``."""
-    return [(_direction(s, "s"), _vec(r, "r"), 0)]
-
-
-def prismatic(s, r=(0, 0, 0)):
-    """P: translation along ``s`` (r only for drawing: a prismatic twist has no position)."""
-    return [(_direction(s, "s"), _vec(r, "r"), sp.oo)]
-
-
-def helical(s, r, h):
-    """H: rotation about (s, r) with translation h per radian along it (h in m/rad, finite)."""
-    if isinstance(h, (str, bytes)) or h is None or h is sp.oo:
-        raise TypeError(f"h must be a finite pitch (m/rad): a number or a SymPy expression, got {describe(h)}")
-    return [(_direction(s, "s"), _vec(r, "r"), as_sympy_scalar(h, "h"))]
-
-
-def cylindrical(s, r):
-    """C: rotation about and translation along the same axis."""
-    return revolute(s, r) + prismatic(s, r)
-
-
-def universal(s1, s2, r):
-    """U: two revolute axes s1, s2 crossing at r (they must not be parallel)."""
-    first, second = revolute(s1, r), revolute(s2, r)
-    if _parallel(first[0][0], second[0][0]):
-        raise ValueError(f"s1 and s2 of a universal joint must not be parallel, got s1 = {list(first[0][0])} "
-                         f"and s2 = {list(second[0][0])} (two parallel axes make a planar pair, not a U)")
-    return first + second
-
-
-def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
-    """S: three independent revolute axes through the centre r."""
-    if isinstance(axes, (str, bytes)) or not hasattr(axes, "__len__") or len(axes) != 3:
-        raise ValueError(f"axes of a spherical joint must be three directions, got {describe(axes)}")
-    first = _direction(axes[0], "axes[0]")
-    centre = _vec(r, "r")  # checked in the order a revolute() per axis would check them
-    joints = [(first, centre, 0)] + [(_direction(axis, f"axes[{k}]"), centre.copy(), 0)
-                                     for k, axis in enumerate(axes) if k]
-    if _is_zero(sp.Matrix.hstack(*(s for s, _, _ in joints)).det()):
-        raise ValueError("axes of a spherical joint must be independent (not in one plane), got "
-                         f"{[list(s) for s, _, _ in joints]}")
-    return joints
-
-
-def parallelogram(s, a1, a2, b1, b2):
-    """Pa: four parallel revolute axes s at the corners A1, A2 (base side) and B1, B2.
-
-    The corners must make a parallelogram: B1 - A1 = B2 - A2 (equal, parallel long sides),
-    with A1 != A2 and B1 != A1.
-    """
-    corners = [_vec(c, name) for c, name in ((a1, "a1"), (a2, "a2"), (b1, "b1"), (b2, "b2"))]
-    A1, A2, B1, B2 = corners
-    if not all(_is_zero(e) for e in (B1 - A1) - (B2 - A2)):
-        raise ValueError("a1, a2, b1, b2 must be the corners of a parallelogram (b1 - a1 = b2 - a2), "
-                         f"got b1 - a1 = {list(B1 - A1)} and b2 - a2 = {list(B2 - A2)}")
-    for P, Q, names in ((A1, A2, "a1 and a2"), (A1, B1, "a1 and b1")):
-        if all(_is_zero(e) for e in P - Q):
-            raise ValueError(f"{names} of a parallelogram must be different points, got {list(P)} for both")
-    s = _direction(s, "s")
-    return [(s.copy(), corner, 0) for corner in corners]
-
-
-def rotate_limb(limb, R):
-    """The limb turned by the rotation matrix R (3x3) about the origin of the fixed frame.
-
-    R must be a rotation (orthonormal, determinant +1): a scaling or a reflection is refused.
-    """
-    if not (isinstance(R, sp.MatrixBase) and _exact_rotation(R)):
-        R = check_rotation(R, "R")  # refuses a scaling or a reflection, with the reason
-    rows = as_sympy_matrix(R, "R", (3, 3)).tolist()
-
-    def turn(v, name):
-        # R v entry by entry (no matrix product), each entry expanded
-        v = _vec(v, name).flat()
-        return sp.Matrix(3, 1, [sp.expand(sp.Add(*[c * e for c, e in zip(row, v) if c != 0 and e != 0]))
-                                for row in rows])
-
-    return [(turn(s, "s"), turn(r, "r"), h) for s, r, h in limb]
-
-
-def _exact_rotation(R):
-    """True if R is a constant 3x3 SymPy matrix with R^T R = I and det R = 1 exactly."""
-    if R.shape != (3, 3) or R.free_symbols or R.has(sp.Float):
-        return False
-    key = tuple(R.flat())
-    if key not in _EXACT_ROTATIONS:  # the same few turns (by 2 pi k / n) come back often
-        gram = (R.T * R).applyfunc(sp.expand)
-        _EXACT_ROTATIONS[key] = gram == sp.eye(3) and sp.expand(R.det()) == 1
-    return _EXACT_ROTATIONS[key]
-
-
-_EXACT_ROTATIONS = {}
-
-
-def translate_limb(limb, p):
-    """The limb moved by the vector p."""
-    p = _vec(p, "p")
-    return [(_vec(s, "s"), _vec(r, "r") + p, h) for s, r, h in limb]

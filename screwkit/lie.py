@@ -23,25 +23,19 @@ array([1.5708, 0.    , 0.    , 0.    , 2.3562, 2.3562])
 import numpy as np
 import sympy as sp
 
-from ._checks import as_float_array, as_sympy_matrix, check_rotation, check_transform, is_symbolic
+from ._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    check_rotation,
+    check_transform,
+    is_symbolic,
+)
+from .transforms import _skew, _skew_exact
 
 __all__ = ["adjoint", "ad", "log_rotation", "log_transform", "vee"]
 
 #: Below this angle (rad) the series of theta / sin(theta) and of the translation factor is used.
 SMALL_ANGLE = 1e-4
-
-
-def _skew_np(v):
-    """[v] for v of shape (..., 3): shape (..., 3, 3)."""
-    x, y, z = v[..., 0], v[..., 1], v[..., 2]
-    zero = np.zeros_like(x)
-    return np.stack([np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1),
-                     np.stack([-y, x, zero], -1)], -2)
-
-
-def _skew_sp(v):
-    x, y, z = v
-    return sp.Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
 
 
 def vee(W):
@@ -75,12 +69,12 @@ def adjoint(T):
     T = check_transform(T, "T")
     if isinstance(T, sp.MatrixBase):
         R, p = T[:3, :3], T[:3, 3]
-        return sp.Matrix(sp.BlockMatrix([[R, sp.zeros(3, 3)], [_skew_sp(p) * R, R]]))
+        return sp.Matrix(sp.BlockMatrix([[R, sp.zeros(3, 3)], [_skew_exact(p) * R, R]]))
     R, p = T[..., :3, :3], T[..., :3, 3]
     A = np.zeros(T.shape[:-2] + (6, 6))
     A[..., :3, :3] = R
     A[..., 3:, 3:] = R
-    A[..., 3:, :3] = _skew_np(p) @ R
+    A[..., 3:, :3] = _skew(p) @ R
     return A
 
 
@@ -100,16 +94,16 @@ def ad(twist):
     """
     if is_symbolic(twist):
         V = as_sympy_matrix(twist, "twist", (6, 1))
-        W = _skew_sp(V[:3, 0])
-        return sp.Matrix(sp.BlockMatrix([[W, sp.zeros(3, 3)], [_skew_sp(V[3:, 0]), W]]))
+        W = _skew_exact(V[:3, 0])
+        return sp.Matrix(sp.BlockMatrix([[W, sp.zeros(3, 3)], [_skew_exact(V[3:, 0]), W]]))
     V = as_float_array(twist, "twist")
     if V.shape[-1:] != (6,) or V.ndim > 2:
         raise ValueError(f"twist must have shape (6,) or (N, 6), ordered [w; v], got shape {V.shape}")
-    W = _skew_np(V[..., :3])
+    W = _skew(V[..., :3])
     A = np.zeros(V.shape[:-1] + (6, 6))
     A[..., :3, :3] = W
     A[..., 3:, 3:] = W
-    A[..., 3:, :3] = _skew_np(V[..., 3:])
+    A[..., 3:, :3] = _skew(V[..., 3:])
     return A
 
 
@@ -204,7 +198,7 @@ def log_transform(T):
     if isinstance(T, sp.MatrixBase):
         phi = log_rotation(T[:3, :3])
         theta = sp.sqrt(phi.dot(phi))
-        A = _skew_sp(phi)
+        A = _skew_exact(phi)
         if theta == 0:
             k = sp.Rational(1, 12)
         else:

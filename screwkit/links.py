@@ -16,6 +16,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import as_float_array, check_transform, describe
+from .screws import Screw
 
 __all__ = ["Joint", "Convention", "Link"]
 
@@ -219,8 +220,6 @@ def dh_factors(link, index, convention):
 
 def check_screws(axes):
     """The joint screws as an (n, 6) float array of unit screws, and their exact forms."""
-    from .screws import Screw
-
     if isinstance(axes, np.ndarray) and axes.ndim == 2:
         items = list(axes)
     elif isinstance(axes, (list, tuple)):

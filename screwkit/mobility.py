@@ -16,9 +16,8 @@ The mobility is the order of the PTS; its twists give the type (e.g. 3T1R) and d
 >>> sk_result.number, sk_result.type, sk_result.directions
 (3, '3T', ['Tx', 'Ty', 'Tz'])
 """
-from dataclasses import dataclass, field
-
 import numbers
+from dataclasses import dataclass, field
 
 import numpy as np
 import sympy as sp

@@ -7,6 +7,8 @@ content column (688 px, at most ``COLUMN_WIDTH`` inches at ``DPI``) with text of
 >>> draw_frame(ax, np.eye(4), label="0")
 >>> plt.close(ax.figure)
 """
+import re
+
 import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
@@ -273,8 +275,6 @@ def animation_html(animation):
     Like ``animation.to_jshtml()``, with the player's Font Awesome stylesheet (a CDN link) removed
     and its icons replaced by Unicode symbols. Display it with ``IPython.display.HTML``.
     """
-    import re
-
     from matplotlib.animation import Animation
 
     if not isinstance(animation, Animation):

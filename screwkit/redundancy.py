@@ -230,7 +230,7 @@ def _gradient(points):
     return w[()], gradient
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _gradient_indices(n):
     """Index pairs (i, max(j, k)) and (max(i, k), j) over (k, i, j), as flat indices into G (n, n)."""
     k, i, j = np.meshgrid(np.arange(n), np.arange(n), np.arange(n), indexing="ij")
@@ -272,9 +272,7 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
     point out of reach, or one not reached in time, is a ValueError with the residual.
     """
     lengths = _lengths(arm)
-    q = np.array(arm.check_q(q_guess, "q_guess"))       # a copy: the caller's array stays
-    if q.ndim != 1:
-        raise ValueError(f"q_guess must be one configuration of shape ({arm.n},), got shape {q.shape}")
+    q = np.array(arm.check_one(q_guess, "q_guess"))     # a copy: the caller's array stays
     point = _point(point, "point")
     tol = check_positive(tol, "tol")
     max_iterations = check_integer(max_iterations, "max_iterations", minimum=1)
@@ -333,9 +331,7 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     lengths = _lengths(arm)
     if not isinstance(path, Path):
         raise TypeError(f"path must be a Path (from circle or line), got {describe(path)}")
-    q = arm.check_q(q0, "q0")
-    if q.ndim != 1:
-        raise ValueError(f"q0 must be one configuration of shape ({arm.n},), got shape {q.shape}")
+    q = arm.check_one(q0, "q0")
     joint_limits = check_option(joint_limits, "joint_limits", (None, "clamp", "avoid"))
     null_space_gain = as_real_scalar(null_space_gain, "null_space_gain")
     feedback_gain = check_positive(feedback_gain, "feedback_gain", allow_zero=True)

@@ -8,9 +8,10 @@ Serial arms are :class:`~screwkit.chains.Chain` objects (SI units).
 import numpy as np
 import sympy as sp
 
+from ._checks import as_float_array, as_real_scalar, describe
 from .chains import Chain, Link
 
-from .joints import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
+from .limbs import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .transforms import rot_axis, rotx, roty, rotz, transl
 
 __all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru",
@@ -281,11 +282,13 @@ def planar(lengths, qlim=None):
     moves in the x-y plane; the rows 'position' of its geometric Jacobian hold the 2 x n
     planar Jacobian in their first two rows. ``qlim`` is (n, 2) in rad, or None.
     """
-    values = np.asarray(lengths, dtype=float) if not isinstance(lengths, str) else None
-    if values is None or values.ndim != 1 or values.size < 2 or not np.all(np.isfinite(values)) \
-            or np.any(values <= 0):
+    if lengths is None or isinstance(lengths, (str, bytes)):
+        raise TypeError(f"lengths must be two or more positive link lengths (m), got "
+                        f"{describe(lengths)}")
+    values = as_float_array(lengths, "lengths")
+    if values.ndim != 1 or values.size < 2 or np.any(values <= 0):
         raise ValueError(f"lengths must be two or more positive link lengths (m), got {lengths!r}")
-    limits = [None] * values.size if qlim is None else np.asarray(qlim, dtype=float)
+    limits = [None] * values.size if qlim is None else as_float_array(qlim, "qlim")
     if qlim is not None and limits.shape != (values.size, 2):
         raise ValueError(f"qlim must have shape ({values.size}, 2), got shape {limits.shape}")
     links = [Link.revolute(a=float(a), qlim=None if lim is None else tuple(lim))
@@ -297,7 +300,7 @@ def two_arm_planar(lengths=(0.3, 0.25, 0.2, 0.15, 0.1), separation=0.4, qlim=Non
     """A two-arm planar robot: two copies of ``planar(lengths)`` (links l0..l4 as in the thesis)
     with their bases on the x axis at x = -separation/2 (left) and +separation/2 (right), in m.
     Returns (left, right)."""
-    half = float(separation) / 2
+    half = as_real_scalar(separation, "separation") / 2
     arms = []
     for name, x in (("left", -half), ("right", half)):
         arm = planar(lengths, qlim)

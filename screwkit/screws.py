@@ -16,42 +16,18 @@ Matrix([[0, 0, 1, 0, -1, 0]])
 import numpy as np
 import sympy as sp
 
-from ._checks import as_sympy_matrix, as_sympy_scalar, describe, is_symbolic
+from ._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    as_sympy_scalar,
+    check_transform,
+    describe,
+    is_symbolic,
+)
+from .lie import adjoint
+from .transforms import _is_infinite_pitch, axis_coordinates, exp_twist
 
 __all__ = ["Screw", "Twist", "Wrench", "axis_coordinates"]
-
-
-def axis_coordinates(s, r, h):
-    """The screw coordinates of an axis: (s; r x s + h s), or (0; s) for the pitch h = oo.
-
-    The one place screwkit writes this formula. ``s`` is used as given (not normalised).
-
-    Parameters
-    ----------
-    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3); r is unused
-        for h = oo
-    h : the pitch (m/rad): a number, a SymPy expression, or oo / inf for a translation
-
-    Returns
-    -------
-    sympy.Matrix (6, 1), or ndarray (6,) / (N, 6)
-    """
-    if isinstance(s, sp.MatrixBase):
-        if _is_infinite_pitch(h):
-            return sp.Matrix.vstack(sp.zeros(3, 1), s)
-        (r1, r2, r3), (s1, s2, s3) = r.flat(), s.flat()
-        moment = [r2 * s3 - r3 * s2, r3 * s1 - r1 * s3, r1 * s2 - r2 * s1]
-        if h != 0:
-            moment = [m + h * si for m, si in zip(moment, (s1, s2, s3))]
-        return sp.Matrix(6, 1, [s1, s2, s3] + moment)
-    s = np.asarray(s, dtype=float)
-    if _is_infinite_pitch(h):
-        return np.concatenate([np.zeros_like(s), s], axis=-1)
-    return np.concatenate([s, np.cross(r, s) + h * s], axis=-1)
-
-
-def _is_infinite_pitch(h):
-    return h is sp.oo or (isinstance(h, (float, np.floating)) and h == float("inf"))
 
 
 class Screw:
@@ -105,34 +81,59 @@ class Screw:
         """The second (linear) 3-vector: r x s + h s."""
         return self.vector[3:, 0]
 
+    def _check_not_zero(self, quantity):
+        """The zero screw has no axis: its pitch, direction and point are undefined."""
+        if all(sp.simplify(e) == 0 for e in self.vector):
+            raise ValueError(f"the {quantity} of the zero {self.kind} is undefined: it has no "
+                             "axis (every coordinate is 0)")
+
     @property
     def pitch(self):
-        """h = (s . s0) / (s . s); ``sympy.oo`` when s = 0."""
+        """h = (s . s0) / (s . s); ``sympy.oo`` when s = 0 (a translation or couple).
+
+        The zero screw has no pitch: ``ValueError``.
+        """
         s, s0 = self.primary, self.secondary
         ss = s.dot(s)
         if sp.simplify(ss) == 0:
+            self._check_not_zero("pitch")
             return sp.oo
         return sp.simplify(s.dot(s0) / ss)
 
     @property
     def direction(self):
-        """The direction of the axis (not normalised): s, or s0 for an infinite pitch."""
+        """The direction of the axis (not normalised): s, or s0 for an infinite pitch.
+
+        The zero screw has no direction: ``ValueError``.
+        """
         s = self.primary
-        return self.secondary if all(sp.simplify(e) == 0 for e in s) else s
+        if all(sp.simplify(e) == 0 for e in s):
+            self._check_not_zero("direction")
+            return self.secondary
+        return s
 
     @property
     def point(self):
-        """The point of the axis nearest the origin, s x s0 / (s . s); None for an infinite pitch."""
+        """The point of the axis nearest the origin, s x s0 / (s . s); None for an infinite pitch.
+
+        The zero screw has no axis: ``ValueError``.
+        """
         s, s0 = self.primary, self.secondary
         ss = sp.simplify(s.dot(s))
         if ss == 0:
+            self._check_not_zero("point")
             return None
         return (s.cross(s0) / ss).applyfunc(sp.simplify)
 
     # --- algebra -----------------------------------------------------------------
+    # NumPy defers to these operators (no element-wise broadcast of an array with a screw)
+    __array_ufunc__ = None
+
     def _same_kind(self, other, operation):
         if not isinstance(other, Screw):
-            return False
+            raise TypeError(f"cannot {operation} a {self.kind} and {describe(other)}: the other "
+                            f"operand must be a {self.kind} too (Twist.from_vector, "
+                            "Wrench.from_vector make one from a 6-vector)")
         if type(other) is not type(self):
             raise TypeError(
                 f"cannot {operation} a {self.kind} and a {other.kind}: they live in different spaces "
@@ -144,26 +145,34 @@ class Screw:
         return type(self)(-self.vector)
 
     def __add__(self, other):
-        if not self._same_kind(other, "add"):
-            return NotImplemented
+        self._same_kind(other, "add")
         return type(self)(self.vector + other.vector)
 
+    __radd__ = __add__
+
     def __sub__(self, other):
-        if not self._same_kind(other, "subtract"):
-            return NotImplemented
+        self._same_kind(other, "subtract")
         return type(self)(self.vector - other.vector)
 
+    def __rsub__(self, other):
+        self._same_kind(other, "subtract")
+        return type(self)(other.vector - self.vector)
+
     def __mul__(self, scalar):
-        if isinstance(scalar, (Screw, sp.MatrixBase, list, tuple, str)):
-            return NotImplemented
-        return type(self)(self.vector * sp.sympify(scalar))
+        if isinstance(scalar, Screw):
+            raise TypeError(f"cannot multiply a {self.kind} by a {scalar.kind}: a {self.kind} must "
+                            "be scaled by one number (use @ for the reciprocal product)")
+        if isinstance(scalar, (sp.MatrixBase, list, tuple, np.ndarray)):
+            raise TypeError(f"a {self.kind} is scaled by one number, got {describe(scalar)}")
+        return type(self)(self.vector * as_sympy_scalar(scalar, "scalar"))
 
     __rmul__ = __mul__
 
     def __matmul__(self, other):
         """The reciprocal product s . s0' + s0 . s' (for a twist and a wrench: the power)."""
         if not isinstance(other, Screw):
-            return NotImplemented
+            raise TypeError(f"the reciprocal product @ takes two screws (a twist and a wrench), "
+                            f"got a {self.kind} and {describe(other)}")
         return sp.expand(self.primary.dot(other.secondary) + self.secondary.dot(other.primary))
 
     def transform(self, T):
@@ -174,9 +183,11 @@ class Screw:
         as the transposed adjoint: F_b = Ad(T_ab)^T F_a). Exact for a SymPy T; a float T gives
         Float coordinates.
         """
-        from .lie import adjoint
-
-        T = T if isinstance(T, sp.MatrixBase) else sp.Matrix(np.asarray(T, dtype=float))
+        T = check_transform(T if isinstance(T, sp.MatrixBase) else as_float_array(T, "T"), "T")
+        if not isinstance(T, sp.MatrixBase):
+            if T.shape != (4, 4):
+                raise ValueError(f"T must be one pose of shape (4, 4), got shape {T.shape}")
+            T = sp.Matrix(T)
         return type(self)._checked((adjoint(T) * self.vector).applyfunc(sp.expand))
 
     def __eq__(self, other):
@@ -207,8 +218,6 @@ class Twist(Screw):
         >>> np.round(Twist.from_axis([0, 0, 1], [1, 0, 0], 0).exp(np.pi)[:3, 3], 12)
         array([2., 0., 0.])
         """
-        from .transforms import exp_twist
-
         if is_symbolic(theta) or self.vector.free_symbols:
             return exp_twist(self.vector, theta)
         return exp_twist(np.array(self.vector, dtype=float).ravel(), theta)

@@ -31,22 +31,28 @@ The singular cases, where labels tie or angles are free, follow one documented r
   coincide): the label is 'r'; if w1 is on axis 1 itself (only possible without a shoulder
   offset), q1 is free and the solutions take q1 = 0;
 * elbow (stretched or folded: the two elbow solutions coincide): the label is 'd';
-* wrist (axes 4 and 6 aligned: only q4 + q6 or q4 - q6 is fixed): the 'f' solution takes
-  q4 = 0 and the 'n' solution q4 = pi; a configuration there is labelled 'f' when
-  cos q4 >= 0 and 'n' otherwise, so both labels round-trip.
+* wrist (axes 4 and 6 aligned: only q4 + q6 or q4 - q6 is fixed; the sine of the angle
+  between them at most :data:`WRIST_TOL`): the 'f' solution takes q4 = 0 and the 'n'
+  solution q4 = pi; a configuration there is labelled 'f' when cos q4 >= 0 and 'n'
+  otherwise, so both labels round-trip.
 
 Round-off that pushes a square-root or arccos argument just outside its range (by less than
 :data:`CLIP_TOL`, relative) is clipped: a pose on a singularity is solved, not dropped.
 """
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
-from ._checks import describe
-from .chains import Chain, Joint
-from .transforms import _wrap_angle, inv
+from ._checks import check_chain
+from ._compiled import CHUNK
+from .links import Joint
+from .subproblems import _cross_fixed as _cross3
+from .subproblems import _dot_batch as _dot
+from .subproblems import distance_angles, plane_angles
+from .transforms import _skew, _wrap_angle, inv
 
-__all__ = ["CONFIGURATIONS", "SphericalWristArm"]
+__all__ = ["CONFIGURATIONS", "SphericalWristArm", "WRIST_TOL"]
 
 #: The fixed order of the eight solutions: arm l/r, elbow u/d, wrist n/f.
 CONFIGURATIONS = ("lun", "luf", "ldn", "ldf", "run", "ruf", "rdn", "rdf")
@@ -57,8 +63,56 @@ CLIP_TOL = 1e-10
 #: (m^2, relative) of the wrist centre from the plane of axis 1 and w_1 x w_2 (shoulder),
 #: 1 - |cos| of the elbow angle (elbow), the sine between axes 4 and 6 (wrist).
 SINGULAR_TOL = 1e-9
-#: Poses per chunk of a batch (the temporaries stay small: memory is bounded).
-CHUNK = 4096
+
+
+#: The wrist is singular (axes 4 and 6 aligned, q4 + q6 or q4 - q6 alone fixed) where the
+#: sine of the angle between them is at most this. The sine is a unit-free measure computed
+#: without cancellation (from the components of axis 6 across axis 4, not as 1 - cos^2), so
+#: its round-off is a few 1e-16 whatever the arm's lengths; the labels and the closed form
+#: test the same measure against the same number, so every label round-trips. A pose within
+#: it is solved with q4 = 0 or pi: its orientation is then off by at most this angle (rad).
+WRIST_TOL = 1e-10
+
+
+class _Shoulder(NamedTuple):
+    theta: np.ndarray   # (N, 2) = -q1 for the arm l, r
+    ct: np.ndarray
+    st: np.ndarray
+    turn1: "_Rotor"
+    b1: np.ndarray      # (3, N, 2) the wrist centre at q1 = 0, from axis 2
+    ok: np.ndarray      # (N,) reached
+    forward: np.ndarray
+
+
+class _Elbow(NamedTuple):
+    q3: np.ndarray      # (N, 2, 2) arm, candidate
+    s3: float
+    u3: np.ndarray
+    cosine: np.ndarray  # (N, 2)
+    ok: np.ndarray      # (N, 2)
+
+
+class _Arm(NamedTuple):
+    q2: np.ndarray      # (N, 2, 2) arm, elbow u/d
+    c2: np.ndarray
+    s2: np.ndarray
+    q3: np.ndarray
+    c3: np.ndarray
+    s3q: np.ndarray
+
+
+class _Wrist(NamedTuple):
+    q4: np.ndarray      # (N, 2, 2, 2) arm, elbow, wrist n/f
+    c4: np.ndarray
+    s4: np.ndarray
+    q5: np.ndarray
+    c5: np.ndarray
+    s5: np.ndarray
+    b: np.ndarray
+    x6: np.ndarray
+    gamma2: np.ndarray
+    n45: np.ndarray
+    ok: np.ndarray
 
 
 def _unit(v):
@@ -78,20 +132,9 @@ def _polar(y, x):
     return np.arctan2(y, x), np.where(h > 0, x / safe, 1.0), y / safe
 
 
-def _dot(w, v):
-    """w . v for a fixed w (3,) and vectors v (3, ...): one matrix product."""
-    return (w @ v.reshape(3, -1)).reshape(v.shape[1:])
-
-
 def _apply(K, v):
     """K @ v for a fixed K (3, 3) and vectors v (3, ...)."""
     return (K @ v.reshape(3, -1)).reshape(v.shape)
-
-
-def _cross3(a, b):
-    """a x b for two single 3-vectors (np.cross costs more than the arithmetic here)."""
-    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                     a[0] * b[1] - a[1] * b[0]])
 
 
 class _Rotor:
@@ -104,7 +147,7 @@ class _Rotor:
     @staticmethod
     def cross_matrix(w):
         """K with K @ x = w x x."""
-        return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+        return _skew(np.asarray(w, dtype=float))
 
     def cross(self, w, v):
         """w x v for a fixed w (3,) and vectors v (3, ...)."""
@@ -134,8 +177,7 @@ class SphericalWristArm:
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
-        if not isinstance(chain, Chain):
-            raise TypeError(f"{name} must be a Chain, got {describe(chain)}")
+        check_chain(chain, name)
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints for the closed form, got {chain.n}")
         kinds = [i + 1 for i, j in enumerate(chain.joints) if j is not Joint.REVOLUTE]
@@ -203,13 +245,23 @@ class SphericalWristArm:
         flip = A * np.cos(q[..., 4]) + B * np.sin(q[..., 4])
         return forward, above, flip
 
+    def wrist_sine(self, q5):
+        """|w4 x R(w5, q5) w6|: the sine of the angle between axes 4 and 6 at q5 (...), the
+        measure of the wrist singularity (see :data:`WRIST_TOL`)."""
+        w4, w5, w6 = self.w[3], self.w[4], self.w[5]
+        c5, s5 = np.cos(q5)[..., None], np.sin(q5)[..., None]
+        across = (np.cross(w4, w6) * c5 + np.cross(w4, np.cross(w5, w6)) * s5
+                  + np.cross(w4, w5) * ((w5 @ w6) * (1 - c5)))
+        return np.linalg.norm(across, axis=-1)
+
     def labels(self, q):
         """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
         forward, above, flip = self.measures(q)
         tol = CLIP_TOL * self.scale
         right = forward >= -tol
         up = np.where(right, above, -above) > tol * self.scale
-        flipped = np.where(np.abs(flip) > CLIP_TOL, flip > 0, np.cos(q[..., 3]) >= 0)
+        singular = self.wrist_sine(q[..., 4]) <= WRIST_TOL
+        flipped = np.where(singular, np.cos(q[..., 3]) >= 0, flip > 0)
         arm = np.where(right, "r", "l")
         return np.char.add(np.char.add(arm, np.where(up, "u", "d")), np.where(flipped, "f", "n"))
 
@@ -232,27 +284,29 @@ class SphericalWristArm:
         return Q, flags, code
 
     def _solve(self, T):
-        # vectors are laid out (3, ...): their components first, so that products with the
-        # fixed axis directions are single BLAS calls
-        w, p, c = self.w, self.p, self.c
-        w1, w2, w4, w5, w6 = w[0], w[1], w[3], w[4], w[5]
-        s3 = 1.0 if w2 @ w[2] > 0 else -1.0  # axis 3 is +-w2
-        N = T.shape[0]
+        """The closed form of the poses T (N, 4, 4), one named step per joint group.
+
+        Vectors are laid out (3, ...): their components first, so that products with the
+        fixed axis directions are single BLAS calls.
+        """
         G = T @ inv(self.home)
         RG = G[:, :3, :3]
-        d = (RG @ c + G[:, :3, 3] - p[0]).T  # the wrist centre of the target, from p1
+        d = (RG @ self.c + G[:, :3, 3] - self.p[0]).T  # the wrist centre of the target, from p1
+        shoulder = self._joint1(d)
+        elbow = self._joint3(shoulder.b1)
+        arm = self._joint2(shoulder.b1, elbow)
+        wrist = self._joints45(RG, shoulder, arm)
+        q6 = self._joint6(wrist)
+        return self._assemble(shoulder, elbow, arm, wrist, q6)
 
-        # joint 1 (subproblem 4): turn the wrist centre by theta = -q1 onto w2 . x = w2 . c
-        along1 = _dot(w1, d)
-        A = _dot(w2, d) - along1 * (w1 @ w2)
-        B = _dot(_cross3(w2, w1), d)
-        C = w2 @ (c - p[0]) - along1 * (w2 @ w1)
-        rho2 = A**2 + B**2
-        excess = rho2 - C**2
-        shoulder_ok = excess >= -CLIP_TOL * self.scale**2
+    def _joint1(self, d):
+        """Joint 1 (subproblem 4): turn the wrist centre d (3, N) by theta = -q1 onto the
+        plane w2 . x = w2 . c; two angles (N, 2), the arm l and r."""
+        w, p, c = self.w, self.p, self.c
+        w1, w2 = w[0], w[1]
+        phi, half, excess, rho2 = plane_angles(w1, w2, w2 @ (c - p[0]), d)
+        ok = excess >= -CLIP_TOL * self.scale**2
         forward = np.sqrt(np.maximum(excess, 0.0))
-        phi = np.arctan2(B, A)
-        half = np.arctan2(forward, C)
         free = rho2 < (CLIP_TOL * self.scale) ** 2  # the wrist centre on axis 1
         theta = np.stack([phi - half, phi + half], axis=1)  # (N, 2): arm l, r
         theta = np.where(free[:, None], 0.0, theta)
@@ -261,31 +315,41 @@ class SphericalWristArm:
         # b1 = w1 - p2: the wrist centre at q1 = 0 seen from axis 2, (3, N, 2)
         b1 = turn1.rotate(np.repeat(d[:, :, None], 2, axis=2), ct, st)
         b1 += (p[0] - p[1])[:, None, None]
+        return _Shoulder(theta, ct, st, turn1, b1, ok, forward)
 
-        # joint 3 (subproblem 3): |exp(xi3 q3) c - p2| = |w1 - p2|
+    def _joint3(self, b1):
+        """Joint 3 (subproblem 3): |exp(xi3 q3) c - p2| = |w1 - p2|; two angles per arm,
+        q3 (N, 2, 2), the elbow's two candidates."""
+        w, p, c = self.w, self.p, self.c
+        w2 = w[1]
+        s3 = 1.0 if w2 @ w[2] > 0 else -1.0  # axis 3 is +-w2
         u3 = c - p[2] - w2 * (w2 @ (c - p[2]))
         v3 = p[1] - p[2] - w2 * (w2 @ (p[1] - p[2]))
-        lu, lv = np.linalg.norm(u3), np.linalg.norm(v3)
         delta2 = np.sum(b1**2, axis=0) - (w2 @ (c - p[1])) ** 2
-        cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
-        elbow_ok = np.abs(cosine) <= 1 + CLIP_TOL
+        theta0, cosine = distance_angles(w2, u3, v3, delta2)
+        ok = np.abs(cosine) <= 1 + CLIP_TOL
         cosine = np.clip(cosine, -1.0, 1.0)
         beta = np.arccos(cosine)
-        theta0 = s3 * np.arctan2(_cross3(u3, v3) @ w2, u3 @ v3)
+        theta0 = s3 * theta0
         q3 = theta0 + s3 * np.stack([-beta, beta], axis=-1)  # (N, 2, 2): arm, candidate
+        return _Elbow(q3, s3, u3, cosine, ok)
 
-        # joint 2 (subproblem 1): the angle about w2 from a = p3 - p2 + R3 (c - p3) to b1;
+    def _joint2(self, b1, elbow):
+        """Joint 2 (subproblem 1): the angle about w2 from a = p3 - p2 + R3 (c - p3) to b1,
+        then the two elbow solutions ordered u first, d second."""
+        w, p, c = self.w, self.p, self.c
+        w2 = w[1]
+        s3, u3 = elbow.s3, elbow.u3
         # a = k0 + cos(q3) k1 + sin(q3) k2, and b1 . (w2 x k) = -m . k with m = w2 x b1
-        c3, s3q = np.cos(s3 * q3), np.sin(s3 * q3)
+        c3, s3q = np.cos(s3 * elbow.q3), np.sin(s3 * elbow.q3)
         k0 = p[2] - p[1] + w2 * (w2 @ (c - p[2]))
         k1, k2 = u3, _cross3(w2, u3)
-        m = turn1.cross(w2, b1)
+        m = _apply(_skew(w2), b1)
         dots = [_dot(k, b1)[..., None] for k in (k0, k1, k2)]
         crosses = [-_dot(k, m)[..., None] for k in (k0, k1, k2)]
         along = (_dot(w2, b1) * (k0 @ w2))[..., None]
         q2, c2, s2 = _polar(crosses[0] + c3 * crosses[1] + s3q * crosses[2],
                             dots[0] + c3 * dots[1] + s3q * dots[2] - along)
-
         # the elbow label: above = ((w1 - p2) x R2 (p3 - p2)) . w2; the larger sigma*above is 'u'
         e = p[2] - p[1] - w2 * (w2 @ (p[2] - p[1]))
         above = c2 * _dot(e, m)[..., None] + s2 * _dot(_cross3(w2, e), m)[..., None]
@@ -293,13 +357,23 @@ class SphericalWristArm:
         swap = sigma * above[..., 0] < sigma * above[..., 1]  # (N, 2)
         swap = swap[..., None]
         q2, c2, s2, q3, c3, s3q = (np.where(swap, v[..., ::-1], v)  # u first, then d
-                                   for v in (q2, c2, s2, q3, c3, s3q))
-        q3 = _wrap_angle(q3)
+                                   for v in (q2, c2, s2, elbow.q3, c3, s3q))
+        return _Arm(q2, c2, s2, _wrap_angle(q3), c3, s3q)
 
-        # the wrist: Rw = R23^T R1^T RG, R2 R3 = R(w2, q2 + s3 q3); t = Rw w6, b = Rw x6
+    def _joints45(self, RG, shoulder, arm):
+        """Joints 4 and 5 (subproblem 2): the rotation left for the wrist, Rw = R23^T R1^T RG,
+        takes w6 to t and x6 to b; two (q4, q5) pairs per arm and elbow, n and f.
+
+        At the wrist singularity (axis 6 of the target on axis 4, the sine between them at
+        most :data:`WRIST_TOL`) q4 is free: 'n' takes pi, 'f' takes 0.
+        """
+        w = self.w
+        w2, w4, w5, w6 = w[1], w[3], w[4], w[5]
+        ct, st, c2, s2, c3, s3q = shoulder.ct, shoulder.st, arm.c2, arm.s2, arm.c3, arm.s3q
         x6 = _unit(_cross3(w5, w6))
         g = np.stack([RG @ w6, RG @ x6], axis=-1).transpose(1, 0, 2)  # (3, N, 2)
-        g = turn1.rotate(np.repeat(g[:, :, None], 2, axis=2), ct[..., None], st[..., None])
+        g = shoulder.turn1.rotate(np.repeat(g[:, :, None], 2, axis=2), ct[..., None],
+                                  st[..., None])
         c23, s23 = c2 * c3 - s2 * s3q, s2 * c3 + c2 * s3q  # of q2 + s3 q3: turn back by it
         g = _Rotor(w2).rotate(np.repeat(g[:, :, :, None], 2, axis=3),
                               c23[..., None], -s23[..., None])
@@ -312,7 +386,8 @@ class SphericalWristArm:
         # gamma^2 = |z_perp|^2 / |n45|^2 - bb^2 with |z_perp| = |t_perp| (no cancellation
         # of 1 - t4^2 near the wrist singularity)
         gamma2 = (tn**2 + tm**2) / (n45 @ n45) ** 2 - bb**2
-        wrist_ok = gamma2 >= -CLIP_TOL
+        sine46 = np.sqrt(tn**2 + tm**2) / np.sqrt(n45 @ n45)  # |t x w4|: the wrist's sine
+        ok = gamma2 >= -CLIP_TOL
         gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array([1.0, -1.0])  # n, f
         a, bb, t4, t5, tn, tm = (v[..., None] for v in (a, bb, t4, t5, tn, tm))
         # q5: about w5 from w6 to z = a w4 + bb w5 + gamma n45; q4: about w4 from z to t
@@ -321,43 +396,54 @@ class SphericalWristArm:
         q5, c5, s5 = _polar(a * (w4 @ n56) + gamma * (n45 @ n56),
                             a * (c46 - c45 * c56) + gamma * (n45 @ w6))
         q4, c4, s4 = _polar(bb * tn + gamma * tm, bb * (t5 - c45 * t4) + gamma * tn)
-        # the wrist singularity: t on axis 4, q4 free: 'n' takes pi, 'f' takes 0
-        on_axis4 = (1 - t4**2) < CLIP_TOL**2
+        # the wrist singularity, by the same measure and tolerance as the labels
+        on_axis4 = (sine46 <= WRIST_TOL)[..., None]
         if np.any(on_axis4):
             free5 = _polar(_dot(n56, t)[..., None], _dot(w6, t)[..., None] - c56 * t5)
             q5, c5, s5 = (np.where(on_axis4, new, old) for new, old in zip(free5, (q5, c5, s5)))
             q4 = np.where(on_axis4, np.array([np.pi, 0.0]), q4)
             c4 = np.where(on_axis4, np.array([-1.0, 1.0]), c4)
             s4 = np.where(on_axis4, 0.0, s4)
-        # q6: about w6 from x6 to y = R5^T R4^T b, with y . e = b . (R4 R5 e) expanded by
-        # Rodrigues into dot products of b with fixed vectors (no rotated copies of b)
+        return _Wrist(q4, c4, s4, q5, c5, s5, b, x6, gamma2, n45, ok)
+
+    def _joint6(self, wrist):
+        """Joint 6 (subproblem 1): about w6 from x6 to y = R5^T R4^T b, with y . e =
+        b . (R4 R5 e) expanded by Rodrigues into dot products of b with fixed vectors (no
+        rotated copies of b)."""
+        w4, w5, w6 = self.w[3], self.w[4], self.w[5]
+        b, c4, s4, c5, s5 = wrist.b, wrist.c4, wrist.s4, wrist.c5, wrist.s5
+
+        def turned4(f):  # b . R4 f
+            return (_dot(f, b)[..., None] * c4 + _dot(_cross3(w4, f), b)[..., None] * s4
+                    + _dot(w4, b)[..., None] * (w4 @ f) * (1 - c4))
+
         def along(e):  # b . R4 R5 e, (N, 2, 2, 2)
-            def turned4(f):  # b . R4 f
-                return (_dot(f, b)[..., None] * c4 + _dot(_cross3(w4, f), b)[..., None] * s4
-                        + _dot(w4, b)[..., None] * (w4 @ f) * (1 - c4))
             return (turned4(e) * c5 + turned4(_cross3(w5, e)) * s5
                     + turned4(w5) * (w5 @ e) * (1 - c5))
-        q6 = np.arctan2(along(_cross3(w6, x6)), along(x6))
 
-        # the answer: (N, 8, 6) in the order of CONFIGURATIONS, NaN where not reached
+        return np.arctan2(along(_cross3(w6, wrist.x6)), along(wrist.x6))
+
+    def _assemble(self, shoulder, elbow, arm, wrist, q6):
+        """The answer: Q (N, 8, 6) in the order of CONFIGURATIONS (NaN where a branch does
+        not reach), the singularity flags (N, 8, 3) and the reason codes (N,)."""
+        N = shoulder.theta.shape[0]
         shape = (N, 2, 2, 2)
         Q = np.empty(shape + (6,))
-        Q[..., 0] = _wrap_angle(-theta)[:, :, None, None]
-        Q[..., 1] = q2[..., None]
-        Q[..., 2] = q3[..., None]
-        Q[..., 3], Q[..., 4], Q[..., 5] = q4, q5, q6
-        reached = (shoulder_ok[:, None, None, None] & elbow_ok[:, :, None, None]
-                   & wrist_ok[..., None])
+        Q[..., 0] = _wrap_angle(-shoulder.theta)[:, :, None, None]
+        Q[..., 1] = arm.q2[..., None]
+        Q[..., 2] = arm.q3[..., None]
+        Q[..., 3], Q[..., 4], Q[..., 5] = wrist.q4, wrist.q5, q6
+        reached = (shoulder.ok[:, None, None, None] & elbow.ok[:, :, None, None]
+                   & wrist.ok[..., None])
         if not np.all(reached):
             Q[~np.broadcast_to(reached, shape)] = np.nan
         Q = Q.reshape(N, 8, 6)
-        # singularity flags and the reason codes
         flags = np.empty(shape + (3,), dtype=bool)
-        flags[..., 0] = (forward**2 < SINGULAR_TOL * self.scale**2)[:, None, None, None]
-        flags[..., 1] = (1 - np.abs(cosine) < SINGULAR_TOL)[:, :, None, None]
-        flags[..., 2] = (np.sqrt(np.maximum(gamma2, 0)) * np.linalg.norm(n45)
+        flags[..., 0] = (shoulder.forward**2 < SINGULAR_TOL * self.scale**2)[:, None, None, None]
+        flags[..., 1] = (1 - np.abs(elbow.cosine) < SINGULAR_TOL)[:, :, None, None]
+        flags[..., 2] = (np.sqrt(np.maximum(wrist.gamma2, 0)) * np.linalg.norm(wrist.n45)
                          < SINGULAR_TOL)[..., None]
-        code = np.where(~shoulder_ok, 1, np.where(~elbow_ok.any(axis=1), 2,
+        code = np.where(~shoulder.ok, 1, np.where(~elbow.ok.any(axis=1), 2,
                         np.where(np.all(np.isnan(Q[..., 0]), axis=1), 3, 0)))
         return Q, flags.reshape(N, 8, 3), code
 

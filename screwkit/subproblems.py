@@ -28,7 +28,13 @@ Robotic Manipulation* (1994), sec. 3.3; subproblem 4 after Elias and Wen's IK-Ge
 import numpy as np
 import sympy as sp
 
-from ._checks import as_float_array, as_sympy_matrix, as_sympy_scalar, describe, is_symbolic
+from ._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    as_sympy_scalar,
+    describe,
+    is_symbolic,
+)
 
 __all__ = ["Solutions", "subproblem1", "subproblem2", "subproblem3", "subproblem4",
            "subproblem1_prismatic", "subproblem3_prismatic"]
@@ -162,6 +168,54 @@ def _cross(a, b, exact):
     return a.cross(b) if exact else np.cross(a, b)
 
 
+# ---- batch kernels: float arrays, vectors laid out (3, ...), no checks -------------------
+# The closed-form IK (:mod:`screwkit.spherical_wrist`) runs its steps through these, over a
+# whole batch of poses at once; the scalar subproblems below run their numeric case through
+# them too, so each formula is written once.
+
+
+def _dot_batch(w, v):
+    """w . v for a fixed w (3,) and vectors v (3, ...): one matrix product."""
+    return (w @ v.reshape(3, -1)).reshape(v.shape[1:])
+
+
+def _cross_fixed(a, b):
+    """a x b for two single 3-vectors (np.cross costs more than the arithmetic here)."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]])
+
+
+def plane_angles(w, n, h, x):
+    """Subproblem 4 over a batch: the angles about the unit axis w through the origin that
+    bring the points x (3, ...) onto the plane n . y = h.
+
+    With A = n . x - (w . x)(w . n), B = (n x w) . x and C = h - (w . x)(n . w), the angles
+    are phi -+ half, phi = atan2(B, A), half = atan2(sqrt(A^2 + B^2 - C^2), C). Returns
+    (phi, half, excess, radius2), each (...): ``excess`` = A^2 + B^2 - C^2 is negative where
+    no angle reaches the plane (``half`` is then that of excess 0), ``radius2`` = A^2 + B^2
+    is 0 where x is on the axis (every angle, or none).
+    """
+    along = _dot_batch(w, x)
+    A = _dot_batch(n, x) - along * (w @ n)
+    B = _dot_batch(_cross_fixed(n, w), x)
+    C = h - along * (n @ w)
+    radius2 = A**2 + B**2
+    excess = radius2 - C**2
+    phi = np.arctan2(B, A)
+    half = np.arctan2(np.sqrt(np.maximum(excess, 0.0)), C)
+    return phi, half, excess, radius2
+
+
+def distance_angles(w, u, v, delta2):
+    """Subproblem 3 in the plane across the unit axis w: for u, v (3,) perpendicular to w
+    and squared distances delta2 (...), the angle theta0 from u to v and the cosine
+    (|u|^2 + |v|^2 - delta2) / (2 |u| |v|) whose arccos is added to it and subtracted; a
+    cosine beyond +-1 means no angle reaches the distance. Returns (theta0, cosine)."""
+    lu, lv = np.linalg.norm(u), np.linalg.norm(v)
+    cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
+    return np.arctan2(_cross_fixed(u, v) @ w, u @ v), cosine
+
+
 # ---- the subproblems --------------------------------------------------------------------
 
 
@@ -286,8 +340,11 @@ def subproblem3(twist, p, q, delta):
             return Solutions([sp.S.Zero if exact else 0.0], free=True)
         return Solutions(reason="p or q is on the axis, so the distance stays "
                                 f"{_fmt(sp.sqrt(lu**2 + lv**2 + height**2))} m")
-    theta0 = _atan2(_dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact)
-    cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
+    if exact:
+        theta0 = _atan2(_dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact)
+        cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
+    else:
+        theta0, cosine = (float(x) for x in distance_angles(w, u1, v1, delta2))
     if exact:
         cosine = sp.simplify(cosine)
         outside = cosine.is_number and abs(cosine) > 1
@@ -334,11 +391,13 @@ def subproblem4(twist, p, normal, d):
     else:
         d = float(as_float_array(d, "d"))
     u = p - r
+    if not exact:
+        return _subproblem4_numeric(w, r, u, n, d)
     A = _dot(n, _project(w, u, exact), exact)
     B = _dot(n, _cross(w, u, exact), exact)
     C = _dot(n, r, exact) + _dot(n, w, exact) * _dot(w, u, exact)
     radius2 = A**2 + B**2
-    scale = 1.0 if exact else 1.0 + float(np.linalg.norm(u)) + abs(d) + abs(C)
+    scale = 1.0
     if _sign(radius2, scale * scale, exact) == 0:
         if _zero(d - C, scale, exact):
             return Solutions([sp.S.Zero if exact else 0.0], free=True)
@@ -349,11 +408,25 @@ def subproblem4(twist, p, normal, d):
         return Solutions(reason=f"the circle of p spans n . x from {_fmt(C - sp.sqrt(radius2))} "
                                 f"to {_fmt(C + sp.sqrt(radius2))}, not {_fmt(d)}")
     phi = _atan2(B, A, exact)
-    if exact:
-        half = sp.atan2(sp.sqrt(sp.simplify(excess)), d - C)
-        angles = [phi] if sign == 0 else [phi - half, phi + half]
-        return Solutions([sp.simplify(t) for t in angles])
-    half = float(np.arctan2(np.sqrt(max(excess, 0.0)), d - C))
+    half = sp.atan2(sp.sqrt(sp.simplify(excess)), d - C)
+    angles = [phi] if sign == 0 else [phi - half, phi + half]
+    return Solutions([sp.simplify(t) for t in angles])
+
+
+def _subproblem4_numeric(w, r, u, n, d):
+    """subproblem4 for floats, through the batch kernel :func:`plane_angles`."""
+    phi, half, excess, radius2 = (float(x) for x in plane_angles(w, n, d - n @ r, u))
+    C = float(n @ r + (n @ w) * (w @ u))  # the height of the circle's centre, for the reasons
+    scale = 1.0 + float(np.linalg.norm(u)) + abs(d) + abs(C)
+    if _sign(radius2, scale * scale, False) == 0:
+        if _zero(d - C, scale, False):
+            return Solutions([0.0], free=True)
+        return Solutions(reason=f"the circle of p stays at n . x = {_fmt(C)}, not {_fmt(d)}")
+    sign = _sign(excess, scale * scale, False)
+    if sign < 0:
+        radius = float(np.sqrt(radius2))
+        return Solutions(reason=f"the circle of p spans n . x from {_fmt(C - radius)} "
+                                f"to {_fmt(C + radius)}, not {_fmt(d)}")
     return Solutions([phi + half] if sign == 0 else [phi - half, phi + half])
 
 

@@ -18,7 +18,6 @@ import numbers
 import numpy as np
 import sympy as sp
 
-from .screws import axis_coordinates
 from ._checks import (
     as_float_array,
     as_real_scalar,
@@ -42,10 +41,88 @@ __all__ = [
     "homogeneous",
     "inv",
     "twist_from_axis",
+    "axis_coordinates",
     "wrap_angle",
     "exp_twist",
     "screw_motion",
 ]
+
+
+# ---- the unchecked kernels every layer above uses (checked inputs, no copies) ----------------
+
+
+def _skew(v):
+    """[v] for a float array v of shape (..., 3): shape (..., 3, 3). No checks."""
+    x, y, z = v[..., 0], v[..., 1], v[..., 2]
+    zero = np.zeros_like(x)
+    return np.stack(
+        [np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1), np.stack([-y, x, zero], -1)],
+        -2,
+    )
+
+
+def _skew_exact(v):
+    """[v] for a SymPy 3-vector (or any 3 entries): a 3x3 SymPy matrix. No checks."""
+    x, y, z = v
+    return sp.Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+
+
+def _cross(a, b):
+    """a x b along axis 0, for arrays laid out (3, ...): cheaper than np.cross on strided data."""
+    return np.stack([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+
+
+def _rodrigues(W, s, c1):
+    """I + s [w] + c1 [w]^2 from W = [w] (..., 3, 3), s = sin and c1 = 1 - cos (..., 1, 1)."""
+    return np.eye(3) + s * W + c1 * (W @ W)
+
+
+def _rodrigues_exact(W, theta):
+    """I + sin(theta) W + (1 - cos(theta)) W^2 for a SymPy W = [w] (|w| = 1), exactly."""
+    return sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
+
+
+def _is_infinite_pitch(h):
+    """True for the pitch of a pure translation: sympy.oo, or a real +inf (a Python or NumPy
+    float, or a 0-d array); the one test of an infinite pitch (no other check)."""
+    if h is sp.oo:
+        return True
+    return (isinstance(h, (numbers.Real, np.ndarray)) and not isinstance(h, (bool, np.bool_))
+            and np.ndim(h) == 0 and np.asarray(h).dtype.kind in "iuf"
+            and bool(np.isposinf(h)))
+
+
+def axis_coordinates(s, r, h):
+    """The screw coordinates of an axis: (s; r x s + h s), or (0; s) for the pitch h = oo.
+
+    The one place screwkit writes this formula (also :func:`screwkit.screws.axis_coordinates`).
+    ``s`` is used as given (not normalised).
+
+    Parameters
+    ----------
+    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3); r is unused
+        for h = oo
+    h : the pitch (m/rad): a number, a SymPy expression, or oo / inf for a translation
+
+    Returns
+    -------
+    sympy.Matrix (6, 1), or ndarray (6,) / (N, 6)
+    """
+    if isinstance(s, sp.MatrixBase):
+        if _is_infinite_pitch(h):
+            return sp.Matrix.vstack(sp.zeros(3, 1), s)
+        (r1, r2, r3), (s1, s2, s3) = r.flat(), s.flat()
+        moment = [r2 * s3 - r3 * s2, r3 * s1 - r1 * s3, r1 * s2 - r2 * s1]
+        if h != 0:
+            moment = [m + h * si for m, si in zip(moment, (s1, s2, s3))]
+        return sp.Matrix(6, 1, [s1, s2, s3] + moment)
+    s = np.asarray(s, dtype=float)
+    if _is_infinite_pitch(h):
+        return np.concatenate([np.zeros_like(s), s], axis=-1)
+    return np.concatenate([s, np.cross(r, s) + h * s], axis=-1)
+
+
+# ---- checked, public ---------------------------------------------------------------------
 
 
 def _vector3(value, name):
@@ -71,14 +148,8 @@ def skew(v):
     """
     v = _vector3(v, "v")
     if isinstance(v, sp.MatrixBase):
-        x, y, z = v
-        return sp.Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
-    x, y, z = v[..., 0], v[..., 1], v[..., 2]
-    zero = np.zeros_like(x)
-    return np.stack(
-        [np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1), np.stack([-y, x, zero], -1)],
-        -2,
-    )
+        return _skew_exact(v)
+    return _skew(v)
 
 
 def _elementary_rotation(theta, axis):
@@ -140,13 +211,11 @@ def rot_axis(axis, theta):
     w = _unit_vector(axis, "axis")
     if isinstance(w, sp.MatrixBase) or is_symbolic(theta):
         theta = _exact_angle(theta, "theta")
-        W = sp.Matrix(skew(w))
-        return sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
+        return _rodrigues_exact(_skew_exact(w), theta)
     theta = as_scalar_or_batch(theta, "theta")
-    W = skew(w)
     s = np.sin(theta)[..., None, None]
     c = np.cos(theta)[..., None, None]
-    return np.eye(3) + s * W + (1.0 - c) * (W @ W)
+    return _rodrigues(_skew(w), s, 1.0 - c)
 
 
 def _exact_angle(theta, name):
@@ -293,7 +362,7 @@ def twist_from_axis(s, r, h):
     >>> twist_from_axis([0, 0, 1], [1, 0, 0], 0)
     array([ 0.,  0.,  1.,  0., -1.,  0.])
     """
-    prismatic = _is_translation(h)
+    prismatic = _is_infinite_pitch(h)
     if is_symbolic(s) or is_symbolic(r) or (is_symbolic(h) and not prismatic):
         s = _unit_vector(as_sympy_matrix(s, "s", (3, 1)), "s")
         if prismatic:
@@ -309,15 +378,6 @@ def twist_from_axis(s, r, h):
 
 
 _PITCH = "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
-
-
-def _is_translation(h):
-    """True for the pitch of a pure translation: sympy.oo or a float +inf."""
-    if h is sp.oo:
-        return True
-    return (isinstance(h, (numbers.Real, np.ndarray)) and not isinstance(h, (bool, np.bool_))
-            and np.ndim(h) == 0 and np.asarray(h).dtype.kind in "iuf"
-            and bool(np.isposinf(h)))
 
 
 def _pitch(h, exact):
@@ -370,7 +430,7 @@ def exp_twist(twist, theta):
     with np.errstate(over="ignore"):
         w, v, theta = w / norm, v / norm, theta * norm
     _check_finite_product(theta, "|w| * theta")
-    W = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    W = _skew(w)
     W2 = W @ W
     s = np.sin(theta)[..., None, None]
     c1 = (2.0 * np.sin(theta / 2) ** 2)[..., None, None]  # 1 - cos, without cancellation
@@ -379,7 +439,7 @@ def exp_twist(twist, theta):
     small = np.abs(theta) < 1e-2
     series = theta**3 / 6 - theta**5 / 120 + theta**7 / 5040
     t_minus_s = np.where(small, series, theta - np.sin(theta))[..., None, None]
-    R = np.eye(3) + s * W + c1 * W2
+    R = _rodrigues(W, s, c1)
     # p = G v with G = I theta + (1 - cos) [w] + (theta - sin) [w]^2, applied to v directly
     with np.errstate(over="ignore", invalid="ignore"):
         p = t[..., 0] * v + c1[..., 0] * (W @ v) + t_minus_s[..., 0] * (W2 @ v)
@@ -401,8 +461,8 @@ def _exp_twist_symbolic(xi, theta):
         return homogeneous(sp.eye(3), v * theta)
     if norm != 1:
         w, v, theta = w / norm, v / norm, theta * norm
-    W = skew(w)
-    R = sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
+    W = _skew_exact(w)
+    R = _rodrigues_exact(W, theta)
     G = theta * sp.eye(3) + (1 - sp.cos(theta)) * W + (theta - sp.sin(theta)) * W * W
     return homogeneous(R.applyfunc(sp.simplify), (G * v).applyfunc(sp.simplify))
 

@@ -99,7 +99,7 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     ranging over the joint's limits with its default on the slider's grid.
     """
     _check_chain(chain)
-    specs = _sliders.joint_sliders(chain, q)
+    specs = _sliders.slider_specs(chain, q)
     scale = as_float_array(ellipsoid_scale, "ellipsoid_scale")
     if scale.ndim or scale <= 0:
         raise ValueError(f"ellipsoid_scale must be one positive number (m per m/s), "

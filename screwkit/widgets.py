@@ -12,7 +12,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from . import _sliders, plotting, viewer
-from ._checks import check_transform
+from ._checks import check_chain, check_transform
 from .transforms import screw_motion
 
 __all__ = ["LiveFigure", "screw_motion_slider", "joint_sliders", "figure_slider"]
@@ -76,7 +76,7 @@ def joint_sliders(chain, q=None, limits=((-0.9, 0.9), (-0.9, 0.9), (-0.5, 1.0)),
     kernel, the chain is drawn and moved in the page (``viewer.robot_viewer``). Returns a
     LiveFigure.
     """
-    specs = _sliders.joint_sliders(chain, q)
+    specs = _sliders.slider_specs(check_chain(chain), q)
     fallback = viewer.robot_viewer(chain, q)
 
     def redraw(**values):

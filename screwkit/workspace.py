@@ -27,6 +27,9 @@ from ._checks import (
     check_positive,
     describe,
 )
+from ._compiled import (
+    CHUNK,  # the one chunk size (a module global here: tests shrink it)
+)
 from .jacobians import ROWS, geometric_jacobian, manipulability
 
 __all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]
@@ -35,8 +38,6 @@ __all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]
 #: take 240 MB (and the grid of joint values, if asked for with ``Sweep.q``, 80 MB per joint).
 MAX_CONFIGURATIONS = 10_000_000
 
-#: Configurations per chunk of every batched computation (a few MB of temporaries).
-CHUNK = 65_536
 
 #: The largest result (bytes) that ``Sweep.q`` or ``Sweep.jacobians`` builds in one array.
 MAX_RESULT_BYTES = 1_000_000_000
@@ -71,7 +72,10 @@ class Sweep:
 
     def configurations(self, start=0, stop=None):
         """The joint vectors of grid points start..stop-1 in C order: shape (stop - start, n)."""
-        stop = self.size if stop is None else stop
+        start = check_integer(start, "start", minimum=0)
+        stop = self.size if stop is None else check_integer(stop, "stop", minimum=start)
+        if stop > self.size:
+            raise ValueError(f"stop must be at most the grid's size {self.size}, got {stop}")
         index = np.unravel_index(np.arange(start, stop), self.shape)
         q = np.empty((stop - start, self.chain.n))
         q[:] = self.fixed
@@ -236,9 +240,7 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
             f"{grid} = {size:,} (its points alone would take {size * 24 / 1e9:.2f} GB); "
             f"use fewer steps (e.g. num={fewer}), or sweep fewer joints and fix the others "
             "with q (a section)")
-    fixed = np.zeros(chain.n) if q is None else chain.check_q(q, "q")
-    if fixed.ndim != 1:
-        raise ValueError(f"q must be one configuration of shape ({chain.n},), got shape {fixed.shape}")
+    fixed = np.zeros(chain.n) if q is None else chain.check_one(q, "q")
     result = Sweep(chain, joints, tuple(values), fixed.copy(), np.empty(tuple(counts) + (3,)))
     flat = result.points.reshape(-1, 3)    # a view: the chunks fill the grid in place
     for part, configurations in result._chunks():

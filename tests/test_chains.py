@@ -9,7 +9,6 @@ from hypothesis.extra.numpy import arrays
 import screwkit as sk
 from screwkit.transforms import rotx, roty, rotz, transl
 
-PUMA = sk.robots.puma560()
 A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
 joint_vectors = arrays(float, 6, elements=st.floats(-np.pi, np.pi, allow_nan=False))
 
@@ -29,22 +28,22 @@ def puma_by_hand(q):
 
 @settings(max_examples=300, deadline=None)
 @given(joint_vectors)
-def test_puma_fk_equals_hand_derivation(q):
-    assert np.allclose(PUMA.fk(q), puma_by_hand(q), atol=1e-12, rtol=0)
+def test_puma_fk_equals_hand_derivation(puma, q):
+    assert np.allclose(puma.fk(q), puma_by_hand(q), atol=1e-12, rtol=0)
 
 
-def test_batch_fk_equals_single_fk():
+def test_batch_fk_equals_single_fk(puma):
     Q = np.random.default_rng(3).uniform(-np.pi, np.pi, (200, 6))
-    batch = PUMA.fk(Q)
+    batch = puma.fk(Q)
     assert batch.shape == (200, 4, 4)
     assert np.allclose(batch, np.stack([puma_by_hand(q) for q in Q]), atol=1e-12, rtol=0)
 
 
-def test_named_poses():
+def test_named_poses(puma):
     # zero: upper arm along x, forearm up: (a2 + a3, -d3, d4); the paper prints z = 0.4381 (digits swapped)
-    assert np.allclose(PUMA.fk(PUMA.configurations["zero"]), transl(A2 + A3, -D3, D4), atol=1e-12)
+    assert np.allclose(puma.fk(puma.configurations["zero"]), transl(A2 + A3, -D3, D4), atol=1e-12)
     # ready: arm vertical: (a3, -d3, a2 + d4)
-    assert np.allclose(PUMA.fk(PUMA.configurations["ready"]), transl(A3, -D3, A2 + D4), atol=1e-12)
+    assert np.allclose(puma.fk(puma.configurations["ready"]), transl(A3, -D3, A2 + D4), atol=1e-12)
     # stretch (q3 = -90) and nominal (q2 = 45, q3 = -180, q5 = 45): the tool's z is along x0 and
     # its x along -z0 (the paper prints a stray 1 at r11). By hand, the reach along x is
     # a2 c2 + a3 c23 - d4 s23 and the height a2 s2 + a3 s23 + d4 c23.
@@ -52,22 +51,22 @@ def test_named_poses():
     h = np.sqrt(0.5)
     expected = {"stretch": [A2 + D4, -D3, -A3], "nominal": [h * (A2 - A3 + D4), -D3, h * (A2 - A3 - D4)]}
     for name, p in expected.items():
-        T = PUMA.fk(PUMA.configurations[name])
+        T = puma.fk(puma.configurations[name])
         assert np.allclose(T[:3, :3], R, atol=1e-12)
         assert np.allclose(T[:3, 3], p, atol=1e-12)
     # the paper's eq. 35 rounds the nominal position to (0.5963, -0.1501, -0.01435)
     assert np.allclose(expected["nominal"], [0.5963, -0.1501, -0.01435], atol=6e-5)
 
 
-def test_symbolic_fk_lambdified_equals_numeric():
-    T = PUMA.fk_symbolic()
-    f = sp.lambdify([PUMA.q_symbols], T, "numpy")
+def test_symbolic_fk_lambdified_equals_numeric(puma):
+    T = puma.fk_symbolic()
+    f = sp.lambdify([puma.q_symbols], T, "numpy")
     for q in np.random.default_rng(4).uniform(-3, 3, (20, 6)):
-        assert np.allclose(f(q), PUMA.fk(q), atol=1e-12)
+        assert np.allclose(f(q), puma.fk(q), atol=1e-12)
 
 
-def test_symbolic_fk_in_textbook_notation():
-    T = PUMA.fk_symbolic(symbolic_lengths=True)
+def test_symbolic_fk_in_textbook_notation(puma):
+    T = puma.fk_symbolic(symbolic_lengths=True)
     c1, s1, c2 = sp.symbols("c1 s1 c2")
     c23, s23 = sp.Symbol("c_{23}"), sp.Symbol("s_{23}")
     a2, a3, d3, d4 = sp.symbols("a2 a3 d3 d4", positive=True)
@@ -75,11 +74,11 @@ def test_symbolic_fk_in_textbook_notation():
     assert sp.expand(sk.textbook(T[0, 3]) - (c1 * (a2 * c2 + a3 * c23 - d4 * s23) + d3 * s1)) == 0
 
 
-def test_product_of_exponentials_equals_dh():
+def test_product_of_exponentials_equals_dh(puma):
     for q in np.random.default_rng(5).uniform(-3, 3, (20, 6)):
-        assert np.allclose(PUMA.fk_poe(q), PUMA.fk(q), atol=1e-12)
+        assert np.allclose(puma.fk_poe(q), puma.fk(q), atol=1e-12)
     # screw axes at home: joint 1 is the z axis through the origin
-    assert np.allclose(PUMA.screw_axes()[0], [0, 0, 1, 0, 0, 0])
+    assert np.allclose(puma.screw_axes()[0], [0, 0, 1, 0, 0, 0])
 
 
 def random_chain(seed, convention=sk.Convention.STANDARD):
@@ -92,7 +91,9 @@ def random_chain(seed, convention=sk.Convention.STANDARD):
     return links
 
 
-def dh_by_hand(links, q, base=np.eye(4), tool=np.eye(4)):
+def dh_by_hand(links, q, base=None, tool=None):
+    base = np.eye(4) if base is None else base
+    tool = np.eye(4) if tool is None else tool
     T = base
     for link, qi in zip(links, q):
         if link.joint is sk.Joint.REVOLUTE:
@@ -130,13 +131,13 @@ def test_modified_dh_describes_the_same_arm():
     assert np.allclose(modified.fk_poe(Q[0]), standard.fk(Q[0]), atol=1e-12)
 
 
-def test_from_table_and_limits():
+def test_from_table_and_limits(puma):
     chain = sk.Chain.from_table([[0, 0.1, 0.3, 0], [0.5, 0.2, 0.5, np.pi / 2]], joints="RP",
                                 qlim=[[-1, 1], [0, 0.5]])
     assert chain.joints == (sk.Joint.REVOLUTE, sk.Joint.PRISMATIC)
     assert chain.within_limits([0.5, 0.2]) and not chain.within_limits([0.5, 0.7])
     assert np.allclose(chain.fk([0.0, 0.1])[:3, 3], [0.3 + 0.5 * np.cos(0.5), 0.5 * np.sin(0.5), 0.1 + 0.3])
-    assert np.allclose(PUMA.within_limits(np.array([PUMA.configurations["ready"], [0, 4, 0, 0, 0, 0]])),
+    assert np.allclose(puma.within_limits(np.array([puma.configurations["ready"], [0, 4, 0, 0, 0, 0]])),
                        [True, False])
 
 
@@ -145,9 +146,9 @@ def test_from_table_and_limits():
     (np.zeros((3, 7)), r"q must have 6 entries"),
     ([0, 0, np.nan, 0, 0, 0], "q must be finite"),
 ])
-def test_bad_joint_vectors(q, message):
+def test_bad_joint_vectors(q, message, puma):
     with pytest.raises(ValueError, match=message):
-        PUMA.fk(q)
+        puma.fk(q)
 
 
 def test_bad_tables_and_links():

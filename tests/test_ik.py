@@ -8,8 +8,15 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 import screwkit as sk
-from screwkit.ik import (CONFIGURATIONS, analytic_ik, analytic_ik_all, configuration,
-                         puma560_config, puma560_ik, puma560_ik_all)
+from screwkit.ik import (
+    CONFIGURATIONS,
+    analytic_ik,
+    analytic_ik_all,
+    configuration,
+    puma560_config,
+    puma560_ik,
+    puma560_ik_all,
+)
 
 PUMA = sk.robots.puma560()
 A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
@@ -101,7 +108,7 @@ def test_labels_of_solutions_are_their_branches():
 
 
 def test_kawasaki_paper_poses():
-    for name, q in KAWASAKI.configurations.items():
+    for q in KAWASAKI.configurations.values():
         solutions = analytic_ik(KAWASAKI, KAWASAKI.fk(q))
         assert 4 <= len(solutions) <= 8
         same = solutions.by_config(configuration(KAWASAKI, q))
@@ -332,3 +339,12 @@ def test_numeric_ik_helical_chain():
     result = sk.ik.numeric_ik(chain, chain.fk(q), q + 0.15)
     assert result.success and np.allclose(chain.fk(result.q), chain.fk(q), atol=1e-9)
     assert np.isclose(result.q[0], q[0])  # a helical angle is not wrapped
+
+
+def test_numeric_ik_takes_a_numpy_tolerance():
+    """tol=np.float32(1e-6) is a positive number like any other (the checks of _checks)."""
+    puma = sk.robots.puma560()
+    q = np.array([0.3, 0.5, -2.0, 0.4, 0.7, 0.2])
+    result = sk.ik.numeric_ik(puma, puma.fk(q), q + 0.05, tol=np.float32(1e-6))
+    assert result.success and result.error < 1e-6
+    assert np.allclose(puma.fk(result.q), puma.fk(q), atol=1e-5)

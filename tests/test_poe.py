@@ -118,7 +118,14 @@ def test_joint_twists_of_a_singular_puma_are_an_exact_screw_system():
     assert lost.rank == 1
     assert all(sp.simplify(t @ w) == 0 for t in twists.screws for w in lost.screws)
     # numerically: the space Jacobian's columns, rank 5 there, 6 elsewhere
-    assert np.linalg.matrix_rank(puma.joint_twists(np.array([0, 0.7, -1.5, 1.0, 0.0, 0]))) == 5
+    # float q: a ScrewSystem too (SVD rank), rank 5 there as NumPy's rank of the Jacobian says
+    q_float = np.array([0, 0.7, -1.5, 1.0, 0.0, 0])
+    floats = puma.joint_twists(q_float)
+    assert isinstance(floats, sk.ScrewSystem) and floats.rank == 5
+    assert floats.reciprocal().rank == 1
+    assert np.linalg.matrix_rank(puma.space_jacobian(q_float)) == 5
+    assert np.allclose([list(t.vector) for t in floats.screws], puma.space_jacobian(q_float).T)
+    assert puma.joint_twists(np.array([0, 0.7, -1.5, 1.0, 0.5, 0])).rank == 6
     assert puma.joint_twists(np.zeros((3, 6))).shape == (3, 6, 6)
 
 
@@ -214,9 +221,9 @@ def test_the_parameter_table_of_each_kind_of_chain():
 
 
 def test_batch_cosines_and_sines_from_the_half_angle_tangent():
-    from screwkit._compiled import cos_sin
-
     import math
+
+    from screwkit._compiled import cos_sin
 
     special = [0.0, np.pi / 2, -np.pi / 2, np.pi, -np.pi, 1e-300, 3 * np.pi, 50.0, -1234.5]
     angles = np.concatenate([np.linspace(-4 * np.pi, 4 * np.pi, 100_001), special])

@@ -5,8 +5,14 @@ import pytest
 import sympy as sp
 
 import screwkit as sk
-from screwkit.ik import (subproblem1, subproblem1_prismatic, subproblem2, subproblem3,
-                         subproblem3_prismatic, subproblem4)
+from screwkit.ik import (
+    subproblem1,
+    subproblem1_prismatic,
+    subproblem2,
+    subproblem3,
+    subproblem3_prismatic,
+    subproblem4,
+)
 
 Z_AXIS = [0, 0, 1, 0, 0, 0]  # rotation about z through the origin
 X_AXIS = [1, 0, 0, 0, 0, 0]

@@ -127,5 +127,5 @@ def test_results_larger_than_the_stated_limit_are_refused(monkeypatch):
     with pytest.raises(ValueError, match=r"Sweep.jacobians would build one array of 0.00 GB.*stream"):
         s.jacobians()
     with pytest.raises(ValueError, match=r"Sweep.q would build one array"):
-        s.q
+        _ = s.q
     assert s.manipulability("planar").shape == (10, 10)      # streams: no limit
