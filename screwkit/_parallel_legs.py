@@ -1,28 +1,48 @@
-"""The legs of the catalogue's parallel manipulators: inverse kinematics, loop closure and
-joint screws, for all m legs at once (numeric, batched) or one pose exactly (SymPy).
+"""The legs of the catalogue's parallel manipulators: inverse kinematics, loop closure
+and joint screws, for all m legs at once (numeric, batched) or one pose exactly (SymPy).
 
-Every leg joins a base point A_i to a platform point C_i = p + R b_i. Three kinds cover the
-catalogue:
+Every leg joins a base point A_i to a platform point C_i = p + R b_i. Three kinds cover
+the catalogue:
 
 - :class:`Prismatic` (UPS, RPR): the actuated joint is the leg's length, rho = |C - A|;
-- :class:`Revolute` (RRR, RUU): an actuated crank of length l1 about the axis u through A
-  turns by theta; its tip B(theta) = A + l1 (cos theta e0 + sin theta e1) is joined to C by a
-  link of length l2, so |C - B(theta)| = l2 (two working modes, the sign of the elbow);
-- :class:`Linear` (PRRR): a carriage slides along e from A0; the planar RRR chain with its
-  axes along e keeps C in the plane e . (C - A0) = d.
+- :class:`Revolute` (RRR, RUU): an actuated crank of length l1 about the axis u through
+  A turns by theta; its tip B(theta) = A + l1 (cos theta e0 + sin theta e1) is joined to
+  C by a link of length l2, so |C - B(theta)| = l2 (two working modes, the sign of the
+  elbow);
+- :class:`Linear` (PRRR): a carriage slides along e from A0; the planar RRR chain with
+  its axes along e keeps C in the plane e . (C - A0) = d.
 
-Each kind writes its loop closure as r(C, rho) = 0 with the gradient g = dr/dC and the
-derivative dr/drho; with C' = v + w x C for the platform's space twist V = [w; v]:
-rho' = -[C x g, g] V / (dr/drho), the row of the Jacobian (the actuation wrench, swapped).
+Numeric points are laid out component first, (3, N, m): C[k] is the k-th coordinate of
+every leg's point in every pose (fast elementwise NumPy). Each kind writes its loop
+closure as r(C, rho) = 0 with the gradient g = dr/dC and the derivative dr/drho; with
+C' = v + w x C for the platform's space twist V = [w; v]: rho' = -[C x g, g] V / (dr/drho),
+the row of the Jacobian (the actuation wrench, swapped).
 """
+
 import numpy as np
 import sympy as sp
 
 _EPS = 1e-12
 
 
-def _unit(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+def _dot(a, b):
+    """Dot products of point arrays laid out component first: (3, ...) -> (...)."""
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def _cross(a, b):
+    return np.stack(
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    )
+
+
+def _columns(points):
+    """(m, 3) points as a (3, 1, m) array (numeric layers work component first)."""
+    return np.asarray(points, dtype=float).T[:, None, :].copy()
 
 
 def _expand(m):
@@ -39,7 +59,7 @@ def _floats(value):
 
 
 def evaluated(legs):
-    """A copy of ``legs`` whose exact layer holds Floats (the numeric screws of a float pose)."""
+    """A copy of ``legs`` whose exact layer holds Floats (for the screws of a float pose)."""
     copy = object.__new__(type(legs))
     copy.__dict__.update(legs.__dict__)
     if hasattr(legs, "A_exact"):
@@ -55,26 +75,26 @@ class Prismatic:
     modes = ("",)
 
     def __init__(self, base, planar):
-        self.A = np.asarray(base, dtype=float)
+        self.A = _columns(base)
         self.A_exact = base
         self.planar = planar
 
     def ik(self, C, signs):
         d = C - self.A
-        rho = np.sqrt(np.einsum("...i,...i->...", d, d))
+        rho = np.sqrt(_dot(d, d))
         return rho, rho > 0, None
 
     def closure(self, C, rho):
         d = C - self.A
-        length = np.sqrt(np.einsum("...i,...i->...", d, d))
-        g = d / np.where(length > _EPS, length, 1.0)[..., None]
-        return length - rho, g, -np.ones(rho.shape)
+        length = np.sqrt(_dot(d, d))
+        g = d / np.where(length > _EPS, length, 1.0)
+        return length - rho, g, -1.0
 
     def passive(self, C, rho, signs):
-        n = (C - self.A) / rho[..., None]
+        n = (C - self.A) / rho
         if self.planar:
-            return {"phi": np.arctan2(n[..., 1], n[..., 0])}
-        return {"u1": np.arctan2(-n[..., 1], n[..., 2]), "u2": np.arcsin(np.clip(n[..., 0], -1, 1))}
+            return {"phi": np.arctan2(n[1], n[0])}
+        return {"u1": np.arctan2(-n[1], n[2]), "u2": np.arcsin(np.clip(n[0], -1, 1))}
 
     # exact, one pose: C is a list of SymPy 3x1 matrices
     def ik_exact(self, C, signs):
@@ -89,7 +109,8 @@ class Prismatic:
         return [sp.Matrix(a) for a in self.A_exact]
 
     def limbs(self, C, signs):
-        """Joint screws (s, r, h) per leg at the pose; the actuated joint's index per leg."""
+        """Joint screws (s, r, h) per leg at the pose; the actuated joint's index per
+        leg."""
         limbs, actuated = [], []
         for c, a in zip(C, self._A()):
             n = c - a
@@ -98,10 +119,16 @@ class Prismatic:
                 limbs.append([(z, a, 0), (n, a, sp.oo), (z, c, 0)])
                 actuated.append(1)
             else:
-                x = sp.Matrix([1, 0, 0]) if (n[1] != 0 or n[2] != 0) else sp.Matrix([0, 1, 0])
+                x = (
+                    sp.Matrix([1, 0, 0])
+                    if (n[1] != 0 or n[2] != 0)
+                    else sp.Matrix([0, 1, 0])
+                )
                 second = n.cross(x)
-                limbs.append([(x, a, 0), (second, a, 0), (n, a, sp.oo)]
-                             + [(e, c, 0) for e in sp.eye(3).columnspace()])
+                limbs.append(
+                    [(x, a, 0), (second, a, 0), (n, a, sp.oo)]
+                    + [(e, c, 0) for e in sp.eye(3).columnspace()]
+                )
                 actuated.append(2)
         return limbs, actuated
 
@@ -112,21 +139,22 @@ class Revolute:
     modes = ("+", "-")
 
     def __init__(self, base, axis, e0, l1, l2, spatial):
-        self.A, self.u, self.e0 = (np.asarray(v, dtype=float) for v in (base, axis, e0))
-        self.e1 = np.cross(self.u, self.e0)
+        self.A, self.u, self.e0 = (_columns(v) for v in (base, axis, e0))
+        self.e1 = _cross(self.u, self.e0)
         self.l1, self.l2 = float(l1), float(l2)
         self.exact = (base, axis, e0, l1, l2)
         self.spatial = spatial
 
     def _crank(self, theta):
-        c, s = np.cos(theta)[..., None], np.sin(theta)[..., None]
-        return self.A + self.l1 * (c * self.e0 + s * self.e1), self.l1 * (-s * self.e0 + c * self.e1)
+        c, s = np.cos(theta), np.sin(theta)
+        return self.A + self.l1 * (c * self.e0 + s * self.e1), self.l1 * (
+            -s * self.e0 + c * self.e1
+        )
 
     def ik(self, C, signs):
         d = C - self.A
-        K = np.einsum("...i,...i->...", d, self.e0)
-        L = np.einsum("...i,...i->...", d, self.e1)
-        M = (np.einsum("...i,...i->...", d, d) + self.l1**2 - self.l2**2) / (2 * self.l1)
+        K, L = _dot(d, self.e0), _dot(d, self.e1)
+        M = (_dot(d, d) + self.l1**2 - self.l2**2) / (2 * self.l1)
         radius = np.hypot(K, L)
         ratio = M / np.where(radius > _EPS, radius, np.nan)
         ok = np.abs(ratio) <= 1 + 1e-12
@@ -137,15 +165,15 @@ class Revolute:
     def closure(self, C, theta):
         B, dB = self._crank(theta)
         g = C - B
-        r = 0.5 * (np.einsum("...i,...i->...", g, g) - self.l2**2) / self.l2
-        return r, g / self.l2, -np.einsum("...i,...i->...", g, dB) / self.l2
+        r = 0.5 * (_dot(g, g) - self.l2**2) / self.l2
+        return r, g / self.l2, -_dot(g, dB) / self.l2
 
     def passive(self, C, theta, signs):
         B, _ = self._crank(theta)
         out = {"elbow": B}
         if not self.spatial:
             w = C - B
-            out["theta2"] = np.angle(np.exp(1j * (np.arctan2(w[..., 1], w[..., 0]) - theta)))
+            out["theta2"] = np.angle(np.exp(1j * (np.arctan2(w[1], w[0]) - theta)))
         return out
 
     def _exact_geometry(self):
@@ -157,7 +185,8 @@ class Revolute:
         return rows, sp.sympify(l1), sp.sympify(l2)
 
     def _solve_exact(self, C, signs):
-        """Per leg (theta, cos theta, sin theta, elbow B), exactly; None where out of reach."""
+        """Per leg (theta, cos theta, sin theta, elbow B), exactly; None where out of
+        reach."""
         rows, l1, l2 = self._exact_geometry()
         out = []
         for c, (a, u, e0, e1), sign in zip(C, rows, signs):
@@ -196,36 +225,42 @@ class Revolute:
             if not self.spatial:
                 limbs.append([(u, a, 0), (u, b, 0), (u, c, 0)])
             else:
-                v = _expand(u.cross(c - b))  # the U joints' second axis: normal to u and BC
+                v = _expand(
+                    u.cross(c - b)
+                )  # the U joints' second axis: normal to u and BC
                 limbs.append([(u, a, 0), (u, b, 0), (v, b, 0), (v, c, 0), (u, c, 0)])
             actuated.append(0)
         return limbs, actuated
 
 
 class Linear:
-    """P-R-R-R legs (the Tripteron): carriage along e from A0, then three revolutes along e."""
+    """P-R-R-R legs (the Tripteron): carriage along e from A0, then three revolutes
+    along e."""
 
     modes = ("",)
 
     def __init__(self, base, axis, l1, l2):
-        self.A, self.e = np.asarray(base, dtype=float), np.asarray(axis, dtype=float)
+        self.A, self.e = _columns(base), _columns(axis)
         self.l1, self.l2 = float(l1), float(l2)
         self.exact = (base, axis, l1, l2)
 
     def ik(self, C, signs):
         d = C - self.A
-        rho = np.einsum("...i,...i->...", d, self.e)
-        planar = d - rho[..., None] * self.e
-        reach = np.sqrt(np.einsum("...i,...i->...", planar, planar))
-        ok = (reach <= self.l1 + self.l2 + 1e-12) & (reach >= abs(self.l1 - self.l2) - 1e-12)
+        rho = _dot(d, self.e)
+        planar = d - rho * self.e
+        reach = np.sqrt(_dot(planar, planar))
+        ok = (reach <= self.l1 + self.l2 + 1e-12) & (
+            reach >= abs(self.l1 - self.l2) - 1e-12
+        )
         return np.where(ok, rho, np.nan), ok, None
 
     def closure(self, C, rho):
-        r = np.einsum("...i,...i->...", C - self.A, self.e) - rho
-        return r, np.broadcast_to(self.e, C.shape), -np.ones(rho.shape)
+        r = _dot(C - self.A, self.e) - rho
+        return r, np.broadcast_to(self.e, C.shape), -1.0
 
     def _elbow(self, C, rho, exact=False):
-        """The middle joint B of the planar R-R chain from the carriage to C (elbow '+')."""
+        """The middle joint B of the planar R-R chain from the carriage to C (elbow
+        '+')."""
         if exact:
             base, axis, l1, l2 = self.exact
             out = []
@@ -235,23 +270,28 @@ class Linear:
                 w = _expand(c - start)
                 n = e.cross(w)
                 dist2 = sp.expand(w.dot(w))
-                along = (dist2 + sp.sympify(l1) ** 2 - sp.sympify(l2) ** 2) / (2 * dist2)
+                along = (dist2 + sp.sympify(l1) ** 2 - sp.sympify(l2) ** 2) / (
+                    2 * dist2
+                )
                 h = sp.sqrt(sp.expand(sp.sympify(l1) ** 2 / dist2 - along**2))
                 out.append((start, _expand(start + along * w + h * n)))
             return out
-        start = self.A + rho[..., None] * self.e
+        start = self.A + rho * self.e
         w = C - start
-        dist2 = np.einsum("...i,...i->...", w, w)
+        dist2 = _dot(w, w)
         along = (dist2 + self.l1**2 - self.l2**2) / (2 * dist2)
         h = np.sqrt(np.clip(self.l1**2 / dist2 - along**2, 0, None))
-        return start + along[..., None] * w + h[..., None] * np.cross(self.e, w)
+        return start + along * w + h * _cross(np.broadcast_to(self.e, w.shape), w)
 
     def passive(self, C, rho, signs):
         return {"elbow": self._elbow(C, rho)}
 
     def ik_exact(self, C, signs):
         base, axis, _, _ = self.exact
-        return [sp.expand((c - sp.Matrix(a)).dot(sp.Matrix(e))) for c, a, e in zip(C, base, axis)]
+        return [
+            sp.expand((c - sp.Matrix(a)).dot(sp.Matrix(e)))
+            for c, a, e in zip(C, base, axis)
+        ]
 
     def rows_exact(self, C, signs):
         return [(sp.Matrix(e), sp.Integer(-1)) for e in self.exact[1]]

@@ -1,22 +1,24 @@
 """Parallel manipulators in motion: legs' inverse kinematics, forward kinematics by loop
 closure, Jacobians from the legs' wrenches, singularity types and workspaces.
 
-A :class:`ParallelManipulator` is a fixed base and a moving platform joined by m limbs, each a
-serial chain of joint screws from a base point A_i to a platform point b_i (platform frame),
-with one actuated joint per limb. Its output is the platform pose T (4 x 4, base frame), its
-input the actuated joint values rho (m,): leg lengths (m) or crank angles (rad).
+A :class:`ParallelManipulator` is a fixed base and a moving platform joined by m limbs,
+each a serial chain of joint screws from a base point A_i to a platform point b_i
+(platform frame), with one actuated joint per limb. Its output is the platform pose T
+(4 x 4, base frame), its input the actuated joint values rho (m,): leg lengths (m) or
+crank angles (rad).
 
-Conventions are the library's: screws [angular; linear]; V = [w; v] is the platform's space
-twist (T' T^-1 = [V], as ``Chain.space_jacobian``), and ``jacobian(T)`` gives rho' = J V. The
-rows of J are the actuation wrenches (force; moment) with their halves swapped, scaled so that
-their power on V is the actuator's rate (Joshi & Tsai 2002): for the Stewart platform the legs'
-unit line screws.
+Conventions are the library's: screws [angular; linear]; V = [w; v] is the platform's
+space twist (T' T^-1 = [V], as ``Chain.space_jacobian``), and ``jacobian(T)`` gives
+rho' = J V. The rows of J are the actuation wrenches (force; moment) with their halves
+swapped, scaled so that their power on V is the actuator's rate (Joshi & Tsai 2002): for
+the Stewart platform the legs' unit line screws.
 
 >>> pm = stewart_gough()
 >>> rho = pm.ik(pm.home())
 >>> bool(np.allclose(pm.fk(rho, guess=pm.home()).T, pm.home()))
 True
 """
+
 import itertools
 from dataclasses import dataclass
 
@@ -24,25 +26,46 @@ import numpy as np
 import sympy as sp
 
 from . import _parallel_search
-from ._checks import as_float_array, check_option, check_transform, describe, is_symbolic
+from ._checks import (
+    ORTHONORMAL_TOL,
+    as_float_array,
+    check_option,
+    check_transform,
+    describe,
+    is_symbolic,
+)
 from ._parallel_legs import Linear, Prismatic, Revolute, evaluated
 from .screws import Wrench
 from .systems import ScrewSystem
 from .transforms import rotz
 
-__all__ = ["ParallelManipulator", "ParallelIK", "ParallelFK", "Workspace", "stewart_gough",
-           "planar_3rpr", "planar_3rrr", "delta", "tripteron"]
+__all__ = [
+    "ParallelManipulator",
+    "ParallelIK",
+    "ParallelFK",
+    "Workspace",
+    "stewart_gough",
+    "planar_3rpr",
+    "planar_3rrr",
+    "delta",
+    "tripteron",
+]
 
-#: The free components of the platform twist [wx, wy, wz, vx, vy, vz] for each motion type.
-_FREEDOMS = {"spatial": [0, 1, 2, 3, 4, 5], "planar": [2, 3, 4], "translational": [3, 4, 5]}
+#: The free components of the platform twist [wx, wy, wz, vx, vy, vz] per motion type.
+_FREEDOMS = {
+    "spatial": [0, 1, 2, 3, 4, 5],
+    "planar": [2, 3, 4],
+    "translational": [3, 4, 5],
+}
 _TYPES = {"spatial": "3T3R", "planar": "2T1R", "translational": "3T"}
 
 
 @dataclass
 class ParallelIK:
-    """Inverse kinematics in full: ``rho`` (m,) or (N, m), NaN where out of reach; ``passive``
-    the passive joints (dict of arrays); ``reachable`` (bool or (N,)); ``reason`` (str, '' when
-    reachable, or a list of them); ``mode`` the working mode's label."""
+    """Inverse kinematics in full: ``rho`` (m,) or (N, m), NaN where out of reach;
+    ``passive`` the passive joints (dict of arrays); ``reachable`` (bool or (N,));
+    ``reason`` (str, '' when reachable, or a list of them); ``mode`` the working mode's
+    label."""
 
     rho: object
     passive: dict
@@ -53,8 +76,9 @@ class ParallelIK:
 
 @dataclass
 class ParallelFK:
-    """Forward kinematics: ``T`` (4, 4) or (N, 4, 4), NaN where Newton failed; ``success``,
-    ``iterations`` and ``error`` (the largest loop-closure residual, m) per pose."""
+    """Forward kinematics: ``T`` (4, 4) or (N, 4, 4), NaN where Newton failed;
+    ``success``, ``iterations`` and ``error`` (the largest loop-closure residual, m) per
+    pose."""
 
     T: np.ndarray
     success: object
@@ -64,9 +88,10 @@ class ParallelFK:
 
 @dataclass
 class Workspace:
-    """A constant-orientation workspace on a grid: ``inside`` (bool, grid shape) where every
-    leg is reachable and within its limits, ``det`` the determinant of the Jacobian's free
-    columns (NaN outside), ``rho`` the actuated values (grid shape + (m,))."""
+    """A constant-orientation workspace on a grid: ``inside`` (bool, grid shape) where
+    every leg is reachable and within its limits, ``det`` the determinant of the
+    Jacobian's free columns (NaN outside), ``rho`` the actuated values (grid shape +
+    (m,))."""
 
     x: np.ndarray
     y: np.ndarray
@@ -75,6 +100,63 @@ class Workspace:
     det: np.ndarray
     rho: np.ndarray
     rotation: np.ndarray
+
+
+def _check_poses(T, name):
+    """check_transform, with a fast first pass for a float batch (N, 4, 4): the full
+    check (and its message) runs only when the fast one finds something wrong."""
+    if (
+        isinstance(T, np.ndarray)
+        and T.dtype == float
+        and T.ndim == 3
+        and T.shape[1:] == (4, 4)
+    ):
+        r = T[:, :3, :3].reshape(-1, 9).T.copy()  # r[3 i + j] = R_ij over the batch
+        c = [(r[j], r[3 + j], r[6 + j]) for j in range(3)]
+        gram = max(
+            np.max(
+                np.abs(
+                    c[i][0] * c[j][0] + c[i][1] * c[j][1] + c[i][2] * c[j][2] - (i == j)
+                ),
+                initial=0.0,
+            )
+            for i in range(3)
+            for j in range(i, 3)
+        )
+        cross = (
+            c[1][1] * c[2][2] - c[1][2] * c[2][1],
+            c[1][2] * c[2][0] - c[1][0] * c[2][2],
+            c[1][0] * c[2][1] - c[1][1] * c[2][0],
+        )
+        det = c[0][0] * cross[0] + c[0][1] * cross[1] + c[0][2] * cross[2]
+        last = np.max(np.abs(T[:, 3, :] - [0.0, 0.0, 0.0, 1.0]), initial=0.0)
+        if (
+            gram <= ORTHONORMAL_TOL
+            and last <= 1e-12
+            and np.all(det > 0)
+            and np.isfinite(T).all()
+        ):
+            return T
+    return check_transform(T, name)
+
+
+def _points(R, p, b):
+    """p + R b for poses R (N, 3, 3), p (N, 3) and points b (m, 3): (3, N, m)."""
+    N, m = len(R), len(b)
+    M = np.empty((3, N, 4))  # row k of [R p] for every pose, then one product
+    M[:, :, :3], M[:, :, 3] = R.transpose(1, 0, 2), p.T
+    B = np.vstack([b.T, np.ones(m)])  # homogeneous points as columns
+    return (M.reshape(-1, 4) @ B).reshape(3, N, m)
+
+
+def _cross(a, b):
+    return np.stack(
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    )
 
 
 def _rodrigues(w):
@@ -91,22 +173,34 @@ def _rodrigues(w):
 
 
 class ParallelManipulator:
-    """A parallel manipulator: m legs between a base and a platform, one actuator per leg.
+    """A parallel manipulator: m legs between a base and a platform, one actuator per
+    leg.
 
     Parameters
     ----------
     name : str
     legs : the legs' model (:mod:`screwkit._parallel_legs`): their IK and loop closure
-    base, platform : (m, 3) attachment points A_i (base frame) and b_i (platform frame), in m;
+    base, platform : (m, 3) attachment points A_i (base frame) and b_i (platform frame),
+    in m;
         SymPy entries keep the exact layer exact
-    motion : 'spatial' (6 freedoms), 'planar' (x, y and the angle about z) or 'translational'
+    motion : 'spatial' (6 freedoms), 'planar' (x, y and the angle about z) or
+    'translational'
     home : (4, 4) the home pose
     leg_limits : (m, 2) limits of the actuated joints (m or rad), or None
     default_mode : the working mode ``ik`` uses when none is given
     """
 
-    def __init__(self, name, legs, base, platform, motion, home, leg_limits=None,
-                 default_mode=None):
+    def __init__(
+        self,
+        name,
+        legs,
+        base,
+        platform,
+        motion,
+        home,
+        leg_limits=None,
+        default_mode=None,
+    ):
         self.name = name
         self._legs = legs
         self._legs_float = evaluated(legs)
@@ -119,10 +213,17 @@ class ParallelManipulator:
         self.planar = motion == "planar"
         self.freedoms = _FREEDOMS[motion]
         self.motion_type = _TYPES[motion]
-        self._home = sp.Matrix(home) if is_symbolic(home) else np.array(home, dtype=float)
-        self.leg_limits = None if leg_limits is None else np.array(leg_limits, dtype=float)
-        self.working_modes = (["single"] if legs.modes == ("",) else
-                              ["".join(m) for m in itertools.product(legs.modes, repeat=self.m)])
+        self._home = (
+            sp.Matrix(home) if is_symbolic(home) else np.array(home, dtype=float)
+        )
+        self.leg_limits = (
+            None if leg_limits is None else np.array(leg_limits, dtype=float)
+        )
+        self.working_modes = (
+            ["single"]
+            if legs.modes == ("",)
+            else ["".join(m) for m in itertools.product(legs.modes, repeat=self.m)]
+        )
         self.default_mode = default_mode or self.working_modes[0]
         self.prismatic = isinstance(legs, (Prismatic, Linear))
 
@@ -137,12 +238,12 @@ class ParallelManipulator:
         """The home pose as an exact SymPy matrix."""
         return sp.Matrix(self._home)
 
-    # ---- checks -----------------------------------------------------------------------
+    # ---- checks ---------------------------------------------------------------------
 
     def _pose(self, T, name="T"):
-        """T checked (rigid, and of this mechanism's motion type): (float (N, 4, 4), batched)
-        or (SymPy matrix, False)."""
-        T = check_transform(T, name)
+        """T checked (rigid, and of this mechanism's motion type): (float (N, 4, 4),
+        batched) or (SymPy matrix, False)."""
+        T = _check_poses(T, name)
         if isinstance(T, sp.MatrixBase):
             self._check_motion(np.array(T.evalf(), dtype=float)[None], name)
             return T, False
@@ -157,17 +258,29 @@ class ParallelManipulator:
             tilt = np.max(np.abs(R - self.home()[:3, :3]), initial=0.0)
             if tilt > 1e-9:
                 raise ValueError(
-                    f"{name} must keep the platform's orientation: the {self.name} only "
-                    f"translates (3T), got a rotation block that differs from the home one by "
-                    f"{tilt:.3g}")
+                    f"{name} must keep the platform's orientation: the {self.name} "
+                    f"only translates (3T), got a rotation block that differs from the "
+                    f"home one by "
+                    f"{tilt:.3g}"
+                )
         elif self.motion == "planar":
-            off = np.max(np.abs(np.concatenate(
-                [R[:, 2, :2], R[:, :2, 2], T[:, 2:3, 3], R[:, 2:3, 2] - 1], axis=1)), initial=0.0)
+            off = np.max(
+                np.abs(
+                    np.concatenate(
+                        [R[:, 2, :2], R[:, :2, 2], T[:, 2:3, 3], R[:, 2:3, 2] - 1],
+                        axis=1,
+                    )
+                ),
+                initial=0.0,
+            )
             if off > 1e-9:
                 raise ValueError(
-                    f"{name} must be a planar pose (a rotation about z and a translation in the "
-                    f"base xy-plane) for the {self.name}, got one that leaves the plane by "
-                    f"{off:.3g}")
+                    f"{name} must be a planar pose (a rotation about z and a "
+                    f"translation in the base xy-plane) for the {self.name}, got one "
+                    f"that leaves the "
+                    f"plane by "
+                    f"{off:.3g}"
+                )
 
     def _mode(self, mode):
         mode = self.default_mode if mode is None else mode
@@ -176,24 +289,29 @@ class ParallelManipulator:
 
     def _rho(self, rho):
         if is_symbolic(rho):
-            raise TypeError("rho must be numbers (fk is numeric), got SymPy expressions")
+            raise TypeError(
+                "rho must be numbers (fk is numeric), got SymPy expressions"
+            )
         values = as_float_array(rho, "rho")
         if values.ndim not in (1, 2) or values.shape[-1] != self.m:
             raise ValueError(
-                f"rho must have shape ({self.m},) or (N, {self.m}) for the {self.name}, "
-                f"got shape {values.shape}")
+                f"rho must have shape ({self.m},) or (N, {self.m}) for the "
+                f"{self.name}, "
+                f"got shape {values.shape}"
+            )
         if isinstance(self._legs, Prismatic) and np.any(values <= 0):
             raise ValueError(f"rho must be leg lengths > 0 (m), got {values.min():.6g}")
         return values
 
-    # ---- inverse kinematics -----------------------------------------------------------
+    # ---- inverse kinematics ---------------------------------------------------------
 
     def attachments(self, T):
-        """The platform points in the base frame, C_i = p + R b_i: (m, 3) or (N, m, 3)."""
+        """The platform points in the base frame, C_i = p + R b_i: (m, 3) or (N, m,
+        3)."""
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
             return [T[:3, :3] * b + T[:3, 3] for b in self._platform_exact]
-        C = np.einsum("nij,mj->nmi", T[:, :3, :3], self.platform_points) + T[:, None, :3, 3]
+        C = np.moveaxis(_points(T[:, :3, :3], T[:, :3, 3], self.platform_points), 0, -1)
         return C if batched else C[0]
 
     def ik(self, T, mode=None, passive=False):
@@ -202,14 +320,17 @@ class ParallelManipulator:
         Parameters
         ----------
         T : (4, 4) or (N, 4, 4) platform pose(s), or an exact SymPy 4 x 4
-        mode : a working mode label from ``working_modes`` (e.g. '+-+' for the 3-RRR: the
+        mode : a working mode label from ``working_modes`` (e.g. '+-+' for the 3-RRR:
+        the
             sign of each leg's elbow), default ``default_mode``
         passive : also return the passive joints and the reason a pose is out of reach
 
         Returns
         -------
-        rho : (m,) or (N, m), NaN rows where out of reach or outside ``leg_limits``; a list
-            of SymPy expressions for exact input; or a :class:`ParallelIK` with ``passive``
+        rho : (m,) or (N, m), NaN rows where out of reach or outside ``leg_limits``; a
+        list
+            of SymPy expressions for exact input; or a :class:`ParallelIK` with
+            ``passive``
         """
         signs = self._mode(mode)
         T, batched = self._pose(T)
@@ -220,40 +341,56 @@ class ParallelManipulator:
             bad = [i for i, r in enumerate(rho) if r is sp.nan]
             reason = f"legs {bad} cannot reach" if bad else ""
             return ParallelIK(rho, {}, not bad, reason, mode or self.default_mode)
-        C = np.einsum("nij,mj->nmi", T[:, :3, :3], self.platform_points) + T[:, None, :3, 3]
+        C = _points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
         rho, ok, _ = self._legs.ik(C, signs)
         reasons = [""] * len(rho)
         for n in np.flatnonzero(~ok.all(axis=1)):
-            reasons[n] = f"leg(s) {np.flatnonzero(~ok[n]).tolist()} cannot reach the pose"
+            reasons[n] = (
+                f"leg(s) {np.flatnonzero(~ok[n]).tolist()} cannot reach the pose"
+            )
         if self.leg_limits is not None:
             outside = (rho < self.leg_limits[:, 0]) | (rho > self.leg_limits[:, 1])
             for n in np.flatnonzero(outside.any(axis=1) & ok.all(axis=1)):
                 legs = np.flatnonzero(outside[n]).tolist()
-                reasons[n] = f"leg(s) {legs} outside their limits {self.leg_limits[legs].tolist()}"
+                reasons[n] = (
+                    f"leg(s) {legs} outside their limits "
+                    f"{self.leg_limits[legs].tolist()}"
+                )
             ok = ok & ~outside
         reachable = ok.all(axis=1)
         rho = np.where(reachable[:, None], rho, np.nan)
         if not passive:
             return rho if batched else rho[0]
-        joints = self._legs.passive(C, rho, signs)
+        joints = {
+            k: np.moveaxis(v, 0, -1) if v.ndim == 3 else v
+            for k, v in self._legs.passive(C, rho, signs).items()
+        }
         if not batched:
             joints = {k: v[0] for k, v in joints.items()}
-            return ParallelIK(rho[0], joints, bool(reachable[0]), reasons[0],
-                              mode or self.default_mode)
+            return ParallelIK(
+                rho[0],
+                joints,
+                bool(reachable[0]),
+                reasons[0],
+                mode or self.default_mode,
+            )
         return ParallelIK(rho, joints, reachable, reasons, mode or self.default_mode)
 
     def ik_all(self, T):
-        """Every working mode: a dict {label: rho}, each as ``ik(T, mode=label)`` gives."""
+        """Every working mode: a dict {label: rho}, each as ``ik(T, mode=label)``
+        gives."""
         return {mode: self.ik(T, mode=mode) for mode in self.working_modes}
 
-    # ---- Jacobian and wrenches --------------------------------------------------------
+    # ---- Jacobian and wrenches ------------------------------------------------------
 
     def jacobian(self, T, mode=None):
-        """J with rho' = J V, V = [w; v] the platform's space twist: (m, 6) or (N, m, 6).
+        """J with rho' = J V, V = [w; v] the platform's space twist: (m, 6) or (N, m,
+        6).
 
-        Row i is the actuation wrench of leg i, (f; m) swapped to [m; f], scaled so that its
-        power on V is the actuator's rate: [A_i x n_i, n_i] for a leg of unit direction n_i.
-        NaN rows where the pose is out of reach; exact (SymPy) for exact input.
+        Row i is the actuation wrench of leg i, (f; m) swapped to [m; f], scaled so that
+        its power on V is the actuator's rate: [A_i x n_i, n_i] for a leg of unit
+        direction n_i. NaN rows where the pose is out of reach; exact (SymPy) for exact
+        input.
         """
         signs = self._mode(mode)
         T, batched = self._pose(T)
@@ -263,48 +400,56 @@ class ParallelManipulator:
             for c, (g, dr) in zip(C, self._legs.rows_exact(C, signs)):
                 rows.append([sp.simplify(-e / dr) for e in list(c.cross(g)) + list(g)])
             return sp.Matrix(rows)
-        rho = self.ik(T if batched else T[0], mode=mode)
-        rho = rho.reshape(-1, self.m)
-        C = np.einsum("nij,mj->nmi", T[:, :3, :3], self.platform_points) + T[:, None, :3, 3]
-        J = self._rows(C, rho)
+        C = _points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
+        rho, ok, _ = self._legs.ik(C, signs)
+        if self.leg_limits is not None:
+            ok = ok & (rho >= self.leg_limits[:, 0]) & (rho <= self.leg_limits[:, 1])
+        _, g, dr = self._legs.closure(C, rho)
+        g = g / -dr if np.ndim(dr) else g * (-1.0 / dr)  # rho' = -(g . C') / (dr/drho)
+        J = np.empty(rho.shape + (6,))
+        moment = _cross(C, g)
+        for k in range(3):
+            J[..., k], J[..., 3 + k] = moment[k], g[k]
+        J[~ok.all(axis=1)] = np.nan
         return J if batched else J[0]
 
-    def _rows(self, C, rho):
-        _, g, dr = self._legs.closure(C, rho)
-        return -np.concatenate([np.cross(C, g), g], axis=-1) / dr[..., None]
-
     def limbs(self, T=None, mode=None):
-        """The limbs' joint screws at the pose T (home by default), in the mobility paper's
-        zeroth-step format (a list per limb of (s, r, h) triples), and the actuated joint's
-        index in each: ``sk.mobility(pm.limbs(T)[0])`` analyses the mechanism there."""
+        """The limbs' joint screws at the pose T (home by default), in the mobility
+        paper's zeroth-step format (a list per limb of (s, r, h) triples), and the
+        actuated joint's index in each: ``sk.mobility(pm.limbs(T)[0])`` analyses the
+        mechanism there."""
         T = self.home_exact() if T is None else T
         signs = self._mode(mode)
         C, legs = self._exact_attachments(T)
         return legs.limbs(C, signs)
 
     def _exact_attachments(self, T):
-        """C_i as SymPy 3-vectors (exact, or Floats for a float pose) and the matching legs."""
+        """C_i as SymPy 3-vectors (exact, or Floats for a float pose) and the matching
+        legs."""
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
             return self.attachments(T), self._legs
         if batched:
             raise ValueError(f"T must be one pose (4, 4) here, got {T.shape[0]} poses")
         C = T[0, :3, :3] @ self.platform_points.T + T[0, :3, 3:]
-        return [sp.Matrix(3, 1, [sp.Float(v) for v in col]) for col in C.T], self._legs_float
+        return [
+            sp.Matrix(3, 1, [sp.Float(v) for v in col]) for col in C.T
+        ], self._legs_float
 
     def wrenches(self, T, mode=None):
-        """(actuation, constraint): the actuation wrenches (one per leg: a line along the leg,
-        or the distal link, through the platform point) and the constraint wrenches (every
-        wrench reciprocal to all joint twists of a limb, over the limbs) as ScrewSystems of
-        Wrenches; exact for exact input. Together they span the platform's wrench space
-        except at a direct singularity (Joshi & Tsai's 6 x 6 form)."""
+        """(actuation, constraint): the actuation wrenches (one per leg: a line along
+        the leg, or the distal link, through the platform point) and the constraint
+        wrenches (every wrench reciprocal to all joint twists of a limb, over the limbs)
+        as ScrewSystems of Wrenches; exact for exact input. Together they span the
+        platform's wrench space except at a direct singularity (Joshi & Tsai's 6 x 6
+        form)."""
         limbs, _ = self.limbs(T, mode)
         C, legs = self._exact_attachments(T)
         signs = self._mode(mode)
         actuation = []
         for c, (g, _) in zip(C, legs.rows_exact(C, signs)):
             if not is_symbolic(T):
-                g = g / sp.sqrt(g.dot(g))   # floats: the unit line
+                g = g / sp.sqrt(g.dot(g))  # floats: the unit line
             actuation.append(Wrench(sp.Matrix(list(g) + list(c.cross(g)))))
         constraint = []
         for limb in limbs:
@@ -312,14 +457,16 @@ class ParallelManipulator:
         return ScrewSystem(actuation, kind=Wrench), ScrewSystem(constraint, kind=Wrench)
 
     def singularities(self, T, mode=None):
-        """The singularity types present at T: a subset of {'inverse', 'direct', 'constraint'}.
+        """The singularity types present at T: a subset of {'inverse', 'direct',
+        'constraint'}.
 
-        'inverse' (type I, Gosselin & Angeles): a limb's joint twists lose rank (the limb is at
-        its boundary and an actuator can move with the platform held); 'direct' (type II):
-        the actuation and constraint wrenches together span less than the six wrenches (the
-        platform gains a freedom with the actuators locked); 'constraint': the constraint
-        wrenches lose rank (the mechanism's mobility changes; Zlatanov et al. 1995). Exact
-        ranks for exact input, SVD ranks (relative tolerance 1e-9) for floats.
+        'inverse' (type I, Gosselin & Angeles): a limb's joint twists lose rank (the
+        limb is at its boundary and an actuator can move with the platform held);
+        'direct' (type II): the actuation and constraint wrenches together span less
+        than the six wrenches (the platform gains a freedom with the actuators locked);
+        'constraint': the constraint wrenches lose rank (the mechanism's mobility
+        changes; Zlatanov et al. 1995). Exact ranks for exact input, SVD ranks (relative
+        tolerance 1e-9) for floats.
         """
         limbs, _ = self.limbs(T, mode)
         found = set()
@@ -332,7 +479,7 @@ class ParallelManipulator:
             found.add("direct")
         return found
 
-    # ---- forward kinematics ------------------------------------------------------------
+    # ---- forward kinematics ---------------------------------------------------------
 
     def fk(self, rho, guess=None, tol=1e-12, max_iterations=50):
         """The pose with actuated values rho, by Newton-Raphson on the loop closure.
@@ -340,13 +487,15 @@ class ParallelManipulator:
         Parameters
         ----------
         rho : (m,) or (N, m) actuated joint values
-        guess : (4, 4) or (N, 4, 4) starting pose(s) (default: home); the assembly mode found
+        guess : (4, 4) or (N, 4, 4) starting pose(s) (default: home); the assembly mode
+        found
             is the one Newton reaches from it
         tol : residual (m) below which a pose is accepted
 
         Returns
         -------
-        ParallelFK : ``T`` (NaN where not converged), ``success``, ``iterations``, ``error``
+        ParallelFK : ``T`` (NaN where not converged), ``success``, ``iterations``,
+        ``error``
         """
         values = self._rho(rho)
         batched = values.ndim == 2
@@ -354,11 +503,15 @@ class ParallelManipulator:
         guess = self.home() if guess is None else guess
         T0, _ = self._pose(guess, "guess")
         if len(T0) not in (1, len(values)):
-            raise ValueError(f"guess must be one pose or {len(values)} poses (one per row of "
-                             f"rho), got {len(T0)}")
+            raise ValueError(
+                f"guess must be one pose or {len(values)} poses (one per row of "
+                f"rho), got {len(T0)}"
+            )
         T, success, iterations, error = self._newton(values, T0, tol, max_iterations)
         if not batched:
-            return ParallelFK(T[0], bool(success[0]), int(iterations[0]), float(error[0]))
+            return ParallelFK(
+                T[0], bool(success[0]), int(iterations[0]), float(error[0])
+            )
         return ParallelFK(T, success, iterations, error)
 
     def _newton(self, rho, T0, tol, max_iterations):
@@ -369,13 +522,13 @@ class ParallelManipulator:
         iterations = np.zeros(N, int)
         done = np.zeros(N, bool)
         for _ in range(max_iterations):
-            C = np.einsum("nij,mj->nmi", R, self.platform_points) + p[:, None]
+            C = _points(R, p, self.platform_points)
             r, g, dr = self._legs.closure(C, rho)
             error = np.max(np.abs(r), axis=1)
             done = done | (error < tol)
             if done.all():
                 break
-            rows = np.concatenate([np.cross(C, g), g], axis=-1)[:, :, free]
+            rows = np.stack([*_cross(C, g), *g], axis=-1)[:, :, free]
             step = np.zeros((N, 6))
             with np.errstate(all="ignore"):
                 step[:, free] = _solve(rows, -r)
@@ -386,7 +539,7 @@ class ParallelManipulator:
             w, v = step[:, :3], step[:, 3:]
             R = _rodrigues(w) @ R
             p = p + v + np.cross(w, p)
-        C = np.einsum("nij,mj->nmi", R, self.platform_points) + p[:, None]
+        C = _points(R, p, self.platform_points)
         error = np.max(np.abs(self._legs.closure(C, rho)[0]), axis=1)
         success = np.isfinite(error) & (error < max(tol, 1e-10))
         T = np.zeros((N, 4, 4))
@@ -395,50 +548,66 @@ class ParallelManipulator:
         return T, success, iterations, error
 
     def fk_all(self, rho, starts=None, seed=0):
-        """Every real assembly mode with actuated values rho (m,): a list of (4, 4) poses.
+        """Every real assembly mode with actuated values rho (m,): a list of (4, 4)
+        poses.
 
-        The 3-RPR solves its univariate sextic (Gosselin, Sefrioui & Richard 1994): complete,
-        up to six modes. Other mechanisms run a multi-start Newton search
-        (:func:`screwkit._parallel_search.multistart`, ``starts`` random poses around the
-        home pose plus their mirror images through the base plane, seeded): every pose it
-        returns satisfies the legs, but it may miss a mode no start leads to; the general
-        Stewart-Gough platform has up to 40 (Dietmaier 1998 found 40 real ones).
+        The 3-RPR solves its univariate sextic (Gosselin, Sefrioui & Richard 1994):
+        complete, up to six modes. Other mechanisms run a multi-start Newton search
+        (:func:`screwkit._parallel_search.multistart`, ``starts`` random poses around
+        the home pose plus their mirror images through the base plane, seeded): every
+        pose it returns satisfies the legs, but it may miss a mode no start leads to;
+        the general Stewart-Gough platform has up to 40 (Dietmaier 1998 found 40 real
+        ones).
         """
         values = self._rho(rho)
         if values.ndim != 1:
-            raise ValueError(f"rho must be one input ({self.m},) for fk_all, "
-                             f"got shape {values.shape}")
+            raise ValueError(
+                f"rho must be one input ({self.m},) for fk_all, "
+                f"got shape {values.shape}"
+            )
         if self.name == "3-RPR":
             return _parallel_search.rpr_sextic(self, values)
         return _parallel_search.multistart(self, values, starts or 400, seed)
 
-    # ---- workspace ---------------------------------------------------------------------
+    # ---- workspace ------------------------------------------------------------------
 
     def workspace(self, x, y, z=0.0, rotation=None, mode=None, chunk=100_000):
         """The constant-orientation workspace on the grid x (nx,) by y (ny,) at height z
         (and the platform's rotation, default the home one): :class:`Workspace` with the
-        reachable points within ``leg_limits`` and det of J's free columns (its zero level
-        is the direct-singularity locus). Computed in chunks of ``chunk`` poses."""
+        reachable points within ``leg_limits`` and det of J's free columns (its zero
+        level is the direct-singularity locus). Computed in chunks of ``chunk``
+        poses."""
         x, y = as_float_array(x, "x").ravel(), as_float_array(y, "y").ravel()
         z = float(as_float_array(z, "z"))
-        rotation = self.home()[:3, :3] if rotation is None else as_float_array(rotation, "rotation")
+        rotation = (
+            self.home()[:3, :3]
+            if rotation is None
+            else as_float_array(rotation, "rotation")
+        )
         X, Y = np.meshgrid(x, y, indexing="xy")
         points = np.stack([X.ravel(), Y.ravel(), np.full(X.size, z)], axis=1)
         rho = np.full((len(points), self.m), np.nan)
         det = np.full(len(points), np.nan)
         for start in range(0, len(points), chunk):
-            part = points[start:start + chunk]
+            part = points[start : start + chunk]
             T = np.zeros((len(part), 4, 4))
             T[:, :3, :3], T[:, :3, 3], T[:, 3, 3] = rotation, part, 1.0
             r = self.ik(T, mode=mode)
-            rho[start:start + chunk] = r
+            rho[start : start + chunk] = r
             J = self.jacobian(T, mode=mode)[:, :, self.freedoms]
-            det[start:start + chunk] = np.linalg.det(np.nan_to_num(J))
+            det[start : start + chunk] = np.linalg.det(np.nan_to_num(J))
         inside = np.isfinite(rho).all(axis=1)
         det[~inside] = np.nan
         shape = X.shape
-        return Workspace(x, y, np.array(z), inside.reshape(shape), det.reshape(shape),
-                         rho.reshape(shape + (self.m,)), rotation)
+        return Workspace(
+            x,
+            y,
+            np.array(z),
+            inside.reshape(shape),
+            det.reshape(shape),
+            rho.reshape(shape + (self.m,)),
+            rotation,
+        )
 
 
 def _solve(A, b):
@@ -455,32 +624,41 @@ def _solve(A, b):
         return out
 
 
-# ---- the catalogue ---------------------------------------------------------------------------
+# ---- the catalogue -----------------------------------------------------------------
 
-def _points(value, name, m, columns, default):
+
+def _geometry(value, name, m, columns, default):
     if value is None:
         return default
     if is_symbolic(value):
         rows = sp.Matrix(value)
         if rows.shape != (m, columns):
-            raise ValueError(f"{name} must have shape ({m}, {columns}), got {rows.shape}")
+            raise ValueError(
+                f"{name} must have shape ({m}, {columns}), got {rows.shape}"
+            )
         rows = rows.tolist()
     else:
         array = as_float_array(value, name)
         if array.shape != (m, columns):
-            raise ValueError(f"{name} must have shape ({m}, {columns}), got {describe(value)}")
+            raise ValueError(
+                f"{name} must have shape ({m}, {columns}), got {describe(value)}"
+            )
         rows = array.tolist()
     return [list(r) + [0] * (3 - columns) for r in rows]
 
 
 def _circle(radius, degrees):
-    return [[radius * sp.cos(sp.pi * d / 180), radius * sp.sin(sp.pi * d / 180), 0]
-            for d in degrees]
+    return [
+        [radius * sp.cos(sp.pi * d / 180), radius * sp.sin(sp.pi * d / 180), 0]
+        for d in degrees
+    ]
 
 
 #: Default Stewart-Gough geometry: base points on a circle of radius 1 m at 120 k -/+ 15
-#: degrees, platform points on a circle of 0.5 m at 120 k -/+ 45 degrees; leg i joins base
-#: point i to platform point i (each base pair reaches two platform pairs), home 1 m above.
+#: degrees, platform points on a circle of 0.5 m at 120 k -/+ 45 degrees; leg i joins
+# base
+#: point i to platform point i (each base pair reaches two platform pairs), home 1 m
+# above.
 STEWART_BASE = _circle(1, [-15, 15, 105, 135, 225, 255])
 STEWART_PLATFORM = _circle(sp.Rational(1, 2), [-45, 45, 75, 165, 195, 285])
 
@@ -491,39 +669,68 @@ def stewart_gough(base=None, platform=None, height=1, leg_limits=((0.9, 1.6),) *
     Default: :data:`STEWART_BASE`, :data:`STEWART_PLATFORM` (exact), home ``height`` (m)
     above the base, leg lengths within ``leg_limits`` (m; None for no limits).
     """
-    base = _points(base, "base", 6, 3, STEWART_BASE)
-    platform = _points(platform, "platform", 6, 3, STEWART_PLATFORM)
+    base = _geometry(base, "base", 6, 3, STEWART_BASE)
+    platform = _geometry(platform, "platform", 6, 3, STEWART_PLATFORM)
     home = sp.Matrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, height], [0, 0, 0, 1]])
-    return ParallelManipulator("Stewart-Gough 6-UPS", Prismatic(base, planar=False), base,
-                               platform, "spatial", home, leg_limits)
+    return ParallelManipulator(
+        "Stewart-Gough 6-UPS",
+        Prismatic(base, planar=False),
+        base,
+        platform,
+        "spatial",
+        home,
+        leg_limits,
+    )
 
 
 #: Default 3-RPR geometry (m): with the leg lengths RPR_SIX_MODES_RHO it has six real
-#: assembly modes, the most a 3-RPR can have (the tests count them by an independent scan).
-RPR_BASE = [[0, 0], [sp.Rational(3, 5), sp.Rational(-4, 5)], [sp.Rational(1, 5), sp.Rational(1, 2)]]
-RPR_PLATFORM = [[0, 0], [sp.Rational(-1, 2), sp.Rational(3, 10)],
-                [sp.Rational(1, 10), sp.Rational(-7, 10)]]
+#: assembly modes, the most a 3-RPR can have (the tests count them by an independent
+# scan).
+RPR_BASE = [
+    [0, 0],
+    [sp.Rational(3, 5), sp.Rational(-4, 5)],
+    [sp.Rational(1, 5), sp.Rational(1, 2)],
+]
+RPR_PLATFORM = [
+    [0, 0],
+    [sp.Rational(-1, 2), sp.Rational(3, 10)],
+    [sp.Rational(1, 10), sp.Rational(-7, 10)],
+]
 RPR_SIX_MODES_RHO = (0.92, 1.37, 0.9)
 
 
 def planar_3rpr(base=None, platform=None, home=None, leg_limits=None):
-    """The planar 3-RPR: base (3, 2) points A_i, platform (3, 2) points b_i (m), actuated
-    prismatic legs. Poses are planar 4 x 4 (rotation about z, translation in xy)."""
-    base = _points(base, "base", 3, 2, [r + [0] for r in RPR_BASE])
-    platform = _points(platform, "platform", 3, 2, [r + [0] for r in RPR_PLATFORM])
+    """The planar 3-RPR: base (3, 2) points A_i, platform (3, 2) points b_i (m),
+    actuated prismatic legs. Poses are planar 4 x 4 (rotation about z, translation in
+    xy)."""
+    base = _geometry(base, "base", 3, 2, [r + [0] for r in RPR_BASE])
+    platform = _geometry(platform, "platform", 3, 2, [r + [0] for r in RPR_PLATFORM])
     if home is None:
-        home = sp.Matrix(rotz(sp.pi / 2)).row_join(sp.Matrix([sp.Rational(3, 10),
-                                                              sp.Rational(17, 20), 0]))
+        home = sp.Matrix(rotz(sp.pi / 2)).row_join(
+            sp.Matrix([sp.Rational(3, 10), sp.Rational(17, 20), 0])
+        )
         home = home.col_join(sp.Matrix([[0, 0, 0, 1]]))
-    return ParallelManipulator("3-RPR", Prismatic(base, planar=True), base, platform,
-                               "planar", home, leg_limits)
+    return ParallelManipulator(
+        "3-RPR",
+        Prismatic(base, planar=True),
+        base,
+        platform,
+        "planar",
+        home,
+        leg_limits,
+    )
 
 
-def planar_3rrr(base_radius=1, platform_radius=sp.Rational(1, 4), l1=sp.Rational(3, 5),
-                l2=sp.Rational(1, 2)):
-    """The planar 3-RRR: actuated cranks of length l1 at base points on a circle (120 degrees
-    apart), distal links l2 to platform points on a circle of ``platform_radius`` (m).
-    Eight working modes '+++' ... '---' (the sign of each elbow)."""
+def planar_3rrr(
+    base_radius=1,
+    platform_radius=sp.Rational(1, 4),
+    l1=sp.Rational(3, 5),
+    l2=sp.Rational(1, 2),
+):
+    """The planar 3-RRR: actuated cranks of length l1 at base points on a circle (120
+    degrees apart), distal links l2 to platform points on a circle of
+    ``platform_radius`` (m). Eight working modes '+++' ... '---' (the sign of each
+    elbow)."""
     base = _circle(base_radius, [0, 120, 240])
     platform = _circle(platform_radius, [0, 120, 240])
     z, x = [0, 0, 1], [1, 0, 0]
@@ -531,12 +738,17 @@ def planar_3rrr(base_radius=1, platform_radius=sp.Rational(1, 4), l1=sp.Rational
     return ParallelManipulator("3-RRR", legs, base, platform, "planar", sp.eye(4))
 
 
-def delta(base_radius=sp.Rational(1, 5), platform_radius=sp.Rational(1, 20),
-          l1=sp.Rational(1, 5), l2=sp.Rational(9, 20), height=sp.Rational(-7, 20)):
-    """Clavel's delta as its kinematic equivalent 3-RUU (3T): crank i of length l1 turns about
-    the tangent u_i at A_i (base circle, 120 degrees apart; theta > 0 lowers it), and a link
-    of length l2 (a U-U pair in place of the spatial parallelogram) reaches the platform
-    point b_i. The platform only translates: a tilted pose is refused."""
+def delta(
+    base_radius=sp.Rational(1, 5),
+    platform_radius=sp.Rational(1, 20),
+    l1=sp.Rational(1, 5),
+    l2=sp.Rational(9, 20),
+    height=sp.Rational(-7, 20),
+):
+    """Clavel's delta as its kinematic equivalent 3-RUU (3T): crank i of length l1 turns
+    about the tangent u_i at A_i (base circle, 120 degrees apart; theta > 0 lowers it),
+    and a link of length l2 (a U-U pair in place of the spatial parallelogram) reaches
+    the platform point b_i. The platform only translates: a tilted pose is refused."""
     base = _circle(base_radius, [0, 120, 240])
     platform = _circle(platform_radius, [0, 120, 240])
     radial = _circle(1, [0, 120, 240])
@@ -544,19 +756,27 @@ def delta(base_radius=sp.Rational(1, 5), platform_radius=sp.Rational(1, 20),
     legs = Revolute(base, tangent, radial, l1, l2, spatial=True)
     home = sp.eye(4)
     home[2, 3] = height
-    return ParallelManipulator("delta 3-RUU", legs, base, platform, "translational", home,
-                               default_mode="---")
+    return ParallelManipulator(
+        "delta 3-RUU", legs, base, platform, "translational", home, default_mode="---"
+    )
 
 
 def tripteron(a=sp.Rational(9, 20), b=sp.Rational(9, 20), L=1):
-    """The 3-PRRR Tripteron of the mobility chapter: carriage i slides along the axis e_i
-    (x, y, z; rho_i its position, m), then three revolutes along e_i with links a, b reach the
-    platform point b_i. A decoupled translational mechanism: rho_i = e_i . (p + b_i) - const."""
+    """The 3-PRRR Tripteron of the mobility chapter: carriage i slides along the axis
+    e_i (x, y, z; rho_i its position, m), then three revolutes along e_i with links a, b
+    reach the platform point b_i. A decoupled translational mechanism: rho_i = e_i . (p
+    + b_i) - const."""
     carriages = [[0, L, 0], [0, 0, L], [0, 0, 0]]
     axes = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
     tenth = sp.Rational(1, 10)
     platform = [[0, tenth, 0], [0, 0, tenth], [tenth, 0, 0]]
     home = sp.eye(4)
     home[:3, 3] = sp.Matrix([sp.Rational(7, 20)] * 3)
-    return ParallelManipulator("Tripteron 3-PRRR", Linear(carriages, axes, a, b), carriages,
-                               platform, "translational", home)
+    return ParallelManipulator(
+        "Tripteron 3-PRRR",
+        Linear(carriages, axes, a, b),
+        carriages,
+        platform,
+        "translational",
+        home,
+    )
