@@ -15,7 +15,8 @@ the catalogue:
 Numeric points are laid out component first, (3, N, m): C[k] is the k-th coordinate of
 every leg's point in every pose (fast elementwise NumPy). Each kind writes its loop
 closure as r(C, rho) = 0 with the gradient g = dr/dC and the derivative dr/drho; with
-C' = v + w x C for the platform's space twist V = [w; v]: rho' = -[C x g, g] V / (dr/drho),
+C' = v + w x C for the platform's space twist V = [w; v]:
+rho' = -[C x g, g] V / (dr/drho),
 the row of the Jacobian (the actuation wrench, swapped).
 """
 
@@ -59,7 +60,7 @@ def _floats(value):
 
 
 def evaluated(legs):
-    """A copy of ``legs`` whose exact layer holds Floats (for the screws of a float pose)."""
+    """A copy of ``legs`` whose exact layer holds Floats (the screws of a float pose)."""
     copy = object.__new__(type(legs))
     copy.__dict__.update(legs.__dict__)
     if hasattr(legs, "A_exact"):
