@@ -583,3 +583,30 @@ def test_catalogue_is_in_robots():
     # the mobility analysis of the limbs at a pose agrees with the motion type
     assert sk.mobility(RPR.limbs()[0]).type == RPR.motion_type == "2T1R"
     assert sk.mobility(TRIPTERON.limbs()[0]).number == 3
+
+
+def test_exact_ik_of_the_3rrr_equals_the_float_one_in_every_mode():
+    T = sp.eye(4)
+    T[0, 3], T[1, 3] = sp.Rational(1, 20), sp.Rational(-1, 50)
+    for mode in ("+++", "-+-"):
+        exact = RRR.ik(T, mode=mode)
+        assert all(isinstance(t, sp.Expr) for t in exact)
+        numeric = RRR.ik(np.array(T, dtype=float), mode=mode)
+        assert np.max(np.abs(np.array([float(t) for t in exact]) - numeric)) < 1e-14
+
+
+def test_delta_fk_all_poses_close_every_loop():
+    T = pose(np.eye(3), [0.03, -0.02, -0.33])
+    theta = DELTA.ik(T)
+    poses = DELTA.fk_all(theta)
+    assert min(np.max(np.abs(P - T)) for P in poses) < 1e-9
+    radial = np.c_[
+        np.cos(np.radians([0, 120, 240])), np.sin(np.radians([0, 120, 240])), [0] * 3
+    ]
+    B = 0.2 * radial + 0.2 * (
+        np.cos(theta)[:, None] * radial - np.sin(theta)[:, None] * [0, 0, 1]
+    )
+    for P in poses:
+        assert np.allclose(P[:3, :3], np.eye(3))
+        C = 0.05 * radial + P[:3, 3]
+        assert np.max(np.abs(np.linalg.norm(C - B, axis=1) - 0.45)) < 1e-9
