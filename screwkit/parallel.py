@@ -24,20 +24,28 @@ from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
+from sympy import Rational
 
+from . import _parallel_catalogue as _catalogue
+from . import _parallel_numeric as _numeric
 from . import _parallel_search
 from ._checks import (
-    ORTHONORMAL_TOL,
     as_float_array,
     check_option,
     check_transform,
     describe,
     is_symbolic,
 )
-from ._parallel_legs import Linear, Prismatic, Revolute, evaluated
+from ._parallel_catalogue import (
+    RPR_BASE,
+    RPR_PLATFORM,
+    RPR_SIX_MODES_RHO,
+    STEWART_BASE,
+    STEWART_PLATFORM,
+)
+from ._parallel_legs import Linear, Prismatic, evaluated
 from .screws import Wrench
 from .systems import ScrewSystem
-from .transforms import rotz
 
 __all__ = [
     "ParallelManipulator",
@@ -49,6 +57,11 @@ __all__ = [
     "planar_3rrr",
     "delta",
     "tripteron",
+    "STEWART_BASE",
+    "STEWART_PLATFORM",
+    "RPR_BASE",
+    "RPR_PLATFORM",
+    "RPR_SIX_MODES_RHO",
 ]
 
 #: The free components of the platform twist [wx, wy, wz, vx, vy, vz] per motion type.
@@ -100,81 +113,6 @@ class Workspace:
     det: np.ndarray
     rho: np.ndarray
     rotation: np.ndarray
-
-
-def _check_poses(T, name):
-    """check_transform, with a fast first pass for a float batch (N, 4, 4): the full
-    check (and its message) runs only when the fast one finds something wrong."""
-    if (
-        isinstance(T, np.ndarray)
-        and T.dtype == float
-        and T.ndim == 3
-        and T.shape[1:] == (4, 4)
-    ):
-        r = T[:, :3, :3].reshape(-1, 9).T.copy()  # r[3 i + j] = R_ij over the batch
-        c = [(r[j], r[3 + j], r[6 + j]) for j in range(3)]
-        gram = max(
-            np.max(
-                np.abs(
-                    c[i][0] * c[j][0] + c[i][1] * c[j][1] + c[i][2] * c[j][2] - (i == j)
-                ),
-                initial=0.0,
-            )
-            for i in range(3)
-            for j in range(i, 3)
-        )
-        cross = (
-            c[1][1] * c[2][2] - c[1][2] * c[2][1],
-            c[1][2] * c[2][0] - c[1][0] * c[2][2],
-            c[1][0] * c[2][1] - c[1][1] * c[2][0],
-        )
-        det = c[0][0] * cross[0] + c[0][1] * cross[1] + c[0][2] * cross[2]
-        last = np.max(np.abs(T[:, 3, :] - [0.0, 0.0, 0.0, 1.0]), initial=0.0)
-        if (
-            gram <= ORTHONORMAL_TOL
-            and last <= 1e-12
-            and np.all(det > 0)
-            and np.isfinite(T).all()
-        ):
-            return T
-    return check_transform(T, name)
-
-
-def _points(R, p, b):
-    """p + R b for poses R (N, 3, 3), p (N, 3) and points b (m, 3): (3, N, m)."""
-    N, m = len(R), len(b)
-    M = np.empty((3, N, 4))  # row k of [R p] for every pose, then one product
-    M[:, :, :3], M[:, :, 3] = R.transpose(1, 0, 2), p.T
-    M = M.reshape(-1, 4)
-    B = np.vstack([b.T, np.ones(m)])  # homogeneous points as columns
-    out = np.empty((3 * N, m))
-    # products of 2048 rows stay on one BLAS thread: threads only contend on a busy machine
-    for start in range(0, 3 * N, 2048):
-        np.matmul(M[start : start + 2048], B, out=out[start : start + 2048])
-    return out.reshape(3, N, m)
-
-
-def _cross(a, b):
-    return np.stack(
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    )
-
-
-def _rodrigues(w):
-    """exp([w]) for w of shape (N, 3)."""
-    theta = np.linalg.norm(w, axis=-1)[..., None, None]
-    K = np.zeros(w.shape[:-1] + (3, 3))
-    K[..., 0, 1], K[..., 0, 2], K[..., 1, 2] = -w[..., 2], w[..., 1], -w[..., 0]
-    K = K - np.swapaxes(K, -1, -2)
-    small = theta < 1e-8
-    safe = np.where(small, 1.0, theta)
-    a = np.where(small, 1.0, np.sin(safe) / safe)
-    b = np.where(small, 0.5, (1 - np.cos(safe)) / safe**2)
-    return np.eye(3) + a * K + b * (K @ K)
 
 
 class ParallelManipulator:
@@ -248,7 +186,7 @@ class ParallelManipulator:
     def _pose(self, T, name="T"):
         """T checked (rigid, and of this mechanism's motion type): (float (N, 4, 4),
         batched) or (SymPy matrix, False)."""
-        T = _check_poses(T, name)
+        T = _numeric.check_poses(T, name)
         if isinstance(T, sp.MatrixBase):
             self._check_motion(np.array(T.evalf(), dtype=float)[None], name)
             return T, False
@@ -316,7 +254,9 @@ class ParallelManipulator:
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
             return [T[:3, :3] * b + T[:3, 3] for b in self._platform_exact]
-        C = np.moveaxis(_points(T[:, :3, :3], T[:, :3, 3], self.platform_points), 0, -1)
+        C = np.moveaxis(
+            _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points), 0, -1
+        )
         return C if batched else C[0]
 
     def ik(self, T, mode=None, passive=False):
@@ -346,7 +286,7 @@ class ParallelManipulator:
             bad = [i for i, r in enumerate(rho) if r is sp.nan]
             reason = f"legs {bad} cannot reach" if bad else ""
             return ParallelIK(rho, {}, not bad, reason, mode or self.default_mode)
-        C = _points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
+        C = _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
         rho, ok, _ = self._legs.ik(C, signs)
         reasons = [""] * len(rho)
         for n in np.flatnonzero(~ok.all(axis=1)):
@@ -405,14 +345,14 @@ class ParallelManipulator:
             for c, (g, dr) in zip(C, self._legs.rows_exact(C, signs)):
                 rows.append([sp.simplify(-e / dr) for e in list(c.cross(g)) + list(g)])
             return sp.Matrix(rows)
-        C = _points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
+        C = _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
         rho, ok, _ = self._legs.ik(C, signs)
         if self.leg_limits is not None:
             ok = ok & (rho >= self.leg_limits[:, 0]) & (rho <= self.leg_limits[:, 1])
         _, g, dr = self._legs.closure(C, rho)
         g = g / -dr if np.ndim(dr) else g * (-1.0 / dr)  # rho' = -(g . C') / (dr/drho)
         J = np.empty(rho.shape + (6,))
-        moment = _cross(C, g)
+        moment = _numeric.cross(C, g)
         for k in range(3):
             J[..., k], J[..., 3 + k] = moment[k], g[k]
         J[~ok.all(axis=1)] = np.nan
@@ -520,37 +460,15 @@ class ParallelManipulator:
         return ParallelFK(T, success, iterations, error)
 
     def _newton(self, rho, T0, tol, max_iterations):
-        N = len(rho)
-        R = np.array(np.broadcast_to(T0[:, :3, :3], (N, 3, 3)))
-        p = np.array(np.broadcast_to(T0[:, :3, 3], (N, 3)))
-        free = self.freedoms
-        iterations = np.zeros(N, int)
-        done = np.zeros(N, bool)
-        for _ in range(max_iterations):
-            C = _points(R, p, self.platform_points)
-            r, g, dr = self._legs.closure(C, rho)
-            error = np.max(np.abs(r), axis=1)
-            done = done | (error < tol)
-            if done.all():
-                break
-            rows = np.stack([*_cross(C, g), *g], axis=-1)[:, :, free]
-            step = np.zeros((N, 6))
-            with np.errstate(all="ignore"):
-                step[:, free] = _solve(rows, -r)
-            step[done] = 0.0
-            size = np.max(np.abs(step), axis=1, keepdims=True)
-            step = step * np.minimum(1.0, 0.5 / np.where(size > 0, size, 1.0))  # damped
-            iterations += ~done
-            w, v = step[:, :3], step[:, 3:]
-            R = _rodrigues(w) @ R
-            p = p + v + np.cross(w, p)
-        C = _points(R, p, self.platform_points)
-        error = np.max(np.abs(self._legs.closure(C, rho)[0]), axis=1)
-        success = np.isfinite(error) & (error < max(tol, 1e-10))
-        T = np.zeros((N, 4, 4))
-        T[:, :3, :3], T[:, :3, 3], T[:, 3, 3] = R, p, 1.0
-        T[~success] = np.nan
-        return T, success, iterations, error
+        return _numeric.newton(
+            self._legs,
+            self.platform_points,
+            self.freedoms,
+            rho,
+            T0,
+            tol,
+            max_iterations,
+        )
 
     def fk_all(self, rho, starts=None, seed=0):
         """Every real assembly mode with actuated values rho (m,): a list of (4, 4)
@@ -570,7 +488,7 @@ class ParallelManipulator:
                 f"rho must be one input ({self.m},) for fk_all, "
                 f"got shape {values.shape}"
             )
-        if self.name == "3-RPR":
+        if isinstance(self._legs, Prismatic) and self.planar:
             return _parallel_search.rpr_sextic(self, values)
         return _parallel_search.multistart(self, values, starts or 400, seed)
 
@@ -615,173 +533,67 @@ class ParallelManipulator:
         )
 
 
-def _solve(A, b):
-    """Batched A x = b for square A (N, k, k); NaN rows where A is singular."""
-    try:
-        return np.linalg.solve(A, b[..., None])[..., 0]
-    except np.linalg.LinAlgError:
-        out = np.full(b.shape, np.nan)
-        for n in range(len(A)):
-            try:
-                out[n] = np.linalg.solve(A[n], b[n])
-            except np.linalg.LinAlgError:
-                pass
-        return out
-
-
 # ---- the catalogue -----------------------------------------------------------------
-
-
-def _geometry(value, name, m, columns, default):
-    if value is None:
-        return default
-    if is_symbolic(value):
-        rows = sp.Matrix(value)
-        if rows.shape != (m, columns):
-            raise ValueError(
-                f"{name} must have shape ({m}, {columns}), got {rows.shape}"
-            )
-        rows = rows.tolist()
-    else:
-        array = as_float_array(value, name)
-        if array.shape != (m, columns):
-            raise ValueError(
-                f"{name} must have shape ({m}, {columns}), got {describe(value)}"
-            )
-        rows = array.tolist()
-    return [list(r) + [0] * (3 - columns) for r in rows]
-
-
-def _circle(radius, degrees):
-    return [
-        [radius * sp.cos(sp.pi * d / 180), radius * sp.sin(sp.pi * d / 180), 0]
-        for d in degrees
-    ]
-
-
-#: Default Stewart-Gough geometry: base points on a circle of radius 1 m at 120 k -/+ 15
-#: degrees, platform points on a circle of 0.5 m at 120 k -/+ 45 degrees; leg i joins
-# base
-#: point i to platform point i (each base pair reaches two platform pairs), home 1 m
-# above.
-STEWART_BASE = _circle(1, [-15, 15, 105, 135, 225, 255])
-STEWART_PLATFORM = _circle(sp.Rational(1, 2), [-45, 45, 75, 165, 195, 285])
+# The geometry (defaults, checks, legs) is in screwkit._parallel_catalogue; each builder
+# here is the public name with its documentation.
 
 
 def stewart_gough(base=None, platform=None, height=1, leg_limits=((0.9, 1.6),) * 6):
     """The 6-UPS Stewart-Gough platform: base (6, 3) and platform (6, 3) points (m).
 
-    Default: :data:`STEWART_BASE`, :data:`STEWART_PLATFORM` (exact), home ``height`` (m)
-    above the base, leg lengths within ``leg_limits`` (m; None for no limits).
+    Default: :data:`STEWART_BASE`, :data:`STEWART_PLATFORM` (exact; base points on a
+    circle of 1 m at 120 k -/+ 15 degrees, platform points on a circle of 0.5 m at
+    120 k -/+ 45 degrees, leg i from base point i to platform point i), home ``height``
+    (m) above the base, leg lengths within ``leg_limits`` (m; None for no limits).
     """
-    base = _geometry(base, "base", 6, 3, STEWART_BASE)
-    platform = _geometry(platform, "platform", 6, 3, STEWART_PLATFORM)
-    home = sp.Matrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, height], [0, 0, 0, 1]])
     return ParallelManipulator(
-        "Stewart-Gough 6-UPS",
-        Prismatic(base, planar=False),
-        base,
-        platform,
-        "spatial",
-        home,
-        leg_limits,
+        **_catalogue.stewart_gough(base, platform, height, leg_limits)
     )
-
-
-#: Default 3-RPR geometry (m): with the leg lengths RPR_SIX_MODES_RHO it has six real
-#: assembly modes, the most a 3-RPR can have (the tests count them by an independent
-# scan).
-RPR_BASE = [
-    [0, 0],
-    [sp.Rational(3, 5), sp.Rational(-4, 5)],
-    [sp.Rational(1, 5), sp.Rational(1, 2)],
-]
-RPR_PLATFORM = [
-    [0, 0],
-    [sp.Rational(-1, 2), sp.Rational(3, 10)],
-    [sp.Rational(1, 10), sp.Rational(-7, 10)],
-]
-RPR_SIX_MODES_RHO = (0.92, 1.37, 0.9)
 
 
 def planar_3rpr(base=None, platform=None, home=None, leg_limits=None):
     """The planar 3-RPR: base (3, 2) points A_i, platform (3, 2) points b_i (m),
     actuated prismatic legs. Poses are planar 4 x 4 (rotation about z, translation in
-    xy)."""
-    base = _geometry(base, "base", 3, 2, [r + [0] for r in RPR_BASE])
-    platform = _geometry(platform, "platform", 3, 2, [r + [0] for r in RPR_PLATFORM])
-    if home is None:
-        home = sp.Matrix(rotz(sp.pi / 2)).row_join(
-            sp.Matrix([sp.Rational(3, 10), sp.Rational(17, 20), 0])
-        )
-        home = home.col_join(sp.Matrix([[0, 0, 0, 1]]))
+    xy). Default: :data:`RPR_BASE`, :data:`RPR_PLATFORM`, which have six real assembly
+    modes at the leg lengths :data:`RPR_SIX_MODES_RHO`."""
     return ParallelManipulator(
-        "3-RPR",
-        Prismatic(base, planar=True),
-        base,
-        platform,
-        "planar",
-        home,
-        leg_limits,
+        **_catalogue.planar_3rpr(base, platform, home, leg_limits)
     )
 
 
 def planar_3rrr(
-    base_radius=1,
-    platform_radius=sp.Rational(1, 4),
-    l1=sp.Rational(3, 5),
-    l2=sp.Rational(1, 2),
+    base_radius=1, platform_radius=Rational(1, 4), l1=Rational(3, 5), l2=Rational(1, 2)
 ):
     """The planar 3-RRR: actuated cranks of length l1 at base points on a circle (120
     degrees apart), distal links l2 to platform points on a circle of
     ``platform_radius`` (m). Eight working modes '+++' ... '---' (the sign of each
-    elbow)."""
-    base = _circle(base_radius, [0, 120, 240])
-    platform = _circle(platform_radius, [0, 120, 240])
-    z, x = [0, 0, 1], [1, 0, 0]
-    legs = Revolute(base, [z] * 3, [x] * 3, l1, l2, spatial=False)
-    return ParallelManipulator("3-RRR", legs, base, platform, "planar", sp.eye(4))
+    elbow). Also ``sk.robots.parallel_3rrr`` (``sk.robots.planar_3rrr`` is the
+    mobility chapter's symbolic limbs)."""
+    return ParallelManipulator(
+        **_catalogue.planar_3rrr(base_radius, platform_radius, l1, l2)
+    )
 
 
 def delta(
-    base_radius=sp.Rational(1, 5),
-    platform_radius=sp.Rational(1, 20),
-    l1=sp.Rational(1, 5),
-    l2=sp.Rational(9, 20),
-    height=sp.Rational(-7, 20),
+    base_radius=Rational(1, 5),
+    platform_radius=Rational(1, 20),
+    l1=Rational(1, 5),
+    l2=Rational(9, 20),
+    height=Rational(-7, 20),
 ):
     """Clavel's delta as its kinematic equivalent 3-RUU (3T): crank i of length l1 turns
     about the tangent u_i at A_i (base circle, 120 degrees apart; theta > 0 lowers it),
     and a link of length l2 (a U-U pair in place of the spatial parallelogram) reaches
-    the platform point b_i. The platform only translates: a tilted pose is refused."""
-    base = _circle(base_radius, [0, 120, 240])
-    platform = _circle(platform_radius, [0, 120, 240])
-    radial = _circle(1, [0, 120, 240])
-    tangent = [[-r[1], r[0], 0] for r in radial]
-    legs = Revolute(base, tangent, radial, l1, l2, spatial=True)
-    home = sp.eye(4)
-    home[2, 3] = height
+    the platform point b_i. The platform only translates: a tilted pose is refused.
+    Default working mode '---' (every knee out)."""
     return ParallelManipulator(
-        "delta 3-RUU", legs, base, platform, "translational", home, default_mode="---"
+        **_catalogue.delta(base_radius, platform_radius, l1, l2, height)
     )
 
 
-def tripteron(a=sp.Rational(9, 20), b=sp.Rational(9, 20), L=1):
+def tripteron(a=Rational(9, 20), b=Rational(9, 20), L=1):
     """The 3-PRRR Tripteron of the mobility chapter: carriage i slides along the axis
     e_i (x, y, z; rho_i its position, m), then three revolutes along e_i with links a, b
-    reach the platform point b_i. A decoupled translational mechanism: rho_i = e_i . (p
-    + b_i) - const."""
-    carriages = [[0, L, 0], [0, 0, L], [0, 0, 0]]
-    axes = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
-    tenth = sp.Rational(1, 10)
-    platform = [[0, tenth, 0], [0, 0, tenth], [tenth, 0, 0]]
-    home = sp.eye(4)
-    home[:3, 3] = sp.Matrix([sp.Rational(7, 20)] * 3)
-    return ParallelManipulator(
-        "Tripteron 3-PRRR",
-        Linear(carriages, axes, a, b),
-        carriages,
-        platform,
-        "translational",
-        home,
-    )
+    reach the platform point b_i. A decoupled translational mechanism:
+    rho_i = e_i . (p + b_i) - const."""
+    return ParallelManipulator(**_catalogue.tripteron(a, b, L))

@@ -569,6 +569,12 @@ def test_stewart_constant_orientation_workspace():
             TypeError,
             "platform must be a number or an array",
         ),
+        (
+            lambda: parallel.planar_3rrr(l1=-1),
+            ValueError,
+            "l1 must be a positive length",
+        ),
+        (lambda: parallel.delta(l2="long"), TypeError, "l2 must be a number"),
     ],
 )
 def test_bad_input_is_refused_with_a_sentence(call, error, match):
