@@ -120,7 +120,8 @@ def newton(legs, platform_points, freedoms, rho, T0, tol, max_iterations):
         done = done | (error < tol)
         if done.all():
             break
-        rows = np.stack([*cross(C, g), *g], axis=-1)[:, :, free]
+        rows = np.stack([*cross(C, g), *g], axis=-1)
+        rows = rows if len(free) == 6 else rows[:, :, free]
         step = np.zeros((N, 6))
         with np.errstate(all="ignore"):
             step[:, free] = solve(rows, -r)

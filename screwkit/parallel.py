@@ -350,7 +350,8 @@ class ParallelManipulator:
         if self.leg_limits is not None:
             ok = ok & (rho >= self.leg_limits[:, 0]) & (rho <= self.leg_limits[:, 1])
         _, g, dr = self._legs.closure(C, rho)
-        g = g / -dr if np.ndim(dr) else g * (-1.0 / dr)  # rho' = -(g . C') / (dr/drho)
+        if np.ndim(dr) or dr != -1.0:  # rho' = -(g . C') / (dr/drho)
+            g = g / -np.asarray(dr)
         J = np.empty(rho.shape + (6,))
         moment = _numeric.cross(C, g)
         for k in range(3):
