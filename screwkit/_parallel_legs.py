@@ -60,7 +60,7 @@ def _floats(value):
 
 
 def evaluated(legs):
-    """A copy of ``legs`` whose exact layer holds Floats (the screws of a float pose)."""
+    """A copy of ``legs`` whose exact layer holds Floats (for a float pose's screws)."""
     copy = object.__new__(type(legs))
     copy.__dict__.update(legs.__dict__)
     if hasattr(legs, "A_exact"):
@@ -212,6 +212,9 @@ class Revolute:
         rows, l1, _ = self._exact_geometry()
         out = []
         for c, solved, (a, u, e0, e1) in zip(C, self._solve_exact(C, signs), rows):
+            if solved is None:
+                out.append((sp.Matrix([sp.nan] * 3), sp.Integer(1)))
+                continue
             _, cos_t, sin_t, B = solved
             g = _expand(c - B)
             dB = l1 * (-sin_t * e0 + cos_t * e1)
@@ -221,7 +224,13 @@ class Revolute:
     def limbs(self, C, signs):
         rows, _, _ = self._exact_geometry()
         limbs, actuated = [], []
-        for c, solved, (a, u, e0, e1) in zip(C, self._solve_exact(C, signs), rows):
+        for i, (c, solved, (a, u, e0, e1)) in enumerate(
+            zip(C, self._solve_exact(C, signs), rows)
+        ):
+            if solved is None:
+                raise ValueError(
+                    f"T is out of reach of leg {i}: it has no joint screws"
+                )
             b = solved[3]
             if not self.spatial:
                 limbs.append([(u, a, 0), (u, b, 0), (u, c, 0)])
@@ -274,7 +283,12 @@ class Linear:
                 along = (dist2 + sp.sympify(l1) ** 2 - sp.sympify(l2) ** 2) / (
                     2 * dist2
                 )
-                h = sp.sqrt(sp.expand(sp.sympify(l1) ** 2 / dist2 - along**2))
+                h2 = sp.expand(sp.sympify(l1) ** 2 / dist2 - along**2)
+                if h2.is_negative:
+                    raise ValueError(
+                        "T is out of reach of a Tripteron leg: no joint screws"
+                    )
+                h = sp.sqrt(h2)
                 out.append((start, _expand(start + along * w + h * n)))
             return out
         start = self.A + rho * self.e

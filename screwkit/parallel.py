@@ -116,18 +116,16 @@ class Workspace:
 
 
 class ParallelManipulator:
-    """A parallel manipulator: m legs between a base and a platform, one actuator per
-    leg.
+    """A parallel manipulator: m legs between a base and a platform, one actuator each.
 
     Parameters
     ----------
     name : str
     legs : the legs' model (:mod:`screwkit._parallel_legs`): their IK and loop closure
-    base, platform : (m, 3) attachment points A_i (base frame) and b_i (platform frame),
-    in m;
-        SymPy entries keep the exact layer exact
+    base, platform : (m, 3) attachment points A_i (base frame) and b_i (platform
+        frame), in m; SymPy entries keep the exact layer exact
     motion : 'spatial' (6 freedoms), 'planar' (x, y and the angle about z) or
-    'translational'
+        'translational'
     home : (4, 4) the home pose
     leg_limits : (m, 2) limits of the actuated joints (m or rad), or None
     default_mode : the working mode ``ik`` uses when none is given
@@ -265,26 +263,35 @@ class ParallelManipulator:
         Parameters
         ----------
         T : (4, 4) or (N, 4, 4) platform pose(s), or an exact SymPy 4 x 4
-        mode : a working mode label from ``working_modes`` (e.g. '+-+' for the 3-RRR:
-        the
-            sign of each leg's elbow), default ``default_mode``
+        mode : a working mode label from ``working_modes`` (e.g. '+-+' for the
+            3-RRR: the sign of each leg's elbow), default ``default_mode``
         passive : also return the passive joints and the reason a pose is out of reach
 
         Returns
         -------
-        rho : (m,) or (N, m), NaN rows where out of reach or outside ``leg_limits``; a
-        list
-            of SymPy expressions for exact input; or a :class:`ParallelIK` with
-            ``passive``
+        rho : (m,) or (N, m), NaN rows where out of reach or outside ``leg_limits``;
+            a list of SymPy expressions for exact input (sympy.nan where out of
+            reach); or a :class:`ParallelIK` with ``passive``
         """
         signs = self._mode(mode)
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
             rho = self._legs.ik_exact(self.attachments(T), signs)
+            bad = [i for i, r in enumerate(rho) if r is sp.nan]
+            reason = f"leg(s) {bad} cannot reach the pose" if bad else ""
+            if self.leg_limits is not None and not bad:
+                values = np.array([float(r) for r in rho])
+                limits = self.leg_limits
+                outside = np.flatnonzero(
+                    (values < limits[:, 0]) | (values > limits[:, 1])
+                )
+                if len(outside):
+                    bad = outside.tolist()
+                    reason = f"leg(s) {bad} outside their limits {limits[bad].tolist()}"
+            if bad:
+                rho = [sp.nan] * self.m
             if not passive:
                 return rho
-            bad = [i for i, r in enumerate(rho) if r is sp.nan]
-            reason = f"legs {bad} cannot reach" if bad else ""
             return ParallelIK(rho, {}, not bad, reason, mode or self.default_mode)
         C = _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
         rho, ok, _ = self._legs.ik(C, signs)
@@ -433,15 +440,14 @@ class ParallelManipulator:
         Parameters
         ----------
         rho : (m,) or (N, m) actuated joint values
-        guess : (4, 4) or (N, 4, 4) starting pose(s) (default: home); the assembly mode
-        found
-            is the one Newton reaches from it
+        guess : (4, 4) or (N, 4, 4) starting pose(s) (default: home); the assembly
+            mode found is the one Newton reaches from it
         tol : residual (m) below which a pose is accepted
 
         Returns
         -------
-        ParallelFK : ``T`` (NaN where not converged), ``success``, ``iterations``,
-        ``error``
+        ParallelFK
+            ``T`` (NaN where not converged), ``success``, ``iterations``, ``error``
         """
         values = self._rho(rho)
         batched = values.ndim == 2

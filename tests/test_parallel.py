@@ -616,3 +616,17 @@ def test_delta_fk_all_poses_close_every_loop():
         assert np.allclose(P[:3, :3], np.eye(3))
         C = 0.05 * radial + P[:3, 3]
         assert np.max(np.abs(np.linalg.norm(C - B, axis=1) - 0.45)) < 1e-9
+
+
+def test_exact_out_of_reach_is_an_answer_or_a_clear_error():
+    far = sp.eye(4)
+    far[2, 3] = 3
+    assert STEWART.ik(far) == [sp.nan] * 6  # legs of 3 m: outside the limits 0.9-1.6 m
+    assert "outside their limits" in STEWART.ik(far, passive=True).reason
+    away = sp.eye(4)
+    away[0, 3] = 3
+    assert all(r is sp.nan for r in RRR.ik(away))
+    J = RRR.jacobian(away)
+    assert all(e is sp.nan for e in J)
+    with pytest.raises(ValueError, match="out of reach of leg 0"):
+        RRR.singularities(away)

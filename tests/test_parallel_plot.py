@@ -8,7 +8,11 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from screwkit import parallel  # noqa: E402
-from screwkit._parallel_plot import draw_planar, draw_spatial, draw_workspace  # noqa: E402
+from screwkit._parallel_plot import (  # noqa: E402
+    draw_planar,
+    draw_spatial,
+    draw_workspace,
+)
 
 
 def test_planar_drawing_puts_the_platform_at_its_attachment_points():
