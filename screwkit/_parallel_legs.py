@@ -88,8 +88,14 @@ class Prismatic:
     def closure(self, C, rho):
         d = C - self.A
         length = np.sqrt(_dot(d, d))
-        g = d / np.where(length > _EPS, length, 1.0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            g = d * (1.0 / length)
         return length - rho, g, -1.0
+
+    def rate_rows(self, C, rho):
+        """-g / (dr/drho): rho' = rate_rows . C' (the unit leg direction here)."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return (C - self.A) * (1.0 / rho)
 
     def passive(self, C, rho, signs):
         n = (C - self.A) / rho
@@ -168,6 +174,11 @@ class Revolute:
         g = C - B
         r = 0.5 * (_dot(g, g) - self.l2**2) / self.l2
         return r, g / self.l2, -_dot(g, dB) / self.l2
+
+    def rate_rows(self, C, theta):
+        _, g, dr = self.closure(C, theta)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return g / -dr
 
     def passive(self, C, theta, signs):
         B, _ = self._crank(theta)
@@ -297,6 +308,9 @@ class Linear:
         along = (dist2 + self.l1**2 - self.l2**2) / (2 * dist2)
         h = np.sqrt(np.clip(self.l1**2 / dist2 - along**2, 0, None))
         return start + along * w + h * _cross(np.broadcast_to(self.e, w.shape), w)
+
+    def rate_rows(self, C, rho):
+        return np.broadcast_to(self.e, C.shape)
 
     def passive(self, C, rho, signs):
         return {"elbow": self._elbow(C, rho)}

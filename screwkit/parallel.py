@@ -356,15 +356,18 @@ class ParallelManipulator:
         rho, ok, _ = self._legs.ik(C, signs)
         if self.leg_limits is not None:
             ok = ok & (rho >= self.leg_limits[:, 0]) & (rho <= self.leg_limits[:, 1])
-        _, g, dr = self._legs.closure(C, rho)
-        if np.ndim(dr) or dr != -1.0:  # rho' = -(g . C') / (dr/drho)
-            g = g / -np.asarray(dr)
-        J = np.empty(rho.shape + (6,))
-        moment = _numeric.cross(C, g)
-        for k in range(3):
-            J[..., k], J[..., 3 + k] = moment[k], g[k]
+        g = self._legs.rate_rows(C, rho)  # rho' = g . C' = (C x g) . w + g . v
+        J = np.empty((6,) + rho.shape)  # component first, returned as a (N, m, 6) view
+        np.multiply(C[1], g[2], out=J[0])
+        J[0] -= C[2] * g[1]
+        np.multiply(C[2], g[0], out=J[1])
+        J[1] -= C[0] * g[2]
+        np.multiply(C[0], g[1], out=J[2])
+        J[2] -= C[1] * g[0]
+        J[3:] = g
+        J = np.moveaxis(J, 0, -1)
         J[~ok.all(axis=1)] = np.nan
-        return J if batched else J[0]
+        return J if batched else np.ascontiguousarray(J[0])
 
     def limbs(self, T=None, mode=None):
         """The limbs' joint screws at the pose T (home by default), in the mobility

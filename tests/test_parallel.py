@@ -315,12 +315,21 @@ def test_batched_fk_with_batched_guesses():
 
 
 def test_fk_that_cannot_converge_says_so():
-    # a guess on Fichter's singularity: the Newton step is undefined
-    guess = pose(rotation([0, 0, 1], np.pi / 2), [0, 0, 1])
-    result = STEWART.fk(STEWART.ik(STEWART.home()), guess=guess)
+    # a 3-RPR whose platform is its base halved: at R = I, p = 0 every leg points at the
+    # origin, so no leg can turn the platform (the omega_z column of J is exactly zero)
+    # and no Newton step exists from that guess
+    halved = parallel.planar_3rpr(
+        [[1, 0], [-1, 1], [0, -2]], [[0.5, 0], [-0.5, 0.5], [0, -1]]
+    )
+    rho = halved.ik(pose(rotation([0, 0, 1], 0.5), [0.1, 0.2, 0]))
+    result = halved.fk(rho, guess=np.eye(4))
     assert not result.success and np.all(np.isnan(result.T))
-    # leg lengths that no pose has (legs 1 and 2 joined by 0.95 m on the platform, 0.02
-    # long)
+    # too few steps from a far guess: not converged, and said so
+    T = random_stewart_pose()
+    far = pose(rotation([1, 1, 0], 0.8), [0.3, 0, 0.8])
+    result = STEWART.fk(STEWART.ik(T), guess=far, max_iterations=2)
+    assert not result.success and np.all(np.isnan(result.T)) and result.error > 1e-6
+    # leg lengths that no pose has (legs 1 and 2: 1 cm each, platform points 0.58 m apart)
     result = RPR.fk([0.01, 0.01, 1.5])
     assert not result.success and np.all(np.isnan(result.T)) and result.error > 1e-3
 
