@@ -31,6 +31,8 @@ from . import _parallel_numeric as _numeric
 from . import _parallel_search
 from ._checks import (
     as_float_array,
+    check_integer,
+    check_rotation,
     check_option,
     check_transform,
     describe,
@@ -63,6 +65,9 @@ __all__ = [
     "RPR_PLATFORM",
     "RPR_SIX_MODES_RHO",
 ]
+
+#: The largest workspace grid (points), as sk.workspace bounds its sweeps.
+MAX_WORKSPACE_POINTS = 10_000_000
 
 #: The free components of the platform twist [wx, wy, wz, vx, vy, vz] per motion type.
 _FREEDOMS = {
@@ -504,7 +509,7 @@ class ParallelManipulator:
 
     # ---- workspace ------------------------------------------------------------------
 
-    def workspace(self, x, y, z=0.0, rotation=None, mode=None, chunk=100_000):
+    def workspace(self, x, y, z=0.0, rotation=None, mode=None, chunk=20_000):
         """The constant-orientation workspace on the grid x (nx,) by y (ny,) at height z
         (and the platform's rotation, default the home one): :class:`Workspace` with the
         reachable points within ``leg_limits`` and det of J's free columns (its zero
@@ -515,8 +520,15 @@ class ParallelManipulator:
         rotation = (
             self.home()[:3, :3]
             if rotation is None
-            else as_float_array(rotation, "rotation")
+            else check_rotation(as_float_array(rotation, "rotation"), "rotation")
         )
+        chunk = check_integer(chunk, "chunk", minimum=1)
+        if x.size * y.size > MAX_WORKSPACE_POINTS:
+            raise ValueError(
+                f"x and y make a grid of {x.size * y.size} points, more than "
+                f"{MAX_WORKSPACE_POINTS} (the memory bound of sk.workspace): sweep a "
+                f"coarser grid or a smaller region"
+            )
         X, Y = np.meshgrid(x, y, indexing="xy")
         points = np.stack([X.ravel(), Y.ravel(), np.full(X.size, z)], axis=1)
         rho = np.full((len(points), self.m), np.nan)

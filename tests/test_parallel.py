@@ -584,6 +584,12 @@ def test_stewart_constant_orientation_workspace():
             "l1 must be a positive length",
         ),
         (lambda: parallel.delta(l2="long"), TypeError, "l2 must be a number"),
+        (
+            lambda: STEWART.workspace(np.zeros(4000), np.zeros(4000)),
+            ValueError,
+            "more than 10000000",
+        ),
+        (lambda: STEWART.workspace([0.0], [0.0], chunk=0), ValueError, "chunk must be"),
     ],
 )
 def test_bad_input_is_refused_with_a_sentence(call, error, match):
