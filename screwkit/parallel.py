@@ -292,7 +292,7 @@ class ParallelManipulator:
                 )
                 if len(outside):
                     bad = outside.tolist()
-                    reason = f"leg(s) {bad} outside their limits {limits[bad].tolist()}"
+                    reason = _outside(bad, values, limits)
             if bad:
                 rho = [sp.nan] * self.m
             if not passive:
@@ -309,10 +309,7 @@ class ParallelManipulator:
             outside = (rho < self.leg_limits[:, 0]) | (rho > self.leg_limits[:, 1])
             for n in np.flatnonzero(outside.any(axis=1) & ok.all(axis=1)):
                 legs = np.flatnonzero(outside[n]).tolist()
-                reasons[n] = (
-                    f"leg(s) {legs} outside their limits "
-                    f"{self.leg_limits[legs].tolist()}"
-                )
+                reasons[n] = _outside(legs, rho[n], self.leg_limits)
             ok = ok & ~outside
         reachable = ok.all(axis=1)
         rho = np.where(reachable[:, None], rho, np.nan)
@@ -553,6 +550,15 @@ class ParallelManipulator:
             rho.reshape(shape + (self.m,)),
             rotation,
         )
+
+
+def _outside(legs, rho, limits):
+    """Why the legs ``legs`` are out of reach, with the first one's value and limits."""
+    i = legs[0]
+    return (
+        f"leg(s) {legs} outside their limits "
+        f"(leg {i}: {rho[i]:.4g} not in [{limits[i, 0]:g}, {limits[i, 1]:g}])"
+    )
 
 
 # ---- the catalogue -----------------------------------------------------------------
