@@ -8,6 +8,9 @@ import numpy as np
 
 from ._checks import ORTHONORMAL_TOL, check_transform
 
+#: Where R_ij sits in a flattened 4 x 4 pose, for i, j = 0, 1, 2.
+_ROTATION = [0, 1, 2, 4, 5, 6, 8, 9, 10]
+
 __all__ = ["check_poses", "points", "cross", "rodrigues", "solve", "newton"]
 
 
@@ -20,7 +23,7 @@ def check_poses(T, name):
         and T.ndim == 3
         and T.shape[1:] == (4, 4)
     ):
-        r = T[:, :3, :3].reshape(-1, 9).T.copy()  # r[3 i + j] = R_ij over the batch
+        r = T.reshape(-1, 16).T[_ROTATION]  # r[3 i + j] = R_ij over the batch, one copy
         c = [(r[j], r[3 + j], r[6 + j]) for j in range(3)]
         gram = max(
             np.max(

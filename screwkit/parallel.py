@@ -162,9 +162,7 @@ class ParallelManipulator:
         self._home = (
             sp.Matrix(home) if is_symbolic(home) else np.array(home, dtype=float)
         )
-        self.leg_limits = (
-            None if leg_limits is None else np.array(leg_limits, dtype=float)
-        )
+        self.leg_limits = None if leg_limits is None else self._limits(leg_limits)
         self.working_modes = (
             ["single"]
             if legs.modes == ("",)
@@ -172,6 +170,20 @@ class ParallelManipulator:
         )
         self.default_mode = default_mode or self.working_modes[0]
         self.prismatic = isinstance(legs, (Prismatic, Linear))
+
+    def _limits(self, leg_limits):
+        limits = as_float_array(leg_limits, "leg_limits")
+        if limits.shape != (self.m, 2):
+            raise ValueError(
+                f"leg_limits must have shape ({self.m}, 2) (a lower and an upper limit "
+                f"per leg) or be None, got shape {limits.shape}"
+            )
+        if np.any(limits[:, 0] >= limits[:, 1]):
+            raise ValueError(
+                f"leg_limits must have each lower limit below its upper one, got "
+                f"{limits.tolist()}"
+            )
+        return limits
 
     def __repr__(self):
         return f"ParallelManipulator({self.name!r}, {self.m} legs, {self.motion_type})"

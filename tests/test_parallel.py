@@ -585,6 +585,16 @@ def test_stewart_constant_orientation_workspace():
         ),
         (lambda: parallel.delta(l2="long"), TypeError, "l2 must be a number"),
         (
+            lambda: parallel.stewart_gough(leg_limits=[(1.0, 2.0)] * 5),
+            ValueError,
+            r"leg_limits must have shape \(6, 2\)",
+        ),
+        (
+            lambda: parallel.planar_3rpr(leg_limits=[(1.0, 0.5)] * 3),
+            ValueError,
+            "each lower limit below its upper one",
+        ),
+        (
             lambda: STEWART.workspace(np.zeros(4000), np.zeros(4000)),
             ValueError,
             "more than 10000000",
