@@ -81,8 +81,14 @@ class Prismatic:
         self.planar = planar
 
     def ik(self, C, signs):
-        d = C - self.A
-        rho = np.sqrt(_dot(d, d))
+        rho = np.subtract(C[0], self.A[0])  # |C - A|, in place: no temporaries
+        rho *= rho
+        term = np.empty_like(rho)
+        for k in (1, 2):
+            np.subtract(C[k], self.A[k], out=term)
+            term *= term
+            rho += term
+        np.sqrt(rho, out=rho)
         return rho, rho > 0, None
 
     def closure(self, C, rho):

@@ -23,33 +23,47 @@ def check_poses(T, name):
         and T.ndim == 3
         and T.shape[1:] == (4, 4)
     ):
-        r = T.reshape(-1, 16).T[_ROTATION]  # r[3 i + j] = R_ij over the batch, one copy
-        c = [(r[j], r[3 + j], r[6 + j]) for j in range(3)]
-        gram = max(
-            np.max(
-                np.abs(
-                    c[i][0] * c[j][0] + c[i][1] * c[j][1] + c[i][2] * c[j][2] - (i == j)
-                ),
-                initial=0.0,
+        flat = T.reshape(-1, 16)
+        worst, det = 0.0, 1.0
+        for start in range(0, len(flat), 8192):  # blocks that stay in the cache
+            block_worst, block_det = _gram_and_det(
+                flat[start : start + 8192].T[_ROTATION]
             )
-            for i in range(3)
-            for j in range(i, 3)
-        )
-        cross = (
-            c[1][1] * c[2][2] - c[1][2] * c[2][1],
-            c[1][2] * c[2][0] - c[1][0] * c[2][2],
-            c[1][0] * c[2][1] - c[1][1] * c[2][0],
-        )
-        det = c[0][0] * cross[0] + c[0][1] * cross[1] + c[0][2] * cross[2]
+            worst, det = max(worst, block_worst), min(det, block_det)
         last = np.max(np.abs(T[:, 3, :] - [0.0, 0.0, 0.0, 1.0]), initial=0.0)
         if (
-            gram <= ORTHONORMAL_TOL
+            worst <= ORTHONORMAL_TOL
             and last <= 1e-12
-            and np.all(det > 0)
+            and det > 0
             and np.isfinite(T).all()
         ):
             return T
     return check_transform(T, name)
+
+
+def _gram_and_det(r):
+    """max |R^T R - I| and min det R over rotations given as rows r[3 i + j] = R_ij."""
+    col = [(r[j], r[3 + j], r[6 + j]) for j in range(3)]
+    dot, term = np.empty(r.shape[1]), np.empty(r.shape[1])  # in place: no temporaries
+    worst = 0.0
+    for i in range(3):
+        for j in range(i, 3):
+            np.multiply(col[i][0], col[j][0], out=dot)
+            for k in (1, 2):
+                dot += np.multiply(col[i][k], col[j][k], out=term)
+            target = float(i == j)
+            worst = max(worst, dot.max() - target, target - dot.min())
+    # det R = c0 . (c1 x c2) > 0 (a reflection passes the Gram test)
+    np.multiply(col[1][1], col[2][2], out=dot)
+    dot -= np.multiply(col[1][2], col[2][1], out=term)
+    det = dot * col[0][0]
+    np.multiply(col[1][2], col[2][0], out=dot)
+    dot -= np.multiply(col[1][0], col[2][2], out=term)
+    det += np.multiply(dot, col[0][1], out=term)
+    np.multiply(col[1][0], col[2][1], out=dot)
+    dot -= np.multiply(col[1][1], col[2][0], out=term)
+    det += np.multiply(dot, col[0][2], out=term)
+    return worst, det.min(initial=1.0)
 
 
 def points(R, p, b):

@@ -66,6 +66,9 @@ __all__ = [
     "RPR_SIX_MODES_RHO",
 ]
 
+#: Poses per block of the batched computations: a block's arrays stay in the cache.
+_BLOCK = 4096
+
 #: The largest workspace grid (points), as sk.workspace bounds its sweeps.
 MAX_WORKSPACE_POINTS = 10_000_000
 
@@ -310,8 +313,7 @@ class ParallelManipulator:
             if not passive:
                 return rho
             return ParallelIK(rho, {}, not bad, reason, mode or self.default_mode)
-        C = _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
-        rho, ok, _ = self._legs.ik(C, signs)
+        rho, ok = self._solve_legs(T, signs, limits=False)
         reasons = [""] * len(rho)
         for n in np.flatnonzero(~ok.all(axis=1)):
             reasons[n] = (
@@ -327,6 +329,7 @@ class ParallelManipulator:
         rho = np.where(reachable[:, None], rho, np.nan)
         if not passive:
             return rho if batched else rho[0]
+        C = _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
         joints = {
             k: np.moveaxis(v, 0, -1) if v.ndim == 3 else v
             for k, v in self._legs.passive(C, rho, signs).items()
@@ -366,22 +369,41 @@ class ParallelManipulator:
             for c, (g, dr) in zip(C, self._legs.rows_exact(C, signs)):
                 rows.append([sp.simplify(-e / dr) for e in list(c.cross(g)) + list(g)])
             return sp.Matrix(rows)
-        C = _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
-        rho, ok, _ = self._legs.ik(C, signs)
-        if self.leg_limits is not None:
-            ok = ok & (rho >= self.leg_limits[:, 0]) & (rho <= self.leg_limits[:, 1])
-        g = self._legs.rate_rows(C, rho)  # rho' = g . C' = (C x g) . w + g . v
-        J = np.empty((6,) + rho.shape)  # component first, returned as a (N, m, 6) view
-        np.multiply(C[1], g[2], out=J[0])
-        J[0] -= C[2] * g[1]
-        np.multiply(C[2], g[0], out=J[1])
-        J[1] -= C[0] * g[2]
-        np.multiply(C[0], g[1], out=J[2])
-        J[2] -= C[1] * g[0]
-        J[3:] = g
+        J = np.empty((6, len(T), self.m))  # component first, returned as (N, m, 6)
+        for start in range(0, len(T), _BLOCK):
+            part = T[start : start + _BLOCK]
+            C = _numeric.points(part[:, :3, :3], part[:, :3, 3], self.platform_points)
+            rho, ok = self._legs_ok(C, signs)
+            g = self._legs.rate_rows(C, rho)  # rho' = g . C' = (C x g) . w + g . v
+            out = J[:, start : start + _BLOCK]
+            np.multiply(C[1], g[2], out=out[0])
+            out[0] -= C[2] * g[1]
+            np.multiply(C[2], g[0], out=out[1])
+            out[1] -= C[0] * g[2]
+            np.multiply(C[0], g[1], out=out[2])
+            out[2] -= C[1] * g[0]
+            out[3:] = g
+            out[:, ~ok.all(axis=1)] = np.nan
         J = np.moveaxis(J, 0, -1)
-        J[~ok.all(axis=1)] = np.nan
         return J if batched else np.ascontiguousarray(J[0])
+
+    def _legs_ok(self, C, signs, limits=True):
+        """rho and ok (reachable, within the limits) for the points C (3, N, m)."""
+        rho, ok, _ = self._legs.ik(C, signs)
+        if limits and self.leg_limits is not None:
+            ok &= rho >= self.leg_limits[:, 0]
+            ok &= rho <= self.leg_limits[:, 1]
+        return rho, ok
+
+    def _solve_legs(self, T, signs, limits=True):
+        """rho, ok (N, m) for checked float poses T (N, 4, 4), block by block."""
+        rho, ok = np.empty((len(T), self.m)), np.empty((len(T), self.m), bool)
+        for start in range(0, len(T), _BLOCK):
+            part = T[start : start + _BLOCK]
+            C = _numeric.points(part[:, :3, :3], part[:, :3, 3], self.platform_points)
+            block = slice(start, start + _BLOCK)
+            rho[block], ok[block] = self._legs_ok(C, signs, limits)
+        return rho, ok
 
     def limbs(self, T=None, mode=None):
         """The limbs' joint screws at the pose T (home by default), in the mobility
