@@ -9,7 +9,7 @@ Stewart-platform scripts on GitHub compute), for what a user runs:
 The NumPy loops run on a slice (1,000 or 200 poses) and are scaled to the full count
 (per-pose cost is constant); the 3-RPR's reference is a scan of 100,001 platform angles
 solving the two linear equations at each (what one does without the sextic).
-"first call" is a fresh mechanism's first call; "steady" the best of 5 repeated calls.
+"first call" is a fresh mechanism's first call; "steady" the best of 11 repeated calls.
 Usage: python benchmarks/bench_parallel.py
 """
 
@@ -23,7 +23,7 @@ RNG = np.random.default_rng(0)
 N_IK, N_FK = 100_000, 10_000
 
 
-def best(function, number=1, repeat=5):
+def best(function, number=1, repeat=11):
     return min(timeit.repeat(function, number=number, repeat=repeat)) / number
 
 
