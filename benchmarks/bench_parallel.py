@@ -165,14 +165,11 @@ def main():
         met = "yes" if t_steady <= goal else "NO"
         print(
             f"{task:<25}{t_first * 1e3:>9.1f} ms{t_steady * 1e3:>8.1f} ms"
-            f"{t_loop * 1e3:>10.0f} ms{t_loop / t_steady:>7.0f}x{goal * 1e3:>7.0f} ms  {met}"
+            f"{t_loop * 1e3:>10.0f} ms{t_loop / t_steady:>7.0f}x"
+            f"{goal * 1e3:>7.0f} ms  {met}"
         )
-    print(
-        "\nNumPy loops: one pose at a time, scaled from 1,000 (IK, J) or 200 (FK) poses;"
-    )
-    print(
-        "the 3-RPR reference scans 100,001 platform angles (it counts modes, no poses)."
-    )
+    print("\nNumPy loops: one pose at a time, scaled from 1,000 (IK, J) or 200 (FK)")
+    print("poses; the 3-RPR reference scans 100,001 platform angles (counts modes).")
 
 
 if __name__ == "__main__":
