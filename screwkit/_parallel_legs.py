@@ -100,8 +100,10 @@ class Prismatic:
 
     def rate_rows(self, C, rho):
         """-g / (dr/drho): rho' = rate_rows . C' (the unit leg direction here)."""
+        g = np.subtract(C, self.A)
         with np.errstate(divide="ignore", invalid="ignore"):
-            return (C - self.A) * (1.0 / rho)
+            g *= 1.0 / rho
+        return g
 
     def passive(self, C, rho, signs):
         n = (C - self.A) / rho

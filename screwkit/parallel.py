@@ -375,13 +375,10 @@ class ParallelManipulator:
             C = _numeric.points(part[:, :3, :3], part[:, :3, 3], self.platform_points)
             rho, ok = self._legs_ok(C, signs)
             g = self._legs.rate_rows(C, rho)  # rho' = g . C' = (C x g) . w + g . v
-            out = J[:, start : start + _BLOCK]
-            np.multiply(C[1], g[2], out=out[0])
-            out[0] -= C[2] * g[1]
-            np.multiply(C[2], g[0], out=out[1])
-            out[1] -= C[0] * g[2]
-            np.multiply(C[0], g[1], out=out[2])
-            out[2] -= C[1] * g[0]
+            out, term = J[:, start : start + _BLOCK], np.empty(rho.shape)
+            for k, (i, j) in enumerate(((1, 2), (2, 0), (0, 1))):  # C x g, in place
+                np.multiply(C[i], g[j], out=out[k])
+                out[k] -= np.multiply(C[j], g[i], out=term)
             out[3:] = g
             out[:, ~ok.all(axis=1)] = np.nan
         J = np.moveaxis(J, 0, -1)
