@@ -313,20 +313,20 @@ class ParallelManipulator:
             if not passive:
                 return rho
             return ParallelIK(rho, {}, not bad, reason, mode or self.default_mode)
-        rho, ok = self._solve_legs(T, signs, limits=False)
-        reasons = [""] * len(rho)
-        for n in np.flatnonzero(~ok.all(axis=1)):
-            reasons[n] = (
-                f"leg(s) {np.flatnonzero(~ok[n]).tolist()} cannot reach the pose"
-            )
-        if self.leg_limits is not None:
-            outside = (rho < self.leg_limits[:, 0]) | (rho > self.leg_limits[:, 1])
-            for n in np.flatnonzero(outside.any(axis=1) & ok.all(axis=1)):
-                legs = np.flatnonzero(outside[n]).tolist()
-                reasons[n] = _outside(legs, rho[n], self.leg_limits)
-            ok = ok & ~outside
+        rho, ok = self._solve_legs(T, signs)  # reachable and within the limits
         reachable = ok.all(axis=1)
-        rho = np.where(reachable[:, None], rho, np.nan)
+        bad = np.flatnonzero(~reachable)
+        reasons = [""] * len(rho) if passive else None
+        if passive and len(bad):  # only the rows out of reach are looked at again
+            values, geometric = self._solve_legs(T[bad], signs, limits=False)
+            for n, value, ok_n in zip(bad, values, geometric):
+                if not ok_n.all():
+                    legs = np.flatnonzero(~ok_n).tolist()
+                    reasons[n] = f"leg(s) {legs} cannot reach the pose"
+                else:
+                    legs = np.flatnonzero(~ok[n]).tolist()
+                    reasons[n] = _outside(legs, value, self.leg_limits)
+        rho[bad] = np.nan
         if not passive:
             return rho if batched else rho[0]
         C = _numeric.points(T[:, :3, :3], T[:, :3, 3], self.platform_points)
