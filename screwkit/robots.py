@@ -12,11 +12,14 @@ from ._checks import as_float_array, as_real_scalar, describe
 from .chains import Chain, Link
 
 from .limbs import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
+from .parallel import delta, planar_3rpr, stewart_gough, tripteron
+from .parallel import planar_3rrr as parallel_3rrr
 from .transforms import rot_axis, rotx, roty, rotz, transl
 
 __all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru",
            "pm_6ups", "planar_3rrr", "pm_3rps", "pm_3ruu", "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH",
            "DRAWING_VALUES"]
+__all__ += ["stewart_gough", "planar_3rpr", "parallel_3rrr", "delta", "tripteron"]  # sk.parallel
 
 X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
 

@@ -1,0 +1,165 @@
+"""The geometry of the catalogue of :mod:`screwkit.parallel`: default attachment points,
+checks and legs; each function returns the keyword arguments of a ParallelManipulator.
+
+Defaults are exact SymPy numbers, so that the exact layer stays exact; the numeric layer
+reads their float values.
+"""
+
+import sympy as sp
+
+from ._checks import as_float_array, as_sympy_scalar, describe, is_symbolic
+from ._parallel_legs import Linear, Prismatic, Revolute
+from .transforms import rotz
+
+
+def _geometry(value, name, m, columns, default):
+    if value is None:
+        return default
+    if is_symbolic(value):
+        rows = sp.Matrix(value)
+        if rows.shape != (m, columns):
+            raise ValueError(
+                f"{name} must have shape ({m}, {columns}), got {rows.shape}"
+            )
+        rows = rows.tolist()
+    else:
+        array = as_float_array(value, name)
+        if array.shape != (m, columns):
+            raise ValueError(
+                f"{name} must have shape ({m}, {columns}), got {describe(value)}"
+            )
+        rows = array.tolist()
+    return [list(r) + [0] * (3 - columns) for r in rows]
+
+
+def _length(value, name):
+    """A positive length (m): exact if given exactly."""
+    length = as_sympy_scalar(value, name)
+    if not (length.is_number and length > 0):
+        raise ValueError(f"{name} must be a positive length (m), got {value!r}")
+    return length
+
+
+def _circle(radius, degrees):
+    return [
+        [radius * sp.cos(sp.pi * d / 180), radius * sp.sin(sp.pi * d / 180), 0]
+        for d in degrees
+    ]
+
+
+#: Default Stewart-Gough geometry: base points on a circle of radius 1 m at
+#: 120 k -/+ 15 degrees, platform points on a circle of 0.5 m at 120 k -/+ 45 degrees;
+#: leg i joins base point i to platform point i (each base pair reaches two platform
+#: pairs).
+STEWART_BASE = _circle(1, [-15, 15, 105, 135, 225, 255])
+STEWART_PLATFORM = _circle(sp.Rational(1, 2), [-45, 45, 75, 165, 195, 285])
+
+#: Default 3-RPR geometry (m): with the leg lengths RPR_SIX_MODES_RHO it has six real
+#: assembly modes, the most a 3-RPR can have (the tests count them by a separate scan).
+RPR_BASE = [
+    [0, 0],
+    [sp.Rational(3, 5), sp.Rational(-4, 5)],
+    [sp.Rational(1, 5), sp.Rational(1, 2)],
+]
+RPR_PLATFORM = [
+    [0, 0],
+    [sp.Rational(-1, 2), sp.Rational(3, 10)],
+    [sp.Rational(1, 10), sp.Rational(-7, 10)],
+]
+RPR_SIX_MODES_RHO = (0.92, 1.37, 0.9)
+
+
+def stewart_gough(base, platform, height, leg_limits):
+    base = _geometry(base, "base", 6, 3, STEWART_BASE)
+    platform = _geometry(platform, "platform", 6, 3, STEWART_PLATFORM)
+    height = as_sympy_scalar(height, "height")
+    home = sp.Matrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, height], [0, 0, 0, 1]])
+    return dict(
+        name="Stewart-Gough 6-UPS",
+        legs=Prismatic(base, planar=False),
+        base=base,
+        platform=platform,
+        motion="spatial",
+        home=home,
+        leg_limits=leg_limits,
+    )
+
+
+def planar_3rpr(base, platform, home, leg_limits):
+    base = _geometry(base, "base", 3, 2, [r + [0] for r in RPR_BASE])
+    platform = _geometry(platform, "platform", 3, 2, [r + [0] for r in RPR_PLATFORM])
+    if home is None:
+        home = sp.Matrix(rotz(sp.pi / 2)).row_join(
+            sp.Matrix([sp.Rational(3, 10), sp.Rational(17, 20), 0])
+        )
+        home = home.col_join(sp.Matrix([[0, 0, 0, 1]]))
+    return dict(
+        name="3-RPR",
+        legs=Prismatic(base, planar=True),
+        base=base,
+        platform=platform,
+        motion="planar",
+        home=home,
+        leg_limits=leg_limits,
+    )
+
+
+def planar_3rrr(base_radius, platform_radius, l1, l2):
+    base_radius, platform_radius = (
+        _length(base_radius, "base_radius"),
+        _length(platform_radius, "platform_radius"),
+    )
+    l1, l2 = _length(l1, "l1"), _length(l2, "l2")
+    base = _circle(base_radius, [0, 120, 240])
+    platform = _circle(platform_radius, [0, 120, 240])
+    z, x = [0, 0, 1], [1, 0, 0]
+    legs = Revolute(base, [z] * 3, [x] * 3, l1, l2, spatial=False)
+    return dict(
+        name="3-RRR",
+        legs=legs,
+        base=base,
+        platform=platform,
+        motion="planar",
+        home=sp.eye(4),
+    )
+
+
+def delta(base_radius, platform_radius, l1, l2, height):
+    base_radius, platform_radius = (
+        _length(base_radius, "base_radius"),
+        _length(platform_radius, "platform_radius"),
+    )
+    l1, l2 = _length(l1, "l1"), _length(l2, "l2")
+    base = _circle(base_radius, [0, 120, 240])
+    platform = _circle(platform_radius, [0, 120, 240])
+    radial = _circle(1, [0, 120, 240])
+    tangent = [[-r[1], r[0], 0] for r in radial]
+    home = sp.eye(4)
+    home[2, 3] = as_sympy_scalar(height, "height")
+    return dict(
+        name="delta 3-RUU",
+        legs=Revolute(base, tangent, radial, l1, l2, True),
+        base=base,
+        platform=platform,
+        motion="translational",
+        home=home,
+        default_mode="---",
+    )
+
+
+def tripteron(a, b, L):
+    a, b, L = _length(a, "a"), _length(b, "b"), _length(L, "L")
+    carriages = [[0, L, 0], [0, 0, L], [0, 0, 0]]
+    axes = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    tenth = sp.Rational(1, 10)
+    platform = [[0, tenth, 0], [0, 0, tenth], [tenth, 0, 0]]
+    home = sp.eye(4)
+    home[:3, 3] = sp.Matrix([sp.Rational(7, 20)] * 3)
+    return dict(
+        name="Tripteron 3-PRRR",
+        legs=Linear(carriages, axes, a, b),
+        base=carriages,
+        platform=platform,
+        motion="translational",
+        home=home,
+    )

@@ -1,0 +1,124 @@
+"""Drawings of parallel manipulators at a pose (matplotlib): planar ones in the plane,
+spatial ones in 3D, and constant-orientation workspaces with their singular curves.
+
+Display layer: used by the chapter "Parallel manipulators in motion" directly
+(``from screwkit._parallel_plot import draw_planar``) or through ``sk.plotting``.
+"""
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+from .parallel import ParallelManipulator
+
+__all__ = ["draw_planar", "draw_spatial", "draw_workspace"]
+
+
+def _check(pm, T):
+    if not isinstance(pm, ParallelManipulator):
+        raise TypeError(
+            f"pm must be a ParallelManipulator (e.g. sk.parallel.planar_3rpr()), got "
+            f"{type(pm).__name__}"
+        )
+    T = np.asarray(pm.home() if T is None else T, dtype=float)
+    if T.shape != (4, 4):
+        raise ValueError(f"T must be one pose of shape (4, 4), got shape {T.shape}")
+    return T
+
+
+def _closed(points):
+    return np.vstack([points, points[:1]])
+
+
+def draw_planar(
+    pm, T=None, ax=None, mode=None, color="tab:blue", label=None, lines=False, alpha=1.0
+):
+    """Draw a planar parallel manipulator (3-RPR, 3-RRR) at the pose T in the xy-plane.
+
+    The base triangle (grey), the platform triangle (``color``), the legs (for cranks:
+    crank then distal link, the elbow marked) and, with ``lines``, each leg's line
+    extended across the figure (the actuation wrenches' lines). Returns the axes.
+    """
+    T = _check(pm, T)
+    if ax is None:
+        _, ax = plt.subplots(figsize=(4.5, 4.5))
+    A = pm.base_points[:, :2]
+    C = (T[:3, :3] @ pm.platform_points.T).T[:, :2] + T[:2, 3]
+    ax.plot(*_closed(A).T, color="0.5", lw=1.5)
+    ax.plot(A[:, 0], A[:, 1], "^", color="0.3", ms=8)
+    ax.fill(*C.T, color=color, alpha=0.25 * alpha)
+    ax.plot(*_closed(C).T, color=color, lw=2, alpha=alpha, label=label)
+    joints = pm.ik(T, mode=mode, passive=True)
+    for i in range(pm.m):
+        if "elbow" in joints.passive:
+            B = joints.passive["elbow"][i][:2]
+            ax.plot(
+                [A[i, 0], B[0], C[i, 0]],
+                [A[i, 1], B[1], C[i, 1]],
+                "-o",
+                color=color,
+                alpha=alpha,
+                ms=4,
+                lw=1.5,
+            )
+        else:
+            ax.plot(
+                [A[i, 0], C[i, 0]],
+                [A[i, 1], C[i, 1]],
+                "-",
+                color=color,
+                alpha=alpha,
+                lw=3,
+            )
+        if lines:
+            d = C[i] - A[i]
+            d = d / np.linalg.norm(d)
+            ends = np.array([A[i] - 3 * d, A[i] + 3 * d])
+            ax.plot(*ends.T, ":", color=color, lw=1, alpha=alpha)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    return ax
+
+
+def draw_spatial(pm, T=None, ax=None, color="tab:blue", label=None):
+    """Draw a spatial parallel manipulator (the Stewart-Gough platform) at T in 3D:
+    base and platform polygons and the legs as straight lines. Returns the 3D axes."""
+    T = _check(pm, T)
+    if ax is None:
+        fig = plt.figure(figsize=(5, 4.5))
+        ax = fig.add_subplot(projection="3d")
+    A = pm.base_points
+    C = (T[:3, :3] @ pm.platform_points.T).T + T[:3, 3]
+    ax.plot(*_closed(A).T, color="0.5", lw=1.5)
+    ax.plot(*_closed(C).T, color=color, lw=2, label=label)
+    for a, c in zip(A, C):
+        ax.plot(*np.array([a, c]).T, color=color, lw=2.5)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)")
+    return ax
+
+
+def draw_workspace(workspace, ax=None, color="tab:green"):
+    """Draw a :class:`~screwkit.parallel.Workspace`: the reachable region (shaded) and
+    the direct-singularity curves, where det J changes sign inside it (black)."""
+    if ax is None:
+        _, ax = plt.subplots(figsize=(4.5, 4.5))
+    X, Y = np.meshgrid(workspace.x, workspace.y)
+    ax.contourf(
+        X,
+        Y,
+        workspace.inside.astype(float),
+        levels=[0.5, 1.5],
+        colors=[color],
+        alpha=0.35,
+    )
+    ax.contour(X, Y, workspace.inside.astype(float), levels=[0.5], colors=[color])
+    if np.any(np.isfinite(workspace.det)):
+        det = np.where(workspace.inside, workspace.det, np.nan)
+        if np.nanmin(det) < 0 < np.nanmax(det):
+            ax.contour(X, Y, det, levels=[0.0], colors="k", linewidths=1.5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    return ax
