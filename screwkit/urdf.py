@@ -36,7 +36,7 @@ import sympy as sp
 
 from ._checks import describe
 
-__all__ = ["URDFDescription", "read_urdf"]
+__all__ = ["URDFDescription", "read_urdf", "data_file"]
 
 #: The joint types a serial chain can hold, and those refused on the path.
 MOVING = ("revolute", "continuous", "prismatic")
@@ -315,3 +315,16 @@ def read_urdf(source, base_link=None, tip_link=None):
         base_link=base,
         tip_link=tip,
     )
+
+
+def data_file(name):
+    """The path of a URDF shipped with screwkit (``'ur5e.urdf'``: the UR5e written from
+    Universal Robots' published DH parameters)."""
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
+    path = os.path.join(folder, name) if isinstance(name, str) else ""
+    if not os.path.isfile(path):
+        shipped = sorted(os.listdir(folder))
+        raise ValueError(
+            f"name must be one of the shipped files {shipped}, got {name!r}"
+        )
+    return path
