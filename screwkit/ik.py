@@ -1,12 +1,20 @@
-"""Inverse kinematics: closed form for arms with a spherical wrist, and numeric for any chain.
+"""Inverse kinematics: closed form for some 6-joint arms, numeric for any chain.
 
-Closed form (:func:`analytic_ik`, :func:`analytic_ik_all`): any 6R arm whose last three axes
-meet in a point and whose joints 2 and 3 are parallel (the PUMA 560 with any lengths,
-offsets, base and tool; the Kawasaki CX210L), solved from the chain's own screws by the
-Paden–Kahan subproblems (:mod:`screwkit.subproblems`, re-exported here). Up to eight
-solutions, labelled l/r arm, u/d elbow, n/f wrist by the geometric definitions of
-:mod:`screwkit.spherical_wrist` (Corke's labels for the PUMA). :func:`puma560_ik` is the same
-solver under the PUMA's name.
+Closed form (:func:`analytic_ik`, :func:`analytic_ik_all`), solved from the chain's own
+screws by the Paden–Kahan subproblems (:mod:`screwkit.subproblems`, re-exported here),
+for any lengths, offsets, base and tool of these structures (:data:`STRUCTURES`, tried
+in order; :func:`structure` and ``IKSolutions.structure`` say which one a chain has):
+
+* 6R, a spherical wrist (the last three axes meet) and joints 2, 3 parallel: the PUMA
+  560, the Kawasaki CX210L (:mod:`screwkit.spherical_wrist`);
+* UR-type 6R: joints 2, 3, 4 parallel and axes 5, 6 meeting: the Universal Robots arms
+  (:mod:`screwkit.ur_ik`, after Hawkins 2013).
+
+Up to eight solutions, labelled l/r arm, u/d elbow, n/f wrist by geometric definitions
+(Corke's labels for the PUMA). Any other arm (7 joints, no spherical wrist and no three
+parallel axes, ...) is refused with a ``ValueError`` that says what each structure
+needs: use :func:`numeric_ik`. :func:`puma560_ik` is the same solver under the PUMA's
+name.
 
 One angle convention: every closed-form angle is in (-pi, pi]. ``within_limits=True`` is
 the explicit option that moves angles by whole turns into the joint limits (e.g. q2 = -170
@@ -38,12 +46,13 @@ from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
 from .subproblems import (Solutions, subproblem1, subproblem1_prismatic, subproblem2,
                           subproblem3, subproblem3_prismatic, subproblem4)
 from .transforms import _wrap_angle, inv
+from .ur_ik import URArm
 
 __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",
            "configuration", "puma560_ik", "puma560_ik_all", "puma560_config",
            "NumericIKResult", "numeric_ik", "pose_error", "Solutions", "subproblem1",
            "subproblem2", "subproblem3", "subproblem4", "subproblem1_prismatic",
-           "subproblem3_prismatic", "SINGULAR_TOL"]
+           "subproblem3_prismatic", "SINGULAR_TOL", "STRUCTURES", "structure"]
 
 
 @dataclass(frozen=True)
@@ -65,11 +74,13 @@ class IKSolution:
 
 class IKSolutions(list):
     """The solutions for one pose (a list of :class:`IKSolution`); ``reason`` says why it is
-    empty (out of reach, or outside the joint limits) or is None."""
+    empty (out of reach, or outside the joint limits) or is None; ``structure`` names
+    the structure the closed form recognised (see :data:`STRUCTURES`)."""
 
-    def __init__(self, solutions=(), reason=None):
+    def __init__(self, solutions=(), reason=None, structure=None):
         super().__init__(solutions)
         self.reason = reason
+        self.structure = structure
 
     def by_config(self, config):
         """The solution with this label ('lun', ...), or None if that branch has no solution.
@@ -99,14 +110,37 @@ def _default_puma():
 
 _ARMS = weakref.WeakKeyDictionary()  # chains are immutable: their geometry is found once
 
+#: The structures solved in closed form, in the order they are tried: {name: solver}.
+STRUCTURES = {"spherical wrist (joints 2, 3 parallel)": SphericalWristArm,
+              URArm.structure: URArm}
+
 
 def _arm(chain, name="chain"):
     try:
         return _ARMS[chain]
     except (KeyError, TypeError):
-        arm = SphericalWristArm.from_chain(chain, name)
+        pass
+    refusals = []
+    for structure, solver in STRUCTURES.items():
+        try:
+            arm = solver.from_chain(chain, name)
+        except ValueError as error:
+            refusals.append(f"{structure}: {error}")
+            continue
         _ARMS[chain] = arm
         return arm
+    raise ValueError(f"{name} has none of the structures solved in closed form; "
+                     + "; ".join(refusals))
+
+
+def _name(arm):
+    return next(name for name, solver in STRUCTURES.items() if isinstance(arm, solver))
+
+
+def structure(chain):
+    """The name of the structure of ``chain`` that :func:`analytic_ik` recognises (a key
+    of :data:`STRUCTURES`); a ``ValueError`` naming what each one needs otherwise."""
+    return _name(_arm(chain))
 
 
 def _poses(T, name, single_only=False):
@@ -133,7 +167,7 @@ def analytic_ik_all(chain, T):
 
     Parameters
     ----------
-    chain : Chain, a 6R arm with a spherical wrist (see :mod:`screwkit.spherical_wrist`)
+    chain : Chain of one of the :data:`STRUCTURES` (spherical wrist, UR-type)
     T : array, shape (4, 4) or (N, 4, 4), poses of the tool in the world frame (m)
 
     Returns
@@ -149,11 +183,13 @@ def analytic_ik_all(chain, T):
 
 
 def analytic_ik(chain, T, within_limits=False, near=None):
-    """Every closed-form solution of a pose, labelled, for a 6R arm with a spherical wrist.
+    """Every closed-form solution of a pose, labelled, for an arm of :data:`STRUCTURES`.
 
     Parameters
     ----------
-    chain : Chain, a 6R arm whose last three axes meet and whose joints 2, 3 are parallel
+    chain : Chain, a 6R arm with a spherical wrist and joints 2, 3 parallel, or a
+        UR-type arm (joints 2, 3, 4 parallel); any other arm is a ``ValueError`` saying
+        what each structure needs
     T : array, shape (4, 4) (or (N, 4, 4): a list of answers), the tool pose (m)
     within_limits : False (default): angles in (-pi, pi]. True: each angle moved by whole
         turns into its joint limits, the solutions that cannot be dropped; if none is left,
@@ -163,8 +199,8 @@ def analytic_ik(chain, T, within_limits=False, near=None):
     Returns
     -------
     IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS (sorted by distance
-        to ``near`` if given); empty with a ``reason`` when out of reach. For a batch, a list
-        of IKSolutions.
+        to ``near`` if given); empty with a ``reason`` when out of reach; ``structure``
+        names the structure recognised. For a batch, a list of IKSolutions.
     """
     return _analytic_ik(_arm(chain), chain, _poses(T, "T"), within_limits, near)
 
@@ -186,7 +222,7 @@ def _analytic_ik(arm, chain, T, within_limits, near):
 
 def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     if code != 0:
-        return IKSolutions([], reason=arm.reason(T, code))
+        return IKSolutions([], reason=arm.reason(T, code), structure=_name(arm))
     names = ("shoulder", "elbow", "wrist")
     moved, inside = _into_limits(Q, limits)
     solutions = []
@@ -198,7 +234,7 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
                                     singular=tuple(n for n, f in zip(names, flag) if f)))
     if within_limits:
         solutions = [s for s in solutions if s.within_limits]
-    result = IKSolutions(solutions)
+    result = IKSolutions(solutions, structure=_name(arm))
     if near is not None:
         result.sort(key=lambda s: np.linalg.norm(_wrap_angle(s.q - near)))
     if not result:
