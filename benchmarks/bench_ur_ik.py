@@ -18,7 +18,7 @@ ur5e, puma = sk.robots.ur5e(), sk.robots.puma560()
 T = ur5e.fk(rng.uniform(-np.pi, np.pi, (10_000, 6)))
 T_puma = puma.fk(rng.uniform(-np.pi, np.pi, (10_000, 6)))
 
-# ---- correctness at a glance ------------------------------------------------------------
+# ---- correctness at a glance --------------------------------------------------------
 Q = sk.ik.analytic_ik_all(ur5e, T)
 found = ~np.isnan(Q[..., 0])
 k, b = np.nonzero(found)
@@ -30,7 +30,7 @@ print(
     f"{counts[2]}"
 )
 
-# ---- timings ----------------------------------------------------------------------------
+# ---- timings --------------------------------------------------------------------------
 fresh = sk.robots.ur5e()
 start = time.perf_counter()
 sk.ik.analytic_ik_all(fresh, T)

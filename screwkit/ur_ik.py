@@ -66,8 +66,16 @@ class _Turn:
         self.w, self.KT = w, _cross_matrix(w).T
 
     def __call__(self, x, c, s):
+        """x (..., 3) turned by the angles of cosines c and sines s (they broadcast)."""
+        along, cross = x @ self.w, x @ self.KT
         c, s = c[..., None], s[..., None]
-        return x * c + (x @ self.KT) * s + self.w * ((x @ self.w)[..., None] * (1 - c))
+        return x * c + cross * s + self.w * (along[..., None] * (1 - c))
+
+    def fixed(self, v, c, s):
+        """One vector v (3,) turned by the angles of cosines c and sines s (...)."""
+        c, s = c[..., None], s[..., None]
+        v_along = self.w * (v @ self.w)
+        return (v - v_along) * c + (self.KT.T @ v) * s + v_along
 
 
 def _roots(A, B, C):
@@ -198,7 +206,7 @@ class URArm:
         w, p, c = self.w, self.p, self.c
         u, w1, w5, w6 = w[1], w[0], w[4], w[5]
         s3, s4 = np.sign(w[2] @ u), np.sign(w[3] @ u)
-        turn1, turn5, turn6, turnu = _Turn(w1), _Turn(w5), _Turn(w6), _Turn(u)
+        turn1, turn5, turn6 = _Turn(w1), _Turn(w5), _Turn(w6)
         N = T.shape[0]
         G = T @ inv(self.home)
         RG, tG = G[:, :3, :3], G[:, :3, 3]
@@ -213,7 +221,7 @@ class URArm:
         free = A**2 + B**2 < (CLIP_TOL * self.scale) ** 2  # c on axis 1: q1 free
         theta = np.where(free[:, None], 0.0, theta)
         ct, st = np.cos(theta), np.sin(theta)
-        x1 = p[0] + turn1(np.repeat(d[:, None], 2, 1), ct, st)  # c at q1 = 0, (N, 2, 3)
+        x1 = p[0] + turn1(d[:, None], ct, st)  # c at q1 = 0, (N, 2, 3)
         forward = (x1 - p[0]) @ np.cross(w1, u)
         order = np.argsort(forward, axis=1)  # l first, then r
         theta, ct, st, x1 = (
@@ -222,7 +230,7 @@ class URArm:
         )
 
         # joint 5: u . R(w5, q5) w6 = u . R(w1, theta) RG w6, per arm branch (N, 2)
-        g6 = turn1(np.repeat((RG @ w6)[:, None], 2, 1), ct, st)
+        g6 = turn1((RG @ w6)[:, None], ct, st)
         A5 = u @ w6 - (w5 @ w6) * (u @ w5)
         B5 = u @ np.cross(w5, w6)
         C5 = g6 @ u - (w5 @ w6) * (u @ w5)
@@ -236,9 +244,9 @@ class URArm:
         c5, s5 = np.cos(q5), np.sin(q5)
 
         # joint 6: R(w6, q6) a = b, a = RG^T R1 u, b = R(w5, -q5) u (directions)
-        R1u = turn1(np.broadcast_to(u, (N, 2, 3)), ct, -st)  # R(w1, q1) u, q1 = -theta
+        R1u = turn1.fixed(u, ct, -st)  # R(w1, q1) u, q1 = -theta
         a = np.einsum("nji,nkj->nki", RG, R1u)[:, :, None]  # (N, 2, 1, 3)
-        b = turn5(np.broadcast_to(u, q5.shape + (3,)), c5, -s5)
+        b = turn5.fixed(u, c5, -s5)
         a_perp = a - w6 * (a @ w6)[..., None]
         b_perp = b - w6 * (b @ w6)[..., None]
         q6 = np.arctan2(np.cross(a_perp, b_perp) @ w6, np.sum(a_perp * b_perp, -1))
@@ -247,14 +255,14 @@ class URArm:
         c6, s6 = np.cos(q6), np.sin(q6)
 
         # joints 2-4: P = exp(xi1 -q1) G exp(xi6 -q6) exp(xi5 -q5) p4 and the angle phi
-        y = p[4] + turn5(np.broadcast_to(p[3] - p[4], q5.shape + (3,)), c5, -s5)
+        y = p[4] + turn5.fixed(p[3] - p[4], c5, -s5)
         z = p[5] + turn6(y - p[5], c6, -s6)
         g = np.einsum("nij,nabj->nabi", RG, z) + tG[:, None, None]
         ct4, st4 = ct[..., None], st[..., None]
         P = p[0] + turn1(g - p[0], ct4, st4)  # (N, 2, 2, 3)
         x = np.cross(u, w1)
         x = x / np.linalg.norm(x)
-        rx = turn5(np.broadcast_to(x, q5.shape + (3,)), c5, -s5)
+        rx = turn5.fixed(x, c5, -s5)
         rx = turn6(rx, c6, -s6)
         rx = turn1(np.einsum("nij,nabj->nabi", RG, rx), ct4, st4)
         phi = np.arctan2(np.cross(x, rx) @ u, rx @ x)
@@ -271,15 +279,11 @@ class URArm:
         c3, s3q = np.cos(q3), np.sin(q3)
         # q2 (subproblem 1): about u from r2 + R(w3, q3) r3 to (P - p2) across u
         turn3 = _Turn(w[2])
-        xs = r2 + turn3(np.broadcast_to(r3, q3.shape + (3,)), c3, s3q)
+        xs = r2 + turn3.fixed(r3, c3, s3q)
         ys = across(P - p[1])[..., None, :]
         q2 = np.arctan2(np.cross(xs, ys) @ u, np.sum(xs * ys, -1))
-        above = (
-            np.cross(
-                ys, turnu(np.broadcast_to(r2, q2.shape + (3,)), np.cos(q2), np.sin(q2))
-            )
-            @ u
-        )
+        # above = ((P - p2) x R(u, q2) r2) . u, both across u
+        above = np.cos(q2) * (np.cross(ys, r2) @ u) + np.sin(q2) * (ys @ r2)
         sigma = np.array([-1.0, 1.0])[None, :, None, None]
         order = np.argsort(-sigma * above, axis=3)  # u first, then d
         q2, q3 = np.take_along_axis(q2, order, 3), np.take_along_axis(q3, order, 3)
