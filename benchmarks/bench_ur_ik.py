@@ -30,7 +30,7 @@ print(
     f"{counts[2]}"
 )
 
-# ---- timings --------------------------------------------------------------------------
+# ---- timings ---------------------------------------------------------------------
 fresh = sk.robots.ur5e()
 start = time.perf_counter()
 sk.ik.analytic_ik_all(fresh, T)
