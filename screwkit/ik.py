@@ -8,7 +8,9 @@ in order; :func:`structure` and ``IKSolutions.structure`` say which one a chain 
 * 6R, a spherical wrist (the last three axes meet) and joints 2, 3 parallel: the PUMA
   560, the Kawasaki CX210L (:mod:`screwkit.spherical_wrist`);
 * UR-type 6R: joints 2, 3, 4 parallel and axes 5, 6 meeting: the Universal Robots arms
-  (:mod:`screwkit.ur_ik`, after Hawkins 2013).
+  (:mod:`screwkit.ur_ik`, after Hawkins 2013);
+* RRP with a spherical wrist, joints 1, 2 meeting: the Stanford arm
+  (:mod:`screwkit.stanford_ik`; eight solutions, four with the boom forward).
 
 Up to eight solutions, labelled l/r arm, u/d elbow, n/f wrist by geometric definitions
 (Corke's labels for the PUMA). Any other arm (7 joints, no spherical wrist and no three
@@ -46,6 +48,7 @@ from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
 from .subproblems import (Solutions, subproblem1, subproblem1_prismatic, subproblem2,
                           subproblem3, subproblem3_prismatic, subproblem4)
 from .transforms import _wrap_angle, inv
+from .stanford_ik import StanfordArm
 from .ur_ik import URArm
 
 __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",
@@ -112,7 +115,7 @@ _ARMS = weakref.WeakKeyDictionary()  # chains are immutable: their geometry is f
 
 #: The structures solved in closed form, in the order they are tried: {name: solver}.
 STRUCTURES = {"spherical wrist (joints 2, 3 parallel)": SphericalWristArm,
-              URArm.structure: URArm}
+              URArm.structure: URArm, StanfordArm.structure: StanfordArm}
 
 
 def _arm(chain, name="chain"):
@@ -167,7 +170,7 @@ def analytic_ik_all(chain, T):
 
     Parameters
     ----------
-    chain : Chain of one of the :data:`STRUCTURES` (spherical wrist, UR-type)
+    chain : Chain of one of the :data:`STRUCTURES` (spherical wrist, UR-type, Stanford)
     T : array, shape (4, 4) or (N, 4, 4), poses of the tool in the world frame (m)
 
     Returns
@@ -187,9 +190,9 @@ def analytic_ik(chain, T, within_limits=False, near=None):
 
     Parameters
     ----------
-    chain : Chain, a 6R arm with a spherical wrist and joints 2, 3 parallel, or a
-        UR-type arm (joints 2, 3, 4 parallel); any other arm is a ``ValueError`` saying
-        what each structure needs
+    chain : Chain, a 6R arm with a spherical wrist and joints 2, 3 parallel, a UR-type
+        arm (joints 2, 3, 4 parallel) or an RRP arm with a spherical wrist (Stanford);
+        any other arm is a ``ValueError`` saying what each structure needs
     T : array, shape (4, 4) (or (N, 4, 4): a list of answers), the tool pose (m)
     within_limits : False (default): angles in (-pi, pi]. True: each angle moved by whole
         turns into its joint limits, the solutions that cannot be dropped; if none is left,
@@ -224,7 +227,7 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     if code != 0:
         return IKSolutions([], reason=arm.reason(T, code), structure=_name(arm))
     names = ("shoulder", "elbow", "wrist")
-    moved, inside = _into_limits(Q, limits)
+    moved, inside = _into_limits(Q, limits, getattr(arm, "revolute", None))
     solutions = []
     for q, q_moved, ok, config, flag in zip(Q, moved, inside, CONFIGURATIONS, flags):
         if np.isnan(q[0]):
@@ -244,12 +247,15 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     return result
 
 
-def _into_limits(Q, qlim):
+def _into_limits(Q, qlim, revolute=None):
     """Q (k, 6) with each angle moved by a multiple of 2 pi into its limits (the value
-    nearest to its (-pi, pi] value), and whether each row could be moved there, (k,)."""
+    nearest to its (-pi, pi] value), and whether each row could be moved there, (k,).
+    ``revolute`` (6,) marks the angles (default all); other joints are not moved."""
     low, high = qlim[:, 0], qlim[:, 1]
     already = (Q >= low) & (Q <= high)
-    candidates = Q[..., None] + 2 * np.pi * np.arange(-3, 4)  # (k, 6, 7)
+    angles = np.ones(6, bool) if revolute is None else revolute
+    turns = np.arange(-3, 4) * angles[:, None]
+    candidates = Q[..., None] + 2 * np.pi * turns  # (k, 6, 7)
     fits = (candidates >= low[:, None] - 1e-12) & (candidates <= high[:, None] + 1e-12)
     distance = np.where(fits, np.abs(candidates - Q[..., None]), np.inf)
     nearest = np.take_along_axis(candidates, distance.argmin(axis=-1)[..., None], -1)[..., 0]
