@@ -60,9 +60,10 @@ __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analyt
 
 @dataclass(frozen=True)
 class IKSolution:
-    """One closed-form solution: joint vector ``q`` (6,) rad, its ``config`` label, the
-    singularities it sits on (``'shoulder'``, ``'elbow'``, ``'wrist'``) and
-    ``within_limits``: whether q, or q moved by whole turns, respects the joint limits."""
+    """One closed-form solution: joint vector ``q`` (6,) rad (m for a prismatic joint), its
+    ``config`` label, the singularities it sits on (``'shoulder'``, ``'elbow'``,
+    ``'wrist'``; the Stanford arm's boom counts as its elbow) and ``within_limits``:
+    whether q, or q moved by whole turns, respects the joint limits."""
 
     q: np.ndarray
     config: str
@@ -264,7 +265,8 @@ def _into_limits(Q, qlim, revolute=None):
 
 def configuration(chain, q):
     """The label ('ruf', ...) of a joint vector (6,) or the labels of a batch (N, 6), from the
-    geometric definitions of :mod:`screwkit.spherical_wrist`, singular cases included."""
+    geometric definitions of the chain's structure (:mod:`screwkit.spherical_wrist`,
+    :mod:`screwkit.ur_ik`, :mod:`screwkit.stanford_ik`), singular cases included."""
     arm = _arm(chain)
     q = chain.check_q(q)
     labels = arm.labels(q)
