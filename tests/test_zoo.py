@@ -202,3 +202,34 @@ def test_the_shipped_ur5e_urdf_is_the_published_table():
         np.testing.assert_allclose(T, table_fk(q, "ur5e"), rtol=0, atol=1e-12)
     with pytest.raises(ValueError, match="one of the shipped files"):
         sk.urdf.data_file("ur5.urdf")
+
+
+def test_stanford_matches_corkes_toolbox():
+    # The Robotics Toolbox for MATLAB, mdl_stanford: stanf.jacob0(q) at this q, as printed
+    # (4 decimals, rows [v; omega]), and its space screws as a course writes them out
+    q = [0.6, 0.19, 0.75, 0.91, 0.11, 0.71]
+    jacob0 = [
+        [-0.2330, 0.8162, 0.1559, 0.0015, 0.2534, 0],
+        [0.0992, 0.5584, 0.1066, 0.0286, -0.0211, 0],
+        [0, -0.2134, 0.9820, -0.0033, -0.0673, 0],
+        [0, -0.5646, 0, 0.1559, 0.0516, 0.2632],
+        [0, 0.8253, 0, 0.1066, 0.9919, 0.0984],
+        [1.0, 0, 0, 0.9820, -0.1159, 0.9597],
+    ]
+    stanford = sk.robots.stanford()
+    np.testing.assert_allclose(stanford.geometric_jacobian(q), jacob0, atol=5.1e-5)
+    space = [
+        [0, 0, 1, 0, 0, 0],
+        [0, 1, 0, -0.412, 0, 0],
+        [0, 0, 0, 0, 0, 1],
+        [0, 0, 1, 0.154, 0, 0],
+        [1, 0, 0, 0, 0.412, -0.154],
+        [0, 0, 1, 0.154, 0, 0],
+    ]
+    np.testing.assert_allclose(stanford.screw_axes(), space, atol=1e-15)
+
+
+def test_panda_limits_match_frankas_urdf():
+    path = os.path.join(robots_folder(), "panda_description/urdf/panda.urdf")
+    urdf = sk.Chain.from_urdf(path, tip_link="panda_link8")
+    np.testing.assert_array_equal(urdf.qlim, sk.robots.panda().qlim)
