@@ -205,7 +205,7 @@ def test_the_shipped_ur5e_urdf_is_the_published_table():
 
 
 def test_stanford_matches_corkes_toolbox():
-    # The Robotics Toolbox for MATLAB, mdl_stanford: stanf.jacob0(q) at this q, as printed
+    # The Robotics Toolbox for MATLAB, mdl_stanford: stanf.jacob0(q) at this q, printed
     # (4 decimals, rows [v; omega]), and its space screws as a course writes them out
     q = [0.6, 0.19, 0.75, 0.91, 0.11, 0.71]
     jacob0 = [
