@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import screwkit as sk
+import screwkit.ur_ik  # noqa: F401  (sk.ur_ik)
 
 #: CI sets SCREWKIT_REFERENCES=required: there a missing reference fails, never skips.
 REQUIRED = os.environ.get("SCREWKIT_REFERENCES") == "required"
@@ -90,3 +91,25 @@ def test_fk_and_jacobian_agree_with_pinocchio(arm):
         np.testing.assert_allclose(T[k], reference, rtol=0, atol=1e-12)
         J_pin = pin.computeFrameJacobian(model, data, x, frame, pin.LOCAL_WORLD_ALIGNED)
         np.testing.assert_allclose(J[k], J_pin[:, columns], rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize(
+    "relative, tip",
+    [
+        ("ur_description/urdf/ur5_robot.urdf", "tool0"),
+        ("ur_description/urdf/ur10_robot.urdf", "tool0"),
+        ("z1_description/urdf/z1.urdf", "link06"),
+    ],
+)
+def test_vendor_urdfs_of_ur_type_arms_are_solved_in_closed_form(relative, tip):
+    chain = sk.Chain.from_urdf(os.path.join(robots_folder(), relative), tip_link=tip)
+    assert sk.ik.structure(chain) == sk.ur_ik.STRUCTURE
+    low, high = (
+        np.maximum(chain.qlim[:, 0], -np.pi),
+        np.minimum(chain.qlim[:, 1], np.pi),
+    )
+    for q in np.random.default_rng(8).uniform(low, high, (20, 6)):
+        T = chain.fk(q)
+        solutions = sk.ik.analytic_ik(chain, T)
+        assert max(np.abs(chain.fk(s.q) - T).max() for s in solutions) <= 1e-9
+        assert min(np.abs(sk.wrap_angle(s.q - q)).max() for s in solutions) < 1e-9
