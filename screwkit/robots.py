@@ -346,7 +346,8 @@ def panda():
     0.333, d3 = 0.316, a3 = 0.0825, a4 = -0.0825, d5 = 0.384, a6 = 0.088 m, alpha =
     (0, -pi/2, pi/2, pi/2, -pi/2, pi/2, pi/2), and the flange d = 0.107 m along z7
     (the tool transform). Joint limits from the same page (rad). The link frames are
-    those of Franka's URDF (panda_link1..panda_link8).
+    those of Franka's URDF: frames 1..6 are panda_link1..6 and the last frame, which
+    carries the flange, is panda_link8.
     """
     h = sp.pi / 2
     rows = [

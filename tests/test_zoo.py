@@ -229,6 +229,17 @@ def test_stanford_matches_corkes_toolbox():
     np.testing.assert_allclose(stanford.screw_axes(), space, atol=1e-15)
 
 
+def test_panda_link_frames_are_frankas():
+    # frames 1..6 are panda_link1..6; the last frame carries the flange: panda_link8
+    path = os.path.join(robots_folder(), "panda_description/urdf/panda.urdf")
+    panda = sk.robots.panda()
+    Q = np.random.default_rng(4).uniform(*panda.qlim.T, (10, 7))
+    frames = panda.frames(Q)
+    for k, link in [(k, f"panda_link{k}") for k in range(1, 7)] + [(7, "panda_link8")]:
+        reference = pinocchio_poses(path, Q, link)
+        np.testing.assert_allclose(frames[:, k], reference, rtol=0, atol=1e-12)
+
+
 def test_panda_limits_match_frankas_urdf():
     path = os.path.join(robots_folder(), "panda_description/urdf/panda.urdf")
     urdf = sk.Chain.from_urdf(path, tip_link="panda_link8")
