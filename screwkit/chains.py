@@ -51,6 +51,7 @@ from .links import (
 from .screws import Twist
 from .systems import ScrewSystem
 from .transforms import _cross, axis_coordinates, exp_twist
+from .urdf import read_urdf
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
 
@@ -87,6 +88,9 @@ class Chain(ChainType):
     name : str, used in messages and titles
     configurations : optional {name: joint vector (n,)}, named configurations ('zero', ...)
     """
+
+    #: The URDF joint names in order for a chain from :meth:`from_urdf`, None otherwise.
+    joint_names = None
 
     def __init__(self, links, convention=Convention.STANDARD, base=None, tool=None, name="chain",
                  configurations=None):
@@ -178,14 +182,31 @@ class Chain(ChainType):
                      qlim=limits, joints=tuple(joint_kind(s) for s in screws))
         return chain
 
+    @classmethod
+    def from_urdf(cls, source, base_link=None, tip_link=None):
+        """A chain from a URDF file or text: the joints from ``base_link`` (default: the
+        root) to ``tip_link`` (required when the tree branches), as joint screws in the base
+        link's frame, exact where the file's numbers are (:mod:`screwkit.urdf`).
+
+        Revolute, continuous and prismatic joints; fixed joints folded into their
+        neighbours; limits into ``qlim``; ``chain.joint_names`` lists the URDF joint names.
+        """
+        urdf = read_urdf(source, base_link, tip_link)
+        chain = cls.from_screws(list(urdf.axes), urdf.home, name=urdf.name,
+                                qlim=[q or (-np.inf, np.inf) for q in urdf.qlim])
+        chain.__dict__["joint_names"] = urdf.joint_names
+        return chain
+
     def _copy(self, **changes):
         """A new chain like this one with some constructor arguments changed."""
         options = dict(base=self.base, tool=self.tool, name=self.name, configurations=dict(self.configurations))
         options.update(changes)
         if self.links is not None:
             return Chain(self.links, self.convention, **options)
-        return Chain.from_screws(self._exact_screws, self._home, self.frame,
-                                 qlim=[tuple(limit) for limit in self._qlim], **options)
+        chain = Chain.from_screws(self._exact_screws, self._home, self.frame,
+                                  qlim=[tuple(limit) for limit in self._qlim], **options)
+        chain.__dict__["joint_names"] = self.joint_names
+        return chain
 
     def with_tool(self, tool):
         """The same chain with another tool transform (4, 4)."""

@@ -1,12 +1,22 @@
-"""Inverse kinematics: closed form for arms with a spherical wrist, and numeric for any chain.
+"""Inverse kinematics: closed form for some 6-joint arms, numeric for any chain.
 
-Closed form (:func:`analytic_ik`, :func:`analytic_ik_all`): any 6R arm whose last three axes
-meet in a point and whose joints 2 and 3 are parallel (the PUMA 560 with any lengths,
-offsets, base and tool; the Kawasaki CX210L), solved from the chain's own screws by the
-Paden–Kahan subproblems (:mod:`screwkit.subproblems`, re-exported here). Up to eight
-solutions, labelled l/r arm, u/d elbow, n/f wrist by the geometric definitions of
-:mod:`screwkit.spherical_wrist` (Corke's labels for the PUMA). :func:`puma560_ik` is the same
-solver under the PUMA's name.
+Closed form (:func:`analytic_ik`, :func:`analytic_ik_all`), solved from the chain's own
+screws by the Paden–Kahan subproblems (:mod:`screwkit.subproblems`, re-exported here),
+for any lengths, offsets, base and tool of these structures (:data:`STRUCTURES`, tried
+in order; :func:`structure` and ``IKSolutions.structure`` say which one a chain has):
+
+* 6R, a spherical wrist (the last three axes meet) and joints 2, 3 parallel: the PUMA
+  560, the Kawasaki CX210L (:mod:`screwkit.spherical_wrist`);
+* UR-type 6R: joints 2, 3, 4 parallel and axes 5, 6 meeting: the Universal Robots arms
+  (:mod:`screwkit.ur_ik`, after Hawkins 2013);
+* RRP with a spherical wrist, joints 1, 2 meeting: the Stanford arm
+  (:mod:`screwkit.stanford_ik`; eight solutions, four with the boom forward).
+
+Up to eight solutions, labelled l/r arm, u/d elbow, n/f wrist by geometric definitions
+(Corke's labels for the PUMA). Any other arm (7 joints, no spherical wrist and no three
+parallel axes, ...) is refused with a ``ValueError`` that says what each structure
+needs: use :func:`numeric_ik`. :func:`puma560_ik` is the same solver under the PUMA's
+name.
 
 One angle convention: every closed-form angle is in (-pi, pi]. ``within_limits=True`` is
 the explicit option that moves angles by whole turns into the joint limits (e.g. q2 = -170
@@ -44,20 +54,23 @@ from .subproblems import (
     subproblem3_prismatic,
     subproblem4,
 )
+from .stanford_ik import StanfordArm
 from .transforms import _wrap_angle
+from .ur_ik import URArm
 
 __all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",
            "configuration", "puma560_ik", "puma560_ik_all", "puma560_config",
            "NumericIKResult", "numeric_ik", "pose_error", "Solutions", "subproblem1",
            "subproblem2", "subproblem3", "subproblem4", "subproblem1_prismatic",
-           "subproblem3_prismatic", "SINGULAR_TOL"]
+           "subproblem3_prismatic", "SINGULAR_TOL", "STRUCTURES", "structure"]
 
 
 @dataclass(frozen=True)
 class IKSolution:
-    """One closed-form solution: joint vector ``q`` (6,) rad, its ``config`` label, the
-    singularities it sits on (``'shoulder'``, ``'elbow'``, ``'wrist'``) and
-    ``within_limits``: whether q, or q moved by whole turns, respects the joint limits."""
+    """One closed-form solution: joint vector ``q`` (6,) rad (m for a prismatic joint), its
+    ``config`` label, the singularities it sits on (``'shoulder'``, ``'elbow'``,
+    ``'wrist'``; the Stanford arm's boom counts as its elbow) and ``within_limits``:
+    whether q, or q moved by whole turns, respects the joint limits."""
 
     q: np.ndarray
     config: str
@@ -72,11 +85,13 @@ class IKSolution:
 
 class IKSolutions(list):
     """The solutions for one pose (a list of :class:`IKSolution`); ``reason`` says why it is
-    empty (out of reach, or outside the joint limits) or is None."""
+    empty (out of reach, or outside the joint limits) or is None; ``structure`` names
+    the structure the closed form recognised (see :data:`STRUCTURES`)."""
 
-    def __init__(self, solutions=(), reason=None):
+    def __init__(self, solutions=(), reason=None, structure=None):
         super().__init__(solutions)
         self.reason = reason
+        self.structure = structure
 
     def by_config(self, config):
         """The solution with this label ('lun', ...), or None if that branch has no solution.
@@ -104,14 +119,37 @@ def _default_puma():
 
 _ARMS = weakref.WeakKeyDictionary()  # chains are immutable: their geometry is found once
 
+#: The structures solved in closed form, in the order they are tried: {name: solver}.
+STRUCTURES = {"spherical wrist (joints 2, 3 parallel)": SphericalWristArm,
+              URArm.structure: URArm, StanfordArm.structure: StanfordArm}
+
 
 def _arm(chain, name="chain"):
     try:
         return _ARMS[chain]
     except (KeyError, TypeError):
-        arm = SphericalWristArm.from_chain(chain, name)
+        pass
+    refusals = []
+    for structure, solver in STRUCTURES.items():
+        try:
+            arm = solver.from_chain(chain, name)
+        except ValueError as error:
+            refusals.append(f"{structure}: {error}")
+            continue
         _ARMS[chain] = arm
         return arm
+    raise ValueError(f"{name} has none of the structures solved in closed form; "
+                     + "; ".join(refusals))
+
+
+def _name(arm):
+    return next(name for name, solver in STRUCTURES.items() if isinstance(arm, solver))
+
+
+def structure(chain):
+    """The name of the structure of ``chain`` that :func:`analytic_ik` recognises (a key
+    of :data:`STRUCTURES`); a ``ValueError`` naming what each one needs otherwise."""
+    return _name(_arm(chain))
 
 
 def analytic_ik_all(chain, T):
@@ -119,7 +157,7 @@ def analytic_ik_all(chain, T):
 
     Parameters
     ----------
-    chain : Chain, a 6R arm with a spherical wrist (see :mod:`screwkit.spherical_wrist`)
+    chain : Chain of one of the :data:`STRUCTURES` (spherical wrist, UR-type, Stanford)
     T : array, shape (4, 4) or (N, 4, 4), poses of the tool in the world frame (m)
 
     Returns
@@ -135,11 +173,13 @@ def analytic_ik_all(chain, T):
 
 
 def analytic_ik(chain, T, within_limits=False, near=None):
-    """Every closed-form solution of a pose, labelled, for a 6R arm with a spherical wrist.
+    """Every closed-form solution of a pose, labelled, for an arm of :data:`STRUCTURES`.
 
     Parameters
     ----------
-    chain : Chain, a 6R arm whose last three axes meet and whose joints 2, 3 are parallel
+    chain : Chain, a 6R arm with a spherical wrist and joints 2, 3 parallel, a UR-type
+        arm (joints 2, 3, 4 parallel) or an RRP arm with a spherical wrist (Stanford);
+        any other arm is a ``ValueError`` saying what each structure needs
     T : array, shape (4, 4) (or (N, 4, 4): a list of answers), the tool pose (m)
     within_limits : False (default): angles in (-pi, pi]. True: each angle moved by whole
         turns into its joint limits, the solutions that cannot be dropped; if none is left,
@@ -149,8 +189,8 @@ def analytic_ik(chain, T, within_limits=False, near=None):
     Returns
     -------
     IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS (sorted by distance
-        to ``near`` if given); empty with a ``reason`` when out of reach. For a batch, a list
-        of IKSolutions.
+        to ``near`` if given); empty with a ``reason`` when out of reach; ``structure``
+        names the structure recognised. For a batch, a list of IKSolutions.
     """
     return _analytic_ik(_arm(chain), chain, check_poses(T, "T"), within_limits, near)
 
@@ -172,9 +212,9 @@ def _analytic_ik(arm, chain, T, within_limits, near):
 
 def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     if code != 0:
-        return IKSolutions([], reason=arm.reason(T, code))
+        return IKSolutions([], reason=arm.reason(T, code), structure=_name(arm))
     names = ("shoulder", "elbow", "wrist")
-    moved, inside = _into_limits(Q, limits)
+    moved, inside = _into_limits(Q, limits, getattr(arm, "revolute", None))
     solutions = []
     for q, q_moved, ok, config, flag in zip(Q, moved, inside, CONFIGURATIONS, flags):
         if np.isnan(q[0]):
@@ -184,7 +224,7 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
                                     singular=tuple(n for n, f in zip(names, flag) if f)))
     if within_limits:
         solutions = [s for s in solutions if s.within_limits]
-    result = IKSolutions(solutions)
+    result = IKSolutions(solutions, structure=_name(arm))
     if near is not None:
         result.sort(key=lambda s: np.linalg.norm(_wrap_angle(s.q - near)))
     if not result:
@@ -194,12 +234,15 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     return result
 
 
-def _into_limits(Q, qlim):
+def _into_limits(Q, qlim, revolute=None):
     """Q (k, 6) with each angle moved by a multiple of 2 pi into its limits (the value
-    nearest to its (-pi, pi] value), and whether each row could be moved there, (k,)."""
+    nearest to its (-pi, pi] value), and whether each row could be moved there, (k,).
+    ``revolute`` (6,) marks the angles (default all); other joints are not moved."""
     low, high = qlim[:, 0], qlim[:, 1]
     already = (Q >= low) & (Q <= high)
-    candidates = Q[..., None] + 2 * np.pi * np.arange(-3, 4)  # (k, 6, 7)
+    angles = np.ones(6, bool) if revolute is None else revolute
+    turns = np.arange(-3, 4) * angles[:, None]
+    candidates = Q[..., None] + 2 * np.pi * turns  # (k, 6, 7)
     fits = (candidates >= low[:, None] - 1e-12) & (candidates <= high[:, None] + 1e-12)
     distance = np.where(fits, np.abs(candidates - Q[..., None]), np.inf)
     nearest = np.take_along_axis(candidates, distance.argmin(axis=-1)[..., None], -1)[..., 0]
@@ -208,7 +251,8 @@ def _into_limits(Q, qlim):
 
 def configuration(chain, q):
     """The label ('ruf', ...) of a joint vector (6,) or the labels of a batch (N, 6), from the
-    geometric definitions of :mod:`screwkit.spherical_wrist`, singular cases included."""
+    geometric definitions of the chain's structure (:mod:`screwkit.spherical_wrist`,
+    :mod:`screwkit.ur_ik`, :mod:`screwkit.stanford_ik`), singular cases included."""
     arm = _arm(chain)
     q = chain.check_q(q)
     labels = arm.labels(q)

@@ -9,7 +9,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import as_float_array, as_real_scalar, describe
-from .chains import Chain, Link
+from .chains import Chain, Convention, Link
 
 from .limbs import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .parallel import delta, planar_3rpr, stewart_gough, tripteron
@@ -309,3 +309,124 @@ def two_arm_planar(lengths=(0.3, 0.25, 0.2, 0.15, 0.1), separation=0.4, qlim=Non
         arm = planar(lengths, qlim)
         arms.append(Chain(arm.links, base=transl(x, 0, 0), name=f"{name} arm"))
     return tuple(arms)
+
+
+# ---- the zoo: arms of teaching labs, from their makers' published parameters ----
+
+__all__ += ["ur5e", "panda", "stanford", "iiwa14"]
+
+
+def ur5e():
+    """The Universal Robots UR5e in standard DH, Universal Robots' published
+    parameters.
+
+    Source: Universal Robots, "DH parameters for calculations of kinematics and
+    dynamics" (support article, UR5e row): d1 = 0.1625, a2 = -0.425, a3 = -0.3922,
+    d4 = 0.1333, d5 = 0.0997, d6 = 0.0996 m; alpha = (pi/2, 0, 0, pi/2, -pi/2, 0).
+    Frame 6 is the tool flange. Joint limits +-360 deg (the UR5e data sheet). Joints
+    2, 3 and 4 are parallel: a UR-type arm, solved in closed form by
+    :mod:`screwkit.ur_ik`.
+    """
+    turn = (-2 * np.pi, 2 * np.pi)
+    links = [
+        Link.revolute(d=0.1625, a=0, alpha=sp.pi / 2, qlim=turn),
+        Link.revolute(d=0, a=-0.425, alpha=0, qlim=turn),
+        Link.revolute(d=0, a=-0.3922, alpha=0, qlim=turn),
+        Link.revolute(d=0.1333, a=0, alpha=sp.pi / 2, qlim=turn),
+        Link.revolute(d=0.0997, a=0, alpha=-sp.pi / 2, qlim=turn),
+        Link.revolute(d=0.0996, a=0, alpha=0, qlim=turn),
+    ]
+    configurations = {
+        "zero": np.zeros(6),
+        "home": np.array([0, -np.pi / 2, 0, -np.pi / 2, 0, 0]),
+    }
+    return Chain(links, name="UR5e", configurations=configurations)
+
+
+def panda():
+    """The Franka Emika Panda (7 joints) in modified DH (Craig), Franka's published
+    parameters, to the flange.
+
+    Source: Franka Control Interface documentation, "Robot and interface
+    specifications", Denavit–Hartenberg parameters (a_{i-1}, d_i, alpha_{i-1}): d1 =
+    0.333, d3 = 0.316, a3 = 0.0825, a4 = -0.0825, d5 = 0.384, a6 = 0.088 m, alpha =
+    (0, -pi/2, pi/2, pi/2, -pi/2, pi/2, pi/2), and the flange d = 0.107 m along z7
+    (the tool transform). Joint limits from the same page (rad). The link frames are
+    those of Franka's URDF: frames 1..6 are panda_link1..6 and the last frame, which
+    carries the flange, is panda_link8.
+    """
+    h = sp.pi / 2
+    rows = [
+        (0, 0.333, 0, (-2.8973, 2.8973)),
+        (0, 0, -h, (-1.7628, 1.7628)),
+        (0, 0.316, h, (-2.8973, 2.8973)),
+        (0.0825, 0, h, (-3.0718, -0.0698)),
+        (-0.0825, 0.384, -h, (-2.8973, 2.8973)),
+        (0, 0, h, (-0.0175, 3.7525)),
+        (0.088, 0, h, (-2.8973, 2.8973)),
+    ]
+    links = [
+        Link.revolute(d=d, a=a, alpha=alpha, qlim=limit) for a, d, alpha, limit in rows
+    ]
+    ready = np.array([0, -np.pi / 4, 0, -3 * np.pi / 4, 0, np.pi / 2, np.pi / 4])
+    return Chain(
+        links,
+        convention=Convention.MODIFIED,
+        tool=transl(0, 0, 0.107),
+        name="Panda",
+        configurations={"ready": ready},
+    )
+
+
+def stanford():
+    """The Stanford arm (RRPRRR) in standard DH: a spherical wrist on a prismatic
+    joint.
+
+    Source: P. Corke, Robotics Toolbox for MATLAB, ``mdl_stanford`` (after R. Paul,
+    Robot Manipulators, 1981): d1 = 0.412, d2 = 0.154 m, alpha1 = -pi/2, alpha2 =
+    pi/2, joint 3 prismatic with theta3 = -pi/2 and d3 = q3 in [12, 48] inches,
+    alpha4 = -pi/2, alpha5 = pi/2, d6 = 0.263 m; every a_i = 0. Revolute joints have
+    no limits here.
+    """
+    h = sp.pi / 2
+    links = [
+        Link.revolute(d=0.412, alpha=-h),
+        Link.revolute(d=0.154, alpha=h),
+        Link.prismatic(theta=-h, qlim=(12 * 0.0254, 48 * 0.0254)),
+        Link.revolute(alpha=-h),
+        Link.revolute(alpha=h),
+        Link.revolute(d=0.263),
+    ]
+    return Chain(
+        links,
+        name="Stanford arm",
+        configurations={"nominal": np.array([0, np.pi / 2, 0.5, 0, 0, 0])},
+    )
+
+
+def iiwa14():
+    """The KUKA LBR iiwa 14 R820 (7 joints) in standard DH, to the flange.
+
+    Source: KUKA, LBR iiwa 7 R800 / 14 R820 specification (lengths 360, 420, 400 and
+    126 mm from the base to the flange, axis limits +-170, +-120, +-170, +-120,
+    +-170, +-120, +-175 deg), with the DH frames of Faria, Ferreira, Erlhagen,
+    Monteiro and Bicho, "Position-based kinematics for 7-DoF serial manipulators
+    with global configuration control, joint limit and singularity avoidance", Mech.
+    Mach. Theory 121 (2018): d = (0.36, 0, 0.42, 0, 0.4, 0, 0.126) m, alpha =
+    (-pi/2, pi/2, pi/2, -pi/2, -pi/2, pi/2, 0), every a_i = 0.
+    """
+    h, deg = sp.pi / 2, np.pi / 180
+    rows = [
+        (0.36, -h, 170),
+        (0, h, 120),
+        (0.42, h, 170),
+        (0, -h, 120),
+        (0.4, -h, 170),
+        (0, h, 120),
+        (0.126, 0, 175),
+    ]
+    links = [
+        Link.revolute(d=d, alpha=alpha, qlim=(-limit * deg, limit * deg))
+        for d, alpha, limit in rows
+    ]
+    return Chain(links, name="LBR iiwa 14 R820")
