@@ -1,8 +1,10 @@
 """The in-page viewers computed by screwkit/static/viewer.js agree with screwkit, in Chromium.
 
 Each figure is rendered into a page of headless Chromium (system Chromium driven by
-Playwright, no network); the page's forward kinematics, exponential of a twist and
-manipulability ellipsoid are compared with screwkit's on random configurations.
+Playwright, no network, WebGL by SwiftShader); the page's forward kinematics, exponential of
+a twist, manipulability ellipsoid and platform leg lengths are compared with screwkit's (or
+with the formula written here) on random configurations; the page's layout, scrolling,
+keyboard and accessible names are checked as a reader would meet them.
 Run by `make site-check` (it needs .ci/requirements.txt); skipped without Chromium.
 """
 import shutil
@@ -34,8 +36,9 @@ def page():
         browser.close()
 
 
-def show(page, figure):
-    page.set_content(f"<html><body>{figure._repr_html_()}</body></html>")
+def show(page, figure, width=760):
+    page.set_content(f"<html><body style='max-width:{width}px'>{figure.html(library=True)}"
+                     "</body></html>")
     assert page.errors == []
     return figure.id
 
@@ -113,4 +116,178 @@ def test_moving_a_slider_redraws(page):
                           figure_id)
     assert after != before
     assert page.locator(f"[id='{figure_id}'] .screwkit-caption").inner_text() != caption
+    assert page.errors == []
+
+
+# ---- platforms: a stand-in with the duck-typed interface of sk.robots.stewart_gough() ----
+
+class StandIn:
+    """Six legs: base points on a circle of 0.5 m, platform points on one of 0.3 m."""
+
+    name = "stand-in 6-6 platform"
+    planar = False
+
+    def __init__(self, limits=True):
+        a = np.radians([0, 60, 120, 180, 240, 300]) + np.radians([-10, 10] * 3)
+        b = np.radians([0, 120, 240]).repeat(2) + np.radians([-50, 50] * 3)
+        self.base_points = 0.5 * np.c_[np.cos(a), np.sin(a), np.zeros(6)]
+        self.platform_points = 0.3 * np.c_[np.cos(b), np.sin(b), np.zeros(6)]
+        self.leg_limits = np.tile([0.5, 0.75], (6, 1)) if limits else None
+
+    def home(self):
+        return sk.transl(0, 0, 0.55) @ sk.homogeneous(sk.rotz(0.1), [0, 0, 0])
+
+
+class PlanarStandIn:
+    name = "stand-in 3-RPR"
+    planar = True
+    base_points = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 0.9, 0.0]])
+    platform_points = np.array([[-0.1, -0.06, 0.0], [0.1, -0.06, 0.0], [0.0, 0.1, 0.0]])
+    leg_limits = None
+
+    def home(self):
+        return sk.transl(0.5, 0.35, 0.0)
+
+
+def expected_legs(pm, offsets):
+    """|p + R b_i - a_i| with p = p_home + d, R = Rz(yaw) Ry(pitch) Rx(roll) R_home."""
+    H = pm.home()
+    if pm.planar:
+        d, R = np.array([offsets[0], offsets[1], 0.0]), sk.rotz(offsets[2])
+    else:
+        d = np.asarray(offsets[:3])
+        R = sk.rotz(offsets[5]) @ sk.roty(offsets[4]) @ sk.rotx(offsets[3])
+    p, R = H[:3, 3] + d, R @ H[:3, :3]
+    return np.linalg.norm(p + pm.platform_points @ R.T - pm.base_points, axis=1)
+
+
+@pytest.mark.parametrize("pm", [StandIn(), PlanarStandIn()], ids=["spatial", "planar"])
+def test_page_leg_lengths_equal_the_formula(page, pm):
+    figure_id = show(page, viewer.show_platform(pm))
+    rng = np.random.default_rng(5)
+    n = 3 if pm.planar else 6
+    offsets = rng.uniform(-0.15, 0.15, size=(100, n))
+    lengths = page.evaluate(
+        """([id, V]) => {
+            const f = window.screwkit.viewers[id].figure;
+            return V.map(v => window.screwkit.legLengths(f.model, f.pose(v)));
+        }""", [figure_id, offsets.tolist()])
+    expected = np.array([expected_legs(pm, v) for v in offsets])
+    np.testing.assert_allclose(lengths, expected, atol=1e-9)
+
+
+def test_a_leg_outside_its_limits_is_marked_and_announced(page):
+    pm = StandIn()
+    figure_id = show(page, viewer.show_platform(pm))
+    root = page.locator(f"[id='{figure_id}']")
+    z = root.locator("input[type=range]").nth(2)
+    z.fill(z.get_attribute("max"))  # the platform lifted to the top of its slider
+    legs = expected_legs(pm, [0, 0, float(z.get_attribute("max")), 0, 0, 0])
+    outside = [i + 1 for i, x in enumerate(legs) if not 0.5 <= x <= 0.75]
+    assert outside  # the slider's top reaches past the 0.75 m limit (checked here)
+    caption = root.locator(".screwkit-caption")
+    assert caption.get_attribute("aria-live") == "polite"
+    text = caption.inner_text()
+    assert ", ".join(f"{x:.3f}" for x in legs) in text
+    assert f"Outside the limits: leg{'s' if len(outside) > 1 else ''} " \
+           f"{', '.join(map(str, outside))}." in text
+    marked = root.locator(".screwkit-labels span.screwkit-bad").all_inner_texts()
+    assert marked == [f"{i} !" for i in outside]
+
+
+# ---- the page as a reader meets it: layout, scrolling, keyboard, accessible names ----
+
+def test_several_outputs_rendered_in_any_order_all_mount(page):
+    # The library comes with one output only; an output placed before it waits for it.
+    puma = sk.robots.puma560()
+    carrier = viewer.robot_viewer(puma)
+    later, screw = viewer.robot_viewer(puma), viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0)
+    page.set_content("<html><body>" + later.html(library=False) + screw.html(library=False)
+                     + carrier.html(library=True) + "</body></html>")
+    for figure in (later, screw, carrier):
+        assert page.evaluate("id => document.getElementById(id).dataset.mounted", figure.id)
+    assert page.errors == []
+
+
+@pytest.mark.parametrize("width", [390, 1280])
+def test_viewer_fits_its_column_and_names_itself(page, width):
+    page.set_viewport_size({"width": width, "height": 800})
+    figure = viewer.robot_viewer(sk.robots.puma560(), ellipsoid=True)
+    figure_id = show(page, figure, width=width - 16)
+    box = page.evaluate("""id => {
+        const root = document.getElementById(id), c = root.querySelector('canvas');
+        const r = c.getBoundingClientRect();
+        return {right: r.right, width: r.width, pixels: c.width, page: document.documentElement.scrollWidth,
+                role: c.getAttribute('role'), label: c.getAttribute('aria-label'),
+                touch: getComputedStyle(c).touchAction, live: root.querySelector('.screwkit-caption')
+                .getAttribute('aria-live'), ratio: window.devicePixelRatio};
+    }""", figure_id)
+    assert box["right"] <= width and box["page"] <= width
+    assert box["width"] >= min(width - 40, 700) * 0.9  # it fills its column
+    assert box["pixels"] == round(box["width"] * box["ratio"])
+    assert box["role"] == "img" and box["label"].startswith("PUMA 560: a serial robot arm of 6")
+    assert box["touch"] == "pan-y" and box["live"] == "polite"
+    page.set_viewport_size({"width": 1280, "height": 800})
+
+
+def test_the_wheel_scrolls_the_page_and_ctrl_wheel_zooms(page):
+    figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()))
+    prevented = page.evaluate("""id => {
+        const c = document.getElementById(id).querySelector('canvas');
+        const v = window.screwkit.viewers[id].stage, out = [];
+        for (const ctrlKey of [false, true]) {
+            const zoom = v.zoom;
+            const e = new WheelEvent('wheel', {deltaY: 100, ctrlKey, cancelable: true, bubbles: true});
+            c.dispatchEvent(e);
+            out.push([e.defaultPrevented, v.zoom !== zoom]);
+        }
+        return out;
+    }""", figure_id)
+    assert prevented == [[False, False], [True, True]]
+
+
+def test_keyboard_orbits_and_zooms_when_focused(page):
+    figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()))
+    canvas = page.locator(f"[id='{figure_id}'] canvas")
+    snapshot = f"() => document.getElementById('{figure_id}').querySelector('canvas').toDataURL()"
+    before = page.evaluate(snapshot)
+    canvas.focus()
+    canvas.press("ArrowLeft")
+    turned = page.evaluate(snapshot)
+    canvas.press("+")
+    assert page.evaluate(f"() => window.screwkit.viewers['{figure_id}'].stage.zoom") < 1
+    canvas.press("0")
+    assert turned != before
+    assert page.evaluate(snapshot) == before  # reset: the first view again
+
+
+def test_slider_rows_do_not_reflow_and_labels_do_not_overlap(page):
+    figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()), width=374)
+    root = page.locator(f"[id='{figure_id}']")
+    boxes = lambda: [root.locator(".screwkit-controls > *").nth(k).bounding_box()  # noqa: E731
+                     for k in range(4 * 6)]
+    before = boxes()
+    for k in range(6):
+        slider = root.locator("input[type=range]").nth(k)
+        slider.fill(slider.get_attribute("min"))
+    after = boxes()
+    assert before == after  # readouts of fixed width: nothing moves when a value changes
+    for row in range(6):  # label | slider | readout | unit, left to right, not overlapping
+        cells = after[4 * row:4 * row + 4]
+        assert all(a["x"] + a["width"] <= b["x"] + 0.5 for a, b in zip(cells, cells[1:]))
+
+
+def test_mechanism_viewer_draws_each_limb(page):
+    figure_id = show(page, viewer.show_mechanism("pm_3prpar"))
+    labels = page.locator(f"[id='{figure_id}'] .screwkit-labels span").all_inner_texts()
+    assert labels == ["limb 1", "limb 2", "limb 3"]
+    canvas = page.locator(f"[id='{figure_id}'] canvas")
+    snapshot = f"() => document.getElementById('{figure_id}').querySelector('canvas').toDataURL()"
+    before = page.evaluate(snapshot)
+    box = canvas.bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.down()
+    page.mouse.move(box["x"] + box["width"] / 2 + 80, box["y"] + box["height"] / 2, steps=4)
+    page.mouse.up()
+    assert page.evaluate(snapshot) != before  # a drag turns it
     assert page.errors == []

@@ -2,8 +2,10 @@
 
 The page's own kinematics is compared with screwkit's in Chromium by .ci/test_viewer_browser.py.
 """
+import hashlib
 import json
 import math
+import pathlib
 import re
 
 import numpy as np
@@ -24,16 +26,66 @@ def model_of(figure):
 def test_the_script_ships_inside_the_package_and_is_small():
     script = viewer.viewer_script()
     assert "window.screwkit" in script
-    assert len(script.encode()) < 100_000  # the issue allows 1 MB for the whole book
+    assert len(script.encode()) < 100_000
     assert "http://" not in script and "https://" not in script  # nothing from the network
+
+
+VENDOR = pathlib.Path(viewer.__file__).parent / "static" / "vendor"
+
+
+def test_the_vendored_three_js_is_the_pinned_npm_file():
+    # tools/vendor_js.py took it from the npm tarball (integrity checked) and recorded each
+    # file's sha256; --check compares with the registry again. Here, offline: the bytes
+    # still have the recorded hashes, and the file is the pinned release (REVISION "159").
+    record = json.loads((VENDOR / "three.json").read_text())
+    assert record["package"] == "three" and record["version"] == "0.159.0"
+    for name, digest in record["sha256"].items():
+        assert hashlib.sha256((VENDOR / name).read_bytes()).hexdigest() == digest, name
+    assert 'const t="159"' in (VENDOR / "three.module.min.js").read_text()[:400]
+    assert "MIT" in (VENDOR / "three.LICENSE").read_text()
+    tool = (pathlib.Path(__file__).parents[1] / "tools" / "vendor_js.py").read_text()
+    assert f'VERSION = "{record["version"]}"' in tool and record["integrity"] in tool
+
+
+def test_the_library_becomes_a_classic_script_that_sets_window_three():
+    script = viewer.library_script()
+    assert script.startswith("if(!window.THREE){(function(){")
+    assert "export{" not in script and "import " not in script[:2000]
+    exports = re.search(r"window\.THREE=\{(.*?)\};\}\)\(\);\}", script).group(1)
+    names = dict(item.split(":") for item in exports.split(","))
+    for name in ("WebGLRenderer", "PerspectiveCamera", "Scene", "MeshStandardMaterial",
+                 "CylinderGeometry", "BoxGeometry", "GridHelper", "TubeGeometry"):
+        assert name in names
+    # every export of the module is there, each name once
+    source = (VENDOR / "three.module.min.js").read_text()
+    clause = source[source.rindex("export{") + 7:source.rindex("}")]
+    assert len(names) == clause.count(",") + 1
 
 
 def test_html_is_self_contained_and_names_its_root():
     figure = viewer.robot_viewer(sk.robots.planar([0.3, 0.2]))
-    html = figure._repr_html_()
+    html = figure.html(library=True)
     assert f'id="{figure.id}"' in html
-    assert viewer.viewer_script() in html
+    assert viewer.viewer_script() in html and viewer.library_script() in html
     assert "<script src" not in html and "<link" not in html
+    assert viewer.library_script() not in figure.html(library=False)
+
+
+def test_three_js_is_shipped_once_per_session():
+    planar = sk.robots.planar([0.3, 0.2])
+    library = viewer.library_script()
+    viewer.resend_library()
+    fallback = viewer.robot_viewer(planar)  # a live widget's page fallback, never displayed
+    assert library in fallback._repr_html_()
+    first, second = viewer.robot_viewer(planar), viewer.robot_viewer(planar)
+    steps = viewer.stepped_figure(str, "k", "1/s", values=viewer.grid(0, 1, 0.5))
+    assert library not in steps._repr_mimebundle_()["text/html"]  # no 3D: no library
+    assert library in first._repr_mimebundle_()["text/html"]
+    assert library not in second._repr_mimebundle_()["text/html"]
+    assert library in first._repr_mimebundle_()["text/html"]  # shown again: still carries it
+    assert library not in viewer.robot_viewer(planar)._repr_html_()
+    viewer.resend_library()  # the output that carried it was cleared: the next one carries it
+    assert library in viewer.robot_viewer(planar)._repr_mimebundle_()["text/html"]
 
 
 def test_robot_payload_is_the_product_of_exponentials():
