@@ -202,10 +202,13 @@ def test_several_outputs_rendered_in_any_order_all_mount(page):
     puma = sk.robots.puma560()
     carrier = viewer.robot_viewer(puma)
     later, screw = viewer.robot_viewer(puma), viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0)
-    page.set_content("<html><body>" + later.html(library=False) + screw.html(library=False)
-                     + carrier.html(library=True) + "</body></html>")
-    for figure in (later, screw, carrier):
+    steps = viewer.stepped_figure(str, "k", "1/s", values=viewer.grid(0, 1, 0.5))
+    page.set_content("<html><body>" + steps.html() + later.html(library=False)
+                     + screw.html(library=False) + carrier.html(library=True) + "</body></html>")
+    for figure in (steps, later, screw, carrier):
         assert page.evaluate("id => document.getElementById(id).dataset.mounted", figure.id)
+    assert page.locator(".screwkit-note").count() == 0  # every "waiting" note is gone
+    assert page.locator(f"[id='{later.id}'] canvas").count() == 1
     assert page.errors == []
 
 

@@ -93,11 +93,14 @@ class Viewer:
     def html(self, library=None):
         """The figure's HTML; ``library`` True/False includes three.js or not.
 
-        By default (None) three.js comes with every figure until one has been displayed on
-        its own (``_repr_mimebundle_``, what Jupyter and the book call), then with that
-        figure only: once per kernel session, so once per page of the book. A figure shown
-        as the page fallback of a live widget (``_repr_html_``) carries it while none has
-        been displayed, since Lab may draw the widget instead of the fallback.
+        three.js and ``viewer.js`` come together. By default (None) they come with every
+        3D figure until one has been displayed on its own (``_repr_mimebundle_``, what
+        Jupyter and the book call), then with that figure only: once per kernel session,
+        so once per page of the book; later figures carry only their parameters and mount
+        when the scripts are in the page, in whatever order the outputs are rendered. A
+        figure shown as the page fallback of a live widget (``_repr_html_``) carries them
+        while none has been displayed, since Lab may draw the widget instead. Stepped
+        figures need no three.js and always carry ``viewer.js``.
         """
         needs = self.model["kind"] != "steps"
         if library is None:
@@ -105,16 +108,23 @@ class Viewer:
             if library is None:
                 library = needs and not _library["shipped"]
         payload = self._payload.replace("</", "<\\/")
+        note = "" if not needs else (
+            '<div class="screwkit-note">Waiting for the 3D library, which comes with the first '
+            "3D viewer of this page or kernel session (if that output was cleared, run "
+            "<code>screwkit.viewer.resend_library()</code> and show this figure again)."
+            "</div>\n")
         parts = [
             f'<div class="screwkit-viewer" id="{self.id}">\n'
-            f'<script type="application/json">{payload}</script>\n'
+            f'<script type="application/json">{payload}</script>\n{note}'
             f"<noscript>{html.escape(self.summary)}</noscript>\n</div>\n"
         ]
         if library and needs:
             parts.append(f"<script>\n{library_script()}\n</script>\n")
-        parts.append(f"<script>\n{viewer_script()}</script>\n")
+        if library or not needs:  # later 3D viewers use the script already in the page
+            parts.append(f"<script>\n{viewer_script()}</script>\n")
         parts.append(
-            f"<script>window.screwkit.mount(document.getElementById({json.dumps(self.id)}) || "
+            f"<script>window.screwkit && window.screwkit.mount("
+            f"document.getElementById({json.dumps(self.id)}) || "
             f"document.currentScript.parentNode.querySelector(\"[id='{self.id}']\"));</script>\n"
         )
         return "".join(parts)

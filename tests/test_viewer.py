@@ -68,7 +68,9 @@ def test_html_is_self_contained_and_names_its_root():
     assert f'id="{figure.id}"' in html
     assert viewer.viewer_script() in html and viewer.library_script() in html
     assert "<script src" not in html and "<link" not in html
-    assert viewer.library_script() not in figure.html(library=False)
+    later = figure.html(library=False)  # only its parameters: the scripts are in the page
+    assert viewer.library_script() not in later and viewer.viewer_script() not in later
+    assert f'id="{figure.id}"' in later and "window.screwkit.mount(" in later
 
 
 def test_three_js_is_shipped_once_per_session():
@@ -287,3 +289,117 @@ def test_a_joint_without_limits_gets_one_turn_around_its_default(degrees, expect
     arm = sk.robots.planar([1, 1])
     spec = _sliders.joint_sliders(arm, np.radians([degrees, 0]))[0]
     assert (spec.low, spec.high, spec.value) == pytest.approx(expected)
+
+
+# ---- platforms (duck-typed: what sk.robots.stewart_gough() / planar_3rpr() offer) ----
+
+class Platform:
+    """A stand-in parallel manipulator: three legs, base and platform triangles."""
+
+    name = "stand-in 3-leg platform"
+    planar = False
+    base_points = np.array([[1.0, 0.0, 0.0], [-0.5, 0.8, 0.0], [-0.5, -0.8, 0.0]])
+    platform_points = np.array([[0.3, 0.0, 0.0], [-0.15, 0.25, 0.0], [-0.15, -0.25, 0.0]])
+    leg_limits = np.array([[0.5, 1.5]] * 3)
+
+    def home(self):
+        return sk.transl(0.0, 0.0, 0.8)
+
+
+def test_platform_payload_and_sliders():
+    model = model_of(viewer.show_platform(Platform(), pose=[0.1, 0, 0, 0, 0, 5]))
+    assert model["kind"] == "platform" and model["planar"] is False
+    np.testing.assert_array_equal(model["base"], Platform.base_points)
+    np.testing.assert_array_equal(model["platform"], Platform.platform_points)
+    assert model["home"][2][3] == 0.8 and model["limits"] == [[0.5, 1.5]] * 3
+    # six offsets from home: translations +- a third of the base's size (1.6 m / 3, in cm)
+    assert [(s["label"], s["unit"]) for s in model["sliders"]] == [
+        ("x", "m"), ("y", "m"), ("z", "m"), ("roll", "deg"), ("pitch", "deg"), ("yaw", "deg")]
+    assert [(s["min"], s["max"], s["value"]) for s in model["sliders"]][::5] == [
+        (-0.53, 0.53, 0.1), (-30.0, 30.0, 5.0)]
+    assert "3 numbered legs" in model["label"]
+
+
+def test_planar_platform_has_x_y_phi():
+    planar = Platform()
+    planar.planar, planar.leg_limits = True, None
+    model = model_of(viewer.show_platform(planar, translation=0.2, rotation=45))
+    assert [s["label"] for s in model["sliders"]] == ["x", "y", "phi"]
+    assert model["sliders"][2]["max"] == 45.0 and model["limits"] is None
+
+
+@pytest.mark.parametrize(
+    ("change", "error", "message"),
+    [
+        ({"base_points": None}, TypeError, "pm must be a parallel manipulator with base_points"),
+        ({"platform_points": np.zeros((2, 3))}, ValueError,
+         r"pm.platform_points must have shape \(3, 3\), got shape \(2, 3\)"),
+        ({"base_points": np.zeros((3, 2))}, ValueError, r"pm.base_points must have shape \(m, 3\)"),
+        ({"leg_limits": [[1, 0]] * 3}, ValueError, r"pm.leg_limits must be \(3, 2\) rows"),
+    ],
+)
+def test_a_bad_platform_is_refused_with_the_reason(change, error, message):
+    pm = Platform()
+    for key, value in change.items():
+        if value is None:
+            pm = type("Bare", (), {k: getattr(Platform, k) for k in
+                                   ("name", "planar", "platform_points", "leg_limits", "home")})()
+        else:
+            setattr(pm, key, value)
+    with pytest.raises(error, match=message):
+        viewer.show_platform(pm)
+
+
+def test_platform_pose_of_the_wrong_length_is_refused():
+    with pytest.raises(ValueError, match=r"pose must have 6 entries \(x, y, z, roll, pitch, yaw\)"):
+        viewer.show_platform(Platform(), pose=[0, 0, 0])
+
+
+# ---- mechanisms: base, platform, limbs, parallelograms ----
+
+def test_a_parallelogram_is_drawn_as_its_closed_loop():
+    # Pa with corners A1 = (0,0,0), A2 = (1,0,0), B1 = (0,0,1), B2 = (1,0,1), axes along y,
+    # after a prismatic joint: the loop A1-A2-B2-B1 (joints 1-2-4-3), not the zigzag 2-3.
+    limb = [([0, 0, 1], [0, 0, -1], sp.oo)] + sk.joints.parallelogram(
+        [0, 1, 0], [0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1])
+    model = model_of(viewer.show_mechanism([limb, limb], {}))
+    assert model["segments"][0] == [[0, 1], [1, 2], [1, 3], [2, 4], [3, 4]]
+    assert [j["kind"] for j in model["limbs"][0]] == ["prismatic"] + ["revolute"] * 4
+
+
+def test_catalogue_mechanism_by_name_with_its_drawing_values():
+    model = model_of(viewer.show_mechanism("pm_3prpar"))
+    assert model["kind"] == "mechanism" and len(model["limbs"]) == 3
+    assert model["caption"].startswith("pm_3prpar: 3 limbs of 7, 7, 7 joints")
+    assert "3 parallelograms" in model["caption"]
+    assert len(model["base"]) == 3 and len(model["platform"]) == 3
+
+
+def test_mechanism_twists_become_arrows():
+    limbs = sk.robots.pm_3prrr()
+    twists = sk.mobility(limbs)
+    model = model_of(viewer.show_mechanism(limbs, sk.robots.DRAWING_VALUES["pm_3prrr"],
+                                           twists=twists, title="Tripteron"))
+    assert [a["kind"] for a in model["twists"]] == ["translation"] * 3  # 3T
+    assert "3 translations (green)" in model["caption"]
+
+
+def test_an_unknown_mechanism_name_is_refused():
+    with pytest.raises(ValueError, match="limbs must be limbs or a catalogue mechanism's name"):
+        viewer.show_mechanism("pm_9xyz")
+    with pytest.raises(ValueError, match="values must give a number for every symbol"):
+        viewer.show_mechanism(sk.robots.pm_3prrr())
+
+
+def test_stepped_frames_say_what_they_show():
+    import matplotlib.pyplot as plt
+
+    figure = viewer.stepped_figure(lambda k: plt.figure(figsize=(1, 1)), "k", "1/s",
+                                   values=viewer.grid(0, 1, 0.5),
+                                   alt=lambda k: f"joint paths for a gain of {k:g} 1/s")
+    alts = re.findall(r'alt="([^"]*)"', "".join(model_of(figure)["frames"]))
+    assert alts == [f"joint paths for a gain of {k} 1/s" for k in ("0", "0.5", "1")]
+    default = viewer.stepped_figure(lambda k: plt.figure(figsize=(1, 1)), "pick",
+                                    choices=["a", "b"])
+    assert re.findall(r'alt="([^"]*)"', "".join(model_of(default)["frames"])) == [
+        "Figure computed for pick = a", "Figure computed for pick = b"]

@@ -920,14 +920,7 @@
       root.setAttribute("data-mounted", "1");
       return register(root, mountSteps(root, model));
     }
-    if (!window.THREE) {  // three.js comes with the first viewer of the page: wait for it
-      if (!root.querySelector(".screwkit-note")) {
-        el("div", { "class": "screwkit-note" }, root).textContent = "Waiting for three.js, " +
-          "which comes with the first 3D viewer of this page or kernel session (if that output " +
-          "was cleared, run screwkit.viewer.resend_library() and show this viewer again).";
-      }
-      return null;
-    }
+    if (!window.THREE) return null;  // three.js comes with the first 3D viewer: wait for it
     var note = root.querySelector(".screwkit-note");
     if (note) note.remove();
     root.setAttribute("data-mounted", "1");
