@@ -1,12 +1,15 @@
-"""The in-page viewers computed by screwkit/static/viewer.js agree with screwkit, in Chromium.
+"""The in-page viewers computed by screwkit/static/viewer.js agree with screwkit, in
+Chromium.
 
 Each figure is rendered into a page of headless Chromium (system Chromium driven by
-Playwright, no network, WebGL by SwiftShader); the page's forward kinematics, exponential of
-a twist, manipulability ellipsoid and platform leg lengths are compared with screwkit's (or
-with the formula written here) on random configurations; the page's layout, scrolling,
-keyboard and accessible names are checked as a reader would meet them.
-Run by `make site-check` (it needs .ci/requirements.txt); skipped without Chromium.
+Playwright, no network, WebGL by SwiftShader); the page's forward kinematics,
+exponential of a twist, manipulability ellipsoid and platform leg lengths are compared
+with screwkit's (or with the formula written here) on random configurations; the page's
+layout, scrolling, keyboard and accessible names are checked as a reader would meet
+them. Run by `make site-check` (it needs .ci/requirements.txt); skipped without
+Chromium.
 """
+
 import shutil
 
 import numpy as np
@@ -17,10 +20,19 @@ from screwkit import viewer
 
 playwright = pytest.importorskip("playwright.sync_api")
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
-         "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-quic",
-         "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1"]
-pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium (apt-get install chromium)")
+FLAGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
+]
+pytestmark = pytest.mark.skipif(
+    CHROMIUM is None, reason="needs Chromium (apt-get install chromium)"
+)
 
 
 @pytest.fixture(scope="module")
@@ -37,29 +49,44 @@ def page():
 
 
 def show(page, figure, width=760):
-    page.set_content(f"<html><body style='max-width:{width}px'>{figure.html(library=True)}"
-                     "</body></html>")
+    page.set_content(
+        f"<html><body style='max-width:{width}px'>{figure.html(library=True)}"
+        "</body></html>"
+    )
     assert page.errors == []
     return figure.id
 
 
 def random_configurations(chain, count, seed):
     rng = np.random.default_rng(seed)
-    low, high = np.clip(chain.qlim[:, 0], -np.pi, None), np.clip(chain.qlim[:, 1], None, np.pi)
+    low, high = (
+        np.clip(chain.qlim[:, 0], -np.pi, None),
+        np.clip(chain.qlim[:, 1], None, np.pi),
+    )
     return rng.uniform(low, high, size=(count, chain.n))
 
 
 def page_fk(page, figure_id, Q):
-    return np.array(page.evaluate(
-        """([id, Q]) => {
+    return np.array(
+        page.evaluate(
+            """([id, Q]) => {
             const v = window.screwkit.viewers[id];
             return Q.map(q => window.screwkit.chainPose(v.figure.model, q).tool);
-        }""", [figure_id, Q.tolist()])).reshape(-1, 4, 4)
+        }""",
+            [figure_id, Q.tolist()],
+        )
+    ).reshape(-1, 4, 4)
 
 
-@pytest.mark.parametrize("make", [sk.robots.puma560, sk.robots.kawasaki_cx210l,
-                                  lambda: sk.robots.planar([0.3, 0.25, 0.2])],
-                         ids=["puma560", "kawasaki", "planar3"])
+@pytest.mark.parametrize(
+    "make",
+    [
+        sk.robots.puma560,
+        sk.robots.kawasaki_cx210l,
+        lambda: sk.robots.planar([0.3, 0.25, 0.2]),
+    ],
+    ids=["puma560", "kawasaki", "planar3"],
+)
 def test_page_fk_equals_chain_fk(page, make):
     chain = make()
     Q = random_configurations(chain, 200, seed=1)
@@ -67,11 +94,14 @@ def test_page_fk_equals_chain_fk(page, make):
     np.testing.assert_allclose(page_fk(page, figure_id, Q), chain.fk(Q), atol=1e-9)
 
 
-@pytest.mark.skipif(not hasattr(sk.Chain, "from_screws"), reason="Chain.from_screws not there yet")
+@pytest.mark.skipif(
+    not hasattr(sk.Chain, "from_screws"), reason="Chain.from_screws not there yet"
+)
 def test_page_fk_of_a_helical_poe_chain(page):
     chain = sk.Chain.from_screws(
         [[0, 0, 1, 0, 0, 0], [1, 0, 0, 0, 0.3, 0.05], [0, 0, 0, 0, 1, 0]],
-        np.array([[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0.4], [0, 0, 0, 1]]))
+        np.array([[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0.4], [0, 0, 0, 1]]),
+    )
     Q = np.random.default_rng(2).uniform(-1, 1, size=(100, chain.n))
     figure_id = show(page, viewer.robot_viewer(chain))
     np.testing.assert_allclose(page_fk(page, figure_id, Q), chain.fk(Q), atol=1e-9)
@@ -86,7 +116,9 @@ def test_page_ellipsoid_equals_screwkit(page):
                 const m = window.screwkit.viewers[id].figure.model;
                 const e = window.screwkit.ellipsoid(m, window.screwkit.chainPose(m, q));
                 return [e.radii, e.w];
-            }""", [figure_id, q.tolist()])
+            }""",
+            [figure_id, q.tolist()],
+        )
         _, expected, _ = sk.jacobians.ellipsoid(puma, q, rows="position")
         np.testing.assert_allclose(sorted(radii, reverse=True), expected, atol=1e-9)
         assert w == pytest.approx(puma.manipulability(q, rows="position"), abs=1e-9)
@@ -100,26 +132,33 @@ def test_page_screw_motion_equals_screw_motion(page, pitch):
     figure_id = show(page, figure)
     angles = np.random.default_rng(4).uniform(-2 * np.pi, 2 * np.pi, 50)
     poses = page.evaluate(
-        """([id, angles]) => angles.map(t => window.screwkit.viewers[id].figure.pose(t))""",
-        [figure_id, angles.tolist()])
+        """([id, angles]) => angles.map(t =>
+        window.screwkit.viewers[id].figure.pose(t))""",
+        [figure_id, angles.tolist()],
+    )
     expected = sk.screw_motion(s, r, pitch, angles) @ start
     np.testing.assert_allclose(np.reshape(poses, (-1, 4, 4)), expected, atol=1e-12)
 
 
 def test_moving_a_slider_redraws(page):
     figure_id = show(page, viewer.robot_viewer(sk.robots.puma560(), ellipsoid=True))
-    before = page.evaluate("id => document.getElementById(id).querySelector('canvas').toDataURL()",
-                           figure_id)
+    before = page.evaluate(
+        "id => document.getElementById(id).querySelector('canvas').toDataURL()",
+        figure_id,
+    )
     caption = page.locator(f"[id='{figure_id}'] .screwkit-caption").inner_text()
     page.locator(f"[id='{figure_id}'] input[type=range]").nth(1).fill("90")
-    after = page.evaluate("id => document.getElementById(id).querySelector('canvas').toDataURL()",
-                          figure_id)
+    after = page.evaluate(
+        "id => document.getElementById(id).querySelector('canvas').toDataURL()",
+        figure_id,
+    )
     assert after != before
     assert page.locator(f"[id='{figure_id}'] .screwkit-caption").inner_text() != caption
     assert page.errors == []
 
 
-# ---- platforms: a stand-in with the duck-typed interface of sk.robots.stewart_gough() ----
+# ---- platforms: a stand-in with the interface of sk.robots.stewart_gough() ----
+
 
 class StandIn:
     """Six legs: base points on a circle of 0.5 m, platform points on one of 0.3 m."""
@@ -171,7 +210,9 @@ def test_page_leg_lengths_equal_the_formula(page, pm):
         """([id, V]) => {
             const f = window.screwkit.viewers[id].figure;
             return V.map(v => window.screwkit.legLengths(f.model, f.pose(v)));
-        }""", [figure_id, offsets.tolist()])
+        }""",
+        [figure_id, offsets.tolist()],
+    )
     expected = np.array([expected_legs(pm, v) for v in offsets])
     np.testing.assert_allclose(lengths, expected, atol=1e-9)
 
@@ -189,24 +230,38 @@ def test_a_leg_outside_its_limits_is_marked_and_announced(page):
     assert caption.get_attribute("aria-live") == "polite"
     text = caption.inner_text()
     assert ", ".join(f"{x:.3f}" for x in legs) in text
-    assert f"Outside the limits: leg{'s' if len(outside) > 1 else ''} " \
-           f"{', '.join(map(str, outside))}." in text
+    assert (
+        f"Outside the limits: leg{'s' if len(outside) > 1 else ''} "
+        f"{', '.join(map(str, outside))}." in text
+    )
     marked = root.locator(".screwkit-labels span.screwkit-bad").all_inner_texts()
     assert marked == [f"{i} !" for i in outside]
 
 
 # ---- the page as a reader meets it: layout, scrolling, keyboard, accessible names ----
 
+
 def test_several_outputs_rendered_in_any_order_all_mount(page):
     # The library comes with one output only; an output placed before it waits for it.
     puma = sk.robots.puma560()
     carrier = viewer.robot_viewer(puma)
-    later, screw = viewer.robot_viewer(puma), viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0)
+    later, screw = (
+        viewer.robot_viewer(puma),
+        viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0),
+    )
     steps = viewer.stepped_figure(str, "k", "1/s", values=viewer.grid(0, 1, 0.5))
-    page.set_content("<html><body>" + steps.html() + later.html(library=False)
-                     + screw.html(library=False) + carrier.html(library=True) + "</body></html>")
+    page.set_content(
+        "<html><body>"
+        + steps.html()
+        + later.html(library=False)
+        + screw.html(library=False)
+        + carrier.html(library=True)
+        + "</body></html>"
+    )
     for figure in (steps, later, screw, carrier):
-        assert page.evaluate("id => document.getElementById(id).dataset.mounted", figure.id)
+        assert page.evaluate(
+            "id => document.getElementById(id).dataset.mounted", figure.id
+        )
     assert page.locator(".screwkit-note").count() == 0  # every "waiting" note is gone
     assert page.locator(f"[id='{later.id}'] canvas").count() == 1
     assert page.errors == []
@@ -217,42 +272,55 @@ def test_viewer_fits_its_column_and_names_itself(page, width):
     page.set_viewport_size({"width": width, "height": 800})
     figure = viewer.robot_viewer(sk.robots.puma560(), ellipsoid=True)
     figure_id = show(page, figure, width=width - 16)
-    box = page.evaluate("""id => {
+    box = page.evaluate(
+        """id => {
         const root = document.getElementById(id), c = root.querySelector('canvas');
         const r = c.getBoundingClientRect();
-        return {right: r.right, width: r.width, pixels: c.width, page: document.documentElement.scrollWidth,
+        return {right: r.right, width: r.width, pixels: c.width, page:
+        document.documentElement.scrollWidth,
                 role: c.getAttribute('role'), label: c.getAttribute('aria-label'),
-                touch: getComputedStyle(c).touchAction, live: root.querySelector('.screwkit-caption')
-                .getAttribute('aria-live'), ratio: window.devicePixelRatio};
-    }""", figure_id)
+                touch: getComputedStyle(c).touchAction, live:
+                root.querySelector('.screwkit-caption') .getAttribute('aria-live'),
+                ratio: window.devicePixelRatio};
+    }""",
+        figure_id,
+    )
     assert box["right"] <= width and box["page"] <= width
     assert box["width"] >= min(width - 40, 700) * 0.9  # it fills its column
     assert box["pixels"] == round(box["width"] * box["ratio"])
-    assert box["role"] == "img" and box["label"].startswith("PUMA 560: a serial robot arm of 6")
+    assert box["role"] == "img" and box["label"].startswith(
+        "PUMA 560: a serial robot arm of 6"
+    )
     assert box["touch"] == "pan-y" and box["live"] == "polite"
     page.set_viewport_size({"width": 1280, "height": 800})
 
 
 def test_the_wheel_scrolls_the_page_and_ctrl_wheel_zooms(page):
     figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()))
-    prevented = page.evaluate("""id => {
+    prevented = page.evaluate(
+        """id => {
         const c = document.getElementById(id).querySelector('canvas');
         const v = window.screwkit.viewers[id].stage, out = [];
         for (const ctrlKey of [false, true]) {
             const zoom = v.zoom;
-            const e = new WheelEvent('wheel', {deltaY: 100, ctrlKey, cancelable: true, bubbles: true});
-            c.dispatchEvent(e);
-            out.push([e.defaultPrevented, v.zoom !== zoom]);
+            const e = new WheelEvent('wheel', {deltaY: 100, ctrlKey, cancelable: true,
+            bubbles: true}); c.dispatchEvent(e); out.push([e.defaultPrevented, v.zoom
+            !== zoom]);
         }
         return out;
-    }""", figure_id)
+    }""",
+        figure_id,
+    )
     assert prevented == [[False, False], [True, True]]
 
 
 def test_keyboard_orbits_and_zooms_when_focused(page):
     figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()))
     canvas = page.locator(f"[id='{figure_id}'] canvas")
-    snapshot = f"() => document.getElementById('{figure_id}').querySelector('canvas').toDataURL()"
+    snapshot = (
+        f"() => document.getElementById('{figure_id}')"
+        ".querySelector('canvas').toDataURL()"
+    )
     before = page.evaluate(snapshot)
     canvas.focus()
     canvas.press("ArrowLeft")
@@ -267,17 +335,25 @@ def test_keyboard_orbits_and_zooms_when_focused(page):
 def test_slider_rows_do_not_reflow_and_labels_do_not_overlap(page):
     figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()), width=374)
     root = page.locator(f"[id='{figure_id}']")
-    boxes = lambda: [root.locator(".screwkit-controls > *").nth(k).bounding_box()  # noqa: E731
-                     for k in range(4 * 6)]
+    boxes = lambda: [
+        root.locator(".screwkit-controls > *").nth(k).bounding_box()  # noqa: E731
+        for k in range(4 * 6)
+    ]
     before = boxes()
     for k in range(6):
         slider = root.locator("input[type=range]").nth(k)
         slider.fill(slider.get_attribute("min"))
     after = boxes()
-    assert before == after  # readouts of fixed width: nothing moves when a value changes
-    for row in range(6):  # label | slider | readout | unit, left to right, not overlapping
-        cells = after[4 * row:4 * row + 4]
-        assert all(a["x"] + a["width"] <= b["x"] + 0.5 for a, b in zip(cells, cells[1:]))
+    assert (
+        before == after
+    )  # readouts of fixed width: nothing moves when a value changes
+    for row in range(
+        6
+    ):  # label | slider | readout | unit, left to right, not overlapping
+        cells = after[4 * row : 4 * row + 4]
+        assert all(
+            a["x"] + a["width"] <= b["x"] + 0.5 for a, b in zip(cells, cells[1:])
+        )
 
 
 def test_mechanism_viewer_draws_each_limb(page):
@@ -285,12 +361,17 @@ def test_mechanism_viewer_draws_each_limb(page):
     labels = page.locator(f"[id='{figure_id}'] .screwkit-labels span").all_inner_texts()
     assert labels == ["limb 1", "limb 2", "limb 3"]
     canvas = page.locator(f"[id='{figure_id}'] canvas")
-    snapshot = f"() => document.getElementById('{figure_id}').querySelector('canvas').toDataURL()"
+    snapshot = (
+        f"() => document.getElementById('{figure_id}')"
+        ".querySelector('canvas').toDataURL()"
+    )
     before = page.evaluate(snapshot)
     box = canvas.bounding_box()
     page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
     page.mouse.down()
-    page.mouse.move(box["x"] + box["width"] / 2 + 80, box["y"] + box["height"] / 2, steps=4)
+    page.mouse.move(
+        box["x"] + box["width"] / 2 + 80, box["y"] + box["height"] / 2, steps=4
+    )
     page.mouse.up()
     assert page.evaluate(snapshot) != before  # a drag turns it
     assert page.errors == []
