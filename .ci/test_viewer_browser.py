@@ -375,3 +375,54 @@ def test_mechanism_viewer_draws_each_limb(page):
     page.mouse.up()
     assert page.evaluate(snapshot) != before  # a drag turns it
     assert page.errors == []
+
+
+def swipe(cdp, x, y, dx, dy, steps=10):
+    """One finger from (x, y) moved by (dx, dy) px in ``steps`` touch moves, then lifted."""
+    cdp.send(
+        "Input.dispatchTouchEvent",
+        {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]},
+    )
+    for k in range(1, steps + 1):
+        point = {"x": x + dx * k / steps, "y": y + dy * k / steps}
+        cdp.send(
+            "Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [point]}
+        )
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+
+
+def test_a_swipe_or_the_wheel_over_the_viewer_scrolls_the_page(page):
+    # As a reader meets it: a long page, the pointer (or a finger) on the drawing. (With
+    # the old `touch-action: none` the same swipe leaves the page where it was.)
+    figure = viewer.robot_viewer(sk.robots.puma560())
+    content = (
+        f"<html><body style='margin:0'>{figure.html(library=True)}"
+        "<div style='height:3000px'></div></body></html>"
+    )
+    page.set_viewport_size({"width": 1280, "height": 700})
+    page.set_content(content)
+    box = page.locator(f"[id='{figure.id}'] canvas").bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.wheel(0, 300)
+    page.wait_for_function("() => window.scrollY > 0", timeout=5000)
+    assert (
+        page.evaluate(f"() => window.screwkit.viewers['{figure.id}'].stage.zoom") == 1
+    )
+    with page.context.browser.new_context(
+        viewport={"width": 390, "height": 700}, has_touch=True
+    ) as phone:
+        tab = phone.new_page()
+        tab.set_content(content)
+        box = tab.locator(f"[id='{figure.id}'] canvas").bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+        cdp = phone.new_cdp_session(tab)
+        snapshot = (
+            f"() => document.getElementById('{figure.id}')"
+            ".querySelector('canvas').toDataURL()"
+        )
+        before = tab.evaluate(snapshot)
+        swipe(cdp, x, y, 120, 0)  # sideways: turns the view, the page stays
+        assert tab.evaluate("() => window.scrollY") == 0
+        assert tab.evaluate(snapshot) != before
+        swipe(cdp, x, y, 0, -200)  # up: the page scrolls
+        tab.wait_for_function("() => window.scrollY > 100", timeout=5000)
