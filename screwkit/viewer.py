@@ -46,7 +46,6 @@ __all__ = [
     "Viewer",
     "resend_library",
     "library_script",
-    "classic_three",
 ]
 
 _ids = itertools.count(1)
@@ -70,7 +69,7 @@ def _vendored(name):
     )
 
 
-def classic_three():
+def _classic_three():
     """three.js as a classic script that sets ``window.THREE`` (once: guarded in the
     page).
 
@@ -100,7 +99,7 @@ def classic_three():
 
 
 def library_script():
-    """The script that puts three.js in the page: :func:`classic_three`, deflated.
+    """The script that puts three.js in the page (a classic script, deflated).
 
     three.js travels as raw deflate in base64 (221 kB instead of 668 kB); npm's
     tiny-inflate (vendored too) inflates it synchronously and the text runs as a script
@@ -108,7 +107,7 @@ def library_script():
     Then it mounts every viewer that was waiting for it.
     """
     if _library["script"] is None:
-        text = classic_three().encode("utf-8")
+        text = _classic_three().encode("utf-8")
         packer = zlib.compressobj(9, zlib.DEFLATED, -15)
         packed = base64.b64encode(packer.compress(text) + packer.flush()).decode(
             "ascii"
@@ -682,18 +681,24 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     loops = sum(len(_parallelograms(limb)) for limb in joints)
     pa = f", {loops} parallelograms" if loops else ""
     rotations = sum(a["kind"] == "rotation" for a in arrows)
-    moves = (
-        (
-            f"; arrows at the platform: {rotations} rotations (red), "
-            f"{len(arrows) - rotations} translations (green)"
+    counts = [
+        f"{count} {word}{'s' if count > 1 else ''} ({colour})"
+        for count, word, colour in (
+            (len(arrows) - rotations, "translation", "green arrow"),
+            (rotations, "rotation", "red arrow with a ring"),
         )
-        if arrows
-        else ""
-    )
+        if count
+    ]
+    moves = f"; the platform's twists: {' and '.join(counts)}" if arrows else ""
+    legend = {
+        "revolute": "orange cylinders revolute",
+        "prismatic": "purple boxes prismatic",
+        "helical": "green cylinders helical",
+    }
     caption = (
         f"{title}: {len(joints)} limbs of {', '.join(str(len(j)) for j in joints)} "
-        f"joints ({', '.join(kinds)}){pa}{moves}. Joint axes: orange cylinders "
-        f"revolute, purple boxes prismatic, green cylinders helical."
+        f"joints ({', '.join(kinds)}){pa}{moves}. Joints: "
+        f"{', '.join(legend[k] for k in kinds)}."
     )
     model = {
         "kind": "mechanism",

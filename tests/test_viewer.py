@@ -66,7 +66,7 @@ def test_the_vendored_files_are_the_pinned_npm_files():
 
 
 def test_three_becomes_a_classic_script_that_sets_window_three():
-    script = viewer.classic_three()
+    script = viewer._classic_three()
     assert script.startswith("if(!window.THREE){(function(){")
     assert "export{" not in script and "import " not in script[:2000]
     exports = re.search(r"window\.THREE=\{(.*?)\};\}\)\(\);\}$", script).group(1)
@@ -96,8 +96,8 @@ def test_the_library_travels_deflated_and_inflates_to_the_classic_script():
     packed = re.search(r'atob\("([A-Za-z0-9+/=]+)"\)', script).group(1)
     size = int(re.search(r"new Uint8Array\((\d+)\);module\.exports", script).group(1))
     text = zlib.decompress(base64.b64decode(packed), -15)
-    assert text.decode() == viewer.classic_three() and len(text) == size
-    assert len(script) < 0.4 * len(viewer.classic_three())
+    assert text.decode() == viewer._classic_three() and len(text) == size
+    assert len(script) < 0.4 * len(viewer._classic_three())
 
 
 def test_html_is_self_contained_and_names_its_root():
@@ -550,7 +550,16 @@ def test_mechanism_twists_become_arrows():
         )
     )
     assert [a["kind"] for a in model["twists"]] == ["translation"] * 3  # 3T
-    assert "3 translations (green)" in model["caption"]
+    assert "the platform's twists: 3 translations (green arrow)." in model["caption"]
+    schoenflies = sk.mobility(sk.robots.pm_4prru())
+    model = model_of(viewer.show_mechanism("pm_4prru", twists=schoenflies))
+    assert (
+        sorted(a["kind"] for a in model["twists"]) == ["rotation"] + ["translation"] * 3
+    )
+    assert (
+        "3 translations (green arrow) and 1 rotation (red arrow with a ring)"
+        in model["caption"]
+    )
 
 
 def test_an_unknown_mechanism_name_is_refused():

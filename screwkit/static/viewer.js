@@ -172,7 +172,7 @@
 
   // ---- page styles, once per document ---------------------------------------------------
   var CSS = [
-    ".screwkit-viewer{font:14px/1.4 system-ui,sans-serif;color:#222;max-width:100%;margin:.5em 0}",
+    ".screwkit-viewer{font:14px/1.4 system-ui,sans-serif;color:inherit;max-width:100%;margin:.5em 0}",
     ".screwkit-stage{position:relative;width:100%;background:#f7f8fa;border:1px solid #d8dce2;",
     "border-radius:6px;overflow:hidden;box-sizing:border-box}",
     ".screwkit-stage canvas{display:block;width:100%;height:100%;touch-action:pan-y;",
@@ -194,9 +194,9 @@
     ".screwkit-controls input[type=range]{width:100%;min-width:0;margin:0;height:26px}",
     ".screwkit-controls output{text-align:right;font-variant-numeric:tabular-nums;",
     "font-family:ui-monospace,monospace;display:inline-block}",
-    ".screwkit-controls .screwkit-unit{color:#555}",
+    ".screwkit-controls .screwkit-unit{opacity:.75}",
     ".screwkit-frame img{max-width:100%;height:auto}",
-    ".screwkit-note{padding:1em;color:#555}"
+    ".screwkit-note{padding:1em;opacity:.8}"
   ].join("");
 
   function addStyle() {
@@ -819,8 +819,8 @@
     var size = this.size = stage.size = Math.max(bounds(all).size / 2, 0.2);
     var ends = [];
     model.twists.forEach(function (t) {
-      ends.push([t.start[0] + 1.5 * model.length * t.direction[0], t.start[1] + 1.5 * model.length * t.direction[1],
-        t.start[2] + 1.5 * model.length * t.direction[2]]);
+      var reach = (t.kind === "rotation" ? 1.65 : 1.5) * model.length;
+      ends.push(t.start.map(function (x, k) { return x + reach * t.direction[k]; }));
     });
     var floorZ = floorUnder(stage, all, 2 * size);
     if (model.base.length >= 3) plate(stage, model.base, COLOURS.base, 0.55);
@@ -846,11 +846,22 @@
       stage.tag("limb " + (i + 1)).at = [p[0], p[1], p[2] - 0.08 * size];
     });
     model.twists.forEach(function (t, k) {
-      var colour = t.kind === "rotation" ? COLOURS.twistR : COLOURS.twistT;
-      var tip = t.start.map(function (x, k2) { return x + 1.2 * L * t.direction[k2]; });
+      var rotation = t.kind === "rotation", colour = rotation ? COLOURS.twistR : COLOURS.twistT;
+      var reach = rotation ? 1.35 : 1.2;  // a rotation's arrow passes a translation's on its axis
+      var tip = t.start.map(function (x, k2) { return x + reach * L * t.direction[k2]; });
       var end = ends[k];
-      stage.between(stage.rod(colour), t.start, tip, 0.012 * size);
+      stage.between(stage.rod(colour), t.start, tip, (rotation ? 0.016 : 0.012) * size);
       stage.between(stage.mesh(stage.unitCone, colour), tip, end, 0.035 * size);
+      if (rotation) {  // a ring around the axis: this arrow is a rotation
+        var THREE = stage.THREE;
+        var ring = new THREE.Mesh(new THREE.TorusGeometry(0.07 * size, 0.009 * size, 10, 40),
+          stage.material(colour));
+        var at = t.start.map(function (x, k2) { return x + 0.8 * L * t.direction[k2]; });
+        ring.position.set(at[0], at[1], at[2]);
+        ring.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1),
+          new THREE.Vector3(t.direction[0], t.direction[1], t.direction[2]));
+        stage.scene.add(ring);
+      }
     });
     stage.fit(padded(all, 0.05 * size).concat(ends, [[all[0][0], all[0][1], floorZ]]));
   }
