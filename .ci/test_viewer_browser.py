@@ -426,3 +426,23 @@ def test_a_swipe_or_the_wheel_over_the_viewer_scrolls_the_page(page):
         assert tab.evaluate(snapshot) != before
         swipe(cdp, x, y, 0, -200)  # up: the page scrolls
         tab.wait_for_function("() => window.scrollY > 100", timeout=5000)
+        tab.evaluate("() => window.scrollTo(0, 0)")
+        box = tab.locator(f"[id='{figure.id}'] canvas").bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+        def fingers(gap):
+            return [{"x": x - gap, "y": y, "id": 0}, {"x": x + gap, "y": y, "id": 1}]
+
+        cdp.send(
+            "Input.dispatchTouchEvent",
+            {"type": "touchStart", "touchPoints": fingers(20)},
+        )
+        for gap in (24, 28, 32, 36, 40):  # two fingers apart: a pinch zooms the view in
+            cdp.send(
+                "Input.dispatchTouchEvent",
+                {"type": "touchMove", "touchPoints": fingers(gap)},
+            )
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+        zoom = tab.evaluate(f"() => window.screwkit.viewers['{figure.id}'].stage.zoom")
+        assert zoom == pytest.approx(20 / 40, rel=0.15)  # the fingers' gap doubled
+        assert tab.evaluate("() => visualViewport.scale") == 1  # the page did not zoom
