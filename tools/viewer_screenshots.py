@@ -94,7 +94,29 @@ def figures():
                 viewer.show_mechanism(builder, twists=m, title=f"{name}: {m.type}"),
             )
         )
+    found.append(("mobility-figure_slider", stepped_mechanisms()))
     return found
+
+
+def stepped_mechanisms():
+    """The mobility chapter's drop-down of drawings (computed now, stepped in the page)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    choices = {"3-PRRR": "pm_3prrr", "3-PR(Pa)R": "pm_3prpar", "4-PRRU": "pm_4prru"}
+
+    def draw(name):
+        limbs = getattr(sk.robots, choices[name])()
+        m = sk.mobility(limbs)
+        values = sk.robots.DRAWING_VALUES[choices[name]]
+        ax = sk.plotting.draw_mechanism(
+            limbs, values, twists=m, title=f"{name}: mobility {m.number} ({m.type})"
+        )
+        return ax.figure
+
+    return viewer.stepped_figure(
+        draw, "mechanism", choices=list(choices), value="4-PRRU"
+    )
 
 
 TIME = """id => {
@@ -153,6 +175,9 @@ def main():
                     problems.append(f"{stem} at {width} px: the page is {wide} px wide")
                 root = page.locator(f"[id='{figure.id}']")
                 small(root.screenshot(scale="css"), OUT / f"{stem}-{width}.png")
+                if figure.model["kind"] == "steps":  # frames computed in Python
+                    print(f"{stem:32} {width:>5} {'(precomputed frames)':>24}")
+                    continue
                 times = page.evaluate(TIME, figure.id)
                 print(
                     f"{stem:32} {width:>5} {statistics.median(times):>12.1f} "
