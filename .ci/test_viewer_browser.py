@@ -446,3 +446,47 @@ def test_a_swipe_or_the_wheel_over_the_viewer_scrolls_the_page(page):
         zoom = tab.evaluate(f"() => window.screwkit.viewers['{figure.id}'].stage.zoom")
         assert zoom == pytest.approx(20 / 40, rel=0.15)  # the fingers' gap doubled
         assert tab.evaluate("() => visualViewport.scale") == 1  # the page did not zoom
+
+
+def test_the_sliders_drive_the_drawn_pose_exactly(page):
+    # Moving the sliders as a reader does: the pose drawn (tool frame, joint markers) is
+    # chain.fk at the sliders' values, to 1e-9.
+    puma = sk.robots.puma560()
+    figure_id = show(page, viewer.robot_viewer(puma))
+    root = page.locator(f"[id='{figure_id}']")
+    degrees = [30, -45, 20, 90, -60, 15]
+    for k, value in enumerate(degrees):
+        root.locator("input[type=range]").nth(k).fill(str(value))
+    drawn = page.evaluate(
+        """id => {
+        const f = window.screwkit.viewers[id].figure, m = f.toolFrame[2][0];
+        return {tool: f.lastPose.tool, joint4: f.joints[3].mesh.position.toArray(),
+                zArrowStart: m.position.toArray(), caption: document.getElementById(id)
+                .querySelector('.screwkit-caption').textContent};
+    }""",
+        figure_id,
+    )
+    expected = puma.fk(np.radians(degrees))
+    np.testing.assert_allclose(np.reshape(drawn["tool"], (4, 4)), expected, atol=1e-9)
+    x, y, z = expected[:3, 3]
+    assert drawn["caption"].startswith(f"Tool at ({x:.3f}, {y:.3f}, {z:.3f}) m.")
+    _, points = puma.joint_axes(np.radians(degrees))  # joint 4's marker on its axis
+    np.testing.assert_allclose(
+        drawn["joint4"], points[3], atol=1e-6
+    )  # float32 in three
+
+
+def test_the_canvas_uses_the_device_pixel_ratio(page):
+    figure = viewer.robot_viewer(sk.robots.puma560())
+    with page.context.browser.new_context(
+        viewport={"width": 390, "height": 700}, device_scale_factor=2
+    ) as phone:
+        tab = phone.new_page()
+        tab.set_content(f"<html><body>{figure.html(library=True)}</body></html>")
+        css, pixels = tab.evaluate(
+            f"""() => {{
+            const c = document.getElementById('{figure.id}').querySelector('canvas');
+            return [c.getBoundingClientRect().width, c.width];
+        }}"""
+        )
+        assert pixels == round(2 * css) and css <= 390
