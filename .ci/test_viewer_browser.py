@@ -378,7 +378,7 @@ def test_mechanism_viewer_draws_each_limb(page):
 
 
 def swipe(cdp, x, y, dx, dy, steps=10):
-    """One finger from (x, y) moved by (dx, dy) px in ``steps`` touch moves, then lifted."""
+    """One finger from (x, y) moved by (dx, dy) px in ``steps`` moves, then lifted."""
     cdp.send(
         "Input.dispatchTouchEvent",
         {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]},
