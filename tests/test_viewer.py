@@ -590,3 +590,11 @@ def test_stepped_frames_say_what_they_show():
         "Figure computed for pick = a",
         "Figure computed for pick = b",
     ]
+
+
+def test_a_figure_as_a_whole_page_carries_everything_it_needs():
+    figure = viewer.show_mechanism("pm_6ups")
+    page = figure.page()
+    assert page.startswith("<!DOCTYPE html>") and "<title>pm_6ups</title>" in page
+    assert viewer.library_script() in page and viewer.viewer_script() in page
+    assert 'name="viewport" content="width=device-width' in page
