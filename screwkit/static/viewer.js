@@ -568,7 +568,7 @@
     var depth = (mid[0] * back[0] + mid[1] * back[1] + mid[2] * back[2]) / pts.length;
     for (var k = 0; k < 3; k++)
       target[k] = cx * right[k] + cy * up[k] + depth * back[k];
-    var tv = Math.tan((this.camera.fov * Math.PI) / 360) / 1.1,
+    var tv = Math.tan((this.camera.fov * Math.PI) / 360) / 1.16,
       th = tv * this.camera.aspect;
     var distance = 0;
     pts.forEach(function (p) {
