@@ -1,10 +1,15 @@
-"""The in-page viewers computed by screwkit/static/viewer.js agree with screwkit, in Chromium.
+"""The in-page viewers computed by screwkit/static/viewer.js agree with screwkit, in
+Chromium.
 
 Each figure is rendered into a page of headless Chromium (system Chromium driven by
-Playwright, no network); the page's forward kinematics, exponential of a twist and
-manipulability ellipsoid are compared with screwkit's on random configurations.
-Run by `make site-check` (it needs .ci/requirements.txt); skipped without Chromium.
+Playwright, no network, WebGL by SwiftShader); the page's forward kinematics,
+exponential of a twist, manipulability ellipsoid and platform leg lengths are compared
+with screwkit's (or with the formula written here) on random configurations; the page's
+layout, scrolling, keyboard and accessible names are checked as a reader would meet
+them. Run by `make site-check` (it needs .ci/requirements.txt); skipped without
+Chromium.
 """
+
 import shutil
 
 import numpy as np
@@ -15,10 +20,19 @@ from screwkit import viewer
 
 playwright = pytest.importorskip("playwright.sync_api")
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
-         "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-quic",
-         "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1"]
-pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium (apt-get install chromium)")
+FLAGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
+]
+pytestmark = pytest.mark.skipif(
+    CHROMIUM is None, reason="needs Chromium (apt-get install chromium)"
+)
 
 
 @pytest.fixture(scope="module")
@@ -34,29 +48,45 @@ def page():
         browser.close()
 
 
-def show(page, figure):
-    page.set_content(f"<html><body>{figure._repr_html_()}</body></html>")
+def show(page, figure, width=760):
+    page.set_content(
+        f"<html><body style='max-width:{width}px'>{figure.html(library=True)}"
+        "</body></html>"
+    )
     assert page.errors == []
     return figure.id
 
 
 def random_configurations(chain, count, seed):
     rng = np.random.default_rng(seed)
-    low, high = np.clip(chain.qlim[:, 0], -np.pi, None), np.clip(chain.qlim[:, 1], None, np.pi)
+    low, high = (
+        np.clip(chain.qlim[:, 0], -np.pi, None),
+        np.clip(chain.qlim[:, 1], None, np.pi),
+    )
     return rng.uniform(low, high, size=(count, chain.n))
 
 
 def page_fk(page, figure_id, Q):
-    return np.array(page.evaluate(
-        """([id, Q]) => {
+    return np.array(
+        page.evaluate(
+            """([id, Q]) => {
             const v = window.screwkit.viewers[id];
             return Q.map(q => window.screwkit.chainPose(v.figure.model, q).tool);
-        }""", [figure_id, Q.tolist()])).reshape(-1, 4, 4)
+        }""",
+            [figure_id, Q.tolist()],
+        )
+    ).reshape(-1, 4, 4)
 
 
-@pytest.mark.parametrize("make", [sk.robots.puma560, sk.robots.kawasaki_cx210l,
-                                  lambda: sk.robots.planar([0.3, 0.25, 0.2])],
-                         ids=["puma560", "kawasaki", "planar3"])
+@pytest.mark.parametrize(
+    "make",
+    [
+        sk.robots.puma560,
+        sk.robots.kawasaki_cx210l,
+        lambda: sk.robots.planar([0.3, 0.25, 0.2]),
+    ],
+    ids=["puma560", "kawasaki", "planar3"],
+)
 def test_page_fk_equals_chain_fk(page, make):
     chain = make()
     Q = random_configurations(chain, 200, seed=1)
@@ -64,11 +94,14 @@ def test_page_fk_equals_chain_fk(page, make):
     np.testing.assert_allclose(page_fk(page, figure_id, Q), chain.fk(Q), atol=1e-9)
 
 
-@pytest.mark.skipif(not hasattr(sk.Chain, "from_screws"), reason="Chain.from_screws not there yet")
+@pytest.mark.skipif(
+    not hasattr(sk.Chain, "from_screws"), reason="Chain.from_screws not there yet"
+)
 def test_page_fk_of_a_helical_poe_chain(page):
     chain = sk.Chain.from_screws(
         [[0, 0, 1, 0, 0, 0], [1, 0, 0, 0, 0.3, 0.05], [0, 0, 0, 0, 1, 0]],
-        np.array([[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0.4], [0, 0, 0, 1]]))
+        np.array([[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0.4], [0, 0, 0, 1]]),
+    )
     Q = np.random.default_rng(2).uniform(-1, 1, size=(100, chain.n))
     figure_id = show(page, viewer.robot_viewer(chain))
     np.testing.assert_allclose(page_fk(page, figure_id, Q), chain.fk(Q), atol=1e-9)
@@ -83,7 +116,9 @@ def test_page_ellipsoid_equals_screwkit(page):
                 const m = window.screwkit.viewers[id].figure.model;
                 const e = window.screwkit.ellipsoid(m, window.screwkit.chainPose(m, q));
                 return [e.radii, e.w];
-            }""", [figure_id, q.tolist()])
+            }""",
+            [figure_id, q.tolist()],
+        )
         _, expected, _ = sk.jacobians.ellipsoid(puma, q, rows="position")
         np.testing.assert_allclose(sorted(radii, reverse=True), expected, atol=1e-9)
         assert w == pytest.approx(puma.manipulability(q, rows="position"), abs=1e-9)
@@ -97,20 +132,361 @@ def test_page_screw_motion_equals_screw_motion(page, pitch):
     figure_id = show(page, figure)
     angles = np.random.default_rng(4).uniform(-2 * np.pi, 2 * np.pi, 50)
     poses = page.evaluate(
-        """([id, angles]) => angles.map(t => window.screwkit.viewers[id].figure.pose(t))""",
-        [figure_id, angles.tolist()])
+        """([id, angles]) => angles.map(t =>
+        window.screwkit.viewers[id].figure.pose(t))""",
+        [figure_id, angles.tolist()],
+    )
     expected = sk.screw_motion(s, r, pitch, angles) @ start
     np.testing.assert_allclose(np.reshape(poses, (-1, 4, 4)), expected, atol=1e-12)
 
 
 def test_moving_a_slider_redraws(page):
     figure_id = show(page, viewer.robot_viewer(sk.robots.puma560(), ellipsoid=True))
-    before = page.evaluate("id => document.getElementById(id).querySelector('canvas').toDataURL()",
-                           figure_id)
+    before = page.evaluate(
+        "id => document.getElementById(id).querySelector('canvas').toDataURL()",
+        figure_id,
+    )
     caption = page.locator(f"[id='{figure_id}'] .screwkit-caption").inner_text()
     page.locator(f"[id='{figure_id}'] input[type=range]").nth(1).fill("90")
-    after = page.evaluate("id => document.getElementById(id).querySelector('canvas').toDataURL()",
-                          figure_id)
+    after = page.evaluate(
+        "id => document.getElementById(id).querySelector('canvas').toDataURL()",
+        figure_id,
+    )
     assert after != before
     assert page.locator(f"[id='{figure_id}'] .screwkit-caption").inner_text() != caption
     assert page.errors == []
+
+
+# ---- platforms: a stand-in with the interface of sk.robots.stewart_gough() ----
+
+
+class StandIn:
+    """Six legs: base points on a circle of 0.5 m, platform points on one of 0.3 m."""
+
+    name = "stand-in 6-6 platform"
+    planar = False
+
+    def __init__(self, limits=True):
+        a = np.radians([0, 60, 120, 180, 240, 300]) + np.radians([-10, 10] * 3)
+        b = np.radians([0, 120, 240]).repeat(2) + np.radians([-50, 50] * 3)
+        self.base_points = 0.5 * np.c_[np.cos(a), np.sin(a), np.zeros(6)]
+        self.platform_points = 0.3 * np.c_[np.cos(b), np.sin(b), np.zeros(6)]
+        self.leg_limits = np.tile([0.5, 0.75], (6, 1)) if limits else None
+
+    def home(self):
+        return sk.transl(0, 0, 0.55) @ sk.homogeneous(sk.rotz(0.1), [0, 0, 0])
+
+
+class PlanarStandIn:
+    name = "stand-in 3-RPR"
+    planar = True
+    base_points = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 0.9, 0.0]])
+    platform_points = np.array([[-0.1, -0.06, 0.0], [0.1, -0.06, 0.0], [0.0, 0.1, 0.0]])
+    leg_limits = None
+
+    def home(self):
+        return sk.transl(0.5, 0.35, 0.0)
+
+
+def expected_legs(pm, offsets):
+    """|p + R b_i - a_i| with p = p_home + d, R = Rz(yaw) Ry(pitch) Rx(roll) R_home."""
+    H = pm.home()
+    if pm.planar:
+        d, R = np.array([offsets[0], offsets[1], 0.0]), sk.rotz(offsets[2])
+    else:
+        d = np.asarray(offsets[:3])
+        R = sk.rotz(offsets[5]) @ sk.roty(offsets[4]) @ sk.rotx(offsets[3])
+    p, R = H[:3, 3] + d, R @ H[:3, :3]
+    return np.linalg.norm(p + pm.platform_points @ R.T - pm.base_points, axis=1)
+
+
+@pytest.mark.parametrize("pm", [StandIn(), PlanarStandIn()], ids=["spatial", "planar"])
+def test_page_leg_lengths_equal_the_formula(page, pm):
+    figure_id = show(page, viewer.show_platform(pm))
+    rng = np.random.default_rng(5)
+    n = 3 if pm.planar else 6
+    offsets = rng.uniform(-0.15, 0.15, size=(100, n))
+    lengths = page.evaluate(
+        """([id, V]) => {
+            const f = window.screwkit.viewers[id].figure;
+            return V.map(v => window.screwkit.legLengths(f.model, f.pose(v)));
+        }""",
+        [figure_id, offsets.tolist()],
+    )
+    expected = np.array([expected_legs(pm, v) for v in offsets])
+    np.testing.assert_allclose(lengths, expected, atol=1e-9)
+
+
+def test_a_leg_outside_its_limits_is_marked_and_announced(page):
+    pm = StandIn()
+    figure_id = show(page, viewer.show_platform(pm))
+    root = page.locator(f"[id='{figure_id}']")
+    z = root.locator("input[type=range]").nth(2)
+    z.fill(z.get_attribute("max"))  # the platform lifted to the top of its slider
+    legs = expected_legs(pm, [0, 0, float(z.get_attribute("max")), 0, 0, 0])
+    outside = [i + 1 for i, x in enumerate(legs) if not 0.5 <= x <= 0.75]
+    assert outside  # the slider's top reaches past the 0.75 m limit (checked here)
+    caption = root.locator(".screwkit-caption")
+    assert caption.get_attribute("aria-live") == "polite"
+    text = caption.inner_text()
+    assert ", ".join(f"{x:.3f}" for x in legs) in text
+    assert (
+        f"Outside the limits: leg{'s' if len(outside) > 1 else ''} "
+        f"{', '.join(map(str, outside))}." in text
+    )
+    marked = root.locator(".screwkit-labels span.screwkit-bad").all_inner_texts()
+    assert marked == [f"{i} !" for i in outside]
+
+
+# ---- the page as a reader meets it: layout, scrolling, keyboard, accessible names ----
+
+
+def test_several_outputs_rendered_in_any_order_all_mount(page):
+    # The library comes with one output only; an output placed before it waits for it.
+    puma = sk.robots.puma560()
+    carrier = viewer.robot_viewer(puma)
+    later, screw = (
+        viewer.robot_viewer(puma),
+        viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0),
+    )
+    steps = viewer.stepped_figure(str, "k", "1/s", values=viewer.grid(0, 1, 0.5))
+    page.set_content(
+        "<html><body>"
+        + steps.html()
+        + later.html(library=False)
+        + screw.html(library=False)
+        + carrier.html(library=True)
+        + "</body></html>"
+    )
+    for figure in (steps, later, screw, carrier):
+        assert page.evaluate(
+            "id => document.getElementById(id).dataset.mounted", figure.id
+        )
+    assert page.locator(".screwkit-note").count() == 0  # every "waiting" note is gone
+    assert page.locator(f"[id='{later.id}'] canvas").count() == 1
+    assert page.errors == []
+
+
+@pytest.mark.parametrize("width", [390, 1280])
+def test_viewer_fits_its_column_and_names_itself(page, width):
+    page.set_viewport_size({"width": width, "height": 800})
+    figure = viewer.robot_viewer(sk.robots.puma560(), ellipsoid=True)
+    figure_id = show(page, figure, width=width - 16)
+    box = page.evaluate(
+        """id => {
+        const root = document.getElementById(id), c = root.querySelector('canvas');
+        const r = c.getBoundingClientRect();
+        return {right: r.right, width: r.width, pixels: c.width, page:
+        document.documentElement.scrollWidth,
+                role: c.getAttribute('role'), label: c.getAttribute('aria-label'),
+                touch: getComputedStyle(c).touchAction, live:
+                root.querySelector('.screwkit-caption') .getAttribute('aria-live'),
+                ratio: window.devicePixelRatio};
+    }""",
+        figure_id,
+    )
+    assert box["right"] <= width and box["page"] <= width
+    assert box["width"] >= min(width - 40, 700) * 0.9  # it fills its column
+    assert box["pixels"] == round(box["width"] * box["ratio"])
+    assert box["role"] == "img" and box["label"].startswith(
+        "PUMA 560: a serial robot arm of 6"
+    )
+    assert box["touch"] == "pan-y" and box["live"] == "polite"
+    page.set_viewport_size({"width": 1280, "height": 800})
+
+
+def test_the_wheel_scrolls_the_page_and_ctrl_wheel_zooms(page):
+    figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()))
+    prevented = page.evaluate(
+        """id => {
+        const c = document.getElementById(id).querySelector('canvas');
+        const v = window.screwkit.viewers[id].stage, out = [];
+        for (const ctrlKey of [false, true]) {
+            const zoom = v.zoom;
+            const e = new WheelEvent('wheel', {deltaY: 100, ctrlKey, cancelable: true,
+            bubbles: true}); c.dispatchEvent(e); out.push([e.defaultPrevented, v.zoom
+            !== zoom]);
+        }
+        return out;
+    }""",
+        figure_id,
+    )
+    assert prevented == [[False, False], [True, True]]
+
+
+def test_keyboard_orbits_and_zooms_when_focused(page):
+    figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()))
+    canvas = page.locator(f"[id='{figure_id}'] canvas")
+    snapshot = (
+        f"() => document.getElementById('{figure_id}')"
+        ".querySelector('canvas').toDataURL()"
+    )
+    before = page.evaluate(snapshot)
+    canvas.focus()
+    canvas.press("ArrowLeft")
+    turned = page.evaluate(snapshot)
+    canvas.press("+")
+    assert page.evaluate(f"() => window.screwkit.viewers['{figure_id}'].stage.zoom") < 1
+    canvas.press("0")
+    assert turned != before
+    assert page.evaluate(snapshot) == before  # reset: the first view again
+
+
+def test_slider_rows_do_not_reflow_and_labels_do_not_overlap(page):
+    figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()), width=374)
+    root = page.locator(f"[id='{figure_id}']")
+    boxes = lambda: [
+        root.locator(".screwkit-controls > *").nth(k).bounding_box()  # noqa: E731
+        for k in range(4 * 6)
+    ]
+    before = boxes()
+    for k in range(6):
+        slider = root.locator("input[type=range]").nth(k)
+        slider.fill(slider.get_attribute("min"))
+    after = boxes()
+    assert (
+        before == after
+    )  # readouts of fixed width: nothing moves when a value changes
+    for row in range(
+        6
+    ):  # label | slider | readout | unit, left to right, not overlapping
+        cells = after[4 * row : 4 * row + 4]
+        assert all(
+            a["x"] + a["width"] <= b["x"] + 0.5 for a, b in zip(cells, cells[1:])
+        )
+
+
+def test_mechanism_viewer_draws_each_limb(page):
+    figure_id = show(page, viewer.show_mechanism("pm_3prpar"))
+    labels = page.locator(f"[id='{figure_id}'] .screwkit-labels span").all_inner_texts()
+    assert labels == ["limb 1", "limb 2", "limb 3"]
+    canvas = page.locator(f"[id='{figure_id}'] canvas")
+    snapshot = (
+        f"() => document.getElementById('{figure_id}')"
+        ".querySelector('canvas').toDataURL()"
+    )
+    before = page.evaluate(snapshot)
+    box = canvas.bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.down()
+    page.mouse.move(
+        box["x"] + box["width"] / 2 + 80, box["y"] + box["height"] / 2, steps=4
+    )
+    page.mouse.up()
+    assert page.evaluate(snapshot) != before  # a drag turns it
+    assert page.errors == []
+
+
+def swipe(cdp, x, y, dx, dy, steps=10):
+    """One finger from (x, y) moved by (dx, dy) px in ``steps`` moves, then lifted."""
+    cdp.send(
+        "Input.dispatchTouchEvent",
+        {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]},
+    )
+    for k in range(1, steps + 1):
+        point = {"x": x + dx * k / steps, "y": y + dy * k / steps}
+        cdp.send(
+            "Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [point]}
+        )
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+
+
+def test_a_swipe_or_the_wheel_over_the_viewer_scrolls_the_page(page):
+    # As a reader meets it: a long page, the pointer (or a finger) on the drawing. (With
+    # the old `touch-action: none` the same swipe leaves the page where it was.)
+    figure = viewer.robot_viewer(sk.robots.puma560())
+    content = (
+        f"<html><body style='margin:0'>{figure.html(library=True)}"
+        "<div style='height:3000px'></div></body></html>"
+    )
+    page.set_viewport_size({"width": 1280, "height": 700})
+    page.set_content(content)
+    box = page.locator(f"[id='{figure.id}'] canvas").bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.wheel(0, 300)
+    page.wait_for_function("() => window.scrollY > 0", timeout=5000)
+    assert (
+        page.evaluate(f"() => window.screwkit.viewers['{figure.id}'].stage.zoom") == 1
+    )
+    with page.context.browser.new_context(
+        viewport={"width": 390, "height": 700}, has_touch=True
+    ) as phone:
+        tab = phone.new_page()
+        tab.set_content(content)
+        box = tab.locator(f"[id='{figure.id}'] canvas").bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+        cdp = phone.new_cdp_session(tab)
+        snapshot = (
+            f"() => document.getElementById('{figure.id}')"
+            ".querySelector('canvas').toDataURL()"
+        )
+        before = tab.evaluate(snapshot)
+        swipe(cdp, x, y, 120, 0)  # sideways: turns the view, the page stays
+        assert tab.evaluate("() => window.scrollY") == 0
+        assert tab.evaluate(snapshot) != before
+        swipe(cdp, x, y, 0, -200)  # up: the page scrolls
+        tab.wait_for_function("() => window.scrollY > 100", timeout=5000)
+        tab.evaluate("() => window.scrollTo(0, 0)")
+        box = tab.locator(f"[id='{figure.id}'] canvas").bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+        def fingers(gap):
+            return [{"x": x - gap, "y": y, "id": 0}, {"x": x + gap, "y": y, "id": 1}]
+
+        cdp.send(
+            "Input.dispatchTouchEvent",
+            {"type": "touchStart", "touchPoints": fingers(20)},
+        )
+        for gap in (24, 28, 32, 36, 40):  # two fingers apart: a pinch zooms the view in
+            cdp.send(
+                "Input.dispatchTouchEvent",
+                {"type": "touchMove", "touchPoints": fingers(gap)},
+            )
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+        zoom = tab.evaluate(f"() => window.screwkit.viewers['{figure.id}'].stage.zoom")
+        assert zoom == pytest.approx(20 / 40, rel=0.15)  # the fingers' gap doubled
+        assert tab.evaluate("() => visualViewport.scale") == 1  # the page did not zoom
+
+
+def test_the_sliders_drive_the_drawn_pose_exactly(page):
+    # Moving the sliders as a reader does: the pose drawn (tool frame, joint markers) is
+    # chain.fk at the sliders' values, to 1e-9.
+    puma = sk.robots.puma560()
+    figure_id = show(page, viewer.robot_viewer(puma))
+    root = page.locator(f"[id='{figure_id}']")
+    degrees = [30, -45, 20, 90, -60, 15]
+    for k, value in enumerate(degrees):
+        root.locator("input[type=range]").nth(k).fill(str(value))
+    drawn = page.evaluate(
+        """id => {
+        const f = window.screwkit.viewers[id].figure, m = f.toolFrame[2][0];
+        return {tool: f.lastPose.tool, joint4: f.joints[3].mesh.position.toArray(),
+                zArrowStart: m.position.toArray(), caption: document.getElementById(id)
+                .querySelector('.screwkit-caption').textContent};
+    }""",
+        figure_id,
+    )
+    expected = puma.fk(np.radians(degrees))
+    np.testing.assert_allclose(np.reshape(drawn["tool"], (4, 4)), expected, atol=1e-9)
+    x, y, z = expected[:3, 3]
+    assert drawn["caption"].startswith(f"Tool at ({x:.3f}, {y:.3f}, {z:.3f}) m.")
+    _, points = puma.joint_axes(np.radians(degrees))  # joint 4's marker on its axis
+    np.testing.assert_allclose(
+        drawn["joint4"], points[3], atol=1e-6
+    )  # float32 in three
+
+
+def test_the_canvas_uses_the_device_pixel_ratio(page):
+    figure = viewer.robot_viewer(sk.robots.puma560())
+    with page.context.browser.new_context(
+        viewport={"width": 390, "height": 700}, device_scale_factor=2
+    ) as phone:
+        tab = phone.new_page()
+        tab.set_content(f"<html><body>{figure.html(library=True)}</body></html>")
+        css, pixels = tab.evaluate(
+            f"""() => {{
+            const c = document.getElementById('{figure.id}').querySelector('canvas');
+            return [c.getBoundingClientRect().width, c.width];
+        }}"""
+        )
+        assert pixels == round(2 * css) and css <= 390

@@ -1,9 +1,14 @@
-"""The in-page viewers, Python side: what the page is given, the slider grids, bad input.
+"""The in-page viewers, Python side: what the page is given, the slider grids, bad
+input.
 
-The page's own kinematics is compared with screwkit's in Chromium by .ci/test_viewer_browser.py.
+The page's own kinematics is compared with screwkit's in Chromium by
+.ci/test_viewer_browser.py.
 """
+
+import hashlib
 import json
 import math
+import pathlib
 import re
 
 import numpy as np
@@ -24,31 +29,130 @@ def model_of(figure):
 def test_the_script_ships_inside_the_package_and_is_small():
     script = viewer.viewer_script()
     assert "window.screwkit" in script
-    assert len(script.encode()) < 100_000  # the issue allows 1 MB for the whole book
-    assert "http://" not in script and "https://" not in script  # nothing from the network
+    assert len(script.encode()) < 100_000
+    assert (
+        "http://" not in script and "https://" not in script
+    )  # nothing from the network
+
+
+VENDOR = pathlib.Path(viewer.__file__).parent / "static" / "vendor"
+
+
+def test_the_vendored_files_are_the_pinned_npm_files():
+    # tools/vendor_js.py took them from the npm tarballs (integrity checked) and
+    # recorded each file's sha256; --check compares with the registry again. Here,
+    # offline: the bytes
+    # still have the recorded hashes, and three's file is its release r159.
+    record = json.loads((VENDOR / "vendor.json").read_text())
+    assert {p: r["version"] for p, r in record.items()} == {
+        "three": "0.159.0",
+        "tiny-inflate": "1.0.3",
+    }
+    tool = (pathlib.Path(__file__).parents[1] / "tools" / "vendor_js.py").read_text()
+    tool = re.sub(r'"\s*\n\s*"', "", tool)  # the pins' strings, joined
+    for package in record.values():
+        for name, digest in package["sha256"].items():
+            assert hashlib.sha256((VENDOR / name).read_bytes()).hexdigest() == digest, (
+                name
+            )
+        assert f'"{package["version"]}"' in tool
+        assert f'"{package["integrity"]}"' in tool  # the pins, as the tool checks them
+    assert 'const t="159"' in (VENDOR / "three.module.min.js").read_text()[:400]
+    for licence in ("three.LICENSE", "tiny-inflate.LICENSE"):
+        assert (
+            "MIT" in (VENDOR / licence).read_text()
+            or "Permission is hereby granted" in (VENDOR / licence).read_text()
+        )
+
+
+def test_three_becomes_a_classic_script_that_sets_window_three():
+    script = viewer._classic_three()
+    assert script.startswith("if(!window.THREE){(function(){")
+    assert "export{" not in script and "import " not in script[:2000]
+    exports = re.search(r"window\.THREE=\{(.*?)\};\}\)\(\);\}$", script).group(1)
+    names = dict(item.split(":") for item in exports.split(","))
+    for name in (
+        "WebGLRenderer",
+        "PerspectiveCamera",
+        "Scene",
+        "MeshStandardMaterial",
+        "CylinderGeometry",
+        "BoxGeometry",
+        "GridHelper",
+        "TubeGeometry",
+    ):
+        assert name in names
+    # every export of the module is there, each name once
+    source = (VENDOR / "three.module.min.js").read_text()
+    clause = source[source.rindex("export{") + 7 : source.rindex("}")]
+    assert len(names) == clause.count(",") + 1
+
+
+def test_the_library_travels_deflated_and_inflates_to_the_classic_script():
+    import base64
+    import zlib
+
+    script = viewer.library_script()
+    packed = re.search(r'atob\("([A-Za-z0-9+/=]+)"\)', script).group(1)
+    size = int(re.search(r"new Uint8Array\((\d+)\);module\.exports", script).group(1))
+    text = zlib.decompress(base64.b64decode(packed), -15)
+    assert text.decode() == viewer._classic_three() and len(text) == size
+    assert len(script) < 0.4 * len(viewer._classic_three())
 
 
 def test_html_is_self_contained_and_names_its_root():
     figure = viewer.robot_viewer(sk.robots.planar([0.3, 0.2]))
-    html = figure._repr_html_()
+    html = figure.html(library=True)
     assert f'id="{figure.id}"' in html
-    assert viewer.viewer_script() in html
+    assert viewer.viewer_script() in html and viewer.library_script() in html
     assert "<script src" not in html and "<link" not in html
+    later = figure.html(
+        library=False
+    )  # only its parameters: the scripts are in the page
+    assert viewer.library_script() not in later and viewer.viewer_script() not in later
+    assert f'id="{figure.id}"' in later and "window.screwkit.mount(" in later
+
+
+def test_three_js_is_shipped_once_per_session():
+    planar = sk.robots.planar([0.3, 0.2])
+    library = viewer.library_script()
+    viewer.resend_library()
+    fallback = viewer.robot_viewer(
+        planar
+    )  # a live widget's page fallback, never displayed
+    assert library in fallback._repr_html_()
+    first, second = viewer.robot_viewer(planar), viewer.robot_viewer(planar)
+    steps = viewer.stepped_figure(str, "k", "1/s", values=viewer.grid(0, 1, 0.5))
+    assert library not in steps._repr_mimebundle_()["text/html"]  # no 3D: no library
+    assert library in first._repr_mimebundle_()["text/html"]
+    assert library not in second._repr_mimebundle_()["text/html"]
+    assert (
+        library in first._repr_mimebundle_()["text/html"]
+    )  # shown again: still carries it
+    assert library not in viewer.robot_viewer(planar)._repr_html_()
+    viewer.resend_library()  # its carrier was cleared: the next one carries it
+    assert library in viewer.robot_viewer(planar)._repr_mimebundle_()["text/html"]
 
 
 def test_robot_payload_is_the_product_of_exponentials():
     # planar 2R, lengths 0.3 and 0.2: joint 1 about z through 0, joint 2 about z through
     # (0.3, 0, 0); at q = 0 the tool is at (0.5, 0, 0). Screws (z; p x z) by hand.
     model = model_of(viewer.robot_viewer(sk.robots.planar([0.3, 0.2])))
-    np.testing.assert_allclose(model["screws"], [[0, 0, 1, 0, 0, 0], [0, 0, 1, 0, -0.3, 0]],
-                               atol=1e-12)
-    np.testing.assert_allclose(model["home"], [[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0],
-                                               [0, 0, 0, 1]], atol=1e-12)
+    np.testing.assert_allclose(
+        model["screws"], [[0, 0, 1, 0, 0, 0], [0, 0, 1, 0, -0.3, 0]], atol=1e-12
+    )
+    np.testing.assert_allclose(
+        model["home"],
+        [[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]],
+        atol=1e-12,
+    )
     np.testing.assert_allclose(model["points"], [[0, 0, 0], [0.3, 0, 0]], atol=1e-12)
     assert model["joints"] == ["R", "R"]
     assert [s["label"] for s in model["sliders"]] == ["q1", "q2"]
-    assert all(s["unit"] == "deg" and s["scale"] == pytest.approx(math.pi / 180)
-               for s in model["sliders"])
+    assert all(
+        s["unit"] == "deg" and s["scale"] == pytest.approx(math.pi / 180)
+        for s in model["sliders"]
+    )
 
 
 def test_payload_rebuilds_the_chain_fk():
@@ -75,7 +179,9 @@ def test_screw_payload_normalises_the_axis_and_marks_a_translation():
     assert model["s"] == [0.0, 0.0, 1.0] and model["h"] == 0.5
     assert model["slider"]["unit"] == "deg"
     for infinity in (math.inf, sp.oo):
-        model = model_of(viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], infinity, theta=0.2))
+        model = model_of(
+            viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], infinity, theta=0.2)
+        )
         assert model["h"] is None and model["slider"]["unit"] == "m"
         assert model["slider"]["value"] == 0.2
 
@@ -85,36 +191,80 @@ def test_a_chain_with_no_links_is_refused():
         n = 0  # a chain with no links cannot be built; a subclass can still claim it
 
     empty = object.__new__(Empty)
-    with pytest.raises(ValueError, match="chain must have at least one link to be drawn, got 0"):
+    with pytest.raises(
+        ValueError, match="chain must have at least one link to be drawn, got 0"
+    ):
         viewer.robot_viewer(empty)
 
 
 @pytest.mark.parametrize(
     ("call", "error", "message"),
     [
-        (lambda: viewer.robot_viewer("puma"), TypeError, "chain must be a screwkit Chain, got str"),
-        (lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), q=[0, 0, 0]), ValueError,
-         "q must have 2 entries"),
-        (lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), ellipsoid_scale=-1), ValueError,
-         "ellipsoid_scale must be one positive number"),
-        (lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), size=(10, 10)), ValueError,
-         r"size must be \(width, height\) in pixels"),
-        (lambda: viewer.screw_motion_viewer([0, 0, 0], [0, 0, 0], 0), ValueError,
-         "s must be a nonzero direction"),
-        (lambda: viewer.screw_motion_viewer([0, 1], [0, 0, 0], 0), ValueError,
-         r"s must have shape \(3\)"),
-        (lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], "x"), TypeError,
-         "h must be a number"),
-        (lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0, theta=400), ValueError,
-         r"default of slider 'theta' must lie in \[-360, 360\] deg, got 400 deg"),
-        (lambda: viewer.stepped_figure(str, "k", "1/s"), ValueError, "exactly one of values"),
-        (lambda: viewer.stepped_figure(str, "k", "1/s", values=[0.5, 1.5]), ValueError,
-         "grid anchored at 0"),
-        (lambda: viewer.stepped_figure(str, "pick", choices=["a"], value="b"), ValueError,
-         "value must be one of the choices"),
-        (lambda: viewer.stepped_figure(lambda v: 3, "k", "1/s", values=[0, 1]), TypeError,
-         "draw must return a matplotlib Figure or a str, got int"),
-        (lambda: viewer.grid(0.5, 2.5, 1), ValueError, "low must be a multiple of step"),
+        (
+            lambda: viewer.robot_viewer("puma"),
+            TypeError,
+            "chain must be a screwkit Chain, got str",
+        ),
+        (
+            lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), q=[0, 0, 0]),
+            ValueError,
+            "q must have 2 entries",
+        ),
+        (
+            lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), ellipsoid_scale=-1),
+            ValueError,
+            "ellipsoid_scale must be one positive number",
+        ),
+        (
+            lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), size=(10, 10)),
+            ValueError,
+            r"size must be \(width, height\) in pixels",
+        ),
+        (
+            lambda: viewer.screw_motion_viewer([0, 0, 0], [0, 0, 0], 0),
+            ValueError,
+            "s must be a nonzero direction",
+        ),
+        (
+            lambda: viewer.screw_motion_viewer([0, 1], [0, 0, 0], 0),
+            ValueError,
+            r"s must have shape \(3\)",
+        ),
+        (
+            lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], "x"),
+            TypeError,
+            "h must be a number",
+        ),
+        (
+            lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0, theta=400),
+            ValueError,
+            r"default of slider 'theta' must lie in \[-360, 360\] deg, got 400 deg",
+        ),
+        (
+            lambda: viewer.stepped_figure(str, "k", "1/s"),
+            ValueError,
+            "exactly one of values",
+        ),
+        (
+            lambda: viewer.stepped_figure(str, "k", "1/s", values=[0.5, 1.5]),
+            ValueError,
+            "grid anchored at 0",
+        ),
+        (
+            lambda: viewer.stepped_figure(str, "pick", choices=["a"], value="b"),
+            ValueError,
+            "value must be one of the choices",
+        ),
+        (
+            lambda: viewer.stepped_figure(lambda v: 3, "k", "1/s", values=[0, 1]),
+            TypeError,
+            "draw must return a matplotlib Figure or a str, got int",
+        ),
+        (
+            lambda: viewer.grid(0.5, 2.5, 1),
+            ValueError,
+            "low must be a multiple of step",
+        ),
     ],
 )
 def test_bad_input_is_refused_with_the_reason(call, error, message):
@@ -124,36 +274,49 @@ def test_bad_input_is_refused_with_the_reason(call, error, message):
 
 def test_a_pose_outside_the_limits_is_refused_with_the_joint_named():
     arm = sk.robots.planar([1, 1], qlim=np.radians([[-90, 90], [-90, 90]]))
-    with pytest.raises(ValueError, match=r"q\[1\] = 120 deg is outside joint 2's limits"):
+    with pytest.raises(
+        ValueError, match=r"q\[1\] = 120 deg is outside joint 2's limits"
+    ):
         viewer.robot_viewer(arm, np.radians([0, 120]))
 
 
 def test_stepped_figure_embeds_one_frame_per_value():
-    figure = viewer.stepped_figure(lambda k: f"k = {k:.1f}", "k", "1/s",
-                                   values=viewer.grid(0, 2, 0.5), value=1.0)
+    figure = viewer.stepped_figure(
+        lambda k: f"k = {k:.1f}", "k", "1/s", values=viewer.grid(0, 2, 0.5), value=1.0
+    )
     model = model_of(figure)
     assert model["values"] == [0.0, 0.5, 1.0, 1.5, 2.0]
     assert model["index"] == 2
     assert model["frames"][2] == '<pre style="margin:0">k = 1.0</pre>'
-    choice = model_of(viewer.stepped_figure(lambda m: m.upper(), "mechanism",
-                                            choices=["a<b", "c"], value="c"))
-    assert choice["index"] == 1 and choice["frames"][0] == '<pre style="margin:0">A&lt;B</pre>'
+    choice = model_of(
+        viewer.stepped_figure(
+            lambda m: m.upper(), "mechanism", choices=["a<b", "c"], value="c"
+        )
+    )
+    assert (
+        choice["index"] == 1
+        and choice["frames"][0] == '<pre style="margin:0">A&lt;B</pre>'
+    )
 
 
 def _frame_images(figure):
-    """The PNG frames of a stepped figure, decoded (Pillow, matplotlib's own dependency)."""
+    """The PNG frames of a stepped figure, decoded (Pillow, matplotlib's own
+    dependency)."""
     import base64
     import io
 
     from PIL import Image
 
-    return [Image.open(io.BytesIO(base64.b64decode(data)))
-            for data in re.findall(r"base64,([^\"]+)", "".join(model_of(figure)["frames"]))]
+    return [
+        Image.open(io.BytesIO(base64.b64decode(data)))
+        for data in re.findall(r"base64,([^\"]+)", "".join(model_of(figure)["frames"]))
+    ]
 
 
 def test_stepped_frames_are_drawn_in_the_course_style_at_its_dpi():
-    # A figure made with matplotlib's defaults inside draw gets the course's size and fonts,
-    # and is rendered at the course's DPI: 6.6 in x 4 in at 100 px/in is 660 x 400 px, so a
+    # A figure made with matplotlib's defaults inside draw gets the course's size and
+    # fonts, and is rendered at the course's DPI: 6.6 in x 4 in at 100 px/in is
+    # 660 x 400 px, so a
     # 9 pt text is 12.5 px high in the page, no less than the browser's 9 pt (12 px).
     import matplotlib
 
@@ -168,7 +331,10 @@ def test_stepped_frames_are_drawn_in_the_course_style_at_its_dpi():
         font_sizes.append(ax.xaxis.label.get_fontsize())
         return fig
 
-    before, open_before = dict(plt.rcParams), set(plt.get_fignums())  # other tests may leave some
+    before, open_before = (
+        dict(plt.rcParams),
+        set(plt.get_fignums()),
+    )  # other tests may leave some
     figure = viewer.stepped_figure(draw, "k", "1/s", values=viewer.grid(0, 1, 0.5))
     images = _frame_images(figure)
     assert [image.size for image in images] == [(660, 400)] * 3
@@ -179,7 +345,8 @@ def test_stepped_frames_are_drawn_in_the_course_style_at_its_dpi():
 
 def test_stepped_frames_keep_a_figure_size_and_its_colours_exactly():
     # 256 colours keep the page small; a flat colour must come through unchanged: the
-    # background stays white (255, 255, 255) and tab:blue stays #1f77b4 = (31, 119, 180).
+    # background stays white (255, 255, 255) and tab:blue stays #1f77b4
+    # = (31, 119, 180).
     import matplotlib.pyplot as plt
 
     def draw(name):
@@ -203,13 +370,16 @@ def test_stepped_figure_renders_at_a_given_dpi_and_refuses_a_bad_one():
     def draw(name):
         return plt.figure(figsize=(2, 1))
 
-    (image,) = _frame_images(viewer.stepped_figure(draw, "pick", choices=["a"], dpi=150))
+    (image,) = _frame_images(
+        viewer.stepped_figure(draw, "pick", choices=["a"], dpi=150)
+    )
     assert image.size == (300, 150)
     with pytest.raises(ValueError, match="dpi must be a positive number, got -80.0"):
         viewer.stepped_figure(draw, "pick", choices=["a"], dpi=-80)
 
 
-# ---- slider grids (the rules of issue 18, item 4; tests/test_sliders.py checks the chapters) --
+# ---- slider grids (issue 18, item 4; tests/test_sliders.py checks the chapters) ----
+
 
 def test_slider_grid_holds_default_and_zero():
     # The Jacobians chapter's old q3 slider: min -87.3, step 0.5, default -20.
@@ -217,7 +387,9 @@ def test_slider_grid_holds_default_and_zero():
     assert (spec.low, spec.high, spec.step, spec.value) == (-87.0, 60.0, 1.0, -20.0)
     spec = _sliders.slider_spec("q3", "deg", -87.3, 60, -20.5)
     assert (spec.low, spec.step, spec.value) == (-87.0, 0.5, -20.5)
-    spec = _sliders.slider_spec("q3", "deg", -87.3, 60, -87.3)  # at the limit, on purpose
+    spec = _sliders.slider_spec(
+        "q3", "deg", -87.3, 60, -87.3
+    )  # at the limit, on purpose
     assert (spec.low, spec.step, spec.value) == (-87.3, 0.1, -87.3)
 
 
@@ -227,11 +399,202 @@ def test_puma_nominal_q3_is_inside_its_limits_not_at_an_edge():
     assert (q3.low, q3.high, q3.value) == (-225.0, 45.0, -180.0)
 
 
-@pytest.mark.parametrize(("degrees", "expected"), [
-    (0, (-180, 180, 0)), (100, (-180, 180, 100)), (180, (-90, 270, 180)),
-    (-180, (-270, 90, -180)), (540, (-90, 270, 180)), (-190, (-90, 270, 170)),
-])
+@pytest.mark.parametrize(
+    ("degrees", "expected"),
+    [
+        (0, (-180, 180, 0)),
+        (100, (-180, 180, 100)),
+        (180, (-90, 270, 180)),
+        (-180, (-270, 90, -180)),
+        (540, (-90, 270, 180)),
+        (-190, (-90, 270, 170)),
+    ],
+)
 def test_a_joint_without_limits_gets_one_turn_around_its_default(degrees, expected):
     arm = sk.robots.planar([1, 1])
     spec = _sliders.joint_sliders(arm, np.radians([degrees, 0]))[0]
     assert (spec.low, spec.high, spec.value) == pytest.approx(expected)
+
+
+# ---- platforms (duck-typed: what sk.robots.stewart_gough() / planar_3rpr() offer) ----
+
+
+class Platform:
+    """A stand-in parallel manipulator: three legs, base and platform triangles."""
+
+    name = "stand-in 3-leg platform"
+    planar = False
+    base_points = np.array([[1.0, 0.0, 0.0], [-0.5, 0.8, 0.0], [-0.5, -0.8, 0.0]])
+    platform_points = np.array(
+        [[0.3, 0.0, 0.0], [-0.15, 0.25, 0.0], [-0.15, -0.25, 0.0]]
+    )
+    leg_limits = np.array([[0.5, 1.5]] * 3)
+
+    def home(self):
+        return sk.transl(0.0, 0.0, 0.8)
+
+
+def test_platform_payload_and_sliders():
+    model = model_of(viewer.show_platform(Platform(), pose=[0.1, 0, 0, 0, 0, 5]))
+    assert model["kind"] == "platform" and model["planar"] is False
+    np.testing.assert_array_equal(model["base"], Platform.base_points)
+    np.testing.assert_array_equal(model["platform"], Platform.platform_points)
+    assert model["home"][2][3] == 0.8 and model["limits"] == [[0.5, 1.5]] * 3
+    # six offsets from home: translations +- a third of the base's size (1.6 m / 3,
+    # in cm)
+    assert [(s["label"], s["unit"]) for s in model["sliders"]] == [
+        ("x", "m"),
+        ("y", "m"),
+        ("z", "m"),
+        ("roll", "deg"),
+        ("pitch", "deg"),
+        ("yaw", "deg"),
+    ]
+    assert [(s["min"], s["max"], s["value"]) for s in model["sliders"]][::5] == [
+        (-0.53, 0.53, 0.1),
+        (-30.0, 30.0, 5.0),
+    ]
+    assert "3 numbered legs" in model["label"]
+
+
+def test_planar_platform_has_x_y_phi():
+    planar = Platform()
+    planar.planar, planar.leg_limits = True, None
+    model = model_of(viewer.show_platform(planar, translation=0.2, rotation=45))
+    assert [s["label"] for s in model["sliders"]] == ["x", "y", "phi"]
+    assert model["sliders"][2]["max"] == 45.0 and model["limits"] is None
+
+
+@pytest.mark.parametrize(
+    ("change", "error", "message"),
+    [
+        (
+            {"base_points": None},
+            TypeError,
+            "pm must be a parallel manipulator with base_points",
+        ),
+        (
+            {"platform_points": np.zeros((2, 3))},
+            ValueError,
+            r"pm.platform_points must have shape \(3, 3\), got shape \(2, 3\)",
+        ),
+        (
+            {"base_points": np.zeros((3, 2))},
+            ValueError,
+            r"pm.base_points must have shape \(m, 3\)",
+        ),
+        (
+            {"leg_limits": [[1, 0]] * 3},
+            ValueError,
+            r"pm.leg_limits must be \(3, 2\) rows",
+        ),
+    ],
+)
+def test_a_bad_platform_is_refused_with_the_reason(change, error, message):
+    pm = Platform()
+    for key, value in change.items():
+        if value is None:
+            pm = type(
+                "Bare",
+                (),
+                {
+                    k: getattr(Platform, k)
+                    for k in ("name", "planar", "platform_points", "leg_limits", "home")
+                },
+            )()
+        else:
+            setattr(pm, key, value)
+    with pytest.raises(error, match=message):
+        viewer.show_platform(pm)
+
+
+def test_platform_pose_of_the_wrong_length_is_refused():
+    with pytest.raises(
+        ValueError, match=r"pose must have 6 entries \(x, y, z, roll, pitch, yaw\)"
+    ):
+        viewer.show_platform(Platform(), pose=[0, 0, 0])
+
+
+# ---- mechanisms: base, platform, limbs, parallelograms ----
+
+
+def test_a_parallelogram_is_drawn_as_its_closed_loop():
+    # Pa with corners A1 = (0,0,0), A2 = (1,0,0), B1 = (0,0,1), B2 = (1,0,1), axes
+    # along y, after a prismatic joint: the loop A1-A2-B2-B1 (joints 1-2-4-3), not the
+    # zigzag 2-3.
+    limb = [([0, 0, 1], [0, 0, -1], sp.oo)] + sk.joints.parallelogram(
+        [0, 1, 0], [0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1]
+    )
+    model = model_of(viewer.show_mechanism([limb, limb], {}))
+    assert model["segments"][0] == [[0, 1], [1, 2], [1, 3], [2, 4], [3, 4]]
+    assert [j["kind"] for j in model["limbs"][0]] == ["prismatic"] + ["revolute"] * 4
+
+
+def test_catalogue_mechanism_by_name_with_its_drawing_values():
+    model = model_of(viewer.show_mechanism("pm_3prpar"))
+    assert model["kind"] == "mechanism" and len(model["limbs"]) == 3
+    assert model["caption"].startswith("pm_3prpar: 3 limbs of 7, 7, 7 joints")
+    assert "3 parallelograms" in model["caption"]
+    assert len(model["base"]) == 3 and len(model["platform"]) == 3
+
+
+def test_mechanism_twists_become_arrows():
+    limbs = sk.robots.pm_3prrr()
+    twists = sk.mobility(limbs)
+    model = model_of(
+        viewer.show_mechanism(
+            limbs,
+            sk.robots.DRAWING_VALUES["pm_3prrr"],
+            twists=twists,
+            title="Tripteron",
+        )
+    )
+    assert [a["kind"] for a in model["twists"]] == ["translation"] * 3  # 3T
+    assert "the platform's twists: 3 translations (green arrow)." in model["caption"]
+    schoenflies = sk.mobility(sk.robots.pm_4prru())
+    model = model_of(viewer.show_mechanism("pm_4prru", twists=schoenflies))
+    assert (
+        sorted(a["kind"] for a in model["twists"]) == ["rotation"] + ["translation"] * 3
+    )
+    assert (
+        "3 translations (green arrow) and 1 rotation (red arrow with a ring)"
+        in model["caption"]
+    )
+
+
+def test_an_unknown_mechanism_name_is_refused():
+    with pytest.raises(
+        ValueError, match="limbs must be limbs or a catalogue mechanism's name"
+    ):
+        viewer.show_mechanism("pm_9xyz")
+    with pytest.raises(ValueError, match="values must give a number for every symbol"):
+        viewer.show_mechanism(sk.robots.pm_3prrr())
+
+
+def test_stepped_frames_say_what_they_show():
+    import matplotlib.pyplot as plt
+
+    figure = viewer.stepped_figure(
+        lambda k: plt.figure(figsize=(1, 1)),
+        "k",
+        "1/s",
+        values=viewer.grid(0, 1, 0.5),
+        alt=lambda k: f"joint paths for a gain of {k:g} 1/s",
+    )
+    alts = re.findall(r'alt="([^"]*)"', "".join(model_of(figure)["frames"]))
+    assert alts == [f"joint paths for a gain of {k} 1/s" for k in ("0", "0.5", "1")]
+    default = viewer.stepped_figure(
+        lambda k: plt.figure(figsize=(1, 1)), "pick", choices=["a", "b"]
+    )
+    assert re.findall(r'alt="([^"]*)"', "".join(model_of(default)["frames"])) == [
+        "Figure computed for pick = a",
+        "Figure computed for pick = b",
+    ]
+
+
+def test_a_figure_as_a_whole_page_carries_everything_it_needs():
+    figure = viewer.show_mechanism("pm_6ups")
+    page = figure.page()
+    assert page.startswith("<!DOCTYPE html>") and "<title>pm_6ups</title>" in page
+    assert viewer.library_script() in page and viewer.viewer_script() in page
+    assert 'name="viewport" content="width=device-width' in page
