@@ -27,7 +27,19 @@ ORDER = [
     # _newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls it;
     # urdf is read by Chain.from_urdf
     ("chains", ["links", "urdf", "_newton", "chains"]),
-    ("catalogue", ["limbs", "joints", "parallel", "robots"]),
+    (
+        "catalogue",
+        [
+            "limbs",
+            "joints",
+            "_parallel_legs",
+            "_parallel_numeric",
+            "_parallel_search",
+            "_parallel_catalogue",
+            "parallel",
+            "robots",
+        ],
+    ),
     (
         "algorithms",
         [
@@ -43,7 +55,15 @@ ORDER = [
     ),
     (
         "display",
-        ["_sliders", "_mechanism_plot", "plotting", "viewer", "widgets", "exercises"],
+        [
+            "_sliders",
+            "_mechanism_plot",
+            "_parallel_plot",
+            "plotting",
+            "viewer",
+            "widgets",
+            "exercises",
+        ],
     ),
 ]
 
