@@ -18,6 +18,7 @@ Prints how long each step took; on failure, where a screenshot of the page was s
 Usage: .venv/bin/python .ci/check_lab_live.py (needs .ci/requirements.txt and JupyterLab in
 .venv: `make lab` installs it on first use).
 """
+
 import json
 import os
 import secrets
@@ -41,16 +42,27 @@ try:
     from playwright.sync_api import TimeoutError as PlaywrightTimeout
     from playwright.sync_api import sync_playwright
 except ImportError:
-    sys.exit("check_lab_live: FAILED: Playwright is not installed in this Python: "
-             f"{sys.executable} -m pip install -r .ci/requirements.txt")
+    sys.exit(
+        "check_lab_live: FAILED: Playwright is not installed in this Python: "
+        f"{sys.executable} -m pip install -r .ci/requirements.txt"
+    )
 
 ROOT = Path(__file__).resolve().parent.parent
 BIN = Path(sys.executable).parent
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-FLAGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
-         "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-quic",
-         "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1"]
-TOTAL = float(os.environ.get("LAB_LIVE_TOTAL", 420))  # s: the watchdog ends the check after it
+FLAGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
+]
+TOTAL = float(
+    os.environ.get("LAB_LIVE_TOTAL", 420)
+)  # s: the watchdog ends the check after it
 CHAPTER = "redundancy.ipynb"  # copied from notebooks/
 NOTEBOOK = "live_sliders.ipynb"  # written here
 CELLS = [
@@ -59,8 +71,10 @@ CELLS = [
     "sk.viewer.robot_viewer(puma, np.radians([0, -30, 20, 0, 30, 0]), ellipsoid=True)",
     'print(f"live kernel: PUMA 560 tool z at home = {puma.fk(np.zeros(6))[2, 3]:.4f} m")',
 ]
-STDERR = ('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"], '
-          '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]')
+STDERR = (
+    '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"], '
+    '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]'
+)
 
 
 class CheckFailed(Exception):
@@ -108,28 +122,48 @@ class Lab:
     def start(self, timeout=180):
         lab = BIN / "jupyter-lab"
         if not lab.exists():
-            raise CheckFailed(f"JupyterLab is not installed in {BIN.parent}: run `make lab` "
-                              "once, or pip install its pin from binder/requirements.txt")
-        env = dict(os.environ, JUPYTER_CONFIG_DIR=str(self.home / "config"),
-                   JUPYTER_DATA_DIR=str(self.home / "data"),
-                   JUPYTER_RUNTIME_DIR=str(self.home / "runtime"),
-                   JUPYTERLAB_SETTINGS_DIR=str(self.home / "settings"),
-                   JUPYTERLAB_WORKSPACES_DIR=str(self.home / "workspaces"),
-                   IPYTHONDIR=str(self.home / "ipython"))
-        env.pop("MPLBACKEND", None)  # the kernel's own default, inline, as for a student
-        args = [str(lab), "--no-browser", "--ip=127.0.0.1", f"--port={self.port}",
-                "--port-retries=0", f"--IdentityProvider.token={self.token}",
-                f"--ServerApp.root_dir={self.home / 'notebooks'}"]
+            raise CheckFailed(
+                f"JupyterLab is not installed in {BIN.parent}: run `make lab` "
+                "once, or pip install its pin from binder/requirements.txt"
+            )
+        env = dict(
+            os.environ,
+            JUPYTER_CONFIG_DIR=str(self.home / "config"),
+            JUPYTER_DATA_DIR=str(self.home / "data"),
+            JUPYTER_RUNTIME_DIR=str(self.home / "runtime"),
+            JUPYTERLAB_SETTINGS_DIR=str(self.home / "settings"),
+            JUPYTERLAB_WORKSPACES_DIR=str(self.home / "workspaces"),
+            IPYTHONDIR=str(self.home / "ipython"),
+        )
+        env.pop(
+            "MPLBACKEND", None
+        )  # the kernel's own default, inline, as for a student
+        args = [
+            str(lab),
+            "--no-browser",
+            "--ip=127.0.0.1",
+            f"--port={self.port}",
+            "--port-retries=0",
+            f"--IdentityProvider.token={self.token}",
+            f"--ServerApp.root_dir={self.home / 'notebooks'}",
+        ]
         if os.geteuid() == 0:
             args.append("--allow-root")  # as `make lab` does (containers, cloud VMs)
         with open(self.log_path, "w") as server_log:
-            self.process = subprocess.Popen(args, env=env, stdout=server_log,
-                                            stderr=subprocess.STDOUT, start_new_session=True)
+            self.process = subprocess.Popen(
+                args,
+                env=env,
+                stdout=server_log,
+                stderr=subprocess.STDOUT,
+                start_new_session=True,
+            )
 
         def answers():
             if self.process.poll() is not None:
-                raise CheckFailed(f"JupyterLab exited with {self.process.returncode} before it "
-                                  f"answered:\n{self.server_log()}")
+                raise CheckFailed(
+                    f"JupyterLab exited with {self.process.returncode} before it "
+                    f"answered:\n{self.server_log()}"
+                )
             try:
                 self.api("status")
                 return True
@@ -139,8 +173,11 @@ class Lab:
         wait_until(answers, timeout, f"JupyterLab answering on port {self.port}")
 
     def api(self, path, method="GET", timeout=10):
-        request = urllib.request.Request(f"{self.url}/api/{path}", method=method,
-                                         headers={"Authorization": f"token {self.token}"})
+        request = urllib.request.Request(
+            f"{self.url}/api/{path}",
+            method=method,
+            headers={"Authorization": f"token {self.token}"},
+        )
         try:
             with urllib.request.urlopen(request, timeout=timeout) as answer:
                 body = answer.read()
@@ -159,7 +196,9 @@ class Lab:
                 cmdline = (entry / "cmdline").read_bytes().split(b"\0")
             except OSError:
                 continue
-            if any(part.decode(errors="replace").startswith(runtime) for part in cmdline):
+            if any(
+                part.decode(errors="replace").startswith(runtime) for part in cmdline
+            ):
                 pids.append(int(entry.name))
         return pids
 
@@ -201,23 +240,32 @@ def write_notebooks(folder):
     shutil.copy(ROOT / "notebooks" / CHAPTER, folder / CHAPTER)
     notebook = nbformat.v4.new_notebook()
     notebook.cells = [nbformat.v4.new_code_cell(source) for source in CELLS]
-    notebook.metadata["kernelspec"] = {"display_name": "Python 3 (ipykernel)",
-                                       "language": "python", "name": "python3"}
+    notebook.metadata["kernelspec"] = {
+        "display_name": "Python 3 (ipykernel)",
+        "language": "python",
+        "name": "python3",
+    }
     nbformat.write(notebook, folder / NOTEBOOK)
     chapter = nbformat.read(folder / CHAPTER, as_version=4)
-    return {CHAPTER: sum(cell.cell_type == "code" for cell in chapter.cells),
-            NOTEBOOK: len(CELLS)}
+    return {
+        CHAPTER: sum(cell.cell_type == "code" for cell in chapter.cells),
+        NOTEBOOK: len(CELLS),
+    }
 
 
 def open_notebook(page, lab, name, timeout=120):
     """Open ``name`` in Lab (a workspace of its own) and wait for its kernel to be idle."""
-    page.goto(f"{lab.url}/lab/workspaces/{Path(name).stem}/tree/{name}?token={lab.token}",
-              timeout=timeout * 1000)
+    page.goto(
+        f"{lab.url}/lab/workspaces/{Path(name).stem}/tree/{name}?token={lab.token}",
+        timeout=timeout * 1000,
+    )
     page.locator(".jp-NotebookPanel .jp-Cell").first.wait_for(timeout=timeout * 1000)
 
     def kernel_idle():
-        return any(s["path"] == name and s["kernel"]["execution_state"] == "idle"
-                   for s in lab.api("sessions"))
+        return any(
+            s["path"] == name and s["kernel"]["execution_state"] == "idle"
+            for s in lab.api("sessions")
+        )
 
     wait_until(kernel_idle, timeout, f"the kernel of {name} idle")
 
@@ -233,25 +281,35 @@ def check_no_errors(page, when):
     """CheckFailed quoting every error or stderr output of the notebook, if there is one."""
     errors = page.locator(STDERR)
     if errors.count():
-        raise CheckFailed(f"{when}, {errors.count()} output(s) show an error or stderr:\n"
-                          + "\n".join(errors.all_inner_texts())[-3000:])
+        raise CheckFailed(
+            f"{when}, {errors.count()} output(s) show an error or stderr:\n"
+            + "\n".join(errors.all_inner_texts())[-3000:]
+        )
 
 
 def run_all_cells(page, count, timeout=240):
     """Run > Run All Cells; wait until every code cell shows its execution count (or errs)."""
     page.locator(".lm-MenuBar-item", has_text="Run").first.click()
-    page.locator("li.lm-Menu-item:has(.lm-Menu-itemLabel:text-is('Run All Cells'))").click()
+    page.locator(
+        "li.lm-Menu-item:has(.lm-Menu-itemLabel:text-is('Run All Cells'))"
+    ).click()
     try:
         page.wait_for_function(
             """([n, errors]) => {
                 const prompts = [...document.querySelectorAll('.jp-CodeCell .jp-InputPrompt')];
                 return document.querySelector(errors) !== null || (prompts.length === n
                     && prompts.every(p => /\\[\\d+\\]/.test(p.textContent)));
-            }""", arg=[count, STDERR], timeout=timeout * 1000, polling=500)
+            }""",
+            arg=[count, STDERR],
+            timeout=timeout * 1000,
+            polling=500,
+        )
     except PlaywrightTimeout:
         prompts = page.locator(".jp-CodeCell .jp-InputPrompt").all_inner_texts()
-        raise CheckFailed(f"the {count} code cells did not all run within {timeout} s; "
-                          f"their prompts: {prompts}") from None
+        raise CheckFailed(
+            f"the {count} code cells did not all run within {timeout} s; "
+            f"their prompts: {prompts}"
+        ) from None
     check_no_errors(page, "after Run All Cells")
 
 
@@ -264,38 +322,54 @@ def move_widget_slider(page, handles_expected=None, handle=0, timeout=90):
     index = page.evaluate("""() => [...document.querySelectorAll('.jp-CodeCell')]
         .findIndex(c => c.querySelector('.widget-slider .noUi-handle') !== null)""")
     if index < 0:
-        raise CheckFailed("no ipywidgets slider in the notebook after running it "
-                          "(is the widget manager loaded?)")
+        raise CheckFailed(
+            "no ipywidgets slider in the notebook after running it "
+            "(is the widget manager loaded?)"
+        )
     cell = page.locator(".jp-CodeCell").nth(index)
     handles = cell.locator(".widget-slider .noUi-handle")
     if handles_expected is not None and handles.count() != handles_expected:
-        raise CheckFailed(f"the widget should show {handles_expected} sliders in Lab, "
-                          f"found {handles.count()}")
+        raise CheckFailed(
+            f"the widget should show {handles_expected} sliders in Lab, "
+            f"found {handles.count()}"
+        )
     figure_changed = """([index, before, errors]) => {
         const cell = document.querySelectorAll('.jp-CodeCell')[index];
         const img = cell.querySelector('.widget-output img');
         return cell.querySelector(errors) !== null || (img !== null && img.src !== before);
     }"""
-    page.wait_for_function(figure_changed, arg=[index, None, STDERR], timeout=timeout * 1000)
+    page.wait_for_function(
+        figure_changed, arg=[index, None, STDERR], timeout=timeout * 1000
+    )
     check_no_errors(page, "drawing the widget's first figure")
     before = cell.locator(".widget-output img").first.get_attribute("src")
     slider, readout = handles.nth(handle), cell.locator(".widget-readout").nth(handle)
     label = cell.locator(".widget-slider .widget-label").nth(handle).inner_text()
     value = readout.inner_text()
-    at_end = slider.get_attribute("aria-valuenow") == slider.get_attribute("aria-valuemax")
+    at_end = slider.get_attribute("aria-valuenow") == slider.get_attribute(
+        "aria-valuemax"
+    )
     slider.focus()
     start = time.monotonic()
     slider.press("Home" if at_end else "End")
     try:
-        page.wait_for_function(figure_changed, arg=[index, before, STDERR],
-                               timeout=timeout * 1000, polling=50)
+        page.wait_for_function(
+            figure_changed,
+            arg=[index, before, STDERR],
+            timeout=timeout * 1000,
+            polling=50,
+        )
     except PlaywrightTimeout:
-        raise CheckFailed(f"moving the slider {label} from {value} to {readout.inner_text()} "
-                          f"brought no new figure from the kernel within {timeout} s") from None
+        raise CheckFailed(
+            f"moving the slider {label} from {value} to {readout.inner_text()} "
+            f"brought no new figure from the kernel within {timeout} s"
+        ) from None
     took = time.monotonic() - start
     check_no_errors(page, f"after moving the slider {label}")
-    log(f"ipywidgets slider {label}: {value} -> {readout.inner_text()}; the kernel's new "
-        f"figure arrived {took * 1000:.0f} ms after the key press")
+    log(
+        f"ipywidgets slider {label}: {value} -> {readout.inner_text()}; the kernel's new "
+        f"figure arrived {took * 1000:.0f} ms after the key press"
+    )
 
 
 def move_page_viewer(page):
@@ -303,22 +377,30 @@ def move_page_viewer(page):
     root = page.locator(".jp-CodeCell div.screwkit-viewer").first
     root.wait_for(state="attached", timeout=30_000)
     figure_id = root.get_attribute("id")
-    mounted = page.evaluate("id => Boolean(window.screwkit && window.screwkit.viewers[id])",
-                            figure_id)
+    mounted = page.evaluate(
+        "id => Boolean(window.screwkit && window.screwkit.viewers[id])", figure_id
+    )
     if not mounted or root.get_attribute("data-mounted") != "1":
-        raise CheckFailed("robot_viewer's output is in Lab but its script did not mount it "
-                          "(is the output trusted?)")
+        raise CheckFailed(
+            "robot_viewer's output is in Lab but its script did not mount it "
+            "(is the output trusted?)"
+        )
     snapshot = "id => document.getElementById(id).querySelector('canvas').toDataURL()"
-    before, caption = page.evaluate(snapshot, figure_id), root.locator(".screwkit-caption")
+    before, caption = (
+        page.evaluate(snapshot, figure_id),
+        root.locator(".screwkit-caption"),
+    )
     text = caption.inner_text()
     slider = root.locator("input[type=range]").nth(1)
     slider.focus()
     slider.press("Home")
     after = page.evaluate(snapshot, figure_id)
     if after == before or caption.inner_text() == text:
-        raise CheckFailed("moving the in-page viewer's q2 slider changed "
-                          f"{'neither the canvas nor' if after == before else 'not'} "
-                          "the caption")
+        raise CheckFailed(
+            "moving the in-page viewer's q2 slider changed "
+            f"{'neither the canvas nor' if after == before else 'not'} "
+            "the caption"
+        )
     box = root.locator("canvas").bounding_box()
     x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
     page.mouse.move(x, y)
@@ -326,9 +408,13 @@ def move_page_viewer(page):
     page.mouse.move(x + 80, y + 30, steps=5)
     page.mouse.up()
     if page.evaluate(snapshot, figure_id) == after:
-        raise CheckFailed("dragging across the in-page viewer (orbit) did not redraw it in Lab")
-    log(f"in-page viewer: q2 -> {slider.input_value()} deg and a drag (orbit) redrew the "
-        "canvas in Lab")
+        raise CheckFailed(
+            "dragging across the in-page viewer (orbit) did not redraw it in Lab"
+        )
+    log(
+        f"in-page viewer: q2 -> {slider.input_value()} deg and a drag (orbit) redrew the "
+        "canvas in Lab"
+    )
 
 
 def keep_screenshot(page):
@@ -354,9 +440,13 @@ def check_in_browser(lab, notebooks):
                 for name, count in notebooks.items():
                     with timed(f"{name}: open in Lab, kernel idle"):
                         open_notebook(page, lab, name)
-                    with timed(f"{name}: run its {count} code cells on the live kernel"):
+                    with timed(
+                        f"{name}: run its {count} code cells on the live kernel"
+                    ):
                         run_all_cells(page, count)
-                    with timed(f"{name}: move an ipywidgets slider, new figure from kernel"):
+                    with timed(
+                        f"{name}: move an ipywidgets slider, new figure from kernel"
+                    ):
                         if name == NOTEBOOK:
                             move_widget_slider(page, handles_expected=6, handle=1)
                         else:
@@ -366,8 +456,9 @@ def check_in_browser(lab, notebooks):
                             move_page_viewer(page)
                     close_notebook(lab, name)
             except PlaywrightError as error:
-                raise CheckFailed(f"the browser step failed: {error}"
-                                  f"{keep_screenshot(page)}") from None
+                raise CheckFailed(
+                    f"the browser step failed: {error}{keep_screenshot(page)}"
+                ) from None
             except CheckFailed as failure:
                 raise CheckFailed(f"{failure}{keep_screenshot(page)}") from None
         finally:
@@ -386,6 +477,7 @@ def kill(pid, group=False):
 
 def watchdog(lab, seconds):
     """End the whole check (server and kernel included) if it runs longer than ``seconds``."""
+
     def expire():
         log(f"FAILED: the check did not finish within {seconds:.0f} s (LAB_LIVE_TOTAL)")
         if lab.process is not None:
@@ -417,7 +509,9 @@ def main():
         except CheckFailed as failure:
             failures.append(str(failure))
             if lab.process is not None:
-                failures.append(f"--- JupyterLab's log (last lines) ---\n{lab.server_log()}")
+                failures.append(
+                    f"--- JupyterLab's log (last lines) ---\n{lab.server_log()}"
+                )
         finally:
             try:
                 with timed("shut down kernel and server"):

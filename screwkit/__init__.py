@@ -5,6 +5,7 @@ teaches (SymPy input gives SymPy output), fast where it computes (NumPy input
 gives float64 arrays, vectorised over a leading batch axis). SI units:
 metres and radians. Screws and twists are ordered [angular; linear].
 """
+
 from . import ik, jacobians, joints, limbs, redundancy, robots, urdf, workspace
 from .chains import Chain, Convention, Joint, Link, textbook
 from .lie import ad, adjoint, log_rotation, log_transform, vee

@@ -18,6 +18,7 @@ TypeError: theta must be a number or an array of numbers (real ones), got a stri
 >>> as_real_scalar(np.int64(3), "steps")
 3.0
 """
+
 import numbers
 
 import numpy as np
@@ -48,13 +49,16 @@ def is_symbolic(value):
     if isinstance(value, (sp.Basic, sp.MatrixBase)):
         return True
     if isinstance(value, np.ndarray):
-        return value.dtype == object and any(isinstance(v, sp.Basic) for v in value.flat)
+        return value.dtype == object and any(
+            isinstance(v, sp.Basic) for v in value.flat
+        )
     if isinstance(value, (list, tuple)):
         return any(is_symbolic(v) for v in value)
     return False
 
 
 # ---- real numbers (NumPy) ---------------------------------------------------------------
+
 
 def _not_real(entry):
     """A phrase naming why ``entry`` (one element) is not a real number, or None if it is one."""
@@ -108,12 +112,22 @@ def _plain_numbers(value):
         elements = np.asarray(value, dtype=object).ravel().tolist()
     except ValueError:
         return False
-    return all(issubclass(kind, _PLAIN) and kind is not bool for kind in set(map(type, elements)))
+    return all(
+        issubclass(kind, _PLAIN) and kind is not bool
+        for kind in set(map(type, elements))
+    )
 
 
 def _dtype_phrase(array):
-    kind = {"b": "booleans", "c": "complex numbers", "U": "strings", "S": "bytes",
-            "M": "dates", "m": "time deltas", "V": "raw records"}.get(array.dtype.kind, "")
+    kind = {
+        "b": "booleans",
+        "c": "complex numbers",
+        "U": "strings",
+        "S": "bytes",
+        "M": "dates",
+        "m": "time deltas",
+        "V": "raw records",
+    }.get(array.dtype.kind, "")
     return f"an array of {kind or array.dtype} (dtype {array.dtype})"
 
 
@@ -131,15 +145,19 @@ def as_float_array(value, name):
         else:
             reason = _not_real(value)
         if reason is not None:
-            where = "" if not isinstance(value, (list, tuple)) else f" in {describe(value)}"
+            where = (
+                "" if not isinstance(value, (list, tuple)) else f" in {describe(value)}"
+            )
             raise TypeError(
-                f"{name} must be a number or an array of numbers (real ones), got {reason}{where}")
+                f"{name} must be a number or an array of numbers (real ones), got {reason}{where}"
+            )
         try:
             array = np.asarray(value, dtype=float)
         except ValueError:
             raise ValueError(
                 f"{name} must be a rectangular array of real numbers (rows of equal length), "
-                f"got {describe(value)} with rows of different lengths") from None
+                f"got {describe(value)} with rows of different lengths"
+            ) from None
         except TypeError:
             raise TypeError(
                 f"{name} must be a number or an array of numbers (real ones), got {describe(value)}"
@@ -147,7 +165,8 @@ def as_float_array(value, name):
         except OverflowError:
             raise ValueError(
                 f"{name} must be finite, got an integer too large for a float (above 1.8e308) "
-                f"in {describe(value)}") from None
+                f"in {describe(value)}"
+            ) from None
     check_finite(array, name)
     return array
 
@@ -181,7 +200,9 @@ def check_positive(value, name, allow_zero=False):
 
 def check_integer(value, name, minimum=None):
     """One integer (Python or NumPy; not a bool or a float) >= ``minimum``, as an int."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, np.integer)):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+        value, (numbers.Integral, np.integer)
+    ):
         raise TypeError(f"{name} must be an integer, got {describe(value)}")
     if minimum is not None and value < minimum:
         raise ValueError(f"{name} must be an integer >= {minimum}, got {int(value)}")
@@ -221,13 +242,14 @@ def check_chain(value, name="chain"):
     """
     if not isinstance(value, ChainType):
         raise TypeError(
-            f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got {describe(value)}")
+            f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got {describe(value)}"
+        )
     return value
 
 
 def check_shape(array, name, shape):
     """Require ``array.shape`` to end with ``shape`` (leading axes are a batch)."""
-    tail = array.shape[array.ndim - len(shape):] if array.ndim >= len(shape) else None
+    tail = array.shape[array.ndim - len(shape) :] if array.ndim >= len(shape) else None
     if tail != tuple(shape):
         expected = " x ".join(str(s) for s in shape)
         raise ValueError(
@@ -239,6 +261,7 @@ def check_shape(array, name, shape):
 
 # ---- exact numbers (SymPy) --------------------------------------------------------------
 
+
 def as_sympy_matrix(value, name, shape):
     """``value`` as an exact SymPy matrix of the given ``shape`` (a row is taken as a column).
 
@@ -248,18 +271,26 @@ def as_sympy_matrix(value, name, shape):
     if isinstance(value, sp.MatrixBase):
         matrix = value
     else:
-        if value is None or isinstance(value, (str, bytes, bool, numbers.Number, sp.Basic)):
-            raise TypeError(f"{name} must be a matrix of shape {shape}, got {describe(value)}")
+        if value is None or isinstance(
+            value, (str, bytes, bool, numbers.Number, sp.Basic)
+        ):
+            raise TypeError(
+                f"{name} must be a matrix of shape {shape}, got {describe(value)}"
+            )
         if _contains_string(value):
             raise TypeError(
-                f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}")
+                f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}"
+            )
         if _contains_none(value):
-            raise TypeError(f"{name} must hold numbers or SymPy expressions, got None in {value!r}")
+            raise TypeError(
+                f"{name} must hold numbers or SymPy expressions, got None in {value!r}"
+            )
         try:
             matrix = sp.Matrix(value)
         except (TypeError, ValueError, sp.SympifyError, AttributeError):
             raise TypeError(
-                f"{name} must be a matrix of shape {shape}, got {describe(value)}") from None
+                f"{name} must be a matrix of shape {shape}, got {describe(value)}"
+            ) from None
     if matrix.shape != shape and not (shape[1] == 1 and matrix.shape == (1, shape[0])):
         raise ValueError(f"{name} must have shape {shape}, got {describe(matrix)}")
     entries = matrix.flat()
@@ -273,7 +304,11 @@ def _check_exact_entry(entry, name, what="an entry equal to"):
     what = f"{what} " if what else ""
     if not isinstance(entry, sp.Expr) or entry.is_Boolean:
         raise TypeError(f"{name} must hold numbers or SymPy expressions, got {entry!r}")
-    if entry in _INFINITE or not entry.is_Atom and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+    if (
+        entry in _INFINITE
+        or not entry.is_Atom
+        and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo)
+    ):
         raise ValueError(f"{name} must be finite, got {what}{entry}")
     if entry.is_number and entry.is_extended_real is False:
         raise TypeError(f"{name} must be real, got {what}the complex number {entry}")
@@ -282,14 +317,19 @@ def _check_exact_entry(entry, name, what="an entry equal to"):
 def as_sympy_scalar(value, name):
     """``value`` as one exact, finite, real SymPy number or expression."""
     if isinstance(value, (str, bytes, bool, np.bool_)) or value is None:
-        raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
+        raise TypeError(
+            f"{name} must be a number or a SymPy expression, got {describe(value)}"
+        )
     try:
         entry = sp.sympify(value, strict=True)
     except sp.SympifyError:
         raise TypeError(
-            f"{name} must be a number or a SymPy expression, got {describe(value)}") from None
+            f"{name} must be a number or a SymPy expression, got {describe(value)}"
+        ) from None
     if not isinstance(entry, sp.Expr) or entry.is_Boolean:
-        raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
+        raise TypeError(
+            f"{name} must be a number or a SymPy expression, got {describe(value)}"
+        )
     _check_exact_entry(entry, name, what="")
     return _exact_if_integral(entry)
 
@@ -299,8 +339,10 @@ def _contains_string(value):
         return True
     if isinstance(value, (list, tuple)):
         return any(_contains_string(v) for v in value)
-    return isinstance(value, np.ndarray) and value.dtype.kind in "USO" and any(
-        isinstance(v, (str, bytes)) for v in value.flat
+    return (
+        isinstance(value, np.ndarray)
+        and value.dtype.kind in "USO"
+        and any(isinstance(v, (str, bytes)) for v in value.flat)
     )
 
 
@@ -309,8 +351,11 @@ def _contains_none(value):
         return True
     if isinstance(value, (list, tuple)):
         return any(_contains_none(v) for v in value)
-    return isinstance(value, np.ndarray) and value.dtype.kind == "O" and any(
-        v is None for v in value.flat)
+    return (
+        isinstance(value, np.ndarray)
+        and value.dtype.kind == "O"
+        and any(v is None for v in value.flat)
+    )
 
 
 def _exact_if_integral(entry):
@@ -324,15 +369,21 @@ def as_scalar_or_batch(value, name):
     """An angle or distance: a real SymPy expression, or a float64 array of any shape."""
     if is_symbolic(value):
         if isinstance(value, (list, tuple, np.ndarray, sp.MatrixBase)):
-            raise TypeError(f"{name} must be a single SymPy expression, got {describe(value)}")
+            raise TypeError(
+                f"{name} must be a single SymPy expression, got {describe(value)}"
+            )
         return as_sympy_scalar(value, name)
     if isinstance(value, (bool, np.bool_)) or not isinstance(
-            value, (numbers.Real, list, tuple, np.ndarray)):
-        raise TypeError(f"{name} must be a real number or an array of them, got {describe(value)}")
+        value, (numbers.Real, list, tuple, np.ndarray)
+    ):
+        raise TypeError(
+            f"{name} must be a real number or an array of them, got {describe(value)}"
+        )
     return as_float_array(value, name)
 
 
 # ---- rotations and transforms -----------------------------------------------------------
+
 
 def check_rotation(rotation, name="R"):
     """A rotation matrix: shape (3, 3) or (N, 3, 3), orthonormal, determinant +1.
@@ -380,14 +431,20 @@ def check_transform(transform, name="T"):
     if is_symbolic(transform):
         T = as_sympy_matrix(transform, name, (4, 4))
         if any((entry - target) != 0 for entry, target in zip(T[3, :], [0, 0, 0, 1])):
-            raise ValueError(f"{name} must have last row [0, 0, 0, 1], got {list(T[3, :])}")
+            raise ValueError(
+                f"{name} must have last row [0, 0, 0, 1], got {list(T[3, :])}"
+            )
         check_rotation(T[:3, :3], f"the rotation block of {name}")
         return T
     T = check_shape(as_float_array(transform, name), name, (4, 4))
     if not np.allclose(T[..., 3, :], [0.0, 0.0, 0.0, 1.0], atol=1e-12):
         bad = T[..., 3, :].reshape(-1, 4)
-        first = bad[~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=1e-12), axis=-1)][0]
-        raise ValueError(f"{name} must have last row [0, 0, 0, 1], got {first.tolist()}")
+        first = bad[
+            ~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=1e-12), axis=-1)
+        ][0]
+        raise ValueError(
+            f"{name} must have last row [0, 0, 0, 1], got {first.tolist()}"
+        )
     check_rotation(T[..., :3, :3], f"the rotation block of {name}")
     return T
 
@@ -395,11 +452,17 @@ def check_transform(transform, name="T"):
 def check_poses(T, name="T", single_only=False):
     """``T`` as float64 (4, 4) or (N, 4, 4) rigid transforms (one pose if ``single_only``)."""
     if isinstance(T, (str, bytes)) or T is None:
-        raise TypeError(f"{name} must be a 4x4 pose or an (N, 4, 4) batch, got {describe(T)}")
+        raise TypeError(
+            f"{name} must be a 4x4 pose or an (N, 4, 4) batch, got {describe(T)}"
+        )
     T = as_float_array(T, name)
     if T.ndim not in (2, 3):
-        raise ValueError(f"{name} must have shape (4, 4) or (N, 4, 4), got shape {T.shape}")
+        raise ValueError(
+            f"{name} must have shape (4, 4) or (N, 4, 4), got shape {T.shape}"
+        )
     T = check_transform(T, name)
     if single_only and T.ndim != 2:
-        raise ValueError(f"{name} must be one pose of shape (4, 4), got shape {T.shape}")
+        raise ValueError(
+            f"{name} must be one pose of shape (4, 4), got shape {T.shape}"
+        )
     return T

@@ -22,6 +22,7 @@ The same walk gives, at no extra cost, the joint twists in the base frame (the c
 space Jacobian, Ad(G_k) X_k for the frame G_k just before joint k), a point on each joint
 axis, and any intermediate frame the chain asks to record (its link frames).
 """
+
 import math
 import re
 from dataclasses import dataclass
@@ -49,10 +50,11 @@ def in_chunks(batch, function, out=None):
     if out is None:
         if batch.shape[0] <= CHUNK:
             return function(batch)
-        return np.concatenate([function(batch[k:k + CHUNK])
-                               for k in range(0, batch.shape[0], CHUNK)])
+        return np.concatenate(
+            [function(batch[k : k + CHUNK]) for k in range(0, batch.shape[0], CHUNK)]
+        )
     for k in range(0, batch.shape[0], CHUNK):
-        out[k:k + CHUNK] = function(batch[k:k + CHUNK])
+        out[k : k + CHUNK] = function(batch[k : k + CHUNK])
     return out
 
 
@@ -85,9 +87,9 @@ def exponential_coefficients(twist):
 class JointFactor(NamedTuple):
     """One joint of a Program: exp([twist] theta_k) post, and a point on the axis (drawing)."""
 
-    twist: np.ndarray   # X_k (6,), a unit twist in the frame just before the joint
-    post: np.ndarray    # C_k (4, 4), the constant after the exponential
-    point: np.ndarray   # (3,) a point of the axis in that frame
+    twist: np.ndarray  # X_k (6,), a unit twist in the frame just before the joint
+    post: np.ndarray  # C_k (4, 4), the constant after the exponential
+    point: np.ndarray  # (3,) a point of the axis in that frame
 
 
 @dataclass(frozen=True)
@@ -134,8 +136,14 @@ class Program:
 
     def __init__(self, start, factors, marks=None):
         self.start = np.asarray(start, dtype=float)
-        self.factors = [JointFactor(np.asarray(x, dtype=float), np.asarray(c, dtype=float),
-                                    np.asarray(r, dtype=float)) for x, c, r in factors]
+        self.factors = [
+            JointFactor(
+                np.asarray(x, dtype=float),
+                np.asarray(c, dtype=float),
+                np.asarray(r, dtype=float),
+            )
+            for x, c, r in factors
+        ]
         self.marks = dict(marks or {})
         self.n = len(self.factors)
 
@@ -171,8 +179,10 @@ class Program:
         if constant != 0.0:
             pieces.append((constant < 0, repr(abs(constant))))
         (negative, first), rest = pieces[0], pieces[1:]
-        expression = " ".join([("-" if negative else "") + first]
-                              + [f"{'-' if minus else '+'} {text}" for minus, text in rest])
+        expression = " ".join(
+            [("-" if negative else "") + first]
+            + [f"{'-' if minus else '+'} {text}" for minus, text in rest]
+        )
         return Term(1.0, (self._new(expression),))
 
     @staticmethod
@@ -209,18 +219,28 @@ class Program:
         for r in range(4):
             row = []
             for j in range(4):
-                terms = [Term(K1[r, j], ()), Term(Kc[r, j], (f"c{k}",)),
-                         Term(Ks[r, j], (f"s{k}",)), Term(Kt[r, j], (f"t{k}",))]
+                terms = [
+                    Term(K1[r, j], ()),
+                    Term(Kc[r, j], (f"c{k}",)),
+                    Term(Ks[r, j], (f"s{k}",)),
+                    Term(Kt[r, j], (f"t{k}",)),
+                ]
                 row.append(self._combine(terms))
             entries.append(row)
         return entries
 
     def _axis(self, G, twist, point):
         """The joint's twist in the base frame, Ad(G) X, and its point G r: 9 entries."""
-        w, v, point = _snap(twist[:3]), _snap(twist[3:]), _snap(np.asarray(point, dtype=float))
+        w, v, point = (
+            _snap(twist[:3]),
+            _snap(twist[3:]),
+            _snap(np.asarray(point, dtype=float)),
+        )
 
         def rotate(x, r):
-            return self._combine([self._product(G[r][j], float(x[j])) for j in range(3)])
+            return self._combine(
+                [self._product(G[r][j], float(x[j])) for j in range(3)]
+            )
 
         omega = [rotate(w, r) for r in range(3)]
         linear = [rotate(v, r) for r in range(3)]
@@ -229,8 +249,13 @@ class Program:
         for r, (a, b, c, d) in enumerate([(1, 2, 2, 1), (2, 0, 0, 2), (0, 1, 1, 0)]):
             ab, cd = self._product(p[a], omega[b]), self._product(p[c], omega[d])
             moment.append(self._combine([self._term(linear[r]), ab, cd.negated()]))
-        located = [self._combine([self._product(G[r][j], float(point[j])) for j in range(3)]
-                                 + [self._term(p[r])]) for r in range(3)]
+        located = [
+            self._combine(
+                [self._product(G[r][j], float(point[j])) for j in range(3)]
+                + [self._term(p[r])]
+            )
+            for r in range(3)
+        ]
         return omega + moment + located
 
     def _at_point(self, twist, p):
@@ -265,7 +290,9 @@ class Program:
             T = self._times(T, self._factor(k, twist, post))
             if k in self.marks and outputs == "frames":
                 recorded[k] = self._times(T, self._constant(self.marks[k]))
-        twists = [axes[9 * j:9 * j + 6] for j in range(self.n)]  # (omega; v) of each joint
+        twists = [
+            axes[9 * j : 9 * j + 6] for j in range(self.n)
+        ]  # (omega; v) of each joint
         if outputs == "pose":
             result = [e for row in T for e in row]
         elif outputs == "axes":
@@ -273,7 +300,9 @@ class Program:
         elif outputs == "space":
             result = [twist[r] for r in range(6) for twist in twists]
         elif outputs == "geometric":
-            moved = [self._at_point(twist, [T[r][3] for r in range(3)]) for twist in twists]
+            moved = [
+                self._at_point(twist, [T[r][3] for r in range(3)]) for twist in twists
+            ]
             result = [column[r] for r in range(6) for column in moved]
         else:
             result = [e for k in sorted(recorded) for row in recorded[k] for e in row]
@@ -281,19 +310,28 @@ class Program:
         returned = ", ".join(self._text(e) for e in result)
         used = sorted(set(re.findall(r"\b([tcs])(\d+)\b", body + " " + returned)))
         loads = [f"    {v}{k} = {v}[{int(k) - 1}]" for v, k in used]
-        return "def kinematics(t, c, s):\n" + "\n".join(loads + self._lines) + f"\n    return ({returned},)\n"
+        return (
+            "def kinematics(t, c, s):\n"
+            + "\n".join(loads + self._lines)
+            + f"\n    return ({returned},)\n"
+        )
 
     def compile(self, outputs):
         """The generated function for ``outputs`` (see :meth:`source`)."""
         namespace = {}
-        exec(compile(self.source(outputs), f"<screwkit kinematics: {outputs}>", "exec"), namespace)
+        exec(
+            compile(self.source(outputs), f"<screwkit kinematics: {outputs}>", "exec"),
+            namespace,
+        )
         return namespace["kinematics"]
 
 
 def evaluate(function, angles):
     """Run a generated function at one configuration: ``angles`` (n,) floats -> list of entries."""
     values = angles.tolist()
-    return function(values, [math.cos(x) for x in values], [math.sin(x) for x in values])
+    return function(
+        values, [math.cos(x) for x in values], [math.sin(x) for x in values]
+    )
 
 
 def cos_sin(angles):
@@ -318,7 +356,7 @@ def evaluate_batch(function, angles, out, rows):
     """
     angles = np.ascontiguousarray(angles.T)
     for start in range(0, angles.shape[1], CHUNK):
-        part = angles[:, start:start + CHUNK]
+        part = angles[:, start : start + CHUNK]
         stop = start + part.shape[1]
         for row, value in zip(rows, function(part, *cos_sin(part))):
             out[row, start:stop] = value

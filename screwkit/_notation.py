@@ -1,4 +1,5 @@
 """Textbook notation for exact kinematics: cos(q1) -> c1, sin(q2 + q3) -> s23."""
+
 import numbers
 
 import sympy as sp
@@ -16,15 +17,26 @@ def textbook(expr, q_symbols=None, collect=True):
     """
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: textbook(e, q_symbols, collect))
-    if isinstance(expr, (str, bytes)) or not isinstance(expr, (sp.Basic, numbers.Number)):
-        raise TypeError(f"expr must be a SymPy expression or matrix (e.g. chain.fk_symbolic()), "
-                        f"got {describe(expr)}")
+    if isinstance(expr, (str, bytes)) or not isinstance(
+        expr, (sp.Basic, numbers.Number)
+    ):
+        raise TypeError(
+            f"expr must be a SymPy expression or matrix (e.g. chain.fk_symbolic()), "
+            f"got {describe(expr)}"
+        )
     expr = sp.sympify(expr)
-    if q_symbols is not None and (isinstance(q_symbols, (str, sp.Basic)) or not isinstance(
-            q_symbols, (list, tuple)) or not all(isinstance(q, sp.Symbol) for q in q_symbols)):
-        raise TypeError(f"q_symbols must be a list of SymPy symbols (e.g. chain.q_symbols), "
-                        f"got {describe(q_symbols)}")
-    q_symbols = q_symbols or sorted((s for s in expr.free_symbols if str(s).startswith("q")), key=str)
+    if q_symbols is not None and (
+        isinstance(q_symbols, (str, sp.Basic))
+        or not isinstance(q_symbols, (list, tuple))
+        or not all(isinstance(q, sp.Symbol) for q in q_symbols)
+    ):
+        raise TypeError(
+            f"q_symbols must be a list of SymPy symbols (e.g. chain.q_symbols), "
+            f"got {describe(q_symbols)}"
+        )
+    q_symbols = q_symbols or sorted(
+        (s for s in expr.free_symbols if str(s).startswith("q")), key=str
+    )
     index = {q: str(q)[1:] for q in q_symbols}
     replacements, order = {}, []
     for function, letter in ((sp.cos, "c"), (sp.sin, "s")):
@@ -33,7 +45,9 @@ def textbook(expr, q_symbols=None, collect=True):
             terms = argument.args if isinstance(argument, sp.Add) else (argument,)
             if all(t in index for t in terms):
                 label = "".join(sorted((index[t] for t in terms), key=int))
-                symbol = sp.Symbol(f"{letter}_{{{label}}}" if len(label) > 1 else f"{letter}{label}")
+                symbol = sp.Symbol(
+                    f"{letter}_{{{label}}}" if len(label) > 1 else f"{letter}{label}"
+                )
                 replacements[call] = symbol
                 order.append((label, letter, symbol))
     result = expr.xreplace(replacements)
@@ -54,4 +68,6 @@ def _nested_collect(expr, symbols):
     collected = sp.collect(expr, group, evaluate=False)
     if len(collected) == 1 and sp.S.One in collected:
         return _nested_collect(expr, rest)
-    return sp.Add(*[_nested_collect(coeff, rest) * key for key, coeff in collected.items()])
+    return sp.Add(
+        *[_nested_collect(coeff, rest) * key for key, coeff in collected.items()]
+    )

@@ -8,6 +8,7 @@ independent. Here a matrix's rank is the number of its singular values above
 otherwise, and bases are reduced as in the exact layer (each row ends in a 1 at its own pivot
 column, found from the right), with entries within ``tol`` of an integer set to that integer.
 """
+
 import numpy as np
 import sympy as sp
 
@@ -23,7 +24,9 @@ def has_floats(exprs):
 def check_tol(tol):
     """``tol`` as a positive float below 1; a clear error otherwise."""
     if isinstance(tol, bool) or not isinstance(tol, (int, float, np.floating)):
-        raise TypeError(f"tol must be a positive number below 1, got {tol!r} ({type(tol).__name__})")
+        raise TypeError(
+            f"tol must be a positive number below 1, got {tol!r} ({type(tol).__name__})"
+        )
     if not 0 < tol < 1:
         raise ValueError(f"tol must be a positive number below 1, got {tol!r}")
     return float(tol)
@@ -31,14 +34,18 @@ def check_tol(tol):
 
 def to_array(rows, name="screws"):
     """Rows of SymPy numbers as a float array; a clear error if a symbol is left in them."""
-    symbols = sorted({str(s) for row in rows for e in row for s in sp.sympify(e).free_symbols})
+    symbols = sorted(
+        {str(s) for row in rows for e in row for s in sp.sympify(e).free_symbols}
+    )
     if symbols:
         raise ValueError(
             f"{name} mix floats with the symbols {symbols}: pass exact numbers instead of floats "
             "(sympy.Rational('0.3'), sympy.sqrt(3)/2, sympy.pi/6) to keep the symbols, or give "
             "every symbol a number"
         )
-    return np.array([[float(e) for e in row] for row in rows], dtype=float).reshape(len(rows), -1)
+    return np.array([[float(e) for e in row] for row in rows], dtype=float).reshape(
+        len(rows), -1
+    )
 
 
 def lost_rank(sigma, m, n):
@@ -73,7 +80,9 @@ def reduced_basis(A, tol=TOL):
     if rank(A, tol) == 0:
         return np.zeros((0, A.shape[1]))
     u, s, vt = np.linalg.svd(A)
-    basis = vt[: int(np.sum(s > _threshold(s, tol)))]  # orthonormal rows spanning the same space
+    basis = vt[
+        : int(np.sum(s > _threshold(s, tol)))
+    ]  # orthonormal rows spanning the same space
     pivots = []
     for column in reversed(range(A.shape[1])):
         if rank(basis[:, pivots + [column]], tol) > len(pivots):
@@ -97,4 +106,7 @@ def null_space(A, tol=TOL):
 
 def as_sympy_rows(A):
     """Float rows as SymPy rows: integers stay integers, the rest become Floats."""
-    return [[sp.Integer(int(x)) if float(x).is_integer() else sp.Float(x) for x in row] for row in A]
+    return [
+        [sp.Integer(int(x)) if float(x).is_integer() else sp.Float(x) for x in row]
+        for row in A
+    ]

@@ -5,6 +5,7 @@ anchored at 0 (both ends are multiples of the step), so 0 and round values are r
 the range holds them; a joint's range comes from its limits, and a revolute joint without
 limits gets one turn placed so that its default is not at an edge; every slider names its unit.
 """
+
 import math
 from dataclasses import dataclass
 
@@ -46,8 +47,15 @@ class SliderSpec:
 
     def as_dict(self):
         """The fields the page's JavaScript reads (plain floats, JSON-ready)."""
-        return {"label": self.label, "unit": self.unit, "min": self.low, "max": self.high,
-                "step": self.step, "value": self.value, "scale": self.scale}
+        return {
+            "label": self.label,
+            "unit": self.unit,
+            "min": self.low,
+            "max": self.high,
+            "step": self.step,
+            "value": self.value,
+            "scale": self.scale,
+        }
 
 
 def on_grid(x, step):
@@ -71,16 +79,20 @@ def slider_spec(label, unit, low, high, value, steps=ANGLE_STEPS, scale=1.0):
         raise ValueError(f"unit of slider {label!r} must name the unit, got {unit!r}")
     low, high, value = float(low), float(high), float(value)
     if not low - _TOL <= value <= high + _TOL:
-        raise ValueError(f"the default of slider {label!r} must lie in [{low:g}, {high:g}] {unit}, "
-                         f"got {value:g} {unit}")
+        raise ValueError(
+            f"the default of slider {label!r} must lie in [{low:g}, {high:g}] {unit}, "
+            f"got {value:g} {unit}"
+        )
     step = next((s for s in steps if on_grid(value, s)), steps[-1])
     value = _snap(value, step)
     grid_low = _snap(math.ceil(low / step - _TOL) * step, step)
     grid_high = _snap(math.floor(high / step + _TOL) * step, step)
     value = min(max(value, grid_low), grid_high)
     if grid_low >= grid_high:
-        raise ValueError(f"the range of slider {label!r}, [{low:g}, {high:g}] {unit}, "
-                         f"is too short for a step of {step:g} {unit}")
+        raise ValueError(
+            f"the range of slider {label!r}, [{low:g}, {high:g}] {unit}, "
+            f"is too short for a step of {step:g} {unit}"
+        )
     return SliderSpec(label, unit, grid_low, grid_high, step, value, scale)
 
 
@@ -103,14 +115,19 @@ def slider_specs(chain, q=None):
     """
     q = np.zeros(chain.n) if q is None else chain.check_one(q)
     specs = []
-    for i, (kind, (low, high), qi) in enumerate(zip(chain.joints, chain.qlim, q), start=1):
+    for i, (kind, (low, high), qi) in enumerate(
+        zip(chain.joints, chain.qlim, q), start=1
+    ):
         if kind is Joint.PRISMATIC:
             if np.isfinite(low) and np.isfinite(high):
                 specs.append(slider_spec(f"q{i}", "m", low, high, qi, LENGTH_STEPS))
             else:
                 centre = 0.0 if abs(qi) < 0.4 else round(qi, 1)
-                specs.append(slider_spec(f"q{i}", "m", centre - 0.5, centre + 0.5, qi,
-                                         LENGTH_STEPS))
+                specs.append(
+                    slider_spec(
+                        f"q{i}", "m", centre - 0.5, centre + 0.5, qi, LENGTH_STEPS
+                    )
+                )
             continue
         value = math.degrees(qi)
         if np.isfinite(low) and np.isfinite(high):
@@ -118,12 +135,16 @@ def slider_specs(chain, q=None):
             turns = math.floor((value - low) / 360.0)
             wrapped = value - 360.0 * turns
             if not low - _TOL <= wrapped <= high + _TOL:
-                raise ValueError(f"q[{i - 1}] = {value:g} deg is outside joint {i}'s limits "
-                                 f"[{low:g}, {high:g}] deg, even after whole turns")
+                raise ValueError(
+                    f"q[{i - 1}] = {value:g} deg is outside joint {i}'s limits "
+                    f"[{low:g}, {high:g}] deg, even after whole turns"
+                )
             value = value if low - _TOL <= value <= high + _TOL else wrapped
         else:
             value, low, high = _one_turn(value)
-        specs.append(slider_spec(f"q{i}", "deg", low, high, value, ANGLE_STEPS, math.pi / 180))
+        specs.append(
+            slider_spec(f"q{i}", "deg", low, high, value, ANGLE_STEPS, math.pi / 180)
+        )
     return specs
 
 
@@ -132,8 +153,10 @@ def grid_values(low, high, step, name="values"):
     low, high, step = (float(v) for v in as_float_array([low, high, step], name))
     count = (high - low) / step
     if step <= 0 or high <= low or abs(count - round(count)) > 1e-9:
-        raise ValueError(f"{name} must be a grid low < high with (high - low) a whole number of "
-                         f"steps > 0, got low={low:g}, high={high:g}, step={step:g}")
+        raise ValueError(
+            f"{name} must be a grid low < high with (high - low) a whole number of "
+            f"steps > 0, got low={low:g}, high={high:g}, step={step:g}"
+        )
     return [round(low + k * step, 10) + 0.0 for k in range(int(round(count)) + 1)]
 
 

@@ -21,6 +21,7 @@ array([1. , 0.5])
 >>> arm.fk(np.zeros((10, 2))).shape
 (10, 4, 4)
 """
+
 import types
 from functools import cached_property
 
@@ -29,8 +30,16 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 
 from . import _compiled, _newton, _numeric
-from ._checks import (ChainType, as_float_array, as_sympy_scalar, check_flag, check_integer,
-                      check_option, describe, is_symbolic)
+from ._checks import (
+    ChainType,
+    as_float_array,
+    as_sympy_scalar,
+    check_flag,
+    check_integer,
+    check_option,
+    describe,
+    is_symbolic,
+)
 from ._notation import textbook
 from .lie import adjoint
 from .links import (
@@ -57,12 +66,18 @@ __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
 
 #: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n
 #: Jacobian of an arm that moves in its base's x-y plane.
-ROWS = {"all": slice(0, 6), "position": slice(0, 3), "orientation": slice(3, 6), "planar": slice(0, 2)}
+ROWS = {
+    "all": slice(0, 6),
+    "position": slice(0, 3),
+    "orientation": slice(3, 6),
+    "planar": slice(0, 2),
+}
 
 
 def check_rows(rows):
     """The slice of the geometric Jacobian's rows named ``rows`` (one of :data:`ROWS`)."""
     return ROWS[check_option(rows, "rows", tuple(ROWS))]
+
 
 def _numbers_out(matrix, values=None):
     """``matrix`` at ``values``, expanded; with no symbol left, trigonometric functions of sums
@@ -92,26 +107,68 @@ class Chain(ChainType):
     #: The URDF joint names in order for a chain from :meth:`from_urdf`, None otherwise.
     joint_names = None
 
-    def __init__(self, links, convention=Convention.STANDARD, base=None, tool=None, name="chain",
-                 configurations=None):
+    def __init__(
+        self,
+        links,
+        convention=Convention.STANDARD,
+        base=None,
+        tool=None,
+        name="chain",
+        configurations=None,
+    ):
         links = list(links) if isinstance(links, (list, tuple)) else links
-        if not isinstance(links, list) or not links or not all(isinstance(k, Link) for k in links):
-            raise TypeError(f"links must be a non-empty list of Link, got {describe(links)}")
-        self._setup(links=tuple(links), convention=check_convention(convention), screws=None,
-                    base=base, tool=tool, name=name, configurations=configurations,
-                    qlim=[link.qlim for link in links], joints=tuple(link.joint for link in links))
+        if (
+            not isinstance(links, list)
+            or not links
+            or not all(isinstance(k, Link) for k in links)
+        ):
+            raise TypeError(
+                f"links must be a non-empty list of Link, got {describe(links)}"
+            )
+        self._setup(
+            links=tuple(links),
+            convention=check_convention(convention),
+            screws=None,
+            base=base,
+            tool=tool,
+            name=name,
+            configurations=configurations,
+            qlim=[link.qlim for link in links],
+            joints=tuple(link.joint for link in links),
+        )
 
-    def _setup(self, *, links, convention, screws, base, tool, name, configurations, qlim, joints,
-               home=None, frame=None, exact_screws=None):
+    def _setup(
+        self,
+        *,
+        links,
+        convention,
+        screws,
+        base,
+        tool,
+        name,
+        configurations,
+        qlim,
+        joints,
+        home=None,
+        frame=None,
+        exact_screws=None,
+    ):
         if not isinstance(name, str):
             raise TypeError(f"name must be a string, got {describe(name)}")
         state = self.__dict__
         state["links"], state["convention"] = links, convention
-        state["_screws"], state["_exact_screws"], state["_home"], state["frame"] = screws, exact_screws, home, frame
+        state["_screws"], state["_exact_screws"], state["_home"], state["frame"] = (
+            screws,
+            exact_screws,
+            home,
+            frame,
+        )
         state["base"], state["tool"] = rigid(base, "base"), rigid(tool, "tool")
         state["name"], state["joints"] = name, joints
         state["q_symbols"] = sp.symbols(f"q1:{len(joints) + 1}", real=True)
-        limits = np.array([limit if limit else (-np.inf, np.inf) for limit in qlim], dtype=float)
+        limits = np.array(
+            [limit if limit else (-np.inf, np.inf) for limit in qlim], dtype=float
+        )
         limits.setflags(write=False)
         state["_qlim"] = limits
         named = {}
@@ -121,13 +178,17 @@ class Chain(ChainType):
         state["configurations"] = types.MappingProxyType(named)
 
     def __setattr__(self, name, value):
-        raise AttributeError(f"a Chain is immutable: cannot set {name!r}; make a new chain "
-                             "(e.g. chain.with_tool(T), chain.with_base(T))")
+        raise AttributeError(
+            f"a Chain is immutable: cannot set {name!r}; make a new chain "
+            "(e.g. chain.with_tool(T), chain.with_base(T))"
+        )
 
     # ---- constructors ---------------------------------------------------------------------
 
     @classmethod
-    def from_table(cls, table, joints=None, convention=Convention.STANDARD, qlim=None, **options):
+    def from_table(
+        cls, table, joints=None, convention=Convention.STANDARD, qlim=None, **options
+    ):
         """A chain from a DH table of shape (n, 4), columns (theta, d, a, alpha) in m and rad.
 
         For a revolute joint, theta is the joint offset (theta = q + offset); for a prismatic
@@ -136,26 +197,51 @@ class Chain(ChainType):
         """
         rows = as_float_array(table, "table")
         if rows.ndim != 2 or rows.shape[1] != 4 or rows.shape[0] < 1:
-            raise ValueError(f"table must have shape (n, 4), columns (theta, d, a, alpha), got shape {rows.shape}")
+            raise ValueError(
+                f"table must have shape (n, 4), columns (theta, d, a, alpha), got shape {rows.shape}"
+            )
         n = rows.shape[0]
         try:
-            kinds = [Joint.REVOLUTE] * n if joints is None else [Joint(j) if isinstance(j, str) else j for j in joints]
+            kinds = (
+                [Joint.REVOLUTE] * n
+                if joints is None
+                else [Joint(j) if isinstance(j, str) else j for j in joints]
+            )
         except (ValueError, TypeError):
             kinds = None
-        if kinds is None or len(kinds) != n or not all(k in (Joint.REVOLUTE, Joint.PRISMATIC) for k in kinds):
-            raise ValueError(f"joints must name {n} joints ('R' or 'P', or Joint members), got {joints!r}")
+        if (
+            kinds is None
+            or len(kinds) != n
+            or not all(k in (Joint.REVOLUTE, Joint.PRISMATIC) for k in kinds)
+        ):
+            raise ValueError(
+                f"joints must name {n} joints ('R' or 'P', or Joint members), got {joints!r}"
+            )
         limits = [None] * n if qlim is None else limits_table(qlim, n)
         links = []
         for (theta, d, a, alpha), kind, limit in zip(rows, kinds, limits):
             if kind is Joint.REVOLUTE:
-                links.append(Link.revolute(d=d, a=a, alpha=alpha, offset=theta, qlim=limit))
+                links.append(
+                    Link.revolute(d=d, a=a, alpha=alpha, offset=theta, qlim=limit)
+                )
             else:
-                links.append(Link.prismatic(theta=theta, a=a, alpha=alpha, offset=d, qlim=limit))
+                links.append(
+                    Link.prismatic(theta=theta, a=a, alpha=alpha, offset=d, qlim=limit)
+                )
         return cls(links, convention, **options)
 
     @classmethod
-    def from_screws(cls, axes, home, frame="space", qlim=None, base=None, tool=None, name="chain",
-                    configurations=None):
+    def from_screws(
+        cls,
+        axes,
+        home,
+        frame="space",
+        qlim=None,
+        base=None,
+        tool=None,
+        name="chain",
+        configurations=None,
+    ):
         """A chain from its joint screws and home pose: the product of exponentials.
 
         frame="space": T(q) = base exp([S_1] q_1) ... exp([S_n] q_n) M tool, the S_i written in
@@ -177,9 +263,20 @@ class Chain(ChainType):
         n = screws.shape[0]
         limits = [None] * n if qlim is None else limits_table(qlim, n)
         chain = cls.__new__(cls)
-        chain._setup(links=None, convention=None, screws=screws, exact_screws=exact, home=rigid(home, "home"),
-                     frame=frame, base=base, tool=tool, name=name, configurations=configurations,
-                     qlim=limits, joints=tuple(joint_kind(s) for s in screws))
+        chain._setup(
+            links=None,
+            convention=None,
+            screws=screws,
+            exact_screws=exact,
+            home=rigid(home, "home"),
+            frame=frame,
+            base=base,
+            tool=tool,
+            name=name,
+            configurations=configurations,
+            qlim=limits,
+            joints=tuple(joint_kind(s) for s in screws),
+        )
         return chain
 
     @classmethod
@@ -192,19 +289,33 @@ class Chain(ChainType):
         neighbours; limits into ``qlim``; ``chain.joint_names`` lists the URDF joint names.
         """
         urdf = read_urdf(source, base_link, tip_link)
-        chain = cls.from_screws(list(urdf.axes), urdf.home, name=urdf.name,
-                                qlim=[q or (-np.inf, np.inf) for q in urdf.qlim])
+        chain = cls.from_screws(
+            list(urdf.axes),
+            urdf.home,
+            name=urdf.name,
+            qlim=[q or (-np.inf, np.inf) for q in urdf.qlim],
+        )
         chain.__dict__["joint_names"] = urdf.joint_names
         return chain
 
     def _copy(self, **changes):
         """A new chain like this one with some constructor arguments changed."""
-        options = dict(base=self.base, tool=self.tool, name=self.name, configurations=dict(self.configurations))
+        options = dict(
+            base=self.base,
+            tool=self.tool,
+            name=self.name,
+            configurations=dict(self.configurations),
+        )
         options.update(changes)
         if self.links is not None:
             return Chain(self.links, self.convention, **options)
-        chain = Chain.from_screws(self._exact_screws, self._home, self.frame,
-                                  qlim=[tuple(limit) for limit in self._qlim], **options)
+        chain = Chain.from_screws(
+            self._exact_screws,
+            self._home,
+            self.frame,
+            qlim=[tuple(limit) for limit in self._qlim],
+            **options,
+        )
         chain.__dict__["joint_names"] = self.joint_names
         return chain
 
@@ -235,48 +346,97 @@ class Chain(ChainType):
 
     def __repr__(self):
         kinds = "".join(j.value for j in self.joints)
-        form = f"{self.convention.value} DH" if self.is_dh else f"product of exponentials, {self.frame} form"
+        form = (
+            f"{self.convention.value} DH"
+            if self.is_dh
+            else f"product of exponentials, {self.frame} form"
+        )
         return f"Chain({self.name!r}, {self.n} joints {kinds}, {form})"
 
     def table(self):
         """The chain's parameters as rows of strings, with a header: the DH table (theta, d, a,
         alpha; the joint variable marked q_i) or the joint screws (omega, v, pitch), and limits."""
+
         def number(value, scale=1.0):
             value = float(value) * scale
             return f"{value:.6g}" if value != 0 else "0"
 
         def limits(row):
-            return "" if row[0] == -np.inf and row[1] == np.inf else \
-                f"[{number(row[0], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}, " \
+            return (
+                ""
+                if row[0] == -np.inf and row[1] == np.inf
+                else f"[{number(row[0], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}, "
                 f"{number(row[1], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}]"
+            )
 
         rows = []
         if self.is_dh:
             header = ["joint", "θ (deg)", "d (m)", "a (m)", "α (deg)", "limits"]
-            for i, (link, kind, row) in enumerate(zip(self.links, self.joints, self._qlim), start=1):
+            for i, (link, kind, row) in enumerate(
+                zip(self.links, self.joints, self._qlim), start=1
+            ):
                 degrees = 180 / np.pi
-                offset = f" + {number(link.offset, degrees)}" if float(link.offset) else ""
-                theta = f"q{i}{offset}" if kind is Joint.REVOLUTE else number(link.theta, degrees)
-                d = number(link.d) if kind is Joint.REVOLUTE else f"q{i}" + (
-                    f" + {number(link.offset)}" if float(link.offset) else "")
-                rows.append([f"{i} {kind.value}", theta, d, number(link.a), number(link.alpha, degrees),
-                             limits(row)])
+                offset = (
+                    f" + {number(link.offset, degrees)}" if float(link.offset) else ""
+                )
+                theta = (
+                    f"q{i}{offset}"
+                    if kind is Joint.REVOLUTE
+                    else number(link.theta, degrees)
+                )
+                d = (
+                    number(link.d)
+                    if kind is Joint.REVOLUTE
+                    else f"q{i}"
+                    + (f" + {number(link.offset)}" if float(link.offset) else "")
+                )
+                rows.append(
+                    [
+                        f"{i} {kind.value}",
+                        theta,
+                        d,
+                        number(link.a),
+                        number(link.alpha, degrees),
+                        limits(row),
+                    ]
+                )
         else:
             header = ["joint", "ω", "v (m)", "pitch (m/rad)", "limits"]
-            for i, (screw, kind, row) in enumerate(zip(self._screws, self.joints, self._qlim), start=1):
-                pitch = "∞" if kind is Joint.PRISMATIC else number(np.dot(screw[:3], screw[3:]))
-                rows.append([f"{i} {kind.value}", "(" + ", ".join(number(x) for x in screw[:3]) + ")",
-                             "(" + ", ".join(number(x) for x in screw[3:]) + ")", pitch, limits(row)])
+            for i, (screw, kind, row) in enumerate(
+                zip(self._screws, self.joints, self._qlim), start=1
+            ):
+                pitch = (
+                    "∞"
+                    if kind is Joint.PRISMATIC
+                    else number(np.dot(screw[:3], screw[3:]))
+                )
+                rows.append(
+                    [
+                        f"{i} {kind.value}",
+                        "(" + ", ".join(number(x) for x in screw[:3]) + ")",
+                        "(" + ", ".join(number(x) for x in screw[3:]) + ")",
+                        pitch,
+                        limits(row),
+                    ]
+                )
         return header, rows
 
     def _repr_html_(self):
         """The parameter table, typeset (Jupyter and the book); ``repr`` stays one line."""
         header, rows = self.table()
-        form = f"{self.convention.value} DH" if self.is_dh else f"joint screws, {self.frame} form"
+        form = (
+            f"{self.convention.value} DH"
+            if self.is_dh
+            else f"joint screws, {self.frame} form"
+        )
         cells = "".join(f"<th>{h}</th>" for h in header)
-        body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows)
-        return (f'<table class="screwkit-chain"><caption>{self.name}: {form}</caption>'
-                f"<tr>{cells}</tr>{body}</table>")
+        body = "".join(
+            "<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows
+        )
+        return (
+            f'<table class="screwkit-chain"><caption>{self.name}: {form}</caption>'
+            f"<tr>{cells}</tr>{body}</table>"
+        )
 
     # ---- input checks -------------------------------------------------------------------
 
@@ -294,7 +454,9 @@ class Chain(ChainType):
         """``q`` as float64 of shape (n,): one configuration (a batch is refused, clearly)."""
         q = self.check_q(q, name)
         if q.ndim != 1:
-            raise ValueError(f"{name} must be one configuration of shape ({self.n},), got shape {q.shape}")
+            raise ValueError(
+                f"{name} must be one configuration of shape ({self.n},), got shape {q.shape}"
+            )
         return q
 
     def within_limits(self, q):
@@ -306,22 +468,31 @@ class Chain(ChainType):
 
     def _require_dh(self, what):
         if not self.is_dh:
-            raise ValueError(f"{what} is defined for a DH chain; {self.name!r} is built from "
-                             "screws (it must be built by Chain(links) or Chain.from_table)")
+            raise ValueError(
+                f"{what} is defined for a DH chain; {self.name!r} is built from "
+                "screws (it must be built by Chain(links) or Chain.from_table)"
+            )
 
     def _exact_q(self, q, name="q"):
         """q for the exact routines: n numbers or SymPy expressions (the joint symbols if None)."""
         if q is None:
             return list(self.q_symbols)
-        if isinstance(q, (str, bytes)) or not isinstance(q, (list, tuple, np.ndarray,
-                                                               sp.MatrixBase)):
-            raise TypeError(f"{name} must be a joint vector of {self.n} numbers or SymPy "
-                            f"expressions, got {describe(q)}")
+        if isinstance(q, (str, bytes)) or not isinstance(
+            q, (list, tuple, np.ndarray, sp.MatrixBase)
+        ):
+            raise TypeError(
+                f"{name} must be a joint vector of {self.n} numbers or SymPy "
+                f"expressions, got {describe(q)}"
+            )
         values = list(q) if not isinstance(q, np.ndarray) else q.ravel().tolist()
         if len(values) != self.n or (isinstance(q, np.ndarray) and q.ndim != 1):
-            raise ValueError(f"{name} must have {self.n} entries for this chain, got {len(values)}")
-        return [v if isinstance(v, float) else as_sympy_scalar(v, f"{name}[{i}]")
-                for i, v in enumerate(values)]
+            raise ValueError(
+                f"{name} must have {self.n} entries for this chain, got {len(values)}"
+            )
+        return [
+            v if isinstance(v, float) else as_sympy_scalar(v, f"{name}[{i}]")
+            for i, v in enumerate(values)
+        ]
 
     def link_transforms(self, q=None):
         """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint symbols."""
@@ -334,10 +505,18 @@ class Chain(ChainType):
         self._require_dh("length_symbols")
         table = {}
         for i, link in enumerate(self.links, start=1):
-            lengths = {"a": link.a} if link.joint is Joint.PRISMATIC else {"a": link.a, "d": link.d}
+            lengths = (
+                {"a": link.a}
+                if link.joint is Joint.PRISMATIC
+                else {"a": link.a, "d": link.d}
+            )
             for kind, value in lengths.items():
                 if not sp.sympify(value).is_zero:
-                    index = i - 1 if self.convention is Convention.MODIFIED and kind == "a" else i
+                    index = (
+                        i - 1
+                        if self.convention is Convention.MODIFIED and kind == "a"
+                        else i
+                    )
                     table[sp.Symbol(f"{kind}{index}", positive=True)] = value
         return table
 
@@ -349,8 +528,17 @@ class Chain(ChainType):
             a_index = i - 1 if self.convention is Convention.MODIFIED else i
             a = lookup.get(f"a{a_index}", 0)
             d = lookup.get(f"d{i}", 0) if link.joint is Joint.REVOLUTE else link.d
-            links.append(Link(link.joint, d=d, a=a, alpha=link.alpha, theta=link.theta,
-                              offset=link.offset, qlim=link.qlim))
+            links.append(
+                Link(
+                    link.joint,
+                    d=d,
+                    a=a,
+                    alpha=link.alpha,
+                    theta=link.theta,
+                    offset=link.offset,
+                    qlim=link.qlim,
+                )
+            )
         return links
 
     def fk_symbolic(self, simplify=True, symbolic_lengths=False, upto=None):
@@ -369,11 +557,17 @@ class Chain(ChainType):
 
         if not self.is_dh:
             if symbolic_lengths or upto is not None:
-                raise ValueError("symbolic_lengths and upto are for DH chains; this chain is built from screws")
+                raise ValueError(
+                    "symbolic_lengths and upto are for DH chains; this chain is built from screws"
+                )
             T = exact_matrix(self.base)
-            factors = [exp_twist(S, q) for S, q in zip(self._exact_screws, self.q_symbols)]
+            factors = [
+                exp_twist(S, q) for S, q in zip(self._exact_screws, self.q_symbols)
+            ]
             home = exact_matrix(self._home)
-            factors = ([home] + factors if self.frame == "body" else factors + [home]) + [exact_matrix(self.tool)]
+            factors = (
+                [home] + factors if self.frame == "body" else factors + [home]
+            ) + [exact_matrix(self.tool)]
             for F in factors:
                 T = tidy(T * F)
             return T
@@ -394,8 +588,12 @@ class Chain(ChainType):
         self._require_dh("frames_symbolic")
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
         base = exact_matrix(self.base)
-        return [(base * self.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k)).applyfunc(sp.expand)
-                for k in range(self.n + 1)]
+        return [
+            (
+                base * self.fk_symbolic(symbolic_lengths=symbolic_lengths, upto=k)
+            ).applyfunc(sp.expand)
+            for k in range(self.n + 1)
+        ]
 
     def joint_frames(self, frames):
         """Of the n + 1 frames of a DH chain (base first, no tool), the n whose z axis is a joint axis.
@@ -404,8 +602,10 @@ class Chain(ChainType):
         """
         self._require_dh("joint_frames")
         if not isinstance(frames, (list, tuple)) or len(frames) != self.n + 1:
-            raise TypeError(f"frames must be the n + 1 = {self.n + 1} frames of "
-                            f"frames_symbolic(), got {describe(frames)}")
+            raise TypeError(
+                f"frames must be the n + 1 = {self.n + 1} frames of "
+                f"frames_symbolic(), got {describe(frames)}"
+            )
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
 
     def twists_symbolic(self, q=None, symbolic_lengths=False, rational=False):
@@ -419,24 +619,36 @@ class Chain(ChainType):
         q = self._exact_q(q)
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
         rational = check_flag(rational, "rational")
-        values = dict(zip(self.q_symbols, [decimal(v) if isinstance(v, float) else v for v in q]))
+        values = dict(
+            zip(self.q_symbols, [decimal(v) if isinstance(v, float) else v for v in q])
+        )
         base = exact_matrix(self.base)
         if rational:
             base = base.applyfunc(decimal)
         if self.is_dh:
             lengths = self.length_symbols() if rational and not symbolic_lengths else {}
             frames = self.frames_symbolic(symbolic_lengths or bool(lengths))
-            frames = [base * exact_matrix(self.base).inv() * T for T in frames] if rational else frames
+            frames = (
+                [base * exact_matrix(self.base).inv() * T for T in frames]
+                if rational
+                else frames
+            )
             twists = []
             for kind, T in zip(self.joints, self.joint_frames(frames)):
                 z, o = T[:3, 2], T[:3, 3]
-                twists.append(axis_coordinates(z, o, 0) if kind is Joint.REVOLUTE
-                              else axis_coordinates(z, None, sp.oo))
+                twists.append(
+                    axis_coordinates(z, o, 0)
+                    if kind is Joint.REVOLUTE
+                    else axis_coordinates(z, None, sp.oo)
+                )
             exact = {s: decimal(sp.sympify(v)) for s, v in lengths.items()}
             return [_numbers_out(t.xreplace(exact).subs(values)) for t in twists]
         screws, home = self._exact_screws, exact_matrix(self._home)
         if rational:
-            screws, home = [S.applyfunc(decimal) for S in screws], home.applyfunc(decimal)
+            screws, home = (
+                [S.applyfunc(decimal) for S in screws],
+                home.applyfunc(decimal),
+            )
         G = base * (home if self.frame == "body" else sp.eye(4))
         twists = []
         for S, qi in zip(screws, self.q_symbols):
@@ -457,7 +669,9 @@ class Chain(ChainType):
         configuration's (n, 6) array).
         """
         if is_symbolic(q):
-            return ScrewSystem([Twist(t) for t in self.twists_symbolic(q, rational=True)])
+            return ScrewSystem(
+                [Twist(t) for t in self.twists_symbolic(q, rational=True)]
+            )
         twists = np.swapaxes(self.space_jacobian(q), -1, -2)
         if twists.ndim == 3:
             return twists
@@ -469,7 +683,10 @@ class Chain(ChainType):
     def _program(self):
         """The chain as constants and unit joint twists for :mod:`screwkit._compiled` (floats only)."""
         if self.is_dh:
-            parts = [dh_factors(link, i, self.convention) for i, link in enumerate(self.links, start=1)]
+            parts = [
+                dh_factors(link, i, self.convention)
+                for i, link in enumerate(self.links, start=1)
+            ]
             pres = [pre for pre, _, _ in parts] + [np.eye(4)]
             start = np.asarray(self.base) @ pres[0]
             factors, marks = [], {0: np.linalg.inv(pres[0])}
@@ -479,7 +696,9 @@ class Chain(ChainType):
                     after = after @ self.tool
                 factors.append((twist, after, np.zeros(3)))
                 marks[k] = np.linalg.inv(pres[k])
-            offsets = np.array([float(link._numbers(i)[0][3]) for i, link in enumerate(self.links, 1)])
+            offsets = np.array(
+                [float(link._numbers(i)[0][3]) for i, link in enumerate(self.links, 1)]
+            )
             return _compiled.Program(start, factors, marks), offsets
         home = np.asarray(self._home)
         if self.frame == "space":
@@ -516,7 +735,9 @@ class Chain(ChainType):
             s1 = s[0]
             return (c1, -1.0*s1, 0.0, c1, s1, c1, 0.0, s1, 0.0, 0.0, 1.0, 0.0,)
         """
-        check_option(outputs, "outputs", ("pose", "frames", "space", "geometric", "axes"))
+        check_option(
+            outputs, "outputs", ("pose", "frames", "space", "geometric", "axes")
+        )
         return self._program[0].source(outputs)
 
     def _run(self, outputs, q, rows=None, out=None):
@@ -539,7 +760,9 @@ class Chain(ChainType):
         T = np.empty((4, 4, q.shape[0]))
         T[3] = np.array([0.0, 0.0, 0.0, 1.0])[:, None]
         self._run("pose", q, range(12), T.reshape(16, -1))
-        return T.transpose(2, 0, 1)  # a view: each entry was computed as one contiguous row
+        return T.transpose(
+            2, 0, 1
+        )  # a view: each entry was computed as one contiguous row
 
     def frames(self, q):
         """The base frame and every link frame: q (n,) -> (n + 1, 4, 4), (N, n) -> (N, n + 1, 4, 4).
@@ -571,7 +794,12 @@ class Chain(ChainType):
             self._run("axes", q, range(rows), values)
         axes = values[:-12].reshape((self.n, 3, 3) + values.shape[1:])
         axes = np.moveaxis(axes, 0, 2)  # (3 kinds, 3 coordinates, n[, N])
-        return axes[0], axes[1], axes[2], values[-12:].reshape((3, 4) + values.shape[1:])
+        return (
+            axes[0],
+            axes[1],
+            axes[2],
+            values[-12:].reshape((3, 4) + values.shape[1:]),
+        )
 
     def joint_axes(self, q):
         """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3).
@@ -598,7 +826,9 @@ class Chain(ChainType):
             return np.reshape(self._run(outputs, q), (6, n))
 
         def part(q_part):
-            values = self._run(outputs, q_part, range(rows), np.empty((rows, q_part.shape[0])))
+            values = self._run(
+                outputs, q_part, range(rows), np.empty((rows, q_part.shape[0]))
+            )
             return values.reshape(6, n, -1).transpose(2, 0, 1)
 
         return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
@@ -626,11 +856,14 @@ class Chain(ChainType):
         Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
         (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
         """
+
         def columns(q_part):
             omega, v, _, T = self._twists_and_pose(q_part)
             R, linear = T[:, :3], v + _cross(omega, T[:, 3][:, None])
             rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
-            J = np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)])
+            J = np.concatenate(
+                [np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)]
+            )
             return J if q_part.ndim == 1 else J.transpose(2, 0, 1)
 
         q = self.check_q(q)

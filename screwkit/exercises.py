@@ -28,7 +28,7 @@ import math
 import re
 import tomllib
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 from importlib import resources
 
 import numpy as np
@@ -267,7 +267,7 @@ def parse_answer(text):
 # ---- answer keys -------------------------------------------------------------------
 
 
-@lru_cache(maxsize=None)
+@cache
 def _key_file(chapter):
     if not isinstance(chapter, str) or not re.fullmatch(r"[a-z0-9_]+", chapter):
         raise ValueError(

@@ -35,6 +35,7 @@ joint limits respected; for any chain.
 >>> np.round(solutions.by_config('ruf').q, 6)
 array([ 0.3,  0.5, -2. ,  0.4,  0.7,  0.2])
 """
+
 import weakref
 from dataclasses import dataclass
 from functools import lru_cache
@@ -45,6 +46,7 @@ from ._checks import as_float_array, check_chain, check_flag, check_poses
 from ._newton import NumericIKResult, numeric_ik, pose_error
 from .robots import puma560
 from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
+from .stanford_ik import StanfordArm
 from .subproblems import (
     Solutions,
     subproblem1,
@@ -54,15 +56,33 @@ from .subproblems import (
     subproblem3_prismatic,
     subproblem4,
 )
-from .stanford_ik import StanfordArm
 from .transforms import _wrap_angle
 from .ur_ik import URArm
 
-__all__ = ["CONFIGURATIONS", "IKSolution", "IKSolutions", "analytic_ik", "analytic_ik_all",
-           "configuration", "puma560_ik", "puma560_ik_all", "puma560_config",
-           "NumericIKResult", "numeric_ik", "pose_error", "Solutions", "subproblem1",
-           "subproblem2", "subproblem3", "subproblem4", "subproblem1_prismatic",
-           "subproblem3_prismatic", "SINGULAR_TOL", "STRUCTURES", "structure"]
+__all__ = [
+    "CONFIGURATIONS",
+    "IKSolution",
+    "IKSolutions",
+    "analytic_ik",
+    "analytic_ik_all",
+    "configuration",
+    "puma560_ik",
+    "puma560_ik_all",
+    "puma560_config",
+    "NumericIKResult",
+    "numeric_ik",
+    "pose_error",
+    "Solutions",
+    "subproblem1",
+    "subproblem2",
+    "subproblem3",
+    "subproblem4",
+    "subproblem1_prismatic",
+    "subproblem3_prismatic",
+    "SINGULAR_TOL",
+    "STRUCTURES",
+    "structure",
+]
 
 
 @dataclass(frozen=True)
@@ -99,7 +119,9 @@ class IKSolutions(list):
         A string that is not one of the eight labels is a ``ValueError``.
         """
         if config not in CONFIGURATIONS:
-            raise ValueError(f"config must be one of {', '.join(CONFIGURATIONS)}, got {config!r}")
+            raise ValueError(
+                f"config must be one of {', '.join(CONFIGURATIONS)}, got {config!r}"
+            )
         return next((s for s in self if s.config == config), None)
 
     def nearest(self, q):
@@ -117,11 +139,16 @@ def _default_puma():
     return puma560()
 
 
-_ARMS = weakref.WeakKeyDictionary()  # chains are immutable: their geometry is found once
+_ARMS = (
+    weakref.WeakKeyDictionary()
+)  # chains are immutable: their geometry is found once
 
 #: The structures solved in closed form, in the order they are tried: {name: solver}.
-STRUCTURES = {"spherical wrist (joints 2, 3 parallel)": SphericalWristArm,
-              URArm.structure: URArm, StanfordArm.structure: StanfordArm}
+STRUCTURES = {
+    "spherical wrist (joints 2, 3 parallel)": SphericalWristArm,
+    URArm.structure: URArm,
+    StanfordArm.structure: StanfordArm,
+}
 
 
 def _arm(chain, name="chain"):
@@ -138,8 +165,10 @@ def _arm(chain, name="chain"):
             continue
         _ARMS[chain] = arm
         return arm
-    raise ValueError(f"{name} has none of the structures solved in closed form; "
-                     + "; ".join(refusals))
+    raise ValueError(
+        f"{name} has none of the structures solved in closed form; "
+        + "; ".join(refusals)
+    )
 
 
 def _name(arm):
@@ -201,12 +230,16 @@ def _analytic_ik(arm, chain, T, within_limits, near):
     if near is not None:
         near = as_float_array(near, "near")
         if near.shape != (6,):
-            raise ValueError(f"near must be a joint vector of 6 entries, got shape {near.shape}")
+            raise ValueError(
+                f"near must be a joint vector of 6 entries, got shape {near.shape}"
+            )
     batch = T if T.ndim == 3 else T[None]
     Q, flags, code = arm.solve(batch)
     limits = chain.qlim
-    answers = [_answer(arm, batch[k], Q[k], flags[k], code[k], limits, within_limits, near)
-               for k in range(batch.shape[0])]
+    answers = [
+        _answer(arm, batch[k], Q[k], flags[k], code[k], limits, within_limits, near)
+        for k in range(batch.shape[0])
+    ]
     return answers if T.ndim == 3 else answers[0]
 
 
@@ -219,18 +252,27 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     for q, q_moved, ok, config, flag in zip(Q, moved, inside, CONFIGURATIONS, flags):
         if np.isnan(q[0]):
             continue
-        solutions.append(IKSolution(q=q_moved if within_limits and ok else q,
-                                    config=config, within_limits=bool(ok),
-                                    singular=tuple(n for n, f in zip(names, flag) if f)))
+        solutions.append(
+            IKSolution(
+                q=q_moved if within_limits and ok else q,
+                config=config,
+                within_limits=bool(ok),
+                singular=tuple(n for n, f in zip(names, flag) if f),
+            )
+        )
     if within_limits:
         solutions = [s for s in solutions if s.within_limits]
     result = IKSolutions(solutions, structure=_name(arm))
     if near is not None:
         result.sort(key=lambda s: np.linalg.norm(_wrap_angle(s.q - near)))
     if not result:
-        result.reason = ("every solution violates a joint limit, even moved by whole turns: "
-                         + ", ".join(f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
-                                     for s in _answer(arm, T, Q, flags, code, limits, False, None)))
+        result.reason = (
+            "every solution violates a joint limit, even moved by whole turns: "
+            + ", ".join(
+                f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
+                for s in _answer(arm, T, Q, flags, code, limits, False, None)
+            )
+        )
     return result
 
 
@@ -245,7 +287,9 @@ def _into_limits(Q, qlim, revolute=None):
     candidates = Q[..., None] + 2 * np.pi * turns  # (k, 6, 7)
     fits = (candidates >= low[:, None] - 1e-12) & (candidates <= high[:, None] + 1e-12)
     distance = np.where(fits, np.abs(candidates - Q[..., None]), np.inf)
-    nearest = np.take_along_axis(candidates, distance.argmin(axis=-1)[..., None], -1)[..., 0]
+    nearest = np.take_along_axis(candidates, distance.argmin(axis=-1)[..., None], -1)[
+        ..., 0
+    ]
     return np.where(already, Q, nearest), np.all(already | fits.any(axis=-1), axis=-1)
 
 
@@ -269,7 +313,9 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
     """
     robot = _default_puma() if robot is None else robot
     arm = _arm(robot, "robot")
-    return _analytic_ik(arm, robot, check_poses(T, "T", single_only=True), within_limits, near)
+    return _analytic_ik(
+        arm, robot, check_poses(T, "T", single_only=True), within_limits, near
+    )
 
 
 def puma560_ik_all(Ts, robot=None):

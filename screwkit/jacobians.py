@@ -19,6 +19,7 @@ used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) 
 >>> int(rank(arm, [0.0, 0.0], rows="planar"))  # stretched: singular
 1
 """
+
 import numpy as np
 import sympy as sp
 
@@ -41,6 +42,7 @@ __all__ = [
     "rank",
     "ellipsoid",
 ]
+
 
 def joint_axes(chain, q):
     """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3)."""
@@ -82,33 +84,47 @@ def numerical_jacobian(chain, q, h=1e-6):
     matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian` (error O(h^2)).
     """
     q = check_chain(chain).check_one(q)
-    if isinstance(h, bool) or not isinstance(h, (int, float, np.floating, np.integer)) \
-            or not np.isfinite(h) or h <= 0:
+    if (
+        isinstance(h, bool)
+        or not isinstance(h, (int, float, np.floating, np.integer))
+        or not np.isfinite(h)
+        or h <= 0
+    ):
         raise ValueError(f"h must be a small positive step (rad or m), got {h!r}")
     R = chain.fk(q)[:3, :3]
     columns = []
     for step in h * np.eye(chain.n):
         plus, minus = chain.fk(q + step), chain.fk(q - step)
         W = (plus[:3, :3] - minus[:3, :3]) / (2 * h) @ R.T
-        columns.append(np.r_[(plus[:3, 3] - minus[:3, 3]) / (2 * h), W[2, 1], W[0, 2], W[1, 0]])
+        columns.append(
+            np.r_[(plus[:3, 3] - minus[:3, 3]) / (2 * h), W[2, 1], W[0, 2], W[1, 0]]
+        )
     return np.array(columns).T
 
 
 # ---- exact ---------------------------------------------------------------------------------
 
+
 def _symbolic_point(chain, point, end, frames):
     if point is None:
         return end[:3, 3]
-    if isinstance(point, (bool, np.bool_, float, np.floating, str, bytes, complex)) \
-            or (isinstance(point, sp.Basic) and not isinstance(point, sp.MatrixBase)):
-        raise TypeError(f"point must be a frame number (an integer), a 3-vector or None, "
-                        f"got {describe(point)}")
+    if isinstance(point, (bool, np.bool_, float, np.floating, str, bytes, complex)) or (
+        isinstance(point, sp.Basic) and not isinstance(point, sp.MatrixBase)
+    ):
+        raise TypeError(
+            f"point must be a frame number (an integer), a 3-vector or None, "
+            f"got {describe(point)}"
+        )
     if isinstance(point, (int, np.integer)):
         if frames is None:
-            raise ValueError("point must be None or a 3-vector for a chain built from screws "
-                             f"(it has no DH frames), got {point!r}")
+            raise ValueError(
+                "point must be None or a 3-vector for a chain built from screws "
+                f"(it has no DH frames), got {point!r}"
+            )
         if not 0 <= point <= chain.n:
-            raise ValueError(f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}")
+            raise ValueError(
+                f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}"
+            )
         return frames[point][:3, 3]
     return as_sympy_matrix(point, "point", (3, 1))
 
@@ -127,7 +143,11 @@ def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     check_chain(chain)
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
     frames = chain.frames_symbolic(symbolic_lengths) if chain.is_dh else None
-    end = chain.fk_symbolic(symbolic_lengths=symbolic_lengths) if chain.is_dh else chain.fk_symbolic()
+    end = (
+        chain.fk_symbolic(symbolic_lengths=symbolic_lengths)
+        if chain.is_dh
+        else chain.fk_symbolic()
+    )
     p = _symbolic_point(chain, point, end, frames)
     columns = []
     if chain.is_dh:
@@ -154,9 +174,13 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
     the factors are exact (no round-off terms from decimal lengths).
     """
     if check_chain(chain).n != 6:
-        raise ValueError(f"the chain must have 6 joints for a square Jacobian, got {chain.n}")
+        raise ValueError(
+            f"the chain must have 6 joints for a square Jacobian, got {chain.n}"
+        )
     lengths = {} if symbolic_lengths or not chain.is_dh else chain.length_symbols()
-    J = geometric_jacobian_symbolic(chain, point=point, symbolic_lengths=bool(lengths) or symbolic_lengths)
+    J = geometric_jacobian_symbolic(
+        chain, point=point, symbolic_lengths=bool(lengths) or symbolic_lengths
+    )
     if J[:3, 3:].is_zero_matrix:
         factors = [J[:3, :3].det(method="berkowitz"), J[3:, 3:].det(method="berkowitz")]
     else:
@@ -166,6 +190,7 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
 
 
 # ---- numbers from the Jacobian ---------------------------------------------------------------
+
 
 def singular_values(chain, q, rows="all"):
     """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
@@ -211,7 +236,9 @@ def ellipsoid(chain, q, rows="position"):
     """
     q = check_chain(chain).check_one(q)
     if rows not in ("position", "orientation"):
-        raise ValueError(f"rows must be 'position' or 'orientation' for a 3D ellipsoid, got {rows!r}")
+        raise ValueError(
+            f"rows must be 'position' or 'orientation' for a 3D ellipsoid, got {rows!r}"
+        )
     J = geometric_jacobian(chain, q)[check_rows(rows)]
     U, sigma, _ = np.linalg.svd(J)
     radii = np.zeros(3)

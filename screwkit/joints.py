@@ -4,6 +4,7 @@
 DH rows (``Link.revolute``); the builders of (s, r, h) limbs are :mod:`screwkit.limbs`:
 ``sk.joints.revolute`` is ``sk.limbs.revolute``.
 """
+
 from .limbs import (
     cylindrical,
     helical,
@@ -16,5 +17,14 @@ from .limbs import (
     universal,
 )
 
-__all__ = ["revolute", "prismatic", "helical", "cylindrical", "universal", "spherical",
-           "parallelogram", "rotate_limb", "translate_limb"]
+__all__ = [
+    "revolute",
+    "prismatic",
+    "helical",
+    "cylindrical",
+    "universal",
+    "spherical",
+    "parallelogram",
+    "rotate_limb",
+    "translate_limb",
+]

@@ -20,6 +20,7 @@ Every function is exact for SymPy input and float64 (batched over leading axes) 
 >>> np.round(log_transform(T), 4)                  # (pi/2, 0, 0; 0, 3 pi/4, 3 pi/4)
 array([1.5708, 0.    , 0.    , 0.    , 2.3562, 2.3562])
 """
+
 import numpy as np
 import sympy as sp
 
@@ -95,10 +96,14 @@ def ad(twist):
     if is_symbolic(twist):
         V = as_sympy_matrix(twist, "twist", (6, 1))
         W = _skew_exact(V[:3, 0])
-        return sp.Matrix(sp.BlockMatrix([[W, sp.zeros(3, 3)], [_skew_exact(V[3:, 0]), W]]))
+        return sp.Matrix(
+            sp.BlockMatrix([[W, sp.zeros(3, 3)], [_skew_exact(V[3:, 0]), W]])
+        )
     V = as_float_array(twist, "twist")
     if V.shape[-1:] != (6,) or V.ndim > 2:
-        raise ValueError(f"twist must have shape (6,) or (N, 6), ordered [w; v], got shape {V.shape}")
+        raise ValueError(
+            f"twist must have shape (6,) or (N, 6), ordered [w; v], got shape {V.shape}"
+        )
     W = _skew(V[..., :3])
     A = np.zeros(V.shape[:-1] + (6, 6))
     A[..., :3, :3] = W
@@ -130,43 +135,55 @@ def log_rotation(R):
     R = check_rotation(R, "R")
     if isinstance(R, sp.MatrixBase):
         return _log_rotation_exact(R)
-    skew_part = 0.5 * vee(R - np.swapaxes(R, -1, -2))          # omega sin(theta)
+    skew_part = 0.5 * vee(R - np.swapaxes(R, -1, -2))  # omega sin(theta)
     sin_theta = np.linalg.norm(skew_part, axis=-1)
     cos_theta = np.clip(0.5 * (np.trace(R, axis1=-2, axis2=-1) - 1.0), -1.0, 1.0)
     theta = np.arctan2(sin_theta, cos_theta)
     small = theta < SMALL_ANGLE
     safe_sin = np.where(small | (sin_theta == 0), 1.0, sin_theta)
-    scale = np.where(small, 1.0 + theta**2 / 6.0, theta / safe_sin)  # theta / sin(theta)
+    scale = np.where(
+        small, 1.0 + theta**2 / 6.0, theta / safe_sin
+    )  # theta / sin(theta)
     result = scale[..., None] * skew_part
     near_pi = cos_theta < -0.5  # sin(theta) is small relative to 1 - cos(theta) here
     if np.any(near_pi):
-        result = np.where(near_pi[..., None], _axis_near_pi(R, skew_part, cos_theta) * theta[..., None],
-                          result)
+        result = np.where(
+            near_pi[..., None],
+            _axis_near_pi(R, skew_part, cos_theta) * theta[..., None],
+            result,
+        )
     return result
 
 
 def _axis_near_pi(R, skew_part, cos_theta):
     """The unit axis from the symmetric part of R (accurate when theta is far from 0)."""
-    outer = (0.5 * (R + np.swapaxes(R, -1, -2)) - cos_theta[..., None, None] * np.eye(3))
-    outer = outer / np.maximum(1.0 - cos_theta, 0.5)[..., None, None]  # omega omega^T (used where c < -0.5)
+    outer = 0.5 * (R + np.swapaxes(R, -1, -2)) - cos_theta[..., None, None] * np.eye(3)
+    outer = (
+        outer / np.maximum(1.0 - cos_theta, 0.5)[..., None, None]
+    )  # omega omega^T (used where c < -0.5)
     column = np.argmax(np.diagonal(outer, axis1=-2, axis2=-1), axis=-1)
     axis = np.take_along_axis(outer, column[..., None, None], axis=-1)[..., 0]
     axis = axis / np.maximum(np.linalg.norm(axis, axis=-1, keepdims=True), 1e-300)
     # the sign: along omega sin(theta) when that is informative, else largest component positive
     dot = np.sum(axis * skew_part, axis=-1)
-    largest = np.take_along_axis(axis, np.argmax(np.abs(axis), axis=-1)[..., None], axis=-1)[..., 0]
+    largest = np.take_along_axis(
+        axis, np.argmax(np.abs(axis), axis=-1)[..., None], axis=-1
+    )[..., 0]
     sign = np.where(np.abs(dot) > 1e-12, np.sign(dot), np.sign(largest))
     return axis * sign[..., None]
 
 
 def _log_rotation_exact(R):
-    cos_theta = sp.nsimplify(sp.simplify((R.trace() - 1) / 2)) if not R.free_symbols else \
-        sp.simplify((R.trace() - 1) / 2)
+    cos_theta = (
+        sp.nsimplify(sp.simplify((R.trace() - 1) / 2))
+        if not R.free_symbols
+        else sp.simplify((R.trace() - 1) / 2)
+    )
     if cos_theta == 1:
         return sp.zeros(3, 1)
     skew_part = vee(R - R.T) / 2
     if cos_theta == -1:
-        outer = (R + R.T) / 2 + sp.eye(3)                          # 2 omega omega^T
+        outer = (R + R.T) / 2 + sp.eye(3)  # 2 omega omega^T
         diagonal = [outer[i, i] for i in range(3)]
         k = max(range(3), key=lambda i: float(diagonal[i]))
         axis = (outer[:, k] / sp.sqrt(2 * diagonal[k])).applyfunc(sp.radsimp)
@@ -209,8 +226,11 @@ def log_transform(T):
     theta = np.linalg.norm(phi, axis=-1)
     small = theta < SMALL_ANGLE
     half = np.where(small, 1.0, theta / 2)
-    k = np.where(small, 1.0 / 12.0 + theta**2 / 720.0,
-                 (1.0 - half / np.tan(half)) / np.where(small, 1.0, theta) ** 2)
+    k = np.where(
+        small,
+        1.0 / 12.0 + theta**2 / 720.0,
+        (1.0 - half / np.tan(half)) / np.where(small, 1.0, theta) ** 2,
+    )
     p = T[..., :3, 3]
     phi_p = np.cross(phi, p)
     v = p - 0.5 * phi_p + k[..., None] * np.cross(phi, phi_p)

@@ -12,14 +12,24 @@ axis, U = two crossing R, S = three crossing R.
 >>> len(spherical([0, 0, 1]))
 3
 """
+
 import random
 
 import sympy as sp
 
 from ._checks import as_sympy_matrix, as_sympy_scalar, check_rotation, describe
 
-__all__ = ["revolute", "prismatic", "helical", "cylindrical", "universal", "spherical",
-           "parallelogram", "rotate_limb", "translate_limb"]
+__all__ = [
+    "revolute",
+    "prismatic",
+    "helical",
+    "cylindrical",
+    "universal",
+    "spherical",
+    "parallelogram",
+    "rotate_limb",
+    "translate_limb",
+]
 
 
 def _vec(v, name):
@@ -67,7 +77,9 @@ def prismatic(s, r=(0, 0, 0)):
 def helical(s, r, h):
     """H: rotation about (s, r) with translation h per radian along it (h in m/rad, finite)."""
     if isinstance(h, (str, bytes)) or h is None or h is sp.oo:
-        raise TypeError(f"h must be a finite pitch (m/rad): a number or a SymPy expression, got {describe(h)}")
+        raise TypeError(
+            f"h must be a finite pitch (m/rad): a number or a SymPy expression, got {describe(h)}"
+        )
     return [(_direction(s, "s"), _vec(r, "r"), as_sympy_scalar(h, "h"))]
 
 
@@ -80,22 +92,31 @@ def universal(s1, s2, r):
     """U: two revolute axes s1, s2 crossing at r (they must not be parallel)."""
     first, second = revolute(_vec(s1, "s1"), r), revolute(_vec(s2, "s2"), r)
     if _parallel(first[0][0], second[0][0]):
-        raise ValueError(f"s1 and s2 of a universal joint must not be parallel, got s1 = {list(first[0][0])} "
-                         f"and s2 = {list(second[0][0])} (two parallel axes make a planar pair, not a U)")
+        raise ValueError(
+            f"s1 and s2 of a universal joint must not be parallel, got s1 = {list(first[0][0])} "
+            f"and s2 = {list(second[0][0])} (two parallel axes make a planar pair, not a U)"
+        )
     return first + second
 
 
 def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
     """S: three independent revolute axes through the centre r."""
     if isinstance(axes, (str, bytes)) or not hasattr(axes, "__len__") or len(axes) != 3:
-        raise ValueError(f"axes of a spherical joint must be three directions, got {describe(axes)}")
+        raise ValueError(
+            f"axes of a spherical joint must be three directions, got {describe(axes)}"
+        )
     first = _direction(axes[0], "axes[0]")
     centre = _vec(r, "r")  # checked in the order a revolute() per axis would check them
-    joints = [(first, centre, 0)] + [(_direction(axis, f"axes[{k}]"), centre.copy(), 0)
-                                     for k, axis in enumerate(axes) if k]
+    joints = [(first, centre, 0)] + [
+        (_direction(axis, f"axes[{k}]"), centre.copy(), 0)
+        for k, axis in enumerate(axes)
+        if k
+    ]
     if _is_zero(sp.Matrix.hstack(*(s for s, _, _ in joints)).det()):
-        raise ValueError("axes of a spherical joint must be independent (not in one plane), got "
-                         f"{[list(s) for s, _, _ in joints]}")
+        raise ValueError(
+            "axes of a spherical joint must be independent (not in one plane), got "
+            f"{[list(s) for s, _, _ in joints]}"
+        )
     return joints
 
 
@@ -105,14 +126,20 @@ def parallelogram(s, a1, a2, b1, b2):
     The corners must make a parallelogram: B1 - A1 = B2 - A2 (equal, parallel long sides),
     with A1 != A2 and B1 != A1.
     """
-    corners = [_vec(c, name) for c, name in ((a1, "a1"), (a2, "a2"), (b1, "b1"), (b2, "b2"))]
+    corners = [
+        _vec(c, name) for c, name in ((a1, "a1"), (a2, "a2"), (b1, "b1"), (b2, "b2"))
+    ]
     A1, A2, B1, B2 = corners
     if not all(_is_zero(e) for e in (B1 - A1) - (B2 - A2)):
-        raise ValueError("a1, a2, b1, b2 must be the corners of a parallelogram (b1 - a1 = b2 - a2), "
-                         f"got b1 - a1 = {list(B1 - A1)} and b2 - a2 = {list(B2 - A2)}")
+        raise ValueError(
+            "a1, a2, b1, b2 must be the corners of a parallelogram (b1 - a1 = b2 - a2), "
+            f"got b1 - a1 = {list(B1 - A1)} and b2 - a2 = {list(B2 - A2)}"
+        )
     for P, Q, names in ((A1, A2, "a1 and a2"), (A1, B1, "a1 and b1")):
         if all(_is_zero(e) for e in P - Q):
-            raise ValueError(f"{names} of a parallelogram must be different points, got {list(P)} for both")
+            raise ValueError(
+                f"{names} of a parallelogram must be different points, got {list(P)} for both"
+            )
     s = _direction(s, "s")
     return [(s.copy(), corner, 0) for corner in corners]
 
@@ -120,9 +147,12 @@ def parallelogram(s, a1, a2, b1, b2):
 def _check_limb(limb, name="limb"):
     """A limb: a list of (s, r, h) triples, as every builder here returns."""
     if not isinstance(limb, (list, tuple)) or not all(
-            isinstance(joint, (list, tuple)) and len(joint) == 3 for joint in limb):
-        raise TypeError(f"{name} must be a list of (s, r, h) triples (e.g. revolute(s, r) + "
-                        f"prismatic(s)), got {describe(limb)}")
+        isinstance(joint, (list, tuple)) and len(joint) == 3 for joint in limb
+    ):
+        raise TypeError(
+            f"{name} must be a list of (s, r, h) triples (e.g. revolute(s, r) + "
+            f"prismatic(s)), got {describe(limb)}"
+        )
     return limb
 
 
@@ -139,8 +169,14 @@ def rotate_limb(limb, R):
     def turn(v, name):
         # R v entry by entry (no matrix product), each entry expanded
         v = _vec(v, name).flat()
-        return sp.Matrix(3, 1, [sp.expand(sp.Add(*[c * e for c, e in zip(row, v) if c != 0 and e != 0]))
-                                for row in rows])
+        return sp.Matrix(
+            3,
+            1,
+            [
+                sp.expand(sp.Add(*[c * e for c, e in zip(row, v) if c != 0 and e != 0]))
+                for row in rows
+            ],
+        )
 
     return [(turn(s, "s"), turn(r, "r"), h) for s, r, h in limb]
 
@@ -150,7 +186,9 @@ def _exact_rotation(R):
     if R.shape != (3, 3) or R.free_symbols or R.has(sp.Float):
         return False
     key = tuple(R.flat())
-    if key not in _EXACT_ROTATIONS:  # the same few turns (by 2 pi k / n) come back often
+    if (
+        key not in _EXACT_ROTATIONS
+    ):  # the same few turns (by 2 pi k / n) come back often
         gram = (R.T * R).applyfunc(sp.expand)
         _EXACT_ROTATIONS[key] = gram == sp.eye(3) and sp.expand(R.det()) == 1
     return _EXACT_ROTATIONS[key]

@@ -9,6 +9,7 @@
 transform, a joint twist and a post transform: A(q) = pre exp([X] (q + offset)) post
 (:func:`dh_factors`), which is how a DH chain joins the product of exponentials.
 """
+
 import enum
 from dataclasses import dataclass
 
@@ -41,7 +42,9 @@ class Convention(enum.Enum):
 
 def check_convention(convention):
     if not isinstance(convention, Convention):
-        raise TypeError(f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}")
+        raise TypeError(
+            f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}"
+        )
     return convention
 
 
@@ -49,15 +52,29 @@ def _check_parameter(value, name):
     """A DH number: a finite real number, or a SymPy expression (exact, possibly symbolic)."""
     if isinstance(value, sp.Basic):
         value = sp.sympify(value)
-        if not isinstance(value, sp.Expr) or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or value.is_real is False:
-            raise ValueError(f"{name} must be a finite real number or SymPy expression, got {value}")
+        if (
+            not isinstance(value, sp.Expr)
+            or value.has(sp.nan, sp.zoo, sp.oo, -sp.oo)
+            or value.is_real is False
+        ):
+            raise ValueError(
+                f"{name} must be a finite real number or SymPy expression, got {value}"
+            )
         return value
-    if isinstance(value, (bool, str, bytes)) or value is None or isinstance(value, (complex, np.complexfloating)):
-        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}")
+    if (
+        isinstance(value, (bool, str, bytes))
+        or value is None
+        or isinstance(value, (complex, np.complexfloating))
+    ):
+        raise TypeError(
+            f"{name} must be a real number (m or rad), got {describe(value)}"
+        )
     try:
         number = float(value)
     except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a real number (m or rad), got {describe(value)}") from None
+        raise TypeError(
+            f"{name} must be a real number (m or rad), got {describe(value)}"
+        ) from None
     if not np.isfinite(number):
         raise ValueError(f"{name} must be finite, got {number}")
     return int(value) if isinstance(value, (int, np.integer)) else number
@@ -84,7 +101,9 @@ class Link:
 
     def __post_init__(self):
         if not isinstance(self.joint, Joint) or self.joint is Joint.HELICAL:
-            raise TypeError(f"joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got {self.joint!r}")
+            raise TypeError(
+                f"joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got {self.joint!r}"
+            )
         for name in ("d", "a", "alpha", "theta", "offset"):
             object.__setattr__(self, name, _check_parameter(getattr(self, name), name))
         object.__setattr__(self, "qlim", _check_qlim(self.qlim))
@@ -97,24 +116,38 @@ class Link:
     @classmethod
     def prismatic(cls, theta=0, a=0, alpha=0, offset=0, qlim=None):
         """A prismatic link: d = q + offset."""
-        return cls(Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim)
+        return cls(
+            Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim
+        )
 
     def transform(self, q, convention=Convention.STANDARD):
         """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or symbol q."""
         check_convention(convention)
-        theta, d = (q + self.offset, self.d) if self.joint is Joint.REVOLUTE else (self.theta, q + self.offset)
+        theta, d = (
+            (q + self.offset, self.d)
+            if self.joint is Joint.REVOLUTE
+            else (self.theta, q + self.offset)
+        )
         ct, st = sp.cos(theta), sp.sin(theta)
         ca, sa = sp.cos(_exact(self.alpha)), sp.sin(_exact(self.alpha))
         a = _exact(self.a)
         if convention is Convention.STANDARD:
-            return sp.Matrix([[ct, -st * ca, st * sa, a * ct],
-                              [st, ct * ca, -ct * sa, a * st],
-                              [0, sa, ca, d],
-                              [0, 0, 0, 1]])
-        return sp.Matrix([[ct, -st, 0, a],
-                          [st * ca, ct * ca, -sa, -sa * d],
-                          [st * sa, ct * sa, ca, ca * d],
-                          [0, 0, 0, 1]])
+            return sp.Matrix(
+                [
+                    [ct, -st * ca, st * sa, a * ct],
+                    [st, ct * ca, -ct * sa, a * st],
+                    [0, sa, ca, d],
+                    [0, 0, 0, 1],
+                ]
+            )
+        return sp.Matrix(
+            [
+                [ct, -st, 0, a],
+                [st * ca, ct * ca, -sa, -sa * d],
+                [st * sa, ct * sa, ca, ca * d],
+                [0, 0, 0, 1],
+            ]
+        )
 
     def _numbers(self, index):
         """(d, a, theta, offset) as floats and (cos alpha, sin alpha), for the numeric path."""
@@ -122,15 +155,24 @@ class Link:
         for name in ("d", "a", "theta", "offset", "alpha"):
             value = getattr(self, name)
             if isinstance(value, sp.Basic) and value.free_symbols:
-                raise ValueError(f"link {index}'s {name} is the expression {value}: the numeric path "
-                                 "(fk, Jacobians) needs numbers; use fk_symbolic for symbols")
+                raise ValueError(
+                    f"link {index}'s {name} is the expression {value}: the numeric path "
+                    "(fk, Jacobians) needs numbers; use fk_symbolic for symbols"
+                )
             values.append(value)
         alpha = values.pop()
         if isinstance(alpha, sp.Basic):  # exact: cos(pi/2) is exactly 0
-            return [float(v) for v in values], (float(sp.cos(alpha)), float(sp.sin(alpha)))
+            return [float(v) for v in values], (
+                float(sp.cos(alpha)),
+                float(sp.sin(alpha)),
+            )
         quarter_turns = round(alpha / (np.pi / 2))
-        if abs(alpha / (np.pi / 2) - quarter_turns) < 1e-15:  # as _exact: a float multiple of pi/2
-            cos_sin = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][quarter_turns % 4]
+        if (
+            abs(alpha / (np.pi / 2) - quarter_turns) < 1e-15
+        ):  # as _exact: a float multiple of pi/2
+            cos_sin = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][
+                quarter_turns % 4
+            ]
         else:
             cos_sin = (float(np.cos(alpha)), float(np.sin(alpha)))
         return [float(v) for v in values], cos_sin
@@ -143,7 +185,9 @@ def _limit_numbers(qlim, name, expected):
     try:
         return np.asarray(qlim, dtype=float)
     except (TypeError, ValueError):
-        raise TypeError(f"{name} must be {expected} of numbers or None, got {describe(qlim)}") from None
+        raise TypeError(
+            f"{name} must be {expected} of numbers or None, got {describe(qlim)}"
+        ) from None
 
 
 def _check_qlim(qlim, name="qlim"):
@@ -152,7 +196,9 @@ def _check_qlim(qlim, name="qlim"):
         return None
     limits = _limit_numbers(qlim, name, "a pair (min, max)")
     if limits.shape != (2,) or np.any(np.isnan(limits)) or not limits[0] < limits[1]:
-        raise ValueError(f"{name} must be a pair (min, max) with min < max, got {qlim!r}")
+        raise ValueError(
+            f"{name} must be a pair (min, max) with min < max, got {qlim!r}"
+        )
     if limits[0] == -np.inf and limits[1] == np.inf:
         return None
     return (float(limits[0]), float(limits[1]))
@@ -174,13 +220,19 @@ def decimal(value):
     if isinstance(value, sp.Float):
         return sp.nsimplify(value, rational=True)
     if value.has(sp.Float):
-        return value.xreplace({f: sp.nsimplify(f, rational=True) for f in value.atoms(sp.Float)})
+        return value.xreplace(
+            {f: sp.nsimplify(f, rational=True) for f in value.atoms(sp.Float)}
+        )
     return value
 
 
 def exact_matrix(T):
     """A numeric 4x4 as a SymPy matrix, exact where the entries are integers."""
-    return sp.Matrix(4, 4, [sp.Integer(int(v)) if float(v).is_integer() else sp.Float(v) for v in T.flat])
+    return sp.Matrix(
+        4,
+        4,
+        [sp.Integer(int(v)) if float(v).is_integer() else sp.Float(v) for v in T.flat],
+    )
 
 
 def rigid(value, name):
@@ -189,10 +241,16 @@ def rigid(value, name):
         T = np.eye(4)
     else:
         if isinstance(value, sp.MatrixBase):
-            value = np.array(value.evalf(), dtype=float) if not value.free_symbols else value
+            value = (
+                np.array(value.evalf(), dtype=float)
+                if not value.free_symbols
+                else value
+            )
         T = check_transform(as_float_array(value, name), name)
         if T.shape != (4, 4):
-            raise ValueError(f"{name} must be one transform of shape (4, 4), got shape {T.shape}")
+            raise ValueError(
+                f"{name} must be one transform of shape (4, 4), got shape {T.shape}"
+            )
         T = T.copy()
     T.setflags(write=False)
     return T
@@ -212,7 +270,9 @@ def dh_factors(link, index, convention):
     ct, st = np.cos(theta), np.sin(theta)
     Rz = np.array([[ct, -st, 0, 0], [st, ct, 0, 0], [0, 0, 1.0, 0], [0, 0, 0, 1]])
     revolute = link.joint is Joint.REVOLUTE
-    twist = np.array([0, 0, 1.0, 0, 0, 0]) if revolute else np.array([0, 0, 0, 0, 0, 1.0])
+    twist = (
+        np.array([0, 0, 1.0, 0, 0, 0]) if revolute else np.array([0, 0, 0, 0, 0, 1.0])
+    )
     if convention is Convention.STANDARD:
         return np.eye(4), twist, (Tz if revolute else Rz) @ Tx @ Rx
     return Rx @ Tx, twist, Tz if revolute else Rz
@@ -225,7 +285,9 @@ def check_screws(axes):
     elif isinstance(axes, (list, tuple)):
         items = list(axes)
     else:
-        raise TypeError(f"axes must be a list of Twist objects or 6-vectors [omega; v], got {describe(axes)}")
+        raise TypeError(
+            f"axes must be a list of Twist objects or 6-vectors [omega; v], got {describe(axes)}"
+        )
     if not items:
         raise ValueError("axes must hold at least one joint screw, got none")
     numbers, exact = [], []
@@ -233,39 +295,64 @@ def check_screws(axes):
         name = f"axes[{i}]"
         if isinstance(item, Screw):
             if item.kind == "wrench":
-                raise TypeError(f"{name} must be a twist (a joint's motion), got a Wrench")
+                raise TypeError(
+                    f"{name} must be a twist (a joint's motion), got a Wrench"
+                )
             vector = item.vector
-        elif isinstance(item, sp.MatrixBase) or (isinstance(item, (list, tuple, np.ndarray))
-                                                 and any(isinstance(e, sp.Basic) for e in np.ravel(item))):
+        elif isinstance(item, sp.MatrixBase) or (
+            isinstance(item, (list, tuple, np.ndarray))
+            and any(isinstance(e, sp.Basic) for e in np.ravel(item))
+        ):
             vector = sp.Matrix(item)
         else:
             vector = None
         if vector is not None:
             if vector.shape not in ((6, 1), (1, 6)) or vector.free_symbols:
-                raise ValueError(f"{name} must be a 6-vector of numbers [omega; v], got {vector.T}")
+                raise ValueError(
+                    f"{name} must be a 6-vector of numbers [omega; v], got {vector.T}"
+                )
             values = np.array([float(e) for e in vector], dtype=float)
             exact.append(sp.Matrix(6, 1, list(vector)))
         else:
             values = as_float_array(item, name)
             if values.shape != (6,):
-                raise ValueError(f"{name} must be a 6-vector [omega; v], got shape {values.shape}")
-            exact.append(sp.Matrix(6, 1, [sp.Integer(int(v)) if v.is_integer() else sp.Float(v) for v in values]))
+                raise ValueError(
+                    f"{name} must be a 6-vector [omega; v], got shape {values.shape}"
+                )
+            exact.append(
+                sp.Matrix(
+                    6,
+                    1,
+                    [
+                        sp.Integer(int(v)) if v.is_integer() else sp.Float(v)
+                        for v in values
+                    ],
+                )
+            )
         w, v = np.linalg.norm(values[:3]), np.linalg.norm(values[3:])
         if w == 0 and v == 0:
             raise ValueError(f"{name} must be a unit screw axis, got the zero twist")
         if w != 0 and abs(w - 1) > UNIT_TOL:
-            raise ValueError(f"{name} must be a unit screw axis: |omega| = 1 for a revolute or helical "
-                             f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}")
+            raise ValueError(
+                f"{name} must be a unit screw axis: |omega| = 1 for a revolute or helical "
+                f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}"
+            )
         if w == 0 and abs(v - 1) > UNIT_TOL:
-            raise ValueError(f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}")
-        numbers.append(values / (w or v))  # unit to the last bit: the exponential assumes it
+            raise ValueError(
+                f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}"
+            )
+        numbers.append(
+            values / (w or v)
+        )  # unit to the last bit: the exponential assumes it
     return np.array(numbers), exact
 
 
 def joint_kind(screw):
     if not np.any(screw[:3]):
         return Joint.PRISMATIC
-    return Joint.HELICAL if abs(np.dot(screw[:3], screw[3:])) > 1e-12 else Joint.REVOLUTE
+    return (
+        Joint.HELICAL if abs(np.dot(screw[:3], screw[3:])) > 1e-12 else Joint.REVOLUTE
+    )
 
 
 def axis_points(screws, start):

@@ -16,6 +16,7 @@ The mobility is the order of the PTS; its twists give the type (e.g. 3T1R) and d
 >>> sk_result.number, sk_result.type, sk_result.directions
 (3, '3T', ['Tx', 'Ty', 'Tz'])
 """
+
 import numbers
 from dataclasses import dataclass, field
 
@@ -38,7 +39,12 @@ def grubler_kutzbach(links, joints, freedoms, order=6):
 
     ``links`` includes the base and the platform; ``order`` is 6 in space, 3 in the plane.
     """
-    for name, value in (("links", links), ("joints", joints), ("freedoms", freedoms), ("order", order)):
+    for name, value in (
+        ("links", links),
+        ("joints", joints),
+        ("freedoms", freedoms),
+        ("order", order),
+    ):
         if not isinstance(value, int) or isinstance(value, bool) or value < 0:
             raise TypeError(f"{name} must be a non-negative integer, got {value!r}")
     return order * (links - joints - 1) + freedoms
@@ -64,14 +70,19 @@ class Mobility:
 
     def summary(self):
         """The four systems and the counts as plain text, one screw per line."""
+
         def block(title, systems):
             lines = [title]
             for i, system in enumerate(systems, 1):
                 prefix = f"  limb {i}: " if len(systems) > 1 else "  "
                 vectors = [str(list(s.vector)) for s in system.basis()] or ["(none)"]
                 lines.append(prefix + f"{system.rank}-system " + vectors[0])
-                lines += [" " * len(prefix + f"{system.rank}-system ") + v for v in vectors[1:]]
+                lines += [
+                    " " * len(prefix + f"{system.rank}-system ") + v
+                    for v in vectors[1:]
+                ]
             return lines
+
         lines = block("Limb twist systems (LTS)", self.limb_twist_systems)
         lines += block("Limb wrench systems (LWS)", self.limb_wrench_systems)
         lines += block("Platform wrench system (PWS)", [self.platform_wrench_system])
@@ -84,34 +95,57 @@ class Mobility:
 
     def _systems(self):
         rows = [(f"LTS, limb {i}", s) for i, s in enumerate(self.limb_twist_systems, 1)]
-        rows += [(f"LWS, limb {i}", s) for i, s in enumerate(self.limb_wrench_systems, 1)]
-        return rows + [("PWS", self.platform_wrench_system), ("PTS", self.platform_twist_system)]
+        rows += [
+            (f"LWS, limb {i}", s) for i, s in enumerate(self.limb_wrench_systems, 1)
+        ]
+        return rows + [
+            ("PWS", self.platform_wrench_system),
+            ("PTS", self.platform_twist_system),
+        ]
 
     def _repr_latex_(self):
-        lines = [rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & {latex_table(s.basis())}"
-                 for name, s in self._systems()]
-        lines.append(rf"\text{{mobility}} & \text{{{self.number} ({self.type}): {', '.join(self.directions)}}}")
+        lines = [
+            rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & {latex_table(s.basis())}"
+            for name, s in self._systems()
+        ]
+        lines.append(
+            rf"\text{{mobility}} & \text{{{self.number} ({self.type}): {', '.join(self.directions)}}}"
+        )
         return "$\\begin{array}{ll}" + r" \\ ".join(lines) + r"\end{array}$"
 
     def _repr_html_(self):
-        steps = [("Limb twist systems (LTS)", "limb", self.limb_twist_systems),
-                 ("Limb wrench systems (LWS)", "limb", self.limb_wrench_systems),
-                 ("Platform wrench system (PWS)", "", [self.platform_wrench_system]),
-                 ("Platform twist system (PTS)", "", [self.platform_twist_system])]
+        steps = [
+            ("Limb twist systems (LTS)", "limb", self.limb_twist_systems),
+            ("Limb wrench systems (LWS)", "limb", self.limb_wrench_systems),
+            ("Platform wrench system (PWS)", "", [self.platform_wrench_system]),
+            ("Platform twist system (PTS)", "", [self.platform_twist_system]),
+        ]
         rows = []
         for title, prefix, systems in steps:
             tables = "".join(
                 '<td style="vertical-align:top">'
-                + html_table(s.basis(), (f"{prefix} {i}: " if prefix else "") + f"{s.kind.kind} {s.rank}-system")
-                + "</td>" for i, s in enumerate(systems, 1))
-            rows.append(f"<p><b>{title}</b></p><div style=\"overflow-x:auto\"><table><tr>{tables}</tr></table></div>")
+                + html_table(
+                    s.basis(),
+                    (f"{prefix} {i}: " if prefix else "")
+                    + f"{s.kind.kind} {s.rank}-system",
+                )
+                + "</td>"
+                for i, s in enumerate(systems, 1)
+            )
+            rows.append(
+                f'<p><b>{title}</b></p><div style="overflow-x:auto"><table><tr>{tables}</tr></table></div>'
+            )
         title = f"Mobility {self.number} ({self.type}): {', '.join(self.directions) or 'none'}"
         notes = "".join(f"<p>{note}</p>" for note in self.notes)
-        return f"<div class=\"screwkit-mobility\">{''.join(rows)}<p><b>{title}</b></p>{notes}</div>"
+        return f'<div class="screwkit-mobility">{"".join(rows)}<p><b>{title}</b></p>{notes}</div>'
 
     def as_dict(self):
         """The paper's mobility dictionary: {'Number': ..., 'Type': ..., 'Direction': [...]}."""
-        return {"Number": self.number, "Type": self.type, "Direction": list(self.directions)}
+        return {
+            "Number": self.number,
+            "Type": self.type,
+            "Direction": list(self.directions),
+        }
 
 
 def _check_limbs(limbs):
@@ -119,14 +153,20 @@ def _check_limbs(limbs):
         raise ValueError(f"limbs must be a non-empty list of limbs, got {limbs!r}")
     for i, limb in enumerate(limbs):
         if not isinstance(limb, (list, tuple)) or not limb:
-            raise ValueError(f"limb {i} must be a non-empty list of (s, r, h) joint screws, got {limb!r}")
+            raise ValueError(
+                f"limb {i} must be a non-empty list of (s, r, h) joint screws, got {limb!r}"
+            )
         for j, joint in enumerate(limb):
             if isinstance(joint, Screw):
                 if isinstance(joint, Wrench):
-                    raise TypeError(f"limb {i}, joint {j} is a wrench; a limb is made of joint twists")
+                    raise TypeError(
+                        f"limb {i}, joint {j} is a wrench; a limb is made of joint twists"
+                    )
                 continue
             if not isinstance(joint, (list, tuple)) or len(joint) != 3:
-                raise TypeError(f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got {joint!r}")
+                raise TypeError(
+                    f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got {joint!r}"
+                )
 
 
 _NOT_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
@@ -148,7 +188,12 @@ def _twist(joint, i, j):
         return Twist._checked(joint.vector)
     s, r, h = joint
     direction, point = _checked_vector(s), _checked_vector(r)
-    if direction is not None and point is not None and any(e != 0 for e in direction) and (h is sp.oo or h == 0):
+    if (
+        direction is not None
+        and point is not None
+        and any(e != 0 for e in direction)
+        and (h is sp.oo or h == 0)
+    ):
         return Twist._checked(axis_coordinates(s, r, h))
     try:
         return Twist.from_axis(*joint)
@@ -198,8 +243,13 @@ def mobility(limbs, at=None, tol=None):
     if at is not None:
         return _at_configuration(limbs, at, tol)
     _check_limbs(limbs)
-    twists = [[_twist(joint, i, j) for j, joint in enumerate(limb)] for i, limb in enumerate(limbs)]
-    if _numeric.has_floats([e for limb in twists for t in limb for e in _exact.entries(t.vector)]):
+    twists = [
+        [_twist(joint, i, j) for j, joint in enumerate(limb)]
+        for i, limb in enumerate(limbs)
+    ]
+    if _numeric.has_floats(
+        [e for limb in twists for t in limb for e in _exact.entries(t.vector)]
+    ):
         return _mobility_of_floats(limbs, twists, tol)
 
     # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own symbols.
@@ -210,16 +260,37 @@ def mobility(limbs, at=None, tol=None):
         M = F.matrix(rows)
         independent = F.independent_rows(M)
         N = _exact.null_space(F, M.extract(list(range(M.shape[0])), _SWAP), independent)
-        wrenches = [Wrench._checked(sp.Matrix(6, 1, [F.to_sympy(e) for e in row])) for row in N.to_list()]
-        lts.append(ScrewSystem(limb, kind=Twist, _field=F, _rank=len(independent), _floats=False))
+        wrenches = [
+            Wrench._checked(sp.Matrix(6, 1, [F.to_sympy(e) for e in row]))
+            for row in N.to_list()
+        ]
+        lts.append(
+            ScrewSystem(
+                limb, kind=Twist, _field=F, _rank=len(independent), _floats=False
+            )
+        )
         lts_ranks.append(len(independent))
-        lws.append(ScrewSystem(wrenches, kind=Wrench, _rank=len(wrenches), _basis=wrenches, _floats=False))
+        lws.append(
+            ScrewSystem(
+                wrenches,
+                kind=Wrench,
+                _rank=len(wrenches),
+                _basis=wrenches,
+                _floats=False,
+            )
+        )
 
     # Steps 3 and 4: the platform's constraints, and the motions they leave.
     constraints = [w for system in lws for w in system.screws]
     pws = ScrewSystem(constraints, kind=Wrench, _floats=False)
-    pws = ScrewSystem(pws.basis(), kind=Wrench, _field=pws.field, _rank=pws.rank, _basis=pws.basis(),
-                      _floats=False)
+    pws = ScrewSystem(
+        pws.basis(),
+        kind=Wrench,
+        _field=pws.field,
+        _rank=pws.rank,
+        _basis=pws.basis(),
+        _floats=False,
+    )
     pts = pws.reciprocal()
     basis = pts.basis()
     rotations = _exact.generic_rank([list(t.primary) for t in basis]) if basis else 0
@@ -229,15 +300,25 @@ def mobility(limbs, at=None, tol=None):
 def _mobility_of_floats(limbs, twists, tol):
     """The four steps by SVD with the relative tolerance ``tol`` (limbs given with floats)."""
     for limb in twists:
-        _numeric.to_array([list(t.vector) for t in limb], "limbs")  # floats with symbols: refused
+        _numeric.to_array(
+            [list(t.vector) for t in limb], "limbs"
+        )  # floats with symbols: refused
     lts = [ScrewSystem(limb, kind=Twist, tol=tol) for limb in twists]
     lws = [system.reciprocal() for system in lts]
-    pws = ScrewSystem([w for system in lws for w in system.screws], kind=Wrench, tol=tol)
-    pws = ScrewSystem(pws.basis(), kind=Wrench, tol=tol, _rank=pws.rank, _basis=pws.basis())
+    pws = ScrewSystem(
+        [w for system in lws for w in system.screws], kind=Wrench, tol=tol
+    )
+    pws = ScrewSystem(
+        pws.basis(), kind=Wrench, tol=tol, _rank=pws.rank, _basis=pws.basis()
+    )
     pts = pws.reciprocal()
     basis = pts.basis()
-    angular = np.array([[float(e) for e in t.primary] for t in basis]).reshape(len(basis), 3)
-    return _result(limbs, lts, lws, pws, pts, [s.rank for s in lts], _numeric.rank(angular, tol))
+    angular = np.array([[float(e) for e in t.primary] for t in basis]).reshape(
+        len(basis), 3
+    )
+    return _result(
+        limbs, lts, lws, pws, pts, [s.rank for s in lts], _numeric.rank(angular, tol)
+    )
 
 
 def _limb_symbols(limbs):
@@ -248,8 +329,14 @@ def _limb_symbols(limbs):
             for part in parts:
                 if isinstance(part, sp.Basic):
                     found |= part.free_symbols
-                elif isinstance(part, sp.MatrixBase) or isinstance(part, (list, tuple, np.ndarray)):
-                    for e in (part.flat() if isinstance(part, sp.MatrixBase) else np.ravel(np.asarray(part, dtype=object))):
+                elif isinstance(part, sp.MatrixBase) or isinstance(
+                    part, (list, tuple, np.ndarray)
+                ):
+                    for e in (
+                        part.flat()
+                        if isinstance(part, sp.MatrixBase)
+                        else np.ravel(np.asarray(part, dtype=object))
+                    ):
                         if isinstance(e, sp.Basic):
                             found |= e.free_symbols
     return found
@@ -263,13 +350,17 @@ def _check_at(limbs, at):
     symbols = _limb_symbols(limbs)
     unknown = sorted(str(k) for k in at if k not in symbols)
     if unknown:
-        raise ValueError(f"at gives values for {unknown}, which are not symbols of the limbs "
-                         f"(their symbols are {sorted(map(str, symbols))})")
+        raise ValueError(
+            f"at gives values for {unknown}, which are not symbols of the limbs "
+            f"(their symbols are {sorted(map(str, symbols))})"
+        )
     values = {}
     for key, value in at.items():
         name = f"at[{key}]"
         if isinstance(value, (bool, np.bool_)) or isinstance(value, (str, bytes)):
-            raise TypeError(f"{name} must be a number or a SymPy expression, got {describe(value)}")
+            raise TypeError(
+                f"{name} must be a number or a SymPy expression, got {describe(value)}"
+            )
         if isinstance(value, (float, np.floating)):
             if not np.isfinite(value):
                 raise ValueError(f"{name} must be finite, got {value!r}")
@@ -278,7 +369,9 @@ def _check_at(limbs, at):
             values[key] = sp.Integer(int(value))
         else:
             expr = as_sympy_scalar(value, name)
-            values[key] = expr.xreplace({f: sp.Rational(f) for f in expr.atoms(sp.Float)})
+            values[key] = expr.xreplace(
+                {f: sp.Rational(f) for f in expr.atoms(sp.Float)}
+            )
     return values
 
 
@@ -292,34 +385,57 @@ def _at_configuration(limbs, at, tol):
             return Twist(sp.Matrix(joint.vector).subs(values))
         s, r, h = joint
         h = h if h is sp.oo or not isinstance(h, sp.Basic) else h.subs(values)
-        return (as_sympy_matrix(s, "s", (3, 1)).subs(values), as_sympy_matrix(r, "r", (3, 1)).subs(values), h)
+        return (
+            as_sympy_matrix(s, "s", (3, 1)).subs(values),
+            as_sympy_matrix(r, "r", (3, 1)).subs(values),
+            h,
+        )
 
     general = mobility(limbs, tol=tol)
-    special = mobility([[substitute(joint) for joint in limb] for limb in limbs], tol=tol)
+    special = mobility(
+        [[substitute(joint) for joint in limb] for limb in limbs], tol=tol
+    )
     here = f"{special.number} ({special.type}: {', '.join(special.directions)})"
     there = f"{general.number} ({general.type}: {', '.join(general.directions)})"
-    if (special.number, special.type, special.directions) == (general.number, general.type, general.directions):
-        special.notes.append(f"general configuration: the mobility at these values, {here}, is the general one")
+    if (special.number, special.type, special.directions) == (
+        general.number,
+        general.type,
+        general.directions,
+    ):
+        special.notes.append(
+            f"general configuration: the mobility at these values, {here}, is the general one"
+        )
     else:
         change = "changes"
         if special.number != general.number:
             change = "gains" if special.number > general.number else "loses"
-        special.notes.append(f"singular configuration: the platform {change} freedoms here, {here}, "
-                             f"against {there} in the general configuration")
-    ranks = [w.rank for w in special.limb_wrench_systems], [w.rank for w in general.limb_wrench_systems]
+        special.notes.append(
+            f"singular configuration: the platform {change} freedoms here, {here}, "
+            f"against {there} in the general configuration"
+        )
+    ranks = (
+        [w.rank for w in special.limb_wrench_systems],
+        [w.rank for w in general.limb_wrench_systems],
+    )
     if ranks[0] != ranks[1]:
-        special.notes.append(f"limb wrench system ranks {ranks[0]} here, {ranks[1]} in general "
-                             "(a limb gains or loses constraints)")
+        special.notes.append(
+            f"limb wrench system ranks {ranks[0]} here, {ranks[1]} in general "
+            "(a limb gains or loses constraints)"
+        )
     if special.platform_wrench_system.rank != general.platform_wrench_system.rank:
-        special.notes.append(f"platform wrench system rank {special.platform_wrench_system.rank} here, "
-                             f"{general.platform_wrench_system.rank} in general")
+        special.notes.append(
+            f"platform wrench system rank {special.platform_wrench_system.rank} here, "
+            f"{general.platform_wrench_system.rank} in general"
+        )
     return special
 
 
 def _result(limbs, lts, lws, pws, pts, lts_ranks, rotations):
     basis = pts.basis()
     translations = len(basis) - rotations
-    kind = (f"{translations}T" if translations else "") + (f"{rotations}R" if rotations else "") or "0"
+    kind = (f"{translations}T" if translations else "") + (
+        f"{rotations}R" if rotations else ""
+    ) or "0"
     names = [_describe(t.vector) for t in basis]
     directions = sorted(names, key=lambda n: (not n.startswith("T"), n))
     joints = [len(limb) for limb in limbs]
@@ -328,8 +444,16 @@ def _result(limbs, lts, lws, pws, pts, lts_ranks, rotations):
     redundant = sum(w.rank for w in lws) - pws.rank
     idle = sum(j - r for j, r in zip(joints, lts_ranks))
     return Mobility(
-        number=len(basis), type=kind, directions=directions, limb_twist_systems=lts,
-        limb_wrench_systems=lws, platform_wrench_system=pws, platform_twist_system=pts,
-        joints_per_limb=joints, limb_twist_ranks=lts_ranks, grubler_kutzbach=gk,
-        redundant_constraints=redundant, idle_mobility=idle,
+        number=len(basis),
+        type=kind,
+        directions=directions,
+        limb_twist_systems=lts,
+        limb_wrench_systems=lws,
+        platform_wrench_system=pws,
+        platform_twist_system=pts,
+        joints_per_limb=joints,
+        limb_twist_ranks=lts_ranks,
+        grubler_kutzbach=gk,
+        redundant_constraints=redundant,
+        idle_mobility=idle,
     )

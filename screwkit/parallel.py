@@ -32,10 +32,8 @@ from . import _parallel_search
 from ._checks import (
     as_float_array,
     check_integer,
-    check_rotation,
     check_option,
-    check_transform,
-    describe,
+    check_rotation,
     is_symbolic,
 )
 from ._parallel_catalogue import (

@@ -18,6 +18,7 @@ Lengths in metres, angles in radians, time in seconds.
 >>> bool(run.error.max() < 1e-4), run.q.shape
 (True, (501, 3))
 """
+
 import functools
 from dataclasses import dataclass
 
@@ -34,11 +35,22 @@ from ._checks import (
 )
 from .chains import Joint
 
-__all__ = ["Path", "circle", "line", "timing", "planar_kinematics", "manipulability_gradient",
-           "pseudo_inverse", "start_configuration", "Resolution", "resolve"]
+__all__ = [
+    "Path",
+    "circle",
+    "line",
+    "timing",
+    "planar_kinematics",
+    "manipulability_gradient",
+    "pseudo_inverse",
+    "start_configuration",
+    "Resolution",
+    "resolve",
+]
 
 
 # ---- paths ---------------------------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class Path:
@@ -56,22 +68,28 @@ class Path:
     def __post_init__(self):
         t = np.array(as_float_array(self.t, "t"))
         if t.ndim != 1 or t.size < 2:
-            raise ValueError(f"t must be a 1-D array of at least two sample times (s), got shape {t.shape}")
+            raise ValueError(
+                f"t must be a 1-D array of at least two sample times (s), got shape {t.shape}"
+            )
         steps = np.diff(t)
         dt = steps[0]
         if dt <= 0:
-            raise ValueError(f"t must increase: the time step dt must be positive, got dt = {dt!r} s")
+            raise ValueError(
+                f"t must increase: the time step dt must be positive, got dt = {dt!r} s"
+            )
         if not np.allclose(steps, dt, rtol=1e-9, atol=0):
             worst = int(np.argmax(np.abs(steps - dt)))
             raise ValueError(
                 f"t must be uniform (one time step dt = {dt:.6g} s), but the step after sample "
-                f"{worst} is {steps[worst]:.6g} s")
+                f"{worst} is {steps[worst]:.6g} s"
+            )
         for field in ("position", "velocity"):
             array = np.array(as_float_array(getattr(self, field), field))
             if array.shape != (t.size, 2):
                 raise ValueError(
                     f"{field} must have shape ({t.size}, 2), one planar point per sample of t, "
-                    f"got shape {array.shape}")
+                    f"got shape {array.shape}"
+                )
             object.__setattr__(self, field, array)
         if not isinstance(self.name, str):
             raise TypeError(f"name must be a string, got {describe(self.name)}")
@@ -93,11 +111,15 @@ def timing(t, duration, kind="smooth"):
     duration = check_positive(duration, "duration")
     t = as_float_array(t, "t")
     if t.size and (t.min() < 0 or t.max() > duration * (1 + 1e-9)):
-        raise ValueError(f"t must lie in [0, duration] = [0, {duration:g}] s, "
-                         f"got values from {t.min():g} to {t.max():g} s")
+        raise ValueError(
+            f"t must lie in [0, duration] = [0, {duration:g}] s, "
+            f"got values from {t.min():g} to {t.max():g} s"
+        )
     u = t / duration
     if kind == "smooth":
-        return 10 * u**3 - 15 * u**4 + 6 * u**5, (30 * u**2 - 60 * u**3 + 30 * u**4) / duration
+        return 10 * u**3 - 15 * u**4 + 6 * u**5, (
+            30 * u**2 - 60 * u**3 + 30 * u**4
+        ) / duration
     if kind == "constant":
         return u, np.full_like(u, 1.0 / duration)
 
@@ -110,11 +132,15 @@ def _samples(duration, dt):
     duration = check_positive(duration, "duration")
     dt = check_positive(dt, "dt")
     if duration / dt > MAX_SAMPLES:
-        raise ValueError(f"duration / dt must be at most {MAX_SAMPLES:,} steps, got {duration / dt:.3g} "
-                         f"(duration={duration} s, dt={dt} s); use a larger dt")
+        raise ValueError(
+            f"duration / dt must be at most {MAX_SAMPLES:,} steps, got {duration / dt:.3g} "
+            f"(duration={duration} s, dt={dt} s); use a larger dt"
+        )
     steps = int(round(duration / dt))
     if steps < 1 or not np.isclose(steps * dt, duration, rtol=1e-9, atol=0):
-        raise ValueError(f"duration must be a whole number of steps dt, got duration={duration} and dt={dt}")
+        raise ValueError(
+            f"duration must be a whole number of steps dt, got duration={duration} and dt={dt}"
+        )
     return np.arange(steps + 1) * dt, duration
 
 
@@ -128,7 +154,12 @@ def circle(center, radius, duration, dt, timing_kind="smooth"):
     angle = 2 * np.pi * s
     direction = np.stack([np.cos(angle), np.sin(angle)], axis=-1)
     tangent = np.stack([-np.sin(angle), np.cos(angle)], axis=-1)
-    return Path(t, center + radius * direction, (2 * np.pi * radius * ds)[:, None] * tangent, "circle")
+    return Path(
+        t,
+        center + radius * direction,
+        (2 * np.pi * radius * ds)[:, None] * tangent,
+        "circle",
+    )
 
 
 def line(start, end, duration, dt, timing_kind="smooth"):
@@ -139,30 +170,41 @@ def line(start, end, duration, dt, timing_kind="smooth"):
         raise ValueError(f"start and end must differ, got {start.tolist()} twice")
     t, duration = _samples(duration, dt)
     s, ds = timing(t, duration, timing_kind)
-    return Path(t, start + s[:, None] * (end - start), ds[:, None] * (end - start), "line")
+    return Path(
+        t, start + s[:, None] * (end - start), ds[:, None] * (end - start), "line"
+    )
 
 
 def _point(value, name):
     point = as_float_array(value, name)
     if point.shape != (2,):
-        raise ValueError(f"{name} must be a planar point (x, y), shape (2,), got shape {point.shape}")
+        raise ValueError(
+            f"{name} must be a planar point (x, y), shape (2,), got shape {point.shape}"
+        )
     return point
 
 
 # ---- planar kinematics ---------------------------------------------------------------------
 
+
 def _lengths(arm):
     """The link lengths of a planar arm (a Chain of revolute links with d = 0 and alpha = 0)."""
     check_chain(arm, "arm")
     try:
-        planar = all(link.joint is Joint.REVOLUTE and float(link.d) == 0 and float(link.alpha) == 0
-                     and float(link.offset) == 0 for link in arm.links)
+        planar = all(
+            link.joint is Joint.REVOLUTE
+            and float(link.d) == 0
+            and float(link.alpha) == 0
+            and float(link.offset) == 0
+            for link in arm.links
+        )
         lengths = np.array([float(link.a) for link in arm.links])
-    except (TypeError, ValueError):     # a symbolic link length
+    except (TypeError, ValueError):  # a symbolic link length
         planar = False
     if not planar or not np.allclose(arm.tool, np.eye(4)):
         raise ValueError(
-            f"arm must be a planar arm of revolute links about z (sk.robots.planar), got {arm!r}")
+            f"arm must be a planar arm of revolute links about z (sk.robots.planar), got {arm!r}"
+        )
     return lengths
 
 
@@ -170,7 +212,9 @@ def _base_2d(arm):
     """The arm's base as a planar rotation (2, 2) and origin (2,); an error if it is not planar."""
     B = arm.base
     if not (np.allclose(B[2], [0, 0, 1, 0]) and np.allclose(B[:2, 2], 0)):
-        raise ValueError("arm.base must be a rotation about z and a translation in the x-y plane")
+        raise ValueError(
+            "arm.base must be a rotation about z and a translation in the x-y plane"
+        )
     return B[:2, :2], B[:2, 3]
 
 
@@ -184,8 +228,10 @@ def planar_kinematics(lengths, q):
     lengths, q = _lengths_and_q(lengths, q)
     angles = np.cumsum(q, axis=-1)
     links = lengths[:, None] * np.stack([np.cos(angles), np.sin(angles)], axis=-1)
-    points = np.concatenate([np.zeros(links.shape[:-2] + (1, 2)), np.cumsum(links, axis=-2)], axis=-2)
-    r = points[..., -1:, :] - points[..., :-1, :]       # from each joint to the end effector
+    points = np.concatenate(
+        [np.zeros(links.shape[:-2] + (1, 2)), np.cumsum(links, axis=-2)], axis=-2
+    )
+    r = points[..., -1:, :] - points[..., :-1, :]  # from each joint to the end effector
     J = np.stack([-r[..., 1], r[..., 0]], axis=-2)
     return points, J
 
@@ -204,13 +250,17 @@ def manipulability_gradient(lengths, q):
 def _lengths_and_q(lengths, q):
     lengths = as_float_array(lengths, "lengths")
     if lengths.ndim != 1 or lengths.size < 1:
-        raise ValueError(f"lengths must be a 1-D array of link lengths (m), got shape {lengths.shape}")
+        raise ValueError(
+            f"lengths must be a 1-D array of link lengths (m), got shape {lengths.shape}"
+        )
     if np.any(lengths < 0):
         raise ValueError(f"lengths must be >= 0 (m), got {lengths.tolist()}")
     q = as_float_array(q, "q")
     if q.ndim not in (1, 2) or q.shape[-1] != lengths.size:
-        raise ValueError(f"q must have {lengths.size} entries, one per length, shape ({lengths.size},) "
-                         f"or (N, {lengths.size}), got shape {q.shape}")
+        raise ValueError(
+            f"q must have {lengths.size} entries, one per length, shape ({lengths.size},) "
+            f"or (N, {lengths.size}), got shape {q.shape}"
+        )
     return lengths, q
 
 
@@ -218,13 +268,18 @@ def _gradient(points):
     """w and dw/dq from the joint positions (..., n + 1, 2) of planar_kinematics."""
     r = points[..., -1:, :] - points[..., :-1, :]
     n = r.shape[-2]
-    G = r @ np.swapaxes(r, -1, -2)                                   # r_i . r_j
-    M = r[..., :, None, 0] * r[..., None, :, 1] - r[..., :, None, 1] * r[..., None, :, 0]   # r_i x r_j
+    G = r @ np.swapaxes(r, -1, -2)  # r_i . r_j
+    M = (
+        r[..., :, None, 0] * r[..., None, :, 1]
+        - r[..., :, None, 1] * r[..., None, :, 0]
+    )  # r_i x r_j
     first, second = _gradient_indices(n)
-    dM = G[(Ellipsis, *first)] - G[(Ellipsis, *second)]              # (..., k, i, j)
+    dM = G[(Ellipsis, *first)] - G[(Ellipsis, *second)]  # (..., k, i, j)
     w2 = 0.5 * np.sum(M**2, axis=(-1, -2))
     w = np.sqrt(w2)
-    dw2 = np.sum(M[..., None, :, :] * dM, axis=(-1, -2))             # d(w^2)/dq_k = sum_ij m_ij dm_ij
+    dw2 = np.sum(
+        M[..., None, :, :] * dM, axis=(-1, -2)
+    )  # d(w^2)/dq_k = sum_ij m_ij dm_ij
     with np.errstate(divide="ignore", invalid="ignore"):
         gradient = np.where(w[..., None] > 0, dw2 / (2 * w[..., None]), 0.0)
     return w[()], gradient
@@ -246,12 +301,17 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
     """
     J = as_float_array(J, "J")
     if J.ndim != 2 or J.shape[0] != 2 or J.shape[1] < 1:
-        raise ValueError(f"J must be a planar Jacobian of shape (2, n), got shape {J.shape}")
+        raise ValueError(
+            f"J must be a planar Jacobian of shape (2, n), got shape {J.shape}"
+        )
     damping = check_positive(damping, "damping", allow_zero=True)
     singular_region = check_positive(singular_region, "singular_region")
     A = J @ J.T
     if damping > 0:
-        half_trace, det = 0.5 * (A[0, 0] + A[1, 1]), A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
+        half_trace, det = (
+            0.5 * (A[0, 0] + A[1, 1]),
+            A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0],
+        )
         sigma_min2 = half_trace - np.sqrt(max(half_trace**2 - det, 0.0))
         if sigma_min2 < singular_region**2:
             A = A + damping**2 * (1 - sigma_min2 / singular_region**2) * np.eye(2)
@@ -264,6 +324,7 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
 
 # ---- resolution ----------------------------------------------------------------------------
 
+
 def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
     """Joint angles that put the end effector at ``point`` (2,), by Newton steps with the
     pseudo-inverse from ``q_guess`` (n,); the nearest solution to the guess, roughly.
@@ -272,7 +333,7 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
     point out of reach, or one not reached in time, is a ValueError with the residual.
     """
     lengths = _lengths(arm)
-    q = np.array(arm.check_one(q_guess, "q_guess"))     # a copy: the caller's array stays
+    q = np.array(arm.check_one(q_guess, "q_guess"))  # a copy: the caller's array stays
     point = _point(point, "point")
     tol = check_positive(tol, "tol")
     max_iterations = check_integer(max_iterations, "max_iterations", minimum=1)
@@ -284,9 +345,11 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
         if error < tol:
             return q
         q += pseudo_inverse(J, damping=0.01) @ (target - points[-1])
-    raise ValueError(f"point must be reachable from q_guess: no configuration found that reaches "
-                     f"point {np.round(point, 6).tolist()} in {max_iterations} iterations, got a "
-                     f"residual of {error:.3g} m")
+    raise ValueError(
+        f"point must be reachable from q_guess: no configuration found that reaches "
+        f"point {np.round(point, 6).tolist()} in {max_iterations} iterations, got a "
+        f"residual of {error:.3g} m"
+    )
 
 
 @dataclass(frozen=True)
@@ -307,8 +370,18 @@ class Resolution:
     path: Path
 
 
-def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0, joint_limits=None,
-            limit_gain=0.1, max_rate=5.0, start_tolerance=1e-3):
+def resolve(
+    arm,
+    path,
+    q0,
+    null_space_gain=0.0,
+    feedback_gain=50.0,
+    damping=0.0,
+    joint_limits=None,
+    limit_gain=0.1,
+    max_rate=5.0,
+    start_tolerance=1e-3,
+):
     """Follow ``path`` with the end effector of the planar ``arm`` from ``q0`` (n,).
 
     Euler steps q_{k+1} = q_k + qdot dt with qdot = J+ (xdot_d + K e) + (I - J+ J) phi, where
@@ -330,7 +403,9 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     """
     lengths = _lengths(arm)
     if not isinstance(path, Path):
-        raise TypeError(f"path must be a Path (from circle or line), got {describe(path)}")
+        raise TypeError(
+            f"path must be a Path (from circle or line), got {describe(path)}"
+        )
     q = arm.check_one(q0, "q0")
     joint_limits = check_option(joint_limits, "joint_limits", (None, "clamp", "avoid"))
     null_space_gain = as_real_scalar(null_space_gain, "null_space_gain")
@@ -342,15 +417,19 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     dt = path.dt
     if not feedback_gain * dt < 2:
         raise ValueError(
-            f"feedback_gain * dt must be in [0, 2) for a stable loop, got {feedback_gain} * {dt}")
+            f"feedback_gain * dt must be in [0, 2) for a stable loop, got {feedback_gain} * {dt}"
+        )
     if joint_limits is not None and not arm.within_limits(q):
-        outside = [i for i in range(arm.n) if not arm.qlim[i, 0] <= q[i] <= arm.qlim[i, 1]]
+        outside = [
+            i for i in range(arm.n) if not arm.qlim[i, 0] <= q[i] <= arm.qlim[i, 1]
+        ]
         i = outside[0]
         raise ValueError(
             f"q0 must lie within the arm's joint limits when joint_limits={joint_limits!r}, but "
-            f"joint {i + 1} is {q[i]:.4f} rad, outside [{arm.qlim[i, 0]:.4f}, {arm.qlim[i, 1]:.4f}]")
+            f"joint {i + 1} is {q[i]:.4f} rad, outside [{arm.qlim[i, 0]:.4f}, {arm.qlim[i, 1]:.4f}]"
+        )
     R, origin = _base_2d(arm)
-    target = (path.position - origin) @ R                   # the path in the arm's base frame
+    target = (path.position - origin) @ R  # the path in the arm's base frame
     velocity = path.velocity @ R
     _check_reachable(lengths, target, path)
     start = planar_kinematics(lengths, q)[0][-1]
@@ -360,7 +439,8 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
             f"path's start {np.round(path.position[0], 4).tolist()}, got "
             f"{np.round(start @ R.T + origin, 4).tolist()} m, "
             f"{np.linalg.norm(start - target[0]):.4f} m from the path's start; "
-            "use start_configuration(arm, path.position[0], q_guess)")
+            "use start_configuration(arm, path.position[0], q_guess)"
+        )
     low, high = arm.qlim[:, 0], arm.qlim[:, 1]
     finite = np.isfinite(low) & np.isfinite(high)
 
@@ -393,14 +473,26 @@ def resolve(arm, path, q0, null_space_gain=0.0, feedback_gain=50.0, damping=0.0,
     points, _ = planar_kinematics(lengths, Q)
     w, _ = _gradient(points)
     position = points[:, -1] @ R.T + origin
-    return Resolution(path.t, Q, position, np.linalg.norm(position - path.position, axis=-1), w, limited, path)
+    return Resolution(
+        path.t,
+        Q,
+        position,
+        np.linalg.norm(position - path.position, axis=-1),
+        w,
+        limited,
+        path,
+    )
 
 
 def _limit_gradient(q, low, high, finite):
     """grad H of H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)) over joints with finite limits."""
     low, high = np.where(finite, low, -1.0), np.where(finite, high, 1.0)
     inside = np.clip(q, low + 1e-9, high - 1e-9)
-    gradient = (high - low) ** 2 * (2 * inside - high - low) / (4 * (high - inside) ** 2 * (inside - low) ** 2)
+    gradient = (
+        (high - low) ** 2
+        * (2 * inside - high - low)
+        / (4 * (high - inside) ** 2 * (inside - low) ** 2)
+    )
     return np.where(finite, gradient, 0.0)
 
 
@@ -416,4 +508,5 @@ def _check_reachable(lengths, target, path):
             f"path must stay in the reachable annulus {inner:.4f} m <= |p| <= {outer:.4f} m around "
             f"the arm's base, got {outside.size} of {len(radius)} samples outside it (the path "
             f"leaves the reachable annulus), the first at t = {path.t[i]:.3f} s, "
-            f"point {np.round(path.position[i], 4).tolist()} m, |p| = {radius[i]:.4f} m")
+            f"point {np.round(path.position[i], 4).tolist()} m, |p| = {radius[i]:.4f} m"
+        )

@@ -5,23 +5,47 @@ limbs, each a list of (s, r, h) joint screws in the fixed frame, with the paper'
 for lengths (a, b, L, R, ...), actuated displacements d_i and joint angles theta_ij.
 Serial arms are :class:`~screwkit.chains.Chain` objects (SI units).
 """
+
 import numpy as np
 import sympy as sp
 
 from ._checks import as_float_array, as_real_scalar, describe
 from .chains import Chain, Convention, Link
-
 from .limbs import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .parallel import delta, planar_3rpr, stewart_gough, tripteron
 from .parallel import planar_3rrr as parallel_3rrr
 from .transforms import rot_axis, rotx, roty, rotz, transl
 
-__all__ = ["puma560", "kawasaki_cx210l", "planar", "two_arm_planar", "pm_3prrr", "pm_3prpar", "pm_4prru",
-           "pm_6ups", "planar_3rrr", "pm_3rps", "pm_3ruu", "spherical_3rrr", "PAPER_GRUBLER_KUTZBACH",
-           "DRAWING_VALUES"]
-__all__ += ["stewart_gough", "planar_3rpr", "parallel_3rrr", "delta", "tripteron"]  # sk.parallel
+__all__ = [
+    "puma560",
+    "kawasaki_cx210l",
+    "planar",
+    "two_arm_planar",
+    "pm_3prrr",
+    "pm_3prpar",
+    "pm_4prru",
+    "pm_6ups",
+    "planar_3rrr",
+    "pm_3rps",
+    "pm_3ruu",
+    "spherical_3rrr",
+    "PAPER_GRUBLER_KUTZBACH",
+    "DRAWING_VALUES",
+]
+__all__ += [
+    "stewart_gough",
+    "planar_3rpr",
+    "parallel_3rrr",
+    "delta",
+    "tripteron",
+]  # sk.parallel
 
-X, Y, Z, O = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1]), sp.zeros(3, 1)
+X, Y, Z, O = (
+    sp.Matrix([1, 0, 0]),
+    sp.Matrix([0, 1, 0]),
+    sp.Matrix([0, 0, 1]),
+    sp.zeros(3, 1),
+)
 
 #: The paper's Grübler–Kutzbach inputs (links with base and platform, joints, freedoms) and counts.
 PAPER_GRUBLER_KUTZBACH = {
@@ -36,27 +60,69 @@ PAPER_GRUBLER_KUTZBACH = {
 #: Every limb gets the same values, so the symmetric limbs end on a regular polygon: the drawn
 #: platform is rigid. Keys are the builders' names.
 DRAWING_VALUES = {
-    "pm_3prrr": {"a": 0.45, "b": 0.45, "L_y": 1.0, "L_z": 1.0, "d_1": 0.4, "d_2": 0.4, "d_3": 0.4,
-                 **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((2, 0.6), (3, -0.5))}},
-    "pm_3prpar": {"L": 0.7, "b": 0.25, "d_1": 0.8, "d_2": 0.8, "d_3": 0.8,
-                  **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((2, 0.9), (3, 0.6))}},
-    "pm_4prru": {"R": 1.0, "a": 0.35, "b": 0.35, "alpha": 0.3,
-                 **{f"d_{i}": 0.3 for i in (1, 2, 3, 4)},
-                 **{f"theta_{i}{j}": v for i in (1, 2, 3, 4) for j, v in ((2, 2.3), (3, 2.8))}},
-    "pm_6ups": {"R": 1.0, **{f"d_{i}": 1.1 for i in range(1, 7)},
-                **{f"theta_{i}{j}": v for i in range(1, 7) for j, v in ((1, 0.15), (2, -0.45))}},
-    "planar_3rrr": {"a": 0.6, "b": 0.5,
-                    **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 2.2), (2, 3.4))}},
-    "pm_3rps": {"R": 1.0, **{f"d_{i}": 1.0 for i in (1, 2, 3)}, **{f"theta_{i}": 0.35 for i in (1, 2, 3)}},
-    "pm_3ruu": {"R": 1.0, "a": 0.5, "b": 0.8,
-                **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 0.5), (2, 0.3), (3, 2.2))}},
-    "spherical_3rrr": {f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 0.6), (2, 0.8))},
+    "pm_3prrr": {
+        "a": 0.45,
+        "b": 0.45,
+        "L_y": 1.0,
+        "L_z": 1.0,
+        "d_1": 0.4,
+        "d_2": 0.4,
+        "d_3": 0.4,
+        **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((2, 0.6), (3, -0.5))},
+    },
+    "pm_3prpar": {
+        "L": 0.7,
+        "b": 0.25,
+        "d_1": 0.8,
+        "d_2": 0.8,
+        "d_3": 0.8,
+        **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((2, 0.9), (3, 0.6))},
+    },
+    "pm_4prru": {
+        "R": 1.0,
+        "a": 0.35,
+        "b": 0.35,
+        "alpha": 0.3,
+        **{f"d_{i}": 0.3 for i in (1, 2, 3, 4)},
+        **{f"theta_{i}{j}": v for i in (1, 2, 3, 4) for j, v in ((2, 2.3), (3, 2.8))},
+    },
+    "pm_6ups": {
+        "R": 1.0,
+        **{f"d_{i}": 1.1 for i in range(1, 7)},
+        **{f"theta_{i}{j}": v for i in range(1, 7) for j, v in ((1, 0.15), (2, -0.45))},
+    },
+    "planar_3rrr": {
+        "a": 0.6,
+        "b": 0.5,
+        **{f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 2.2), (2, 3.4))},
+    },
+    "pm_3rps": {
+        "R": 1.0,
+        **{f"d_{i}": 1.0 for i in (1, 2, 3)},
+        **{f"theta_{i}": 0.35 for i in (1, 2, 3)},
+    },
+    "pm_3ruu": {
+        "R": 1.0,
+        "a": 0.5,
+        "b": 0.8,
+        **{
+            f"theta_{i}{j}": v
+            for i in (1, 2, 3)
+            for j, v in ((1, 0.5), (2, 0.3), (3, 2.2))
+        },
+    },
+    "spherical_3rrr": {
+        f"theta_{i}{j}": v for i in (1, 2, 3) for j, v in ((1, 0.6), (2, 0.8))
+    },
 }
 
 
 def _symbols(names, limbs, first, last):
     """theta_{i j} for limbs i = 1..limbs and joints j = first..last."""
-    return [[sp.Symbol(f"theta_{i}{j}") for j in range(first, last + 1)] for i in range(1, limbs + 1)]
+    return [
+        [sp.Symbol(f"theta_{i}{j}") for j in range(first, last + 1)]
+        for i in range(1, limbs + 1)
+    ]
 
 
 def pm_3prrr():
@@ -71,7 +137,11 @@ def pm_3prrr():
         c, s = length * sp.cos(angle), length * sp.sin(angle)
         return sp.Matrix([[0, c, s], [s, 0, c], [c, s, 0]][i])
 
-    bases = [sp.Matrix([d[0], Ly, 0]), sp.Matrix([0, d[1], Lz]), sp.Matrix([0, 0, d[2]])]
+    bases = [
+        sp.Matrix([d[0], Ly, 0]),
+        sp.Matrix([0, d[1], Lz]),
+        sp.Matrix([0, 0, d[2]]),
+    ]
     limbs = []
     for i in range(3):
         A = bases[i]
@@ -97,12 +167,20 @@ def pm_3prpar():
         x = turn(X)
         # the parallelogram's axes Rx(t2) Y, and its long sides Rx(t2) Ry(t3) (L, 0, 0)
         w = turn([0, sp.cos(t2), sp.sin(t2)])
-        side = [L * sp.cos(t3), L * sp.sin(t2) * sp.sin(t3), -L * sp.cos(t2) * sp.sin(t3)]
+        side = [
+            L * sp.cos(t3),
+            L * sp.sin(t2) * sp.sin(t3),
+            -L * sp.cos(t2) * sp.sin(t3),
+        ]
         A0, A1, A2 = ([d[i] + shift, 0, 0] for shift in (0, -b / 2, b / 2))
         B0, B1, B2 = ([p + q for p, q in zip(A, side)] for A in (A0, A1, A2))
         A0, A1, A2, B0, B1, B2 = map(turn, (A0, A1, A2, B0, B1, B2))
-        limbs.append(prismatic(x, A0) + revolute(x, A0) + parallelogram(w, A1, A2, B1, B2)
-                     + revolute(x, B0))
+        limbs.append(
+            prismatic(x, A0)
+            + revolute(x, A0)
+            + parallelogram(w, A1, A2, B1, B2)
+            + revolute(x, B0)
+        )
     return limbs
 
 
@@ -113,7 +191,9 @@ def _turn_about_z(angle):
 
     def turn(v):
         x, y, z = v
-        return sp.Matrix([sp.expand(c * x - s * y), sp.expand(s * x + c * y), sp.expand(z)])
+        return sp.Matrix(
+            [sp.expand(c * x - s * y), sp.expand(s * x + c * y), sp.expand(z)]
+        )
 
     return turn
 
@@ -129,12 +209,16 @@ def pm_4prru():
     R, a, b, alpha = sp.symbols("R a b alpha")
     d = sp.symbols("d_1:5")
     theta = _symbols("theta", 4, 2, 3)
-    w = rotx(alpha) * Y  # the common direction of the three parallel R axes, (0, cos, sin)
+    w = (
+        rotx(alpha) * Y
+    )  # the common direction of the three parallel R axes, (0, cos, sin)
 
     def turned(length, angle):
         # length * X turned by angle about the unit axis w (Rodrigues, with w . X = 0):
         # cos(angle) X + sin(angle) w x X, written out so no trigonometric simplification runs
-        return length * sp.Matrix([sp.cos(angle), sp.sin(angle) * w[2], -sp.sin(angle) * w[1]])
+        return length * sp.Matrix(
+            [sp.cos(angle), sp.sin(angle) * w[2], -sp.sin(angle) * w[1]]
+        )
 
     limbs = []
     for i in range(4):
@@ -154,12 +238,15 @@ def pm_6ups():
     limbs = []
     for i in range(6):
         t1, t2 = theta[i]
-        frame = rotx(t1) * roty(t2)          # the leg's frame after the U joint
+        frame = rotx(t1) * roty(t2)  # the leg's frame after the U joint
         A = sp.Matrix([R, 0, 0])
         leg = frame * Z
         B = A + d[i] * leg
-        limb = (universal(X, rotx(t1) * Y, A) + prismatic(leg, A)
-                + spherical(B, axes=[frame * X, frame * Y, frame * Z]))
+        limb = (
+            universal(X, rotx(t1) * Y, A)
+            + prismatic(leg, A)
+            + spherical(B, axes=[frame * X, frame * Y, frame * Z])
+        )
         limbs.append(rotate_limb(limb, rotz(sp.pi * i / 3)))
     return limbs
 
@@ -239,7 +326,9 @@ def puma560():
     links = [
         Link.revolute(d=0, a=0, alpha=sp.pi / 2, qlim=(-160 * deg, 160 * deg)),
         Link.revolute(d=0, a=0.4318, alpha=0, qlim=(-45 * deg, 225 * deg)),
-        Link.revolute(d=0.15005, a=0.0203, alpha=-sp.pi / 2, qlim=(-225 * deg, 45 * deg)),
+        Link.revolute(
+            d=0.15005, a=0.0203, alpha=-sp.pi / 2, qlim=(-225 * deg, 45 * deg)
+        ),
         Link.revolute(d=0.4318, a=0, alpha=sp.pi / 2, qlim=(-110 * deg, 170 * deg)),
         Link.revolute(d=0, a=0, alpha=-sp.pi / 2, qlim=(-100 * deg, 100 * deg)),
         Link.revolute(d=0, a=0, alpha=0, qlim=(-266 * deg, 266 * deg)),
@@ -273,8 +362,10 @@ def kawasaki_cx210l():
         Link.revolute(alpha=-90 * deg),
         Link.revolute(d=0.235),
     ]
-    configurations = {f"table2_{k}": np.radians([0, 30, q3, 0, 0, 0])
-                      for k, q3 in enumerate((-90, -80, -70), start=1)}
+    configurations = {
+        f"table2_{k}": np.radians([0, 30, q3, 0, 0, 0])
+        for k, q3 in enumerate((-90, -80, -70), start=1)
+    }
     return Chain(links, name="Kawasaki CX210L", configurations=configurations)
 
 
@@ -286,16 +377,24 @@ def planar(lengths, qlim=None):
     planar Jacobian in their first two rows. ``qlim`` is (n, 2) in rad, or None.
     """
     if lengths is None or isinstance(lengths, (str, bytes)):
-        raise TypeError(f"lengths must be two or more positive link lengths (m), got "
-                        f"{describe(lengths)}")
+        raise TypeError(
+            f"lengths must be two or more positive link lengths (m), got "
+            f"{describe(lengths)}"
+        )
     values = as_float_array(lengths, "lengths")
     if values.ndim != 1 or values.size < 2 or np.any(values <= 0):
-        raise ValueError(f"lengths must be two or more positive link lengths (m), got {lengths!r}")
+        raise ValueError(
+            f"lengths must be two or more positive link lengths (m), got {lengths!r}"
+        )
     limits = [None] * values.size if qlim is None else as_float_array(qlim, "qlim")
     if qlim is not None and limits.shape != (values.size, 2):
-        raise ValueError(f"qlim must have shape ({values.size}, 2), got shape {limits.shape}")
-    links = [Link.revolute(a=float(a), qlim=None if lim is None else tuple(lim))
-             for a, lim in zip(values, limits)]
+        raise ValueError(
+            f"qlim must have shape ({values.size}, 2), got shape {limits.shape}"
+        )
+    links = [
+        Link.revolute(a=float(a), qlim=None if lim is None else tuple(lim))
+        for a, lim in zip(values, limits)
+    ]
     return Chain(links, name=f"planar {values.size}R")
 
 

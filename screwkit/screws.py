@@ -13,6 +13,7 @@ Matrix([[0, 0, 1, 0, -1, 0]])
 >>> t @ w
 1
 """
+
 import numpy as np
 import sympy as sp
 
@@ -54,7 +55,9 @@ class Screw:
         if _is_infinite_pitch(h):
             return cls._checked(axis_coordinates(s, None, sp.oo))
         if isinstance(h, str) or h is None:
-            raise TypeError(f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}")
+            raise TypeError(
+                f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}"
+            )
         h = as_sympy_scalar(h, "h")
         return cls._checked(axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), h))
 
@@ -84,8 +87,10 @@ class Screw:
     def _check_not_zero(self, quantity):
         """The zero screw has no axis: its pitch, direction and point are undefined."""
         if all(sp.simplify(e) == 0 for e in self.vector):
-            raise ValueError(f"the {quantity} of the zero {self.kind} is undefined: it has no "
-                             "axis (every coordinate is 0)")
+            raise ValueError(
+                f"the {quantity} of the zero {self.kind} is undefined: it has no "
+                "axis (every coordinate is 0)"
+            )
 
     @property
     def pitch(self):
@@ -131,9 +136,11 @@ class Screw:
 
     def _same_kind(self, other, operation):
         if not isinstance(other, Screw):
-            raise TypeError(f"cannot {operation} a {self.kind} and {describe(other)}: the other "
-                            f"operand must be a {self.kind} too (Twist.from_vector, "
-                            "Wrench.from_vector make one from a 6-vector)")
+            raise TypeError(
+                f"cannot {operation} a {self.kind} and {describe(other)}: the other "
+                f"operand must be a {self.kind} too (Twist.from_vector, "
+                "Wrench.from_vector make one from a 6-vector)"
+            )
         if type(other) is not type(self):
             raise TypeError(
                 f"cannot {operation} a {self.kind} and a {other.kind}: they live in different spaces "
@@ -160,10 +167,14 @@ class Screw:
 
     def __mul__(self, scalar):
         if isinstance(scalar, Screw):
-            raise TypeError(f"cannot multiply a {self.kind} by a {scalar.kind}: a {self.kind} must "
-                            "be scaled by one number (use @ for the reciprocal product)")
+            raise TypeError(
+                f"cannot multiply a {self.kind} by a {scalar.kind}: a {self.kind} must "
+                "be scaled by one number (use @ for the reciprocal product)"
+            )
         if isinstance(scalar, (sp.MatrixBase, list, tuple, np.ndarray)):
-            raise TypeError(f"a {self.kind} is scaled by one number, got {describe(scalar)}")
+            raise TypeError(
+                f"a {self.kind} is scaled by one number, got {describe(scalar)}"
+            )
         return type(self)(self.vector * as_sympy_scalar(scalar, "scalar"))
 
     __rmul__ = __mul__
@@ -171,9 +182,13 @@ class Screw:
     def __matmul__(self, other):
         """The reciprocal product s . s0' + s0 . s' (for a twist and a wrench: the power)."""
         if not isinstance(other, Screw):
-            raise TypeError(f"the reciprocal product @ takes two screws (a twist and a wrench), "
-                            f"got a {self.kind} and {describe(other)}")
-        return sp.expand(self.primary.dot(other.secondary) + self.secondary.dot(other.primary))
+            raise TypeError(
+                f"the reciprocal product @ takes two screws (a twist and a wrench), "
+                f"got a {self.kind} and {describe(other)}"
+            )
+        return sp.expand(
+            self.primary.dot(other.secondary) + self.secondary.dot(other.primary)
+        )
 
     def transform(self, T):
         """This screw written in another frame: Ad(T) $ for the pose T (4, 4) of its frame there.
@@ -183,10 +198,14 @@ class Screw:
         as the transposed adjoint: F_b = Ad(T_ab)^T F_a). Exact for a SymPy T; a float T gives
         Float coordinates.
         """
-        T = check_transform(T if isinstance(T, sp.MatrixBase) else as_float_array(T, "T"), "T")
+        T = check_transform(
+            T if isinstance(T, sp.MatrixBase) else as_float_array(T, "T"), "T"
+        )
         if not isinstance(T, sp.MatrixBase):
             if T.shape != (4, 4):
-                raise ValueError(f"T must be one pose of shape (4, 4), got shape {T.shape}")
+                raise ValueError(
+                    f"T must be one pose of shape (4, 4), got shape {T.shape}"
+                )
             T = sp.Matrix(T)
         return type(self)._checked((adjoint(T) * self.vector).applyfunc(sp.expand))
 

@@ -39,6 +39,7 @@ The singular cases, where labels tie or angles are free, follow one documented r
 Round-off that pushes a square-root or arccos argument just outside its range (by less than
 :data:`CLIP_TOL`, relative) is clipped: a pose on a singularity is solved, not dropped.
 """
+
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -75,25 +76,25 @@ WRIST_TOL = 1e-10
 
 
 class _Shoulder(NamedTuple):
-    theta: np.ndarray   # (N, 2) = -q1 for the arm l, r
+    theta: np.ndarray  # (N, 2) = -q1 for the arm l, r
     ct: np.ndarray
     st: np.ndarray
     turn1: "_Rotor"
-    b1: np.ndarray      # (3, N, 2) the wrist centre at q1 = 0, from axis 2
-    ok: np.ndarray      # (N,) reached
+    b1: np.ndarray  # (3, N, 2) the wrist centre at q1 = 0, from axis 2
+    ok: np.ndarray  # (N,) reached
     forward: np.ndarray
 
 
 class _Elbow(NamedTuple):
-    q3: np.ndarray      # (N, 2, 2) arm, candidate
+    q3: np.ndarray  # (N, 2, 2) arm, candidate
     s3: float
     u3: np.ndarray
     cosine: np.ndarray  # (N, 2)
-    ok: np.ndarray      # (N, 2)
+    ok: np.ndarray  # (N, 2)
 
 
 class _Arm(NamedTuple):
-    q2: np.ndarray      # (N, 2, 2) arm, elbow u/d
+    q2: np.ndarray  # (N, 2, 2) arm, elbow u/d
     c2: np.ndarray
     s2: np.ndarray
     q3: np.ndarray
@@ -102,7 +103,7 @@ class _Arm(NamedTuple):
 
 
 class _Wrist(NamedTuple):
-    q4: np.ndarray      # (N, 2, 2, 2) arm, elbow, wrist n/f
+    q4: np.ndarray  # (N, 2, 2, 2) arm, elbow, wrist n/f
     c4: np.ndarray
     s4: np.ndarray
     q5: np.ndarray
@@ -156,8 +157,11 @@ class _Rotor:
     def rotate(self, v, cos, sin):
         """v (3, ...) turned about w by the angles with these cosines and sines (...)."""
         along = _dot(self.w, v) * (1 - cos)
-        return (v * cos + _apply(self.K, v) * sin
-                + self.w.reshape((3,) + (1,) * along.ndim) * along)
+        return (
+            v * cos
+            + _apply(self.K, v) * sin
+            + self.w.reshape((3,) + (1,) * along.ndim) * along
+        )
 
 
 @dataclass(frozen=True)
@@ -179,49 +183,72 @@ class SphericalWristArm:
     def from_chain(cls, chain, name="chain"):
         check_chain(chain, name)
         if chain.n != 6:
-            raise ValueError(f"{name} must have 6 joints for the closed form, got {chain.n}")
+            raise ValueError(
+                f"{name} must have 6 joints for the closed form, got {chain.n}"
+            )
         kinds = [i + 1 for i, j in enumerate(chain.joints) if j is not Joint.REVOLUTE]
         if kinds:
-            raise ValueError(f"{name} must have revolute joints only, got other joints at "
-                             f"positions {kinds}")
+            raise ValueError(
+                f"{name} must have revolute joints only, got other joints at "
+                f"positions {kinds}"
+            )
         S = chain.screw_axes()
         w, v = S[:, :3], S[:, 3:]
         norms = np.linalg.norm(w, axis=1)
         pitch = np.sum(w * v, axis=1) / norms**2
         if np.any(np.abs(pitch) > 1e-9):
             i = int(np.argmax(np.abs(pitch)))
-            raise ValueError(f"{name} must have revolute joints of pitch 0, "
-                             f"joint {i + 1} is helical (pitch {pitch[i]:.6g} m/rad)")
+            raise ValueError(
+                f"{name} must have revolute joints of pitch 0, "
+                f"joint {i + 1} is helical (pitch {pitch[i]:.6g} m/rad)"
+            )
         w = w / norms[:, None]
-        p = np.cross(w, v / norms[:, None])  # the point of each axis nearest the base origin
+        p = np.cross(
+            w, v / norms[:, None]
+        )  # the point of each axis nearest the base origin
         scale = 1.0 + float(np.max(np.linalg.norm(p, axis=1)))
         tol = 1e-9 * scale
         # the wrist centre: the point nearest to axes 4, 5, 6 (least squares)
         projectors = np.eye(3) - w[3:, :, None] * w[3:, None, :]
-        c = np.linalg.lstsq(projectors.sum(0), np.einsum("kij,kj->i", projectors, p[3:]),
-                            rcond=None)[0]
-        miss = np.linalg.norm(np.einsum("kij,kj->ki", projectors, c - p[3:]), axis=1).max()
+        c = np.linalg.lstsq(
+            projectors.sum(0), np.einsum("kij,kj->i", projectors, p[3:]), rcond=None
+        )[0]
+        miss = np.linalg.norm(
+            np.einsum("kij,kj->ki", projectors, c - p[3:]), axis=1
+        ).max()
         parallel = [np.linalg.norm(np.cross(w[i], w[j])) for i, j in ((3, 4), (4, 5))]
         if min(parallel) < 1e-9:
-            raise ValueError(f"{name} must have a spherical wrist: the axes of joints 4 and 5, "
-                             "and of joints 5 and 6, must not be parallel")
+            raise ValueError(
+                f"{name} must have a spherical wrist: the axes of joints 4 and 5, "
+                "and of joints 5 and 6, must not be parallel"
+            )
         if miss > tol:
-            raise ValueError(f"{name} must have a spherical wrist: the axes of joints 4, 5 and "
-                             f"6 must meet in one point, they miss it by {miss:.3g} m")
+            raise ValueError(
+                f"{name} must have a spherical wrist: the axes of joints 4, 5 and "
+                f"6 must meet in one point, they miss it by {miss:.3g} m"
+            )
         angle23 = np.degrees(np.arcsin(min(1.0, np.linalg.norm(np.cross(w[1], w[2])))))
         if angle23 > 1e-7:
-            raise ValueError(f"{name} must have parallel axes for joints 2 and 3, got an angle "
-                             f"of {angle23:.6g} deg between them")
+            raise ValueError(
+                f"{name} must have parallel axes for joints 2 and 3, got an angle "
+                f"of {angle23:.6g} deg between them"
+            )
         if np.linalg.norm(np.cross(w[0], w[1])) < 1e-9:
-            raise ValueError(f"{name} must have the axis of joint 1 not parallel to the axes "
-                             "of joints 2 and 3")
+            raise ValueError(
+                f"{name} must have the axis of joint 1 not parallel to the axes "
+                "of joints 2 and 3"
+            )
         gap = p[2] - p[1] - w[1] * (w[1] @ (p[2] - p[1]))
         if np.linalg.norm(gap) < tol:
-            raise ValueError(f"{name} must have distinct axes for joints 2 and 3 (a2 > 0), "
-                             "got the same line")
+            raise ValueError(
+                f"{name} must have distinct axes for joints 2 and 3 (a2 > 0), "
+                "got the same line"
+            )
         reach = c - p[2] - w[2] * (w[2] @ (c - p[2]))
         if np.linalg.norm(reach) < tol:
-            raise ValueError(f"{name} must have its wrist centre off the axis of joint 3")
+            raise ValueError(
+                f"{name} must have its wrist centre off the axis of joint 3"
+            )
         return cls(w=w, p=p, c=c, home=chain.home(), scale=scale)
 
     # ---- labels ---------------------------------------------------------------------------
@@ -250,8 +277,11 @@ class SphericalWristArm:
         measure of the wrist singularity (see :data:`WRIST_TOL`)."""
         w4, w5, w6 = self.w[3], self.w[4], self.w[5]
         c5, s5 = np.cos(q5)[..., None], np.sin(q5)[..., None]
-        across = (np.cross(w4, w6) * c5 + np.cross(w4, np.cross(w5, w6)) * s5
-                  + np.cross(w4, w5) * ((w5 @ w6) * (1 - c5)))
+        across = (
+            np.cross(w4, w6) * c5
+            + np.cross(w4, np.cross(w5, w6)) * s5
+            + np.cross(w4, w5) * ((w5 @ w6) * (1 - c5))
+        )
         return np.linalg.norm(across, axis=-1)
 
     def labels(self, q):
@@ -263,7 +293,9 @@ class SphericalWristArm:
         singular = self.wrist_sine(q[..., 4]) <= WRIST_TOL
         flipped = np.where(singular, np.cos(q[..., 3]) >= 0, flip > 0)
         arm = np.where(right, "r", "l")
-        return np.char.add(np.char.add(arm, np.where(up, "u", "d")), np.where(flipped, "f", "n"))
+        return np.char.add(
+            np.char.add(arm, np.where(up, "u", "d")), np.where(flipped, "f", "n")
+        )
 
     # ---- the closed form ------------------------------------------------------------------
 
@@ -291,7 +323,9 @@ class SphericalWristArm:
         """
         G = T @ inv(self.home)
         RG = G[:, :3, :3]
-        d = (RG @ self.c + G[:, :3, 3] - self.p[0]).T  # the wrist centre of the target, from p1
+        d = (
+            RG @ self.c + G[:, :3, 3] - self.p[0]
+        ).T  # the wrist centre of the target, from p1
         shoulder = self._joint1(d)
         elbow = self._joint3(shoulder.b1)
         arm = self._joint2(shoulder.b1, elbow)
@@ -348,16 +382,20 @@ class SphericalWristArm:
         dots = [_dot(k, b1)[..., None] for k in (k0, k1, k2)]
         crosses = [-_dot(k, m)[..., None] for k in (k0, k1, k2)]
         along = (_dot(w2, b1) * (k0 @ w2))[..., None]
-        q2, c2, s2 = _polar(crosses[0] + c3 * crosses[1] + s3q * crosses[2],
-                            dots[0] + c3 * dots[1] + s3q * dots[2] - along)
+        q2, c2, s2 = _polar(
+            crosses[0] + c3 * crosses[1] + s3q * crosses[2],
+            dots[0] + c3 * dots[1] + s3q * dots[2] - along,
+        )
         # the elbow label: above = ((w1 - p2) x R2 (p3 - p2)) . w2; the larger sigma*above is 'u'
         e = p[2] - p[1] - w2 * (w2 @ (p[2] - p[1]))
         above = c2 * _dot(e, m)[..., None] + s2 * _dot(_cross3(w2, e), m)[..., None]
         sigma = np.array([-1.0, 1.0])
         swap = sigma * above[..., 0] < sigma * above[..., 1]  # (N, 2)
         swap = swap[..., None]
-        q2, c2, s2, q3, c3, s3q = (np.where(swap, v[..., ::-1], v)  # u first, then d
-                                   for v in (q2, c2, s2, elbow.q3, c3, s3q))
+        q2, c2, s2, q3, c3, s3q = (
+            np.where(swap, v[..., ::-1], v)  # u first, then d
+            for v in (q2, c2, s2, elbow.q3, c3, s3q)
+        )
         return _Arm(q2, c2, s2, _wrap_angle(q3), c3, s3q)
 
     def _joints45(self, RG, shoulder, arm):
@@ -369,14 +407,26 @@ class SphericalWristArm:
         """
         w = self.w
         w2, w4, w5, w6 = w[1], w[3], w[4], w[5]
-        ct, st, c2, s2, c3, s3q = shoulder.ct, shoulder.st, arm.c2, arm.s2, arm.c3, arm.s3q
+        ct, st, c2, s2, c3, s3q = (
+            shoulder.ct,
+            shoulder.st,
+            arm.c2,
+            arm.s2,
+            arm.c3,
+            arm.s3q,
+        )
         x6 = _unit(_cross3(w5, w6))
         g = np.stack([RG @ w6, RG @ x6], axis=-1).transpose(1, 0, 2)  # (3, N, 2)
-        g = shoulder.turn1.rotate(np.repeat(g[:, :, None], 2, axis=2), ct[..., None],
-                                  st[..., None])
-        c23, s23 = c2 * c3 - s2 * s3q, s2 * c3 + c2 * s3q  # of q2 + s3 q3: turn back by it
-        g = _Rotor(w2).rotate(np.repeat(g[:, :, :, None], 2, axis=3),
-                              c23[..., None], -s23[..., None])
+        g = shoulder.turn1.rotate(
+            np.repeat(g[:, :, None], 2, axis=2), ct[..., None], st[..., None]
+        )
+        c23, s23 = (
+            c2 * c3 - s2 * s3q,
+            s2 * c3 + c2 * s3q,
+        )  # of q2 + s3 q3: turn back by it
+        g = _Rotor(w2).rotate(
+            np.repeat(g[:, :, :, None], 2, axis=3), c23[..., None], -s23[..., None]
+        )
         t, b = g[..., 0], g[..., 1]  # (3, N, 2, 2)
         c45, c46, c56 = w4 @ w5, w4 @ w6, w5 @ w6
         n45 = _cross3(w4, w5)
@@ -386,21 +436,29 @@ class SphericalWristArm:
         # gamma^2 = |z_perp|^2 / |n45|^2 - bb^2 with |z_perp| = |t_perp| (no cancellation
         # of 1 - t4^2 near the wrist singularity)
         gamma2 = (tn**2 + tm**2) / (n45 @ n45) ** 2 - bb**2
-        sine46 = np.sqrt(tn**2 + tm**2) / np.sqrt(n45 @ n45)  # |t x w4|: the wrist's sine
+        sine46 = np.sqrt(tn**2 + tm**2) / np.sqrt(
+            n45 @ n45
+        )  # |t x w4|: the wrist's sine
         ok = gamma2 >= -CLIP_TOL
-        gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array([1.0, -1.0])  # n, f
+        gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array(
+            [1.0, -1.0]
+        )  # n, f
         a, bb, t4, t5, tn, tm = (v[..., None] for v in (a, bb, t4, t5, tn, tm))
         # q5: about w5 from w6 to z = a w4 + bb w5 + gamma n45; q4: about w4 from z to t
         n56 = _cross3(w5, w6)
         # (z . t - (z . w4)(t . w4) written without the cancelling terms)
-        q5, c5, s5 = _polar(a * (w4 @ n56) + gamma * (n45 @ n56),
-                            a * (c46 - c45 * c56) + gamma * (n45 @ w6))
+        q5, c5, s5 = _polar(
+            a * (w4 @ n56) + gamma * (n45 @ n56),
+            a * (c46 - c45 * c56) + gamma * (n45 @ w6),
+        )
         q4, c4, s4 = _polar(bb * tn + gamma * tm, bb * (t5 - c45 * t4) + gamma * tn)
         # the wrist singularity, by the same measure and tolerance as the labels
         on_axis4 = (sine46 <= WRIST_TOL)[..., None]
         if np.any(on_axis4):
             free5 = _polar(_dot(n56, t)[..., None], _dot(w6, t)[..., None] - c56 * t5)
-            q5, c5, s5 = (np.where(on_axis4, new, old) for new, old in zip(free5, (q5, c5, s5)))
+            q5, c5, s5 = (
+                np.where(on_axis4, new, old) for new, old in zip(free5, (q5, c5, s5))
+            )
             q4 = np.where(on_axis4, np.array([np.pi, 0.0]), q4)
             c4 = np.where(on_axis4, np.array([-1.0, 1.0]), c4)
             s4 = np.where(on_axis4, 0.0, s4)
@@ -414,12 +472,18 @@ class SphericalWristArm:
         b, c4, s4, c5, s5 = wrist.b, wrist.c4, wrist.s4, wrist.c5, wrist.s5
 
         def turned4(f):  # b . R4 f
-            return (_dot(f, b)[..., None] * c4 + _dot(_cross3(w4, f), b)[..., None] * s4
-                    + _dot(w4, b)[..., None] * (w4 @ f) * (1 - c4))
+            return (
+                _dot(f, b)[..., None] * c4
+                + _dot(_cross3(w4, f), b)[..., None] * s4
+                + _dot(w4, b)[..., None] * (w4 @ f) * (1 - c4)
+            )
 
         def along(e):  # b . R4 R5 e, (N, 2, 2, 2)
-            return (turned4(e) * c5 + turned4(_cross3(w5, e)) * s5
-                    + turned4(w5) * (w5 @ e) * (1 - c5))
+            return (
+                turned4(e) * c5
+                + turned4(_cross3(w5, e)) * s5
+                + turned4(w5) * (w5 @ e) * (1 - c5)
+            )
 
         return np.arctan2(along(_cross3(w6, wrist.x6)), along(wrist.x6))
 
@@ -433,18 +497,32 @@ class SphericalWristArm:
         Q[..., 1] = arm.q2[..., None]
         Q[..., 2] = arm.q3[..., None]
         Q[..., 3], Q[..., 4], Q[..., 5] = wrist.q4, wrist.q5, q6
-        reached = (shoulder.ok[:, None, None, None] & elbow.ok[:, :, None, None]
-                   & wrist.ok[..., None])
+        reached = (
+            shoulder.ok[:, None, None, None]
+            & elbow.ok[:, :, None, None]
+            & wrist.ok[..., None]
+        )
         if not np.all(reached):
             Q[~np.broadcast_to(reached, shape)] = np.nan
         Q = Q.reshape(N, 8, 6)
         flags = np.empty(shape + (3,), dtype=bool)
-        flags[..., 0] = (shoulder.forward**2 < SINGULAR_TOL * self.scale**2)[:, None, None, None]
+        flags[..., 0] = (shoulder.forward**2 < SINGULAR_TOL * self.scale**2)[
+            :, None, None, None
+        ]
         flags[..., 1] = (1 - np.abs(elbow.cosine) < SINGULAR_TOL)[:, :, None, None]
-        flags[..., 2] = (np.sqrt(np.maximum(wrist.gamma2, 0)) * np.linalg.norm(wrist.n45)
-                         < SINGULAR_TOL)[..., None]
-        code = np.where(~shoulder.ok, 1, np.where(~elbow.ok.any(axis=1), 2,
-                        np.where(np.all(np.isnan(Q[..., 0]), axis=1), 3, 0)))
+        flags[..., 2] = (
+            np.sqrt(np.maximum(wrist.gamma2, 0)) * np.linalg.norm(wrist.n45)
+            < SINGULAR_TOL
+        )[..., None]
+        code = np.where(
+            ~shoulder.ok,
+            1,
+            np.where(
+                ~elbow.ok.any(axis=1),
+                2,
+                np.where(np.all(np.isnan(Q[..., 0]), axis=1), 3, 0),
+            ),
+        )
         return Q, flags.reshape(N, 8, 3), code
 
     def reason(self, T, code):
@@ -456,8 +534,10 @@ class SphericalWristArm:
         radial = np.linalg.norm(d - (d @ w[0]) * w[0])
         offset = abs(w[1] @ (c - p[0]))
         if code == 1:
-            return (f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer than "
-                    f"the shoulder offset {offset:.5f} m")
+            return (
+                f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer than "
+                f"the shoulder offset {offset:.5f} m"
+            )
         if code == 2:
             u3 = np.linalg.norm(c - p[2] - w[2] * (w[2] @ (c - p[2])))
             v3 = np.linalg.norm(p[1] - p[2] - w[2] * (w[2] @ (p[1] - p[2])))
@@ -468,9 +548,12 @@ class SphericalWristArm:
             distances = []
             for theta in (np.arctan2(B, A) - half, np.arctan2(B, A) + half):
                 w1 = p[0] + _rotate(w[0], np.array(theta), d)
-                distances.append(np.sqrt(max(np.sum((w1 - p[1]) ** 2)
-                                             - (w[2] @ (c - p[1])) ** 2, 0)))
-            return (f"the wrist centre is {min(distances):.4f} m from the shoulder axis "
-                    f"in the arm's plane; the arm reaches from {abs(u3 - v3):.4f} m to "
-                    f"{u3 + v3:.4f} m")
+                distances.append(
+                    np.sqrt(max(np.sum((w1 - p[1]) ** 2) - (w[2] @ (c - p[1])) ** 2, 0))
+                )
+            return (
+                f"the wrist centre is {min(distances):.4f} m from the shoulder axis "
+                f"in the arm's plane; the arm reaches from {abs(u3 - v3):.4f} m to "
+                f"{u3 + v3:.4f} m"
+            )
         return "the wrist cannot turn the tool to this orientation"

@@ -25,6 +25,7 @@ Robotic Manipulation* (1994), sec. 3.3; subproblem 4 after Elias and Wen's IK-Ge
 >>> subproblem1(z_axis, [1, 0, 0], [sp.Rational(1, 2), sp.sqrt(3) / 2, 0])
 [pi/3]
 """
+
 import numpy as np
 import sympy as sp
 
@@ -36,8 +37,15 @@ from ._checks import (
     is_symbolic,
 )
 
-__all__ = ["Solutions", "subproblem1", "subproblem2", "subproblem3", "subproblem4",
-           "subproblem1_prismatic", "subproblem3_prismatic"]
+__all__ = [
+    "Solutions",
+    "subproblem1",
+    "subproblem2",
+    "subproblem3",
+    "subproblem4",
+    "subproblem1_prismatic",
+    "subproblem3_prismatic",
+]
 
 #: Relative tolerance for the consistency conditions of floating-point input.
 TOL = 1e-9
@@ -72,21 +80,31 @@ def _twist(twist, name, exact):
         w, v = xi[:3, 0], xi[3:, 0]
         norm2, pitch = sp.simplify(w.dot(w)), sp.simplify(w.dot(v))
         if norm2.is_number and norm2 != 1:
-            raise ValueError(f"{name} must have a unit angular part (a revolute axis), "
-                             f"got |w|^2 = {norm2}")
+            raise ValueError(
+                f"{name} must have a unit angular part (a revolute axis), "
+                f"got |w|^2 = {norm2}"
+            )
         if pitch.is_number and pitch != 0:
-            raise ValueError(f"{name} must have pitch 0 (w . v = 0), got w . v = {pitch}")
+            raise ValueError(
+                f"{name} must have pitch 0 (w . v = 0), got w . v = {pitch}"
+            )
         return w, w.cross(v)
     xi = as_float_array(twist, name)
     if xi.shape != (6,):
-        raise ValueError(f"{name} must be a twist of shape (6,), ordered [w; v], "
-                         f"got shape {xi.shape}")
+        raise ValueError(
+            f"{name} must be a twist of shape (6,), ordered [w; v], "
+            f"got shape {xi.shape}"
+        )
     w, v = xi[:3], xi[3:]
     if abs(np.linalg.norm(w) - 1) > TOL:
-        raise ValueError(f"{name} must have a unit angular part (a revolute axis), "
-                         f"got |w| = {np.linalg.norm(w):.6g}")
+        raise ValueError(
+            f"{name} must have a unit angular part (a revolute axis), "
+            f"got |w| = {np.linalg.norm(w):.6g}"
+        )
     if abs(w @ v) > TOL * (1 + np.linalg.norm(v)):
-        raise ValueError(f"{name} must have pitch 0 (w . v = 0), got w . v = {w @ v:.6g}")
+        raise ValueError(
+            f"{name} must have pitch 0 (w . v = 0), got w . v = {w @ v:.6g}"
+        )
     return w, np.cross(w, v)
 
 
@@ -95,11 +113,15 @@ def _direction(s, name, exact):
         s = as_sympy_matrix(s, name, (3, 1))
         norm2 = sp.simplify(s.dot(s))
         if norm2.is_number and norm2 != 1:
-            raise ValueError(f"{name} must be a unit direction, got |{name}|^2 = {norm2}")
+            raise ValueError(
+                f"{name} must be a unit direction, got |{name}|^2 = {norm2}"
+            )
         return s
     s = _point(s, name, False)
     if abs(np.linalg.norm(s) - 1) > TOL:
-        raise ValueError(f"{name} must be a unit direction, got |{name}| = {np.linalg.norm(s):.6g}")
+        raise ValueError(
+            f"{name} must be a unit direction, got |{name}| = {np.linalg.norm(s):.6g}"
+        )
     return s
 
 
@@ -119,7 +141,9 @@ def _distance(delta, name, exact):
             raise ValueError(f"{name} must be a distance >= 0, got {delta}")
         return delta
     if isinstance(delta, bool) or np.ndim(delta) != 0:
-        raise TypeError(f"{name} must be one distance (a number, m), got {describe(delta)}")
+        raise TypeError(
+            f"{name} must be one distance (a number, m), got {describe(delta)}"
+        )
     delta = float(as_float_array(delta, name))
     if delta < 0:
         raise ValueError(f"{name} must be a distance >= 0, got {delta}")
@@ -181,8 +205,13 @@ def _dot_batch(w, v):
 
 def _cross_fixed(a, b):
     """a x b for two single 3-vectors (np.cross costs more than the arithmetic here)."""
-    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                     a[0] * b[1] - a[1] * b[0]])
+    return np.array(
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    )
 
 
 def plane_angles(w, n, h, x):
@@ -244,14 +273,18 @@ def _subproblem1(w, r, p, q, exact):
     u, v = p - r, q - r
     scale = 1.0 if exact else 1.0 + float(np.linalg.norm(u) + np.linalg.norm(v))
     if not _zero(_dot(w, u, exact) - _dot(w, v, exact), scale, exact):
-        return Solutions(reason="p and q lie in different planes perpendicular to the axis "
-                                "(w . (p - q) is not 0)")
+        return Solutions(
+            reason="p and q lie in different planes perpendicular to the axis "
+            "(w . (p - q) is not 0)"
+        )
     u1, v1 = _project(w, u, exact), _project(w, v, exact)
     if not _zero(_dot(u1, u1, exact) - _dot(v1, v1, exact), scale * scale, exact):
         return Solutions(reason="p and q are at different distances from the axis")
     if _sign(_dot(u1, u1, exact), scale * scale, exact) == 0:
         return Solutions([sp.S.Zero if exact else 0.0], free=True)
-    return Solutions([_atan2(_dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact)])
+    return Solutions(
+        [_atan2(_dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact)]
+    )
 
 
 def subproblem2(twist1, twist2, p, q):
@@ -274,12 +307,15 @@ def subproblem2(twist1, twist2, p, q):
     n = _cross(w1, w2, exact)
     n2 = _dot(n, n, exact)
     if _sign(n2, 1.0, exact) == 0:
-        raise ValueError("twist1 and twist2 must have axes that meet in one point, "
-                         "got parallel axes")
+        raise ValueError(
+            "twist1 and twist2 must have axes that meet in one point, got parallel axes"
+        )
     gap = _dot(r2 - r1, n, exact)
     if not _zero(gap, (1.0 if exact else 1.0 + float(np.linalg.norm(r2 - r1))), exact):
-        raise ValueError("twist1 and twist2 must have axes that meet in one point, got skew "
-                         f"axes {float(abs(gap)) / float(sp.sqrt(n2)):.6g} m apart")
+        raise ValueError(
+            "twist1 and twist2 must have axes that meet in one point, got skew "
+            f"axes {float(abs(gap)) / float(sp.sqrt(n2)):.6g} m apart"
+        )
     # the common point: r1 + t w1 on the second axis
     c12 = _dot(w1, w2, exact)
     d = r2 - r1
@@ -295,8 +331,10 @@ def subproblem2(twist1, twist2, p, q):
     scale = 1.0 if exact else 1.0 + float(np.linalg.norm(u) + np.linalg.norm(v))
     sign = _sign(gamma2, scale * scale, exact)
     if sign < 0:
-        return Solutions(reason="the circles of p about axis 2 and of q about axis 1 do not "
-                                "meet (gamma^2 < 0)")
+        return Solutions(
+            reason="the circles of p about axis 2 and of q about axis 1 do not "
+            "meet (gamma^2 < 0)"
+        )
     if sign == 0:
         gammas = [sp.S.Zero if exact else 0.0]
     else:
@@ -308,7 +346,9 @@ def subproblem2(twist1, twist2, p, q):
         theta2 = _subproblem1(w2, r, p, z, exact)
         theta1 = _subproblem1(w1, r, z, q, exact)
         if not theta1 or not theta2:
-            return Solutions(reason="p and q are at different distances from the common point")
+            return Solutions(
+                reason="p and q are at different distances from the common point"
+            )
         free = free or theta1.free or theta2.free
         pairs.append((theta1[0], theta2[0]))
     return Solutions(pairs, free=free)
@@ -334,14 +374,20 @@ def subproblem3(twist, p, q, delta):
     delta2 = delta**2 - height**2
     lu, lv = _norm(u1, exact), _norm(v1, exact)
     scale = 1.0 if exact else 1.0 + lu + lv + abs(height) + delta
-    if _sign(lu * lv, scale * scale, exact) == 0:  # the distance does not depend on theta
+    if (
+        _sign(lu * lv, scale * scale, exact) == 0
+    ):  # the distance does not depend on theta
         constant = lu**2 + lv**2 + height**2 - delta**2
         if _zero(constant, scale * scale, exact):
             return Solutions([sp.S.Zero if exact else 0.0], free=True)
-        return Solutions(reason="p or q is on the axis, so the distance stays "
-                                f"{_fmt(sp.sqrt(lu**2 + lv**2 + height**2))} m")
+        return Solutions(
+            reason="p or q is on the axis, so the distance stays "
+            f"{_fmt(sp.sqrt(lu**2 + lv**2 + height**2))} m"
+        )
     if exact:
-        theta0 = _atan2(_dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact)
+        theta0 = _atan2(
+            _dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact
+        )
         cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
     else:
         theta0, cosine = (float(x) for x in distance_angles(w, u1, v1, delta2))
@@ -356,8 +402,10 @@ def subproblem3(twist, p, q, delta):
     if outside:
         closest = sp.sqrt((lu - lv) ** 2 + height**2)
         farthest = sp.sqrt((lu + lv) ** 2 + height**2)
-        return Solutions(reason=f"delta = {_fmt(delta)} m is outside the distances the rotation "
-                                f"reaches, {_fmt(closest)} to {_fmt(farthest)} m")
+        return Solutions(
+            reason=f"delta = {_fmt(delta)} m is outside the distances the rotation "
+            f"reaches, {_fmt(closest)} to {_fmt(farthest)} m"
+        )
     beta = sp.acos(cosine) if exact else float(np.arccos(cosine))
     if touching:
         return Solutions([sp.simplify(theta0 + beta) if exact else theta0 + beta])
@@ -401,12 +449,16 @@ def subproblem4(twist, p, normal, d):
     if _sign(radius2, scale * scale, exact) == 0:
         if _zero(d - C, scale, exact):
             return Solutions([sp.S.Zero if exact else 0.0], free=True)
-        return Solutions(reason=f"the circle of p stays at n . x = {_fmt(C)}, not {_fmt(d)}")
+        return Solutions(
+            reason=f"the circle of p stays at n . x = {_fmt(C)}, not {_fmt(d)}"
+        )
     excess = radius2 - (d - C) ** 2
     sign = _sign(excess, scale * scale, exact)
     if sign < 0:
-        return Solutions(reason=f"the circle of p spans n . x from {_fmt(C - sp.sqrt(radius2))} "
-                                f"to {_fmt(C + sp.sqrt(radius2))}, not {_fmt(d)}")
+        return Solutions(
+            reason=f"the circle of p spans n . x from {_fmt(C - sp.sqrt(radius2))} "
+            f"to {_fmt(C + sp.sqrt(radius2))}, not {_fmt(d)}"
+        )
     phi = _atan2(B, A, exact)
     half = sp.atan2(sp.sqrt(sp.simplify(excess)), d - C)
     angles = [phi] if sign == 0 else [phi - half, phi + half]
@@ -416,17 +468,23 @@ def subproblem4(twist, p, normal, d):
 def _subproblem4_numeric(w, r, u, n, d):
     """subproblem4 for floats, through the batch kernel :func:`plane_angles`."""
     phi, half, excess, radius2 = (float(x) for x in plane_angles(w, n, d - n @ r, u))
-    C = float(n @ r + (n @ w) * (w @ u))  # the height of the circle's centre, for the reasons
+    C = float(
+        n @ r + (n @ w) * (w @ u)
+    )  # the height of the circle's centre, for the reasons
     scale = 1.0 + float(np.linalg.norm(u)) + abs(d) + abs(C)
     if _sign(radius2, scale * scale, False) == 0:
         if _zero(d - C, scale, False):
             return Solutions([0.0], free=True)
-        return Solutions(reason=f"the circle of p stays at n . x = {_fmt(C)}, not {_fmt(d)}")
+        return Solutions(
+            reason=f"the circle of p stays at n . x = {_fmt(C)}, not {_fmt(d)}"
+        )
     sign = _sign(excess, scale * scale, False)
     if sign < 0:
         radius = float(np.sqrt(radius2))
-        return Solutions(reason=f"the circle of p spans n . x from {_fmt(C - radius)} "
-                                f"to {_fmt(C + radius)}, not {_fmt(d)}")
+        return Solutions(
+            reason=f"the circle of p spans n . x from {_fmt(C - radius)} "
+            f"to {_fmt(C + radius)}, not {_fmt(d)}"
+        )
     return Solutions([phi + half] if sign == 0 else [phi - half, phi + half])
 
 
@@ -446,7 +504,9 @@ def subproblem1_prismatic(s, p, q):
     off = q - p - s * t
     scale = 1.0 if exact else 1.0 + float(np.linalg.norm(q - p))
     if not _zero(_dot(off, off, exact), scale * scale, exact):
-        return Solutions(reason=f"q is {_fmt(_norm(off, exact))} m off the line through p along s")
+        return Solutions(
+            reason=f"q is {_fmt(_norm(off, exact))} m off the line through p along s"
+        )
     return Solutions([t])
 
 
@@ -470,8 +530,10 @@ def subproblem3_prismatic(s, p, q, delta):
     sign = _sign(discriminant, scale * scale, exact)
     if sign < 0:
         miss = sp.sqrt(_dot(u, u, exact) - along**2)
-        return Solutions(reason=f"the line passes {_fmt(miss)} m from q, farther than "
-                                f"delta = {_fmt(delta)} m")
+        return Solutions(
+            reason=f"the line passes {_fmt(miss)} m from q, farther than "
+            f"delta = {_fmt(delta)} m"
+        )
     if sign == 0:
         return Solutions([-along])
     root = sp.sqrt(discriminant) if exact else float(np.sqrt(discriminant))

@@ -13,6 +13,7 @@ Matrix([
 >>> rotz([0.0, 0.1]).shape
 (2, 3, 3)
 """
+
 import numbers
 
 import numpy as np
@@ -56,7 +57,11 @@ def _skew(v):
     x, y, z = v[..., 0], v[..., 1], v[..., 2]
     zero = np.zeros_like(x)
     return np.stack(
-        [np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1), np.stack([-y, x, zero], -1)],
+        [
+            np.stack([zero, -z, y], -1),
+            np.stack([z, zero, -x], -1),
+            np.stack([-y, x, zero], -1),
+        ],
         -2,
     )
 
@@ -69,7 +74,13 @@ def _skew_exact(v):
 
 def _cross(a, b):
     """a x b along axis 0, for arrays laid out (3, ...): cheaper than np.cross on strided data."""
-    return np.stack([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
+    return np.stack(
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    )
 
 
 def _rodrigues(W, s, c1):
@@ -87,9 +98,13 @@ def _is_infinite_pitch(h):
     float, or a 0-d array); the one test of an infinite pitch (no other check)."""
     if h is sp.oo:
         return True
-    return (isinstance(h, (numbers.Real, np.ndarray)) and not isinstance(h, (bool, np.bool_))
-            and np.ndim(h) == 0 and np.asarray(h).dtype.kind in "iuf"
-            and bool(np.isposinf(h)))
+    return (
+        isinstance(h, (numbers.Real, np.ndarray))
+        and not isinstance(h, (bool, np.bool_))
+        and np.ndim(h) == 0
+        and np.asarray(h).dtype.kind in "iuf"
+        and bool(np.isposinf(h))
+    )
 
 
 def axis_coordinates(s, r, h):
@@ -223,7 +238,8 @@ def _exact_angle(theta, name):
     if isinstance(theta, (list, tuple, np.ndarray, sp.MatrixBase)):
         raise TypeError(
             f"{name} must be a single number or SymPy expression when the result is symbolic "
-            f"(SymPy in, SymPy out), got {describe(theta)}; for a batch of angles pass numbers")
+            f"(SymPy in, SymPy out), got {describe(theta)}; for a batch of angles pass numbers"
+        )
     return as_sympy_scalar(theta, name)
 
 
@@ -239,13 +255,16 @@ def _unit_vector(value, name):
             raise ValueError(f"{name} must be a non-zero 3-vector, got {list(v)}")
         return v if norm_squared == 1 else v / sp.sqrt(norm_squared)
     if v.ndim != 1:
-        raise ValueError(f"{name} must be a single 3-vector of shape (3,), got shape {v.shape}")
+        raise ValueError(
+            f"{name} must be a single 3-vector of shape (3,), got shape {v.shape}"
+        )
     norm = _norm(v)
     if norm < ZERO_AXIS:
         raise ValueError(
-            f"{name} must be a non-zero 3-vector (norm at least {ZERO_AXIS:g}), got {v.tolist()}")
+            f"{name} must be a non-zero 3-vector (norm at least {ZERO_AXIS:g}), got {v.tolist()}"
+        )
     scale = np.abs(v).max()
-    u = v / scale     # scaled first: the norm of [1e200, 0, 0] must not overflow to inf
+    u = v / scale  # scaled first: the norm of [1e200, 0, 0] must not overflow to inf
     return u / np.linalg.norm(u)
 
 
@@ -272,13 +291,18 @@ def transl(*p):
             except ValueError:
                 raise ValueError(
                     "x, y and z must be numbers or batches of one length, got shapes "
-                    f"{x.shape}, {y.shape} and {z.shape}") from None
+                    f"{x.shape}, {y.shape} and {z.shape}"
+                ) from None
     elif len(p) == 1:
         p = p[0]
         if p is None:
-            raise TypeError("p must be a 3-vector (x, y, z) or a batch (N, 3), got None")
+            raise TypeError(
+                "p must be a 3-vector (x, y, z) or a batch (N, 3), got None"
+            )
     else:
-        raise TypeError(f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} arguments")
+        raise TypeError(
+            f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} arguments"
+        )
     return homogeneous(None, p)
 
 
@@ -297,7 +321,9 @@ def homogeneous(R=None, p=None):
     if is_symbolic(R) or is_symbolic(p):
         R = sp.eye(3) if R is None else check_rotation(R, "R")
         p = sp.zeros(3, 1) if p is None else as_sympy_matrix(p, "p", (3, 1))
-        return sp.Matrix(sp.BlockMatrix([[sp.Matrix(R), p], [sp.zeros(1, 3), sp.ones(1, 1)]]))
+        return sp.Matrix(
+            sp.BlockMatrix([[sp.Matrix(R), p], [sp.zeros(1, 3), sp.ones(1, 1)]])
+        )
     R = np.eye(3) if R is None else check_rotation(R, "R")
     p = np.zeros(3) if p is None else _vector3(p, "p")
     try:
@@ -305,7 +331,8 @@ def homogeneous(R=None, p=None):
     except ValueError:
         raise ValueError(
             "R and p must be one of each or batches of one length, got R of shape "
-            f"{R.shape} and p of shape {p.shape}") from None
+            f"{R.shape} and p of shape {p.shape}"
+        ) from None
     return _assemble(R, p)
 
 
@@ -367,7 +394,9 @@ def twist_from_axis(s, r, h):
         s = _unit_vector(as_sympy_matrix(s, "s", (3, 1)), "s")
         if prismatic:
             return axis_coordinates(s, None, sp.oo)
-        return axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), _pitch(h, exact=True))
+        return axis_coordinates(
+            s, as_sympy_matrix(r, "r", (3, 1)), _pitch(h, exact=True)
+        )
     s = _unit_vector(s, "s")
     if prismatic:
         return axis_coordinates(s, None, np.inf)
@@ -377,7 +406,9 @@ def twist_from_axis(s, r, h):
     return axis_coordinates(s, r, _pitch(h, exact=False))
 
 
-_PITCH = "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
+_PITCH = (
+    "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
+)
 
 
 def _pitch(h, exact):
@@ -418,7 +449,9 @@ def exp_twist(twist, theta):
         return _exp_twist_symbolic(xi, _exact_angle(theta, "theta"))
     xi = as_float_array(twist, "twist")
     if xi.shape != (6,):
-        raise ValueError(f"twist must have shape (6,), ordered [w; v], got shape {xi.shape}")
+        raise ValueError(
+            f"twist must have shape (6,), ordered [w; v], got shape {xi.shape}"
+        )
     theta = as_scalar_or_batch(theta, "theta")
     w, v = xi[:3], xi[3:]
     norm = _norm(w)
@@ -433,7 +466,9 @@ def exp_twist(twist, theta):
     W = _skew(w)
     W2 = W @ W
     s = np.sin(theta)[..., None, None]
-    c1 = (2.0 * np.sin(theta / 2) ** 2)[..., None, None]  # 1 - cos, without cancellation
+    c1 = (2.0 * np.sin(theta / 2) ** 2)[
+        ..., None, None
+    ]  # 1 - cos, without cancellation
     t = theta[..., None, None]
     # theta - sin(theta) cancels for small theta: its series there (error below 1e-20 rad)
     small = np.abs(theta) < 1e-2
@@ -451,7 +486,8 @@ def _check_finite_product(value, what):
     """Finite inputs whose product overflows give a clear error, not a silent inf or NaN."""
     if not np.all(np.isfinite(value)):
         raise ValueError(
-            f"{what} overflows float64: twist and theta must be far below 1e308 in size")
+            f"{what} overflows float64: twist and theta must be far below 1e308 in size"
+        )
 
 
 def _exp_twist_symbolic(xi, theta):

@@ -7,6 +7,7 @@ book shows instead of a blank widget placeholder (``nb_mime_priority_overrides``
 ``_config.yml``). Sliders follow the rules of ``screwkit._sliders``: default on the grid,
 0 reachable, unit in the label.
 """
+
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
 import numpy as np
@@ -32,26 +33,40 @@ class LiveFigure:
         return f"LiveFigure({self.fallback!r})"
 
     def _repr_mimebundle_(self, include=None, exclude=None):
-        bundle = dict(self.widget._repr_mimebundle_(include=include, exclude=exclude) or {})
+        bundle = dict(
+            self.widget._repr_mimebundle_(include=include, exclude=exclude) or {}
+        )
         bundle["text/html"] = self.fallback._repr_html_()
         bundle["text/plain"] = repr(self)
         return bundle
 
 
 def _float_slider(spec):
-    return widgets.FloatSlider(value=spec.value, min=spec.low, max=spec.high, step=spec.step,
-                               description=spec.description, continuous_update=False,
-                               style={"description_width": "initial"})
+    return widgets.FloatSlider(
+        value=spec.value,
+        min=spec.low,
+        max=spec.high,
+        step=spec.step,
+        description=spec.description,
+        continuous_update=False,
+        style={"description_width": "initial"},
+    )
 
 
-def screw_motion_slider(s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2)), theta=90.0):
+def screw_motion_slider(
+    s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2)), theta=90.0
+):
     """A slider for theta (deg) that moves the frame ``start`` about the screw (s, r, h).
 
     The frame drawn is exp([xi] theta) @ start, with the twist xi of the axis through ``r``
     along ``s`` with pitch ``h`` (m/rad). Without a kernel, the same motion is computed in
     the page (``viewer.screw_motion_viewer``). Returns a LiveFigure.
     """
-    start = np.eye(4) if start is None else check_transform(np.asarray(start, dtype=float), "start")
+    start = (
+        np.eye(4)
+        if start is None
+        else check_transform(np.asarray(start, dtype=float), "start")
+    )
     screw_motion(s, r, h, 0.0)  # check s, r, h once, before any drawing
     fallback = viewer.screw_motion_viewer(s, r, h, start=start, theta=theta)
     spec = _sliders.slider_spec("theta", "deg", -360.0, 360.0, theta)
@@ -66,10 +81,14 @@ def screw_motion_slider(s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2)), 
         ax.set_title(f"theta = {theta_deg:.0f} deg, pitch h = {h} m/rad")
         plt.show()
 
-    return LiveFigure(widgets.interactive(draw, theta_deg=_float_slider(spec)), fallback)
+    return LiveFigure(
+        widgets.interactive(draw, theta_deg=_float_slider(spec)), fallback
+    )
 
 
-def joint_sliders(chain, q=None, limits=((-0.9, 0.9), (-0.9, 0.9), (-0.5, 1.0)), draw=None):
+def joint_sliders(
+    chain, q=None, limits=((-0.9, 0.9), (-0.9, 0.9), (-0.5, 1.0)), draw=None
+):
     """One slider per joint (deg, or m for prismatic joints, within the limits) that redraws.
 
     ``draw(ax, q)`` may add to each drawing (for example the pose's numbers). Without a
@@ -101,8 +120,9 @@ def figure_slider(draw, label, unit=None, values=None, choices=None, value=None)
     each value (``viewer.stepped_figure``). Give ``values`` from ``viewer.grid`` with its
     ``unit``. Returns a LiveFigure.
     """
-    fallback = viewer.stepped_figure(draw, label, unit, values=values, choices=choices,
-                                     value=value)
+    fallback = viewer.stepped_figure(
+        draw, label, unit, values=values, choices=choices, value=value
+    )
     model = fallback.model
 
     def show(v):
@@ -113,10 +133,16 @@ def figure_slider(draw, label, unit=None, values=None, choices=None, value=None)
             plt.show()
 
     if choices is not None:
-        control = widgets.Dropdown(options=model["choices"], description=label,
-                                   value=model["choices"][model["index"]])
+        control = widgets.Dropdown(
+            options=model["choices"],
+            description=label,
+            value=model["choices"][model["index"]],
+        )
     else:
         spec = model["slider"]
-        control = _float_slider(_sliders.SliderSpec(label, unit, spec["min"], spec["max"],
-                                                    spec["step"], spec["value"]))
+        control = _float_slider(
+            _sliders.SliderSpec(
+                label, unit, spec["min"], spec["max"], spec["step"], spec["value"]
+            )
+        )
     return LiveFigure(widgets.interactive(show, v=control), fallback)

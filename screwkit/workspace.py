@@ -14,6 +14,7 @@ up front with its size and a suggestion.
 >>> [round(v, 6) for v in s.extents()["x"]]  # the annulus 0.5 <= r <= 1.5
 [-1.5, 1.5]
 """
+
 import math
 from dataclasses import dataclass
 
@@ -75,7 +76,9 @@ class Sweep:
         start = check_integer(start, "start", minimum=0)
         stop = self.size if stop is None else check_integer(stop, "stop", minimum=start)
         if stop > self.size:
-            raise ValueError(f"stop must be at most the grid's size {self.size}, got {stop}")
+            raise ValueError(
+                f"stop must be at most the grid's size {self.size}, got {stop}"
+            )
         index = np.unravel_index(np.arange(start, stop), self.shape)
         q = np.empty((stop - start, self.chain.n))
         q[:] = self.fixed
@@ -86,8 +89,11 @@ class Sweep:
     @property
     def q(self):
         """Every configuration, shape grid + (n,) (built on demand: 8 bytes x n per point)."""
-        _check_result_size(self.size * self.chain.n * 8, "Sweep.q",
-                           "use Sweep.configurations(start, stop) for a part of the grid")
+        _check_result_size(
+            self.size * self.chain.n * 8,
+            "Sweep.q",
+            "use Sweep.configurations(start, stop) for a part of the grid",
+        )
         return self.configurations().reshape(self.shape + (self.chain.n,))
 
     def _chunks(self):
@@ -105,17 +111,22 @@ class Sweep:
     def extents(self):
         """{'x': (min, max), 'y': ..., 'z': ...} of the swept points (m)."""
         flat = self.points.reshape(-1, 3)
-        return {axis: (float(flat[:, k].min()), float(flat[:, k].max())) for k, axis in enumerate("xyz")}
+        return {
+            axis: (float(flat[:, k].min()), float(flat[:, k].max()))
+            for k, axis in enumerate("xyz")
+        }
 
     def reach(self, centre):
         """(min, max) distance of the swept points from ``centre`` (3,), e.g. a shoulder (m)."""
         centre = as_float_array(centre, "centre")
         if centre.shape != (3,):
-            raise ValueError(f"centre must be a point of shape (3,), got shape {centre.shape}")
+            raise ValueError(
+                f"centre must be a point of shape (3,), got shape {centre.shape}"
+            )
         flat = self.points.reshape(-1, 3)
         low, high = np.inf, -np.inf
         for start in range(0, len(flat), CHUNK):
-            distance = np.linalg.norm(flat[start:start + CHUNK] - centre, axis=-1)
+            distance = np.linalg.norm(flat[start : start + CHUNK] - centre, axis=-1)
             low, high = min(low, distance.min()), max(high, distance.max())
         return float(low), float(high)
 
@@ -137,8 +148,11 @@ class Sweep:
         """The geometric Jacobian's ``rows`` at every grid point: grid + (rows, n)."""
         block = ROWS[check_option(rows, "rows", tuple(ROWS))]
         m = len(range(6)[block])
-        _check_result_size(self.size * m * self.chain.n * 8, "Sweep.jacobians",
-                           "use determinant(), manipulability() or singular(), which stream")
+        _check_result_size(
+            self.size * m * self.chain.n * 8,
+            "Sweep.jacobians",
+            "use determinant(), manipulability() or singular(), which stream",
+        )
         out = np.empty((self.size, m, self.chain.n))
         for part, q in self._chunks():
             out[part] = geometric_jacobian(self.chain, q)[:, block]
@@ -153,8 +167,11 @@ class Sweep:
         if m != self.chain.n:
             raise ValueError(
                 f"rows must select {self.chain.n} rows, one per joint, for det J (a square "
-                f"Jacobian), got rows={rows!r} with {m} rows; use manipulability() instead")
-        return self._per_point(lambda q: np.linalg.det(geometric_jacobian(self.chain, q)[:, block]))
+                f"Jacobian), got rows={rows!r} with {m} rows; use manipulability() instead"
+            )
+        return self._per_point(
+            lambda q: np.linalg.det(geometric_jacobian(self.chain, q)[:, block])
+        )
 
     def manipulability(self, rows="all"):
         """Yoshikawa's manipulability of the Jacobian's ``rows`` at every grid point: shape grid
@@ -190,7 +207,8 @@ def _check_result_size(nbytes, what, suggestion):
     if nbytes > MAX_RESULT_BYTES:
         raise ValueError(
             f"{what} would build one array of {nbytes / 1e9:.2f} GB, more than the limit of "
-            f"{MAX_RESULT_BYTES / 1e9:.0f} GB; {suggestion}, or sweep a coarser grid")
+            f"{MAX_RESULT_BYTES / 1e9:.0f} GB; {suggestion}, or sweep a coarser grid"
+        )
 
 
 def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS):
@@ -211,24 +229,36 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
     """
     chain = check_chain(chain)
     if not isinstance(ranges, dict) or not ranges:
-        raise TypeError("ranges must be a dict {joint number: (low, high)} with at least one joint, "
-                        f"got {describe(ranges)}")
+        raise TypeError(
+            "ranges must be a dict {joint number: (low, high)} with at least one joint, "
+            f"got {describe(ranges)}"
+        )
     joints = tuple(ranges)
     for joint in joints:
-        if isinstance(joint, (bool, np.bool_)) or not isinstance(joint, (int, np.integer)):
-            raise TypeError(f"ranges keys must be joint numbers 1..{chain.n} (integers), got {joint!r}")
+        if isinstance(joint, (bool, np.bool_)) or not isinstance(
+            joint, (int, np.integer)
+        ):
+            raise TypeError(
+                f"ranges keys must be joint numbers 1..{chain.n} (integers), got {joint!r}"
+            )
         if not 1 <= joint <= chain.n:
-            raise ValueError(f"ranges keys must be joint numbers 1..{chain.n}, got {joint!r}")
+            raise ValueError(
+                f"ranges keys must be joint numbers 1..{chain.n}, got {joint!r}"
+            )
     joints = tuple(int(joint) for joint in joints)
     counts = _counts(num, len(joints))
     values = []
     for joint, count in zip(joints, counts):
         bounds = as_float_array(ranges[joint], f"ranges[{joint}]")
         if bounds.shape != (2,):
-            raise ValueError(f"ranges[{joint}] must be (low, high), got shape {bounds.shape}")
+            raise ValueError(
+                f"ranges[{joint}] must be (low, high), got shape {bounds.shape}"
+            )
         if bounds[0] == bounds[1]:
-            raise ValueError(f"ranges[{joint}] must have low != high, got {bounds.tolist()}; "
-                             "to hold the joint still, give its value in q instead")
+            raise ValueError(
+                f"ranges[{joint}] must have low != high, got {bounds.tolist()}; "
+                "to hold the joint still, give its value in q instead"
+            )
         values.append(np.linspace(bounds[0], bounds[1], count))
     limit = check_integer(max_configurations, "max_configurations", minimum=1)
     size = math.prod(counts)
@@ -239,10 +269,13 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
             f"a sweep must have at most max_configurations = {limit:,} configurations, got "
             f"{grid} = {size:,} (its points alone would take {size * 24 / 1e9:.2f} GB); "
             f"use fewer steps (e.g. num={fewer}), or sweep fewer joints and fix the others "
-            "with q (a section)")
+            "with q (a section)"
+        )
     fixed = np.zeros(chain.n) if q is None else chain.check_one(q, "q")
-    result = Sweep(chain, joints, tuple(values), fixed.copy(), np.empty(tuple(counts) + (3,)))
-    flat = result.points.reshape(-1, 3)    # a view: the chunks fill the grid in place
+    result = Sweep(
+        chain, joints, tuple(values), fixed.copy(), np.empty(tuple(counts) + (3,))
+    )
+    flat = result.points.reshape(-1, 3)  # a view: the chunks fill the grid in place
     for part, configurations in result._chunks():
         flat[part] = chain.fk(configurations)[:, :3, 3]
     return result
@@ -253,6 +286,7 @@ def _counts(num, joints):
     if isinstance(num, (list, tuple, np.ndarray)):
         if len(num) != joints:
             raise ValueError(
-                f"num must be one integer or one per swept joint ({joints}), got {describe(num)}")
+                f"num must be one integer or one per swept joint ({joints}), got {describe(num)}"
+            )
         return [check_integer(n, "num", minimum=2) for n in num]
     return [check_integer(num, "num", minimum=2)] * joints

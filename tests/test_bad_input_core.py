@@ -2,6 +2,7 @@
 plotting): one row per case. Each row asserts the error type and that the message names
 the argument. Further rows check that valid edge cases are answers and that no function
 changes its input."""
+
 import re
 
 import matplotlib
@@ -21,7 +22,9 @@ from screwkit import workspace as ws  # noqa: E402
 theta = sp.Symbol("theta", real=True)
 ARM = sk.robots.planar([0.4, 0.3, 0.2])
 ARM2 = sk.robots.planar([1.0, 0.5])
-LIMITED = sk.robots.planar([0.4, 0.3, 0.2], qlim=np.radians([[-180, 180], [-60, 60], [-60, 60]]))
+LIMITED = sk.robots.planar(
+    [0.4, 0.3, 0.2], qlim=np.radians([[-180, 180], [-60, 60], [-60, 60]])
+)
 PUMA = sk.robots.puma560()
 PATH = rd.circle((0.5, 0.1), 0.1, duration=1.0, dt=0.01)
 Q0 = rd.start_configuration(ARM, PATH.position[0], [0.3, 0.6, 0.6])
@@ -48,7 +51,9 @@ TRANSFORMS = [
     row("rotz-list-of-numeric-str", lambda: sk.rotz(["0.5"]), TypeError, "theta"),
     row("rotz-bool", lambda: sk.rotz(True), TypeError, "theta"),
     row("rotz-list-of-bool", lambda: sk.rotz([True, 0.1]), TypeError, "theta"),
-    row("rotz-bool-array", lambda: sk.rotz(np.array([True, False])), TypeError, "theta"),
+    row(
+        "rotz-bool-array", lambda: sk.rotz(np.array([True, False])), TypeError, "theta"
+    ),
     row("rotz-complex", lambda: sk.rotz(1 + 2j), TypeError, "theta"),
     row("rotz-complex-array", lambda: sk.rotz(np.array([1j, 0])), TypeError, "theta"),
     row("rotz-none", lambda: sk.rotz(None), TypeError, "theta"),
@@ -65,7 +70,9 @@ TRANSFORMS = [
     row("rotz-object", lambda: sk.rotz(object()), TypeError, "theta"),
     row("rotz-str-array", lambda: sk.rotz(np.array(["1"])), TypeError, "theta"),
     row("rotz-bytes", lambda: sk.rotz(b"1"), TypeError, "theta"),
-    row("rotz-sympy-matrix", lambda: sk.rotz(sp.Matrix([theta, 1])), TypeError, "theta"),
+    row(
+        "rotz-sympy-matrix", lambda: sk.rotz(sp.Matrix([theta, 1])), TypeError, "theta"
+    ),
     row("rotz-symbols-list", lambda: sk.rotz([theta, 1]), TypeError, "theta"),
     row("rotx-str", lambda: sk.rotx("x"), TypeError, "theta"),
     row("rotx-nan", lambda: sk.rotx([np.nan]), ValueError, "theta"),
@@ -85,23 +92,54 @@ TRANSFORMS = [
     row("skew-sympy-zoo", lambda: sk.skew([1, 2, sp.zoo]), ValueError, "v"),
     row("rot_axis-zero", lambda: sk.rot_axis([0, 0, 0], 1.0), ValueError, "axis"),
     row("rot_axis-tiny", lambda: sk.rot_axis([1e-13, 0, 0], 1.0), ValueError, "axis"),
-    row("rot_axis-sympy-zero", lambda: sk.rot_axis(sp.Matrix([0, 0, 0]), theta), ValueError, "axis"),
+    row(
+        "rot_axis-sympy-zero",
+        lambda: sk.rot_axis(sp.Matrix([0, 0, 0]), theta),
+        ValueError,
+        "axis",
+    ),
     row("rot_axis-str", lambda: sk.rot_axis("z", 1.0), TypeError, "axis"),
     row("rot_axis-none", lambda: sk.rot_axis(None, 1.0), TypeError, "axis"),
     row("rot_axis-short", lambda: sk.rot_axis([1, 0], 1.0), ValueError, "axis"),
-    row("rot_axis-batch", lambda: sk.rot_axis(np.ones((2, 3)), 1.0), ValueError, "axis"),
+    row(
+        "rot_axis-batch", lambda: sk.rot_axis(np.ones((2, 3)), 1.0), ValueError, "axis"
+    ),
     row("rot_axis-nan", lambda: sk.rot_axis([np.nan, 0, 1], 1.0), ValueError, "axis"),
     row("rot_axis-complex", lambda: sk.rot_axis([0, 0, 1j], 1.0), TypeError, "axis"),
     row("rot_axis-theta-str", lambda: sk.rot_axis([0, 0, 1], "x"), TypeError, "theta"),
-    row("rot_axis-theta-none", lambda: sk.rot_axis([0, 0, 1], None), TypeError, "theta"),
-    row("rot_axis-theta-bool", lambda: sk.rot_axis([0, 0, 1], True), TypeError, "theta"),
-    row("rot_axis-theta-complex", lambda: sk.rot_axis([0, 0, 1], 1j), TypeError, "theta"),
-    row("rot_axis-theta-nan", lambda: sk.rot_axis([0, 0, 1], [0.0, np.nan]), ValueError, "theta"),
-    row("rot_axis-sympy-axis-batch-theta", lambda: sk.rot_axis(sp.Matrix([0, 0, 1]), [0.1, 0.2]),
-        TypeError, "theta"),
-    row("rot_axis-sympy-axis-str-theta", lambda: sk.rot_axis(sp.Matrix([0, 0, 1]), "t"), TypeError,
-        "theta"),
-    row("rot_axis-sympy-theta-nan", lambda: sk.rot_axis([0, 0, 1], sp.nan), ValueError, "theta"),
+    row(
+        "rot_axis-theta-none", lambda: sk.rot_axis([0, 0, 1], None), TypeError, "theta"
+    ),
+    row(
+        "rot_axis-theta-bool", lambda: sk.rot_axis([0, 0, 1], True), TypeError, "theta"
+    ),
+    row(
+        "rot_axis-theta-complex", lambda: sk.rot_axis([0, 0, 1], 1j), TypeError, "theta"
+    ),
+    row(
+        "rot_axis-theta-nan",
+        lambda: sk.rot_axis([0, 0, 1], [0.0, np.nan]),
+        ValueError,
+        "theta",
+    ),
+    row(
+        "rot_axis-sympy-axis-batch-theta",
+        lambda: sk.rot_axis(sp.Matrix([0, 0, 1]), [0.1, 0.2]),
+        TypeError,
+        "theta",
+    ),
+    row(
+        "rot_axis-sympy-axis-str-theta",
+        lambda: sk.rot_axis(sp.Matrix([0, 0, 1]), "t"),
+        TypeError,
+        "theta",
+    ),
+    row(
+        "rot_axis-sympy-theta-nan",
+        lambda: sk.rot_axis([0, 0, 1], sp.nan),
+        ValueError,
+        "theta",
+    ),
     row("transl-none", lambda: sk.transl(None), TypeError, "p"),
     row("transl-two-args", lambda: sk.transl(1, 2), TypeError, "transl"),
     row("transl-four-args", lambda: sk.transl(1, 2, 3, 4), TypeError, "transl"),
@@ -110,81 +148,277 @@ TRANSFORMS = [
     row("transl-str", lambda: sk.transl("abc"), TypeError, "p"),
     row("transl-str-y", lambda: sk.transl(1, "a", 3), TypeError, "y"),
     row("transl-none-z", lambda: sk.transl(1, 2, None), TypeError, "z"),
-    row("transl-mismatched-batches", lambda: sk.transl([1, 2], [1, 2, 3], 0), ValueError, "x, y and z"),
+    row(
+        "transl-mismatched-batches",
+        lambda: sk.transl([1, 2], [1, 2, 3], 0),
+        ValueError,
+        "x, y and z",
+    ),
     row("transl-inf", lambda: sk.transl([np.inf, 0, 0]), ValueError, "p"),
     row("transl-bool", lambda: sk.transl([True, 0, 0]), TypeError, "p"),
     row("transl-nan-x", lambda: sk.transl(np.nan, 0, 0), ValueError, "x"),
-    row("homogeneous-not-rotation", lambda: sk.homogeneous(np.ones((3, 3))), ValueError, "R"),
-    row("homogeneous-reflection", lambda: sk.homogeneous(np.diag([1, 1, -1])), ValueError, "R"),
+    row(
+        "homogeneous-not-rotation",
+        lambda: sk.homogeneous(np.ones((3, 3))),
+        ValueError,
+        "R",
+    ),
+    row(
+        "homogeneous-reflection",
+        lambda: sk.homogeneous(np.diag([1, 1, -1])),
+        ValueError,
+        "R",
+    ),
     row("homogeneous-2x2", lambda: sk.homogeneous(np.eye(2)), ValueError, "R"),
-    row("homogeneous-sympy-not-rotation",
-        lambda: sk.homogeneous(sp.Matrix([[theta, 0, 0], [0, 1, 0], [0, 0, 1]])), ValueError, "R"),
+    row(
+        "homogeneous-sympy-not-rotation",
+        lambda: sk.homogeneous(sp.Matrix([[theta, 0, 0], [0, 1, 0], [0, 0, 1]])),
+        ValueError,
+        "R",
+    ),
     row("homogeneous-R-str", lambda: sk.homogeneous("eye"), TypeError, "R"),
-    row("homogeneous-R-nan", lambda: sk.homogeneous(np.full((3, 3), np.nan)), ValueError, "R"),
+    row(
+        "homogeneous-R-nan",
+        lambda: sk.homogeneous(np.full((3, 3), np.nan)),
+        ValueError,
+        "R",
+    ),
     row("homogeneous-R-scaled", lambda: sk.homogeneous(2 * np.eye(3)), ValueError, "R"),
-    row("homogeneous-R-complex", lambda: sk.homogeneous(np.eye(3) * (1 + 0j)), TypeError, "R"),
+    row(
+        "homogeneous-R-complex",
+        lambda: sk.homogeneous(np.eye(3) * (1 + 0j)),
+        TypeError,
+        "R",
+    ),
     row("homogeneous-p-short", lambda: sk.homogeneous(None, [1, 2]), ValueError, "p"),
     row("homogeneous-p-str", lambda: sk.homogeneous(None, "a"), TypeError, "p"),
-    row("homogeneous-batch-mismatch",
-        lambda: sk.homogeneous(np.stack([np.eye(3)] * 2), np.zeros((3, 3))), ValueError, "R and p"),
+    row(
+        "homogeneous-batch-mismatch",
+        lambda: sk.homogeneous(np.stack([np.eye(3)] * 2), np.zeros((3, 3))),
+        ValueError,
+        "R and p",
+    ),
     row("inv-3x3", lambda: sk.inv(np.eye(3)), ValueError, "T"),
     row("inv-nan", lambda: sk.inv(np.full((4, 4), np.nan)), ValueError, "T"),
     row("inv-last-row", lambda: sk.inv(np.diag([1.0, 1, 1, 2])), ValueError, "T"),
     row("inv-not-rigid", lambda: sk.inv(np.diag([2.0, 1, 1, 1])), ValueError, "T"),
-    row("inv-batch-zero-rotation", lambda: sk.inv(np.zeros((2, 4, 4)) + EYE * [0, 0, 0, 1]),
-        ValueError, "T"),
+    row(
+        "inv-batch-zero-rotation",
+        lambda: sk.inv(np.zeros((2, 4, 4)) + EYE * [0, 0, 0, 1]),
+        ValueError,
+        "T",
+    ),
     row("inv-none", lambda: sk.inv(None), TypeError, "T"),
     row("inv-str", lambda: sk.inv("T"), TypeError, "T"),
     row("inv-complex", lambda: sk.inv(EYE * (1 + 0j)), TypeError, "T"),
     row("inv-sympy-last-row", lambda: sk.inv(sp.diag(1, 1, 1, theta)), ValueError, "T"),
-    row("inv-one-bad-in-batch", lambda: sk.inv(np.stack([EYE, np.diag([1.0, 1, 1, 2])])),
-        ValueError, "T"),
-    row("twist_from_axis-h-str", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], "x"), TypeError, "h"),
-    row("twist_from_axis-h-numeric-str", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], "1.5"),
-        TypeError, "h"),
-    row("twist_from_axis-h-nan", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], np.nan), ValueError, "h"),
-    row("twist_from_axis-h-bool", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], True), TypeError, "h"),
-    row("twist_from_axis-h-minus-inf", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], -np.inf),
-        ValueError, "h"),
-    row("twist_from_axis-h-complex", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], 1j), TypeError, "h"),
-    row("twist_from_axis-h-batch", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], [0.1, 0.2]),
-        TypeError, "h"),
-    row("twist_from_axis-h-none", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], None), TypeError, "h"),
-    row("twist_from_axis-h-zoo", lambda: sk.twist_from_axis([0, 0, 1], [theta, 0, 0], sp.zoo),
-        ValueError, "h"),
-    row("twist_from_axis-h-sympy-I", lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], sp.I), TypeError, "h"),
-    row("twist_from_axis-h-symbol-str", lambda: sk.twist_from_axis([0, 0, 1], [theta, 0, 0], "h"),
-        TypeError, "h"),
-    row("twist_from_axis-s-zero", lambda: sk.twist_from_axis([0, 0, 0], [0, 0, 0], 0), ValueError, "s"),
-    row("twist_from_axis-s-none", lambda: sk.twist_from_axis(None, [0, 0, 0], 0), TypeError, "s"),
-    row("twist_from_axis-s-batch", lambda: sk.twist_from_axis(np.ones((2, 3)), [0, 0, 0], 0),
-        ValueError, "s"),
-    row("twist_from_axis-r-short", lambda: sk.twist_from_axis([0, 0, 1], [1, 2], 0), ValueError, "r"),
-    row("twist_from_axis-r-batch", lambda: sk.twist_from_axis([0, 0, 1], np.zeros((2, 3)), 0),
-        ValueError, "r"),
-    row("twist_from_axis-r-str-entry", lambda: sk.twist_from_axis([0, 0, 1], [theta, "x", 0], 0),
-        TypeError, "r"),
-    row("twist_from_axis-r-nan", lambda: sk.twist_from_axis([0, 0, 1], [np.nan, 0, 0], 0), ValueError, "r"),
+    row(
+        "inv-one-bad-in-batch",
+        lambda: sk.inv(np.stack([EYE, np.diag([1.0, 1, 1, 2])])),
+        ValueError,
+        "T",
+    ),
+    row(
+        "twist_from_axis-h-str",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], "x"),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-numeric-str",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], "1.5"),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-nan",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], np.nan),
+        ValueError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-bool",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], True),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-minus-inf",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], -np.inf),
+        ValueError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-complex",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], 1j),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-batch",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], [0.1, 0.2]),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-none",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], None),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-zoo",
+        lambda: sk.twist_from_axis([0, 0, 1], [theta, 0, 0], sp.zoo),
+        ValueError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-sympy-I",
+        lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], sp.I),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-h-symbol-str",
+        lambda: sk.twist_from_axis([0, 0, 1], [theta, 0, 0], "h"),
+        TypeError,
+        "h",
+    ),
+    row(
+        "twist_from_axis-s-zero",
+        lambda: sk.twist_from_axis([0, 0, 0], [0, 0, 0], 0),
+        ValueError,
+        "s",
+    ),
+    row(
+        "twist_from_axis-s-none",
+        lambda: sk.twist_from_axis(None, [0, 0, 0], 0),
+        TypeError,
+        "s",
+    ),
+    row(
+        "twist_from_axis-s-batch",
+        lambda: sk.twist_from_axis(np.ones((2, 3)), [0, 0, 0], 0),
+        ValueError,
+        "s",
+    ),
+    row(
+        "twist_from_axis-r-short",
+        lambda: sk.twist_from_axis([0, 0, 1], [1, 2], 0),
+        ValueError,
+        "r",
+    ),
+    row(
+        "twist_from_axis-r-batch",
+        lambda: sk.twist_from_axis([0, 0, 1], np.zeros((2, 3)), 0),
+        ValueError,
+        "r",
+    ),
+    row(
+        "twist_from_axis-r-str-entry",
+        lambda: sk.twist_from_axis([0, 0, 1], [theta, "x", 0], 0),
+        TypeError,
+        "r",
+    ),
+    row(
+        "twist_from_axis-r-nan",
+        lambda: sk.twist_from_axis([0, 0, 1], [np.nan, 0, 0], 0),
+        ValueError,
+        "r",
+    ),
     row("exp_twist-short", lambda: sk.exp_twist([0, 0, 1], 1.0), ValueError, "twist"),
-    row("exp_twist-sympy-short", lambda: sk.exp_twist(sp.Matrix([0, 0, 1]), theta), ValueError, "twist"),
+    row(
+        "exp_twist-sympy-short",
+        lambda: sk.exp_twist(sp.Matrix([0, 0, 1]), theta),
+        ValueError,
+        "twist",
+    ),
     row("exp_twist-str", lambda: sk.exp_twist("abc", 1.0), TypeError, "twist"),
     row("exp_twist-none", lambda: sk.exp_twist(None, 1.0), TypeError, "twist"),
-    row("exp_twist-nan", lambda: sk.exp_twist([0, 0, 1, np.nan, 0, 0], 1.0), ValueError, "twist"),
-    row("exp_twist-complex", lambda: sk.exp_twist(np.array([0, 0, 1, 0, 0, 1j]), 1.0), TypeError, "twist"),
-    row("exp_twist-batch-twist", lambda: sk.exp_twist(np.zeros((2, 6)), 1.0), ValueError, "twist"),
-    row("exp_twist-theta-str", lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], "a"), TypeError, "theta"),
-    row("exp_twist-theta-none", lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], None), TypeError, "theta"),
-    row("exp_twist-theta-bool", lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], False), TypeError, "theta"),
-    row("exp_twist-theta-inf", lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], np.inf), ValueError, "theta"),
-    row("exp_twist-sympy-twist-batch-theta",
-        lambda: sk.exp_twist(sp.Matrix([0, 0, 1, 0, 0, 0]), [0.1, 0.2]), TypeError, "theta"),
-    row("exp_twist-overflow", lambda: sk.exp_twist([0, 0, 1e300, 0, 0, 1e300], 1e10), ValueError, "theta"),
-    row("exp_twist-translation-overflow", lambda: sk.exp_twist([0, 0, 0, 1e300, 0, 0], 1e10),
-        ValueError, "theta"),
-    row("screw_motion-s-zero", lambda: sk.screw_motion([0, 0, 0], [0, 0, 0], 0, 1.0), ValueError, "s"),
-    row("screw_motion-theta-str", lambda: sk.screw_motion([0, 0, 1], [0, 0, 0], 0, "a"), TypeError, "theta"),
-    row("screw_motion-h-str", lambda: sk.screw_motion([0, 0, 1], [0, 0, 0], "x", 1.0), TypeError, "h"),
-    row("screw_motion-r-short", lambda: sk.screw_motion([0, 0, 1], [1, 2], 0, 1.0), ValueError, "r"),
+    row(
+        "exp_twist-nan",
+        lambda: sk.exp_twist([0, 0, 1, np.nan, 0, 0], 1.0),
+        ValueError,
+        "twist",
+    ),
+    row(
+        "exp_twist-complex",
+        lambda: sk.exp_twist(np.array([0, 0, 1, 0, 0, 1j]), 1.0),
+        TypeError,
+        "twist",
+    ),
+    row(
+        "exp_twist-batch-twist",
+        lambda: sk.exp_twist(np.zeros((2, 6)), 1.0),
+        ValueError,
+        "twist",
+    ),
+    row(
+        "exp_twist-theta-str",
+        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], "a"),
+        TypeError,
+        "theta",
+    ),
+    row(
+        "exp_twist-theta-none",
+        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], None),
+        TypeError,
+        "theta",
+    ),
+    row(
+        "exp_twist-theta-bool",
+        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], False),
+        TypeError,
+        "theta",
+    ),
+    row(
+        "exp_twist-theta-inf",
+        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], np.inf),
+        ValueError,
+        "theta",
+    ),
+    row(
+        "exp_twist-sympy-twist-batch-theta",
+        lambda: sk.exp_twist(sp.Matrix([0, 0, 1, 0, 0, 0]), [0.1, 0.2]),
+        TypeError,
+        "theta",
+    ),
+    row(
+        "exp_twist-overflow",
+        lambda: sk.exp_twist([0, 0, 1e300, 0, 0, 1e300], 1e10),
+        ValueError,
+        "theta",
+    ),
+    row(
+        "exp_twist-translation-overflow",
+        lambda: sk.exp_twist([0, 0, 0, 1e300, 0, 0], 1e10),
+        ValueError,
+        "theta",
+    ),
+    row(
+        "screw_motion-s-zero",
+        lambda: sk.screw_motion([0, 0, 0], [0, 0, 0], 0, 1.0),
+        ValueError,
+        "s",
+    ),
+    row(
+        "screw_motion-theta-str",
+        lambda: sk.screw_motion([0, 0, 1], [0, 0, 0], 0, "a"),
+        TypeError,
+        "theta",
+    ),
+    row(
+        "screw_motion-h-str",
+        lambda: sk.screw_motion([0, 0, 1], [0, 0, 0], "x", 1.0),
+        TypeError,
+        "h",
+    ),
+    row(
+        "screw_motion-r-short",
+        lambda: sk.screw_motion([0, 0, 1], [1, 2], 0, 1.0),
+        ValueError,
+        "r",
+    ),
 ]
 
 WORKSPACE = [
@@ -193,34 +427,115 @@ WORKSPACE = [
     row("sweep-ranges-list", lambda: ws.sweep(ARM2, [(0, 1)]), TypeError, "ranges"),
     row("sweep-ranges-empty", lambda: ws.sweep(ARM2, {}), TypeError, "ranges"),
     row("sweep-joint-0", lambda: ws.sweep(ARM2, {0: (0, 1)}), ValueError, "ranges"),
-    row("sweep-joint-too-big", lambda: ws.sweep(PUMA, {7: (0, 1)}), ValueError, "ranges"),
-    row("sweep-joint-bool", lambda: ws.sweep(ARM2, {True: (0, 1)}), TypeError, "ranges"),
-    row("sweep-joint-float", lambda: ws.sweep(ARM2, {1.0: (0, 1)}), TypeError, "ranges"),
+    row(
+        "sweep-joint-too-big", lambda: ws.sweep(PUMA, {7: (0, 1)}), ValueError, "ranges"
+    ),
+    row(
+        "sweep-joint-bool", lambda: ws.sweep(ARM2, {True: (0, 1)}), TypeError, "ranges"
+    ),
+    row(
+        "sweep-joint-float", lambda: ws.sweep(ARM2, {1.0: (0, 1)}), TypeError, "ranges"
+    ),
     row("sweep-joint-str", lambda: ws.sweep(ARM2, {"1": (0, 1)}), TypeError, "ranges"),
-    row("sweep-range-three", lambda: ws.sweep(ARM2, {1: (0, 1, 2)}), ValueError, r"ranges\[1\]"),
-    row("sweep-range-nan", lambda: ws.sweep(ARM2, {1: (0, np.nan)}), ValueError, r"ranges\[1\]"),
-    row("sweep-range-str", lambda: ws.sweep(ARM2, {1: ("a", "b")}), TypeError, r"ranges\[1\]"),
-    row("sweep-range-equal", lambda: ws.sweep(ARM2, {1: (1, 1)}), ValueError, r"ranges\[1\]"),
-    row("sweep-range-none", lambda: ws.sweep(ARM2, {1: None}), TypeError, r"ranges\[1\]"),
+    row(
+        "sweep-range-three",
+        lambda: ws.sweep(ARM2, {1: (0, 1, 2)}),
+        ValueError,
+        r"ranges\[1\]",
+    ),
+    row(
+        "sweep-range-nan",
+        lambda: ws.sweep(ARM2, {1: (0, np.nan)}),
+        ValueError,
+        r"ranges\[1\]",
+    ),
+    row(
+        "sweep-range-str",
+        lambda: ws.sweep(ARM2, {1: ("a", "b")}),
+        TypeError,
+        r"ranges\[1\]",
+    ),
+    row(
+        "sweep-range-equal",
+        lambda: ws.sweep(ARM2, {1: (1, 1)}),
+        ValueError,
+        r"ranges\[1\]",
+    ),
+    row(
+        "sweep-range-none", lambda: ws.sweep(ARM2, {1: None}), TypeError, r"ranges\[1\]"
+    ),
     row("sweep-num-1", lambda: ws.sweep(ARM2, {1: (0, 1)}, num=1), ValueError, "num"),
-    row("sweep-num-float", lambda: ws.sweep(ARM2, {1: (0, 1)}, num=2.5), TypeError, "num"),
-    row("sweep-num-bool", lambda: ws.sweep(ARM2, {1: (0, 1)}, num=True), TypeError, "num"),
-    row("sweep-num-str", lambda: ws.sweep(ARM2, {1: (0, 1)}, num="10"), TypeError, "num"),
-    row("sweep-num-none", lambda: ws.sweep(ARM2, {1: (0, 1)}, num=None), TypeError, "num"),
-    row("sweep-num-count", lambda: ws.sweep(ARM2, {1: (0, 1), 2: (0, 1)}, num=(10,)), ValueError, "num"),
-    row("sweep-num-entry", lambda: ws.sweep(ARM2, {1: (0, 1), 2: (0, 1)}, num=(10, "a")), TypeError, "num"),
+    row(
+        "sweep-num-float",
+        lambda: ws.sweep(ARM2, {1: (0, 1)}, num=2.5),
+        TypeError,
+        "num",
+    ),
+    row(
+        "sweep-num-bool",
+        lambda: ws.sweep(ARM2, {1: (0, 1)}, num=True),
+        TypeError,
+        "num",
+    ),
+    row(
+        "sweep-num-str", lambda: ws.sweep(ARM2, {1: (0, 1)}, num="10"), TypeError, "num"
+    ),
+    row(
+        "sweep-num-none",
+        lambda: ws.sweep(ARM2, {1: (0, 1)}, num=None),
+        TypeError,
+        "num",
+    ),
+    row(
+        "sweep-num-count",
+        lambda: ws.sweep(ARM2, {1: (0, 1), 2: (0, 1)}, num=(10,)),
+        ValueError,
+        "num",
+    ),
+    row(
+        "sweep-num-entry",
+        lambda: ws.sweep(ARM2, {1: (0, 1), 2: (0, 1)}, num=(10, "a")),
+        TypeError,
+        "num",
+    ),
     row("sweep-q-short", lambda: ws.sweep(ARM2, {1: (0, 1)}, q=[0.0]), ValueError, "q"),
-    row("sweep-q-batch", lambda: ws.sweep(ARM2, {1: (0, 1)}, q=np.zeros((2, 2))), ValueError, "q"),
-    row("sweep-q-nan", lambda: ws.sweep(ARM2, {1: (0, 1)}, q=[0.0, np.nan]), ValueError, "q"),
+    row(
+        "sweep-q-batch",
+        lambda: ws.sweep(ARM2, {1: (0, 1)}, q=np.zeros((2, 2))),
+        ValueError,
+        "q",
+    ),
+    row(
+        "sweep-q-nan",
+        lambda: ws.sweep(ARM2, {1: (0, 1)}, q=[0.0, np.nan]),
+        ValueError,
+        "q",
+    ),
     row("sweep-q-str", lambda: ws.sweep(ARM2, {1: (0, 1)}, q="zero"), TypeError, "q"),
-    row("sweep-too-large-3-joints", lambda: ws.sweep(PUMA, {1: (0, 1), 2: (0, 1), 3: (0, 1)}),
-        ValueError, "max_configurations"),
-    row("sweep-too-large-4-joints", lambda: ws.sweep(PUMA, {1: (0, 1), 2: (0, 1), 3: (0, 1), 4: (0, 1)}),
-        ValueError, "max_configurations"),
-    row("sweep-limit-0", lambda: ws.sweep(ARM2, {1: (0, 1)}, max_configurations=0), ValueError,
-        "max_configurations"),
-    row("sweep-limit-str", lambda: ws.sweep(ARM2, {1: (0, 1)}, max_configurations="big"), TypeError,
-        "max_configurations"),
+    row(
+        "sweep-too-large-3-joints",
+        lambda: ws.sweep(PUMA, {1: (0, 1), 2: (0, 1), 3: (0, 1)}),
+        ValueError,
+        "max_configurations",
+    ),
+    row(
+        "sweep-too-large-4-joints",
+        lambda: ws.sweep(PUMA, {1: (0, 1), 2: (0, 1), 3: (0, 1), 4: (0, 1)}),
+        ValueError,
+        "max_configurations",
+    ),
+    row(
+        "sweep-limit-0",
+        lambda: ws.sweep(ARM2, {1: (0, 1)}, max_configurations=0),
+        ValueError,
+        "max_configurations",
+    ),
+    row(
+        "sweep-limit-str",
+        lambda: ws.sweep(ARM2, {1: (0, 1)}, max_configurations="big"),
+        TypeError,
+        "max_configurations",
+    ),
     row("reach-str", lambda: SWEEP.reach("origin"), TypeError, "centre"),
     row("reach-short", lambda: SWEEP.reach([0, 0]), ValueError, "centre"),
     row("reach-nan", lambda: SWEEP.reach([0, 0, np.nan]), ValueError, "centre"),
@@ -228,176 +543,626 @@ WORKSPACE = [
     row("section-axis-int", lambda: SWEEP.section(1), TypeError, "axis"),
     row("section-value-str", lambda: SWEEP.section("y", "a"), TypeError, "value"),
     row("section-value-batch", lambda: SWEEP.section("y", [0, 1]), TypeError, "value"),
-    row("section-tolerance-negative", lambda: SWEEP.section("y", 0.0, -1.0), ValueError, "tolerance"),
-    row("section-tolerance-nan", lambda: SWEEP.section("y", 0.0, np.nan), ValueError, "tolerance"),
+    row(
+        "section-tolerance-negative",
+        lambda: SWEEP.section("y", 0.0, -1.0),
+        ValueError,
+        "tolerance",
+    ),
+    row(
+        "section-tolerance-nan",
+        lambda: SWEEP.section("y", 0.0, np.nan),
+        ValueError,
+        "tolerance",
+    ),
     row("determinant-not-square", lambda: SWEEP.determinant(), ValueError, "rows"),
-    row("determinant-rows-bad", lambda: SWEEP.determinant(rows="bad"), ValueError, "rows"),
+    row(
+        "determinant-rows-bad",
+        lambda: SWEEP.determinant(rows="bad"),
+        ValueError,
+        "rows",
+    ),
     row("singular-rows-bad", lambda: SWEEP.singular(rows="xyz"), ValueError, "rows"),
-    row("manipulability-rows-int", lambda: SWEEP.manipulability(rows=3), TypeError, "rows"),
+    row(
+        "manipulability-rows-int",
+        lambda: SWEEP.manipulability(rows=3),
+        TypeError,
+        "rows",
+    ),
     row("jacobians-rows-none", lambda: SWEEP.jacobians(rows=None), ValueError, "rows"),
 ]
 
 REDUNDANCY = [
-    row("Path-one-sample", lambda: rd.Path([0.0], np.zeros((1, 2)), np.zeros((1, 2))), ValueError, "t"),
+    row(
+        "Path-one-sample",
+        lambda: rd.Path([0.0], np.zeros((1, 2)), np.zeros((1, 2))),
+        ValueError,
+        "t",
+    ),
     row("Path-dt-zero", lambda: rd.Path(np.zeros(5), POS, POS), ValueError, "dt"),
     row("Path-dt-negative", lambda: rd.Path(-T_STEPS, POS, POS), ValueError, "dt"),
-    row("Path-non-uniform", lambda: rd.Path([0, 0.1, 0.3, 0.4, 0.5], POS, POS), ValueError, "t"),
-    row("Path-t-nan", lambda: rd.Path([0, 0.1, np.nan, 0.3, 0.4], POS, POS), ValueError, "t"),
+    row(
+        "Path-non-uniform",
+        lambda: rd.Path([0, 0.1, 0.3, 0.4, 0.5], POS, POS),
+        ValueError,
+        "t",
+    ),
+    row(
+        "Path-t-nan",
+        lambda: rd.Path([0, 0.1, np.nan, 0.3, 0.4], POS, POS),
+        ValueError,
+        "t",
+    ),
     row("Path-t-2d", lambda: rd.Path(np.zeros((5, 1)), POS, POS), ValueError, "t"),
-    row("Path-position-shape", lambda: rd.Path(T_STEPS, np.zeros((4, 2)), POS), ValueError, "position"),
-    row("Path-velocity-3d", lambda: rd.Path(T_STEPS, POS, np.zeros((5, 3))), ValueError, "velocity"),
-    row("Path-velocity-str", lambda: rd.Path(T_STEPS, POS, "still"), TypeError, "velocity"),
+    row(
+        "Path-position-shape",
+        lambda: rd.Path(T_STEPS, np.zeros((4, 2)), POS),
+        ValueError,
+        "position",
+    ),
+    row(
+        "Path-velocity-3d",
+        lambda: rd.Path(T_STEPS, POS, np.zeros((5, 3))),
+        ValueError,
+        "velocity",
+    ),
+    row(
+        "Path-velocity-str",
+        lambda: rd.Path(T_STEPS, POS, "still"),
+        TypeError,
+        "velocity",
+    ),
     row("Path-name", lambda: rd.Path(T_STEPS, POS, POS, 5), TypeError, "name"),
     row("timing-zero-duration", lambda: rd.timing(T_STEPS, 0), ValueError, "duration"),
-    row("timing-negative-duration", lambda: rd.timing(T_STEPS, -1.0), ValueError, "duration"),
-    row("timing-nan-duration", lambda: rd.timing(T_STEPS, np.nan), ValueError, "duration"),
+    row(
+        "timing-negative-duration",
+        lambda: rd.timing(T_STEPS, -1.0),
+        ValueError,
+        "duration",
+    ),
+    row(
+        "timing-nan-duration",
+        lambda: rd.timing(T_STEPS, np.nan),
+        ValueError,
+        "duration",
+    ),
     row("timing-str-duration", lambda: rd.timing(T_STEPS, "1"), TypeError, "duration"),
     row("timing-kind", lambda: rd.timing(T_STEPS, 1.0, "fast"), ValueError, "kind"),
     row("timing-t-str", lambda: rd.timing("a", 1.0), TypeError, "t"),
     row("timing-t-outside", lambda: rd.timing([0.0, 2.0], 1.0), ValueError, "t"),
     row("timing-t-negative", lambda: rd.timing([-0.5, 0.5], 1.0), ValueError, "t"),
-    row("circle-radius-nan", lambda: rd.circle((0, 0), np.nan, 1.0, 0.01), ValueError, "radius"),
-    row("circle-radius-negative", lambda: rd.circle((0, 0), -0.1, 1.0, 0.01), ValueError, "radius"),
-    row("circle-radius-str", lambda: rd.circle((0, 0), "a", 1.0, 0.01), TypeError, "radius"),
-    row("circle-center-3d", lambda: rd.circle((0, 0, 0), 0.1, 1.0, 0.01), ValueError, "center"),
-    row("circle-center-str", lambda: rd.circle("ab", 0.1, 1.0, 0.01), TypeError, "center"),
+    row(
+        "circle-radius-nan",
+        lambda: rd.circle((0, 0), np.nan, 1.0, 0.01),
+        ValueError,
+        "radius",
+    ),
+    row(
+        "circle-radius-negative",
+        lambda: rd.circle((0, 0), -0.1, 1.0, 0.01),
+        ValueError,
+        "radius",
+    ),
+    row(
+        "circle-radius-str",
+        lambda: rd.circle((0, 0), "a", 1.0, 0.01),
+        TypeError,
+        "radius",
+    ),
+    row(
+        "circle-center-3d",
+        lambda: rd.circle((0, 0, 0), 0.1, 1.0, 0.01),
+        ValueError,
+        "center",
+    ),
+    row(
+        "circle-center-str",
+        lambda: rd.circle("ab", 0.1, 1.0, 0.01),
+        TypeError,
+        "center",
+    ),
     row("circle-dt-zero", lambda: rd.circle((0, 0), 0.1, 1.0, 0.0), ValueError, "dt"),
-    row("circle-dt-negative", lambda: rd.circle((0, 0), 0.1, 1.0, -0.01), ValueError, "dt"),
+    row(
+        "circle-dt-negative",
+        lambda: rd.circle((0, 0), 0.1, 1.0, -0.01),
+        ValueError,
+        "dt",
+    ),
     row("circle-dt-bool", lambda: rd.circle((0, 0), 0.1, 1.0, True), TypeError, "dt"),
-    row("circle-duration-zero", lambda: rd.circle((0, 0), 0.1, 0.0, 0.01), ValueError, "duration"),
-    row("circle-not-whole-steps", lambda: rd.circle((0, 0), 0.1, 1.0, 0.3), ValueError, "duration"),
-    row("circle-too-many-steps", lambda: rd.circle((0, 0), 0.1, 1e6, 1e-6), ValueError, "dt"),
-    row("circle-timing-kind", lambda: rd.circle((0, 0), 0.1, 1.0, 0.01, "x"), ValueError, "timing_kind"),
-    row("line-same-points", lambda: rd.line((0, 0), (0, 0), 1.0, 0.01), ValueError, "start and end"),
+    row(
+        "circle-duration-zero",
+        lambda: rd.circle((0, 0), 0.1, 0.0, 0.01),
+        ValueError,
+        "duration",
+    ),
+    row(
+        "circle-not-whole-steps",
+        lambda: rd.circle((0, 0), 0.1, 1.0, 0.3),
+        ValueError,
+        "duration",
+    ),
+    row(
+        "circle-too-many-steps",
+        lambda: rd.circle((0, 0), 0.1, 1e6, 1e-6),
+        ValueError,
+        "dt",
+    ),
+    row(
+        "circle-timing-kind",
+        lambda: rd.circle((0, 0), 0.1, 1.0, 0.01, "x"),
+        ValueError,
+        "timing_kind",
+    ),
+    row(
+        "line-same-points",
+        lambda: rd.line((0, 0), (0, 0), 1.0, 0.01),
+        ValueError,
+        "start and end",
+    ),
     row("line-end-none", lambda: rd.line((0, 0), None, 1.0, 0.01), TypeError, "end"),
-    row("line-start-nan", lambda: rd.line((np.nan, 0), (1, 0), 1.0, 0.01), ValueError, "start"),
-    row("line-timing-kind-int", lambda: rd.line((0, 0), (1, 0), 1.0, 0.01, 1), TypeError, "timing_kind"),
+    row(
+        "line-start-nan",
+        lambda: rd.line((np.nan, 0), (1, 0), 1.0, 0.01),
+        ValueError,
+        "start",
+    ),
+    row(
+        "line-timing-kind-int",
+        lambda: rd.line((0, 0), (1, 0), 1.0, 0.01, 1),
+        TypeError,
+        "timing_kind",
+    ),
     row("resolve-arm-str", lambda: rd.resolve("arm", PATH, Q0), TypeError, "arm"),
-    row("resolve-arm-puma", lambda: rd.resolve(PUMA, PATH, np.zeros(6)), ValueError, "arm"),
-    row("resolve-path-array", lambda: rd.resolve(ARM, PATH.position, Q0), TypeError, "path"),
+    row(
+        "resolve-arm-puma",
+        lambda: rd.resolve(PUMA, PATH, np.zeros(6)),
+        ValueError,
+        "arm",
+    ),
+    row(
+        "resolve-path-array",
+        lambda: rd.resolve(ARM, PATH.position, Q0),
+        TypeError,
+        "path",
+    ),
     row("resolve-q0-short", lambda: rd.resolve(ARM, PATH, Q0[:2]), ValueError, "q0"),
-    row("resolve-q0-nan", lambda: rd.resolve(ARM, PATH, [np.nan, 0, 0]), ValueError, "q0"),
-    row("resolve-q0-batch", lambda: rd.resolve(ARM, PATH, np.stack([Q0, Q0])), ValueError, "q0"),
-    row("resolve-q0-off-path", lambda: rd.resolve(ARM, PATH, Q0 + 0.1), ValueError, "q0"),
-    row("resolve-null-space-nan", lambda: rd.resolve(ARM, PATH, Q0, null_space_gain=np.nan), ValueError,
-        "null_space_gain"),
-    row("resolve-null-space-str", lambda: rd.resolve(ARM, PATH, Q0, null_space_gain="1"), TypeError,
-        "null_space_gain"),
-    row("resolve-null-space-bool", lambda: rd.resolve(ARM, PATH, Q0, null_space_gain=True), TypeError,
-        "null_space_gain"),
-    row("resolve-null-space-array", lambda: rd.resolve(ARM, PATH, Q0, null_space_gain=[1.0, 2.0]),
-        TypeError, "null_space_gain"),
-    row("resolve-damping-nan", lambda: rd.resolve(ARM, PATH, Q0, damping=np.nan), ValueError, "damping"),
-    row("resolve-damping-negative", lambda: rd.resolve(ARM, PATH, Q0, damping=-0.1), ValueError, "damping"),
-    row("resolve-max-rate-negative", lambda: rd.resolve(ARM, PATH, Q0, max_rate=-1.0), ValueError,
-        "max_rate"),
-    row("resolve-max-rate-zero", lambda: rd.resolve(ARM, PATH, Q0, max_rate=0.0), ValueError, "max_rate"),
-    row("resolve-feedback-negative", lambda: rd.resolve(ARM, PATH, Q0, feedback_gain=-1.0), ValueError,
-        "feedback_gain"),
-    row("resolve-feedback-nan", lambda: rd.resolve(ARM, PATH, Q0, feedback_gain=np.nan), ValueError,
-        "feedback_gain"),
-    row("resolve-feedback-unstable", lambda: rd.resolve(ARM, PATH, Q0, feedback_gain=500.0), ValueError,
-        "feedback_gain"),
-    row("resolve-limit-gain-nan", lambda: rd.resolve(ARM, PATH, Q0, limit_gain=np.nan), ValueError,
-        "limit_gain"),
-    row("resolve-start-tolerance-zero", lambda: rd.resolve(ARM, PATH, Q0, start_tolerance=0.0), ValueError,
-        "start_tolerance"),
-    row("resolve-joint-limits-str", lambda: rd.resolve(ARM, PATH, Q0, joint_limits="soft"), ValueError,
-        "joint_limits"),
-    row("resolve-joint-limits-bool", lambda: rd.resolve(ARM, PATH, Q0, joint_limits=True), TypeError,
-        "joint_limits"),
-    row("resolve-q0-outside-limits", lambda: rd.resolve(LIMITED, PATH, limits_q0(), joint_limits="clamp"),
-        ValueError, "q0"),
-    row("resolve-path-outside-annulus",
-        lambda: rd.resolve(ARM, rd.circle((0.8, 0.0), 0.3, 1.0, 0.01), Q0), ValueError, "path"),
-    row("start-max-iterations-0", lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6, 0.6],
-                                                                   max_iterations=0),
-        ValueError, "max_iterations"),
-    row("start-max-iterations-float", lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6, 0.6],
-                                                                       max_iterations=2.5),
-        TypeError, "max_iterations"),
-    row("start-max-iterations-bool", lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6, 0.6],
-                                                                      max_iterations=True),
-        TypeError, "max_iterations"),
-    row("start-tol-zero", lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6, 0.6], tol=0.0),
-        ValueError, "tol"),
-    row("start-tol-nan", lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6, 0.6], tol=np.nan),
-        ValueError, "tol"),
-    row("start-q-guess-short", lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6]), ValueError,
-        "q_guess"),
-    row("start-q-guess-batch", lambda: rd.start_configuration(ARM, (0.5, 0.1), np.zeros((2, 3))),
-        ValueError, "q_guess"),
-    row("start-point-3d", lambda: rd.start_configuration(ARM, (0.5, 0.1, 0.0), [0.3, 0.6, 0.6]), ValueError,
-        "point"),
-    row("start-point-str", lambda: rd.start_configuration(ARM, "ab", [0.3, 0.6, 0.6]), TypeError, "point"),
-    row("start-unreachable", lambda: rd.start_configuration(ARM, (2.0, 0.0), [0.3, 0.6, 0.6]), ValueError,
-        "point"),
-    row("start-arm-none", lambda: rd.start_configuration(None, (0.5, 0.1), [0.3, 0.6, 0.6]), TypeError,
-        "arm"),
+    row(
+        "resolve-q0-nan",
+        lambda: rd.resolve(ARM, PATH, [np.nan, 0, 0]),
+        ValueError,
+        "q0",
+    ),
+    row(
+        "resolve-q0-batch",
+        lambda: rd.resolve(ARM, PATH, np.stack([Q0, Q0])),
+        ValueError,
+        "q0",
+    ),
+    row(
+        "resolve-q0-off-path", lambda: rd.resolve(ARM, PATH, Q0 + 0.1), ValueError, "q0"
+    ),
+    row(
+        "resolve-null-space-nan",
+        lambda: rd.resolve(ARM, PATH, Q0, null_space_gain=np.nan),
+        ValueError,
+        "null_space_gain",
+    ),
+    row(
+        "resolve-null-space-str",
+        lambda: rd.resolve(ARM, PATH, Q0, null_space_gain="1"),
+        TypeError,
+        "null_space_gain",
+    ),
+    row(
+        "resolve-null-space-bool",
+        lambda: rd.resolve(ARM, PATH, Q0, null_space_gain=True),
+        TypeError,
+        "null_space_gain",
+    ),
+    row(
+        "resolve-null-space-array",
+        lambda: rd.resolve(ARM, PATH, Q0, null_space_gain=[1.0, 2.0]),
+        TypeError,
+        "null_space_gain",
+    ),
+    row(
+        "resolve-damping-nan",
+        lambda: rd.resolve(ARM, PATH, Q0, damping=np.nan),
+        ValueError,
+        "damping",
+    ),
+    row(
+        "resolve-damping-negative",
+        lambda: rd.resolve(ARM, PATH, Q0, damping=-0.1),
+        ValueError,
+        "damping",
+    ),
+    row(
+        "resolve-max-rate-negative",
+        lambda: rd.resolve(ARM, PATH, Q0, max_rate=-1.0),
+        ValueError,
+        "max_rate",
+    ),
+    row(
+        "resolve-max-rate-zero",
+        lambda: rd.resolve(ARM, PATH, Q0, max_rate=0.0),
+        ValueError,
+        "max_rate",
+    ),
+    row(
+        "resolve-feedback-negative",
+        lambda: rd.resolve(ARM, PATH, Q0, feedback_gain=-1.0),
+        ValueError,
+        "feedback_gain",
+    ),
+    row(
+        "resolve-feedback-nan",
+        lambda: rd.resolve(ARM, PATH, Q0, feedback_gain=np.nan),
+        ValueError,
+        "feedback_gain",
+    ),
+    row(
+        "resolve-feedback-unstable",
+        lambda: rd.resolve(ARM, PATH, Q0, feedback_gain=500.0),
+        ValueError,
+        "feedback_gain",
+    ),
+    row(
+        "resolve-limit-gain-nan",
+        lambda: rd.resolve(ARM, PATH, Q0, limit_gain=np.nan),
+        ValueError,
+        "limit_gain",
+    ),
+    row(
+        "resolve-start-tolerance-zero",
+        lambda: rd.resolve(ARM, PATH, Q0, start_tolerance=0.0),
+        ValueError,
+        "start_tolerance",
+    ),
+    row(
+        "resolve-joint-limits-str",
+        lambda: rd.resolve(ARM, PATH, Q0, joint_limits="soft"),
+        ValueError,
+        "joint_limits",
+    ),
+    row(
+        "resolve-joint-limits-bool",
+        lambda: rd.resolve(ARM, PATH, Q0, joint_limits=True),
+        TypeError,
+        "joint_limits",
+    ),
+    row(
+        "resolve-q0-outside-limits",
+        lambda: rd.resolve(LIMITED, PATH, limits_q0(), joint_limits="clamp"),
+        ValueError,
+        "q0",
+    ),
+    row(
+        "resolve-path-outside-annulus",
+        lambda: rd.resolve(ARM, rd.circle((0.8, 0.0), 0.3, 1.0, 0.01), Q0),
+        ValueError,
+        "path",
+    ),
+    row(
+        "start-max-iterations-0",
+        lambda: rd.start_configuration(
+            ARM, (0.5, 0.1), [0.3, 0.6, 0.6], max_iterations=0
+        ),
+        ValueError,
+        "max_iterations",
+    ),
+    row(
+        "start-max-iterations-float",
+        lambda: rd.start_configuration(
+            ARM, (0.5, 0.1), [0.3, 0.6, 0.6], max_iterations=2.5
+        ),
+        TypeError,
+        "max_iterations",
+    ),
+    row(
+        "start-max-iterations-bool",
+        lambda: rd.start_configuration(
+            ARM, (0.5, 0.1), [0.3, 0.6, 0.6], max_iterations=True
+        ),
+        TypeError,
+        "max_iterations",
+    ),
+    row(
+        "start-tol-zero",
+        lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6, 0.6], tol=0.0),
+        ValueError,
+        "tol",
+    ),
+    row(
+        "start-tol-nan",
+        lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6, 0.6], tol=np.nan),
+        ValueError,
+        "tol",
+    ),
+    row(
+        "start-q-guess-short",
+        lambda: rd.start_configuration(ARM, (0.5, 0.1), [0.3, 0.6]),
+        ValueError,
+        "q_guess",
+    ),
+    row(
+        "start-q-guess-batch",
+        lambda: rd.start_configuration(ARM, (0.5, 0.1), np.zeros((2, 3))),
+        ValueError,
+        "q_guess",
+    ),
+    row(
+        "start-point-3d",
+        lambda: rd.start_configuration(ARM, (0.5, 0.1, 0.0), [0.3, 0.6, 0.6]),
+        ValueError,
+        "point",
+    ),
+    row(
+        "start-point-str",
+        lambda: rd.start_configuration(ARM, "ab", [0.3, 0.6, 0.6]),
+        TypeError,
+        "point",
+    ),
+    row(
+        "start-unreachable",
+        lambda: rd.start_configuration(ARM, (2.0, 0.0), [0.3, 0.6, 0.6]),
+        ValueError,
+        "point",
+    ),
+    row(
+        "start-arm-none",
+        lambda: rd.start_configuration(None, (0.5, 0.1), [0.3, 0.6, 0.6]),
+        TypeError,
+        "arm",
+    ),
     row("pinv-J-3x3", lambda: rd.pseudo_inverse(np.eye(3)), ValueError, "J"),
     row("pinv-J-str", lambda: rd.pseudo_inverse("J"), TypeError, "J"),
-    row("pinv-J-nan", lambda: rd.pseudo_inverse(np.full((2, 3), np.nan)), ValueError, "J"),
-    row("pinv-damping-nan", lambda: rd.pseudo_inverse(np.ones((2, 3)), damping=np.nan), ValueError,
-        "damping"),
-    row("pinv-region-zero", lambda: rd.pseudo_inverse(np.ones((2, 3)), singular_region=0.0), ValueError,
-        "singular_region"),
-    row("kinematics-lengths-str", lambda: rd.planar_kinematics("a", [0.0]), TypeError, "lengths"),
-    row("kinematics-lengths-negative", lambda: rd.planar_kinematics([-1.0, 1.0], [0.0, 0.0]), ValueError,
-        "lengths"),
-    row("kinematics-q-mismatch", lambda: rd.planar_kinematics([1.0, 1.0], [0.0, 0.0, 0.0]), ValueError, "q"),
-    row("gradient-q-nan", lambda: rd.manipulability_gradient([1.0, 1.0], [0.0, np.nan]), ValueError, "q"),
+    row(
+        "pinv-J-nan",
+        lambda: rd.pseudo_inverse(np.full((2, 3), np.nan)),
+        ValueError,
+        "J",
+    ),
+    row(
+        "pinv-damping-nan",
+        lambda: rd.pseudo_inverse(np.ones((2, 3)), damping=np.nan),
+        ValueError,
+        "damping",
+    ),
+    row(
+        "pinv-region-zero",
+        lambda: rd.pseudo_inverse(np.ones((2, 3)), singular_region=0.0),
+        ValueError,
+        "singular_region",
+    ),
+    row(
+        "kinematics-lengths-str",
+        lambda: rd.planar_kinematics("a", [0.0]),
+        TypeError,
+        "lengths",
+    ),
+    row(
+        "kinematics-lengths-negative",
+        lambda: rd.planar_kinematics([-1.0, 1.0], [0.0, 0.0]),
+        ValueError,
+        "lengths",
+    ),
+    row(
+        "kinematics-q-mismatch",
+        lambda: rd.planar_kinematics([1.0, 1.0], [0.0, 0.0, 0.0]),
+        ValueError,
+        "q",
+    ),
+    row(
+        "gradient-q-nan",
+        lambda: rd.manipulability_gradient([1.0, 1.0], [0.0, np.nan]),
+        ValueError,
+        "q",
+    ),
 ]
 
 PLOTTING = [
-    row("axes3d-limits-shape", lambda: pl.axes3d(limits=(0, 1, 2)), ValueError, "limits"),
-    row("axes3d-limits-order", lambda: pl.axes3d(limits=((1, 0), (0, 1), (0, 1))), ValueError, "limits"),
-    row("axes3d-limits-nan", lambda: pl.axes3d(limits=((0, np.nan), (0, 1), (0, 1))), ValueError, "limits"),
+    row(
+        "axes3d-limits-shape", lambda: pl.axes3d(limits=(0, 1, 2)), ValueError, "limits"
+    ),
+    row(
+        "axes3d-limits-order",
+        lambda: pl.axes3d(limits=((1, 0), (0, 1), (0, 1))),
+        ValueError,
+        "limits",
+    ),
+    row(
+        "axes3d-limits-nan",
+        lambda: pl.axes3d(limits=((0, np.nan), (0, 1), (0, 1))),
+        ValueError,
+        "limits",
+    ),
     row("axes3d-figsize", lambda: pl.axes3d(figsize=(0, 1)), ValueError, "figsize"),
     row("axes3d-ax-str", lambda: pl.axes3d(ax="ax"), TypeError, "ax"),
     row("axes3d-ax-2d", lambda: pl.axes3d(ax=AX2), TypeError, "ax"),
     row("draw_frame-ax", lambda: pl.draw_frame("ax", EYE), TypeError, "ax"),
     row("draw_frame-T-3x3", lambda: pl.draw_frame(AX3, np.eye(3)), ValueError, "T"),
     row("draw_frame-T-str", lambda: pl.draw_frame(AX3, "T"), TypeError, "T"),
-    row("draw_frame-T-str-entries", lambda: pl.draw_frame(AX3, np.eye(4).astype(str)), TypeError, "T"),
-    row("draw_frame-T-nan", lambda: pl.draw_frame(AX3, np.full((4, 4), np.nan)), ValueError, "T"),
-    row("draw_frame-T-symbolic", lambda: pl.draw_frame(AX3, sk.homogeneous(sk.rotz(theta))), TypeError, "T"),
-    row("draw_frame-T-batch", lambda: pl.draw_frame(AX3, np.stack([EYE, EYE])), ValueError, "T"),
-    row("draw_frame-length", lambda: pl.draw_frame(AX3, EYE, length=-1.0), ValueError, "length"),
-    row("draw_frame-alpha", lambda: pl.draw_frame(AX3, EYE, alpha=2.0), ValueError, "alpha"),
-    row("draw_frame-alpha-nan", lambda: pl.draw_frame(AX3, EYE, alpha=np.nan), ValueError, "alpha"),
-    row("draw_screw_axis-s-zero", lambda: pl.draw_screw_axis(AX3, [0, 0, 0], [0, 0, 0]), ValueError, "s"),
-    row("draw_screw_axis-s-short", lambda: pl.draw_screw_axis(AX3, [0, 1], [0, 0, 0]), ValueError, "s"),
-    row("draw_screw_axis-r-str", lambda: pl.draw_screw_axis(AX3, [0, 0, 1], "abc"), TypeError, "r"),
-    row("draw_screw_axis-length", lambda: pl.draw_screw_axis(AX3, [0, 0, 1], [0, 0, 0], length=0.0),
-        ValueError, "length"),
-    row("draw_screw_axis-s-symbol", lambda: pl.draw_screw_axis(AX3, sp.Matrix([0, 0, theta]), [0, 0, 0]),
-        TypeError, "s"),
-    row("draw_screw_motion-single", lambda: pl.draw_screw_motion(AX3, EYE), ValueError, "Ts"),
-    row("draw_screw_motion-empty", lambda: pl.draw_screw_motion(AX3, np.zeros((0, 4, 4))), ValueError, "Ts"),
-    row("draw_screw_motion-every-0", lambda: pl.draw_screw_motion(AX3, np.stack([EYE, EYE]), every=0),
-        ValueError, "every"),
-    row("draw_screw_motion-every-float", lambda: pl.draw_screw_motion(AX3, np.stack([EYE, EYE]), every=1.5),
-        TypeError, "every"),
-    row("draw_chain-chain-str", lambda: pl.draw_chain(AX3, "puma", np.zeros(6)), TypeError, "chain"),
-    row("draw_chain-q-batch", lambda: pl.draw_chain(AX3, PUMA, np.zeros((2, 6))), ValueError, "q"),
-    row("draw_chain-q-short", lambda: pl.draw_chain(AX3, PUMA, np.zeros(5)), ValueError, "q"),
-    row("draw_chain-ax-2d", lambda: pl.draw_chain(AX2, PUMA, np.zeros(6)), TypeError, "ax"),
-    row("draw_chain-frame-length", lambda: pl.draw_chain(AX3, PUMA, np.zeros(6), frame_length=0),
-        ValueError, "frame_length"),
-    row("draw_ellipsoid-radii-negative",
-        lambda: pl.draw_ellipsoid(AX3, [0, 0, 0], [1, -1, 1], np.eye(3)), ValueError, "radii"),
-    row("draw_ellipsoid-axes-shape", lambda: pl.draw_ellipsoid(AX3, [0, 0, 0], [1, 1, 1], np.eye(2)),
-        ValueError, "axes"),
-    row("draw_ellipsoid-centre-str", lambda: pl.draw_ellipsoid(AX3, "o", [1, 1, 1], np.eye(3)),
-        TypeError, "centre"),
-    row("draw_ellipsoid-scale", lambda: pl.draw_ellipsoid(AX3, [0, 0, 0], [1, 1, 1], np.eye(3), scale=0),
-        ValueError, "scale"),
-    row("draw_planar-chain-str", lambda: pl.draw_planar(AX2, "arm", [0.0, 0.0]), TypeError, "chain"),
-    row("draw_planar-base-3d", lambda: pl.draw_planar(AX2, ARM2, [0.0, 0.0], base=(0, 0, 0)), ValueError,
-        "base"),
-    row("draw_planar-q-nan", lambda: pl.draw_planar(AX2, ARM2, [0.0, np.nan]), ValueError, "q"),
-    row("draw_planar-ax-none", lambda: pl.draw_planar(None, ARM2, [0.0, 0.0]), TypeError, "ax"),
-    row("animation_html-str", lambda: pl.animation_html("<html>"), TypeError, "animation"),
+    row(
+        "draw_frame-T-str-entries",
+        lambda: pl.draw_frame(AX3, np.eye(4).astype(str)),
+        TypeError,
+        "T",
+    ),
+    row(
+        "draw_frame-T-nan",
+        lambda: pl.draw_frame(AX3, np.full((4, 4), np.nan)),
+        ValueError,
+        "T",
+    ),
+    row(
+        "draw_frame-T-symbolic",
+        lambda: pl.draw_frame(AX3, sk.homogeneous(sk.rotz(theta))),
+        TypeError,
+        "T",
+    ),
+    row(
+        "draw_frame-T-batch",
+        lambda: pl.draw_frame(AX3, np.stack([EYE, EYE])),
+        ValueError,
+        "T",
+    ),
+    row(
+        "draw_frame-length",
+        lambda: pl.draw_frame(AX3, EYE, length=-1.0),
+        ValueError,
+        "length",
+    ),
+    row(
+        "draw_frame-alpha",
+        lambda: pl.draw_frame(AX3, EYE, alpha=2.0),
+        ValueError,
+        "alpha",
+    ),
+    row(
+        "draw_frame-alpha-nan",
+        lambda: pl.draw_frame(AX3, EYE, alpha=np.nan),
+        ValueError,
+        "alpha",
+    ),
+    row(
+        "draw_screw_axis-s-zero",
+        lambda: pl.draw_screw_axis(AX3, [0, 0, 0], [0, 0, 0]),
+        ValueError,
+        "s",
+    ),
+    row(
+        "draw_screw_axis-s-short",
+        lambda: pl.draw_screw_axis(AX3, [0, 1], [0, 0, 0]),
+        ValueError,
+        "s",
+    ),
+    row(
+        "draw_screw_axis-r-str",
+        lambda: pl.draw_screw_axis(AX3, [0, 0, 1], "abc"),
+        TypeError,
+        "r",
+    ),
+    row(
+        "draw_screw_axis-length",
+        lambda: pl.draw_screw_axis(AX3, [0, 0, 1], [0, 0, 0], length=0.0),
+        ValueError,
+        "length",
+    ),
+    row(
+        "draw_screw_axis-s-symbol",
+        lambda: pl.draw_screw_axis(AX3, sp.Matrix([0, 0, theta]), [0, 0, 0]),
+        TypeError,
+        "s",
+    ),
+    row(
+        "draw_screw_motion-single",
+        lambda: pl.draw_screw_motion(AX3, EYE),
+        ValueError,
+        "Ts",
+    ),
+    row(
+        "draw_screw_motion-empty",
+        lambda: pl.draw_screw_motion(AX3, np.zeros((0, 4, 4))),
+        ValueError,
+        "Ts",
+    ),
+    row(
+        "draw_screw_motion-every-0",
+        lambda: pl.draw_screw_motion(AX3, np.stack([EYE, EYE]), every=0),
+        ValueError,
+        "every",
+    ),
+    row(
+        "draw_screw_motion-every-float",
+        lambda: pl.draw_screw_motion(AX3, np.stack([EYE, EYE]), every=1.5),
+        TypeError,
+        "every",
+    ),
+    row(
+        "draw_chain-chain-str",
+        lambda: pl.draw_chain(AX3, "puma", np.zeros(6)),
+        TypeError,
+        "chain",
+    ),
+    row(
+        "draw_chain-q-batch",
+        lambda: pl.draw_chain(AX3, PUMA, np.zeros((2, 6))),
+        ValueError,
+        "q",
+    ),
+    row(
+        "draw_chain-q-short",
+        lambda: pl.draw_chain(AX3, PUMA, np.zeros(5)),
+        ValueError,
+        "q",
+    ),
+    row(
+        "draw_chain-ax-2d",
+        lambda: pl.draw_chain(AX2, PUMA, np.zeros(6)),
+        TypeError,
+        "ax",
+    ),
+    row(
+        "draw_chain-frame-length",
+        lambda: pl.draw_chain(AX3, PUMA, np.zeros(6), frame_length=0),
+        ValueError,
+        "frame_length",
+    ),
+    row(
+        "draw_ellipsoid-radii-negative",
+        lambda: pl.draw_ellipsoid(AX3, [0, 0, 0], [1, -1, 1], np.eye(3)),
+        ValueError,
+        "radii",
+    ),
+    row(
+        "draw_ellipsoid-axes-shape",
+        lambda: pl.draw_ellipsoid(AX3, [0, 0, 0], [1, 1, 1], np.eye(2)),
+        ValueError,
+        "axes",
+    ),
+    row(
+        "draw_ellipsoid-centre-str",
+        lambda: pl.draw_ellipsoid(AX3, "o", [1, 1, 1], np.eye(3)),
+        TypeError,
+        "centre",
+    ),
+    row(
+        "draw_ellipsoid-scale",
+        lambda: pl.draw_ellipsoid(AX3, [0, 0, 0], [1, 1, 1], np.eye(3), scale=0),
+        ValueError,
+        "scale",
+    ),
+    row(
+        "draw_planar-chain-str",
+        lambda: pl.draw_planar(AX2, "arm", [0.0, 0.0]),
+        TypeError,
+        "chain",
+    ),
+    row(
+        "draw_planar-base-3d",
+        lambda: pl.draw_planar(AX2, ARM2, [0.0, 0.0], base=(0, 0, 0)),
+        ValueError,
+        "base",
+    ),
+    row(
+        "draw_planar-q-nan",
+        lambda: pl.draw_planar(AX2, ARM2, [0.0, np.nan]),
+        ValueError,
+        "q",
+    ),
+    row(
+        "draw_planar-ax-none",
+        lambda: pl.draw_planar(None, ARM2, [0.0, 0.0]),
+        TypeError,
+        "ax",
+    ),
+    row(
+        "animation_html-str",
+        lambda: pl.animation_html("<html>"),
+        TypeError,
+        "animation",
+    ),
 ]
 
 CASES = TRANSFORMS + WORKSPACE + REDUNDANCY + PLOTTING
@@ -408,9 +1173,13 @@ def test_bad_input_is_a_clear_error_naming_the_argument(call, error, name):
     with pytest.raises(error) as raised:
         call()
     message = str(raised.value)
-    assert type(raised.value) is error                 # not a subclass from deep inside NumPy
-    assert re.search(rf"(?<![\w.]){name}(?!\w)", message), f"{name!r} not named in: {message}"
-    assert "got" in message or "must" in message        # a sentence: what was expected or given
+    assert type(raised.value) is error  # not a subclass from deep inside NumPy
+    assert re.search(rf"(?<![\w.]){name}(?!\w)", message), (
+        f"{name!r} not named in: {message}"
+    )
+    assert (
+        "got" in message or "must" in message
+    )  # a sentence: what was expected or given
 
 
 def test_the_table_is_large():
@@ -418,17 +1187,27 @@ def test_the_table_is_large():
 
 
 def test_a_non_chain_gets_one_message_everywhere():
-    for call in (lambda: ws.sweep("puma", {1: (0, 1)}), lambda: pl.draw_chain(AX3, "puma", [0] * 6)):
-        with pytest.raises(TypeError, match=r"^chain must be a screwkit Chain .*got 'puma' \(str\)"):
+    for call in (
+        lambda: ws.sweep("puma", {1: (0, 1)}),
+        lambda: pl.draw_chain(AX3, "puma", [0] * 6),
+    ):
+        with pytest.raises(
+            TypeError, match=r"^chain must be a screwkit Chain .*got 'puma' \(str\)"
+        ):
             call()
 
 
 # ---- valid edge cases are answers -------------------------------------------------------
 
+
 def test_numpy_integer_scalars_are_real_numbers():
     assert np.array_equal(sk.rotz(np.int64(0)), np.eye(3))
-    assert np.array_equal(sk.transl(np.int32(1), np.int64(2), np.uint8(3))[:3, 3], [1, 2, 3])
-    assert sk.twist_from_axis([0, 0, 1], [1, 0, 0], np.int64(2))[5] == 2.0    # r x s + h s
+    assert np.array_equal(
+        sk.transl(np.int32(1), np.int64(2), np.uint8(3))[:3, 3], [1, 2, 3]
+    )
+    assert (
+        sk.twist_from_axis([0, 0, 1], [1, 0, 0], np.int64(2))[5] == 2.0
+    )  # r x s + h s
     assert ws.sweep(ARM2, {np.int64(1): (0, 1)}, num=np.int64(3)).shape == (3,)
 
 
@@ -443,7 +1222,9 @@ def test_empty_batches_give_empty_results():
 
 
 def test_sympy_reals_are_accepted_where_numbers_are_meant():
-    assert np.allclose(np.array(sk.rotz(sp.Float(0.5)), dtype=float), sk.rotz(0.5))  # exact in, out
+    assert np.allclose(
+        np.array(sk.rotz(sp.Float(0.5)), dtype=float), sk.rotz(0.5)
+    )  # exact in, out
     assert isinstance(sk.rotz(sp.Float(0.5)), sp.MatrixBase)
     assert sk.transl([sp.Rational(1, 2), 0, 0])[0, 3] == sp.Rational(1, 2)
 
@@ -454,6 +1235,7 @@ def test_the_hypothesis_profile_is_derandomized():
 
 # ---- nothing changes its input ----------------------------------------------------------
 
+
 def _mutation_calls():
     T = sk.transl(1, 2, 3) @ sk.homogeneous(sk.rotz(0.3))
     yield "rotz", sk.rotz, (np.array([0.1, 0.2]),)
@@ -462,15 +1244,38 @@ def _mutation_calls():
     yield "transl", sk.transl, (np.array([[1.0, 2.0, 3.0]]),)
     yield "homogeneous", sk.homogeneous, (sk.rotz(0.2), np.array([1.0, 2.0, 3.0]))
     yield "inv", sk.inv, (T,)
-    yield "twist_from_axis", sk.twist_from_axis, (np.array([0.0, 0.0, 2.0]), np.array([1.0, 0, 0]), 0.5)
-    yield "exp_twist", sk.exp_twist, (np.array([0, 0, 2.0, 1, 0, 0]), np.array([0.1, 0.2]))
+    yield (
+        "twist_from_axis",
+        sk.twist_from_axis,
+        (np.array([0.0, 0.0, 2.0]), np.array([1.0, 0, 0]), 0.5),
+    )
+    yield (
+        "exp_twist",
+        sk.exp_twist,
+        (np.array([0, 0, 2.0, 1, 0, 0]), np.array([0.1, 0.2])),
+    )
     yield "screw_motion", sk.screw_motion, ([0, 0, 1], [1, 0, 0], 0.1, [0.5, 1.0])
-    yield "sweep", ws.sweep, (ARM2, {1: np.array([0.0, 1.0])}, np.array([3]), np.array([0.0, 0.5]))
-    yield "start_configuration", rd.start_configuration, (ARM, np.array([0.5, 0.1]),
-                                                          np.array([0.3, 0.6, 0.6]))
+    yield (
+        "sweep",
+        ws.sweep,
+        (ARM2, {1: np.array([0.0, 1.0])}, np.array([3]), np.array([0.0, 0.5])),
+    )
+    yield (
+        "start_configuration",
+        rd.start_configuration,
+        (ARM, np.array([0.5, 0.1]), np.array([0.3, 0.6, 0.6])),
+    )
     yield "resolve", rd.resolve, (ARM, PATH, Q0.copy())
-    yield "planar_kinematics", rd.planar_kinematics, (np.array([0.4, 0.3, 0.2]), np.array([0.1, 0.2, 0.3]))
-    yield "pseudo_inverse", rd.pseudo_inverse, (np.array([[1.0, 0.5, 0.2], [0.0, 0.3, 0.1]]), 0.1, 10.0)
+    yield (
+        "planar_kinematics",
+        rd.planar_kinematics,
+        (np.array([0.4, 0.3, 0.2]), np.array([0.1, 0.2, 0.3])),
+    )
+    yield (
+        "pseudo_inverse",
+        rd.pseudo_inverse,
+        (np.array([[1.0, 0.5, 0.2], [0.0, 0.3, 0.1]]), 0.1, 10.0),
+    )
     yield "timing", rd.timing, (np.array([0.0, 0.5, 1.0]), 1.0)
     yield "draw_frame", pl.draw_frame, (AX3, T)
     yield "draw_chain", pl.draw_chain, (AX3, PUMA, np.zeros(6))
@@ -481,7 +1286,9 @@ def _mutation_calls():
 def _copy(value):
     if isinstance(value, dict):
         return {k: _copy(v) for k, v in value.items()}
-    return np.array(value, copy=True) if isinstance(value, (np.ndarray, list)) else value
+    return (
+        np.array(value, copy=True) if isinstance(value, (np.ndarray, list)) else value
+    )
 
 
 def _same(a, b):
@@ -492,8 +1299,11 @@ def _same(a, b):
     return True
 
 
-@pytest.mark.parametrize("name, function, arguments", list(_mutation_calls()),
-                         ids=[c[0] for c in _mutation_calls()])
+@pytest.mark.parametrize(
+    "name, function, arguments",
+    list(_mutation_calls()),
+    ids=[c[0] for c in _mutation_calls()],
+)
 def test_no_function_changes_its_input(name, function, arguments):
     before = [_copy(a) for a in arguments]
     function(*arguments)

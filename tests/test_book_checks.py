@@ -1,4 +1,5 @@
 """The book's own checks: the site check's page rules and the bibliography's labels."""
+
 import base64
 import importlib.util
 import json
@@ -32,7 +33,8 @@ def test_a_chapter_with_both_blocks_passes():
 def test_a_chapter_without_summary_fails():
     html = CHAPTER.replace("<h2>Summary", "<h2>Speed")
     assert site_check.check_chapter_shape("notebooks/a.html", html) == [
-        'notebooks/a.html: a chapter without "Summary"']
+        'notebooks/a.html: a chapter without "Summary"'
+    ]
 
 
 def test_the_word_summary_in_prose_is_not_a_summary():
@@ -49,7 +51,8 @@ def test_a_chapter_without_outcomes_fails_and_front_matter_is_exempt():
 def test_placeholder_launch_url_fails():
     parser = site_check.parse(
         '<a href="https://hub.example.edu/hub/user-redirect/git-pull?repo=x">JupyterHub</a>'
-        '<a href="https://mybinder.org/v2/gh/screwkit/x/main">Binder</a>')
+        '<a href="https://mybinder.org/v2/gh/screwkit/x/main">Binder</a>'
+    )
     problems = site_check.check_placeholder_links("notebooks/a.html", parser)
     assert len(problems) == 1 and "hub.example.edu" in problems[0]
 
@@ -64,13 +67,16 @@ BIB = r"""
 """
 
 
-@pytest.mark.parametrize("key, label", [
-    ("three", "Surriani et al. 2018"),
-    ("two", "Lynch and Park 2017"),
-    ("one", "Craig 2005"),
-    ("anonymous", "CX210L study 2021"),
-    ("undated", "Adriyan n.d."),
-])
+@pytest.mark.parametrize(
+    "key, label",
+    [
+        ("three", "Surriani et al. 2018"),
+        ("two", "Lynch and Park 2017"),
+        ("one", "Craig 2005"),
+        ("anonymous", "CX210L study 2021"),
+        ("undated", "Adriyan n.d."),
+    ],
+)
 def test_author_year_labels(key, label):
     entry = parse_string(BIB, "bibtex").entries[key]
     assert bibliography_style.author_year_label(entry) == label
@@ -84,11 +90,17 @@ def test_an_entry_without_author_or_shorthand_is_refused():
 
 def test_the_four_source_papers_are_marked_and_labelled():
     entries = parse_string((ROOT / "book/references.bib").read_text(), "bibtex").entries
-    sources = {key for key, e in entries.items() if e.fields.get("keywords") == "source"}
+    sources = {
+        key for key, e in entries.items() if e.fields.get("keywords") == "source"
+    }
     assert len(sources) == 4
     labels = {bibliography_style.author_year_label(entries[key]) for key in sources}
-    assert labels == {"Adriyan 2020", "Surriani et al. 2018", "CX210L study 2021",
-                      "Redundancy thesis n.d."}
+    assert labels == {
+        "Adriyan 2020",
+        "Surriani et al. 2018",
+        "CX210L study 2021",
+        "Redundancy thesis n.d.",
+    }
     text = (ROOT / "book/references.bib").read_text().lower()
     assert "seed" not in text and "2021, 2021" not in text
 
@@ -111,28 +123,49 @@ def test_every_stored_figure_fits_the_book_column():
     # the browser shrinks it and its text with it. The width is bytes 16-19 of the PNG header.
     figures = list(stored_figures())
     assert len(figures) >= 9  # every chapter shows at least one
-    wide = [(name, k, int.from_bytes(png[16:20], "big")) for name, k, png in figures
-            if int.from_bytes(png[16:20], "big") > BOOK_COLUMN_PX]
+    wide = [
+        (name, k, int.from_bytes(png[16:20], "big"))
+        for name, k, png in figures
+        if int.from_bytes(png[16:20], "big") > BOOK_COLUMN_PX
+    ]
     assert wide == []
 
 
 def test_no_stored_figure_is_a_thumbnail():
     # A formula rendered as a tiny PNG (SymPy's LaTeX image) is blurry: show it as MathJax.
-    small = [(name, k) for name, k, png in stored_figures()
-             if int.from_bytes(png[16:20], "big") < 100]
+    small = [
+        (name, k)
+        for name, k, png in stored_figures()
+        if int.from_bytes(png[16:20], "big") < 100
+    ]
     assert small == []
 
 
 def test_a_mobility_chapter_must_draw_every_mechanism(tmp_path):
     source = tmp_path / "_sources" / "notebooks" / "m.ipynb"
     source.parent.mkdir(parents=True)
-    code = ["for build in (sk.robots.pm_3prrr, sk.robots.pm_6ups):\n",
-            "    print(sk.mobility(build()).type)"]
+    code = [
+        "for build in (sk.robots.pm_3prrr, sk.robots.pm_6ups):\n",
+        "    print(sk.mobility(build()).type)",
+    ]
     source.write_text(json.dumps({"cells": [{"cell_type": "code", "source": code}]}))
     one, two = ["_images/a.png"], ["_images/a.png", "_images/b.png"]
-    assert "2 mechanisms analysed" in site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html",
-                                                                       one)[0]
-    assert site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", two) == []
+    assert (
+        "2 mechanisms analysed"
+        in site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", one)[
+            0
+        ]
+    )
+    assert (
+        site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", two)
+        == []
+    )
     # a chapter that builds mechanisms without analysing their mobility is not of that kind
-    source.write_text(json.dumps({"cells": [{"cell_type": "code", "source": ["sk.robots.pm_3prrr()"]}]}))
-    assert site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", []) == []
+    source.write_text(
+        json.dumps(
+            {"cells": [{"cell_type": "code", "source": ["sk.robots.pm_3prrr()"]}]}
+        )
+    )
+    assert (
+        site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", []) == []
+    )

@@ -1,4 +1,5 @@
 """DH chains: FK against independent closed forms, the paper's named poses, PoE, conventions."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -19,8 +20,20 @@ def puma_by_hand(q):
     q1, q2, q3, q4, q5, q6 = q
     reach = A2 * np.cos(q2) + A3 * np.cos(q2 + q3) - D4 * np.sin(q2 + q3)
     height = A2 * np.sin(q2) + A3 * np.sin(q2 + q3) + D4 * np.cos(q2 + q3)
-    p = [np.cos(q1) * reach + np.sin(q1) * D3, np.sin(q1) * reach - np.cos(q1) * D3, height]
-    R = rotz(q1) @ rotx(np.pi / 2) @ rotz(q2 + q3) @ rotx(-np.pi / 2) @ rotz(q4) @ roty(-q5) @ rotz(q6)
+    p = [
+        np.cos(q1) * reach + np.sin(q1) * D3,
+        np.sin(q1) * reach - np.cos(q1) * D3,
+        height,
+    ]
+    R = (
+        rotz(q1)
+        @ rotx(np.pi / 2)
+        @ rotz(q2 + q3)
+        @ rotx(-np.pi / 2)
+        @ rotz(q4)
+        @ roty(-q5)
+        @ rotz(q6)
+    )
     T = np.eye(4)
     T[:3, :3], T[:3, 3] = R, p
     return T
@@ -36,20 +49,29 @@ def test_batch_fk_equals_single_fk(puma):
     Q = np.random.default_rng(3).uniform(-np.pi, np.pi, (200, 6))
     batch = puma.fk(Q)
     assert batch.shape == (200, 4, 4)
-    assert np.allclose(batch, np.stack([puma_by_hand(q) for q in Q]), atol=1e-12, rtol=0)
+    assert np.allclose(
+        batch, np.stack([puma_by_hand(q) for q in Q]), atol=1e-12, rtol=0
+    )
 
 
 def test_named_poses(puma):
     # zero: upper arm along x, forearm up: (a2 + a3, -d3, d4); the paper prints z = 0.4381 (digits swapped)
-    assert np.allclose(puma.fk(puma.configurations["zero"]), transl(A2 + A3, -D3, D4), atol=1e-12)
+    assert np.allclose(
+        puma.fk(puma.configurations["zero"]), transl(A2 + A3, -D3, D4), atol=1e-12
+    )
     # ready: arm vertical: (a3, -d3, a2 + d4)
-    assert np.allclose(puma.fk(puma.configurations["ready"]), transl(A3, -D3, A2 + D4), atol=1e-12)
+    assert np.allclose(
+        puma.fk(puma.configurations["ready"]), transl(A3, -D3, A2 + D4), atol=1e-12
+    )
     # stretch (q3 = -90) and nominal (q2 = 45, q3 = -180, q5 = 45): the tool's z is along x0 and
     # its x along -z0 (the paper prints a stray 1 at r11). By hand, the reach along x is
     # a2 c2 + a3 c23 - d4 s23 and the height a2 s2 + a3 s23 + d4 c23.
     R = np.array([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])
     h = np.sqrt(0.5)
-    expected = {"stretch": [A2 + D4, -D3, -A3], "nominal": [h * (A2 - A3 + D4), -D3, h * (A2 - A3 - D4)]}
+    expected = {
+        "stretch": [A2 + D4, -D3, -A3],
+        "nominal": [h * (A2 - A3 + D4), -D3, h * (A2 - A3 - D4)],
+    }
     for name, p in expected.items():
         T = puma.fk(puma.configurations[name])
         assert np.allclose(T[:3, :3], R, atol=1e-12)
@@ -70,8 +92,16 @@ def test_symbolic_fk_in_textbook_notation(puma):
     c1, s1, c2 = sp.symbols("c1 s1 c2")
     c23, s23 = sp.Symbol("c_{23}"), sp.Symbol("s_{23}")
     a2, a3, d3, d4 = sp.symbols("a2 a3 d3 d4", positive=True)
-    assert sp.expand(sk.textbook(T[2, 3]) - (a2 * sp.Symbol("s2") + a3 * s23 + d4 * c23)) == 0
-    assert sp.expand(sk.textbook(T[0, 3]) - (c1 * (a2 * c2 + a3 * c23 - d4 * s23) + d3 * s1)) == 0
+    assert (
+        sp.expand(sk.textbook(T[2, 3]) - (a2 * sp.Symbol("s2") + a3 * s23 + d4 * c23))
+        == 0
+    )
+    assert (
+        sp.expand(
+            sk.textbook(T[0, 3]) - (c1 * (a2 * c2 + a3 * c23 - d4 * s23) + d3 * s1)
+        )
+        == 0
+    )
 
 
 def test_product_of_exponentials_equals_dh(puma):
@@ -83,11 +113,23 @@ def test_product_of_exponentials_equals_dh(puma):
 
 def random_chain(seed, convention=sk.Convention.STANDARD):
     rng = np.random.default_rng(seed)
-    links = [sk.Link.revolute(d=rng.uniform(-1, 1), a=rng.uniform(-1, 1), alpha=rng.uniform(-3, 3),
-                              offset=rng.uniform(-1, 1)),
-             sk.Link.prismatic(theta=rng.uniform(-3, 3), a=rng.uniform(-1, 1), alpha=rng.uniform(-3, 3),
-                               offset=rng.uniform(-1, 1)),
-             sk.Link.revolute(d=rng.uniform(-1, 1), a=rng.uniform(-1, 1), alpha=rng.uniform(-3, 3))]
+    links = [
+        sk.Link.revolute(
+            d=rng.uniform(-1, 1),
+            a=rng.uniform(-1, 1),
+            alpha=rng.uniform(-3, 3),
+            offset=rng.uniform(-1, 1),
+        ),
+        sk.Link.prismatic(
+            theta=rng.uniform(-3, 3),
+            a=rng.uniform(-1, 1),
+            alpha=rng.uniform(-3, 3),
+            offset=rng.uniform(-1, 1),
+        ),
+        sk.Link.revolute(
+            d=rng.uniform(-1, 1), a=rng.uniform(-1, 1), alpha=rng.uniform(-3, 3)
+        ),
+    ]
     return links
 
 
@@ -100,7 +142,13 @@ def dh_by_hand(links, q, base=None, tool=None):
             theta, d = qi + link.offset, link.d
         else:
             theta, d = link.theta, qi + link.offset
-        T = T @ sk.homogeneous(rotz(theta)) @ transl(0, 0, d) @ transl(link.a, 0, 0) @ sk.homogeneous(rotx(link.alpha))
+        T = (
+            T
+            @ sk.homogeneous(rotz(theta))
+            @ transl(0, 0, d)
+            @ transl(link.a, 0, 0)
+            @ sk.homogeneous(rotx(link.alpha))
+        )
     return T @ tool
 
 
@@ -121,9 +169,17 @@ def test_modified_dh_describes_the_same_arm():
     # carries alpha_{i-1}, a_{i-1}, with Tx(a_n) Rx(alpha_n) as tool.
     links = random_chain(8)
     standard = sk.Chain(links)
-    shifted = [sk.Link(k.joint, d=k.d, theta=k.theta, offset=k.offset,
-                       a=links[i - 1].a if i else 0, alpha=links[i - 1].alpha if i else 0)
-               for i, k in enumerate(links)]
+    shifted = [
+        sk.Link(
+            k.joint,
+            d=k.d,
+            theta=k.theta,
+            offset=k.offset,
+            a=links[i - 1].a if i else 0,
+            alpha=links[i - 1].alpha if i else 0,
+        )
+        for i, k in enumerate(links)
+    ]
     tool = transl(links[-1].a, 0, 0) @ sk.homogeneous(rotx(links[-1].alpha))
     modified = sk.Chain(shifted, sk.Convention.MODIFIED, tool=tool)
     Q = np.random.default_rng(9).uniform(-2, 2, (20, 3))
@@ -132,20 +188,33 @@ def test_modified_dh_describes_the_same_arm():
 
 
 def test_from_table_and_limits(puma):
-    chain = sk.Chain.from_table([[0, 0.1, 0.3, 0], [0.5, 0.2, 0.5, np.pi / 2]], joints="RP",
-                                qlim=[[-1, 1], [0, 0.5]])
+    chain = sk.Chain.from_table(
+        [[0, 0.1, 0.3, 0], [0.5, 0.2, 0.5, np.pi / 2]],
+        joints="RP",
+        qlim=[[-1, 1], [0, 0.5]],
+    )
     assert chain.joints == (sk.Joint.REVOLUTE, sk.Joint.PRISMATIC)
     assert chain.within_limits([0.5, 0.2]) and not chain.within_limits([0.5, 0.7])
-    assert np.allclose(chain.fk([0.0, 0.1])[:3, 3], [0.3 + 0.5 * np.cos(0.5), 0.5 * np.sin(0.5), 0.1 + 0.3])
-    assert np.allclose(puma.within_limits(np.array([puma.configurations["ready"], [0, 4, 0, 0, 0, 0]])),
-                       [True, False])
+    assert np.allclose(
+        chain.fk([0.0, 0.1])[:3, 3],
+        [0.3 + 0.5 * np.cos(0.5), 0.5 * np.sin(0.5), 0.1 + 0.3],
+    )
+    assert np.allclose(
+        puma.within_limits(
+            np.array([puma.configurations["ready"], [0, 4, 0, 0, 0, 0]])
+        ),
+        [True, False],
+    )
 
 
-@pytest.mark.parametrize("q, message", [
-    (np.zeros(5), r"q must have 6 entries for this chain.*got shape \(5,\)"),
-    (np.zeros((3, 7)), r"q must have 6 entries"),
-    ([0, 0, np.nan, 0, 0, 0], "q must be finite"),
-])
+@pytest.mark.parametrize(
+    "q, message",
+    [
+        (np.zeros(5), r"q must have 6 entries for this chain.*got shape \(5,\)"),
+        (np.zeros((3, 7)), r"q must have 6 entries"),
+        ([0, 0, np.nan, 0, 0, 0], "q must be finite"),
+    ],
+)
 def test_bad_joint_vectors(q, message, puma):
     with pytest.raises(ValueError, match=message):
         puma.fk(q)

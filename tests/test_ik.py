@@ -1,5 +1,6 @@
 """Closed-form IK of arms with a spherical wrist (PUMA 560 of any size, with base and tool; the
 Kawasaki CX210L): round trips, labels, singular configurations, reach, limits; numeric IK."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -32,9 +33,15 @@ def puma_with(d1=0.0, d6=0.0):
 
 
 PEDESTAL = puma_with(d1=0.6718, d6=0.0562)
-MOUNTED = PUMA.with_base(sk.transl(0.2, -0.1, 0.6) @ sk.homogeneous(sk.rotx(0.4))).with_tool(
-    sk.transl(0.0, 0.02, 0.15) @ sk.homogeneous(sk.roty(0.3)))
-ARMS = {"puma": PUMA, "puma_d1": PEDESTAL, "puma_base_tool": MOUNTED, "kawasaki": KAWASAKI}
+MOUNTED = PUMA.with_base(
+    sk.transl(0.2, -0.1, 0.6) @ sk.homogeneous(sk.rotx(0.4))
+).with_tool(sk.transl(0.0, 0.02, 0.15) @ sk.homogeneous(sk.roty(0.3)))
+ARMS = {
+    "puma": PUMA,
+    "puma_d1": PEDESTAL,
+    "puma_base_tool": MOUNTED,
+    "kawasaki": KAWASAKI,
+}
 
 
 def wrapped(angle):
@@ -49,18 +56,25 @@ def corke_label(q):
     forward = A2 * np.cos(q2) + A3 * np.cos(q2 + q3) - D4 * np.sin(q2 + q3)
     up = A2 * np.sin(q2) + A3 * np.sin(q2 + q3) + D4 * np.cos(q2 + q3)
     cross = forward * A2 * np.sin(q2) - up * A2 * np.cos(q2)
-    return (("r" if forward > 0 else "l") + ("u" if np.sign(forward) * cross > 0 else "d")
-            + ("f" if q5 > 0 else "n"))
+    return (
+        ("r" if forward > 0 else "l")
+        + ("u" if np.sign(forward) * cross > 0 else "d")
+        + ("f" if q5 > 0 else "n")
+    )
 
 
 def far_from_singular(q):
     forward = A2 * np.cos(q[1]) + A3 * np.cos(q[1] + q[2]) - D4 * np.sin(q[1] + q[2])
-    return (abs(np.sin(q[4])) > 1e-3 and abs(forward) > 1e-3
-            and abs(A3 * np.sin(q[2]) + D4 * np.cos(q[2])) > 1e-3)
+    return (
+        abs(np.sin(q[4])) > 1e-3
+        and abs(forward) > 1e-3
+        and abs(A3 * np.sin(q[2]) + D4 * np.cos(q[2])) > 1e-3
+    )
 
 
 generic = arrays(float, 6, elements=st.floats(-np.pi, np.pi, allow_nan=False)).filter(
-    far_from_singular)
+    far_from_singular
+)
 
 
 @settings(max_examples=300, deadline=None)
@@ -92,7 +106,9 @@ def test_round_trip_on_random_poses(name):
     labels = np.array(configuration(robot, q))
     k = np.array([CONFIGURATIONS.index(label) for label in labels])
     assert np.abs(wrapped(Q[np.arange(len(q)), k] - q)).max() < 1e-6  # its own label
-    if name == "kawasaki":  # reaching back past axis 1 needs the other arm: not always possible
+    if (
+        name == "kawasaki"
+    ):  # reaching back past axis 1 needs the other arm: not always possible
         assert 0 < found[:, :4].mean() < 1
     else:
         assert found.all()
@@ -112,7 +128,9 @@ def test_kawasaki_paper_poses():
         solutions = analytic_ik(KAWASAKI, KAWASAKI.fk(q))
         assert 4 <= len(solutions) <= 8
         same = solutions.by_config(configuration(KAWASAKI, q))
-        assert np.allclose(same.q[:3], q[:3], atol=1e-10)  # q5 = 0: the wrist rule sets q4
+        assert np.allclose(
+            same.q[:3], q[:3], atol=1e-10
+        )  # q5 = 0: the wrist rule sets q4
         assert np.allclose(KAWASAKI.fk(same.q), KAWASAKI.fk(q), atol=1e-10)
 
 
@@ -130,8 +148,16 @@ def test_shoulder_singularity_issue_16():
     """Wrist centre at exactly the shoulder offset: r^2 - d3^2 is 0 up to round-off (and the
     arm points straight up: the elbow is stretched too)."""
     q1 = np.linspace(-np.pi, np.pi, 200)
-    q = np.column_stack([q1, np.full(200, np.pi / 2), np.full(200, np.arctan2(A3, D4) - np.pi / 2),
-                         np.full(200, 0.4), np.full(200, 0.5), np.full(200, 0.6)])
+    q = np.column_stack(
+        [
+            q1,
+            np.full(200, np.pi / 2),
+            np.full(200, np.arctan2(A3, D4) - np.pi / 2),
+            np.full(200, 0.4),
+            np.full(200, 0.5),
+            np.full(200, 0.6),
+        ]
+    )
     T = PUMA.fk(q)
     Q = puma560_ik_all(T)
     assert not np.any(np.isnan(Q))
@@ -141,8 +167,9 @@ def test_shoulder_singularity_issue_16():
         assert len(solutions) == 8
         assert all({"shoulder", "elbow"} <= set(s.singular) for s in solutions)
         assert puma560_config(q[k])[0] == "r"  # the rule: a tie is 'r'
-        assert np.allclose(wrapped(solutions.by_config(puma560_config(q[k])).q - q[k]), 0,
-                           atol=1e-7)
+        assert np.allclose(
+            wrapped(solutions.by_config(puma560_config(q[k])).q - q[k]), 0, atol=1e-7
+        )
         # the two arms coincide: 'lu' is 'rd' and 'ld' is 'ru'
         assert np.allclose(solutions.by_config("lun").q, solutions.by_config("rdn").q)
 
@@ -161,9 +188,14 @@ def test_wrist_singularity_rule():
     q = np.array([0.2, 0.4, -1.0, 0.7, 0.0, 0.3])  # q5 = 0: only q4 + q6 = 1.0 is fixed
     solutions = puma560_ik(PUMA.fk(q))
     arm_elbow = corke_label(q)[:2]
-    assert {s.config for s in solutions if "wrist" in s.singular} == {arm_elbow + "n",
-                                                                     arm_elbow + "f"}
-    flip, no_flip = solutions.by_config(arm_elbow + "f"), solutions.by_config(arm_elbow + "n")
+    assert {s.config for s in solutions if "wrist" in s.singular} == {
+        arm_elbow + "n",
+        arm_elbow + "f",
+    }
+    flip, no_flip = (
+        solutions.by_config(arm_elbow + "f"),
+        solutions.by_config(arm_elbow + "n"),
+    )
     assert np.allclose(flip.q, [0.2, 0.4, -1.0, 0.0, 0.0, 1.0], atol=1e-12)  # q4 = 0
     assert np.allclose(no_flip.q, [0.2, 0.4, -1.0, np.pi, 0.0, 1.0 - np.pi], atol=1e-12)
     for s in solutions:
@@ -177,7 +209,9 @@ def test_elbow_singularity():
         q = np.array([0.3, 0.5, q3, 0.4, 0.7, 0.2])
         solutions = puma560_ik(PUMA.fk(q))
         assert len(solutions) == 8 and all("elbow" in s.singular for s in solutions)
-        assert np.allclose(wrapped(solutions.by_config(puma560_config(q)).q - q), 0, atol=1e-6)
+        assert np.allclose(
+            wrapped(solutions.by_config(puma560_config(q)).q - q), 0, atol=1e-6
+        )
         for s in solutions:
             assert np.allclose(PUMA.fk(s.q), PUMA.fk(q), atol=1e-10)
 
@@ -185,20 +219,25 @@ def test_elbow_singularity():
 def test_kawasaki_wrist_centre_on_axis_1():
     """No shoulder offset: the wrist centre can be on axis 1, q1 is free; the rule is q1 = 0."""
     q2 = 1.2
+
     # the wrist centre (the origin of frame 4) is on axis 1 where its x in frame 1 is 0: bisect
     def x4(q3):
         return KAWASAKI.frames(np.array([0, q2, q3, 0, 0, 0]))[4, 0, 3]
+
     low, high = -1.5, 1.5
     assert np.sign(x4(low)) != np.sign(x4(high))
     for _ in range(80):
         middle = (low + high) / 2
-        low, high = (middle, high) if np.sign(x4(middle)) == np.sign(x4(low)) else (low, middle)
+        low, high = (
+            (middle, high) if np.sign(x4(middle)) == np.sign(x4(low)) else (low, middle)
+        )
     q = np.array([0.0, q2, low, 0.3, 0.6, 0.9])
     solutions = analytic_ik(KAWASAKI, KAWASAKI.fk(q))
     assert solutions and all(s.q[0] == 0 for s in solutions)
     assert all("shoulder" in s.singular for s in solutions)
-    assert np.allclose(wrapped(solutions.by_config(configuration(KAWASAKI, q)).q - q), 0,
-                       atol=1e-6)
+    assert np.allclose(
+        wrapped(solutions.by_config(configuration(KAWASAKI, q)).q - q), 0, atol=1e-6
+    )
     for s in solutions:
         assert np.allclose(KAWASAKI.fk(s.q), KAWASAKI.fk(q), atol=1e-9)
 
@@ -206,7 +245,9 @@ def test_kawasaki_wrist_centre_on_axis_1():
 def test_out_of_reach_has_a_reason():
     far = puma560_ik(sk.transl(1.0, 0.5, 0.3))
     # a2 + sqrt(a3^2 + d4^2) = 0.4318 + 0.43228 = 0.8641 m
-    assert far == [] and "the arm reaches from" in far.reason and "0.8641 m" in far.reason
+    assert (
+        far == [] and "the arm reaches from" in far.reason and "0.8641 m" in far.reason
+    )
     inside = puma560_ik(sk.transl(0.05, 0.0, 0.3))
     assert inside == [] and "closer than the shoulder offset 0.15005 m" in inside.reason
     assert np.all(np.isnan(puma560_ik_all(sk.transl(1.0, 0.5, 0.3))))
@@ -234,22 +275,29 @@ def test_within_limits_filters_and_explains():
     assert puma560_ik(PUMA.fk(q), near=q + 0.01)[0].config == "ruf"
     # joint 1 limited to +-10 deg and a pose at q1 = 90 deg: the arms have q1 = 90 deg and
     # about -90 deg, so nothing is left, and the reason says so
-    tight = sk.Chain([sk.Link.revolute(alpha=sp.pi / 2, qlim=np.radians([-10, 10]))]
-                     + list(PUMA.links[1:]))
+    tight = sk.Chain(
+        [sk.Link.revolute(alpha=sp.pi / 2, qlim=np.radians([-10, 10]))]
+        + list(PUMA.links[1:])
+    )
     T = tight.fk(np.radians([90, 60, -100, 0, 40, 0]))
     assert len(puma560_ik(T, robot=tight)) == 8
     none = puma560_ik(T, robot=tight, within_limits=True)
-    assert none == [] and none.reason.startswith("every solution violates a joint limit")
+    assert none == [] and none.reason.startswith(
+        "every solution violates a joint limit"
+    )
 
 
 def test_batch_answers_and_chunks():
-    q = np.random.default_rng(3).uniform(-np.pi, np.pi, (9000, 6))  # more than one chunk
+    q = np.random.default_rng(3).uniform(
+        -np.pi, np.pi, (9000, 6)
+    )  # more than one chunk
     T = KAWASAKI.fk(q)
     Q = analytic_ik_all(KAWASAKI, T)
     answers = analytic_ik(KAWASAKI, T[[0, 8999]])
     for answer, row in zip(answers, Q[[0, 8999]]):
-        assert [s.config for s in answer] == [c for c, r in zip(CONFIGURATIONS, row)
-                                              if not np.isnan(r[0])]
+        assert [s.config for s in answer] == [
+            c for c, r in zip(CONFIGURATIONS, row) if not np.isnan(r[0])
+        ]
 
 
 # ---- numeric ----------------------------------------------------------------------------
@@ -261,15 +309,17 @@ PLANAR = sk.robots.planar([1.0, 1.0])
 def body_jacobian_2r(theta2):
     """Lynch and Park's 2R arm, L1 = L2 = 1: body Jacobian columns [omega; v] (derived by hand:
     joint 2 is 1 m behind the tool along x, joint 1 is reached through both links)."""
-    return np.array([[0, 0], [0, 0], [1, 1], [np.sin(theta2), 0], [1 + np.cos(theta2), 1],
-                     [0, 0]])
+    return np.array(
+        [[0, 0], [0, 0], [1, 1], [np.sin(theta2), 0], [1 + np.cos(theta2), 1], [0, 0]]
+    )
 
 
 def test_newton_raphson_example_6_1():
     """Lynch and Park, Example 6.1: T_sd puts the tool at (0.366, 1.366) turned by 120 deg;
     from theta0 = (0, 30 deg) Newton-Raphson converges to (30, 90) deg."""
-    target = sk.transl(np.cos(np.pi / 6) - 0.5, 0.5 + np.cos(np.pi / 6), 0) @ sk.homogeneous(
-        sk.rotz(2 * np.pi / 3))
+    target = sk.transl(
+        np.cos(np.pi / 6) - 0.5, 0.5 + np.cos(np.pi / 6), 0
+    ) @ sk.homogeneous(sk.rotz(2 * np.pi / 3))
     assert np.allclose(target, PLANAR.fk(np.radians([30, 90])))
     theta0 = np.radians([0.0, 30.0])
     # the first error twist by hand: the rotation left is 90 deg about z, and v follows from
@@ -277,8 +327,9 @@ def test_newton_raphson_example_6_1():
     V = sk.ik.pose_error(PLANAR.fk(theta0), target)
     assert np.allclose(V[:3], [0, 0, np.pi / 2])
     assert np.allclose(sk.exp_twist(V, 1.0), np.linalg.inv(PLANAR.fk(theta0)) @ target)
-    one = sk.ik.numeric_ik(PLANAR, target, theta0, damping=0, max_iterations=1,
-                           within_limits=False)
+    one = sk.ik.numeric_ik(
+        PLANAR, target, theta0, damping=0, max_iterations=1, within_limits=False
+    )
     expected = theta0 + np.linalg.pinv(body_jacobian_2r(theta0[1])) @ V
     assert np.allclose(one.q, expected, atol=1e-12)
     result = sk.ik.numeric_ik(PLANAR, target, theta0, damping=0)
@@ -302,10 +353,13 @@ def test_numeric_ik_puma(frame):
 
 
 def test_numeric_ik_unreachable_never_succeeds():
-    result = sk.ik.numeric_ik(PUMA, sk.transl(1.5, 0.0, 0.2), np.zeros(6), max_iterations=100)
+    result = sk.ik.numeric_ik(
+        PUMA, sk.transl(1.5, 0.0, 0.2), np.zeros(6), max_iterations=100
+    )
     assert not result.success and result.error > 0.5  # 1.5 m is 0.64 m beyond the reach
-    batch = sk.ik.numeric_ik(PLANAR, sk.transl(2.5, 0, 0), np.random.default_rng(0).uniform(
-        -3, 3, (10, 2)))
+    batch = sk.ik.numeric_ik(
+        PLANAR, sk.transl(2.5, 0, 0), np.random.default_rng(0).uniform(-3, 3, (10, 2))
+    )
     assert not np.any(batch.success)
 
 
@@ -330,10 +384,14 @@ def test_numeric_ik_respects_limits():
 def test_numeric_ik_helical_chain():
     """A product-of-exponentials chain with a helical joint (pitch 0.1 m/rad) and a prismatic
     one: the answer reaches the pose made by a known q."""
-    axes = [sk.twist_from_axis([0, 0, 1], [0, 0, 0], 0.1), sk.twist_from_axis([0, 1, 0],
-            [0.5, 0, 0.3], 0), sk.twist_from_axis([1, 0, 0], [0, 0, 0], sp.oo),
-            sk.twist_from_axis([0, 0, 1], [1.0, 0, 0.3], 0), sk.twist_from_axis([0, 1, 0],
-            [1.0, 0, 0.3], 0), sk.twist_from_axis([1, 0, 0], [1.0, 0, 0.3], 0)]
+    axes = [
+        sk.twist_from_axis([0, 0, 1], [0, 0, 0], 0.1),
+        sk.twist_from_axis([0, 1, 0], [0.5, 0, 0.3], 0),
+        sk.twist_from_axis([1, 0, 0], [0, 0, 0], sp.oo),
+        sk.twist_from_axis([0, 0, 1], [1.0, 0, 0.3], 0),
+        sk.twist_from_axis([0, 1, 0], [1.0, 0, 0.3], 0),
+        sk.twist_from_axis([1, 0, 0], [1.0, 0, 0.3], 0),
+    ]
     chain = sk.Chain.from_screws(axes, sk.transl(1.2, 0, 0.3))
     q = np.array([0.4, -0.3, 0.2, 0.5, 0.6, -0.7])
     result = sk.ik.numeric_ik(chain, chain.fk(q), q + 0.15)

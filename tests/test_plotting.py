@@ -1,4 +1,5 @@
 """Drawing helpers that the chapters rely on in the static book."""
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -21,8 +22,14 @@ def test_animation_html_needs_no_network():
 
     html = sk.plotting.animation_html(animation.FuncAnimation(fig, update, frames=3))
     plt.close(fig)
-    assert "font-awesome" not in html and "https://" not in html and 'class="fa ' not in html
-    assert html.count("data:image/png;base64") == 3 and "\u25b6" in html   # three frames and a play button
+    assert (
+        "font-awesome" not in html
+        and "https://" not in html
+        and 'class="fa ' not in html
+    )
+    assert (
+        html.count("data:image/png;base64") == 3 and "\u25b6" in html
+    )  # three frames and a play button
 
 
 # ---- the course's style: figures that fit the book's 688 px column, text of 9 pt or more -------
@@ -57,7 +64,9 @@ def test_a_column_wide_figure_in_the_course_style_fits_the_column():
     with plt.rc_context(sk.plotting.COURSE_STYLE):
         fig = a_busy_figure()
         buffer = io.BytesIO()
-        fig.savefig(buffer, format="png", bbox_inches="tight")  # as IPython shows a figure
+        fig.savefig(
+            buffer, format="png", bbox_inches="tight"
+        )  # as IPython shows a figure
         plt.close(fig)
     width = png_width(buffer.getvalue())
     assert width <= BOOK_COLUMN_PX, f"{width} px"
@@ -67,8 +76,11 @@ def test_every_text_of_a_course_figure_is_at_least_9_pt():
     with plt.rc_context(sk.plotting.COURSE_STYLE):
         fig = a_busy_figure()
         fig.canvas.draw()
-        sizes = {text.get_text(): text.get_fontsize()
-                 for text in fig.findobj(matplotlib.text.Text) if text.get_text()}
+        sizes = {
+            text.get_text(): text.get_fontsize()
+            for text in fig.findobj(matplotlib.text.Text)
+            if text.get_text()
+        }
         plt.close(fig)
     assert len(sizes) > 10 and min(sizes.values()) >= 9, sizes
 

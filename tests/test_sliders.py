@@ -9,6 +9,7 @@ sliders in its output (the JSON the page reads), and nbval checks that these sto
 are what a fresh execution gives. Sliders built by hand in a chapter (ipywidgets' FloatSlider
 or IntSlider called directly) would bypass the rules, so none may be.
 """
+
 import glob
 import json
 import math
@@ -22,7 +23,13 @@ import screwkit as sk
 from screwkit import viewer, widgets
 
 CHAPTERS = sorted(glob.glob("notebooks/*.ipynb"))
-WITH_SLIDERS = {"rigid_motions", "puma_fk", "jacobians", "kawasaki_workspace", "redundancy"}
+WITH_SLIDERS = {
+    "rigid_motions",
+    "puma_fk",
+    "jacobians",
+    "kawasaki_workspace",
+    "redundancy",
+}
 
 
 def multiple(x, step):
@@ -39,7 +46,9 @@ def problems(slider):
     if not (step > 0 and low < high):
         found.append(f"{name}: not a range")
     if not (multiple(low, step) and multiple(high, step)):
-        found.append(f"{name}: grid not anchored at 0, so 0 and round values are unreachable")
+        found.append(
+            f"{name}: grid not anchored at 0, so 0 and round values are unreachable"
+        )
     if not multiple(value - low, step):
         found.append(f"{name}: default not on the grid")
     if not low < value < high:
@@ -53,9 +62,13 @@ def sliders_in(notebook_path):
     for cell in nbformat.read(notebook_path, 4).cells:
         for output in cell.get("outputs", []):
             html = output.get("data", {}).get("text/html", "")
-            for payload in re.findall(r'<script type="application/json">(.*?)</script>', html, re.S):
+            for payload in re.findall(
+                r'<script type="application/json">(.*?)</script>', html, re.S
+            ):
                 model = json.loads(payload.replace("<\\/", "</"))
-                sliders += model.get("sliders", []) + [model[k] for k in ("slider",) if k in model]
+                sliders += model.get("sliders", []) + [
+                    model[k] for k in ("slider",) if k in model
+                ]
     return sliders
 
 
@@ -80,7 +93,9 @@ def test_the_known_bad_sliders_are_gone():
     # inside the limits [-225, 45] deg rather than on the edge of a range clipped to 180.
     by_label = {}
     for chapter in ("jacobians", "puma_fk"):
-        by_label[chapter] = {s["label"]: s for s in sliders_in(f"notebooks/{chapter}.ipynb")}
+        by_label[chapter] = {
+            s["label"]: s for s in sliders_in(f"notebooks/{chapter}.ipynb")
+        }
     q3 = by_label["jacobians"]["q3"]
     assert multiple(q3["value"], q3["step"]) and multiple(0.0 - q3["min"], q3["step"])
     assert q3["value"] == -20.0
@@ -103,7 +118,15 @@ def test_live_widget_sliders_obey_the_same_rules():
     found = []
     for widget in live.widget.children[:-1]:  # the last child is the output area
         label, unit = re.fullmatch(r"(\S+) \((.+)\)", widget.description).groups()
-        found += problems({"label": label, "unit": unit, "min": widget.min, "max": widget.max,
-                           "step": widget.step, "value": widget.value})
+        found += problems(
+            {
+                "label": label,
+                "unit": unit,
+                "min": widget.min,
+                "max": widget.max,
+                "step": widget.step,
+                "value": widget.value,
+            }
+        )
     assert found == []
     assert len(live.widget.children) == puma.n + 1

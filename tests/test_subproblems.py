@@ -1,5 +1,6 @@
 """The Paden–Kahan subproblems: hand-built cases with known answers (exact), random round
 trips (float), and the empty answers with their reasons."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -47,11 +48,14 @@ def test_subproblem1_no_solution_and_free():
 def test_subproblem2_exact():
     # z -> x (about x by -pi/2, then about z by -pi/2), or the mirrored pair
     pairs = subproblem2(E(Z_AXIS), X_AXIS, [0, 0, 1], [1, 0, 0])
-    assert sorted(pairs, key=str) == sorted([(-sp.pi / 2, -sp.pi / 2), (sp.pi / 2, sp.pi / 2)],
-                                            key=str)
+    assert sorted(pairs, key=str) == sorted(
+        [(-sp.pi / 2, -sp.pi / 2), (sp.pi / 2, sp.pi / 2)], key=str
+    )
     for theta1, theta2 in pairs:
-        assert np.allclose(moved(Z_AXIS, float(theta1), moved(X_AXIS, float(theta2), [0, 0, 1])),
-                           [1, 0, 0])
+        assert np.allclose(
+            moved(Z_AXIS, float(theta1), moved(X_AXIS, float(theta2), [0, 0, 1])),
+            [1, 0, 0],
+        )
 
 
 def test_subproblem2_one_none_and_free():
@@ -79,14 +83,21 @@ def test_subproblem2_random_round_trips():
         q = moved(xi1, t1, moved(xi2, t2, p))
         pairs = subproblem2(xi1, xi2, p, q)
         assert 1 <= len(pairs) <= 2
-        assert min(np.abs(np.angle(np.exp(1j * (np.array(pair) - (t1, t2))))).max()
-                   for pair in pairs) < 1e-7
+        assert (
+            min(
+                np.abs(np.angle(np.exp(1j * (np.array(pair) - (t1, t2))))).max()
+                for pair in pairs
+            )
+            < 1e-7
+        )
         for a, b in pairs:
             assert np.allclose(moved(xi1, a, moved(xi2, b, p)), q, atol=1e-9)
 
 
 def test_subproblem2_needs_meeting_axes():
-    with pytest.raises(ValueError, match="twist1 and twist2 must have axes that meet.*parallel"):
+    with pytest.raises(
+        ValueError, match="twist1 and twist2 must have axes that meet.*parallel"
+    ):
         subproblem2(Z_AXIS, Z_AXIS, [1, 0, 0], [0, 1, 0])
     skew = sk.twist_from_axis([1, 0, 0], [0, 1, 0], 0)  # the line y = 1, z = 0
     with pytest.raises(ValueError, match="skew axes 1 m apart"):
@@ -97,7 +108,9 @@ def test_subproblem3_law_of_cosines():
     # p = (1, 0, 0) about z, q = (2, 0, 0): |p' - q|^2 = 5 - 4 cos(theta) = delta^2
     exact = subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], sp.sqrt(3))
     assert sorted(exact, key=float) == [-sp.acos(half), sp.acos(half)]  # +-pi/3
-    assert subproblem3(E(Z_AXIS), [1, 0, 0], [2, 0, 0], 3) == [sp.pi]  # touching: one solution
+    assert subproblem3(E(Z_AXIS), [1, 0, 0], [2, 0, 0], 3) == [
+        sp.pi
+    ]  # touching: one solution
     assert subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], 3.0) == [pytest.approx(np.pi)]
     far = subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], 5.0)
     assert far == [] and "1.0000 to 3.0000 m" in far.reason
@@ -151,4 +164,6 @@ def test_prismatic_variants():
 
 def test_float_input_gives_floats_and_symbolic_gives_sympy():
     assert isinstance(subproblem1(Z_AXIS, [1.0, 0, 0], [0, 1.0, 0])[0], float)
-    assert isinstance(subproblem1(Z_AXIS, [1, 0, 0], [0, sp.Integer(1), 0])[0], sp.Basic)
+    assert isinstance(
+        subproblem1(Z_AXIS, [1, 0, 0], [0, sp.Integer(1), 0])[0], sp.Basic
+    )

@@ -1,4 +1,5 @@
 """Rigid-body motions: exact identities, independent formulas and input checks."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -34,6 +35,7 @@ def twist_matrix(twist):
 
 # --- exact (SymPy) results -------------------------------------------------------------
 
+
 def test_elementary_rotations_are_the_textbook_matrices():
     c, s = sp.cos(theta), sp.sin(theta)
     assert sk.rotx(theta) == sp.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])
@@ -48,7 +50,9 @@ def test_quarter_turns_are_exact_integers():
 
 def test_rodrigues_about_the_frame_axes_gives_the_elementary_rotations():
     for axis, rot in [([1, 0, 0], sk.rotx), ([0, 1, 0], sk.roty), ([0, 0, 1], sk.rotz)]:
-        assert sp.simplify(sk.rot_axis(sp.Matrix(axis), theta) - rot(theta)) == sp.zeros(3, 3)
+        assert sp.simplify(
+            sk.rot_axis(sp.Matrix(axis), theta) - rot(theta)
+        ) == sp.zeros(3, 3)
 
 
 def test_symbolic_rotation_about_any_unit_axis_is_orthonormal():
@@ -65,7 +69,9 @@ def test_symbolic_revolute_motion_is_rotation_about_a_displaced_axis():
     r = sp.Matrix([a, b, 0])
     expected = sk.transl(r) * sk.homogeneous(sk.rotz(theta)) * sk.transl(-r)
     expected[2, 3] = h * theta  # the pitch advances h*theta along z
-    assert sp.simplify(sk.screw_motion([0, 0, 1], r, h, theta) - expected) == sp.zeros(4, 4)
+    assert sp.simplify(sk.screw_motion([0, 0, 1], r, h, theta) - expected) == sp.zeros(
+        4, 4
+    )
 
 
 def test_symbolic_prismatic_motion_is_a_translation():
@@ -87,24 +93,33 @@ def test_twist_of_an_axis_is_s_and_r_cross_s_plus_h_s():
 
 def test_integer_valued_floats_become_exact_integers_in_symbolic_results():
     T = sk.exp_twist(sk.twist_from_axis([0, 0, 1], [1, 0, 0], 0), theta)
-    assert T == sk.transl(sp.Matrix([1, 0, 0])) * sk.homogeneous(sk.rotz(theta)) * sk.transl(
-        sp.Matrix([-1, 0, 0])
-    )
+    assert T == sk.transl(sp.Matrix([1, 0, 0])) * sk.homogeneous(
+        sk.rotz(theta)
+    ) * sk.transl(sp.Matrix([-1, 0, 0]))
 
 
 def test_symbolic_and_numeric_results_agree():
-    f = sp.lambdify(theta, sk.screw_motion([1, 2, 2], [0.5, -1, 2], sp.Rational(1, 3), theta))
+    f = sp.lambdify(
+        theta, sk.screw_motion([1, 2, 2], [0.5, -1, 2], sp.Rational(1, 3), theta)
+    )
     for value in [-2.0, 0.1, 1.3]:
-        assert np.allclose(f(value), sk.screw_motion([1, 2, 2], [0.5, -1, 2], 1 / 3, value), atol=1e-12)
+        assert np.allclose(
+            f(value), sk.screw_motion([1, 2, 2], [0.5, -1, 2], 1 / 3, value), atol=1e-12
+        )
 
 
 # --- numeric (NumPy) results -------------------------------------------------------------
+
 
 @settings(max_examples=200, deadline=None)
 @given(directions, points, st.floats(-1.0, 1.0), angles)
 def test_exp_twist_equals_the_matrix_exponential_series(s, r, h, angle):
     twist = sk.twist_from_axis(s, r, h)
-    assert np.allclose(sk.exp_twist(twist, angle), matrix_exponential(twist_matrix(twist) * angle), atol=1e-9)
+    assert np.allclose(
+        sk.exp_twist(twist, angle),
+        matrix_exponential(twist_matrix(twist) * angle),
+        atol=1e-9,
+    )
 
 
 @settings(max_examples=200, deadline=None)
@@ -113,7 +128,9 @@ def test_screw_motion_fixes_its_axis_and_advances_along_it(s, r, h, angle):
     u = s / np.linalg.norm(s)
     T = sk.screw_motion(s, r, h, angle)
     point_on_axis = np.append(r + 0.7 * u, 1.0)
-    assert np.allclose(T @ point_on_axis, np.append(r + 0.7 * u + h * angle * u, 1.0), atol=1e-9)
+    assert np.allclose(
+        T @ point_on_axis, np.append(r + 0.7 * u + h * angle * u, 1.0), atol=1e-9
+    )
     assert np.allclose(T[:3, :3], sk.rot_axis(u, angle), atol=1e-12)
 
 
@@ -121,7 +138,11 @@ def test_screw_motion_fixes_its_axis_and_advances_along_it(s, r, h, angle):
 @given(directions, points, angles, angles)
 def test_exponentials_of_one_twist_compose_by_adding_angles(s, r, a, b):
     twist = sk.twist_from_axis(s, r, 0.25)
-    assert np.allclose(sk.exp_twist(twist, a) @ sk.exp_twist(twist, b), sk.exp_twist(twist, a + b), atol=1e-9)
+    assert np.allclose(
+        sk.exp_twist(twist, a) @ sk.exp_twist(twist, b),
+        sk.exp_twist(twist, a + b),
+        atol=1e-9,
+    )
 
 
 @settings(max_examples=100, deadline=None)
@@ -140,7 +161,9 @@ def test_rotations_are_vectorised_over_a_batch_of_angles():
         assert np.allclose(batch, np.stack([rot(a) for a in angles_]))
     T = sk.exp_twist([0, 1, 0, 1, 0, 0.5], angles_)
     assert T.shape == (7, 4, 4)
-    assert np.allclose(T, np.stack([sk.exp_twist([0, 1, 0, 1, 0, 0.5], a) for a in angles_]))
+    assert np.allclose(
+        T, np.stack([sk.exp_twist([0, 1, 0, 1, 0, 0.5], a) for a in angles_])
+    )
     assert np.allclose(sk.inv(T) @ T, np.eye(4))
 
 
@@ -156,6 +179,7 @@ def test_transl_forms_agree():
 
 # --- bad input -------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize(
     "call, error, message",
     [
@@ -165,24 +189,67 @@ def test_transl_forms_agree():
         (lambda: sk.rotz(sp.nan), ValueError, "theta must be finite"),
         (lambda: sk.rotz(None), TypeError, "theta must be a real number"),
         (lambda: sk.skew([1, 2]), ValueError, r"v must have shape \(3\)"),
-        (lambda: sk.rot_axis([0, 0, 0], 1.0), ValueError, "axis must be a non-zero 3-vector"),
-        (lambda: sk.rot_axis(sp.Matrix([0, 0, 0]), theta), ValueError, "axis must be a non-zero"),
-        (lambda: sk.transl(1, 2), TypeError, "transl takes a 3-vector p or three numbers"),
+        (
+            lambda: sk.rot_axis([0, 0, 0], 1.0),
+            ValueError,
+            "axis must be a non-zero 3-vector",
+        ),
+        (
+            lambda: sk.rot_axis(sp.Matrix([0, 0, 0]), theta),
+            ValueError,
+            "axis must be a non-zero",
+        ),
+        (
+            lambda: sk.transl(1, 2),
+            TypeError,
+            "transl takes a 3-vector p or three numbers",
+        ),
         (lambda: sk.transl([1, 2, 3, 4]), ValueError, r"p must have shape \(3\)"),
-        (lambda: sk.homogeneous(np.ones((3, 3))), ValueError, "R must be a rotation matrix"),
+        (
+            lambda: sk.homogeneous(np.ones((3, 3))),
+            ValueError,
+            "R must be a rotation matrix",
+        ),
         (lambda: sk.homogeneous(np.diag([1, 1, -1])), ValueError, "determinant \\+1"),
         (lambda: sk.homogeneous(np.eye(2)), ValueError, r"R must have shape \(3 x 3\)"),
-        (lambda: sk.homogeneous(sp.Matrix([[theta, 0, 0], [0, 1, 0], [0, 0, 1]])), ValueError,
-         "R must be a rotation matrix"),
+        (
+            lambda: sk.homogeneous(sp.Matrix([[theta, 0, 0], [0, 1, 0], [0, 0, 1]])),
+            ValueError,
+            "R must be a rotation matrix",
+        ),
         (lambda: sk.inv(np.eye(3)), ValueError, r"T must have shape \(4 x 4\)"),
         (lambda: sk.inv(np.full((4, 4), np.nan)), ValueError, "T must be finite"),
-        (lambda: sk.inv(np.diag([1.0, 1, 1, 2])), ValueError, r"last row \[0, 0, 0, 1\]"),
+        (
+            lambda: sk.inv(np.diag([1.0, 1, 1, 2])),
+            ValueError,
+            r"last row \[0, 0, 0, 1\]",
+        ),
         (lambda: sk.inv(np.diag([2.0, 1, 1, 1])), ValueError, "rotation block of T"),
-        (lambda: sk.exp_twist([0, 0, 1], 1.0), ValueError, r"twist must have shape \(6,\)"),
-        (lambda: sk.exp_twist(sp.Matrix([0, 0, 1]), theta), ValueError, r"twist must have shape \(6, 1\)"),
-        (lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], "x"), TypeError, "h must be a pitch"),
-        (lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], np.nan), ValueError, "h must be a pitch"),
-        (lambda: sk.twist_from_axis([0, 0, 0], [0, 0, 0], 0), ValueError, "s must be a non-zero"),
+        (
+            lambda: sk.exp_twist([0, 0, 1], 1.0),
+            ValueError,
+            r"twist must have shape \(6,\)",
+        ),
+        (
+            lambda: sk.exp_twist(sp.Matrix([0, 0, 1]), theta),
+            ValueError,
+            r"twist must have shape \(6, 1\)",
+        ),
+        (
+            lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], "x"),
+            TypeError,
+            "h must be a pitch",
+        ),
+        (
+            lambda: sk.twist_from_axis([0, 0, 1], [0, 0, 0], np.nan),
+            ValueError,
+            "h must be a pitch",
+        ),
+        (
+            lambda: sk.twist_from_axis([0, 0, 0], [0, 0, 0], 0),
+            ValueError,
+            "s must be a non-zero",
+        ),
     ],
 )
 def test_bad_input_is_named_in_a_clear_error(call, error, message):
@@ -191,7 +258,9 @@ def test_bad_input_is_named_in_a_clear_error(call, error, message):
 
 
 def test_strings_are_not_sympified_into_symbols():
-    with pytest.raises(TypeError, match="r must hold numbers or SymPy expressions, not strings"):
+    with pytest.raises(
+        TypeError, match="r must hold numbers or SymPy expressions, not strings"
+    ):
         sk.twist_from_axis([0, 0, 1], [theta, "x", 0], 0)
     with pytest.raises(TypeError, match="h must be a pitch"):
         sk.twist_from_axis([0, 0, 1], [theta, 0, 0], "h")
@@ -199,15 +268,25 @@ def test_strings_are_not_sympified_into_symbols():
 
 # --- edge cases that used to be silent ----------------------------------------------------
 
-@pytest.mark.parametrize("axis, rot", [([1e200, 0, 0], sk.rotx), ([0, -1e-11, 0], None), ([0, 0, 3e307], sk.rotz),
-                                       ([1e154, 1e154, 0], None)])
+
+@pytest.mark.parametrize(
+    "axis, rot",
+    [
+        ([1e200, 0, 0], sk.rotx),
+        ([0, -1e-11, 0], None),
+        ([0, 0, 3e307], sk.rotz),
+        ([1e154, 1e154, 0], None),
+    ],
+)
 def test_huge_and_tiny_axes_are_normalised_without_overflow(axis, rot):
     u = np.array(axis) / np.max(np.abs(axis))
-    u = u / np.linalg.norm(u)               # the direction, from the scaled vector
+    u = u / np.linalg.norm(u)  # the direction, from the scaled vector
     R = sk.rot_axis(axis, 0.7)
     # Rodrigues' formula by hand: I + sin [u] + (1 - cos) [u]^2
     U = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
-    assert np.allclose(R, np.eye(3) + np.sin(0.7) * U + (1 - np.cos(0.7)) * U @ U, atol=1e-15)
+    assert np.allclose(
+        R, np.eye(3) + np.sin(0.7) * U + (1 - np.cos(0.7)) * U @ U, atol=1e-15
+    )
     if rot is not None:
         assert np.allclose(R, rot(0.7), atol=1e-15)
     assert not np.allclose(R, np.eye(3))
@@ -217,14 +296,22 @@ def test_sympy_axis_with_a_float_angle_is_exact_in_exact_out():
     R = sk.rot_axis(sp.Matrix([0, 0, 1]), 0.5)
     assert isinstance(R, sp.MatrixBase)
     c, s = np.cos(0.5), np.sin(0.5)
-    assert np.allclose(np.array(R, dtype=float), [[c, -s, 0], [s, c, 0], [0, 0, 1]], atol=1e-15)
+    assert np.allclose(
+        np.array(R, dtype=float), [[c, -s, 0], [s, c, 0], [0, 0, 1]], atol=1e-15
+    )
     T = sk.exp_twist(sp.Matrix([0, 0, 1, 0, 0, 0]), 0.5)
-    assert isinstance(T, sp.MatrixBase) and np.allclose(np.array(T[:3, :3], dtype=float), np.array(R, dtype=float))
+    assert isinstance(T, sp.MatrixBase) and np.allclose(
+        np.array(T[:3, :3], dtype=float), np.array(R, dtype=float)
+    )
     # and a numeric axis with a symbolic angle
     assert sp.simplify(sk.rot_axis([0, 0, 2], theta) - sk.rotz(theta)) == sp.zeros(3, 3)
 
 
 def test_an_infinite_float_pitch_is_a_translation():
-    assert np.array_equal(sk.twist_from_axis([0, 0, 2], [5, 6, 7], np.inf), [0, 0, 0, 0, 0, 1])
-    assert np.array_equal(sk.twist_from_axis([0, 0, 2], [5, 6, 7], float("inf")),
-                          sk.twist_from_axis([0, 0, 1], [0, 0, 0], sp.oo))
+    assert np.array_equal(
+        sk.twist_from_axis([0, 0, 2], [5, 6, 7], np.inf), [0, 0, 0, 0, 0, 1]
+    )
+    assert np.array_equal(
+        sk.twist_from_axis([0, 0, 2], [5, 6, 7], float("inf")),
+        sk.twist_from_axis([0, 0, 1], [0, 0, 0], sp.oo),
+    )
