@@ -481,7 +481,7 @@ def cold_weight(chromium, url):
     context = chromium.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
     requests = []
-    page.on("requestfinished", requests.append)
+    page.on("requestfinished", lambda request: requests.append(request))
     page.goto(url, wait_until="networkidle")
     page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
     page.wait_for_load_state("networkidle")

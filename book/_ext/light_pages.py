@@ -11,12 +11,27 @@ already installs): every ``fa-NAME`` class written in a page or a script of the 
 every icon the theme's stylesheet draws by code point (admonitions, the back-to-top arrow,
 ...). The subsets are written as WOFF under new names and the stylesheet pointed at them;
 the full fonts are removed. 274 kB of fonts become a few kB.
+
+Images inside HTML outputs (the frames of ``sk.plotting.animation_html`` and of the stepped
+figures of ``sk.viewer``) are PNG data in the notebook, so that it needs no file; in the book
+each becomes a file of ``_images/`` (named by its hash), which the browser fetches only when
+the frame is shown, and caches. The redundancy chapter's animation was 1.7 MB of HTML.
+
+Alt texts: a code cell's ``mystnb: image: alt:`` metadata is myst-nb's alt text for the
+cell's image outputs; the same text is given here to the images of the cell's HTML outputs
+whose alt text says nothing (a stepped figure's "precomputed figure", an animation's alt
+made from its axes), so that every figure of a chapter is described in the chapter's words.
 """
+import base64
 import glob
+import hashlib
+import html
 import io
 import os
+import posixpath
 import re
 
+from docutils import nodes
 from fontTools import subset
 from fontTools.ttLib import TTFont
 
@@ -93,6 +108,60 @@ def subset_fonts(outdir):
         f.write(css)
 
 
+DATA_IMAGE = re.compile(r"data:image/(png|jpeg|gif);base64,([A-Za-z0-9+/=]{2000,})")
+# An alt text that says nothing: a stepped figure's, or an animation's own (data-alt="auto"),
+# inside HTML or inside the JSON string of a viewer's model (quotes escaped).
+BLAND_ALT = re.compile(r'alt=(\\?")(precomputed figure)\1|alt=(\\?")([^"\\]*)\3(\s+[^>]*?data-alt=\3auto\3)')
+
+
+def cell_alt(cell):
+    image = (cell.get("cell_metadata") or {}).get("mystnb", {}).get("image", {})
+    return image.get("alt") if isinstance(image, dict) else None
+
+
+def replace_raw(node, text):
+    node.replace_self(nodes.raw("", text, format="html"))
+
+
+def describe_html_images(app, doctree, docname):
+    """The cell's alt text for the bland alt texts of its HTML outputs (see above)."""
+    for cell in doctree.findall(nodes.container):
+        alt = cell.get("nb_element") == "cell_code" and cell_alt(cell)
+        if not alt:
+            continue
+        text = html.escape(" ".join(alt.split()), quote=True)
+        for raw in list(cell.findall(nodes.raw)):
+            new = BLAND_ALT.sub(lambda m: (f"alt={m.group(1)}{text}{m.group(1)}" if m.group(2)
+                                           else f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"),
+                                raw.astext())
+            if new != raw.astext():
+                replace_raw(raw, new)
+
+
+def images_to_files(app, doctree, docname):
+    """PNG data inside HTML outputs become files of _images/ (see above)."""
+    if app.builder.format != "html":
+        return
+    folder = os.path.join(app.outdir, "_images")
+    prefix = posixpath.relpath("_images", posixpath.dirname(docname) or ".")
+
+    def to_file(match):
+        data = base64.b64decode(match.group(2))
+        name = f"{hashlib.sha256(data).hexdigest()}.{match.group(1)}"
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, name)
+        if not os.path.exists(path):
+            with open(path, "wb") as f:
+                f.write(data)
+        return f"{prefix}/{name}"
+
+    for raw in list(doctree.findall(nodes.raw)):
+        if "html" in raw.get("format", "") and "data:image/" in raw.astext():
+            new = DATA_IMAGE.sub(to_file, raw.astext())
+            if new != raw.astext():
+                replace_raw(raw, new)
+
+
 def lighten(app, exception):
     if exception is None and app.builder.format == "html":
         drop_script(app.outdir)
@@ -100,5 +169,7 @@ def lighten(app, exception):
 
 
 def setup(app):
+    app.connect("doctree-resolved", describe_html_images)
+    app.connect("doctree-resolved", images_to_files)
     app.connect("build-finished", lighten)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -10,6 +10,10 @@
  * "Dark", ...) that made its visible name differ from its label "Color mode". A code cell's
  * "Show code cell source" summary is named by that visible text, not by a different label.
  *
+ * The list of references: docutils writes it as role="list" whose items have the role
+ * "doc-biblioentry" (deprecated, and not a list item for assistive technology), so a screen
+ * reader was told of a list without items: each entry is a list item.
+ *
  * Equations: a display equation at most a fifth wider than the column is set that much
  * smaller, so that it fits; a wider one (on a phone) scrolls in its own box, which then takes
  * the keyboard focus, so that it can be scrolled without a mouse.
@@ -30,6 +34,10 @@
     if (summary.textContent.trim()) summary.removeAttribute("aria-label");
   });
 
+  document.querySelectorAll('[role="list"] > [role="doc-biblioentry"]').forEach((entry) => {
+    entry.setAttribute("role", "listitem");
+  });
+
   function fitEquations() {
     document.querySelectorAll('mjx-container[display="true"]').forEach((box) => {
       // MathJax scales each equation to the text by its own inline font-size: start from it.
@@ -40,12 +48,16 @@
         const size = parseFloat(getComputedStyle(box).fontSize);
         box.style.fontSize = `${Math.floor(size * ratio * 100) / 100}px`;
       }
-      if (box.scrollWidth > box.clientWidth + 1) {
-        box.setAttribute("tabindex", "0");
-      } else {
-        box.removeAttribute("tabindex");
-      }
+      focusableIfScrolling(box);
     });
+    document.querySelectorAll("span.math").forEach(focusableIfScrolling);
+  }
+  function focusableIfScrolling(box) {
+    if (box.scrollWidth > box.clientWidth + 1) {
+      box.setAttribute("tabindex", "0");
+    } else {
+      box.removeAttribute("tabindex");
+    }
   }
   let timer = null;
   window.addEventListener("resize", () => {
