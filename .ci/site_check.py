@@ -22,7 +22,7 @@ unless:
   - every file a page asks the server for exists (MathJax fonts and extensions included);
   - at 390, 800 and 1280 px (a phone, tapped; a tablet; a laptop): one search control in
     sight, and the table-of-contents and page-outline buttons open their sidebars (Escape
-    closes them), with no tooltip left on screen after;
+    closes them), with no tooltip left on screen after; a search finds pages;
   - at 1280 px, by rule over every element of the article: nothing wider than the content
     column, no code cell, output or table that scrolls sideways (the code font fits 88
     characters), no figure image wider than the column; at every width the page itself never
@@ -476,6 +476,24 @@ def check_accessibility(page, page_name, axe):
     return problems, counts
 
 
+def check_search(chromium, url, word="screw"):
+    """The search button opens the search box, and a search finds pages (on search.html)."""
+    page = chromium.new_page(viewport={"width": 1280, "height": 900})
+    page.goto(url, wait_until="load")
+    page.locator(".bd-header-article .search-button").click()
+    box = page.locator("#pst-search-dialog input[name=q]")
+    box.fill(word)
+    box.press("Enter")
+    page.wait_for_load_state("load")
+    try:
+        page.wait_for_selector("#search-results li, ul.search li", timeout=15000)
+        found = page.locator("#search-results li, ul.search li").count()
+    except Exception:  # Playwright's TimeoutError: no result came
+        found = 0
+    page.close()
+    return [] if found else [f"searching for {word!r} from {url} found nothing"]
+
+
 def cold_weight(chromium, url):
     """Bytes a first visit downloads (empty cache): the page and all it loads, read to its end."""
     context = chromium.new_context(viewport={"width": 1280, "height": 900})
@@ -524,6 +542,7 @@ def check_reader(browser, origin, pages, cache):
             context.close()
         for page_name in pages:
             weights[page_name] = cold_weight(chromium, origin + page_name)
+        problems += check_search(chromium, origin + pages[0])
         chromium.close()
     for width in WIDTHS:
         kinds = {kind: n for (w, kind), n in sorted(layout_counts.items()) if w == width}

@@ -4,13 +4,16 @@ pydata-sphinx-theme puts Font Awesome on every page twice: as web fonts with the
 classes (``fa-solid-900.woff2`` and friends, from its stylesheet), which draw every icon of
 the book, and as a 1.49 MB script, ``fontawesome.js``, which redraws the same icons as SVG.
 When the build finishes, the script's tag is taken out of every page and the script out of
-the build: the icons stay, drawn by the fonts.
+the build: the icons stay, drawn by the fonts. So are the tags of Sphinx's search scripts
+and its index (0.13 MB), which the theme puts on every page for a search-as-you-type that is
+off: the search page loads them itself.
 
 The fonts themselves are cut to the glyphs the book shows (fontTools, which Matplotlib
 already installs): every ``fa-NAME`` class written in a page or a script of the build, and
 every icon the theme's stylesheet draws by code point (admonitions, the back-to-top arrow,
 ...). The subsets are written as WOFF under new names and the stylesheet pointed at them;
-the full fonts are removed. 274 kB of fonts become a few kB.
+the full fonts are removed, and so are the stylesheet's rules for the icons not shown. 274 kB
+of fonts become 8 kB, and the theme's stylesheet loses some 100 kB.
 
 Images inside HTML outputs (the frames of ``sk.plotting.animation_html`` and of the stepped
 figures of ``sk.viewer``) are PNG data in the notebook, so that it needs no file; in the book
@@ -36,6 +39,10 @@ from fontTools import subset
 from fontTools.ttLib import TTFont
 
 SCRIPT_TAG = re.compile(r'\s*<script defer src="[^"]*_static/scripts/fontawesome\.js[^"]*"></script>')
+# pydata-sphinx-theme loads Sphinx's search on every page for its search-as-you-type, which
+# is off unless the theme option search_as_you_type is set: then only search.html needs it.
+SEARCH_TAGS = re.compile(r'\s*<script src="[^"]*(?:_static/searchtools\.js|_static/language_data\.js'
+                         r'|searchindex\.js)"></script>')
 FONTS = "vendor/fontawesome/webfonts"
 # .fa-bars:before,.fa-navicon:before{content:"\f0c9"}
 ICON_RULE = re.compile(r'((?:\.fa-[\w-]+:{1,2}before,?)+)\{content:"\\?([0-9a-f]{1,5})"\}')
@@ -45,11 +52,13 @@ FONT_FACE = re.compile(r"url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.(wof
                        r' format\("(woff2|truetype)"\)')
 
 
-def drop_script(outdir):
+def drop_script(outdir, search_everywhere=False):
     for page in glob.glob(os.path.join(outdir, "**", "*.html"), recursive=True):
         with open(page, encoding="utf-8") as f:
             html = f.read()
         lighter = SCRIPT_TAG.sub("", html)
+        if not search_everywhere and os.path.basename(page) != "search.html":
+            lighter = SEARCH_TAGS.sub("", lighter)
         if lighter != html:
             with open(page, "w", encoding="utf-8") as f:
                 f.write(lighter)
@@ -101,6 +110,9 @@ def subset_fonts(outdir):
         for extension in ("woff2", "ttf"):
             if os.path.exists(os.path.join(fonts, f"{name}.{extension}")):
                 os.remove(os.path.join(fonts, f"{name}.{extension}"))
+    # The stylesheet's rule for each of Font Awesome's ~1800 icon classes: kept only for the
+    # icons the book shows (the others would have no glyph in the subset fonts anyway).
+    css = ICON_RULE.sub(lambda m: m.group(0) if int(m.group(2), 16) in points else "", css)
     css = re.sub(r"src:url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.woff2\) format\(\"woff2\"\),"
                  r"url\(\.\./vendor/fontawesome/webfonts/\1\.ttf\) format\(\"truetype\"\)",
                  r'src:url(../vendor/fontawesome/webfonts/\1-book.woff) format("woff")', css)
@@ -164,7 +176,8 @@ def images_to_files(app, doctree, docname):
 
 def lighten(app, exception):
     if exception is None and app.builder.format == "html":
-        drop_script(app.outdir)
+        options = app.config.html_theme_options or {}
+        drop_script(app.outdir, search_everywhere=bool(options.get("search_as_you_type")))
         subset_fonts(app.outdir)
 
 
