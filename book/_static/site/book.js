@@ -10,6 +10,9 @@
  * "Dark", ...) that made its visible name differ from its label "Color mode". A code cell's
  * "Show code cell source" summary is named by that visible text, not by a different label.
  *
+ * Landmarks: the primary sidebar (the book's title and its table of contents) is a region of
+ * its own, so that no content of the page lies outside a landmark.
+ *
  * The list of references: docutils writes it as role="list" whose items have the role
  * "doc-biblioentry" (deprecated, and not a list item for assistive technology), so a screen
  * reader was told of a list without items: each entry is a list item.
@@ -34,6 +37,11 @@
     if (summary.textContent.trim()) summary.removeAttribute("aria-label");
   });
 
+  const sidebar = document.getElementById("pst-primary-sidebar");
+  if (sidebar && !sidebar.hasAttribute("role")) {
+    sidebar.setAttribute("role", "complementary");
+    sidebar.setAttribute("aria-label", "The book's chapters");
+  }
   document.querySelectorAll('[role="list"] > [role="doc-biblioentry"]').forEach((entry) => {
     entry.setAttribute("role", "listitem");
   });
