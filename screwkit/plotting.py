@@ -274,14 +274,14 @@ _PLAYER = """<figure class="screwkit-animation" id="{id}">
        aria-valuetext="frame 1 of {count}" style="flex: 1">
 <output aria-hidden="true" style="min-width: 4.5em; font-variant-numeric: tabular-nums">1 / {count}</output>
 </div>
-<script type="application/json">{frames}</script>
+<script type="application/json" class="screwkit-animation-frames">{frames}</script>
 <script>
 (function () {{
   var root = document.getElementById("{id}"), img = root.querySelector("img");
   var slider = root.querySelector("input"), button = root.querySelector("button");
   var readout = root.querySelector("output");
   var frames = [img.getAttribute("src")].concat(JSON.parse(root.querySelector(
-      "script[type='application/json']").textContent));
+      "script.screwkit-animation-frames").textContent));
   var current = 0, timer = null;
   function show(k) {{
     current = k;

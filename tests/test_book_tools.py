@@ -110,7 +110,7 @@ def test_animation_player_is_deterministic_labelled_and_lazy():
     assert 'aria-label="Frame of the animation"' in first
     assert 'alt="An animation of 4 frames: w (m\u00b2) against t (s) (arm)."' in first
     assert first.count("data:image/png;base64,") == 4
-    frames = json.loads(first.split('<script type="application/json">')[1].split("</script>")[0])
+    frames = json.loads(first.split('class="screwkit-animation-frames">')[1].split("</script>")[0])
     assert len(frames) == 3  # the others: the first frame is the image itself
     png = base64.b64decode(frames[0].split(",", 1)[1])
     assert png[:8] == b"\x89PNG\r\n\x1a\n"
