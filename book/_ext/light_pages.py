@@ -1,30 +1,33 @@
 """Light pages: what every page of the book loads, cut to what it uses.
 
 pydata-sphinx-theme puts Font Awesome on every page twice: as web fonts with their CSS
-classes (``fa-solid-900.woff2`` and friends, from its stylesheet), which draw every icon of
-the book, and as a 1.49 MB script, ``fontawesome.js``, which redraws the same icons as SVG.
-When the build finishes, the script's tag is taken out of every page and the script out of
-the build: the icons stay, drawn by the fonts. So are the tags of Sphinx's search scripts
-and its index (0.13 MB), which the theme puts on every page for a search-as-you-type that is
-off: the search page loads them itself.
+classes (``fa-solid-900.woff2`` and friends, from its stylesheet), which draw every icon
+of the book, and as a 1.49 MB script, ``fontawesome.js``, which redraws the same icons
+as SVG. When the build finishes, the script's tag is taken out of every page and the
+script out of the build: the icons stay, drawn by the fonts. So are the tags of Sphinx's
+search scripts and its index (0.13 MB), which the theme puts on every page for a
+search-as-you-type that is off: the search page loads them itself.
 
 The fonts themselves are cut to the glyphs the book shows (fontTools, which Matplotlib
-already installs): every ``fa-NAME`` class written in a page or a script of the build, and
-every icon the theme's stylesheet draws by code point (admonitions, the back-to-top arrow,
-...). The subsets are written as WOFF under new names and the stylesheet pointed at them;
-the full fonts are removed, and so are the stylesheet's rules for the icons not shown. 274 kB
-of fonts become 8 kB, and the theme's stylesheet loses some 100 kB.
+already installs): every ``fa-NAME`` class written in a page or a script of the build,
+and every icon the theme's stylesheet draws by code point (admonitions, the back-to-top
+arrow, ...). The subsets are written as WOFF under new names and the stylesheet pointed
+at them; the full fonts are removed, and so are the stylesheet's rules for the icons not
+shown. 274 kB of fonts become 8 kB, and the theme's stylesheet loses some 100 kB.
 
-Images inside HTML outputs (the frames of ``sk.plotting.animation_html`` and of the stepped
-figures of ``sk.viewer``) are PNG data in the notebook, so that it needs no file; in the book
-each becomes a file of ``_images/`` (named by its hash), which the browser fetches only when
-the frame is shown, and caches. The redundancy chapter's animation was 1.7 MB of HTML.
+Images inside HTML outputs (the frames of ``sk.plotting.animation_html`` and of the
+stepped figures of ``sk.viewer``) are PNG data in the notebook, so that it needs no
+file; in the book each becomes a file of ``_images/`` (named by its hash), which the
+browser fetches only when the frame is shown, and caches. The redundancy chapter's
+animation was 1.7 MB of HTML.
 
 Alt texts: a code cell's ``mystnb: image: alt:`` metadata is myst-nb's alt text for the
-cell's image outputs; the same text is given here to the images of the cell's HTML outputs
-whose alt text says nothing (a stepped figure's "precomputed figure", an animation's alt
-made from its axes), so that every figure of a chapter is described in the chapter's words.
+cell's image outputs; the same text is given here to the images of the cell's HTML
+outputs whose alt text says nothing (a stepped figure's "precomputed figure", an
+animation's alt made from its axes), so that every figure of a chapter is described in
+the chapter's words.
 """
+
 import base64
 import glob
 import hashlib
@@ -38,18 +41,28 @@ from docutils import nodes
 from fontTools import subset
 from fontTools.ttLib import TTFont
 
-SCRIPT_TAG = re.compile(r'\s*<script defer src="[^"]*_static/scripts/fontawesome\.js[^"]*"></script>')
-# pydata-sphinx-theme loads Sphinx's search on every page for its search-as-you-type, which
-# is off unless the theme option search_as_you_type is set: then only search.html needs it.
-SEARCH_TAGS = re.compile(r'\s*<script src="[^"]*(?:_static/searchtools\.js|_static/language_data\.js'
-                         r'|searchindex\.js)"></script>')
+SCRIPT_TAG = re.compile(
+    r'\s*<script defer src="[^"]*_static/scripts/fontawesome\.js[^"]*"></script>'
+)
+# pydata-sphinx-theme loads Sphinx's search on every page for its search-as-you-type,
+# which
+# is off unless the theme option search_as_you_type is set: then only search.html needs
+# it.
+SEARCH_TAGS = re.compile(
+    r'\s*<script src="[^"]*(?:_static/searchtools\.js|_static/language_data\.js'
+    r'|searchindex\.js)"></script>'
+)
 FONTS = "vendor/fontawesome/webfonts"
 # .fa-bars:before,.fa-navicon:before{content:"\f0c9"}
-ICON_RULE = re.compile(r'((?:\.fa-[\w-]+:{1,2}before,?)+)\{content:"\\?([0-9a-f]{1,5})"\}')
+ICON_RULE = re.compile(
+    r'((?:\.fa-[\w-]+:{1,2}before,?)+)\{content:"\\?([0-9a-f]{1,5})"\}'
+)
 ICON_CLASS = re.compile(r"\bfa-([a-z0-9-]+)")
 CODE_POINT = re.compile(r'"\\(f[0-9a-f]{3}|e[0-9a-f]{3})"')
-FONT_FACE = re.compile(r"url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.(woff2|ttf)\)"
-                       r' format\("(woff2|truetype)"\)')
+FONT_FACE = re.compile(
+    r"url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.(woff2|ttf)\)"
+    r' format\("(woff2|truetype)"\)'
+)
 
 
 def drop_script(outdir, search_everywhere=False):
@@ -110,20 +123,30 @@ def subset_fonts(outdir):
         for extension in ("woff2", "ttf"):
             if os.path.exists(os.path.join(fonts, f"{name}.{extension}")):
                 os.remove(os.path.join(fonts, f"{name}.{extension}"))
-    # The stylesheet's rule for each of Font Awesome's ~1800 icon classes: kept only for the
+    # The stylesheet's rule for each of Font Awesome's ~1800 icon classes: kept only for
+    # the
     # icons the book shows (the others would have no glyph in the subset fonts anyway).
-    css = ICON_RULE.sub(lambda m: m.group(0) if int(m.group(2), 16) in points else "", css)
-    css = re.sub(r"src:url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.woff2\) format\(\"woff2\"\),"
-                 r"url\(\.\./vendor/fontawesome/webfonts/\1\.ttf\) format\(\"truetype\"\)",
-                 r'src:url(../vendor/fontawesome/webfonts/\1-book.woff) format("woff")', css)
+    css = ICON_RULE.sub(
+        lambda m: m.group(0) if int(m.group(2), 16) in points else "", css
+    )
+    css = re.sub(
+        r"src:url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.woff2\) "
+        r"format\(\"woff2\"\),"
+        r"url\(\.\./vendor/fontawesome/webfonts/\1\.ttf\) format\(\"truetype\"\)",
+        r'src:url(../vendor/fontawesome/webfonts/\1-book.woff) format("woff")',
+        css,
+    )
     with open(stylesheet, "w", encoding="utf-8") as f:
         f.write(css)
 
 
 DATA_IMAGE = re.compile(r"data:image/(png|jpeg|gif);base64,([A-Za-z0-9+/=]{2000,})")
-# An alt text that says nothing: a stepped figure's, or an animation's own (data-alt="auto"),
+# An alt text that says nothing (a stepped figure's, an animation's data-alt="auto"),
 # inside HTML or inside the JSON string of a viewer's model (quotes escaped).
-BLAND_ALT = re.compile(r'alt=(\\?")(precomputed figure)\1|alt=(\\?")([^"\\]*)\3(\s+[^>]*?data-alt=\3auto\3)')
+BLAND_ALT = re.compile(
+    r'alt=(\\?")(precomputed figure)\1'
+    r'|alt=(\\?")([^"\\]*)\3(\s+[^>]*?data-alt=\3auto\3)'
+)
 
 
 def cell_alt(cell):
@@ -143,9 +166,14 @@ def describe_html_images(app, doctree, docname):
             continue
         text = html.escape(" ".join(alt.split()), quote=True)
         for raw in list(cell.findall(nodes.raw)):
-            new = BLAND_ALT.sub(lambda m: (f"alt={m.group(1)}{text}{m.group(1)}" if m.group(2)
-                                           else f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"),
-                                raw.astext())
+            new = BLAND_ALT.sub(
+                lambda m: (
+                    f"alt={m.group(1)}{text}{m.group(1)}"
+                    if m.group(2)
+                    else f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"
+                ),
+                raw.astext(),
+            )
             if new != raw.astext():
                 replace_raw(raw, new)
 
@@ -177,7 +205,9 @@ def images_to_files(app, doctree, docname):
 def lighten(app, exception):
     if exception is None and app.builder.format == "html":
         options = app.config.html_theme_options or {}
-        drop_script(app.outdir, search_everywhere=bool(options.get("search_as_you_type")))
+        drop_script(
+            app.outdir, search_everywhere=bool(options.get("search_as_you_type"))
+        )
         subset_fonts(app.outdir)
 
 
