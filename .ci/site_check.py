@@ -1,10 +1,15 @@
 """Check the built book as a reader's browser sees it, with no network.
 
-Serves the HTML build on 127.0.0.1, loads every page of the table of contents in headless
-Chromium (every host but 127.0.0.1 unresolvable), and fails unless:
+Serves the HTML build on 127.0.0.1 and loads every page of the build under book/ and
+notebooks/ (by rule, not by list: a new chapter cannot slip by; and every file of _toc.yml
+must be one of them) in headless Chromium (every host but 127.0.0.1 unresolvable). Fails
+unless:
   - math is typeset by the bundled MathJax (mjx-container elements, no MathJax errors)
     on every page that has math;
-  - every chapter page (notebooks/) shows at least one figure whose file is in the build;
+  - every chapter page (notebooks/) shows at least one figure whose file is in the build,
+    and its first code cell installs screwkit where it is missing (Colab, a bare hub);
+  - every image has an alt text that says what it shows (not its file's path, not a
+    placeholder such as "precomputed figure");
   - no page links to a missing file or anchor of the book;
   - no page asked for anything off this machine (Chromium's net log lists every request);
   - every slider or drop-down of every in-page interactive figure (screwkit.viewer), when
@@ -15,9 +20,16 @@ Chromium (every host but 127.0.0.1 unresolvable), and fails unless:
     "Summary";
   - no link (a launch button above all) points to a placeholder host such as hub.example.edu;
   - every file a page asks the server for exists (MathJax fonts and extensions included);
-  - in Chromium at 1280 px, no figure image is wider than the content column (it would be shrunk
-    and its text with it) and no code cell's output is wider than the column (clipped, or behind
-    a scroll bar); the same is counted, not failed, at a phone's 390 px;
+  - at 390, 800 and 1280 px (a phone, tapped; a tablet; a laptop): one search control in
+    sight, and the table-of-contents and page-outline buttons open their sidebars (Escape
+    closes them), with no tooltip left on screen after; a search finds pages;
+  - at 1280 px, by rule over every element of the article: nothing wider than the content
+    column, no code cell, output or table that scrolls sideways (the code font fits 88
+    characters), no figure image wider than the column; at every width the page itself never
+    scrolls sideways and equations and tables stay in the column (in their own scrolling box);
+  - axe-core (from the npm registry, fetched at check time) finds no critical or serious
+    violation on any page;
+  - every page weighs at most 2.5 MB cold (its HTML and all it loads, empty cache);
   - the whole book stays under 20 MB.
 Keeps a screenshot of the first chapter in _build/.
 
@@ -54,7 +66,7 @@ class PageParser(HTMLParser):
 
     def __init__(self):
         super().__init__()
-        self.ids, self.links, self.images = set(), [], []
+        self.ids, self.links, self.images, self.alts = set(), [], [], []
         self.math_containers = self.math_errors = self.math_sources = 0
 
     def handle_starttag(self, tag, attrs):
@@ -67,6 +79,7 @@ class PageParser(HTMLParser):
             self.links.append(attrs["href"])
         if tag == "img" and attrs.get("src"):
             self.images.append(attrs["src"])
+            self.alts.append((attrs["src"], attrs.get("alt")))
         if tag == "mjx-container":
             self.math_containers += 1
         if tag == "mjx-merror":
@@ -193,6 +206,53 @@ def check_chapter_shape(page, html):
             if not pattern.search(html)]
 
 
+# An alt text that names a file, or says nothing of what the image shows.
+PATH_LIKE = re.compile(r"(^|/)[\w.-]+\.(png|jpe?g|gif|svg|webp)$|^_images/|^data:", re.I)
+PLACEHOLDER_ALTS = {"", "image", "figure", "precomputed figure", "png", "output"}
+
+
+def check_alt_texts(page, parser):
+    """Every image of a page says what it shows: an alt text that is not its file's path,
+    nor a placeholder (decorations, such as a launch button's logo, name what they are)."""
+    problems = []
+    for src, alt in parser.alts:
+        text = (alt or "").strip()
+        if alt is None or text.lower() in PLACEHOLDER_ALTS or PATH_LIKE.search(text):
+            problems.append(f"{page}: image {src[:60]} has the alt text {alt!r}, not what it shows")
+    return problems
+
+
+# The first code cell of every chapter installs screwkit where it is missing (Colab, a bare
+# JupyterHub), as the book's first chapter does.
+INSTALLS_SCREWKIT = re.compile(r'find_spec\(\s*"screwkit"\s*\)[\s\S]*pip install')
+
+
+def check_first_cell(root, page):
+    """A chapter's first code cell installs screwkit where it is missing."""
+    source = os.path.join(root, "_sources", os.path.splitext(page)[0] + ".ipynb")
+    if not page.startswith("notebooks/"):
+        return []
+    if not os.path.exists(source):
+        return [f"{page}: no notebook source in the build (_sources)"]
+    with open(source, encoding="utf-8") as f:
+        cells = [c for c in json.load(f)["cells"] if c["cell_type"] == "code"]
+    if not cells or not INSTALLS_SCREWKIT.search("".join(cells[0]["source"])):
+        return [f"{page}: the first code cell does not install screwkit where it is missing "
+                "(copy the first code cell of another chapter)"]
+    return []
+
+
+def check_toc_built(root, toc="_toc.yml"):
+    """Every file of the table of contents is a page of the build (none left out of the checks)."""
+    toc = os.path.join(os.path.dirname(os.path.dirname(root)), toc)
+    if not os.path.exists(toc):
+        return []
+    with open(toc, encoding="utf-8") as f:
+        files = re.findall(r"^\s*-?\s*(?:file|root):\s*(\S+)", f.read(), re.M)
+    return [f"{name}: in _toc.yml but not built ({name}.html missing)" for name in files
+            if not os.path.exists(os.path.join(root, name + ".html"))]
+
+
 # The parallel mechanisms of the catalogue (screwkit.robots): a chapter that analyses them with
 # sk.mobility must draw each one.
 MECHANISM_BUILDER = re.compile(r"robots\.(pm_\w+|planar_3rrr|spherical_3rrr)\b")
@@ -226,59 +286,278 @@ def check_placeholder_links(page, parser):
     return problems
 
 
-# In the page: the content column's width, figures wider than it (as the image is meant to be
-# shown: its width attribute, else its natural width) and code cell outputs wider than it.
+# ---- The book as a reader sees it: navigation, weight, accessibility and layout, at the widths
+# of a phone (390 px), a tablet (800 px) and a laptop (1280 px), on every page (by rule: every
+# page of the build under book/ and notebooks/, so a new chapter cannot slip by).
+
+WIDTHS = (390, 800, 1280)
+PAGE_LIMIT_MB = 2.5  # a page, cold (empty cache): the HTML and everything it loads
+AXE_VERSION = "4.14.1"  # axe-core from the npm registry, fetched at check time
+AXE_FAILING = ("critical", "serious")
+
+# In the page: which search controls, sidebar buttons and sidebars a reader can see.
+VISIBLE = """(selector) => [...document.querySelectorAll(selector)].filter(e => {
+    const r = e.getBoundingClientRect(), s = getComputedStyle(e);
+    return r.width > 0 && r.height > 0 && s.visibility !== "hidden" && r.right > 0
+        && r.left < innerWidth && e.closest("[inert]") === null;
+}).length"""
+DIALOG_OPEN = "(id) => { const d = document.getElementById(id); return !!(d && d.open); }"
+TOOLTIPS = "() => [...document.querySelectorAll('.tooltip.show')].length"
+
+
+def check_navigation(page, page_name, width):
+    """One search; the table-of-contents and page-outline buttons open their sidebars."""
+    problems = []
+    where = f"{page_name} at {width} px"
+    press = (lambda locator: locator.tap()) if width < 600 else (lambda locator: locator.click())
+    searches = page.evaluate(VISIBLE, ".search-button, .search-button-field")
+    if searches != 1:
+        problems.append(f"{where}: {searches} search controls in sight (want one)")
+    sidebars = (("primary", "#pst-primary-sidebar .bd-docs-nav a", 992),
+                ("secondary", "#pst-secondary-sidebar .page-toc a, #pst-secondary-sidebar nav a",
+                 1200))
+    for side, links, wide in sidebars:
+        if page.locator(f"#pst-{side}-sidebar").count() == 0 or (
+                side == "secondary" and page.locator(links).count() == 0):
+            continue  # a page without an outline has no outline button
+        buttons = [b for b in page.locator(f".{side}-toggle").all() if b.is_visible()]
+        in_sight = page.evaluate(VISIBLE, links)
+        if width >= wide:
+            if not in_sight:
+                problems.append(f"{where}: the {side} sidebar is not in sight")
+            if side == "primary" and buttons:  # its button closes and reopens it
+                press(buttons[0])
+                page.wait_for_timeout(400)
+                closed = page.evaluate(VISIBLE, links) == 0
+                press(buttons[0])
+                page.wait_for_timeout(400)
+                if not closed or not page.evaluate(VISIBLE, links):
+                    problems.append(f"{where}: the {side} sidebar button does not close and "
+                                    "reopen the sidebar")
+            continue
+        if len(buttons) != 1:
+            problems.append(f"{where}: {len(buttons)} {side} sidebar buttons in sight (want one)")
+            continue
+        press(buttons[0])
+        page.wait_for_timeout(400)
+        dialog = f"pst-{side}-sidebar-modal"
+        if not page.evaluate(DIALOG_OPEN, dialog) or not page.evaluate(
+                VISIBLE, f"#{dialog} a"):
+            problems.append(f"{where}: the {side} sidebar button does not open the sidebar")
+        page.keyboard.press("Escape")
+        page.wait_for_timeout(300)
+        if page.evaluate(DIALOG_OPEN, dialog):
+            problems.append(f"{where}: Escape does not close the {side} sidebar")
+    if width >= 600:  # the mouse leaves the buttons, as a reader's does
+        page.mouse.move(width // 2, 600)
+    page.wait_for_timeout(700)  # longer than the tooltips' show delay
+    if page.evaluate(TOOLTIPS):
+        problems.append(f"{where}: a tooltip stays on screen after the buttons were used")
+    return problems
+
+
+# In the page (by rule, every element of the article): the content column; elements that
+# stick out of it (not inside a box that clips or scrolls them); boxes that scroll sideways,
+# by kind; images meant to be shown wider than the column; and whether the page itself
+# scrolls sideways.
 MEASURE_LAYOUT = """() => {
     const article = document.querySelector("article.bd-article") || document.querySelector("main");
-    const style = getComputedStyle(article);
-    const column = article.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight);
-    const figures = [...article.querySelectorAll("img")].map(img => {
+    const style = getComputedStyle(article), box = article.getBoundingClientRect();
+    const left = box.left + parseFloat(style.paddingLeft);
+    const right = box.right - parseFloat(style.paddingRight);
+    const clips = e => getComputedStyle(e).overflowX !== "visible";
+    const inside = e => { for (let a = e.parentElement; a && a !== article; a = a.parentElement)
+                              if (clips(a)) return true;
+                          return false; };
+    const name = e => {
+        const text = (e.innerText || e.getAttribute("alt") || e.getAttribute("src") || "")
+            .trim().split("\\n")[0].slice(0, 50);
+        return `${e.tagName.toLowerCase()}${e.className && typeof e.className === "string"
+            ? "." + e.className.trim().split(/\\s+/)[0] : ""} ${JSON.stringify(text)}`;
+    };
+    const kind = e => e.closest(".cell_input") ? "code"
+        : e.closest("mjx-container, div.math, span.math") ? "equation"
+        : e.closest("table, .pst-scrollable-table-container") || e.querySelector("table") ? "table"
+        : e.closest(".cell_output") ? "output"
+        : e.closest("div.highlight") ? "code block" : "other";
+    const out = [], scrolling = [];
+    for (const e of article.querySelectorAll("*")) {
+        const r = e.getBoundingClientRect(), s = getComputedStyle(e);
+        if (r.width === 0 || r.height === 0 || s.position === "fixed") continue;
+        if ((r.right > right + 1 || r.left < left - 1) && !inside(e)) {
+            const p = e.parentElement.getBoundingClientRect();
+            if (!(p.right > right + 1 || p.left < left - 1))
+                out.push([kind(e), name(e), Math.round(r.width)]);
+        }
+        // A box (not an inline element, whose clientWidth is 0) with more inside than it shows:
+        // scrolled sideways, or clipped. What is inside is measured by its elements' boxes,
+        // leaving out MathJax's copy for screen readers (mjx-assistive-mml), which is clipped
+        // on purpose and would count in scrollWidth.
+        if (s.display === "inline" || !clips(e) || e.scrollWidth <= e.clientWidth + 1
+            || e.closest("mjx-assistive-mml")) continue;
+        const edge = e.getBoundingClientRect().left + e.clientLeft + e.clientWidth - e.scrollLeft;
+        let widest = edge;
+        for (const d of e.querySelectorAll("*")) {
+            if (d.closest("mjx-assistive-mml")) continue;
+            const dr = d.getBoundingClientRect();
+            if (dr.width > 0) widest = Math.max(widest, dr.right);
+        }
+        const hidden = Math.round(widest - edge);
+        if (hidden <= 3) continue;  // an italic letter's overhang
+        if (s.overflowX === "hidden") out.push([kind(e), `clipped (${hidden} px) ${name(e)}`,
+                                                Math.round(r.width) + hidden]);
+        else scrolling.push([kind(e), name(e), e.clientWidth + hidden, e.clientWidth]);
+    }
+    const images = [...article.querySelectorAll("img")].map(img => {
         const intended = img.getAttribute("width") ? parseFloat(img.getAttribute("width"))
                                                   : img.naturalWidth;
         return [img.getAttribute("src"), intended];
-    }).filter(([src, width]) => width > column + 1);
-    const outputs = [...article.querySelectorAll("div.cell_output")].map((output, k) => {
-        const parts = [output, ...output.querySelectorAll("pre, mjx-container, table, .output")];
-        const widest = Math.max(...parts.map(e => Math.max(e.scrollWidth,
-                                                           e.getBoundingClientRect().width)));
-        const text = (output.innerText || "").trim().split("\\n")[0].slice(0, 60);
-        return [k, Math.round(widest), text];
-    }).filter(([k, width]) => width > column + 1);
-    return [Math.round(column), figures, outputs];
+    }).filter(([src, width]) => width > right - left + 1);
+    const page = document.documentElement.scrollWidth > innerWidth + 1;
+    return {column: Math.round(right - left), out, scrolling, images, page};
 }"""
 
 
-def check_layout(browser, pages):
-    """Figures and code cell outputs no wider than the content column, at 1280 px and 390 px."""
+def check_layout(page, page_name, width):
+    """At 1280 px nothing wider than the column, and no code cell, output or table that
+    scrolls sideways (an equation too long for any column, or a code block of the prose, may:
+    they are listed); at every width the page itself never scrolls sideways, and equations
+    and tables stay in the column (scrolling inside their own box)."""
+    layout = page.evaluate(MEASURE_LAYOUT)
+    where, column = f"{page_name} at {width} px", layout["column"]
+    problems, counts, notes = [], {}, []
+    if layout["page"]:
+        problems.append(f"{where}: the page scrolls sideways")
+    for kind, name, w in layout["out"]:
+        if width >= 1280 or kind in ("equation", "table"):
+            problems.append(f"{where}: {name} is {w} px wide, wider than the column ({column} px)")
+        else:
+            key = "wider than the column: " + kind
+            counts[key] = counts.get(key, 0) + 1
+    for kind, name, full, shown in layout["scrolling"]:
+        counts[kind] = counts.get(kind, 0) + 1
+        if width >= 1280 and kind in ("equation", "code block"):
+            notes.append(f"{where}: {kind} {name} scrolls sideways ({full} px in {shown} px)")
+        elif width >= 1280:
+            problems.append(f"{where}: {kind} {name} scrolls sideways ({full} px in {shown} px)")
+    if width >= 1280:
+        problems += [f"{where}: figure {src[:80]} is {w:.0f} px wide, the column {column} px"
+                     for src, w in layout["images"]]
+    return problems, counts, notes
+
+
+def axe_source(cache):
+    """axe-core's browser build, installed from the npm registry into `cache` once."""
+    script = os.path.join(cache, "node_modules", "axe-core", "axe.min.js")
+    if not os.path.exists(script):
+        npm = shutil.which("npm")
+        if npm is None:
+            sys.exit("site check: npm is needed to fetch axe-core (apt-get install npm)")
+        subprocess.run([npm, "install", "--no-save", "--no-audit", "--no-fund", "--prefix", cache,
+                        f"axe-core@{AXE_VERSION}"], check=True, capture_output=True, timeout=300)
+    return script
+
+
+AXE_RUN = """async () => {
+    const result = await axe.run(document, {resultTypes: ["violations"]});
+    return result.violations.map(v => [v.id, v.impact, v.nodes.length,
+        v.nodes.slice(0, 2).map(n => n.target.join(" ")).join(", ")]);
+}"""
+
+
+def check_accessibility(page, page_name, axe):
+    page.add_script_tag(path=axe)
+    violations = page.evaluate(AXE_RUN)
+    counts = {}
+    for rule, impact, nodes, _ in violations:
+        counts[impact] = counts.get(impact, 0) + nodes
+    problems = [f"{page_name}: axe {impact} {rule} on {nodes} elements ({where})"
+                for rule, impact, nodes, where in violations if impact in AXE_FAILING]
+    return problems, counts
+
+
+def check_search(chromium, url, word="screw"):
+    """The search button opens the search box, and a search finds pages (on search.html)."""
+    page = chromium.new_page(viewport={"width": 1280, "height": 900})
+    page.goto(url, wait_until="load")
+    page.locator(".bd-header-article .search-button").click()
+    box = page.locator("#pst-search-dialog input[name=q]")
+    box.fill(word)
+    box.press("Enter")
+    page.wait_for_load_state("load")
+    try:
+        page.wait_for_selector("#search-results li, ul.search li", timeout=15000)
+        found = page.locator("#search-results li, ul.search li").count()
+    except Exception:  # Playwright's TimeoutError: no result came
+        found = 0
+    page.close()
+    return [] if found else [f"searching for {word!r} from {url} found nothing"]
+
+
+def cold_weight(chromium, url):
+    """Bytes a first visit downloads (empty cache): the page and all it loads, read to its end."""
+    context = chromium.new_context(viewport={"width": 1280, "height": 900})
+    page = context.new_page()
+    requests = []
+    page.on("requestfinished", lambda request: requests.append(request))
+    page.goto(url, wait_until="networkidle")
+    page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+    page.wait_for_load_state("networkidle")
+    page.wait_for_timeout(300)
+    size = sum(request.sizes()["responseBodySize"] for request in list(requests))
+    context.close()
+    return size
+
+
+def check_reader(browser, origin, pages, cache):
+    """Every page at every width: navigation, layout and (at 1280 px) axe; and its cold weight."""
     from playwright.sync_api import sync_playwright
 
-    problems = []
+    axe = axe_source(cache)
+    problems, notes, layout_counts, axe_counts, weights = [], [], {}, {}, {}
     flags = [f for f in CHROMIUM_FLAGS if f != "--headless"]
     with sync_playwright() as p:
         chromium = p.chromium.launch(executable_path=browser, args=flags)
-        for width, fail in ((1280, True), (390, False)):
-            context = chromium.new_context(viewport={"width": width, "height": 900})
-            wide_figures = wide_outputs = 0
-            for page_name, url in pages:
+        for width in WIDTHS:
+            phone = width < 600
+            context = chromium.new_context(viewport={"width": width, "height": 900},
+                                           has_touch=phone, is_mobile=phone)
+            for page_name in pages:
                 page = context.new_page()
-                page.goto(url, wait_until="load")
-                page.wait_for_timeout(300)  # MathJax typesets after load
-                column, figures, outputs = page.evaluate(MEASURE_LAYOUT)
-                if fail:
-                    problems += [f"{page_name}: figure {src[:80]} is {w:.0f} px wide, the "
-                                 f"column {column} px" for src, w in figures]
-                    problems += [f"{page_name}: code cell output {k + 1} is {w} px wide, the "
-                                 f"column {column} px: {text!r}" for k, w, text in outputs]
-                else:
-                    wide_figures += len(figures)
-                    wide_outputs += len(outputs)
+                page.goto(origin + page_name, wait_until="load")
+                page.wait_for_timeout(500)  # MathJax typesets after load
+                found, counts, noted = check_layout(page, page_name, width)
+                problems += found
+                notes += noted
+                for kind, count in counts.items():
+                    layout_counts[(width, kind)] = layout_counts.get((width, kind), 0) + count
+                problems += check_navigation(page, page_name, width)
+                if width == 1280:
+                    page.reload(wait_until="load")
+                    page.wait_for_timeout(500)
+                    found, counts = check_accessibility(page, page_name, axe)
+                    problems += found
+                    axe_counts[page_name] = counts
                 page.close()
-            if not fail:
-                print(f"at {width} px: {wide_figures} figures (shown shrunk) and {wide_outputs} "
-                      "code outputs (scrolled sideways) wider than the column; not a failure")
             context.close()
+        for page_name in pages:
+            weights[page_name] = cold_weight(chromium, origin + page_name)
+        problems += check_search(chromium, origin + pages[0])
         chromium.close()
+    for width in WIDTHS:
+        kinds = {kind: n for (w, kind), n in sorted(layout_counts.items()) if w == width}
+        print(f"at {width} px, boxes that scroll sideways (by kind): {kinds or 'none'}")
+    for note in notes:
+        print("  " + note)
+    print("axe-core", AXE_VERSION, "violations (elements) by impact, and cold page weight:")
+    for page_name in pages:
+        counts = ", ".join(f"{k} {v}" for k, v in sorted(axe_counts.get(page_name, {}).items()))
+        print(f"  {page_name}: {weights[page_name] / 1e6:.2f} MB; axe: {counts or 'none'}")
+        if weights[page_name] > PAGE_LIMIT_MB * 1e6:
+            problems.append(f"{page_name}: {weights[page_name] / 1e6:.2f} MB cold, over the "
+                            f"{PAGE_LIMIT_MB} MB limit")
     return problems
+
 
 # In the page: move control k of figure `id` to another value of its grid, return
 # [changed?, milliseconds, label]. A figure's drawing is its canvas pixels or its frame's HTML.
@@ -353,7 +632,7 @@ def main(root):
     browser = find_chromium()
     server = serve(root)
     origin = f"http://127.0.0.1:{server.server_address[1]}/"
-    problems, anchors = [], {}
+    problems, anchors = check_toc_built(root), {}
     with tempfile.TemporaryDirectory() as tmp:
         netlog = os.path.join(tmp, "netlog.json")
         for page in pages:
@@ -361,6 +640,8 @@ def main(root):
                 static = parse(f.read())
             problems += check_links(root, page, static, anchors)
             problems += check_placeholder_links(page, static)
+            problems += check_alt_texts(page, static)
+            problems += check_first_cell(root, page)
             with open(os.path.join(root, page), encoding="utf-8") as f:
                 problems += check_chapter_shape(page, f.read())
             dom = parse(chromium(browser, origin + page, os.path.join(tmp, "profile"),
@@ -383,7 +664,8 @@ def main(root):
                  f"--screenshot={shot}", "--window-size=1280,1600", "--hide-scrollbars")
         print(f"screenshot of {shot_page}: {shot}")
         problems += check_interactive(browser, origin, pages)
-        problems += check_layout(browser, [(page, origin + page) for page in pages])
+        problems += check_reader(browser, origin, pages, os.path.join(os.path.dirname(root),
+                                                                       ".site-check"))
     server.shutdown()
     problems += [f"the server had no answer for {request}" for request in sorted(QuietHandler.missing)]
     size = sum(os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(root) for f in fs)

@@ -7,6 +7,10 @@ content column (688 px, at most ``COLUMN_WIDTH`` inches at ``DPI``) with text of
 >>> draw_frame(ax, np.eye(4), label="0")
 >>> plt.close(ax.figure)
 """
+import base64
+import hashlib
+import html as html_module
+import json
 import re
 
 import matplotlib.pyplot as plt
@@ -262,27 +266,97 @@ def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0
     return line
 
 
-# matplotlib's player draws its buttons with Font Awesome from a CDN: the book must work offline
-_PLAYER_ICONS = {"fa fa-minus": "\u2212", "fa fa-fast-backward": "|\u25c0", "fa fa-step-backward": "\u25c1|",
-                 "fa fa-play fa-flip-horizontal": "\u25c0", "fa fa-pause": "\u275a\u275a",
-                 "fa fa-play": "\u25b6", "fa fa-step-forward": "|\u25b7", "fa fa-fast-forward": "\u25b6|",
-                 "fa fa-plus": "+"}
+# The player of ``animation_html``: its frames are loaded one at a time, when shown (the book
+# turns them into image files, book/_ext/light_pages.py), so a page does not download a whole
+# animation before its reader presses play.
+_PLAYER = """<figure class="screwkit-animation" id="{id}">
+<img src="{first}" alt="{alt}" width="{width}" height="{height}" data-alt="{alt_source}"
+     style="max-width: 100%; height: auto">
+<div class="screwkit-animation-controls" style="display: flex; gap: 0.5em; align-items: center">
+<button type="button" aria-label="Play the animation" style="min-width: 2.5em">\u25b6</button>
+<input type="range" min="0" max="{last}" step="1" value="0" aria-label="{label}"
+       aria-valuetext="frame 1 of {count}" style="flex: 1">
+<output aria-hidden="true" style="min-width: 4.5em; font-variant-numeric: tabular-nums">1 / {count}</output>
+</div>
+<script type="application/json" class="screwkit-animation-frames">{frames}</script>
+<script>
+(function () {{
+  var root = document.getElementById("{id}"), img = root.querySelector("img");
+  var slider = root.querySelector("input"), button = root.querySelector("button");
+  var readout = root.querySelector("output");
+  var frames = [img.getAttribute("src")].concat(JSON.parse(root.querySelector(
+      "script.screwkit-animation-frames").textContent));
+  var current = 0, timer = null;
+  function show(k) {{
+    current = k;
+    img.src = frames[k];
+    slider.value = k;
+    slider.setAttribute("aria-valuetext", "frame " + (k + 1) + " of " + frames.length);
+    readout.textContent = (k + 1) + " / " + frames.length;
+    new Image().src = frames[(k + 1) % frames.length];  // the next one, ahead of time
+  }}
+  function stop() {{
+    clearInterval(timer); timer = null;
+    button.textContent = "\u25b6"; button.setAttribute("aria-label", "Play the animation");
+  }}
+  button.addEventListener("click", function () {{
+    if (timer !== null) {{ stop(); return; }}
+    button.textContent = "\u275a\u275a"; button.setAttribute("aria-label", "Pause the animation");
+    timer = setInterval(function () {{ show((current + 1) % frames.length); }}, {interval});
+  }});
+  slider.addEventListener("input", function () {{ stop(); show(+slider.value); }});
+}})();
+</script>
+</figure>"""
 
 
-def animation_html(animation):
-    """A matplotlib animation as self-contained JavaScript HTML (no request leaves the page).
+def _describe_figure(figure, count):
+    """A sentence on what an animated figure shows, from its axes' titles, labels and legends."""
+    panels = []
+    for ax in figure.get_axes():
+        words = ax.get_title() or (f"{ax.get_ylabel()} against {ax.get_xlabel()}"
+                                   if ax.get_xlabel() and ax.get_ylabel() else "")
+        legend = ax.get_legend()
+        if legend is not None:
+            names = ", ".join(t.get_text() for t in legend.get_texts())
+            words = f"{words} ({names})" if words else names
+        if words:
+            panels.append(words)
+    what = "; ".join(panels) if panels else "a matplotlib figure"
+    what = re.sub(r"[$\\{}^]", "", what.replace("$^2$", "\u00b2").replace("$^3$", "\u00b3"))
+    return f"An animation of {count} frames: {what}."
 
-    Like ``animation.to_jshtml()``, with the player's Font Awesome stylesheet (a CDN link) removed
-    and its icons replaced by Unicode symbols. Display it with ``IPython.display.HTML``.
+
+def animation_html(animation, alt=None, label="Frame of the animation"):
+    """A matplotlib animation as self-contained HTML with a small player (no request leaves the page).
+
+    The frames are rendered by matplotlib (as ``animation.to_jshtml()`` does) and embedded as
+    PNG data; the page shows one at a time, with a play/pause button and a slider. ``alt`` is
+    the image's text for readers who do not see it (default: a sentence built from the axes'
+    titles, labels and legends; the book replaces it by the cell's ``mystnb.image.alt``);
+    ``label`` names the slider. The output depends only on the frames, so it is the same at
+    every run. Display it with ``IPython.display.HTML``.
     """
     from matplotlib.animation import Animation
 
     if not isinstance(animation, Animation):
         raise TypeError(
             f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}")
-    html = re.sub(r'<link rel="stylesheet"\s+href="[^"]*font-awesome[^"]*">', "", animation.to_jshtml())
-    for icon, text in _PLAYER_ICONS.items():
-        html = html.replace(f'<i class="{icon}"></i>', text)
-    if "http://" in html or "https://" in html:
-        raise RuntimeError("the animation's HTML still refers to an outside address")
-    return html
+    for value, name in ((alt, "alt"), (label, "label")):
+        if value is not None and not (isinstance(value, str) and value.strip()):
+            raise TypeError(f"{name} must be a non-empty string, got {describe(value)}")
+    exported = animation.to_jshtml()
+    frames = [uri.replace("\\\n", "") for uri in re.findall(
+        r'frames\[\d+\] = "(data:image/\w+;base64,[^"]*)"', exported, re.S)]
+    if not frames:
+        raise RuntimeError("matplotlib exported the animation without frames")
+    png = base64.b64decode(frames[0].split(",", 1)[1][:48])  # the header: width, height
+    width, height = int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
+    count = len(frames)
+    text = alt if alt is not None else _describe_figure(animation._fig, count)
+    digest = hashlib.sha256("".join(frames).encode()).hexdigest()[:12]
+    return _PLAYER.format(
+        id=f"screwkit-animation-{digest}", first=frames[0], width=width, height=height,
+        alt=html_module.escape(text, quote=True), alt_source="given" if alt else "auto",
+        label=html_module.escape(label, quote=True), last=count - 1, count=count,
+        frames=json.dumps(frames[1:]), interval=int(round(animation._interval)))

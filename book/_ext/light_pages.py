@@ -1,0 +1,218 @@
+"""Light pages: what every page of the book loads, cut to what it uses.
+
+pydata-sphinx-theme puts Font Awesome on every page twice: as web fonts with their CSS
+classes (``fa-solid-900.woff2`` and friends, from its stylesheet), which draw every icon
+of the book, and as a 1.49 MB script, ``fontawesome.js``, which redraws the same icons
+as SVG. When the build finishes, the script's tag is taken out of every page and the
+script out of the build: the icons stay, drawn by the fonts. So are the tags of Sphinx's
+search scripts and its index (0.13 MB), which the theme puts on every page for a
+search-as-you-type that is off: the search page loads them itself.
+
+The fonts themselves are cut to the glyphs the book shows (fontTools, which Matplotlib
+already installs): every ``fa-NAME`` class written in a page or a script of the build,
+and every icon the theme's stylesheet draws by code point (admonitions, the back-to-top
+arrow, ...). The subsets are written as WOFF under new names and the stylesheet pointed
+at them; the full fonts are removed, and so are the stylesheet's rules for the icons not
+shown. 274 kB of fonts become 8 kB, and the theme's stylesheet loses some 100 kB.
+
+Images inside HTML outputs (the frames of ``sk.plotting.animation_html`` and of the
+stepped figures of ``sk.viewer``) are PNG data in the notebook, so that it needs no
+file; in the book each becomes a file of ``_images/`` (named by its hash), which the
+browser fetches only when the frame is shown, and caches. The redundancy chapter's
+animation was 1.7 MB of HTML.
+
+Alt texts: a code cell's ``mystnb: image: alt:`` metadata is myst-nb's alt text for the
+cell's image outputs; the same text is given here to the images of the cell's HTML
+outputs whose alt text says nothing (a stepped figure's "precomputed figure", an
+animation's alt made from its axes), so that every figure of a chapter is described in
+the chapter's words.
+"""
+
+import base64
+import glob
+import hashlib
+import html
+import io
+import os
+import posixpath
+import re
+
+from docutils import nodes
+from fontTools import subset
+from fontTools.ttLib import TTFont
+
+SCRIPT_TAG = re.compile(
+    r'\s*<script defer src="[^"]*_static/scripts/fontawesome\.js[^"]*"></script>'
+)
+# pydata-sphinx-theme loads Sphinx's search on every page for its search-as-you-type,
+# which
+# is off unless the theme option search_as_you_type is set: then only search.html needs
+# it.
+SEARCH_TAGS = re.compile(
+    r'\s*<script src="[^"]*(?:_static/searchtools\.js|_static/language_data\.js'
+    r'|searchindex\.js)"></script>'
+)
+FONTS = "vendor/fontawesome/webfonts"
+# .fa-bars:before,.fa-navicon:before{content:"\f0c9"}
+ICON_RULE = re.compile(
+    r'((?:\.fa-[\w-]+:{1,2}before,?)+)\{content:"\\?([0-9a-f]{1,5})"\}'
+)
+ICON_CLASS = re.compile(r"\bfa-([a-z0-9-]+)")
+CODE_POINT = re.compile(r'"\\(f[0-9a-f]{3}|e[0-9a-f]{3})"')
+FONT_FACE = re.compile(
+    r"url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.(woff2|ttf)\)"
+    r' format\("(woff2|truetype)"\)'
+)
+
+
+def drop_script(outdir, search_everywhere=False):
+    for page in glob.glob(os.path.join(outdir, "**", "*.html"), recursive=True):
+        with open(page, encoding="utf-8") as f:
+            html = f.read()
+        lighter = SCRIPT_TAG.sub("", html)
+        if not search_everywhere and os.path.basename(page) != "search.html":
+            lighter = SEARCH_TAGS.sub("", lighter)
+        if lighter != html:
+            with open(page, "w", encoding="utf-8") as f:
+                f.write(lighter)
+    script = os.path.join(outdir, "_static", "scripts", "fontawesome.js")
+    if os.path.exists(script):
+        os.remove(script)
+
+
+def used_code_points(outdir, css):
+    """The code points of the icons the book can show."""
+    classes = set()
+    for pattern in ("**/*.html", "_static/**/*.js"):
+        for path in glob.glob(os.path.join(outdir, pattern), recursive=True):
+            with open(path, encoding="utf-8", errors="replace") as f:
+                classes.update(ICON_CLASS.findall(f.read()))
+    points = set()
+    for selectors, point in ICON_RULE.findall(css):
+        if any(name in classes for name in re.findall(r"\.fa-([\w-]+):", selectors)):
+            points.add(int(point, 16))
+    without_icon_rules = ICON_RULE.sub("", css)  # the theme's own uses of the font
+    points.update(int(point, 16) for point in CODE_POINT.findall(without_icon_rules))
+    return points
+
+
+def subset_fonts(outdir):
+    static = os.path.join(outdir, "_static")
+    stylesheet = os.path.join(static, "styles", "pydata-sphinx-theme.css")
+    if not os.path.exists(stylesheet):
+        return
+    with open(stylesheet, encoding="utf-8") as f:
+        css = f.read()
+    points = used_code_points(outdir, css)
+    fonts = os.path.join(static, FONTS)
+    for name in {m[0] for m in FONT_FACE.findall(css)}:
+        source = os.path.join(fonts, f"{name}.ttf")  # not the .woff2: that needs brotli
+        if not os.path.exists(source):
+            continue
+        font = TTFont(source)
+        options = subset.Options()
+        options.flavor = "woff"  # WOFF2 would need the brotli package
+        options.layout_features = ["*"]
+        subsetter = subset.Subsetter(options)
+        subsetter.populate(unicodes=points & set(font.getBestCmap()))
+        subsetter.subset(font)
+        buffer = io.BytesIO()
+        font.save(buffer)
+        with open(os.path.join(fonts, f"{name}-book.woff"), "wb") as f:
+            f.write(buffer.getvalue())
+        for extension in ("woff2", "ttf"):
+            if os.path.exists(os.path.join(fonts, f"{name}.{extension}")):
+                os.remove(os.path.join(fonts, f"{name}.{extension}"))
+    # The stylesheet's rule for each of Font Awesome's ~1800 icon classes: kept only for
+    # the
+    # icons the book shows (the others would have no glyph in the subset fonts anyway).
+    css = ICON_RULE.sub(
+        lambda m: m.group(0) if int(m.group(2), 16) in points else "", css
+    )
+    css = re.sub(
+        r"src:url\(\.\./vendor/fontawesome/webfonts/(fa-[\w-]+)\.woff2\) "
+        r"format\(\"woff2\"\),"
+        r"url\(\.\./vendor/fontawesome/webfonts/\1\.ttf\) format\(\"truetype\"\)",
+        r'src:url(../vendor/fontawesome/webfonts/\1-book.woff) format("woff")',
+        css,
+    )
+    with open(stylesheet, "w", encoding="utf-8") as f:
+        f.write(css)
+
+
+DATA_IMAGE = re.compile(r"data:image/(png|jpeg|gif);base64,([A-Za-z0-9+/=]{2000,})")
+# An alt text that says nothing (a stepped figure's, an animation's data-alt="auto"),
+# inside HTML or inside the JSON string of a viewer's model (quotes escaped).
+BLAND_ALT = re.compile(
+    r'alt=(\\?")(precomputed figure)\1'
+    r'|alt=(\\?")([^"\\]*)\3(\s+[^>]*?data-alt=\3auto\3)'
+)
+
+
+def cell_alt(cell):
+    image = (cell.get("cell_metadata") or {}).get("mystnb", {}).get("image", {})
+    return image.get("alt") if isinstance(image, dict) else None
+
+
+def replace_raw(node, text):
+    node.replace_self(nodes.raw("", text, format="html"))
+
+
+def describe_html_images(app, doctree, docname):
+    """The cell's alt text for the bland alt texts of its HTML outputs (see above)."""
+    for cell in doctree.findall(nodes.container):
+        alt = cell.get("nb_element") == "cell_code" and cell_alt(cell)
+        if not alt:
+            continue
+        text = html.escape(" ".join(alt.split()), quote=True)
+        for raw in list(cell.findall(nodes.raw)):
+            new = BLAND_ALT.sub(
+                lambda m: (
+                    f"alt={m.group(1)}{text}{m.group(1)}"
+                    if m.group(2)
+                    else f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"
+                ),
+                raw.astext(),
+            )
+            if new != raw.astext():
+                replace_raw(raw, new)
+
+
+def images_to_files(app, doctree, docname):
+    """PNG data inside HTML outputs become files of _images/ (see above)."""
+    if app.builder.format != "html":
+        return
+    folder = os.path.join(app.outdir, "_images")
+    prefix = posixpath.relpath("_images", posixpath.dirname(docname) or ".")
+
+    def to_file(match):
+        data = base64.b64decode(match.group(2))
+        name = f"{hashlib.sha256(data).hexdigest()}.{match.group(1)}"
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, name)
+        if not os.path.exists(path):
+            with open(path, "wb") as f:
+                f.write(data)
+        return f"{prefix}/{name}"
+
+    for raw in list(doctree.findall(nodes.raw)):
+        if "html" in raw.get("format", "") and "data:image/" in raw.astext():
+            new = DATA_IMAGE.sub(to_file, raw.astext())
+            if new != raw.astext():
+                replace_raw(raw, new)
+
+
+def lighten(app, exception):
+    if exception is None and app.builder.format == "html":
+        options = app.config.html_theme_options or {}
+        drop_script(
+            app.outdir, search_everywhere=bool(options.get("search_as_you_type"))
+        )
+        subset_fonts(app.outdir)
+
+
+def setup(app):
+    app.connect("doctree-resolved", describe_html_images)
+    app.connect("doctree-resolved", images_to_files)
+    app.connect("build-finished", lighten)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}

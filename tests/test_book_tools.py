@@ -1,0 +1,221 @@
+"""The book's own tools: the API page's plan, the light pages' rewrites, the site
+check's rules."""
+
+import base64
+import importlib.util
+import json
+import pathlib
+import sys
+import types
+
+# The book's extensions need these: a course test, not run with screwkit alone.
+import docutils  # noqa: F401
+import fontTools  # noqa: F401
+import matplotlib
+import sphinx  # noqa: F401
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import pytest  # noqa: E402
+from matplotlib import animation  # noqa: E402
+
+import screwkit as sk  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def load(path, name):
+    spec = importlib.util.spec_from_file_location(name, ROOT / path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+site_check = load(".ci/site_check.py", "site_check")
+api_reference = load("book/_ext/api_reference.py", "api_reference")
+light_pages = load("book/_ext/light_pages.py", "light_pages")
+
+
+# ---- the API page: one entry for every public name, by rule
+# ---------------------------------
+
+
+def test_every_public_name_has_an_entry_and_one_full_description():
+    sections = api_reference.plan(sk)
+    targets = [target for _, _, entries in sections for _, target, _ in entries]
+    expected = {
+        f"screwkit.{name}"
+        for name in sk.__all__
+        if not isinstance(getattr(sk, name), types.ModuleType)
+    }
+    for module in api_reference.public_modules(sk):
+        expected |= {
+            f"{module.__name__}.{name}" for name in api_reference.public_names(module)
+        }
+    assert set(targets) == expected and len(targets) == len(set(targets))
+    homes = [
+        alias or target for _, _, entries in sections for _, target, alias in entries
+    ]
+    assert set(homes) <= set(targets)  # every alias points at an entry of the page
+
+
+def test_an_object_is_described_where_it_is_defined():
+    homes = api_reference.documented_homes(sk)
+    assert homes["screwkit.Chain"] == "screwkit.chains.Chain"
+    assert homes["screwkit.ik.subproblem1"] == "screwkit.subproblems.subproblem1"
+    assert (
+        homes["screwkit.subproblems.subproblem1"] == "screwkit.subproblems.subproblem1"
+    )
+
+
+def test_the_modules_are_found_on_disk():
+    names = {module.__name__ for module in api_reference.public_modules(sk)}
+    on_disk = {
+        f"screwkit.{p.stem}"
+        for p in (ROOT / "screwkit").glob("*.py")
+        if not p.stem.startswith("_")
+    }
+    assert names == on_disk
+
+
+def test_docstring_text_is_made_valid_restructured_text():
+    lines = [
+        "lambda = |V|^2 / 2, ``a | b`` stays",
+        "point : the point",
+        "    more words",
+        "upto : k",
+    ]
+    api_reference.plain_text(None, "function", "f", None, {}, lines)
+    assert lines == [
+        "lambda = \\|V\\|^2 / 2, ``a | b`` stays",
+        "point : the point",
+        "    more words",
+        "",
+        "upto : k",
+    ]
+
+
+# ---- light pages: frames as files, the cell's alt text
+# -------------------------------------
+
+
+def test_bland_alt_texts_are_found_and_given_ones_kept():
+    def sub(text):
+        return light_pages.BLAND_ALT.sub(
+            lambda m: (
+                f"alt={m.group(1)}NEW{m.group(1)}"
+                if m.group(2)
+                else f"alt={m.group(3)}NEW{m.group(3)}{m.group(5)}"
+            ),
+            text,
+        )
+
+    assert sub('<img alt="precomputed figure" src="x">') == '<img alt="NEW" src="x">'
+    assert (
+        sub('["<img alt=\\"precomputed figure\\" src=\\"x\\">"]')
+        == '["<img alt=\\"NEW\\" src=\\"x\\">"]'
+    )
+    assert (
+        sub('<img src="d" alt="An animation." width="1" data-alt="auto">')
+        == '<img src="d" alt="NEW" width="1" data-alt="auto">'
+    )
+    given = '<img src="d" alt="The arm." width="1" data-alt="given">'
+    assert sub(given) == given
+
+
+def a_movie(frames=4):
+    fig, ax = plt.subplots(figsize=(2, 1.5), dpi=40)
+    (line,) = ax.plot([0, 1], [0, 1], label="arm")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("w (m$^2$)")
+    ax.legend()
+
+    def update(k):
+        line.set_data([0, 1], [0, k])
+        return (line,)
+
+    movie = animation.FuncAnimation(fig, update, frames=frames, interval=100)
+    return fig, movie
+
+
+def test_animation_player_is_deterministic_labelled_and_lazy():
+    fig, movie = a_movie(4)
+    first, second = sk.plotting.animation_html(movie), sk.plotting.animation_html(movie)
+    plt.close(fig)
+    assert first == second  # no random id: the same frames give the same output
+    assert 'aria-label="Frame of the animation"' in first
+    assert 'alt="An animation of 4 frames: w (m\u00b2) against t (s) (arm)."' in first
+    assert first.count("data:image/png;base64,") == 4
+    frames = json.loads(
+        first.split('class="screwkit-animation-frames">')[1].split("</script>")[0]
+    )
+    assert len(frames) == 3  # the others: the first frame is the image itself
+    png = base64.b64decode(frames[0].split(",", 1)[1])
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_animation_alt_and_label_are_checked():
+    fig, movie = a_movie(2)
+    given = sk.plotting.animation_html(movie, alt="The arm climbs.", label="Time step")
+    with pytest.raises(TypeError, match="alt"):
+        sk.plotting.animation_html(movie, alt="  ")
+    plt.close(fig)
+    assert 'alt="The arm climbs."' in given and 'data-alt="given"' in given
+    assert 'aria-label="Time step"' in given
+
+
+# ---- the site check's static rules
+# ----------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "alt",
+    [
+        None,
+        "",
+        "precomputed figure",
+        "../_images/ab12.png",
+        "figure.png",
+        "data:image/png;base64,AAAA",
+    ],
+)
+def test_an_alt_text_that_says_nothing_fails(alt):
+    attribute = "" if alt is None else f' alt="{alt}"'
+    parser = site_check.parse(f'<img src="../_images/a.png"{attribute}>')
+    assert len(site_check.check_alt_texts("notebooks/a.html", parser)) == 1
+
+
+def test_an_alt_text_that_describes_passes():
+    parser = site_check.parse(
+        '<img src="../_images/a.png" alt="The PUMA 560 at q = 0.">'
+    )
+    assert site_check.check_alt_texts("notebooks/a.html", parser) == []
+
+
+def write_notebook(root, page, first_source):
+    path = pathlib.Path(root, "_sources", page.replace(".html", ".ipynb"))
+    path.parent.mkdir(parents=True)
+    cells = [
+        {"cell_type": "markdown", "source": ["# A chapter"]},
+        {"cell_type": "code", "source": first_source},
+    ]
+    path.write_text(json.dumps({"cells": cells}))
+
+
+def test_a_chapter_whose_first_cell_installs_screwkit_passes(tmp_path):
+    write_notebook(
+        tmp_path,
+        "notebooks/a.html",
+        [
+            'if importlib.util.find_spec("screwkit") is None:\n',
+            '    %pip install --quiet "git+https://github.com/screwkit/x"',
+        ],
+    )
+    assert site_check.check_first_cell(str(tmp_path), "notebooks/a.html") == []
+
+
+def test_a_chapter_without_the_install_cell_fails(tmp_path):
+    write_notebook(tmp_path, "notebooks/a.html", ["import screwkit as sk"])
+    assert len(site_check.check_first_cell(str(tmp_path), "notebooks/a.html")) == 1
+    assert site_check.check_first_cell(str(tmp_path), "book/intro.html") == []
