@@ -29,7 +29,10 @@ import random
 import sympy as sp
 from sympy import GF, QQ, ZZ
 from sympy.ntheory import sqrt_mod
+from sympy.ntheory.modular import crt
+from sympy.polys import galoistools as _gf
 from sympy.polys.matrices import DomainMatrix
+from sympy.polys.numberfields import primitive_element
 
 _TRIG = (sp.sin, sp.cos, sp.tan)
 _TRANSCENDENTAL = (sp.pi, sp.E)
@@ -38,14 +41,71 @@ _SEED = 20201
 _PRIME = 2**61 - 1  # a Mersenne prime: arithmetic modulo it is exact and fast
 
 
-def entries(matrix):
-    """The entries of a SymPy matrix as a flat list, row by row.
+class _SymPy:
+    """The one place that touches SymPy internals (private attributes, raw constructors,
+    the low-level finite-field routines). A SymPy release that changes them breaks here,
+    and ``tests/test_exact.py`` tests each function on its own."""
 
-    SymPy's ``flat()`` and iteration convert entry by entry; a matrix of expressions holds
-    them as they are in its EXRAW representation, read here in one call.
-    """
-    rep = matrix._rep
-    return rep.to_list_flat() if rep.domain.is_EXRAW else matrix.flat()
+    @staticmethod
+    def flat_entries(matrix):
+        """The entries of a SymPy matrix, row by row, read from its EXRAW store in one call
+        (``flat()`` converts entry by entry)."""
+        rep = matrix._rep
+        return rep.to_list_flat() if rep.domain.is_EXRAW else matrix.flat()
+
+    @staticmethod
+    def fraction_field(symbols):
+        """QQ(symbols) and the ring ZZ[symbols] of its numerators."""
+        K = QQ.frac_field(*symbols)
+        return K, K.field.ring.clone(domain=ZZ)
+
+    @staticmethod
+    def field_polynomial(K, terms):
+        """The element of K = QQ(symbols) with the polynomial {exponents: QQ} as numerator
+        and 1 as denominator, built without a gcd."""
+        return K.field.raw_new(K.field.ring.dtype(terms))
+
+    @staticmethod
+    def field_fraction(K, numerator, denominator):
+        """The element numerator / denominator of K from coprime ZZ[symbols] polynomials."""
+        ring = K.field.ring
+        return K.field.raw_new(numerator.set_ring(ring), denominator.set_ring(ring))
+
+    @staticmethod
+    def ring_polynomial(ring, terms):
+        """The polynomial {exponents: int} of ``ring``."""
+        return ring.dtype(terms)
+
+    @staticmethod
+    def number_field(atoms):
+        """Q(atoms) by a primitive element: its minimal polynomial (integer coefficients,
+        highest first) and each atom as a polynomial in it (rational coefficients)."""
+        minpoly, _, reps = primitive_element(atoms, ex=True, polys=True)
+        minpoly = [sp.Rational(c) for c in minpoly.all_coeffs()]
+        scale = math.lcm(*(int(c.q) for c in minpoly))
+        minpoly = [int(c * scale) for c in minpoly]
+        reps = [[sp.Rational(int(c.numerator), int(c.denominator)) for c in rep] for rep in reps]
+        return minpoly, reps
+
+    @staticmethod
+    def roots_mod(coefficients, prime):
+        """The roots modulo ``prime`` of an integer polynomial (coefficients highest first)."""
+        f = _gf.gf_from_int_poly(coefficients, prime)
+        if len(f) < 2:
+            return []
+        f = _gf.gf_monic(f, prime, ZZ)[1]
+        x = [ZZ(1), ZZ(0)]
+        power = _gf.gf_pow_mod(x, prime, f, prime, ZZ)
+        split = _gf.gf_gcd(_gf.gf_sub(power, x, prime, ZZ), f, prime, ZZ)
+        if len(split) < 2:
+            return []
+        factors = _gf.gf_edf_zassenhaus(split, 1, prime, ZZ)
+        return sorted(int(-factor[1]) % prime for factor in factors)
+
+
+def entries(matrix):
+    """The entries of a SymPy matrix as a flat list, row by row."""
+    return _SymPy.flat_entries(matrix)
 
 
 def _exact_numbers(e):
@@ -58,9 +118,27 @@ def _is_root(e):
     return e.is_Pow and e.base.is_Rational and e.exp.is_Rational and not e.exp.is_Integer
 
 
+def _is_algebraic(e):
+    """True if ``e`` is built from rationals, I and algebraic atoms by +, *, integer powers."""
+    if e.is_Rational or e is sp.I or _is_algebraic_atom(e):
+        return True
+    if e.is_Add or e.is_Mul or e.is_Pow and e.exp.is_Integer:
+        return all(_is_algebraic(a) for a in e.args)
+    return False
+
+
+def _is_algebraic_atom(e):
+    """A root of an algebraic number (sqrt(3), sqrt(2 + sqrt(2)), 2**(1/3)) or a polynomial's
+    root given as CRootOf / AlgebraicNumber."""
+    if isinstance(e, (sp.CRootOf, sp.AlgebraicNumber)):
+        return True
+    return bool(e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer and _is_algebraic(e.base))
+
+
 def _scan(e, found, seen):
-    """Collect, in one walk of the tree, the generators of ``e``: trig atoms, numeric roots, and the
-    symbols outside them; other functions go to found['other'], and Floats set found['float']."""
+    """Collect, in one walk of the tree, the generators of ``e``: trig atoms, algebraic atoms,
+    and the symbols outside them; other functions go to found['other'], Floats set
+    found['float']."""
     if e in seen:
         return
     seen.add(e)
@@ -72,9 +150,9 @@ def _scan(e, found, seen):
         found["float"] = True
     elif e in _TRANSCENDENTAL:  # pi and E: generators like symbols (no algebraic relation)
         found["symbols"].add(e)
-    elif e is sp.I or _is_root(e):
+    elif e is sp.I or _is_algebraic_atom(e):
         found["roots"].add(e)
-    elif e.is_Pow and not e.exp.is_Integer:  # a nested or symbolic root: no polynomial generator
+    elif e.is_Pow and not e.exp.is_Integer:  # a root of a symbol, of pi, of sin(x), ...
         found["other"].add(e)
     else:
         if isinstance(e, sp.Function):
@@ -86,8 +164,11 @@ def _scan(e, found, seen):
 class Field:
     """The field QQ(generators) that holds every entry of one problem, and its sample points.
 
-    The generators are the symbols, the sin/cos/tan atoms and the numeric roots themselves
-    (SymPy's polynomial rings accept sin(theta) as a generator), so no substitution is needed.
+    The generators are the symbols, the sin/cos/tan atoms and the algebraic atoms themselves
+    (SymPy's polynomial rings accept sin(theta) as a generator), so no substitution is
+    needed; the relations among them (sin(2a) = 2 sin(a) cos(a), sqrt(2 + sqrt(2)) sqrt(2 -
+    sqrt(2)) = sqrt(2), cos(pi/7) a root of 8x^3 - 4x^2 - 4x + 1, ...) are kept by the sample
+    points (:func:`_sample_points`).
     """
 
     def __init__(self, exprs):
@@ -101,15 +182,19 @@ class Field:
             exprs = [sp.expand_trig(e) for e in exprs]
             found = self._generators(exprs)
         if found["other"]:
-            raise TypeError("screw coordinates may hold numbers, symbols, pi, square roots of rational "
-                            f"numbers and sin, cos, tan of expressions, got {sorted(map(str, found['other']))}")
-        self.symbols = sorted(found["trig"] | found["roots"] | found["symbols"], key=sp.default_sort_key)
+            raise TypeError(
+                "screw coordinates may hold numbers, symbols, pi, algebraic numbers (roots "
+                "of rational numbers, nested roots, CRootOf) and sin, cos, tan of "
+                f"expressions, got {sorted(map(str, found['other']))}"
+            )
+        self.symbols = sorted(found["trig"] | found["roots"] | found["symbols"],
+                              key=sp.default_sort_key)
         # the minors are computed with integer coefficients (see _polynomial_rows)
         self.K, self.integer_ring = _domains(tuple(self.symbols))
         self._cache = {}
         self._polynomials = {}
         self._generator_index = {g: k for k, g in enumerate(self.symbols)}
-        self.prime, self._points = self._sample_points()
+        self.prime, self._points = _sample_points(tuple(self.symbols))
         self.GF = GF(self.prime)
 
     @staticmethod
@@ -132,7 +217,7 @@ class Field:
             if terms is None:
                 value = self.K.from_sympy(plain)
             elif self.symbols:
-                value = self.K.field.raw_new(self.K.field.ring.dtype(terms))
+                value = _SymPy.field_polynomial(self.K, terms)
             else:
                 value = terms.get((), QQ.zero)
             self._cache[e] = value
@@ -191,42 +276,6 @@ class Field:
             return sp.Rational(int(a.numerator) * int(b.denominator), int(a.denominator) * int(b.numerator))
         return sp.factor(self.K.to_sympy(element))
 
-    def _sample_points(self):
-        """A prime, and exact random values of the generators modulo it that keep every relation."""
-        rng = random.Random(_SEED)
-        roots = [g for g in self.symbols if g is sp.I or _is_root(g)]
-        for r in roots:
-            if r is not sp.I and r.exp.q != 2:
-                raise TypeError(f"screw coordinates may use square roots only, got {r}")
-        # sqrt(6) must be sqrt(2) sqrt(3) at the sample points too: every root is built from the
-        # square roots of the primes (and of -1) that divide its radicand, each chosen once
-        radicands = {r: sp.Integer(-1) if r is sp.I else r.base for r in roots}
-        primes = sorted({p for q in radicands.values() for n in (q.p, q.q) for p in sp.factorint(abs(n))}
-                        | ({-1} if any(q < 0 for q in radicands.values()) else set()))
-        prime = _PRIME
-        while True:  # the prime must have the square roots we need
-            prime_roots = {p: _sqrt_mod(p % prime, prime) for p in primes}
-            if all(v is not None for v in prime_roots.values()):
-                break
-            prime = int(sp.prevprime(prime))
-        root_values = {}
-        for r, q in radicands.items():
-            value = _root_of_rational(q, prime_roots, prime)
-            exponent = 1 if r is sp.I else int(r.exp.p)  # r = sqrt(q) ** exponent
-            root_values[r] = pow(value, exponent, prime)
-        angles = sorted({g.args[0] for g in self.symbols if isinstance(g, _TRIG)}, key=sp.default_sort_key)
-        points = []
-        for _ in range(_SAMPLE_POINTS):
-            value = dict(root_values)
-            for angle in angles:
-                t = rng.randrange(2, prime - 1)
-                inverse = pow(1 + t * t, -1, prime)
-                sin, cos = 2 * t * inverse % prime, (1 - t * t) * inverse % prime
-                value[sp.sin(angle)], value[sp.cos(angle)] = sin, cos
-                value[sp.tan(angle)] = sin * pow(cos, -1, prime) % prime if cos else 0
-            points.append([value[g] if g in value else rng.randrange(1, prime) for g in self.symbols])
-        return prime, points
-
     def independent_rows(self, M):
         """Indices of a largest set of rows of M that are independent for generic values."""
         rows, cols = M.shape
@@ -265,6 +314,241 @@ class Field:
 _DOMAINS = {}
 
 
+# ---- sample points: exact values of the generators modulo a prime, every relation kept ----
+#
+# A sample point is a ring homomorphism from the ring the entries generate onto GF(prime):
+# a minor that vanishes there vanishes on the real configuration only if it is zero (with a
+# probability of error below 1e-15 for each transcendental generator, Schwartz-Zippel).
+#
+# * Angles. The argument of every sin/cos/tan is split into units over QQ: pi, 1 (a radian),
+#   square roots of integers, and symbolic terms (theta, pi*theta, sqrt(2)*theta). Each unit
+#   u gets one base angle u/L (L the lcm of its coefficients' denominators), so sin(2/3)
+#   and cos(1/3), or cos(2 pi/7) and cos(pi/7), are the sin and cos of multiples of one
+#   angle. The base of pi is exp(i pi/L) = z**(N/2L) for a primitive N-th root of unity z
+#   modulo a prime = 1 (mod N), N = lcm(2L, 4); the other bases are generic points
+#   ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) of the circle: e^{iu} for algebraic u linearly
+#   independent over QQ are algebraically independent (Lindemann-Weierstrass), and so are
+#   e^{iu} for symbolic u (as functions; Ax).
+# * Algebraic atoms. Square roots of rationals (and I) get square roots of their prime
+#   factors modulo the prime, chosen once each (Kummer: sqrt(6) = sqrt(2) sqrt(3)). Any
+#   other algebraic atom (nested roots such as sin(pi/5) = sqrt(5/8 - sqrt(5)/8), cube
+#   roots, CRootOf) puts all of them in one number field Q(theta) (a primitive element),
+#   evaluated at a root of theta's minimal polynomial modulo the prime.
+# * The two together. Q(algebraic atoms) = F and Q(z) meet only in a field unramified
+#   outside the primes S ramified in both (Minkowski); it lies in Q(zeta_M), M the S-part
+#   of N, and in its real subfield when F is real. When that is QQ the two choices are
+#   independent; otherwise zeta_M (2 cos(2 pi/M) for a real F) joins F, and z is taken
+#   among its conjugates so that both agree on it.
+
+def _primes(n):
+    return set(sp.factorint(abs(int(n)))) - {1, -1} if n else set()
+
+
+def _angle_units(arg):
+    """The argument of a trig atom as {unit: rational coefficient}."""
+    units = {}
+    for term in sp.Add.make_args(sp.expand(arg)):
+        coefficient, unit = term.as_coeff_Mul()
+        if not coefficient.is_Rational:
+            raise TypeError(f"cannot read the angle {arg} exactly: its term {term} has the "
+                            f"coefficient {coefficient}")
+        units[unit] = units.get(unit, 0) + coefficient
+    return {u: c for u, c in units.items() if c}
+
+
+def _unit_kind(unit, arg):
+    if unit.free_symbols:
+        return "symbolic"
+    if unit is sp.pi:
+        return "pi"
+    if unit == 1 or unit.is_Pow and unit.base.is_Integer and unit.base > 0 and unit.exp == sp.S.Half:
+        return "radian"  # 1 and sqrt(n): Lindemann-Weierstrass makes their exponentials independent
+    raise TypeError(
+        f"cannot decide exactly how sin/cos of {arg} relate to the other entries: an angle may "
+        "be a rational multiple of pi, a rational number (of radians) or a rational multiple "
+        f"of a square root of an integer, plus symbolic terms; got the term {unit}"
+    )
+
+
+def _ramified(atom, kummer):
+    """A set of primes holding every prime ramified in Q(atom)."""
+    if atom is sp.I:
+        return {2}
+    if kummer:
+        return {2} | _primes(atom.base.p) | _primes(atom.base.q)
+    x = sp.Dummy("x")
+    m = sp.Poly(sp.minimal_polynomial(atom, x), x)
+    return _primes(sp.discriminant(m)) | _primes(m.LC())
+
+
+def _primitive_root_of_unity(order, prime, rng):
+    """A primitive root of unity of the given order modulo the prime (order | prime - 1)."""
+    factors = _primes(order)
+    while True:
+        z = pow(rng.randrange(2, prime - 1), (prime - 1) // order, prime)
+        if all(pow(z, order // q, prime) != 1 for q in factors):
+            return z
+
+
+def _turn(c, s, n, prime):
+    """(cos, sin) of n times the angle whose (cos, sin) is (c, s), modulo the prime."""
+    if n < 0:
+        s, n = -s % prime, -n
+    rc, rs = 1, 0
+    while n:
+        if n & 1:
+            rc, rs = (rc * c - rs * s) % prime, (rc * s + rs * c) % prime
+        c, s = (c * c - s * s) % prime, 2 * c * s % prime
+        n >>= 1
+    return rc, rs
+
+
+def _evaluate_rep(rep, root, prime):
+    """A polynomial with rational coefficients (highest first) at ``root`` modulo the prime."""
+    value = 0
+    for c in rep:
+        value = (value * root + int(c.p) * pow(int(c.q), -1, prime)) % prime
+    return value
+
+
+class _Plan:
+    """What the sample points need: the angle units, the algebraic atoms and how they meet."""
+
+    def __init__(self, generators):
+        trig = [g for g in generators if isinstance(g, _TRIG)]
+        self.atoms = [g for g in generators if g is sp.I or _is_algebraic_atom(g)]
+        values = [g for g in generators if g in _TRANSCENDENTAL]
+        self.angles = {g: _angle_units(g.args[0]) for g in trig}
+        kinds = {}
+        for g, units in self.angles.items():
+            for u in units:
+                kinds[u] = _unit_kind(u, g.args[0])
+        self.units = sorted(kinds, key=sp.default_sort_key)
+        self.kinds = kinds
+        self.base = {u: math.lcm(*(int(units[u].q) for units in self.angles.values() if u in units))
+                     for u in self.units}
+        if sp.pi in values and (sp.E in values or "radian" in kinds.values()):
+            raise TypeError(
+                "cannot decide exactly: whether pi is algebraically independent of e or of "
+                "sin/cos of a rational number of radians is not known (Schanuel's conjecture); "
+                "write pi, e or the angle as a symbol"
+            )
+        self.order = math.lcm(2 * self.base[sp.pi], 4) if sp.pi in kinds else 1
+        self.kummer = all(a is sp.I or _is_root(a) and a.exp.q == 2 for a in self.atoms)
+        self.meet = None  # (M, real) when the atoms' field and Q(z) share more than QQ
+        if self.atoms and self.order > 1:
+            ramified = set().union(*(_ramified(a, self.kummer) for a in self.atoms))
+            shared = ramified & _primes(self.order)
+            M = math.prod(p ** sp.multiplicity(p, self.order) for p in shared)
+            real = all(a.is_extended_real for a in self.atoms)
+            if M > 1 and not (real and M in (3, 4, 6)):
+                self.meet = (M, real)
+                self.kummer = False
+        self.field = None
+        if self.atoms and not self.kummer:
+            atoms = list(self.atoms)
+            if self.meet:
+                M, real = self.meet
+                atoms.append(2 * sp.cos(2 * sp.pi / M) if real else sp.exp(2 * sp.pi * sp.I / M))
+            self.field = _SymPy.number_field(atoms)
+
+    def prime(self):
+        """The largest prime below 2^61 that is 1 modulo the order of z and gives the atoms
+        their values."""
+        step = self.order
+        candidate = (_PRIME - 1) // step * step + 1 if step > 1 else _PRIME
+        while True:
+            if candidate < 2**40:
+                raise ArithmeticError("no prime below 2^61 serves these algebraic numbers")
+            if sp.isprime(candidate) and self._serves(candidate):
+                return candidate
+            candidate = candidate - step if step > 1 else int(sp.prevprime(candidate))
+
+    def _serves(self, prime):
+        if self.kummer and self.atoms:
+            self.kummer_primes = sorted({p for a in self.atoms if a is not sp.I for n in (a.base.p, a.base.q)
+                                         for p in _primes(n)}
+                                        | ({-1} if any(a is sp.I or a.base < 0 for a in self.atoms) else set()))
+            self.kummer_roots = {p: _sqrt_mod(p % prime, prime) for p in self.kummer_primes}
+            return all(v is not None for v in self.kummer_roots.values())
+        if self.field:
+            minpoly, reps = self.field
+            if minpoly[0] % prime == 0 or any(c.q % prime == 0 for rep in reps for c in rep):
+                return False
+            self.field_roots = _SymPy.roots_mod(minpoly, prime)
+            return bool(self.field_roots)
+        return True
+
+
+@functools.lru_cache(maxsize=64)
+def _sample_points(generators):
+    """A prime, and exact random values of the generators modulo it that keep every relation
+    among them (see the comment above)."""
+    rng = random.Random(_SEED)
+    plan = _Plan(generators)
+    prime = plan.prime()
+    points = []
+    for k in range(_SAMPLE_POINTS):
+        value = {}
+        if plan.kummer and plan.atoms:
+            for a in plan.atoms:
+                radicand = sp.Integer(-1) if a is sp.I else a.base
+                root = _root_of_rational(radicand, plan.kummer_roots, prime)
+                value[a] = root if a is sp.I else pow(root, int(a.exp.p), prime)
+        elif plan.field:
+            reps = plan.field[1]
+            theta = plan.field_roots[k % len(plan.field_roots)]
+            for a, rep in zip(plan.atoms, reps):
+                value[a] = _evaluate_rep(rep, theta, prime)
+        bases = {}
+        for u in plan.units:
+            if plan.kinds[u] == "pi":
+                z = _primitive_root_of_unity(plan.order, prime, rng)
+                if plan.meet:
+                    z = _agree(z, plan, _evaluate_rep(plan.field[1][-1], theta, prime), prime)
+                w = pow(z, plan.order // (2 * plan.base[u]), prime)
+                i = pow(z, plan.order // 4, prime)
+                w_inverse = pow(w, -1, prime)
+                bases[u] = ((w + w_inverse) * pow(2, -1, prime) % prime,
+                            (w - w_inverse) * pow(2 * i, -1, prime) % prime)
+            else:
+                while True:
+                    t = rng.randrange(2, prime - 1)
+                    if (1 + t * t) % prime:
+                        break
+                inverse = pow(1 + t * t, -1, prime)
+                bases[u] = ((1 - t * t) * inverse % prime, 2 * t * inverse % prime)
+        for g, units in plan.angles.items():
+            c, s = 1, 0
+            for u, coefficient in units.items():
+                cu, su = _turn(*bases[u], int(coefficient * plan.base[u]), prime)
+                c, s = (c * cu - s * su) % prime, (c * su + s * cu) % prime
+            if isinstance(g, sp.tan):
+                if c == 0:
+                    raise ArithmeticError(f"{g} has no value at a sample point")
+                value[g] = s * pow(c, -1, prime) % prime
+            else:
+                value[g] = s if isinstance(g, sp.sin) else c
+        points.append([value[g] if g in value else rng.randrange(1, prime) for g in generators])
+    return prime, points
+
+
+def _agree(z, plan, target, prime):
+    """The conjugate z**k of the root of unity z that gives zeta_M (or 2 cos(2 pi/M)) the
+    value ``target`` it has in the atoms' field."""
+    M, real = plan.meet
+    N = plan.order
+    w = pow(z, N // M, prime)
+    for j in range(1, M):
+        if math.gcd(j, M) != 1:
+            continue
+        wj = pow(w, j, prime)
+        if (wj + pow(wj, -1, prime)) % prime == target if real else wj == target:
+            k = int(crt([M, N // M], [j, 1])[0]) if N > M else j
+            return pow(z, k, prime)
+    raise ArithmeticError("the root of unity and the algebraic numbers do not agree at any conjugate")
+
+
 def _root_of_rational(q, prime_roots, prime):
     """sqrt(q) modulo the prime for a rational q, from the chosen roots of its prime factors."""
     value = prime_roots[-1] if q < 0 else 1
@@ -286,8 +570,7 @@ def _domains(symbols):
     if not symbols:
         return QQ, None
     if symbols not in _DOMAINS:
-        K = QQ.frac_field(*symbols)
-        _DOMAINS[symbols] = K, K.field.ring.clone(domain=ZZ)
+        _DOMAINS[symbols] = _SymPy.fraction_field(symbols)
     return _DOMAINS[symbols]
 
 
@@ -349,8 +632,8 @@ def _polynomial_rows(field, M, rows):
         for p in cleared:
             for c in p.values():
                 scale = math.lcm(scale, int(c.denominator))
-        polynomial.append([integer_ring.dtype({m: int(c.numerator) * (scale // int(c.denominator))
-                                               for m, c in p.items()}) for p in cleared])
+        polynomial.append([_SymPy.ring_polynomial(integer_ring, {m: int(c.numerator) * (scale // int(c.denominator))
+                                                                 for m, c in p.items()}) for p in cleared])
     return polynomial
 
 
@@ -438,8 +721,7 @@ def _cancel(numerator, denominator):
 
 def _fraction(K, numerator, denominator):
     """The element numerator / denominator of K from coprime integer polynomials."""
-    ring = K.field.ring
-    return K.field.raw_new(numerator.set_ring(ring), denominator.set_ring(ring))
+    return _SymPy.field_fraction(K, numerator, denominator)
 
 
 def reduced_basis(field, M, rows=None):
