@@ -444,13 +444,15 @@ class _Plan:
             if M > 1 and not (real and M in (3, 4, 6)):
                 self.meet = (M, real)
                 self.kummer = False
-        self.field = None
+        self.fields = []  # (atoms, minimal polynomial, representations) for each group
         if self.atoms and not self.kummer:
-            atoms = list(self.atoms)
             if self.meet:
                 M, real = self.meet
-                atoms.append(2 * sp.cos(2 * sp.pi / M) if real else sp.exp(2 * sp.pi * sp.I / M))
-            self.field = _SymPy.number_field(atoms)
+                eta = 2 * sp.cos(2 * sp.pi / M) if real else sp.exp(2 * sp.pi * sp.I / M)
+                groups = [list(self.atoms) + [eta]]
+            else:
+                groups = _coprime_groups(self.atoms)
+            self.fields = [(group, *_SymPy.number_field(group)) for group in groups]
 
     def prime(self):
         """The largest prime below 2^61 that is 1 modulo the order of z and gives the atoms
@@ -465,19 +467,41 @@ class _Plan:
             candidate = candidate - step if step > 1 else int(sp.prevprime(candidate))
 
     def _serves(self, prime):
+        self.field_roots = []
         if self.kummer and self.atoms:
             self.kummer_primes = sorted({p for a in self.atoms if a is not sp.I for n in (a.base.p, a.base.q)
                                          for p in _primes(n)}
                                         | ({-1} if any(a is sp.I or a.base < 0 for a in self.atoms) else set()))
             self.kummer_roots = {p: _sqrt_mod(p % prime, prime) for p in self.kummer_primes}
             return all(v is not None for v in self.kummer_roots.values())
-        if self.field:
-            minpoly, reps = self.field
+        for _, minpoly, reps in self.fields:
             if minpoly[0] % prime == 0 or any(c.q % prime == 0 for rep in reps for c in rep):
                 return False
-            self.field_roots = _SymPy.roots_mod(minpoly, prime)
-            return bool(self.field_roots)
+            roots = _SymPy.roots_mod(minpoly, prime)
+            if not roots:
+                return False
+            self.field_roots.append(roots)
         return True
+
+
+def _degree(atom):
+    if atom is sp.I or _is_root(atom) and atom.exp.q == 2:
+        return 2
+    return sp.degree(sp.minimal_polynomial(atom, sp.Dummy("x")))
+
+
+def _coprime_groups(atoms):
+    """The atoms in groups whose fields have pairwise coprime degrees, so that the fields are
+    linearly disjoint and each can be evaluated on its own: atoms join a group when their
+    degrees share a factor (the degree of a group's field divides the product of its atoms')."""
+    groups = []  # [atoms, product of their degrees]
+    for atom in atoms:
+        d = _degree(atom)
+        joined = [g for g in groups if math.gcd(g[1], d) > 1]
+        merged = [atom] + [a for g in joined for a in g[0]]
+        groups = [g for g in groups if g not in joined]
+        groups.append([merged, d * math.prod(g[1] for g in joined)])
+    return [g[0] for g in groups]
 
 
 @functools.lru_cache(maxsize=64)
@@ -495,17 +519,18 @@ def _sample_points(generators):
                 radicand = sp.Integer(-1) if a is sp.I else a.base
                 root = _root_of_rational(radicand, plan.kummer_roots, prime)
                 value[a] = root if a is sp.I else pow(root, int(a.exp.p), prime)
-        elif plan.field:
-            reps = plan.field[1]
-            theta = plan.field_roots[k % len(plan.field_roots)]
-            for a, rep in zip(plan.atoms, reps):
+        eta = None
+        for (group, _, reps), roots in zip(plan.fields, plan.field_roots):
+            theta = roots[k % len(roots)]
+            for a, rep in zip(group, reps):
                 value[a] = _evaluate_rep(rep, theta, prime)
+            eta = _evaluate_rep(reps[-1], theta, prime)
         bases = {}
         for u in plan.units:
             if plan.kinds[u] == "pi":
                 z = _primitive_root_of_unity(plan.order, prime, rng)
                 if plan.meet:
-                    z = _agree(z, plan, _evaluate_rep(plan.field[1][-1], theta, prime), prime)
+                    z = _agree(z, plan, eta, prime)  # the one group ends with zeta_M
                 w = pow(z, plan.order // (2 * plan.base[u]), prime)
                 i = pow(z, plan.order // 4, prime)
                 w_inverse = pow(w, -1, prime)
