@@ -16,6 +16,7 @@ and, with --built DIR (the HTML book, e.g. _build/html), unless:
 
 Usage: python .ci/check_sources.py [--notebooks notebooks] [--built _build/html]
 """
+
 import argparse
 import glob
 import os
@@ -28,7 +29,14 @@ import nbformat
 MAX_LINE = 88
 INSTALL_TEST = 'importlib.util.find_spec("screwkit") is None'
 # what a page shows as text, not as HTML, an image or math
-_RICH = ("text/html", "text/latex", "text/markdown", "image/png", "image/svg+xml", "image/jpeg")
+_RICH = (
+    "text/html",
+    "text/latex",
+    "text/markdown",
+    "image/png",
+    "image/svg+xml",
+    "image/jpeg",
+)
 
 
 def _inputs(cell):
@@ -46,7 +54,9 @@ def _compare(source_path, notebook_path):
         )
         where = f"{notebook_path}: cell {i}"
         if want_type != got_type:
-            problems.append(f"{where} is a {got_type} cell, {source_path} has a {want_type} cell")
+            problems.append(
+                f"{where} is a {got_type} cell, {source_path} has a {want_type} cell"
+            )
         elif want_source != got_source:
             problems.append(f"{where} ({got_type}): source differs from {source_path}")
         elif want_tags != got_tags:
@@ -79,8 +89,12 @@ def _code_lines(source_path):
 
 def _installs_screwkit(source_path):
     """A problem unless the first code cell installs screwkit where it is missing."""
-    code = [cell for cell in jupytext.read(source_path).cells if cell.cell_type == "code"]
-    if not code or (INSTALL_TEST in code[0].source and "%pip install" in code[0].source):
+    code = [
+        cell for cell in jupytext.read(source_path).cells if cell.cell_type == "code"
+    ]
+    if not code or (
+        INSTALL_TEST in code[0].source and "%pip install" in code[0].source
+    ):
         return []
     return [
         f"{source_path}: the first code cell does not install screwkit where it is missing "
@@ -123,8 +137,13 @@ def _line_number(text_lines, line):
 def check_notebooks(folder):
     """Problems of the chapter sources in `folder`, as sentences (empty: all good)."""
     sources = {os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.md"))}
-    notebooks = {os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.ipynb"))}
-    problems = [f"{name}.ipynb has no MyST source {name}.md" for name in sorted(notebooks - sources)]
+    notebooks = {
+        os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.ipynb"))
+    }
+    problems = [
+        f"{name}.ipynb has no MyST source {name}.md"
+        for name in sorted(notebooks - sources)
+    ]
     problems += [
         f"{name}.md has no notebook {name}.ipynb (run `make notebooks`)"
         for name in sorted(sources - notebooks)
@@ -193,7 +212,9 @@ def check_built(folder):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--notebooks", default="notebooks", help="folder of the chapters")
+    parser.add_argument(
+        "--notebooks", default="notebooks", help="folder of the chapters"
+    )
     parser.add_argument("--built", help="also check the HTML book in this folder")
     args = parser.parse_args(argv)
     problems = check_notebooks(args.notebooks)
@@ -202,11 +223,16 @@ def main(argv=None):
     for problem in problems:
         print(problem)
     if problems:
-        print(f"check_sources: {len(problems)} problem(s); `make notebooks` rebuilds the "
-              "notebooks from their .md sources")
+        print(
+            f"check_sources: {len(problems)} problem(s); `make notebooks` rebuilds the "
+            "notebooks from their .md sources"
+        )
         return 1
-    print("check_sources: sources, notebooks" + (" and built pages" if args.built else "")
-          + " agree")
+    print(
+        "check_sources: sources, notebooks"
+        + (" and built pages" if args.built else "")
+        + " agree"
+    )
     return 0
 
 

@@ -3,14 +3,20 @@
 Three ideas keep it exact and fast (the pyScrew4Mobility paper spends its time
 simplifying trigonometric expressions inside ``Matrix.nullspace``):
 
-* **Rank is decided generically and exactly.** Every entry is a rational function of
-  generators: the symbols, the sin/cos/tan atoms and square roots such as sqrt(3). The
-  rank is computed exactly, modulo a large prime, at random points that respect every
-  relation: sin and cos of each angle come from the half-angle substitution
-  t -> (2t/(1+t^2), (1-t^2)/(1+t^2)), and sqrt(q) is a square root of q modulo the prime.
-  A minor that is nonzero there is nonzero as a function (Schwartz–Zippel), and a zero
-  minor at random points of a 61-bit field means zero with overwhelming probability. No
-  floating-point round-off is involved, and the seed is fixed, so runs are identical.
+* **Rank is decided generically and exactly, over the field the entries generate.** Every
+  entry is a rational function of generators: the symbols, pi and E, the sin/cos/tan
+  atoms and the algebraic atoms (sqrt(3), sqrt(2 + sqrt(2)), 2**(1/3), CRootOf). The rank
+  is computed exactly, modulo a large prime, at sample points that keep every relation
+  among the generators (a ring homomorphism onto the prime field): the angles are split
+  into units with one base angle each, so sin(2a) = 2 sin(a) cos(a), cos(a + b) expanded
+  and cos(2 pi/7) = 2 cos(pi/7)^2 - 1 hold there; multiples of pi use roots of unity, the
+  algebraic atoms a root of their number field's minimal polynomial modulo the prime (see
+  :func:`_sample_points`). A minor that is nonzero there is nonzero in the field
+  (Schwartz–Zippel for the transcendental generators), and a zero minor at random points
+  of a 61-bit field means zero with overwhelming probability. What cannot be decided (pi
+  beside sin(1), whose algebraic independence is Schanuel's conjecture; sin(e)) is
+  refused with the reason. No floating-point round-off is involved, and the seed is
+  fixed, so runs are identical.
 * **Bases are computed in the field of rational functions** of those generators, from
   rows that are independent at the sample points: those rows have full rank in the field,
   so no identity such as sin^2 + cos^2 = 1 or sqrt(3)^2 = 3 is ever needed, and none of
@@ -22,6 +28,7 @@ simplifying trigonometric expressions inside ``Matrix.nullspace``):
   division until the last: far cheaper than fraction-free elimination, whose intermediate
   polynomials grow with a poor pivot order.
 """
+
 import functools
 import math
 import random
@@ -84,7 +91,10 @@ class _SymPy:
         minpoly = [sp.Rational(c) for c in minpoly.all_coeffs()]
         scale = math.lcm(*(int(c.q) for c in minpoly))
         minpoly = [int(c * scale) for c in minpoly]
-        reps = [[sp.Rational(int(c.numerator), int(c.denominator)) for c in rep] for rep in reps]
+        reps = [
+            [sp.Rational(int(c.numerator), int(c.denominator)) for c in rep]
+            for rep in reps
+        ]
         return minpoly, reps
 
     @staticmethod
@@ -110,12 +120,18 @@ def entries(matrix):
 
 def _exact_numbers(e):
     """Floats become the exact rationals they stand for, so exact arithmetic applies."""
-    return e.xreplace({f: sp.Rational(f) for f in e.atoms(sp.Float)}) if e.has(sp.Float) else e
+    return (
+        e.xreplace({f: sp.Rational(f) for f in e.atoms(sp.Float)})
+        if e.has(sp.Float)
+        else e
+    )
 
 
 def _is_root(e):
     """True for a numeric root such as sqrt(3) = 3**(1/2)."""
-    return e.is_Pow and e.base.is_Rational and e.exp.is_Rational and not e.exp.is_Integer
+    return (
+        e.is_Pow and e.base.is_Rational and e.exp.is_Rational and not e.exp.is_Integer
+    )
 
 
 def _is_algebraic(e):
@@ -132,7 +148,12 @@ def _is_algebraic_atom(e):
     root given as CRootOf / AlgebraicNumber."""
     if isinstance(e, (sp.CRootOf, sp.AlgebraicNumber)):
         return True
-    return bool(e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer and _is_algebraic(e.base))
+    return bool(
+        e.is_Pow
+        and e.exp.is_Rational
+        and not e.exp.is_Integer
+        and _is_algebraic(e.base)
+    )
 
 
 def _scan(e, found, seen):
@@ -148,7 +169,9 @@ def _scan(e, found, seen):
         found["symbols"].add(e)
     elif e.is_Float:
         found["float"] = True
-    elif e in _TRANSCENDENTAL:  # pi and E: generators like symbols (no algebraic relation)
+    elif (
+        e in _TRANSCENDENTAL
+    ):  # pi and E: generators like symbols (no algebraic relation)
         found["symbols"].add(e)
     elif e is sp.I or _is_algebraic_atom(e):
         found["roots"].add(e)
@@ -175,8 +198,9 @@ class Field:
         exprs = [sp.sympify(e) for e in exprs]
         found = self._generators(exprs)
         self._floats = found["float"]
-        if self._floats:
+        if self._floats:  # sin(0.5) becomes sin(1/2): read the generators again
             exprs = [_exact_numbers(e) for e in exprs]
+            found = self._generators(exprs)
         self.expand = any(not a.args[0].is_Symbol for a in found["trig"])
         if self.expand:  # sin(a + b) and the like: write in sin/cos of single symbols
             exprs = [sp.expand_trig(e) for e in exprs]
@@ -187,8 +211,9 @@ class Field:
                 "of rational numbers, nested roots, CRootOf) and sin, cos, tan of "
                 f"expressions, got {sorted(map(str, found['other']))}"
             )
-        self.symbols = sorted(found["trig"] | found["roots"] | found["symbols"],
-                              key=sp.default_sort_key)
+        self.symbols = sorted(
+            found["trig"] | found["roots"] | found["symbols"], key=sp.default_sort_key
+        )
         # the minors are computed with integer coefficients (see _polynomial_rows)
         self.K, self.integer_ring = _domains(tuple(self.symbols))
         self._cache = {}
@@ -199,7 +224,13 @@ class Field:
 
     @staticmethod
     def _generators(exprs):
-        found = {"trig": set(), "roots": set(), "symbols": set(), "other": set(), "float": False}
+        found = {
+            "trig": set(),
+            "roots": set(),
+            "symbols": set(),
+            "other": set(),
+            "float": False,
+        }
         seen = set()
         for e in exprs:
             _scan(e, found, seen)
@@ -265,15 +296,24 @@ class Field:
     def matrix(self, rows):
         """A DomainMatrix over this field from rows of SymPy expressions."""
         rows = [list(r) for r in rows]
-        return DomainMatrix([[self.element(e) for e in r] for r in rows], (len(rows), len(rows[0])), self.K)
+        return DomainMatrix(
+            [[self.element(e) for e in r] for r in rows],
+            (len(rows), len(rows[0])),
+            self.K,
+        )
 
     def to_sympy(self, element):
         if not self.symbols:
             return self.K.to_sympy(element)
         numerator, denominator = element.numer, element.denom
-        if numerator.is_ground and denominator.is_ground:  # a number: no printing, no factoring
+        if (
+            numerator.is_ground and denominator.is_ground
+        ):  # a number: no printing, no factoring
             a, b = numerator.LC, denominator.LC
-            return sp.Rational(int(a.numerator) * int(b.denominator), int(a.denominator) * int(b.numerator))
+            return sp.Rational(
+                int(a.numerator) * int(b.denominator),
+                int(a.denominator) * int(b.numerator),
+            )
         return sp.factor(self.K.to_sympy(element))
 
     def independent_rows(self, M):
@@ -340,6 +380,7 @@ _DOMAINS = {}
 #   independent; otherwise zeta_M (2 cos(2 pi/M) for a real F) joins F, and z is taken
 #   among its conjugates so that both agree on it.
 
+
 def _primes(n):
     return set(sp.factorint(abs(int(n)))) - {1, -1} if n else set()
 
@@ -350,8 +391,10 @@ def _angle_units(arg):
     for term in sp.Add.make_args(sp.expand(arg)):
         coefficient, unit = term.as_coeff_Mul()
         if not coefficient.is_Rational:
-            raise TypeError(f"cannot read the angle {arg} exactly: its term {term} has the "
-                            f"coefficient {coefficient}")
+            raise TypeError(
+                f"cannot read the angle {arg} exactly: its term {term} has the "
+                f"coefficient {coefficient}"
+            )
         units[unit] = units.get(unit, 0) + coefficient
     return {u: c for u, c in units.items() if c}
 
@@ -361,7 +404,13 @@ def _unit_kind(unit, arg):
         return "symbolic"
     if unit is sp.pi:
         return "pi"
-    if unit == 1 or unit.is_Pow and unit.base.is_Integer and unit.base > 0 and unit.exp == sp.S.Half:
+    if (
+        unit == 1
+        or unit.is_Pow
+        and unit.base.is_Integer
+        and unit.base > 0
+        and unit.exp == sp.S.Half
+    ):
         return "radian"  # 1 and sqrt(n): Lindemann-Weierstrass makes their exponentials independent
     raise TypeError(
         f"cannot decide exactly how sin/cos of {arg} relate to the other entries: an angle may "
@@ -425,8 +474,12 @@ class _Plan:
                 kinds[u] = _unit_kind(u, g.args[0])
         self.units = sorted(kinds, key=sp.default_sort_key)
         self.kinds = kinds
-        self.base = {u: math.lcm(*(int(units[u].q) for units in self.angles.values() if u in units))
-                     for u in self.units}
+        self.base = {
+            u: math.lcm(
+                *(int(units[u].q) for units in self.angles.values() if u in units)
+            )
+            for u in self.units
+        }
         if sp.pi in values and (sp.E in values or "radian" in kinds.values()):
             raise TypeError(
                 "cannot decide exactly: whether pi is algebraically independent of e or of "
@@ -448,7 +501,9 @@ class _Plan:
         if self.atoms and not self.kummer:
             if self.meet:
                 M, real = self.meet
-                eta = 2 * sp.cos(2 * sp.pi / M) if real else sp.exp(2 * sp.pi * sp.I / M)
+                eta = (
+                    2 * sp.cos(2 * sp.pi / M) if real else sp.exp(2 * sp.pi * sp.I / M)
+                )
                 groups = [list(self.atoms) + [eta]]
             else:
                 groups = _coprime_groups(self.atoms)
@@ -461,21 +516,36 @@ class _Plan:
         candidate = (_PRIME - 1) // step * step + 1 if step > 1 else _PRIME
         while True:
             if candidate < 2**40:
-                raise ArithmeticError("no prime below 2^61 serves these algebraic numbers")
-            if sp.isprime(candidate) and self._serves(candidate):
+                raise ArithmeticError(
+                    "no prime below 2^61 serves these algebraic numbers"
+                )
+            if (candidate == _PRIME or sp.isprime(candidate)) and self._serves(
+                candidate
+            ):
                 return candidate
             candidate = candidate - step if step > 1 else int(sp.prevprime(candidate))
 
     def _serves(self, prime):
         self.field_roots = []
         if self.kummer and self.atoms:
-            self.kummer_primes = sorted({p for a in self.atoms if a is not sp.I for n in (a.base.p, a.base.q)
-                                         for p in _primes(n)}
-                                        | ({-1} if any(a is sp.I or a.base < 0 for a in self.atoms) else set()))
-            self.kummer_roots = {p: _sqrt_mod(p % prime, prime) for p in self.kummer_primes}
+            self.kummer_primes = sorted(
+                {
+                    p
+                    for a in self.atoms
+                    if a is not sp.I
+                    for n in (a.base.p, a.base.q)
+                    for p in _primes(n)
+                }
+                | ({-1} if any(a is sp.I or a.base < 0 for a in self.atoms) else set())
+            )
+            self.kummer_roots = {
+                p: _sqrt_mod(p % prime, prime) for p in self.kummer_primes
+            }
             return all(v is not None for v in self.kummer_roots.values())
         for _, minpoly, reps in self.fields:
-            if minpoly[0] % prime == 0 or any(c.q % prime == 0 for rep in reps for c in rep):
+            if minpoly[0] % prime == 0 or any(
+                c.q % prime == 0 for rep in reps for c in rep
+            ):
                 return False
             roots = _SymPy.roots_mod(minpoly, prime)
             if not roots:
@@ -534,8 +604,10 @@ def _sample_points(generators):
                 w = pow(z, plan.order // (2 * plan.base[u]), prime)
                 i = pow(z, plan.order // 4, prime)
                 w_inverse = pow(w, -1, prime)
-                bases[u] = ((w + w_inverse) * pow(2, -1, prime) % prime,
-                            (w - w_inverse) * pow(2 * i, -1, prime) % prime)
+                bases[u] = (
+                    (w + w_inverse) * pow(2, -1, prime) % prime,
+                    (w - w_inverse) * pow(2 * i, -1, prime) % prime,
+                )
             else:
                 while True:
                     t = rng.randrange(2, prime - 1)
@@ -554,7 +626,9 @@ def _sample_points(generators):
                 value[g] = s * pow(c, -1, prime) % prime
             else:
                 value[g] = s if isinstance(g, sp.sin) else c
-        points.append([value[g] if g in value else rng.randrange(1, prime) for g in generators])
+        points.append(
+            [value[g] if g in value else rng.randrange(1, prime) for g in generators]
+        )
     return prime, points
 
 
@@ -571,7 +645,9 @@ def _agree(z, plan, target, prime):
         if (wj + pow(wj, -1, prime)) % prime == target if real else wj == target:
             k = int(crt([M, N // M], [j, 1])[0]) if N > M else j
             return pow(z, k, prime)
-    raise ArithmeticError("the root of unity and the algebraic numbers do not agree at any conjugate")
+    raise ArithmeticError(
+        "the root of unity and the algebraic numbers do not agree at any conjugate"
+    )
 
 
 def _root_of_rational(q, prime_roots, prime):
@@ -648,17 +724,34 @@ def _polynomial_rows(field, M, rows):
         denominator = None
         for e in row:
             if e and not e.denom.is_ground:
-                denominator = e.denom if denominator is None else denominator.lcm(e.denom)
+                denominator = (
+                    e.denom if denominator is None else denominator.lcm(e.denom)
+                )
         if denominator is None:
-            cleared = [e.numer.quo_ground(e.denom.LC) if e and e.denom != 1 else e.numer for e in row]
+            cleared = [
+                e.numer.quo_ground(e.denom.LC) if e and e.denom != 1 else e.numer
+                for e in row
+            ]
         else:
-            cleared = [e.numer * denominator.exquo(e.denom) if e else e.numer for e in row]
+            cleared = [
+                e.numer * denominator.exquo(e.denom) if e else e.numer for e in row
+            ]
         scale = 1
         for p in cleared:
             for c in p.values():
                 scale = math.lcm(scale, int(c.denominator))
-        polynomial.append([_SymPy.ring_polynomial(integer_ring, {m: int(c.numerator) * (scale // int(c.denominator))
-                                                                 for m, c in p.items()}) for p in cleared])
+        polynomial.append(
+            [
+                _SymPy.ring_polynomial(
+                    integer_ring,
+                    {
+                        m: int(c.numerator) * (scale // int(c.denominator))
+                        for m, c in p.items()
+                    },
+                )
+                for p in cleared
+            ]
+        )
     return polynomial
 
 
@@ -679,7 +772,9 @@ def _determinants(rows, zero, one):
             total = zero
             for position, c in enumerate(cols):
                 if rows[depth][c]:
-                    minor = sorted_det(depth + 1, cols[:position] + cols[position + 1:])
+                    minor = sorted_det(
+                        depth + 1, cols[:position] + cols[position + 1 :]
+                    )
                     if minor:
                         term = rows[depth][c] * minor
                         total = total + term if position % 2 == 0 else total - term
@@ -690,7 +785,12 @@ def _determinants(rows, zero, one):
         if len(set(cols)) < len(cols):
             return zero
         order = sorted(range(len(cols)), key=lambda k: cols[k])
-        inversions = sum(1 for a in range(len(order)) for b in range(a + 1, len(order)) if order[a] > order[b])
+        inversions = sum(
+            1
+            for a in range(len(order))
+            for b in range(a + 1, len(order))
+            if order[a] > order[b]
+        )
         value = sorted_det(0, tuple(sorted(cols)))
         return -value if inversions % 2 else value
 
@@ -701,13 +801,26 @@ def _pivot_columns(field, rows, columns):
     """The pivot columns (taken in the order ``columns``) of independent rows, for generic values."""
     if field.symbols:
         for values in field._points:
-            numbers = [[field.GF(_evaluate_polynomial(row[j], values, field.prime)) if row[j] else field.GF.zero
-                        for j in columns] for row in rows]
-            pivots = DomainMatrix(numbers, (len(rows), len(columns)), field.GF).rref()[1]
+            numbers = [
+                [
+                    field.GF(_evaluate_polynomial(row[j], values, field.prime))
+                    if row[j]
+                    else field.GF.zero
+                    for j in columns
+                ]
+                for row in rows
+            ]
+            pivots = DomainMatrix(numbers, (len(rows), len(columns)), field.GF).rref()[
+                1
+            ]
             if len(pivots) == len(rows):
                 return [columns[k] for k in pivots]
-        raise ArithmeticError("no sample point gives the generic rank: the sample points are not generic")
-    M = DomainMatrix([[row[j] for j in columns] for row in rows], (len(rows), len(columns)), QQ)
+        raise ArithmeticError(
+            "no sample point gives the generic rank: the sample points are not generic"
+        )
+    M = DomainMatrix(
+        [[row[j] for j in columns] for row in rows], (len(rows), len(columns)), QQ
+    )
     return [columns[k] for k in M.rref()[1]]
 
 
@@ -719,8 +832,13 @@ def _solve_by_minors(field, rows, pivots, others):
     if not field.symbols:
         det = _determinants(rows, K.zero, K.one)
         denominator = det(pivots)
-        return [{p: K.quo(det(pivots[:k] + [j] + pivots[k + 1:]), denominator)
-                 for k, p in enumerate(pivots)} for j in others]
+        return [
+            {
+                p: K.quo(det(pivots[:k] + [j] + pivots[k + 1 :]), denominator)
+                for k, p in enumerate(pivots)
+            }
+            for j in others
+        ]
     ring = field.integer_ring
     det = _determinants(rows, ring.zero, ring.one)
     denominator = det(pivots)
@@ -728,7 +846,7 @@ def _solve_by_minors(field, rows, pivots, others):
     for j in others:
         x = {}
         for k, p in enumerate(pivots):
-            value = det(pivots[:k] + [j] + pivots[k + 1:])
+            value = det(pivots[:k] + [j] + pivots[k + 1 :])
             x[p] = _fraction(K, *_cancel(value, denominator)) if value else K.zero
         solutions.append(x)
     return solutions
@@ -794,5 +912,10 @@ def null_space(field, M, rows=None):
     K = field.K
     basis = []
     for f, x in zip(free, _solve_by_minors(field, A, pivots, free)):
-        basis.append([K.one if j == f else K.zero if j in free else K.neg(x[j]) for j in range(cols)])
+        basis.append(
+            [
+                K.one if j == f else K.zero if j in free else K.neg(x[j])
+                for j in range(cols)
+            ]
+        )
     return DomainMatrix(basis, (len(basis), cols), K)

@@ -4,6 +4,7 @@ Every entry is evaluated by SymPy at 70 significant digits, the matrix's singula
 computed by mpmath's SVD at 60 digits, and the rank counts those above 1e-40 times the
 largest (at least 1). Nothing of screwkit's exact layer is used.
 """
+
 import mpmath
 import sympy as sp
 
@@ -35,7 +36,10 @@ def rank(rows):
 
 def substitute(rows, rng):
     """Rows with every free symbol replaced by a random rational (generic values)."""
-    symbols = sorted({s for row in rows for e in row for s in sp.sympify(e).free_symbols},
-                     key=str)
-    values = {s: sp.Rational(rng.randint(-997, 997), rng.randint(1, 97)) for s in symbols}
+    symbols = sorted(
+        {s for row in rows for e in row for s in sp.sympify(e).free_symbols}, key=str
+    )
+    values = {
+        s: sp.Rational(rng.randint(-997, 997), rng.randint(1, 97)) for s in symbols
+    }
     return [[sp.sympify(e).xreplace(values) for e in row] for row in rows]

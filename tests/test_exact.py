@@ -4,6 +4,7 @@ References are independent of the code under test: a 60-digit mpmath SVD
 (``reference_rank``) on generated matrices whose entries are related by trigonometric and
 algebraic identities, and SymPy's own ``Matrix.rank`` and ``nullspace`` on small systems.
 """
+
 import random
 
 import pytest
@@ -22,6 +23,7 @@ def exact_rank(rows):
 
 
 # ---- the adapter: each SymPy internal the module relies on ------------------------------
+
 
 def test_adapter_flat_entries_reads_every_entry_row_by_row():
     M = sp.Matrix([[sp.sin(x), 2], [sp.sqrt(3), x * y]])
@@ -65,9 +67,19 @@ def test_adapter_roots_mod_finds_every_root_and_none_when_there_is_none():
 
 # ---- generated cases against a 60-digit rank --------------------------------------------
 
-ANGLES = [sp.Rational(1, 3), sp.Rational(2, 5), sp.Rational(-3, 7), sp.Rational(5, 4),
-          sp.pi / 7, 2 * sp.pi / 9, sp.pi / 11, 3 * sp.pi / 16, sp.pi / 13, sp.Rational(1, 5)
-          + sp.pi / 7, sp.sqrt(2) / 3]
+ANGLES = [
+    sp.Rational(1, 3),
+    sp.Rational(2, 5),
+    sp.Rational(-3, 7),
+    sp.Rational(5, 4),
+    sp.pi / 7,
+    2 * sp.pi / 9,
+    sp.pi / 11,
+    3 * sp.pi / 16,
+    sp.pi / 13,
+    sp.Rational(1, 5) + sp.pi / 7,
+    sp.sqrt(2) / 3,
+]
 
 
 def _trig_case(rng, angles=ANGLES):
@@ -78,13 +90,20 @@ def _trig_case(rng, angles=ANGLES):
     monomials = [sp.Integer(1), sp.cos(a), sp.sin(a), sp.cos(b), sp.sin(b)]
     monomials += [u * v for i, u in enumerate(monomials[1:], 1) for v in monomials[i:]]
     k, m = rng.randint(1, 5), rng.randint(2, 7)
-    basis = [[sum(rng.randint(-2, 2) * rng.choice(monomials) for _ in range(2))
-              for _ in range(6)] for _ in range(k)]
+    basis = [
+        [
+            sum(rng.randint(-2, 2) * rng.choice(monomials) for _ in range(2))
+            for _ in range(6)
+        ]
+        for _ in range(k)
+    ]
     rows = []
     for _ in range(m):
         weights = [rng.randint(-2, 2) for _ in range(k)]
-        row = [sp.expand(sum(w * basis[j][c] for j, w in enumerate(weights)))
-               for c in range(6)]
+        row = [
+            sp.expand(sum(w * basis[j][c] for j, w in enumerate(weights)))
+            for c in range(6)
+        ]
         rows.append([TR8(e) if rng.random() < 0.6 else e for e in row])
     return rows
 
@@ -101,8 +120,16 @@ def test_related_angles_agree_with_a_60_digit_rank():
     assert seen == 240 and deficient > 80  # singular cases are well represented
 
 
-RADICALS = [sp.sqrt(2), sp.sqrt(5), sp.sqrt(2 + sp.sqrt(2)), sp.sqrt(2 - sp.sqrt(2)),
-            sp.sqrt(5 - sp.sqrt(5)), sp.cos(sp.pi / 8), sp.sin(sp.pi / 5), sp.cbrt(2)]
+RADICALS = [
+    sp.sqrt(2),
+    sp.sqrt(5),
+    sp.sqrt(2 + sp.sqrt(2)),
+    sp.sqrt(2 - sp.sqrt(2)),
+    sp.sqrt(5 - sp.sqrt(5)),
+    sp.cos(sp.pi / 8),
+    sp.sin(sp.pi / 5),
+    sp.cbrt(2),
+]
 
 
 def _radical_case(rng):
@@ -111,13 +138,21 @@ def _radical_case(rng):
     = sqrt 2 stay unsimplified)."""
     pool = rng.sample(RADICALS, 3)
     k, m = rng.randint(1, 4), rng.randint(2, 6)
-    basis = [[rng.randint(-3, 3) + rng.randint(-2, 2) * rng.choice(pool) for _ in range(6)]
-             for _ in range(k)]
+    basis = [
+        [rng.randint(-3, 3) + rng.randint(-2, 2) * rng.choice(pool) for _ in range(6)]
+        for _ in range(k)
+    ]
     rows = []
     for _ in range(m):
-        weights = [rng.randint(-2, 2) + rng.randint(-1, 1) * rng.choice(pool) for _ in range(k)]
-        rows.append([sp.expand(sum(w * basis[j][c] for j, w in enumerate(weights)))
-                     for c in range(6)])
+        weights = [
+            rng.randint(-2, 2) + rng.randint(-1, 1) * rng.choice(pool) for _ in range(k)
+        ]
+        rows.append(
+            [
+                sp.expand(sum(w * basis[j][c] for j, w in enumerate(weights)))
+                for c in range(6)
+            ]
+        )
     return rows
 
 
@@ -135,7 +170,14 @@ def test_nested_radicals_agree_with_a_60_digit_rank():
 def test_symbolic_systems_agree_with_the_rank_at_random_values():
     rng = random.Random(3)
     for _ in range(60):
-        angles = [theta, 2 * theta, theta + phi, theta - sp.pi / 7, theta / 3, sp.pi / 7]
+        angles = [
+            theta,
+            2 * theta,
+            theta + phi,
+            theta - sp.pi / 7,
+            theta / 3,
+            sp.pi / 7,
+        ]
         rows = _trig_case(rng, angles)
         expected = reference_rank.rank(reference_rank.substitute(rows, rng))
         assert exact_rank(rows) == expected
@@ -143,16 +185,38 @@ def test_symbolic_systems_agree_with_the_rank_at_random_values():
 
 def test_the_issue_cases_multiple_angles_and_sums():
     for a in (sp.Rational(1, 3), sp.pi / 7, theta):
-        assert exact_rank([[sp.cos(2 * a), 1, 0, 0, 0, 0], [2 * sp.cos(a) ** 2 - 1, 1, 0, 0, 0, 0]]) == 1
-        assert exact_rank([[sp.sin(2 * a), 1, 0, 0, 0, 0],
-                           [2 * sp.sin(a) * sp.cos(a), 1, 0, 0, 0, 0]]) == 1
-    for a, b in ((sp.Rational(1, 3), sp.Rational(1, 5)), (sp.pi / 7, sp.Rational(2, 3)),
-                 (theta, phi)):
+        assert (
+            exact_rank(
+                [
+                    [sp.cos(2 * a), 1, 0, 0, 0, 0],
+                    [2 * sp.cos(a) ** 2 - 1, 1, 0, 0, 0, 0],
+                ]
+            )
+            == 1
+        )
+        assert (
+            exact_rank(
+                [
+                    [sp.sin(2 * a), 1, 0, 0, 0, 0],
+                    [2 * sp.sin(a) * sp.cos(a), 1, 0, 0, 0, 0],
+                ]
+            )
+            == 1
+        )
+    for a, b in (
+        (sp.Rational(1, 3), sp.Rational(1, 5)),
+        (sp.pi / 7, sp.Rational(2, 3)),
+        (theta, phi),
+    ):
         expanded = sp.cos(a) * sp.cos(b) - sp.sin(a) * sp.sin(b)
-        assert exact_rank([[sp.cos(a + b), 1, 0, 0, 0, 0], [expanded, 1, 0, 0, 0, 0]]) == 1
+        assert (
+            exact_rank([[sp.cos(a + b), 1, 0, 0, 0, 0], [expanded, 1, 0, 0, 0, 0]]) == 1
+        )
     # pi/7, 2 pi/7 and 3 pi/7 share one base angle: cos(3t) = 4 cos(t)^3 - 3 cos(t)
     t = sp.pi / 7
-    assert exact_rank([[sp.cos(3 * t), 1], [4 * sp.cos(t) ** 3 - 3 * sp.cos(t), 1]]) == 1
+    assert (
+        exact_rank([[sp.cos(3 * t), 1], [4 * sp.cos(t) ** 3 - 3 * sp.cos(t), 1]]) == 1
+    )
     # sin(pi/7) sin(2 pi/7) sin(3 pi/7) = sqrt(7)/8: a root of unity meets a square root
     product = sp.sin(t) * sp.sin(2 * t) * sp.sin(3 * t)
     assert exact_rank([[product, 1], [sp.sqrt(7) / 8, 1]]) == 1
@@ -170,12 +234,15 @@ def test_what_cannot_be_decided_is_refused_with_the_reason():
 
 # ---- against SymPy's own rank and null space on small systems ---------------------------
 
+
 def _small(rng, radicals):
     pool = [sp.Integer(1)] + ([sp.sqrt(2), sp.sqrt(3), sp.sqrt(6)] if radicals else [])
     r, c = rng.randint(1, 4), rng.randint(2, 5)
     rows = [[rng.randint(-3, 3) * rng.choice(pool) for _ in range(c)] for _ in range(r)]
     if r > 1 and rng.random() < 0.5:  # a dependent row
-        rows[-1] = [sp.expand(rows[0][j] * rng.choice(pool) - rows[1 % r][j]) for j in range(c)]
+        rows[-1] = [
+            sp.expand(rows[0][j] * rng.choice(pool) - rows[1 % r][j]) for j in range(c)
+        ]
     return rows
 
 
@@ -188,10 +255,15 @@ def test_rank_and_null_space_agree_with_sympy(radicals):
         field = _exact.Field([e for row in rows for e in row])
         D = field.matrix(rows)
         assert field.rank(D) == M.rank(simplify=True)
-        N = [sp.Matrix([field.to_sympy(e) for e in row]) for row in _exact.null_space(field, D).to_list()]
+        N = [
+            sp.Matrix([field.to_sympy(e) for e in row])
+            for row in _exact.null_space(field, D).to_list()
+        ]
         expected = M.nullspace(simplify=True)
         assert len(N) == len(expected)
         for v in N:
-            assert (M * v).applyfunc(lambda e: sp.expand(sp.radsimp(e))) == sp.zeros(M.rows, 1)
+            assert (M * v).applyfunc(lambda e: sp.expand(sp.radsimp(e))) == sp.zeros(
+                M.rows, 1
+            )
         if N:  # the same space: stacking both bases adds nothing
             assert sp.Matrix.hstack(*N, *expected).rank(simplify=True) == len(N)

@@ -1,5 +1,6 @@
 """screwkit.systems.ScrewSystem: exact ranks, reciprocal systems and refusals, checked against
 a 60-digit mpmath rank (``reference_rank``) and against hand derivations."""
+
 import itertools
 import random
 
@@ -28,23 +29,51 @@ def reciprocal_products_vanish(system):
 
 @pytest.mark.parametrize("angle", [sp.Rational(1, 3), sp.pi / 7, a])
 def test_cos_2a_and_its_chebyshev_form_are_one_screw(angle):
-    system = ScrewSystem([[sp.cos(2 * angle), 1, 0, 0, 0, 0],
-                          [2 * sp.cos(angle) ** 2 - 1, 1, 0, 0, 0, 0]])
+    system = ScrewSystem(
+        [
+            [sp.cos(2 * angle), 1, 0, 0, 0, 0],
+            [2 * sp.cos(angle) ** 2 - 1, 1, 0, 0, 0, 0],
+        ]
+    )
     assert system.rank == 1
     assert system.reciprocal().rank == 5
-    double = ScrewSystem([[sp.sin(2 * angle), 0, 1, 0, 0, 0],
-                          [2 * sp.sin(angle) * sp.cos(angle), 0, 1, 0, 0, 0]])
+    double = ScrewSystem(
+        [
+            [sp.sin(2 * angle), 0, 1, 0, 0, 0],
+            [2 * sp.sin(angle) * sp.cos(angle), 0, 1, 0, 0, 0],
+        ]
+    )
     assert double.rank == 1
 
 
 def test_a_sum_of_angles_and_its_expansion_are_one_screw():
-    for p, q in ((sp.Rational(1, 3), sp.Rational(2, 5)), (sp.pi / 7, 2 * sp.pi / 7), (a, b)):
+    for p, q in (
+        (sp.Rational(1, 3), sp.Rational(2, 5)),
+        (sp.pi / 7, 2 * sp.pi / 7),
+        (a, b),
+    ):
         expanded = sp.sin(p) * sp.cos(q) + sp.cos(p) * sp.sin(q)
-        assert ScrewSystem([[sp.sin(p + q), 0, 0, 1, 0, 0], [expanded, 0, 0, 1, 0, 0]]).rank == 1
+        assert (
+            ScrewSystem(
+                [[sp.sin(p + q), 0, 0, 1, 0, 0], [expanded, 0, 0, 1, 0, 0]]
+            ).rank
+            == 1
+        )
 
 
-PUMA_ANGLES = [0, sp.pi / 2, -sp.pi / 2, sp.pi / 7, 2 * sp.pi / 7, -3 * sp.pi / 7,
-               sp.Rational(1, 5), sp.Rational(2, 5), -sp.Rational(3, 5), sp.pi / 6, -sp.pi / 4]
+PUMA_ANGLES = [
+    0,
+    sp.pi / 2,
+    -sp.pi / 2,
+    sp.pi / 7,
+    2 * sp.pi / 7,
+    -3 * sp.pi / 7,
+    sp.Rational(1, 5),
+    sp.Rational(2, 5),
+    -sp.Rational(3, 5),
+    sp.pi / 6,
+    -sp.pi / 4,
+]
 
 
 def puma_configurations(rng, count):
@@ -71,7 +100,9 @@ def test_puma_joint_twists_agree_with_a_60_digit_rank():
         assert system.rank == expected, q
         assert system.reciprocal().rank == 6 - expected
         ranks.append(expected)
-    assert min(ranks) <= 4 and ranks.count(6) >= 3  # singular ones (wrist and elbow) included
+    assert (
+        min(ranks) <= 4 and ranks.count(6) >= 3
+    )  # singular ones (wrist and elbow) included
 
 
 def test_puma_at_textbook_angles_is_no_longer_refused():
@@ -86,8 +117,16 @@ def test_puma_at_textbook_angles_is_no_longer_refused():
 def test_a_wrist_singular_puma_loses_exactly_the_twist_along_the_aligned_axes():
     # q5 = 0: axes 4 and 6 coincide (hand derivation: the wrist's two rolls are one screw)
     puma = sk.robots.puma560()
-    system = puma.joint_twists([sp.Rational(1, 5), sp.Rational(2, 5), -sp.Rational(3, 5),
-                                sp.pi / 7, 0, 2 * sp.pi / 7])
+    system = puma.joint_twists(
+        [
+            sp.Rational(1, 5),
+            sp.Rational(2, 5),
+            -sp.Rational(3, 5),
+            sp.pi / 7,
+            0,
+            2 * sp.pi / 7,
+        ]
+    )
     assert system.rank == 5
     fourth, sixth = system.screws[3].vector, system.screws[5].vector
     assert ScrewSystem([Twist(fourth), Twist(sixth)]).rank == 1
@@ -99,8 +138,14 @@ def test_each_pair_of_related_multiples_of_pi_over_7():
         # cos(j t) as a polynomial in cos(t) and sin(t) (expand_trig of the same angle)
         t = sp.Symbol("t")
         expanded = sp.expand_trig(sp.cos(j * t)).subs(t, sp.pi / 7)
-        assert ScrewSystem([[sp.cos(q), 1, 0, 0, 0, 0], [expanded, 1, 0, 0, 0, 0]]).rank == 1
-        assert ScrewSystem([[sp.cos(p), 1, 0, 0, 0, 0], [sp.cos(q), 1, 0, 0, 0, 0]]).rank == 2
+        assert (
+            ScrewSystem([[sp.cos(q), 1, 0, 0, 0, 0], [expanded, 1, 0, 0, 0, 0]]).rank
+            == 1
+        )
+        assert (
+            ScrewSystem([[sp.cos(p), 1, 0, 0, 0, 0], [sp.cos(q), 1, 0, 0, 0, 0]]).rank
+            == 2
+        )
 
 
 def test_refusals_say_why():
