@@ -6,9 +6,9 @@ notebooks/NAME.ipynb (generated from it by `make notebooks`, stored with outputs
   - the .ipynb's cells equal the .md's: same cell types, sources and tags, in the same order;
   - no code line of a chapter is longer than 88 characters;
   - no code cell carries an nbval comment (nbval's cell tags do that job, unseen by readers);
-  - every chapter with code opens with the cell that installs screwkit where it is missing
-    (`if importlib.util.find_spec("screwkit") is None: %pip install ...`, for Colab);
-  - no printed output line of a stored notebook (streams, and plain text shown as text) is
+  - every chapter with code opens with the cell that installs screwkit where it is
+    missing (`if importlib.util.find_spec("screwkit") is None: %pip install ...`);
+  - no printed output line of a stored notebook (streams, plain text shown as text) is
     longer than 88 characters, the page column's width in code characters;
 and, with --built DIR (the HTML book, e.g. _build/html), unless:
   - no page contains the text "NBVAL";
@@ -97,8 +97,8 @@ def _installs_screwkit(source_path):
     ):
         return []
     return [
-        f"{source_path}: the first code cell does not install screwkit where it is missing "
-        "(on Colab); copy the first code cell of another chapter "
+        f"{source_path}: the first code cell does not install screwkit where it is "
+        "missing (on Colab); copy the first code cell of another chapter "
         f"(`if {INSTALL_TEST}:` then `%pip install ...`)"
     ]
 
@@ -120,8 +120,8 @@ def _output_lines(notebook_path):
             for line in text.splitlines():
                 if len(line) > MAX_LINE:
                     problems.append(
-                        f"{notebook_path}: cell {i}: output line of {len(line)} characters "
-                        f"(at most {MAX_LINE}): {line[:40]}..."
+                        f"{notebook_path}: cell {i}: output line of {len(line)} "
+                        f"characters (at most {MAX_LINE}): {line[:40]}..."
                     )
     return problems
 

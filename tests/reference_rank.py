@@ -1,8 +1,8 @@
 """An independent rank for the exact layer's tests: mpmath at 60 digits.
 
-Every entry is evaluated by SymPy at 70 significant digits, the matrix's singular values are
-computed by mpmath's SVD at 60 digits, and the rank counts those above 1e-40 times the
-largest (at least 1). Nothing of screwkit's exact layer is used.
+Every entry is evaluated by SymPy at 70 significant digits, the matrix's singular
+values are computed by mpmath's SVD at 60 digits, and the rank counts those above 1e-40
+times the largest (at least 1). Nothing of screwkit's exact layer is used.
 """
 
 import mpmath

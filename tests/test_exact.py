@@ -1,8 +1,9 @@
-"""screwkit._exact: exact generic ranks and bases over the field the entries really generate.
+"""screwkit._exact: exact generic ranks and bases over the field the entries generate.
 
 References are independent of the code under test: a 60-digit mpmath SVD
-(``reference_rank``) on generated matrices whose entries are related by trigonometric and
-algebraic identities, and SymPy's own ``Matrix.rank`` and ``nullspace`` on small systems.
+(``reference_rank``) on generated matrices whose entries are related by trigonometric
+and algebraic identities, and SymPy's own ``Matrix.rank`` and ``nullspace`` on small
+systems.
 """
 
 import random
@@ -22,7 +23,7 @@ def exact_rank(rows):
     return _exact.generic_rank([list(r) for r in rows])
 
 
-# ---- the adapter: each SymPy internal the module relies on ------------------------------
+# ---- the adapter: each SymPy internal the module relies on ---------------------------
 
 
 def test_adapter_flat_entries_reads_every_entry_row_by_row():
@@ -65,7 +66,7 @@ def test_adapter_roots_mod_finds_every_root_and_none_when_there_is_none():
     assert _exact._SymPy.roots_mod([1, 0, -non_residue], p) == []
 
 
-# ---- generated cases against a 60-digit rank --------------------------------------------
+# ---- generated cases against a 60-digit rank -----------------------------------------
 
 ANGLES = [
     sp.Rational(1, 3),
@@ -83,9 +84,9 @@ ANGLES = [
 
 
 def _trig_case(rng, angles=ANGLES):
-    """Rows that are integer combinations of k basis rows of polynomials in sin and cos of
-    two angles, each entry then written with multiple angles (TR8: cos(a)^2 -> cos(2a)/2 +
-    1/2, cos(a) cos(b) -> cos(a + b)/2 + cos(a - b)/2), so the atoms are related."""
+    """Rows that are integer combinations of k basis rows of polynomials in sin and cos
+    of two angles, each entry then written with multiple angles (TR8: cos(a)^2 ->
+    cos(2a)/2 + 1/2, cos(a) cos(b) -> cos(a + b)/2 + cos(a - b)/2): related atoms."""
     a, b = rng.choice(angles), rng.choice(angles)
     monomials = [sp.Integer(1), sp.cos(a), sp.sin(a), sp.cos(b), sp.sin(b)]
     monomials += [u * v for i, u in enumerate(monomials[1:], 1) for v in monomials[i:]]
@@ -133,9 +134,9 @@ RADICALS = [
 
 
 def _radical_case(rng):
-    """Rows that are algebraic multiples of others: row_j = alpha * row_i expanded, where
-    alpha and the entries are nested roots (products such as sqrt(2 + sqrt 2) sqrt(2 - sqrt 2)
-    = sqrt 2 stay unsimplified)."""
+    """Rows that are algebraic combinations of others, expanded, where the weights and
+    the entries are nested roots (products such as sqrt(2 + sqrt 2) sqrt(2 - sqrt 2) =
+    sqrt 2 stay unsimplified)."""
     pool = rng.sample(RADICALS, 3)
     k, m = rng.randint(1, 4), rng.randint(2, 6)
     basis = [
@@ -232,7 +233,7 @@ def test_what_cannot_be_decided_is_refused_with_the_reason():
         exact_rank([[sp.sqrt(x), 1]])
 
 
-# ---- against SymPy's own rank and null space on small systems ---------------------------
+# ---- against SymPy's own rank and null space on small systems ------------------------
 
 
 def _small(rng, radicals):

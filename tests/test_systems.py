@@ -1,5 +1,5 @@
-"""screwkit.systems.ScrewSystem: exact ranks, reciprocal systems and refusals, checked against
-a 60-digit mpmath rank (``reference_rank``) and against hand derivations."""
+"""screwkit.systems.ScrewSystem: exact ranks, reciprocal systems and refusals, checked
+against a 60-digit mpmath rank (``reference_rank``) and against hand derivations."""
 
 import itertools
 import random
@@ -19,8 +19,8 @@ def rows_of(system):
 
 
 def reciprocal_products_vanish(system):
-    """Every screw of the reciprocal system has a zero reciprocal product with every screw
-    of the system, to 50 digits."""
+    """Every screw of the reciprocal system has a zero reciprocal product with every
+    screw of the system, to 50 digits."""
     for w in system.reciprocal().screws:
         for t in system.screws:
             product = sum(w.vector[k] * t.vector[(k + 3) % 6] for k in range(6))
@@ -106,7 +106,8 @@ def test_puma_joint_twists_agree_with_a_60_digit_rank():
 
 
 def test_puma_at_textbook_angles_is_no_longer_refused():
-    # sin(pi/5) and cos(pi/8) are nested roots: sqrt(5/8 - sqrt(5)/8), sqrt(sqrt(2)/4 + 1/2)
+    # sin(pi/5) and cos(pi/8) are nested roots:
+    # sqrt(5/8 - sqrt(5)/8) and sqrt(sqrt(2)/4 + 1/2)
     puma = sk.robots.puma560()
     q = [0, sp.pi / 5, -sp.pi / 8, sp.pi / 7, 0, 2 * sp.pi / 7]
     system = puma.joint_twists(q)
@@ -115,7 +116,7 @@ def test_puma_at_textbook_angles_is_no_longer_refused():
 
 
 def test_a_wrist_singular_puma_loses_exactly_the_twist_along_the_aligned_axes():
-    # q5 = 0: axes 4 and 6 coincide (hand derivation: the wrist's two rolls are one screw)
+    # q5 = 0: axes 4 and 6 coincide (by hand: the wrist's two rolls are one screw)
     puma = sk.robots.puma560()
     system = puma.joint_twists(
         [
