@@ -1,32 +1,33 @@
-"""Exact linear algebra on symbolic screw coordinates, fast enough for mobility analysis.
+"""Exact linear algebra on symbolic screw coordinates, fast enough for mobility
+analysis.
 
 Three ideas keep it exact and fast (the pyScrew4Mobility paper spends its time
 simplifying trigonometric expressions inside ``Matrix.nullspace``):
 
-* **Rank is decided generically and exactly, over the field the entries generate.** Every
-  entry is a rational function of generators: the symbols, pi and E, the sin/cos/tan
-  atoms and the algebraic atoms (sqrt(3), sqrt(2 + sqrt(2)), 2**(1/3), CRootOf). The rank
-  is computed exactly, modulo a large prime, at sample points that keep every relation
-  among the generators (a ring homomorphism onto the prime field): the angles are split
-  into units with one base angle each, so sin(2a) = 2 sin(a) cos(a), cos(a + b) expanded
-  and cos(2 pi/7) = 2 cos(pi/7)^2 - 1 hold there; multiples of pi use roots of unity, the
-  algebraic atoms a root of their number field's minimal polynomial modulo the prime (see
-  :func:`_sample_points`). A minor that is nonzero there is nonzero in the field
-  (Schwartz–Zippel for the transcendental generators), and a zero minor at random points
-  of a 61-bit field means zero with overwhelming probability. What cannot be decided (pi
-  beside sin(1), whose algebraic independence is Schanuel's conjecture; sin(e)) is
-  refused with the reason. No floating-point round-off is involved, and the seed is
-  fixed, so runs are identical.
+* **Rank is decided generically and exactly, over the field the entries generate.**
+  Every entry is a rational function of generators: the symbols, pi and E, the
+  sin/cos/tan atoms and the algebraic atoms (sqrt(3), sqrt(2 + sqrt(2)), 2**(1/3),
+  CRootOf). The rank is computed exactly, modulo a large prime, at sample points that
+  keep every relation among the generators (a ring homomorphism onto the prime field):
+  the angles are split into units with one base angle each, so sin(2a) = 2 sin(a)
+  cos(a), cos(a + b) expanded and cos(2 pi/7) = 2 cos(pi/7)^2 - 1 hold there; multiples
+  of pi use roots of unity, the algebraic atoms a root of their number field's minimal
+  polynomial modulo the prime (see :func:`_sample_points`). A minor that is nonzero
+  there is nonzero in the field (Schwartz–Zippel for the transcendental generators), and
+  a zero minor at random points of a 61-bit field means zero with overwhelming
+  probability. What cannot be decided (pi beside sin(1), whose algebraic independence is
+  Schanuel's conjecture; sin(e)) is refused with the reason. No floating-point round-off
+  is involved, and the seed is fixed, so runs are identical.
 * **Bases are computed in the field of rational functions** of those generators, from
-  rows that are independent at the sample points: those rows have full rank in the field,
-  so no identity such as sin^2 + cos^2 = 1 or sqrt(3)^2 = 3 is ever needed, and none of
-  SymPy's trigonometric simplification runs.
-* **Bases come from minors, not elimination.** The canonical basis of a null space or a row
-  space is A_P^-1 times some columns of A, for the pivot columns P (found at the sample
-  points). Cramer's rule gives each entry as a ratio of minors of A, and the minors of these
-  sparse 6-column matrices are computed by Laplace expansion with memoisation, with no
-  division until the last: far cheaper than fraction-free elimination, whose intermediate
-  polynomials grow with a poor pivot order.
+  rows that are independent at the sample points: those rows have full rank in the
+  field, so no identity such as sin^2 + cos^2 = 1 or sqrt(3)^2 = 3 is ever needed, and
+  none of SymPy's trigonometric simplification runs.
+* **Bases come from minors, not elimination.** The canonical basis of a null space or a
+  row space is A_P^-1 times some columns of A, for the pivot columns P (found at the
+  sample points). Cramer's rule gives each entry as a ratio of minors of A, and the
+  minors of these sparse 6-column matrices are computed by Laplace expansion with
+  memoisation, with no division until the last: far cheaper than fraction-free
+  elimination, whose intermediate polynomials grow with a poor pivot order.
 """
 
 import functools
@@ -55,8 +56,8 @@ class _SymPy:
 
     @staticmethod
     def flat_entries(matrix):
-        """The entries of a SymPy matrix, row by row, read from its EXRAW store in one call
-        (``flat()`` converts entry by entry)."""
+        """The entries of a SymPy matrix, row by row, read from its EXRAW store in one
+        call (``flat()`` converts entry by entry)."""
         rep = matrix._rep
         return rep.to_list_flat() if rep.domain.is_EXRAW else matrix.flat()
 
@@ -68,13 +69,14 @@ class _SymPy:
 
     @staticmethod
     def field_polynomial(K, terms):
-        """The element of K = QQ(symbols) with the polynomial {exponents: QQ} as numerator
-        and 1 as denominator, built without a gcd."""
+        """The element of K = QQ(symbols) with the polynomial {exponents: QQ} as
+        numerator and 1 as denominator, built without a gcd."""
         return K.field.raw_new(K.field.ring.dtype(terms))
 
     @staticmethod
     def field_fraction(K, numerator, denominator):
-        """The element numerator / denominator of K from coprime ZZ[symbols] polynomials."""
+        """The element numerator / denominator of K from coprime ZZ[symbols]
+        polynomials."""
         ring = K.field.ring
         return K.field.raw_new(numerator.set_ring(ring), denominator.set_ring(ring))
 
@@ -85,8 +87,9 @@ class _SymPy:
 
     @staticmethod
     def number_field(atoms):
-        """Q(atoms) by a primitive element: its minimal polynomial (integer coefficients,
-        highest first) and each atom as a polynomial in it (rational coefficients)."""
+        """Q(atoms) by a primitive element: its minimal polynomial (integer
+        coefficients, highest first) and each atom as a polynomial in it (rational
+        coefficients)."""
         minpoly, _, reps = primitive_element(atoms, ex=True, polys=True)
         minpoly = [sp.Rational(c) for c in minpoly.all_coeffs()]
         scale = math.lcm(*(int(c.q) for c in minpoly))
@@ -99,7 +102,8 @@ class _SymPy:
 
     @staticmethod
     def roots_mod(coefficients, prime):
-        """The roots modulo ``prime`` of an integer polynomial (coefficients highest first)."""
+        """The roots modulo ``prime`` of an integer polynomial (coefficients highest
+        first)."""
         f = _gf.gf_from_int_poly(coefficients, prime)
         if len(f) < 2:
             return []
@@ -135,7 +139,8 @@ def _is_root(e):
 
 
 def _is_algebraic(e):
-    """True if ``e`` is built from rationals, I and algebraic atoms by +, *, integer powers."""
+    """True if ``e`` is built from rationals, I and algebraic atoms by +, *, integer
+    powers."""
     if e.is_Rational or e is sp.I or _is_algebraic_atom(e):
         return True
     if e.is_Add or e.is_Mul or e.is_Pow and e.exp.is_Integer:
@@ -144,8 +149,8 @@ def _is_algebraic(e):
 
 
 def _is_algebraic_atom(e):
-    """A root of an algebraic number (sqrt(3), sqrt(2 + sqrt(2)), 2**(1/3)) or a polynomial's
-    root given as CRootOf / AlgebraicNumber."""
+    """A root of an algebraic number (sqrt(3), sqrt(2 + sqrt(2)), 2**(1/3)) or a
+    polynomial's root given as CRootOf / AlgebraicNumber."""
     if isinstance(e, (sp.CRootOf, sp.AlgebraicNumber)):
         return True
     return bool(
@@ -157,9 +162,9 @@ def _is_algebraic_atom(e):
 
 
 def _scan(e, found, seen):
-    """Collect, in one walk of the tree, the generators of ``e``: trig atoms, algebraic atoms,
-    and the symbols outside them; other functions go to found['other'], Floats set
-    found['float']."""
+    """Collect, in one walk of the tree, the generators of ``e``: trig atoms, algebraic
+    atoms, and the symbols outside them; other functions go to found['other'], Floats
+    set found['float']."""
     if e in seen:
         return
     seen.add(e)
@@ -185,13 +190,14 @@ def _scan(e, found, seen):
 
 
 class Field:
-    """The field QQ(generators) that holds every entry of one problem, and its sample points.
+    """The field QQ(generators) that holds every entry of one problem, and its sample
+    points.
 
-    The generators are the symbols, the sin/cos/tan atoms and the algebraic atoms themselves
-    (SymPy's polynomial rings accept sin(theta) as a generator), so no substitution is
-    needed; the relations among them (sin(2a) = 2 sin(a) cos(a), sqrt(2 + sqrt(2)) sqrt(2 -
-    sqrt(2)) = sqrt(2), cos(pi/7) a root of 8x^3 - 4x^2 - 4x + 1, ...) are kept by the sample
-    points (:func:`_sample_points`).
+    The generators are the symbols, the sin/cos/tan atoms and the algebraic atoms
+    themselves (SymPy's polynomial rings accept sin(theta) as a generator), so no
+    substitution is needed; the relations among them (sin(2a) = 2 sin(a) cos(a), sqrt(2
+    + sqrt(2)) sqrt(2 - sqrt(2)) = sqrt(2), cos(pi/7) a root of 8x^3 - 4x^2 - 4x + 1,
+    ...) are kept by the sample points (:func:`_sample_points`).
     """
 
     def __init__(self, exprs):
@@ -207,9 +213,9 @@ class Field:
             found = self._generators(exprs)
         if found["other"]:
             raise TypeError(
-                "screw coordinates may hold numbers, symbols, pi, algebraic numbers (roots "
-                "of rational numbers, nested roots, CRootOf) and sin, cos, tan of "
-                f"expressions, got {sorted(map(str, found['other']))}"
+                "screw coordinates may hold numbers, symbols, pi, algebraic numbers "
+                "(roots of rational numbers, nested roots, CRootOf) and sin, cos, tan "
+                f"of expressions, got {sorted(map(str, found['other']))}"
             )
         self.symbols = sorted(
             found["trig"] | found["roots"] | found["symbols"], key=sp.default_sort_key
@@ -243,7 +249,8 @@ class Field:
         value = self._cache.get(e)
         if value is None:
             plain = sp.expand_trig(e) if self.expand and e.has(*_TRIG) else e
-            # most screw coordinates are polynomials: build their terms directly, no cancelling
+            # most screw coordinates are polynomials: build their terms directly, no
+            # cancelling
             terms = self._terms(plain)
             if terms is None:
                 value = self.K.from_sympy(plain)
@@ -255,9 +262,9 @@ class Field:
         return value
 
     def _terms(self, e):
-        """``e`` as a polynomial in the generators, {exponents: QQ coefficient}, or None if it
-        is not one. Subexpressions are memoised: the joint screws of one mechanism share many
-        products such as a*sin(theta)*cos(alpha)."""
+        """``e`` as a polynomial in the generators, {exponents: QQ coefficient}, or None
+        if it is not one. Subexpressions are memoised: the joint screws of one mechanism
+        share many products such as a*sin(theta)*cos(alpha)."""
         if e in self._polynomials:
             return self._polynomials[e]
         n = len(self.symbols)
@@ -317,7 +324,8 @@ class Field:
         return sp.factor(self.K.to_sympy(element))
 
     def independent_rows(self, M):
-        """Indices of a largest set of rows of M that are independent for generic values."""
+        """Indices of a largest set of rows of M that are independent for generic
+        values."""
         rows, cols = M.shape
         if rows == 0:
             return []
@@ -354,31 +362,32 @@ class Field:
 _DOMAINS = {}
 
 
-# ---- sample points: exact values of the generators modulo a prime, every relation kept ----
+# ---- sample points: the generators' values modulo a prime, every relation kept -------
 #
-# A sample point is a ring homomorphism from the ring the entries generate onto GF(prime):
-# a minor that vanishes there vanishes on the real configuration only if it is zero (with a
-# probability of error below 1e-15 for each transcendental generator, Schwartz-Zippel).
+# A sample point is a ring homomorphism from the ring the entries generate onto
+# GF(prime): a minor that vanishes there vanishes on the real configuration only if it
+# is zero (with a probability of error below 1e-15 for each transcendental generator,
+# Schwartz-Zippel).
 #
-# * Angles. The argument of every sin/cos/tan is split into units over QQ: pi, 1 (a radian),
-#   square roots of integers, and symbolic terms (theta, pi*theta, sqrt(2)*theta). Each unit
-#   u gets one base angle u/L (L the lcm of its coefficients' denominators), so sin(2/3)
-#   and cos(1/3), or cos(2 pi/7) and cos(pi/7), are the sin and cos of multiples of one
-#   angle. The base of pi is exp(i pi/L) = z**(N/2L) for a primitive N-th root of unity z
-#   modulo a prime = 1 (mod N), N = lcm(2L, 4); the other bases are generic points
-#   ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) of the circle: e^{iu} for algebraic u linearly
-#   independent over QQ are algebraically independent (Lindemann-Weierstrass), and so are
-#   e^{iu} for symbolic u (as functions; Ax).
+# * Angles. The argument of every sin/cos/tan is split into units over QQ: pi, 1 (a
+#   radian), square roots of integers, and symbolic terms (theta, pi*theta,
+#   sqrt(2)*theta). Each unit u gets one base angle u/L (L the lcm of its coefficients'
+#   denominators), so sin(2/3) and cos(1/3), or cos(2 pi/7) and cos(pi/7), are the sin
+#   and cos of multiples of one angle. The base of pi is exp(i pi/L) = z**(N/2L) for a
+#   primitive N-th root of unity z modulo a prime = 1 (mod N), N = lcm(2L, 4); the other
+#   bases are generic points ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) of the circle: e^{iu}
+#   for algebraic u linearly independent over QQ are algebraically independent
+#   (Lindemann-Weierstrass), and so are e^{iu} for symbolic u (as functions; Ax).
 # * Algebraic atoms. Square roots of rationals (and I) get square roots of their prime
 #   factors modulo the prime, chosen once each (Kummer: sqrt(6) = sqrt(2) sqrt(3)). Any
 #   other algebraic atom (nested roots such as sin(pi/5) = sqrt(5/8 - sqrt(5)/8), cube
 #   roots, CRootOf) puts all of them in one number field Q(theta) (a primitive element),
 #   evaluated at a root of theta's minimal polynomial modulo the prime.
 # * The two together. Q(algebraic atoms) = F and Q(z) meet only in a field unramified
-#   outside the primes S ramified in both (Minkowski); it lies in Q(zeta_M), M the S-part
-#   of N, and in its real subfield when F is real. When that is QQ the two choices are
-#   independent; otherwise zeta_M (2 cos(2 pi/M) for a real F) joins F, and z is taken
-#   among its conjugates so that both agree on it.
+#   outside the primes S ramified in both (Minkowski); it lies in Q(zeta_M), M the
+#   S-part of N, and in its real subfield when F is real. When that is QQ the two
+#   choices are independent; otherwise zeta_M (2 cos(2 pi/M) for a real F) joins F, and
+#   z is taken among its conjugates so that both agree on it.
 
 
 def _primes(n):
@@ -411,11 +420,12 @@ def _unit_kind(unit, arg):
         and unit.base > 0
         and unit.exp == sp.S.Half
     ):
-        return "radian"  # 1 and sqrt(n): Lindemann-Weierstrass makes their exponentials independent
+        return "radian"  # 1, sqrt(n): exponentials independent (Lindemann-Weierstrass)
     raise TypeError(
-        f"cannot decide exactly how sin/cos of {arg} relate to the other entries: an angle may "
-        "be a rational multiple of pi, a rational number (of radians) or a rational multiple "
-        f"of a square root of an integer, plus symbolic terms; got the term {unit}"
+        f"cannot decide exactly how sin/cos of {arg} relate to the other entries: an "
+        "angle may be a rational multiple of pi, a rational number (of radians) or a "
+        "rational multiple of a square root of an integer, plus symbolic terms; got "
+        f"the term {unit}"
     )
 
 
@@ -431,7 +441,8 @@ def _ramified(atom, kummer):
 
 
 def _primitive_root_of_unity(order, prime, rng):
-    """A primitive root of unity of the given order modulo the prime (order | prime - 1)."""
+    """A primitive root of unity of the given order modulo the prime (order | prime -
+    1)."""
     factors = _primes(order)
     while True:
         z = pow(rng.randrange(2, prime - 1), (prime - 1) // order, prime)
@@ -453,7 +464,8 @@ def _turn(c, s, n, prime):
 
 
 def _evaluate_rep(rep, root, prime):
-    """A polynomial with rational coefficients (highest first) at ``root`` modulo the prime."""
+    """A polynomial with rational coefficients (highest first) at ``root`` modulo the
+    prime."""
     value = 0
     for c in rep:
         value = (value * root + int(c.p) * pow(int(c.q), -1, prime)) % prime
@@ -461,7 +473,8 @@ def _evaluate_rep(rep, root, prime):
 
 
 class _Plan:
-    """What the sample points need: the angle units, the algebraic atoms and how they meet."""
+    """What the sample points need: the angle units, the algebraic atoms and how they
+    meet."""
 
     def __init__(self, generators):
         trig = [g for g in generators if isinstance(g, _TRIG)]
@@ -482,9 +495,9 @@ class _Plan:
         }
         if sp.pi in values and (sp.E in values or "radian" in kinds.values()):
             raise TypeError(
-                "cannot decide exactly: whether pi is algebraically independent of e or of "
-                "sin/cos of a rational number of radians is not known (Schanuel's conjecture); "
-                "write pi, e or the angle as a symbol"
+                "cannot decide exactly: whether pi is algebraically independent of e "
+                "or of sin/cos of a rational number of radians is not known "
+                "(Schanuel's conjecture); write pi, e or the angle as a symbol"
             )
         self.order = math.lcm(2 * self.base[sp.pi], 4) if sp.pi in kinds else 1
         self.kummer = all(a is sp.I or _is_root(a) and a.exp.q == 2 for a in self.atoms)
@@ -510,8 +523,8 @@ class _Plan:
             self.fields = [(group, *_SymPy.number_field(group)) for group in groups]
 
     def prime(self):
-        """The largest prime below 2^61 that is 1 modulo the order of z and gives the atoms
-        their values."""
+        """The largest prime below 2^61 that is 1 modulo the order of z and gives the
+        atoms their values."""
         step = self.order
         candidate = (_PRIME - 1) // step * step + 1 if step > 1 else _PRIME
         while True:
@@ -561,9 +574,10 @@ def _degree(atom):
 
 
 def _coprime_groups(atoms):
-    """The atoms in groups whose fields have pairwise coprime degrees, so that the fields are
-    linearly disjoint and each can be evaluated on its own: atoms join a group when their
-    degrees share a factor (the degree of a group's field divides the product of its atoms')."""
+    """The atoms in groups whose fields have pairwise coprime degrees, so that the
+    fields are linearly disjoint and each can be evaluated on its own: atoms join a
+    group when their degrees share a factor (the degree of a group's field divides the
+    product of its atoms')."""
     groups = []  # [atoms, product of their degrees]
     for atom in atoms:
         d = _degree(atom)
@@ -576,8 +590,8 @@ def _coprime_groups(atoms):
 
 @functools.lru_cache(maxsize=64)
 def _sample_points(generators):
-    """A prime, and exact random values of the generators modulo it that keep every relation
-    among them (see the comment above)."""
+    """A prime, and exact random values of the generators modulo it that keep every
+    relation among them (see the comment above)."""
     rng = random.Random(_SEED)
     plan = _Plan(generators)
     prime = plan.prime()
@@ -633,8 +647,8 @@ def _sample_points(generators):
 
 
 def _agree(z, plan, target, prime):
-    """The conjugate z**k of the root of unity z that gives zeta_M (or 2 cos(2 pi/M)) the
-    value ``target`` it has in the atoms' field."""
+    """The conjugate z**k of the root of unity z that gives zeta_M (or 2 cos(2 pi/M))
+    the value ``target`` it has in the atoms' field."""
     M, real = plan.meet
     N = plan.order
     w = pow(z, N // M, prime)
@@ -651,7 +665,8 @@ def _agree(z, plan, target, prime):
 
 
 def _root_of_rational(q, prime_roots, prime):
-    """sqrt(q) modulo the prime for a rational q, from the chosen roots of its prime factors."""
+    """sqrt(q) modulo the prime for a rational q, from the chosen roots of its prime
+    factors."""
     value = prime_roots[-1] if q < 0 else 1
     for n, sign in ((abs(q.p), 1), (q.q, -1)):
         for p, k in sp.factorint(n).items():
@@ -662,12 +677,14 @@ def _root_of_rational(q, prime_roots, prime):
 
 @functools.lru_cache(maxsize=256)
 def _sqrt_mod(a, prime):
-    """A square root of a modulo the prime, or None (the same few roots, such as sqrt(3), recur)."""
+    """A square root of a modulo the prime, or None (the same few roots, such as
+    sqrt(3), recur)."""
     return sqrt_mod(a, prime, all_roots=False)
 
 
 def _domains(symbols):
-    """QQ(symbols) and ZZ[symbols], built once per set of generators (SymPy rebuilds them)."""
+    """QQ(symbols) and ZZ[symbols], built once per set of generators (SymPy rebuilds
+    them)."""
     if not symbols:
         return QQ, None
     if symbols not in _DOMAINS:
@@ -690,7 +707,8 @@ def _product(a, b):
 
 
 def generic_rank(rows):
-    """The rank, for generic values of the symbols, of a matrix given as rows of SymPy expressions."""
+    """The rank, for generic values of the symbols, of a matrix given as rows of SymPy
+    expressions."""
     field = Field([e for row in rows for e in row])
     return field.rank(field.matrix(rows))
 
@@ -707,11 +725,13 @@ def _evaluate_polynomial(polynomial, values, prime):
 
 
 def _polynomial_rows(field, M, rows):
-    """The chosen rows of M, each multiplied by a nonzero factor that clears its denominators:
-    rows of polynomials with integer coefficients (over QQ when there are no symbols).
+    """The chosen rows of M, each multiplied by a nonzero factor that clears its
+    denominators: rows of polynomials with integer coefficients (over QQ when there are
+    no symbols).
 
-    Scaling a row changes neither its null space nor its row space, nor the ratios of minors
-    that Cramer's rule takes; integer coefficients make the minors plain ``int`` arithmetic.
+    Scaling a row changes neither its null space nor its row space, nor the ratios of
+    minors that Cramer's rule takes; integer coefficients make the minors plain ``int``
+    arithmetic.
     """
     K = field.K
     if K is QQ:
@@ -758,9 +778,9 @@ def _polynomial_rows(field, M, rows):
 def _determinants(rows, zero, one):
     """det of the square submatrix of ``rows`` on an ordered list of columns, memoised.
 
-    Laplace expansion along the rows in turn, skipping zero entries: the matrices of joint
-    screws are sparse, and the minors that the columns share are computed once. No division
-    happens, so the entries may be polynomials.
+    Laplace expansion along the rows in turn, skipping zero entries: the matrices of
+    joint screws are sparse, and the minors that the columns share are computed once. No
+    division happens, so the entries may be polynomials.
     """
     memo = {}
 
@@ -798,7 +818,8 @@ def _determinants(rows, zero, one):
 
 
 def _pivot_columns(field, rows, columns):
-    """The pivot columns (taken in the order ``columns``) of independent rows, for generic values."""
+    """The pivot columns (taken in the order ``columns``) of independent rows, for
+    generic values."""
     if field.symbols:
         for values in field._points:
             numbers = [
@@ -825,9 +846,9 @@ def _pivot_columns(field, rows, columns):
 
 
 def _solve_by_minors(field, rows, pivots, others):
-    """Cramer's rule on A = rows with det(A_pivots) != 0: for each column j in ``others``, the
-    solution x of A_pivots x = A_j, as {pivot: K element}, each x_k = det(A_pivots, column k
-    replaced by column j) / det(A_pivots)."""
+    """Cramer's rule on A = rows with det(A_pivots) != 0: for each column j in
+    ``others``, the solution x of A_pivots x = A_j, as {pivot: K element}, each x_k =
+    det(A_pivots, column k replaced by column j) / det(A_pivots)."""
     K = field.K
     if not field.symbols:
         det = _determinants(rows, K.zero, K.one)
@@ -853,9 +874,9 @@ def _solve_by_minors(field, rows, pivots, others):
 
 
 def _cancel(numerator, denominator):
-    """numerator / denominator in lowest terms, the denominator's leading coefficient positive.
-    Most ratios of minors here are polynomials (often numbers): an exact division is tried
-    before the gcd."""
+    """numerator / denominator in lowest terms, the denominator's leading coefficient
+    positive. Most ratios of minors here are polynomials (often numbers): an exact
+    division is tried before the gcd."""
     quotient, remainder = numerator.div(denominator)
     if not remainder:
         return quotient, quotient.ring.one
@@ -868,13 +889,14 @@ def _fraction(K, numerator, denominator):
 
 
 def reduced_basis(field, M, rows=None):
-    """A canonical basis of the row space of M (DomainMatrix over ``field``), as a DomainMatrix.
+    """A canonical basis of the row space of M (DomainMatrix over ``field``), as a
+    DomainMatrix.
 
     ``rows``: indices of generically independent rows (found if not given). Reduced from
-    the right: each row has a 1 at its last nonzero coordinate and zeros in the other rows
-    there, so couples and forces read like (0, 0, 0, 0, 0, 1). That is B = A_P^-1 A for the
-    pivot columns P found from the right; its entries are ratios of minors of A (Cramer's
-    rule), computed without fractions until the one division each.
+    the right: each row has a 1 at its last nonzero coordinate and zeros in the other
+    rows there, so couples and forces read like (0, 0, 0, 0, 0, 1). That is B = A_P^-1 A
+    for the pivot columns P found from the right; its entries are ratios of minors of A
+    (Cramer's rule), computed without fractions until the one division each.
     """
     cols = M.shape[1]
     rows = field.independent_rows(M) if rows is None else rows
@@ -896,9 +918,10 @@ def reduced_basis(field, M, rows=None):
 def null_space(field, M, rows=None):
     """A canonical basis of {x : M x = 0} for generic values, as DomainMatrix rows.
 
-    With the pivot columns P of M (from the left) and the free columns F, basis vector f has
-    x_f = 1, zeros at the other free columns and x_P = -A_P^-1 A_f (Cramer's rule): its last
-    nonzero coordinate is that 1, so the basis is already reduced from the right.
+    With the pivot columns P of M (from the left) and the free columns F, basis vector f
+    has x_f = 1, zeros at the other free columns and x_P = -A_P^-1 A_f (Cramer's rule):
+    its last nonzero coordinate is that 1, so the basis is already reduced from the
+    right.
     """
     cols = M.shape[1]
     rows = field.independent_rows(M) if rows is None else rows

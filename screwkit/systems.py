@@ -2,16 +2,17 @@
 
 Exact screws (integers, rationals, symbols, pi, algebraic numbers such as sqrt(3),
 sin(pi/5) = sqrt(5/8 - sqrt(5)/8) or a CRootOf, and sin/cos/tan of angles) are computed
-exactly by :mod:`._exact`: the rank is the generic rank in the symbols, over the field the
-entries really generate (cos(2a) and 2 cos(a)^2 - 1 are one number at a = 1/3 or pi/7 as
-for a symbol a); what cannot be decided exactly is refused with the reason. Screws given with floats (and no
-symbols) are computed by SVD: the rank counts the singular values above
-``tol * max(1, the largest)``, ``tol = 1e-9`` by default (:mod:`._numeric`), so two axes that
-differ by round-off count as one. Floats mixed with symbols are refused with a message saying
-how to write them exactly.
+exactly by :mod:`._exact`: the rank is the generic rank in the symbols, over the field
+the entries really generate (cos(2a) and 2 cos(a)^2 - 1 are one number at a = 1/3 or
+pi/7 as for a symbol a); what cannot be decided exactly is refused with the reason.
+Screws given with floats (and no symbols) are computed by SVD: the rank counts the
+singular values above ``tol * max(1, the largest)``, ``tol = 1e-9`` by default
+(:mod:`._numeric`), so two axes that differ by round-off count as one. Floats mixed with
+symbols are refused with a message saying how to write them exactly.
 
 >>> import sympy as sp
->>> prismatic_xy = ScrewSystem([([1, 0, 0], [0, 0, 0], sp.oo), ([0, 1, 0], [0, 0, 0], sp.oo)])
+>>> x, y, origin = [1, 0, 0], [0, 1, 0], [0, 0, 0]
+>>> prismatic_xy = ScrewSystem([(x, origin, sp.oo), (y, origin, sp.oo)])
 >>> prismatic_xy.rank
 2
 >>> prismatic_xy.reciprocal().rank
@@ -38,10 +39,13 @@ class ScrewSystem:
 
     Parameters
     ----------
-    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples as in
+    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples as
+    in
         the mobility paper's zeroth step (s, r in m, h in m/rad or sympy.oo)
-    kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for vectors)
-    tol : relative tolerance of the rank when the screws hold floats (SVD; default 1e-9);
+    kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for
+    vectors)
+    tol : relative tolerance of the rank when the screws hold floats (SVD; default
+    1e-9);
         exact screws ignore it
     """
 
@@ -67,7 +71,8 @@ class ScrewSystem:
         kinds = {type(s) for s in screws if isinstance(s, Screw)}
         if len(kinds) > 1:
             raise TypeError(
-                f"a screw system holds one kind of screw, got {sorted(k.kind for k in kinds)}"
+                "a screw system holds one kind of screw, got "
+                f"{sorted(k.kind for k in kinds)}"
             )
         self.kind = kind or (kinds.pop() if kinds else Twist)
         self.tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
@@ -123,8 +128,8 @@ class ScrewSystem:
 
     @property
     def rank(self):
-        """The order of the system: the number of independent screws, for generic symbol values
-        (exact), or by SVD with the tolerance ``tol`` (floats)."""
+        """The order of the system: the number of independent screws, for generic symbol
+        values (exact), or by SVD with the tolerance ``tol`` (floats)."""
         if self._rank is None:
             if not self.screws:
                 self._rank = 0
@@ -137,7 +142,8 @@ class ScrewSystem:
     order = rank
 
     def basis(self):
-        """A canonical basis (list of screws), reduced so that each ends in 1 at its own pivot."""
+        """A canonical basis (list of screws), reduced so that each ends in 1 at its own
+        pivot."""
         if self._basis is None:
             if not self.screws:
                 self._basis = []
@@ -157,7 +163,8 @@ class ScrewSystem:
         return list(self._basis)
 
     def reciprocal(self):
-        """The system of every screw reciprocal to all of these (twists -> wrenches and back)."""
+        """The system of every screw reciprocal to all of these (twists -> wrenches and
+        back)."""
         other = _OTHER[self.kind]
         if not self.screws:
             return ScrewSystem([other(v) for v in sp.eye(6).columnspace()], kind=other)
@@ -188,7 +195,8 @@ class ScrewSystem:
         )
 
     def intersection(self, other):
-        """The screws common to both spans: the reciprocal of the union of the reciprocals."""
+        """The screws common to both spans: the reciprocal of the union of the
+        reciprocals."""
         self._check_kind(other, "intersection")
         return self.reciprocal().union(other.reciprocal()).reciprocal()
 
@@ -206,7 +214,8 @@ class ScrewSystem:
             )
         if other.kind is not self.kind:
             raise TypeError(
-                f"cannot take the {operation} of a {self.kind.kind} system and a {other.kind.kind} system"
+                f"cannot take the {operation} of a {self.kind.kind} system and a "
+                f"{other.kind.kind} system"
             )
 
     def __len__(self):
@@ -216,14 +225,16 @@ class ScrewSystem:
         return f"ScrewSystem({len(self.screws)} {self.kind.kind}s, rank {self.rank})"
 
     def summary(self):
-        """The system as plain text: its order and its canonical basis, one screw a line."""
+        """The system as plain text: its order and its canonical basis, one screw a
+        line."""
         rows = [str(list(s.vector)) for s in self.basis()] or ["(none)"]
         return "\n".join(
             [f"{self.kind.kind} {self.rank}-system"] + ["  " + r for r in rows]
         )
 
     def _repr_latex_(self):
-        return f"$\\text{{{self.kind.kind} {self.rank}-system: }}{latex_table(self.basis())}$"
+        name = f"{self.kind.kind} {self.rank}-system: "
+        return f"$\\text{{{name}}}{latex_table(self.basis())}$"
 
     def _repr_html_(self):
         return html_table(self.basis(), f"{self.kind.kind} {self.rank}-system")
@@ -233,7 +244,8 @@ _HEADERS = {Twist: ("ω", "v"), Wrench: ("f", "m"), Screw: ("s", "s₀")}
 
 
 def latex_table(screws):
-    """The screws as the columns of a LaTeX matrix, angular part above the linear part."""
+    """The screws as the columns of a LaTeX matrix, angular part above the linear
+    part."""
     if not screws:
         return r"\{0\}"
     return sp.latex(sp.Matrix.hstack(*(s.vector for s in screws)))
@@ -246,7 +258,8 @@ def _cell(entry):
 
 
 def html_table(screws, caption):
-    """The screws as an HTML table (one column per screw, MathML entries) under ``caption``."""
+    """The screws as an HTML table (one column per screw, MathML entries) under
+    ``caption``."""
     head = f'<table class="screwkit-system"><caption>{caption}</caption>'
     if not screws:
         return head + "<tr><td>(no screw: the zero system)</td></tr></table>"
