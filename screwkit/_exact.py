@@ -502,14 +502,13 @@ class _Plan:
         self.order = math.lcm(2 * self.base[sp.pi], 4) if sp.pi in kinds else 1
         self.kummer = all(a is sp.I or _is_root(a) and a.exp.q == 2 for a in self.atoms)
         self.meet = None  # (M, real) when the atoms' field and Q(z) share more than QQ
-        if self.atoms and self.order > 1:
+        if self.atoms and self.order > 1 and not self.kummer:  # roots: _cyclotomic_sqrt
             ramified = set().union(*(_ramified(a, self.kummer) for a in self.atoms))
             shared = ramified & _primes(self.order)
             M = math.prod(p ** sp.multiplicity(p, self.order) for p in shared)
             real = all(a.is_extended_real for a in self.atoms)
             if M > 1 and not (real and M in (3, 4, 6)):
                 self.meet = (M, real)
-                self.kummer = False
         self.fields = []  # (atoms, minimal polynomial, representations) for each group
         if self.atoms and not self.kummer:
             if self.meet:
@@ -598,10 +597,16 @@ def _sample_points(generators):
     points = []
     for k in range(_SAMPLE_POINTS):
         value = {}
+        z = _primitive_root_of_unity(plan.order, prime, rng) if plan.order > 1 else None
         if plan.kummer and plan.atoms:
+            roots = dict(plan.kummer_roots)
+            if z is not None:  # the square roots that Q(zeta_N) holds: Gauss sums in z
+                for p in roots:
+                    root = _cyclotomic_sqrt(p, z, plan.order, prime)
+                    roots[p] = roots[p] if root is None else root
             for a in plan.atoms:
                 radicand = sp.Integer(-1) if a is sp.I else a.base
-                root = _root_of_rational(radicand, plan.kummer_roots, prime)
+                root = _root_of_rational(radicand, roots, prime)
                 value[a] = root if a is sp.I else pow(root, int(a.exp.p), prime)
         eta = None
         for (group, _, reps), roots in zip(plan.fields, plan.field_roots):
@@ -612,7 +617,6 @@ def _sample_points(generators):
         bases = {}
         for u in plan.units:
             if plan.kinds[u] == "pi":
-                z = _primitive_root_of_unity(plan.order, prime, rng)
                 if plan.meet:
                     z = _agree(z, plan, eta, prime)  # the one group ends with zeta_M
                 w = pow(z, plan.order // (2 * plan.base[u]), prime)
@@ -644,6 +648,32 @@ def _sample_points(generators):
             [value[g] if g in value else rng.randrange(1, prime) for g in generators]
         )
     return prime, points
+
+
+def _cyclotomic_sqrt(p, z, N, prime):
+    """The value of sqrt(p) (p a prime or -1) in Q(zeta_N) at zeta_N -> z, or None when
+    Q(zeta_N) does not hold it (then its square root is independent of z: Kummer).
+
+    sqrt(-1) = zeta_4, sqrt(2) = zeta_8 + 1/zeta_8, and for an odd prime the Gauss sum
+    g = sum (a/p) zeta_p^a is sqrt(p) (p = 1 mod 4) or i sqrt(p) (p = 3 mod 4).
+    """
+    i = pow(z, N // 4, prime)
+    if p == -1:
+        return i
+    if p == 2:
+        if N % 8:
+            return None
+        w = pow(z, N // 8, prime)
+        return (w + pow(w, -1, prime)) % prime
+    if N % p:
+        return None
+    zeta = pow(z, N // p, prime)
+    g, power = 0, 1
+    for a in range(1, p):
+        power = power * zeta % prime
+        g += power if pow(a, (p - 1) // 2, p) == 1 else -power
+    g %= prime
+    return g if p % 4 == 1 else -i * g % prime
 
 
 def _agree(z, plan, target, prime):

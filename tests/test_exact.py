@@ -268,3 +268,43 @@ def test_rank_and_null_space_agree_with_sympy(radicals):
             )
         if N:  # the same space: stacking both bases adds nothing
             assert sp.Matrix.hstack(*N, *expected).rank(simplify=True) == len(N)
+
+
+CYCLOTOMIC = [
+    sp.I,
+    sp.sqrt(2),
+    sp.sqrt(7),
+    sp.sqrt(3),
+    sp.cos(sp.pi / 16),
+    sp.sin(sp.pi / 7),
+    sp.cos(sp.pi / 7),
+    sp.sqrt(2 + sp.sqrt(2)),
+    sp.cos(sp.pi / 12),
+]
+
+
+def test_square_roots_beside_multiples_of_pi_agree_with_a_60_digit_rank():
+    # sqrt(7) and sqrt(-1) lie in Q(exp(i pi/7), i): their sample values must be the
+    # Gauss sums of the root of unity that sin(pi/7) and cos(pi/7) come from
+    t = sp.pi / 7
+    product = sp.I * sp.sin(t) * sp.sin(2 * t) * sp.sin(3 * t)
+    assert exact_rank([[product, 1], [sp.sqrt(-7) / 8, 1]]) == 1
+    assert (
+        exact_rank(
+            [[sp.cos(sp.pi / 16) ** 2, 1], [(1 + sp.sqrt(2 + sp.sqrt(2)) / 2) / 2, 1]]
+        )
+        == 1
+    )
+    rng = random.Random(1)
+    deficient = 0
+    for _ in range(40):
+        pool = rng.sample(CYCLOTOMIC, 3)
+        row = [
+            rng.randint(-2, 2) + rng.choice(pool) * rng.choice(pool) for _ in range(3)
+        ]
+        weight = rng.choice(pool) * rng.choice(pool) + rng.randint(-1, 1)
+        rows = [row, [sp.expand(weight * e) for e in row], [rng.choice(pool), 1, 0]]
+        expected = reference_rank.rank(rows)
+        assert exact_rank(rows) == expected, rows
+        deficient += expected < 3
+    assert deficient > 10
