@@ -6,12 +6,17 @@ notebooks/NAME.ipynb (generated from it by `make notebooks`, stored with outputs
   - the .ipynb's cells equal the .md's: same cell types, sources and tags, in the same order;
   - no code line of a chapter is longer than 88 characters;
   - no code cell carries an nbval comment (nbval's cell tags do that job, unseen by readers);
+  - every chapter with code opens with the cell that installs screwkit where it is
+    missing (`if importlib.util.find_spec("screwkit") is None: %pip install ...`);
+  - no printed output line of a stored notebook (streams, plain text shown as text) is
+    longer than 88 characters, the page column's width in code characters;
 and, with --built DIR (the HTML book, e.g. _build/html), unless:
   - no page contains the text "NBVAL";
   - no code line of a code cell (its <pre> block) is longer than 88 characters.
 
 Usage: python .ci/check_sources.py [--notebooks notebooks] [--built _build/html]
 """
+
 import argparse
 import glob
 import os
@@ -22,6 +27,16 @@ import jupytext
 import nbformat
 
 MAX_LINE = 88
+INSTALL_TEST = 'importlib.util.find_spec("screwkit") is None'
+# what a page shows as text, not as HTML, an image or math
+_RICH = (
+    "text/html",
+    "text/latex",
+    "text/markdown",
+    "image/png",
+    "image/svg+xml",
+    "image/jpeg",
+)
 
 
 def _inputs(cell):
@@ -39,7 +54,9 @@ def _compare(source_path, notebook_path):
         )
         where = f"{notebook_path}: cell {i}"
         if want_type != got_type:
-            problems.append(f"{where} is a {got_type} cell, {source_path} has a {want_type} cell")
+            problems.append(
+                f"{where} is a {got_type} cell, {source_path} has a {want_type} cell"
+            )
         elif want_source != got_source:
             problems.append(f"{where} ({got_type}): source differs from {source_path}")
         elif want_tags != got_tags:
@@ -70,6 +87,45 @@ def _code_lines(source_path):
     return problems
 
 
+def _installs_screwkit(source_path):
+    """A problem unless the first code cell installs screwkit where it is missing."""
+    code = [
+        cell for cell in jupytext.read(source_path).cells if cell.cell_type == "code"
+    ]
+    if not code or (
+        INSTALL_TEST in code[0].source and "%pip install" in code[0].source
+    ):
+        return []
+    return [
+        f"{source_path}: the first code cell does not install screwkit where it is "
+        "missing (on Colab); copy the first code cell of another chapter "
+        f"(`if {INSTALL_TEST}:` then `%pip install ...`)"
+    ]
+
+
+def _output_lines(notebook_path):
+    """Printed output lines of a stored notebook wider than the page column."""
+    problems = []
+    for i, cell in enumerate(nbformat.read(notebook_path, 4).cells):
+        for output in cell.get("outputs", []) if cell.cell_type == "code" else []:
+            data = output.get("data", {})
+            if output.output_type == "stream":
+                text = output.get("text", "")
+            elif output.output_type == "error":
+                text = f"{output.get('ename', '')}: {output.get('evalue', '')}"
+            elif not any(kind in data for kind in _RICH):
+                text = data.get("text/plain", "")
+            else:
+                continue
+            for line in text.splitlines():
+                if len(line) > MAX_LINE:
+                    problems.append(
+                        f"{notebook_path}: cell {i}: output line of {len(line)} "
+                        f"characters (at most {MAX_LINE}): {line[:40]}..."
+                    )
+    return problems
+
+
 def _line_number(text_lines, line):
     """The 1-based number of `line` in the file (its first occurrence), or '?'."""
     for number, text in enumerate(text_lines, start=1):
@@ -81,8 +137,13 @@ def _line_number(text_lines, line):
 def check_notebooks(folder):
     """Problems of the chapter sources in `folder`, as sentences (empty: all good)."""
     sources = {os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.md"))}
-    notebooks = {os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.ipynb"))}
-    problems = [f"{name}.ipynb has no MyST source {name}.md" for name in sorted(notebooks - sources)]
+    notebooks = {
+        os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.ipynb"))
+    }
+    problems = [
+        f"{name}.ipynb has no MyST source {name}.md"
+        for name in sorted(notebooks - sources)
+    ]
     problems += [
         f"{name}.md has no notebook {name}.ipynb (run `make notebooks`)"
         for name in sorted(sources - notebooks)
@@ -90,7 +151,9 @@ def check_notebooks(folder):
     for name in sorted(sources):
         if name in notebooks:
             problems += _compare(name + ".md", name + ".ipynb")
+            problems += _output_lines(name + ".ipynb")
         problems += _code_lines(name + ".md")
+        problems += _installs_screwkit(name + ".md")
     return problems
 
 
@@ -149,7 +212,9 @@ def check_built(folder):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--notebooks", default="notebooks", help="folder of the chapters")
+    parser.add_argument(
+        "--notebooks", default="notebooks", help="folder of the chapters"
+    )
     parser.add_argument("--built", help="also check the HTML book in this folder")
     args = parser.parse_args(argv)
     problems = check_notebooks(args.notebooks)
@@ -158,11 +223,16 @@ def main(argv=None):
     for problem in problems:
         print(problem)
     if problems:
-        print(f"check_sources: {len(problems)} problem(s); `make notebooks` rebuilds the "
-              "notebooks from their .md sources")
+        print(
+            f"check_sources: {len(problems)} problem(s); `make notebooks` rebuilds the "
+            "notebooks from their .md sources"
+        )
         return 1
-    print("check_sources: sources, notebooks" + (" and built pages" if args.built else "")
-          + " agree")
+    print(
+        "check_sources: sources, notebooks"
+        + (" and built pages" if args.built else "")
+        + " agree"
+    )
     return 0
 
 

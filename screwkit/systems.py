@@ -1,19 +1,24 @@
 """Screw systems: spans of screws, their rank, canonical basis and reciprocal system.
 
-Exact screws (integers, rationals, symbols, pi, square roots) are computed exactly by
-:mod:`._exact`: the rank is the generic rank in the symbols. Screws given with floats (and no
-symbols) are computed by SVD: the rank counts the singular values above
-``tol * max(1, the largest)``, ``tol = 1e-9`` by default (:mod:`._numeric`), so two axes that
-differ by round-off count as one. Floats mixed with symbols are refused with a message saying
-how to write them exactly.
+Exact screws (integers, rationals, symbols, pi, algebraic numbers such as sqrt(3),
+sin(pi/5) = sqrt(5/8 - sqrt(5)/8) or a CRootOf, and sin/cos/tan of angles) are computed
+exactly by :mod:`._exact`: the rank is the generic rank in the symbols, over the field
+the entries really generate (cos(2a) and 2 cos(a)^2 - 1 are one number at a = 1/3 or
+pi/7 as for a symbol a); what cannot be decided exactly is refused with the reason.
+Screws given with floats (and no symbols) are computed by SVD: the rank counts the
+singular values above ``tol * max(1, the largest)``, ``tol = 1e-9`` by default
+(:mod:`._numeric`), so two axes that differ by round-off count as one. Floats mixed with
+symbols are refused with a message saying how to write them exactly.
 
 >>> import sympy as sp
->>> prismatic_xy = ScrewSystem([([1, 0, 0], [0, 0, 0], sp.oo), ([0, 1, 0], [0, 0, 0], sp.oo)])
+>>> x, y, origin = [1, 0, 0], [0, 1, 0], [0, 0, 0]
+>>> prismatic_xy = ScrewSystem([(x, origin, sp.oo), (y, origin, sp.oo)])
 >>> prismatic_xy.rank
 2
 >>> prismatic_xy.reciprocal().rank
 4
 """
+
 import sympy as sp
 
 from . import _exact, _numeric
@@ -34,32 +39,53 @@ class ScrewSystem:
 
     Parameters
     ----------
-    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples as in
+    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples as
+    in
         the mobility paper's zeroth step (s, r in m, h in m/rad or sympy.oo)
-    kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for vectors)
-    tol : relative tolerance of the rank when the screws hold floats (SVD; default 1e-9);
+    kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for
+    vectors)
+    tol : relative tolerance of the rank when the screws hold floats (SVD; default
+    1e-9);
         exact screws ignore it
     """
 
-    def __init__(self, screws, kind=None, tol=None, _field=None, _rank=None, _basis=None, _floats=None):
+    def __init__(
+        self,
+        screws,
+        kind=None,
+        tol=None,
+        _field=None,
+        _rank=None,
+        _basis=None,
+        _floats=None,
+    ):
         if isinstance(screws, ScrewSystem):
             screws = screws.screws
         if not isinstance(screws, (list, tuple)):
-            raise TypeError("screws must be a list of screws, 6-vectors or (s, r, h) triples, "
-                            f"got {type(screws).__name__}")
+            raise TypeError(
+                "screws must be a list of screws, 6-vectors or (s, r, h) triples, "
+                f"got {type(screws).__name__}"
+            )
         if kind is not None and kind not in _OTHER:
             raise TypeError(f"kind must be Twist, Wrench or Screw, got {kind!r}")
         kinds = {type(s) for s in screws if isinstance(s, Screw)}
         if len(kinds) > 1:
-            raise TypeError(f"a screw system holds one kind of screw, got {sorted(k.kind for k in kinds)}")
+            raise TypeError(
+                "a screw system holds one kind of screw, got "
+                f"{sorted(k.kind for k in kinds)}"
+            )
         self.kind = kind or (kinds.pop() if kinds else Twist)
         self.tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
         self.screws = [self._as_screw(s, i) for i, s in enumerate(screws)]
         if _floats is None:  # mobility() knows, and says so
-            _floats = _numeric.has_floats([e for s in self.screws for e in _exact.entries(s.vector)])
+            _floats = _numeric.has_floats(
+                [e for s in self.screws for e in _exact.entries(s.vector)]
+            )
         self.numeric = _floats
         if self.numeric:
-            self._array = _numeric.to_array([list(s.vector) for s in self.screws], "screws")
+            self._array = _numeric.to_array(
+                [list(s.vector) for s in self.screws], "screws"
+            )
         self._field = _field
         self._rank = _rank
         self._basis = _basis
@@ -81,7 +107,9 @@ class ScrewSystem:
     def field(self):
         """The exact field of the screws' coordinates (exact systems only)."""
         if self._field is None:
-            self._field = _exact.Field([e for s in self.screws for e in _exact.entries(s.vector)])
+            self._field = _exact.Field(
+                [e for s in self.screws for e in _exact.entries(s.vector)]
+            )
         return self._field
 
     @property
@@ -92,12 +120,16 @@ class ScrewSystem:
         return sp.Matrix.hstack(*(s.vector for s in self.screws))
 
     def _domain_matrix(self):
-        return self.field.matrix([_exact.entries(s.vector) for s in self.screws]) if self.screws else None
+        return (
+            self.field.matrix([_exact.entries(s.vector) for s in self.screws])
+            if self.screws
+            else None
+        )
 
     @property
     def rank(self):
-        """The order of the system: the number of independent screws, for generic symbol values
-        (exact), or by SVD with the tolerance ``tol`` (floats)."""
+        """The order of the system: the number of independent screws, for generic symbol
+        values (exact), or by SVD with the tolerance ``tol`` (floats)."""
         if self._rank is None:
             if not self.screws:
                 self._rank = 0
@@ -110,52 +142,81 @@ class ScrewSystem:
     order = rank
 
     def basis(self):
-        """A canonical basis (list of screws), reduced so that each ends in 1 at its own pivot."""
+        """A canonical basis (list of screws), reduced so that each ends in 1 at its own
+        pivot."""
         if self._basis is None:
             if not self.screws:
                 self._basis = []
             elif self.numeric:
-                rows = _numeric.as_sympy_rows(_numeric.reduced_basis(self._array, self.tol))
+                rows = _numeric.as_sympy_rows(
+                    _numeric.reduced_basis(self._array, self.tol)
+                )
                 self._basis = [self.kind._checked(sp.Matrix(6, 1, row)) for row in rows]
             else:
                 R = _exact.reduced_basis(self.field, self._domain_matrix())
-                self._basis = [self.kind._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row]))
-                               for row in R.to_list()]
+                self._basis = [
+                    self.kind._checked(
+                        sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])
+                    )
+                    for row in R.to_list()
+                ]
         return list(self._basis)
 
     def reciprocal(self):
-        """The system of every screw reciprocal to all of these (twists -> wrenches and back)."""
+        """The system of every screw reciprocal to all of these (twists -> wrenches and
+        back)."""
         other = _OTHER[self.kind]
         if not self.screws:
             return ScrewSystem([other(v) for v in sp.eye(6).columnspace()], kind=other)
         if self.numeric:
             kernel = _numeric.null_space(self._array[:, [3, 4, 5, 0, 1, 2]], self.tol)
-            basis = [other._checked(sp.Matrix(6, 1, row)) for row in _numeric.as_sympy_rows(kernel)]
-            return ScrewSystem(basis, kind=other, tol=self.tol, _rank=len(basis), _basis=basis)
+            basis = [
+                other._checked(sp.Matrix(6, 1, row))
+                for row in _numeric.as_sympy_rows(kernel)
+            ]
+            return ScrewSystem(
+                basis, kind=other, tol=self.tol, _rank=len(basis), _basis=basis
+            )
         M = self.field.matrix([_swap(_exact.entries(s.vector)) for s in self.screws])
         N = _exact.null_space(self.field, M)
-        basis = [other._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])) for row in N.to_list()]
-        return ScrewSystem(basis, kind=other, _rank=len(basis), _basis=basis, _floats=False)
+        basis = [
+            other._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row]))
+            for row in N.to_list()
+        ]
+        return ScrewSystem(
+            basis, kind=other, _rank=len(basis), _basis=basis, _floats=False
+        )
 
     def union(self, other):
         """The span of both systems (same kind)."""
         self._check_kind(other, "union")
-        return ScrewSystem(self.screws + other.screws, kind=self.kind, tol=min(self.tol, other.tol))
+        return ScrewSystem(
+            self.screws + other.screws, kind=self.kind, tol=min(self.tol, other.tol)
+        )
 
     def intersection(self, other):
-        """The screws common to both spans: the reciprocal of the union of the reciprocals."""
+        """The screws common to both spans: the reciprocal of the union of the
+        reciprocals."""
         self._check_kind(other, "intersection")
         return self.reciprocal().union(other.reciprocal()).reciprocal()
 
     def contains(self, screw):
         """True if ``screw`` lies in the span (generically)."""
-        return ScrewSystem(self.screws + [screw], kind=self.kind, tol=self.tol).rank == self.rank
+        return (
+            ScrewSystem(self.screws + [screw], kind=self.kind, tol=self.tol).rank
+            == self.rank
+        )
 
     def _check_kind(self, other, operation):
         if not isinstance(other, ScrewSystem):
-            raise TypeError(f"{operation} needs another ScrewSystem, got {type(other).__name__}")
+            raise TypeError(
+                f"{operation} needs another ScrewSystem, got {type(other).__name__}"
+            )
         if other.kind is not self.kind:
-            raise TypeError(f"cannot take the {operation} of a {self.kind.kind} system and a {other.kind.kind} system")
+            raise TypeError(
+                f"cannot take the {operation} of a {self.kind.kind} system and a "
+                f"{other.kind.kind} system"
+            )
 
     def __len__(self):
         return len(self.screws)
@@ -164,12 +225,16 @@ class ScrewSystem:
         return f"ScrewSystem({len(self.screws)} {self.kind.kind}s, rank {self.rank})"
 
     def summary(self):
-        """The system as plain text: its order and its canonical basis, one screw a line."""
+        """The system as plain text: its order and its canonical basis, one screw a
+        line."""
         rows = [str(list(s.vector)) for s in self.basis()] or ["(none)"]
-        return "\n".join([f"{self.kind.kind} {self.rank}-system"] + ["  " + r for r in rows])
+        return "\n".join(
+            [f"{self.kind.kind} {self.rank}-system"] + ["  " + r for r in rows]
+        )
 
     def _repr_latex_(self):
-        return f"$\\text{{{self.kind.kind} {self.rank}-system: }}{latex_table(self.basis())}$"
+        name = f"{self.kind.kind} {self.rank}-system: "
+        return f"$\\text{{{name}}}{latex_table(self.basis())}$"
 
     def _repr_html_(self):
         return html_table(self.basis(), f"{self.kind.kind} {self.rank}-system")
@@ -179,7 +244,8 @@ _HEADERS = {Twist: ("ω", "v"), Wrench: ("f", "m"), Screw: ("s", "s₀")}
 
 
 def latex_table(screws):
-    """The screws as the columns of a LaTeX matrix, angular part above the linear part."""
+    """The screws as the columns of a LaTeX matrix, angular part above the linear
+    part."""
     if not screws:
         return r"\{0\}"
     return sp.latex(sp.Matrix.hstack(*(s.vector for s in screws)))
@@ -192,14 +258,17 @@ def _cell(entry):
 
 
 def html_table(screws, caption):
-    """The screws as an HTML table (one column per screw, MathML entries) under ``caption``."""
-    head = f"<table class=\"screwkit-system\"><caption>{caption}</caption>"
+    """The screws as an HTML table (one column per screw, MathML entries) under
+    ``caption``."""
+    head = f'<table class="screwkit-system"><caption>{caption}</caption>'
     if not screws:
         return head + "<tr><td>(no screw: the zero system)</td></tr></table>"
     angular, linear = _HEADERS[type(screws[0])]
     rows = []
     for k in range(6):
         label = f"{angular if k < 3 else linear}<sub>{'xyz'[k % 3]}</sub>"
-        cells = "".join(f"<td style=\"text-align:center\">{_cell(s.vector[k])}</td>" for s in screws)
+        cells = "".join(
+            f'<td style="text-align:center">{_cell(s.vector[k])}</td>' for s in screws
+        )
         rows.append(f"<tr><th>{label}</th>{cells}</tr>")
     return head + "".join(rows) + "</table>"
