@@ -222,8 +222,8 @@ def _path(links, joints, base_link, tip_link):
     for name, link in (("base_link", base_link), ("tip_link", tip_link)):
         if link is not None and link not in links:
             raise ValueError(
-                f"{name} {link!r} is not a link of the URDF; its links are "
-                f"{', '.join(sorted(links))}"
+                f"{name} must be a link of the URDF (its links are "
+                f"{', '.join(sorted(links))}), got {link!r}"
             )
     base = roots[0] if base_link is None else base_link
     if tip_link is None:

@@ -537,6 +537,15 @@ IK_AND_MORE = [
         TypeError,
         "links",
     ),
+    row("from_urdf-None", lambda: sk.Chain.from_urdf(None), TypeError, "source"),
+    row(
+        "from_urdf-tip-unknown",
+        lambda: sk.Chain.from_urdf('<robot name="r"><link name="a"/></robot>', None, "b"),
+        ValueError,
+        "tip_link",
+    ),
+    row("structure-str", lambda: sk.ik.structure("puma"), TypeError, "chain"),
+    row("structure-planar", lambda: sk.ik.structure(arm()), ValueError, "chain"),
 ]
 
 CASES = (
