@@ -236,4 +236,4 @@ def test_square_roots_keep_their_products_exact():
         assert ScrewSystem([first, second]).rank == 1
         assert ScrewSystem([first, second]).reciprocal().rank == 5
     with pytest.raises(TypeError, match="square roots of rational"):
-        ScrewSystem([sp.Matrix([sp.sqrt(5 - sp.sqrt(5)), 1, 0, 0, 0, 0])]).rank
+        _ = ScrewSystem([sp.Matrix([sp.sqrt(5 - sp.sqrt(5)), 1, 0, 0, 0, 0])]).rank
