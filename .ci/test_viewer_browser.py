@@ -335,10 +335,13 @@ def test_keyboard_orbits_and_zooms_when_focused(page):
 def test_slider_rows_do_not_reflow_and_labels_do_not_overlap(page):
     figure_id = show(page, viewer.robot_viewer(sk.robots.puma560()), width=374)
     root = page.locator(f"[id='{figure_id}']")
-    boxes = lambda: [
-        root.locator(".screwkit-controls > *").nth(k).bounding_box()  # noqa: E731
-        for k in range(4 * 6)
-    ]
+
+    def boxes():
+        return [
+            root.locator(".screwkit-controls > *").nth(k).bounding_box()
+            for k in range(4 * 6)
+        ]
+
     before = boxes()
     for k in range(6):
         slider = root.locator("input[type=range]").nth(k)

@@ -209,7 +209,7 @@ class Revolute:
         reach."""
         rows, l1, l2 = self._exact_geometry()
         out = []
-        for c, (a, u, e0, e1), sign in zip(C, rows, signs):
+        for c, (a, _u, e0, e1), sign in zip(C, rows, signs):
             d = c - a
             K, L = sp.expand(d.dot(e0)), sp.expand(d.dot(e1))
             M = sp.expand((d.dot(d) + l1**2 - l2**2) / (2 * l1))
@@ -230,7 +230,7 @@ class Revolute:
     def rows_exact(self, C, signs):
         rows, l1, _ = self._exact_geometry()
         out = []
-        for c, solved, (a, u, e0, e1) in zip(C, self._solve_exact(C, signs), rows):
+        for c, solved, (_a, _u, e0, e1) in zip(C, self._solve_exact(C, signs), rows):
             if solved is None:
                 out.append((sp.Matrix([sp.nan] * 3), sp.Integer(1)))
                 continue
@@ -243,7 +243,7 @@ class Revolute:
     def limbs(self, C, signs):
         rows, _, _ = self._exact_geometry()
         limbs, actuated = [], []
-        for i, (c, solved, (a, u, e0, e1)) in enumerate(
+        for i, (c, solved, (a, u, _e0, _e1)) in enumerate(
             zip(C, self._solve_exact(C, signs), rows)
         ):
             if solved is None:

@@ -31,8 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import describe
-from .chains import Chain
+from ._checks import check_chain
 from .transforms import _wrap_angle, inv
 
 __all__ = ["StanfordArm", "STRUCTURE"]
@@ -96,8 +95,7 @@ class StanfordArm:
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
-        if not isinstance(chain, Chain):
-            raise TypeError(f"{name} must be a Chain, got {describe(chain)}")
+        check_chain(chain, name)
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints, got {chain.n}")
         kinds = "".join(j.value for j in chain.joints)

@@ -39,8 +39,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import describe
-from .chains import Chain, Joint
+from ._checks import check_chain
+from .chains import Joint
 from .transforms import _wrap_angle, inv
 
 __all__ = ["URArm", "STRUCTURE"]
@@ -105,8 +105,7 @@ class URArm:
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
-        if not isinstance(chain, Chain):
-            raise TypeError(f"{name} must be a Chain, got {describe(chain)}")
+        check_chain(chain, name)
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints, got {chain.n}")
         if any(j is not Joint.REVOLUTE for j in chain.joints):

@@ -30,6 +30,7 @@ import numpy as np
 from . import _sliders
 from ._checks import (
     as_float_array,
+    check_chain,
     check_positive,
     check_shape,
     check_transform,
@@ -225,10 +226,7 @@ def _numbers(array, digits=12):
 
 
 def _check_chain(chain):
-    from .chains import Chain
-
-    if not isinstance(chain, Chain):
-        raise TypeError(f"chain must be a screwkit Chain, got {type(chain).__name__}")
+    check_chain(chain)
     if chain.n < 1:
         raise ValueError(
             f"chain must have at least one link to be drawn, got {chain.n} links"

@@ -240,4 +240,4 @@ def test_square_roots_keep_their_products_exact():
               sp.Matrix([sp.sqrt(10 - 2 * sp.sqrt(5)), sp.sqrt(2), 0, 0, 0, 0])]
     assert ScrewSystem(nested).rank == 1
     with pytest.raises(TypeError, match="algebraic numbers"):
-        ScrewSystem([sp.Matrix([sp.sqrt(sp.pi), 1, 0, 0, 0, 0])]).rank
+        _ = ScrewSystem([sp.Matrix([sp.sqrt(sp.pi), 1, 0, 0, 0, 0])]).rank

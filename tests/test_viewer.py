@@ -203,7 +203,7 @@ def test_a_chain_with_no_links_is_refused():
         (
             lambda: viewer.robot_viewer("puma"),
             TypeError,
-            "chain must be a screwkit Chain, got str",
+            r"^chain must be a screwkit Chain .*, got 'puma' \(str\)$",
         ),
         (
             lambda: viewer.robot_viewer(sk.robots.planar([1, 1]), q=[0, 0, 0]),
