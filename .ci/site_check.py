@@ -35,6 +35,7 @@ Keeps a screenshot of the first chapter in _build/.
 
 Usage: python .ci/site_check.py _build/html
 """
+
 import functools
 import http.server
 import json
@@ -124,8 +125,14 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
 
 
 def chromium(browser, url, profile, *extra):
-    command = [browser, *CHROMIUM_FLAGS, f"--user-data-dir={profile}",
-               "--virtual-time-budget=20000", *extra, url]
+    command = [
+        browser,
+        *CHROMIUM_FLAGS,
+        f"--user-data-dir={profile}",
+        "--virtual-time-budget=20000",
+        *extra,
+        url,
+    ]
     result = subprocess.run(command, capture_output=True, text=True, timeout=180)
     if result.returncode != 0:
         raise RuntimeError(f"chromium failed on {url}: {result.stderr[-2000:]}")
@@ -137,7 +144,11 @@ def toc_pages(root):
     for folder in ("book", "notebooks"):
         directory = os.path.join(root, folder)
         if os.path.isdir(directory):
-            pages += sorted(os.path.join(folder, f) for f in os.listdir(directory) if f.endswith(".html"))
+            pages += sorted(
+                os.path.join(folder, f)
+                for f in os.listdir(directory)
+                if f.endswith(".html")
+            )
     return pages
 
 
@@ -157,7 +168,9 @@ def outside_requests(netlog_path, origin):
     urls = set()
     for event in log.get("events", []):
         params = event.get("params") or {}
-        if event.get("type") != start_job or params.get("initiator") != origin.rstrip("/"):
+        if event.get("type") != start_job or params.get("initiator") != origin.rstrip(
+            "/"
+        ):
             continue
         if urlsplit(params.get("url", "")).hostname not in ("127.0.0.1", "localhost"):
             urls.add(params["url"])
@@ -202,12 +215,17 @@ def check_chapter_shape(page, html):
     """A chapter page must say what the student will learn and end with a summary."""
     if not page.startswith("notebooks/"):
         return []
-    return [f"{page}: a chapter without \"{words}\"" for words, pattern in CHAPTER_SHAPE.items()
-            if not pattern.search(html)]
+    return [
+        f'{page}: a chapter without "{words}"'
+        for words, pattern in CHAPTER_SHAPE.items()
+        if not pattern.search(html)
+    ]
 
 
 # An alt text that names a file, or says nothing of what the image shows.
-PATH_LIKE = re.compile(r"(^|/)[\w.-]+\.(png|jpe?g|gif|svg|webp)$|^_images/|^data:", re.I)
+PATH_LIKE = re.compile(
+    r"(^|/)[\w.-]+\.(png|jpe?g|gif|svg|webp)$|^_images/|^data:", re.I
+)
 PLACEHOLDER_ALTS = {"", "image", "figure", "precomputed figure", "png", "output"}
 
 
@@ -218,7 +236,9 @@ def check_alt_texts(page, parser):
     for src, alt in parser.alts:
         text = (alt or "").strip()
         if alt is None or text.lower() in PLACEHOLDER_ALTS or PATH_LIKE.search(text):
-            problems.append(f"{page}: image {src[:60]} has the alt text {alt!r}, not what it shows")
+            problems.append(
+                f"{page}: image {src[:60]} has the alt text {alt!r}, not what it shows"
+            )
     return problems
 
 
@@ -237,8 +257,10 @@ def check_first_cell(root, page):
     with open(source, encoding="utf-8") as f:
         cells = [c for c in json.load(f)["cells"] if c["cell_type"] == "code"]
     if not cells or not INSTALLS_SCREWKIT.search("".join(cells[0]["source"])):
-        return [f"{page}: the first code cell does not install screwkit where it is missing "
-                "(copy the first code cell of another chapter)"]
+        return [
+            f"{page}: the first code cell does not install screwkit where it is missing "
+            "(copy the first code cell of another chapter)"
+        ]
     return []
 
 
@@ -249,8 +271,11 @@ def check_toc_built(root, toc="_toc.yml"):
         return []
     with open(toc, encoding="utf-8") as f:
         files = re.findall(r"^\s*-?\s*(?:file|root):\s*(\S+)", f.read(), re.M)
-    return [f"{name}: in _toc.yml but not built ({name}.html missing)" for name in files
-            if not os.path.exists(os.path.join(root, name + ".html"))]
+    return [
+        f"{name}: in _toc.yml but not built ({name}.html missing)"
+        for name in files
+        if not os.path.exists(os.path.join(root, name + ".html"))
+    ]
 
 
 # The parallel mechanisms of the catalogue (screwkit.robots): a chapter that analyses them with
@@ -271,8 +296,10 @@ def check_mechanism_drawings(root, page, figures):
         return []
     mechanisms = sorted(set(MECHANISM_BUILDER.findall(code)))
     if len(figures) < len(mechanisms):
-        return [f"{page}: {len(mechanisms)} mechanisms analysed ({', '.join(mechanisms)}) but only "
-                f"{len(figures)} figures: draw each one (sk.plotting.draw_mechanism)"]
+        return [
+            f"{page}: {len(mechanisms)} mechanisms analysed ({', '.join(mechanisms)}) but only "
+            f"{len(figures)} figures: draw each one (sk.plotting.draw_mechanism)"
+        ]
     return []
 
 
@@ -301,7 +328,9 @@ VISIBLE = """(selector) => [...document.querySelectorAll(selector)].filter(e => 
     return r.width > 0 && r.height > 0 && s.visibility !== "hidden" && r.right > 0
         && r.left < innerWidth && e.closest("[inert]") === null;
 }).length"""
-DIALOG_OPEN = "(id) => { const d = document.getElementById(id); return !!(d && d.open); }"
+DIALOG_OPEN = (
+    "(id) => { const d = document.getElementById(id); return !!(d && d.open); }"
+)
 TOOLTIPS = "() => [...document.querySelectorAll('.tooltip.show')].length"
 
 
@@ -309,16 +338,26 @@ def check_navigation(page, page_name, width):
     """One search; the table-of-contents and page-outline buttons open their sidebars."""
     problems = []
     where = f"{page_name} at {width} px"
-    press = (lambda locator: locator.tap()) if width < 600 else (lambda locator: locator.click())
+    press = (
+        (lambda locator: locator.tap())
+        if width < 600
+        else (lambda locator: locator.click())
+    )
     searches = page.evaluate(VISIBLE, ".search-button, .search-button-field")
     if searches != 1:
         problems.append(f"{where}: {searches} search controls in sight (want one)")
-    sidebars = (("primary", "#pst-primary-sidebar .bd-docs-nav a", 992),
-                ("secondary", "#pst-secondary-sidebar .page-toc a, #pst-secondary-sidebar nav a",
-                 1200))
+    sidebars = (
+        ("primary", "#pst-primary-sidebar .bd-docs-nav a", 992),
+        (
+            "secondary",
+            "#pst-secondary-sidebar .page-toc a, #pst-secondary-sidebar nav a",
+            1200,
+        ),
+    )
     for side, links, wide in sidebars:
         if page.locator(f"#pst-{side}-sidebar").count() == 0 or (
-                side == "secondary" and page.locator(links).count() == 0):
+            side == "secondary" and page.locator(links).count() == 0
+        ):
             continue  # a page without an outline has no outline button
         buttons = [b for b in page.locator(f".{side}-toggle").all() if b.is_visible()]
         in_sight = page.evaluate(VISIBLE, links)
@@ -332,18 +371,25 @@ def check_navigation(page, page_name, width):
                 press(buttons[0])
                 page.wait_for_timeout(400)
                 if not closed or not page.evaluate(VISIBLE, links):
-                    problems.append(f"{where}: the {side} sidebar button does not close and "
-                                    "reopen the sidebar")
+                    problems.append(
+                        f"{where}: the {side} sidebar button does not close and "
+                        "reopen the sidebar"
+                    )
             continue
         if len(buttons) != 1:
-            problems.append(f"{where}: {len(buttons)} {side} sidebar buttons in sight (want one)")
+            problems.append(
+                f"{where}: {len(buttons)} {side} sidebar buttons in sight (want one)"
+            )
             continue
         press(buttons[0])
         page.wait_for_timeout(400)
         dialog = f"pst-{side}-sidebar-modal"
         if not page.evaluate(DIALOG_OPEN, dialog) or not page.evaluate(
-                VISIBLE, f"#{dialog} a"):
-            problems.append(f"{where}: the {side} sidebar button does not open the sidebar")
+            VISIBLE, f"#{dialog} a"
+        ):
+            problems.append(
+                f"{where}: the {side} sidebar button does not open the sidebar"
+            )
         page.keyboard.press("Escape")
         page.wait_for_timeout(300)
         if page.evaluate(DIALOG_OPEN, dialog):
@@ -352,7 +398,9 @@ def check_navigation(page, page_name, width):
         page.mouse.move(width // 2, 600)
     page.wait_for_timeout(700)  # longer than the tooltips' show delay
     if page.evaluate(TOOLTIPS):
-        problems.append(f"{where}: a tooltip stays on screen after the buttons were used")
+        problems.append(
+            f"{where}: a tooltip stays on screen after the buttons were used"
+        )
     return problems
 
 
@@ -430,19 +478,27 @@ def check_layout(page, page_name, width):
         problems.append(f"{where}: the page scrolls sideways")
     for kind, name, w in layout["out"]:
         if width >= 1280 or kind in ("equation", "table"):
-            problems.append(f"{where}: {name} is {w} px wide, wider than the column ({column} px)")
+            problems.append(
+                f"{where}: {name} is {w} px wide, wider than the column ({column} px)"
+            )
         else:
             key = "wider than the column: " + kind
             counts[key] = counts.get(key, 0) + 1
     for kind, name, full, shown in layout["scrolling"]:
         counts[kind] = counts.get(kind, 0) + 1
         if width >= 1280 and kind in ("equation", "code block"):
-            notes.append(f"{where}: {kind} {name} scrolls sideways ({full} px in {shown} px)")
+            notes.append(
+                f"{where}: {kind} {name} scrolls sideways ({full} px in {shown} px)"
+            )
         elif width >= 1280:
-            problems.append(f"{where}: {kind} {name} scrolls sideways ({full} px in {shown} px)")
+            problems.append(
+                f"{where}: {kind} {name} scrolls sideways ({full} px in {shown} px)"
+            )
     if width >= 1280:
-        problems += [f"{where}: figure {src[:80]} is {w:.0f} px wide, the column {column} px"
-                     for src, w in layout["images"]]
+        problems += [
+            f"{where}: figure {src[:80]} is {w:.0f} px wide, the column {column} px"
+            for src, w in layout["images"]
+        ]
     return problems, counts, notes
 
 
@@ -452,9 +508,24 @@ def axe_source(cache):
     if not os.path.exists(script):
         npm = shutil.which("npm")
         if npm is None:
-            sys.exit("site check: npm is needed to fetch axe-core (apt-get install npm)")
-        subprocess.run([npm, "install", "--no-save", "--no-audit", "--no-fund", "--prefix", cache,
-                        f"axe-core@{AXE_VERSION}"], check=True, capture_output=True, timeout=300)
+            sys.exit(
+                "site check: npm is needed to fetch axe-core (apt-get install npm)"
+            )
+        subprocess.run(
+            [
+                npm,
+                "install",
+                "--no-save",
+                "--no-audit",
+                "--no-fund",
+                "--prefix",
+                cache,
+                f"axe-core@{AXE_VERSION}",
+            ],
+            check=True,
+            capture_output=True,
+            timeout=300,
+        )
     return script
 
 
@@ -469,10 +540,13 @@ def check_accessibility(page, page_name, axe):
     page.add_script_tag(path=axe)
     violations = page.evaluate(AXE_RUN)
     counts = {}
-    for rule, impact, nodes, _ in violations:
+    for _rule, impact, nodes, _ in violations:
         counts[impact] = counts.get(impact, 0) + nodes
-    problems = [f"{page_name}: axe {impact} {rule} on {nodes} elements ({where})"
-                for rule, impact, nodes, where in violations if impact in AXE_FAILING]
+    problems = [
+        f"{page_name}: axe {impact} {rule} on {nodes} elements ({where})"
+        for rule, impact, nodes, where in violations
+        if impact in AXE_FAILING
+    ]
     return problems, counts
 
 
@@ -520,8 +594,11 @@ def check_reader(browser, origin, pages, cache):
         chromium = p.chromium.launch(executable_path=browser, args=flags)
         for width in WIDTHS:
             phone = width < 600
-            context = chromium.new_context(viewport={"width": width, "height": 900},
-                                           has_touch=phone, is_mobile=phone)
+            context = chromium.new_context(
+                viewport={"width": width, "height": 900},
+                has_touch=phone,
+                is_mobile=phone,
+            )
             for page_name in pages:
                 page = context.new_page()
                 page.goto(origin + page_name, wait_until="load")
@@ -530,7 +607,9 @@ def check_reader(browser, origin, pages, cache):
                 problems += found
                 notes += noted
                 for kind, count in counts.items():
-                    layout_counts[(width, kind)] = layout_counts.get((width, kind), 0) + count
+                    layout_counts[(width, kind)] = (
+                        layout_counts.get((width, kind), 0) + count
+                    )
                 problems += check_navigation(page, page_name, width)
                 if width == 1280:
                     page.reload(wait_until="load")
@@ -545,17 +624,29 @@ def check_reader(browser, origin, pages, cache):
         problems += check_search(chromium, origin + pages[0])
         chromium.close()
     for width in WIDTHS:
-        kinds = {kind: n for (w, kind), n in sorted(layout_counts.items()) if w == width}
+        kinds = {
+            kind: n for (w, kind), n in sorted(layout_counts.items()) if w == width
+        }
         print(f"at {width} px, boxes that scroll sideways (by kind): {kinds or 'none'}")
     for note in notes:
         print("  " + note)
-    print("axe-core", AXE_VERSION, "violations (elements) by impact, and cold page weight:")
+    print(
+        "axe-core",
+        AXE_VERSION,
+        "violations (elements) by impact, and cold page weight:",
+    )
     for page_name in pages:
-        counts = ", ".join(f"{k} {v}" for k, v in sorted(axe_counts.get(page_name, {}).items()))
-        print(f"  {page_name}: {weights[page_name] / 1e6:.2f} MB; axe: {counts or 'none'}")
+        counts = ", ".join(
+            f"{k} {v}" for k, v in sorted(axe_counts.get(page_name, {}).items())
+        )
+        print(
+            f"  {page_name}: {weights[page_name] / 1e6:.2f} MB; axe: {counts or 'none'}"
+        )
         if weights[page_name] > PAGE_LIMIT_MB * 1e6:
-            problems.append(f"{page_name}: {weights[page_name] / 1e6:.2f} MB cold, over the "
-                            f"{PAGE_LIMIT_MB} MB limit")
+            problems.append(
+                f"{page_name}: {weights[page_name] / 1e6:.2f} MB cold, over the "
+                f"{PAGE_LIMIT_MB} MB limit"
+            )
     return problems
 
 
@@ -595,30 +686,49 @@ def check_interactive(browser, origin, pages):
             page = chromium.new_page()
             errors = []
             page.on("pageerror", lambda error: errors.append(str(error)))
-            page.on("console", lambda m: m.type == "error" and not m.location.get("url", "")
-                    .endswith("/favicon.ico") and errors.append(m.text))
+            page.on(
+                "console",
+                lambda m: (
+                    m.type == "error"
+                    and not m.location.get("url", "").endswith("/favicon.ico")
+                    and errors.append(m.text)
+                ),
+            )
             page.goto(origin + page_name, wait_until="load")
             placeholders = page.locator(
-                "script[type='application/vnd.jupyter.widget-view+json']").count()
+                "script[type='application/vnd.jupyter.widget-view+json']"
+            ).count()
             if placeholders:
-                problems.append(f"{page_name}: {placeholders} widget placeholders (blank in the book)")
-            figures = page.eval_on_selector_all("div.screwkit-viewer", "d => d.map(e => e.id)")
+                problems.append(
+                    f"{page_name}: {placeholders} widget placeholders (blank in the book)"
+                )
+            figures = page.eval_on_selector_all(
+                "div.screwkit-viewer", "d => d.map(e => e.id)"
+            )
             times = []
             for figure in figures:
-                if not page.evaluate("id => document.getElementById(id).dataset.mounted", figure):
+                if not page.evaluate(
+                    "id => document.getElementById(id).dataset.mounted", figure
+                ):
                     problems.append(f"{page_name}: figure {figure} was never drawn")
                     continue
-                count = page.locator(f"[id='{figure}'] input[type=range], [id='{figure}'] select").count()
+                count = page.locator(
+                    f"[id='{figure}'] input[type=range], [id='{figure}'] select"
+                ).count()
                 for k in range(count):
                     changed, elapsed, label = page.evaluate(MOVE_CONTROL, [figure, k])
                     times.append(elapsed)
                     if not changed:
-                        problems.append(f"{page_name}: moving {label} of {figure} changed nothing")
+                        problems.append(
+                            f"{page_name}: moving {label} of {figure} changed nothing"
+                        )
             problems += [f"{page_name}: JavaScript error: {e}" for e in errors]
             if times:
-                print(f"{page_name}: {len(figures)} interactive figures, {len(times)} controls moved, "
-                      f"redraw median {sorted(times)[len(times) // 2]:.1f} ms, "
-                      f"max {max(times):.1f} ms (goal {REDRAW_GOAL_MS} ms)")
+                print(
+                    f"{page_name}: {len(figures)} interactive figures, {len(times)} controls moved, "
+                    f"redraw median {sorted(times)[len(times) // 2]:.1f} ms, "
+                    f"max {max(times):.1f} ms (goal {REDRAW_GOAL_MS} ms)"
+                )
             page.close()
         chromium.close()
     return problems
@@ -628,7 +738,9 @@ def main(root):
     root = os.path.abspath(root)
     pages = toc_pages(root)
     if not pages:
-        sys.exit(f"site check: no pages under {root}/book or {root}/notebooks; build the book first")
+        sys.exit(
+            f"site check: no pages under {root}/book or {root}/notebooks; build the book first"
+        )
     browser = find_chromium()
     server = serve(root)
     origin = f"http://127.0.0.1:{server.server_address[1]}/"
@@ -644,34 +756,61 @@ def main(root):
             problems += check_first_cell(root, page)
             with open(os.path.join(root, page), encoding="utf-8") as f:
                 problems += check_chapter_shape(page, f.read())
-            dom = parse(chromium(browser, origin + page, os.path.join(tmp, "profile"),
-                                 "--dump-dom", f"--log-net-log={netlog}"))
+            dom = parse(
+                chromium(
+                    browser,
+                    origin + page,
+                    os.path.join(tmp, "profile"),
+                    "--dump-dom",
+                    f"--log-net-log={netlog}",
+                )
+            )
             leaks = outside_requests(netlog, origin)
-            problems += [f"{page}: request left the machine: {url}" for url in sorted(leaks)]
+            problems += [
+                f"{page}: request left the machine: {url}" for url in sorted(leaks)
+            ]
             if static.math_sources and not dom.math_containers:
                 problems.append(f"{page}: has math but MathJax typeset none of it")
             if dom.math_errors:
                 problems.append(f"{page}: MathJax reported {dom.math_errors} errors")
             figures = [src for src in dom.images if "_images/" in src]
             if page.startswith("notebooks/") and not figures:
-                problems.append(f"{page}: a chapter page without a figure (no cell output image)")
+                problems.append(
+                    f"{page}: a chapter page without a figure (no cell output image)"
+                )
             problems += check_mechanism_drawings(root, page, figures)
-            print(f"{page}: {dom.math_containers} math, {len(figures)} figures, "
-                  f"{len(static.links)} links, {len(leaks)} outside requests")
+            print(
+                f"{page}: {dom.math_containers} math, {len(figures)} figures, "
+                f"{len(static.links)} links, {len(leaks)} outside requests"
+            )
         shot_page = next((p for p in pages if p.startswith("notebooks/")), pages[0])
         shot = os.path.join(os.path.dirname(root), "screenshot.png")
-        chromium(browser, origin + shot_page, os.path.join(tmp, "profile"),
-                 f"--screenshot={shot}", "--window-size=1280,1600", "--hide-scrollbars")
+        chromium(
+            browser,
+            origin + shot_page,
+            os.path.join(tmp, "profile"),
+            f"--screenshot={shot}",
+            "--window-size=1280,1600",
+            "--hide-scrollbars",
+        )
         print(f"screenshot of {shot_page}: {shot}")
         problems += check_interactive(browser, origin, pages)
-        problems += check_reader(browser, origin, pages, os.path.join(os.path.dirname(root),
-                                                                       ".site-check"))
+        problems += check_reader(
+            browser, origin, pages, os.path.join(os.path.dirname(root), ".site-check")
+        )
     server.shutdown()
-    problems += [f"the server had no answer for {request}" for request in sorted(QuietHandler.missing)]
-    size = sum(os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(root) for f in fs)
+    problems += [
+        f"the server had no answer for {request}"
+        for request in sorted(QuietHandler.missing)
+    ]
+    size = sum(
+        os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(root) for f in fs
+    )
     print(f"book size: {size / 1e6:.1f} MB (limit {BOOK_LIMIT_MB} MB)")
     if size > BOOK_LIMIT_MB * 1e6:
-        problems.append(f"the book is {size / 1e6:.1f} MB, over the {BOOK_LIMIT_MB} MB limit")
+        problems.append(
+            f"the book is {size / 1e6:.1f} MB, over the {BOOK_LIMIT_MB} MB limit"
+        )
     if problems:
         print("\nsite check FAILED:")
         for problem in problems:

@@ -6,6 +6,7 @@ through each limb's first joint), the platform (the polygon through each limb's 
 each limb as a polyline through its joints, and every joint's screw axis, with revolute,
 prismatic and helical joints told apart by colour, marker and line style.
 """
+
 import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
@@ -32,47 +33,66 @@ def _kind(h):
 def _check_values(limbs, values):
     """{Symbol: float} for every symbol of the limbs; keys may be symbols or their names."""
     if not isinstance(values, dict):
-        raise TypeError(f"values must be a dict {{symbol or name: number}}, got {describe(values)}")
+        raise TypeError(
+            f"values must be a dict {{symbol or name: number}}, got {describe(values)}"
+        )
     symbols = set()
     for limb in limbs:
         for s, r, h in limb:
             for part in (s, r, h):
-                symbols |= sp.sympify(part).free_symbols if not isinstance(part, (list, tuple)) \
+                symbols |= (
+                    sp.sympify(part).free_symbols
+                    if not isinstance(part, (list, tuple))
                     else set().union(*(sp.sympify(e).free_symbols for e in part))
+                )
     by_name = {str(x): x for x in symbols}
     numbers = {}
     for key, value in values.items():
         name = str(key)
         if name not in by_name:
-            raise ValueError(f"values gives a number for {name!r}, which is not a symbol of the limbs "
-                             f"(their symbols are {sorted(by_name)})")
+            raise ValueError(
+                f"values gives a number for {name!r}, which is not a symbol of the limbs "
+                f"(their symbols are {sorted(by_name)})"
+            )
         if isinstance(value, (str, bytes, bool)) or value is None:
-            raise TypeError(f"values[{name!r}] must be a real number, got {describe(value)}")
+            raise TypeError(
+                f"values[{name!r}] must be a real number, got {describe(value)}"
+            )
         try:
             number = float(value)
         except (TypeError, ValueError):
-            raise TypeError(f"values[{name!r}] must be a real number, got {describe(value)}") from None
+            raise TypeError(
+                f"values[{name!r}] must be a real number, got {describe(value)}"
+            ) from None
         if not np.isfinite(number):
             raise ValueError(f"values[{name!r}] must be finite, got {value!r}")
         numbers[by_name[name]] = number
     missing = sorted(name for name, x in by_name.items() if x not in numbers)
     if missing:
-        raise ValueError(f"values has no number for the symbol {missing[0]!r}"
-                         + (f" (nor for {missing[1:]})" if len(missing) > 1 else "")
-                         + ": give every symbol of the limbs a number")
+        raise ValueError(
+            f"values has no number for the symbol {missing[0]!r}"
+            + (f" (nor for {missing[1:]})" if len(missing) > 1 else "")
+            + ": give every symbol of the limbs a number"
+        )
     return numbers
 
 
 def _check_limbs(limbs):
     if not isinstance(limbs, (list, tuple)) or not limbs:
-        raise ValueError(f"limbs must be a non-empty list of limbs, got {describe(limbs)}")
+        raise ValueError(
+            f"limbs must be a non-empty list of limbs, got {describe(limbs)}"
+        )
     for i, limb in enumerate(limbs):
         if not isinstance(limb, (list, tuple)) or not limb:
-            raise ValueError(f"limb {i} has no joints: each limb must be a non-empty list of "
-                             f"(s, r, h) joint screws, got {limb!r}")
+            raise ValueError(
+                f"limb {i} has no joints: each limb must be a non-empty list of "
+                f"(s, r, h) joint screws, got {limb!r}"
+            )
         for j, joint in enumerate(limb):
             if not isinstance(joint, (list, tuple)) or len(joint) != 3:
-                raise TypeError(f"limb {i}, joint {j} must be an (s, r, h) triple, got {describe(joint)}")
+                raise TypeError(
+                    f"limb {i}, joint {j} must be an (s, r, h) triple, got {describe(joint)}"
+                )
 
 
 def _numeric(vector, numbers, name):
@@ -94,18 +114,22 @@ def evaluate(limbs, values):
             norm = np.linalg.norm(axis)
             if norm < 1e-12:
                 raise ValueError(f"limb {i}, joint {j}: s is zero at these values")
-            joints.append((_kind(h), axis / norm, _numeric(r, numbers, f"limb {i}, joint {j}: r")))
+            joints.append(
+                (_kind(h), axis / norm, _numeric(r, numbers, f"limb {i}, joint {j}: r"))
+            )
         result.append(joints)
     return result
 
 
 def _polygon(ax, points, color, gid):
     closed = np.vstack([points, points[:1]])
-    line, = ax.plot(*closed.T, color=color, lw=2.5, gid=gid)
+    (line,) = ax.plot(*closed.T, color=color, lw=2.5, gid=gid)
     if len(points) >= 3:
         from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-        ax.add_collection3d(Poly3DCollection([points], facecolor=color, alpha=0.2, gid=gid + "-face"))
+        ax.add_collection3d(
+            Poly3DCollection([points], facecolor=color, alpha=0.2, gid=gid + "-face")
+        )
     return line
 
 
@@ -142,7 +166,9 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
         ax = plt.figure(figsize=(5, 5)).add_subplot(projection="3d")
     points = np.array([p for limb in joints for _, _, p in limb])
     size = float(np.ptp(points, axis=0).max())
-    size = size if size > 1e-9 else 2.0  # every joint at one point (a spherical mechanism)
+    size = (
+        size if size > 1e-9 else 2.0
+    )  # every joint at one point (a spherical mechanism)
     length = size / 5 if axis_length is None else float(axis_length)
 
     _polygon(ax, np.array([limb[0][2] for limb in joints]), "0.35", "base")
@@ -158,10 +184,19 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
             seen.add(kind)
             ends = np.stack([point - 0.5 * length * axis, point + 0.5 * length * axis])
             ax.plot(*ends.T, color=colour, ls=style, lw=2, gid=f"joint-{kind}")
-            ax.scatter(*point, color=colour, marker=marker, s=30, label=label, gid=f"joint-{kind}")
+            ax.scatter(
+                *point,
+                color=colour,
+                marker=marker,
+                s=30,
+                label=label,
+                gid=f"joint-{kind}",
+            )
     if twists is not None:
         _draw_twists(ax, twists, platform.mean(axis=0), length)
-    _frame_box(ax, points, 1.6 * length if twists is not None else length)  # room for the arrows
+    _frame_box(
+        ax, points, 1.6 * length if twists is not None else length
+    )  # room for the arrows
     ax.legend(loc="upper left")  # the style's size: 9 pt in the course style
     if title:
         ax.set_title(title)
@@ -175,11 +210,15 @@ def _draw_twists(ax, twists, centre, length):
         if not isinstance(twist, Screw) or isinstance(twist, Wrench):
             raise TypeError(f"twists[{k}] must be a Twist, got {describe(twist)}")
         if twist.vector.free_symbols:
-            raise ValueError(f"twists[{k}] has symbols {sorted(map(str, twist.vector.free_symbols))}: "
-                             "substitute numbers before drawing")
+            raise ValueError(
+                f"twists[{k}] has symbols {sorted(map(str, twist.vector.free_symbols))}: "
+                "substitute numbers before drawing"
+            )
         w = np.array([float(e) for e in twist.primary])
         v = np.array([float(e) for e in twist.secondary])
-        if np.linalg.norm(w) > 1e-12:  # a rotation: along its axis, through its nearest point
+        if (
+            np.linalg.norm(w) > 1e-12
+        ):  # a rotation: along its axis, through its nearest point
             direction = w / np.linalg.norm(w)
             start = np.cross(w, v) / w.dot(w)
             start = start + direction.dot(centre - start) * direction

@@ -7,6 +7,7 @@ content column (688 px, at most ``COLUMN_WIDTH`` inches at ``DPI``) with text of
 >>> draw_frame(ax, np.eye(4), label="0")
 >>> plt.close(ax.figure)
 """
+
 import base64
 import hashlib
 import html as html_module
@@ -29,8 +30,21 @@ from ._checks import (
 )
 from ._mechanism_plot import draw_mechanism  # noqa: F401  (re-exported: sk.plotting.draw_mechanism)
 
-__all__ = ["COLUMN_WIDTH", "COURSE_STYLE", "DPI", "use_course_style", "axes3d", "draw_frame", "draw_screw_axis", "draw_screw_motion", "draw_chain", "draw_ellipsoid",
-           "draw_planar", "animation_html", "draw_mechanism"]
+__all__ = [
+    "COLUMN_WIDTH",
+    "COURSE_STYLE",
+    "DPI",
+    "use_course_style",
+    "axes3d",
+    "draw_frame",
+    "draw_screw_axis",
+    "draw_screw_motion",
+    "draw_chain",
+    "draw_ellipsoid",
+    "draw_planar",
+    "animation_html",
+    "draw_mechanism",
+]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
@@ -68,13 +82,17 @@ def use_course_style():
 
 # ---- argument checks -------------------------------------------------------------------
 
+
 def _check_axes(ax, three_d=True):
     """``ax`` must be a matplotlib Axes (a 3D one for the 3D drawings)."""
     from matplotlib.axes import Axes
     from mpl_toolkits.mplot3d import Axes3D
 
-    kind, expected = (Axes3D, "a 3D matplotlib Axes (from axes3d())") if three_d else (
-        Axes, "a matplotlib Axes")
+    kind, expected = (
+        (Axes3D, "a 3D matplotlib Axes (from axes3d())")
+        if three_d
+        else (Axes, "a matplotlib Axes")
+    )
     if not isinstance(ax, kind):
         raise TypeError(f"ax must be {expected}, got {describe(ax)}")
     return ax
@@ -85,13 +103,20 @@ def _numeric(value, name):
     if not is_symbolic(value):
         return as_float_array(value, name)
     if isinstance(value, sp.Basic) and not isinstance(value, sp.MatrixBase):
-        raise TypeError(f"{name} must be an array or matrix of numbers, got {describe(value)}")
-    matrix = sp.Matrix(value) if isinstance(value, sp.MatrixBase) else as_sympy_matrix(
-        value, name, (len(value), 1))
+        raise TypeError(
+            f"{name} must be an array or matrix of numbers, got {describe(value)}"
+        )
+    matrix = (
+        sp.Matrix(value)
+        if isinstance(value, sp.MatrixBase)
+        else as_sympy_matrix(value, name, (len(value), 1))
+    )
     if matrix.free_symbols:
         symbols = ", ".join(sorted(str(s) for s in matrix.free_symbols))
-        raise TypeError(f"{name} must be numeric to be drawn, got the symbols {symbols}; "
-                        "substitute values first")
+        raise TypeError(
+            f"{name} must be numeric to be drawn, got the symbols {symbols}; "
+            "substitute values first"
+        )
     try:
         return as_float_array(np.array(matrix.evalf(), dtype=float), name)
     except TypeError:
@@ -117,7 +142,9 @@ def _alpha(alpha):
 def _one_q(chain, q):
     q = chain.check_q(q, "q")
     if q.ndim != 1:
-        raise ValueError(f"q must be one joint vector of shape ({chain.n},), got shape {q.shape}")
+        raise ValueError(
+            f"q must be one joint vector of shape ({chain.n},), got shape {q.shape}"
+        )
     return q
 
 
@@ -131,13 +158,19 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
     """
     limits = as_float_array(limits, "limits")
     if limits.shape != (3, 2):
-        raise ValueError(f"limits must be three (min, max) pairs, shape (3, 2), got shape {limits.shape}")
+        raise ValueError(
+            f"limits must be three (min, max) pairs, shape (3, 2), got shape {limits.shape}"
+        )
     if np.any(limits[:, 0] >= limits[:, 1]):
-        raise ValueError(f"limits must have min < max on each axis, got {limits.tolist()}")
+        raise ValueError(
+            f"limits must have min < max on each axis, got {limits.tolist()}"
+        )
     if ax is None:
         size = as_float_array(figsize, "figsize")
         if size.shape != (2,) or np.any(size <= 0):
-            raise ValueError(f"figsize must be (width, height) in inches, both positive, got {figsize!r}")
+            raise ValueError(
+                f"figsize must be (width, height) in inches, both positive, got {figsize!r}"
+            )
         figure = plt.figure(figsize=tuple(size))
         ax = figure.add_subplot(projection="3d")
     _check_axes(ax)
@@ -156,7 +189,9 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
     _check_axes(ax)
     T = check_transform(_numeric(T, "T"), "T")
     if T.ndim != 2:
-        raise ValueError(f"T must be one transform of shape (4, 4), got shape {T.shape}")
+        raise ValueError(
+            f"T must be one transform of shape (4, 4), got shape {T.shape}"
+        )
     length, alpha = check_positive(length, "length"), _alpha(alpha)
     origin = T[:3, 3]
     for k in range(3):
@@ -164,9 +199,19 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
         ax.plot(*np.stack([origin, tip]).T, color=AXIS_COLOURS[k], lw=2, alpha=alpha)
     if label is not None:
         # beside the origin, away from the x and y arrows, on a pale patch over the links
-        ax.text(*(origin - 0.35 * length * (T[:3, 0] + T[:3, 1])), f"{{{label}}}", fontsize=10,
-                ha="center", va="center",
-                bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8})
+        ax.text(
+            *(origin - 0.35 * length * (T[:3, 0] + T[:3, 1])),
+            f"{{{label}}}",
+            fontsize=10,
+            ha="center",
+            va="center",
+            bbox={
+                "boxstyle": "round,pad=0.1",
+                "fc": "white",
+                "ec": "none",
+                "alpha": 0.8,
+            },
+        )
 
 
 def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
@@ -189,7 +234,9 @@ def draw_screw_motion(ax, Ts, every=1, length=0.2):
     _check_axes(ax)
     Ts = check_transform(as_float_array(Ts, "Ts"), "Ts")
     if Ts.ndim != 3 or len(Ts) < 1:
-        raise ValueError(f"Ts must be a batch of transforms of shape (N, 4, 4), N >= 1, got shape {Ts.shape}")
+        raise ValueError(
+            f"Ts must be a batch of transforms of shape (N, 4, 4), N >= 1, got shape {Ts.shape}"
+        )
     every = check_integer(every, "every", minimum=1)
     length = check_positive(length, "length")
     ax.plot(*Ts[:, :3, 3].T, color="0.4", lw=1)
@@ -197,7 +244,16 @@ def draw_screw_motion(ax, Ts, every=1, length=0.2):
         draw_frame(ax, T, length=length, alpha=0.6)
 
 
-def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1.0, frame_length=0.1):
+def draw_chain(
+    ax,
+    chain,
+    q,
+    color="tab:gray",
+    frames=False,
+    label=None,
+    alpha=1.0,
+    frame_length=0.1,
+):
     """Draw a serial chain at the joint vector q (n,) as a stick figure.
 
     Links join the frame origins; each joint axis is a short black segment; the tool frame is
@@ -211,10 +267,20 @@ def draw_chain(ax, chain, q, color="tab:gray", frames=False, label=None, alpha=1
     alpha, frame_length = _alpha(alpha), check_positive(frame_length, "frame_length")
     T = chain.frames(q)
     origins = T[:, :3, 3]
-    ax.plot(*origins.T, "-o", color=color, lw=4, ms=5, alpha=alpha, label=label,
-            solid_capstyle="round")
+    ax.plot(
+        *origins.T,
+        "-o",
+        color=color,
+        lw=4,
+        ms=5,
+        alpha=alpha,
+        label=label,
+        solid_capstyle="round",
+    )
     for z, o in zip(*chain.joint_axes(q)):
-        ax.plot(*np.stack([o - 0.04 * z, o + 0.04 * z]).T, color="k", lw=2.5, alpha=alpha)
+        ax.plot(
+            *np.stack([o - 0.04 * z, o + 0.04 * z]).T, color="k", lw=2.5, alpha=alpha
+        )
     labels = _shared_origin_labels(origins) if frames else {}
     for k, frame in enumerate(T):
         if frames or k == len(T) - 1:
@@ -246,11 +312,15 @@ def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha
         raise ValueError(f"radii must be >= 0, got {radii.tolist()}")
     axes = as_float_array(axes, "axes")
     if axes.shape != (3, 3):
-        raise ValueError(f"axes must have shape (3, 3), one axis per column, got shape {axes.shape}")
+        raise ValueError(
+            f"axes must have shape (3, 3), one axis per column, got shape {axes.shape}"
+        )
     scale, alpha = check_positive(scale, "scale"), _alpha(alpha)
     u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 37), np.linspace(0, np.pi, 19))
     sphere = np.stack([np.cos(u) * np.sin(v), np.sin(u) * np.sin(v), np.cos(v)])
-    surface = centre[:, None, None] + scale * np.einsum("ij,j,jkl->ikl", axes, radii, sphere)
+    surface = centre[:, None, None] + scale * np.einsum(
+        "ij,j,jkl->ikl", axes, radii, sphere
+    )
     return ax.plot_surface(*surface, color=color, alpha=alpha, linewidth=0)
 
 
@@ -261,8 +331,16 @@ def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0
     q = _one_q(chain, q)
     base, alpha = _vector(base, "base", size=2), _alpha(alpha)
     origins = chain.frames(q)[:, :2, 3] + base
-    (line,) = ax.plot(*origins.T, "-o", color=color, lw=3, ms=4, alpha=alpha, label=label,
-                      solid_capstyle="round")
+    (line,) = ax.plot(
+        *origins.T,
+        "-o",
+        color=color,
+        lw=3,
+        ms=4,
+        alpha=alpha,
+        label=label,
+        solid_capstyle="round",
+    )
     return line
 
 
@@ -314,8 +392,11 @@ def _describe_figure(figure, count):
     """A sentence on what an animated figure shows, from its axes' titles, labels and legends."""
     panels = []
     for ax in figure.get_axes():
-        words = ax.get_title() or (f"{ax.get_ylabel()} against {ax.get_xlabel()}"
-                                   if ax.get_xlabel() and ax.get_ylabel() else "")
+        words = ax.get_title() or (
+            f"{ax.get_ylabel()} against {ax.get_xlabel()}"
+            if ax.get_xlabel() and ax.get_ylabel()
+            else ""
+        )
         legend = ax.get_legend()
         if legend is not None:
             names = ", ".join(t.get_text() for t in legend.get_texts())
@@ -323,7 +404,9 @@ def _describe_figure(figure, count):
         if words:
             panels.append(words)
     what = "; ".join(panels) if panels else "a matplotlib figure"
-    what = re.sub(r"[$\\{}^]", "", what.replace("$^2$", "\u00b2").replace("$^3$", "\u00b3"))
+    what = re.sub(
+        r"[$\\{}^]", "", what.replace("$^2$", "\u00b2").replace("$^3$", "\u00b3")
+    )
     return f"An animation of {count} frames: {what}."
 
 
@@ -341,13 +424,18 @@ def animation_html(animation, alt=None, label="Frame of the animation"):
 
     if not isinstance(animation, Animation):
         raise TypeError(
-            f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}")
+            f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}"
+        )
     for value, name in ((alt, "alt"), (label, "label")):
         if value is not None and not (isinstance(value, str) and value.strip()):
             raise TypeError(f"{name} must be a non-empty string, got {describe(value)}")
     exported = animation.to_jshtml()
-    frames = [uri.replace("\\\n", "") for uri in re.findall(
-        r'frames\[\d+\] = "(data:image/\w+;base64,[^"]*)"', exported, re.S)]
+    frames = [
+        uri.replace("\\\n", "")
+        for uri in re.findall(
+            r'frames\[\d+\] = "(data:image/\w+;base64,[^"]*)"', exported, re.S
+        )
+    ]
     if not frames:
         raise RuntimeError("matplotlib exported the animation without frames")
     png = base64.b64decode(frames[0].split(",", 1)[1][:48])  # the header: width, height
@@ -356,7 +444,15 @@ def animation_html(animation, alt=None, label="Frame of the animation"):
     text = alt if alt is not None else _describe_figure(animation._fig, count)
     digest = hashlib.sha256("".join(frames).encode()).hexdigest()[:12]
     return _PLAYER.format(
-        id=f"screwkit-animation-{digest}", first=frames[0], width=width, height=height,
-        alt=html_module.escape(text, quote=True), alt_source="given" if alt else "auto",
-        label=html_module.escape(label, quote=True), last=count - 1, count=count,
-        frames=json.dumps(frames[1:]), interval=int(round(animation._interval)))
+        id=f"screwkit-animation-{digest}",
+        first=frames[0],
+        width=width,
+        height=height,
+        alt=html_module.escape(text, quote=True),
+        alt_source="given" if alt else "auto",
+        label=html_module.escape(label, quote=True),
+        last=count - 1,
+        count=count,
+        frames=json.dumps(frames[1:]),
+        interval=int(round(animation._interval)),
+    )

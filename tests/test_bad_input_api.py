@@ -540,7 +540,9 @@ IK_AND_MORE = [
     row("from_urdf-None", lambda: sk.Chain.from_urdf(None), TypeError, "source"),
     row(
         "from_urdf-tip-unknown",
-        lambda: sk.Chain.from_urdf('<robot name="r"><link name="a"/></robot>', None, "b"),
+        lambda: sk.Chain.from_urdf(
+            '<robot name="r"><link name="a"/></robot>', None, "b"
+        ),
         ValueError,
         "tip_link",
     ),

@@ -9,11 +9,11 @@ systems.
 import random
 
 import pytest
+import reference_rank
 import sympy as sp
 from sympy import QQ, ZZ
 from sympy.simplify.fu import TR8
 
-import reference_rank
 from screwkit import _exact
 
 x, y, theta, phi = sp.symbols("x y theta phi")

@@ -236,8 +236,10 @@ def test_square_roots_keep_their_products_exact():
         assert ScrewSystem([first, second]).rank == 1
         assert ScrewSystem([first, second]).reciprocal().rank == 5
     # nested roots are algebraic numbers too (issue 23): sqrt(10 - 2 sqrt 5) = sqrt 2 sqrt(5 - sqrt 5)
-    nested = [sp.Matrix([sp.sqrt(5 - sp.sqrt(5)), 1, 0, 0, 0, 0]),
-              sp.Matrix([sp.sqrt(10 - 2 * sp.sqrt(5)), sp.sqrt(2), 0, 0, 0, 0])]
+    nested = [
+        sp.Matrix([sp.sqrt(5 - sp.sqrt(5)), 1, 0, 0, 0, 0]),
+        sp.Matrix([sp.sqrt(10 - 2 * sp.sqrt(5)), sp.sqrt(2), 0, 0, 0, 0]),
+    ]
     assert ScrewSystem(nested).rank == 1
     with pytest.raises(TypeError, match="algebraic numbers"):
         _ = ScrewSystem([sp.Matrix([sp.sqrt(sp.pi), 1, 0, 0, 0, 0])]).rank

@@ -5,9 +5,9 @@ import itertools
 import random
 
 import pytest
+import reference_rank
 import sympy as sp
 
-import reference_rank
 import screwkit as sk
 from screwkit import ScrewSystem, Twist
 
@@ -151,6 +151,6 @@ def test_each_pair_of_related_multiples_of_pi_over_7():
 
 def test_refusals_say_why():
     with pytest.raises(TypeError, match="Schanuel"):
-        ScrewSystem([[sp.pi, sp.sin(1), 0, 0, 0, 0]]).rank
+        _ = ScrewSystem([[sp.pi, sp.sin(1), 0, 0, 0, 0]]).rank
     with pytest.raises(TypeError, match="cannot decide exactly"):
-        ScrewSystem([[sp.cos(sp.E), 1, 0, 0, 0, 0]]).rank
+        _ = ScrewSystem([[sp.cos(sp.E), 1, 0, 0, 0, 0]]).rank

@@ -265,9 +265,13 @@ def test_refusals_name_the_joint_or_link(text, pattern):
 
 
 def test_unknown_links_and_bad_arguments():
-    with pytest.raises(ValueError, match="tip_link must be a link of the URDF .*, got 'hand'"):
+    with pytest.raises(
+        ValueError, match="tip_link must be a link of the URDF .*, got 'hand'"
+    ):
         sk.Chain.from_urdf(TWO_LINK, tip_link="hand")
-    with pytest.raises(ValueError, match="base_link must be a link of the URDF .*, got 'hand'"):
+    with pytest.raises(
+        ValueError, match="base_link must be a link of the URDF .*, got 'hand'"
+    ):
         sk.Chain.from_urdf(TWO_LINK, base_link="hand")
     with pytest.raises(ValueError, match="tip_link 'l1' is not below base_link 'l2'"):
         sk.Chain.from_urdf(TWO_LINK, base_link="l2", tip_link="l1")
