@@ -10,6 +10,7 @@ virtual environment of its own. The supported range is `requires-python` in pypr
 keep `SUPPORTED` here, the Makefile, the classifiers and the README in step with it.
 Each session prints how long it took.
 """
+
 import os
 import re
 import shutil
@@ -23,7 +24,10 @@ SUPPORTED = ["3.11", "3.12", "3.13"]
 LOWEST, HIGHEST = SUPPORTED[0], SUPPORTED[-1]
 
 # Tests of the course rather than of screwkit: other Pythons and the network.
-COURSE_ONLY_TESTS = ["tests/test_binder.py"]
+COURSE_ONLY_TESTS = [
+    "tests/test_binder.py",
+    "tests/test_course_content.py",  # reads the chapters (notebooks/), not in the snapshot
+]
 
 # Prints each test file (argv) that imports a module this environment lacks: a test of the
 # course (nbformat, jupytext, ...), not of screwkit, when screwkit is installed alone.
@@ -55,8 +59,10 @@ def _use_pyenv_interpreters():
     versions = Path(os.environ.get("PYENV_ROOT", Path.home() / ".pyenv")) / "versions"
     links = HERE / ".nox" / "pythons"
     for minor in SUPPORTED:
-        found = sorted(versions.glob(f"{minor}.*/bin/python{minor}"),
-                       key=lambda path: [int(n) for n in re.findall(r"\d+", path.parts[-3])])
+        found = sorted(
+            versions.glob(f"{minor}.*/bin/python{minor}"),
+            key=lambda path: [int(n) for n in re.findall(r"\d+", path.parts[-3])],
+        )
         if found:
             links.mkdir(parents=True, exist_ok=True)
             link = links / f"python{minor}"
@@ -100,9 +106,14 @@ def course(session):
     # Binder's resolution does not depend on this session's Python: `make test` checks it once
     binder = "tests/test_binder.py::test_binder_requirements_resolve_for_binders_python"
     with _Timer(session):
-        session.run("make", "test", f"VENV={session.virtualenv.location}",
-                    f"PYTHON={session.virtualenv.location}/bin/python", external=True,
-                    env={"PYTEST_ADDOPTS": f"--deselect {binder}"})
+        session.run(
+            "make",
+            "test",
+            f"VENV={session.virtualenv.location}",
+            f"PYTHON={session.virtualenv.location}/bin/python",
+            external=True,
+            env={"PYTEST_ADDOPTS": f"--deselect {binder}"},
+        )
 
 
 @nox.session(python=LOWEST, venv_backend="uv")
@@ -119,19 +130,39 @@ def unit_lowest(session):
         snapshot.mkdir()
         for name in ["pyproject.toml", "README.md"]:
             shutil.copy(HERE / name, snapshot / name)
-        for name in ["screwkit", "tests"]:
-            shutil.copytree(HERE / name, snapshot / name,
-                            ignore=shutil.ignore_patterns("__pycache__"))
-        session.install("--resolution", "lowest-direct", str(snapshot),
-                        *_pins("pytest", "hypothesis"))
-        session.run("uv", "pip", "list", "--python", session.virtualenv.location,
-                    external=True, silent=False)
+        for name in ["screwkit", "tests", "tools"]:
+            shutil.copytree(
+                HERE / name,
+                snapshot / name,
+                ignore=shutil.ignore_patterns("__pycache__"),
+            )
+        session.install(
+            "--resolution",
+            "lowest-direct",
+            str(snapshot),
+            *_pins("pytest", "hypothesis"),
+        )
+        session.run(
+            "uv",
+            "pip",
+            "list",
+            "--python",
+            session.virtualenv.location,
+            external=True,
+            silent=False,
+        )
         session.chdir(snapshot)
-        tests = sorted(str(path.relative_to(snapshot)) for path in snapshot.glob("tests/test_*.py"))
+        tests = sorted(
+            str(path.relative_to(snapshot)) for path in snapshot.glob("tests/test_*.py")
+        )
         report = session.run("python", "-c", _NEEDS_MISSING_MODULE, *tests, silent=True)
-        course_only = COURSE_ONLY_TESTS + [line.split()[0] for line in report.splitlines()]
-        session.log("not run here (course tests, needing missing modules): "
-                    + "; ".join(report.splitlines()))
+        course_only = COURSE_ONLY_TESTS + [
+            line.split()[0] for line in report.splitlines()
+        ]
+        session.log(
+            "not run here (course tests, needing missing modules): "
+            + "; ".join(report.splitlines())
+        )
         ignores = [f"--ignore={path}" for path in course_only]
         # `pytest`, not `python -m pytest`, so that the tests import the installed screwkit
         session.run("pytest", "tests", *ignores, "-q", *session.posargs)

@@ -169,7 +169,8 @@ def test_joint_twists_of_a_singular_puma_are_an_exact_screw_system():
     assert floats.reciprocal().rank == 1
     assert np.linalg.matrix_rank(puma.space_jacobian(q_float)) == 5
     assert np.allclose(
-        [list(t.vector) for t in floats.screws], puma.space_jacobian(q_float).T
+        np.array([list(t.vector) for t in floats.screws], dtype=float),
+        puma.space_jacobian(q_float).T,
     )
     assert puma.joint_twists(np.array([0, 0.7, -1.5, 1.0, 0.5, 0])).rank == 6
     assert puma.joint_twists(np.zeros((3, 6))).shape == (3, 6, 6)
