@@ -273,7 +273,7 @@ class SphericalWristArm:
         return forward, above, flip
 
     def wrist_sine(self, q5):
-        """|w4 x R(w5, q5) w6|: the sine of the angle between axes 4 and 6 at q5 (...), the
+        """``|w4 x R(w5, q5) w6|``: the sine of the angle between axes 4 and 6 at q5 (...), the
         measure of the wrist singularity (see :data:`WRIST_TOL`)."""
         w4, w5, w6 = self.w[3], self.w[4], self.w[5]
         c5, s5 = np.cos(q5)[..., None], np.sin(q5)[..., None]
