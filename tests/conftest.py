@@ -10,6 +10,7 @@ locally: ``HYPOTHESIS_PROFILE=explore pytest tests``.
 """
 
 import os
+import sys
 
 import numpy as np
 import pytest
@@ -64,3 +65,13 @@ def figure():
     fig = plt.figure()
     yield fig
     plt.close(fig)
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    """Close every matplotlib figure a test leaves open (figures made inside a table's
+    calls, too), so that no test sees another's."""
+    yield
+    plt = sys.modules.get("matplotlib.pyplot")
+    if plt is not None:
+        plt.close("all")

@@ -8,6 +8,7 @@ Each computation is registered, as the engine's own tests register theirs, so th
 these keys too when the two files run together, as in ``make test``.
 """
 
+import functools
 import math
 import tomllib
 from importlib import resources
@@ -76,11 +77,15 @@ def _():
     )
 
 
-PUMA = sk.robots.puma560()
+@functools.cache
+def puma():
+    return sk.robots.puma560()
 
 
 def _puma_det(q3, q2=0.5):
-    return np.linalg.det(PUMA.geometric_jacobian(np.array([0.3, q2, q3, 0.2, 0.9, 0])))
+    return np.linalg.det(
+        puma().geometric_jacobian(np.array([0.3, q2, q3, 0.2, 0.9, 0]))
+    )
 
 
 @reference("jacobians", 4)
@@ -92,17 +97,23 @@ def test_jacobians_4_the_other_root_is_singular_too():
     # folded, the wrist centre is also near the shoulder plane (a2 = d4): det J touches
     # zero there without changing sign, so test the smallest singular value instead
     folded = float(sp.sympify(key("jacobians", 4)["alternatives"][0]))
-    J = PUMA.geometric_jacobian(np.array([0.3, 0.5, folded, 0.2, 0.9, 0]))
+    J = puma().geometric_jacobian(np.array([0.3, 0.5, folded, 0.2, 0.9, 0]))
     assert np.linalg.svd(J, compute_uv=False)[-1] < 1e-12
 
 
-TWO_LINK = sk.robots.planar([0.5, 0.3])
-J_TWO_LINK = TWO_LINK.geometric_jacobian(np.array([0, np.pi / 2]))[:2]
+@functools.cache
+def two_link():
+    return sk.robots.planar([0.5, 0.3])
+
+
+@functools.cache
+def j_two_link():
+    return two_link().geometric_jacobian(np.array([0, np.pi / 2]))[:2]
 
 
 @reference("jacobians", 5)
 def _():
-    return (J_TWO_LINK.T @ np.array([0.0, -10.0]))[0]
+    return (j_two_link().T @ np.array([0.0, -10.0]))[0]
 
 
 @reference("jacobians", 6)
@@ -110,26 +121,31 @@ def _():
     angles = np.linspace(0, 2 * np.pi, 200_001)
     u = np.stack([np.cos(angles), np.sin(angles)], axis=1)
     # the force of unit torque norm in direction u is u / |J^T u|
-    return (1 / np.linalg.norm(u @ J_TWO_LINK, axis=1)).max()
+    return (1 / np.linalg.norm(u @ j_two_link(), axis=1)).max()
 
 
 # --- kawasaki_workspace ---
 
-KAWASAKI = sk.robots.kawasaki_cx210l()
+
+@functools.cache
+def kawasaki():
+    return sk.robots.kawasaki_cx210l()
+
+
 SHOULDER = np.array([0.3, 0, 0.55])  # the axis of joint 2 at theta1 = 0
 
 
 @reference("kawasaki_workspace", 3)
 def _():
     def wrist_x(theta2):  # the wrist centre's distance from z0, signed
-        return KAWASAKI.frames(np.array([0, theta2, 0, 0, 0, 0]))[4, 0, 3]
+        return kawasaki().frames(np.array([0, theta2, 0, 0, 0, 0]))[4, 0, 3]
 
     return bisect(wrist_x, np.radians(30), np.radians(60))
 
 
 def _reach(theta3):
     q = np.array([0, np.radians(100), theta3, 0, 0, 0])
-    return np.linalg.norm(KAWASAKI.fk(q)[:3, 3] - SHOULDER)
+    return np.linalg.norm(kawasaki().fk(q)[:3, 3] - SHOULDER)
 
 
 @reference("kawasaki_workspace", 4)
@@ -147,7 +163,7 @@ def _():
 def _():
     def det(theta3):
         q = np.array([0, np.radians(60), theta3, 0, np.pi / 2, 0])
-        return np.linalg.det(KAWASAKI.geometric_jacobian(q))
+        return np.linalg.det(kawasaki().geometric_jacobian(q))
 
     return bisect(det, np.radians(-80), np.radians(-72))
 
@@ -160,7 +176,7 @@ def _():
     for theta2 in np.radians(np.linspace(80, 100, 201)):
         Q = np.zeros((theta3.size, 6))
         Q[:, 1], Q[:, 2] = theta2, theta3
-        best = max(best, KAWASAKI.frames(Q)[:, 4, 2, 3].max())
+        best = max(best, kawasaki().frames(Q)[:, 4, 2, 3].max())
     return best
 
 
@@ -174,18 +190,22 @@ def _():
     return rates[0]
 
 
-THREE = sk.robots.planar([1, 1, 1])
+@functools.cache
+def three_link():
+    return sk.robots.planar([1, 1, 1])
+
+
 Q_THREE = np.radians([0, 90, -90])
 
 
 @reference("redundancy", 5)
 def _():
-    return THREE.manipulability(Q_THREE, rows="planar")
+    return three_link().manipulability(Q_THREE, rows="planar")
 
 
 @reference("redundancy", 6)
 def _():
-    J = THREE.geometric_jacobian(Q_THREE)[:2]
+    J = three_link().geometric_jacobian(Q_THREE)[:2]
     null = np.linalg.svd(J)[2][
         -1
     ]  # the right singular vector of the zero singular value

@@ -1,6 +1,8 @@
 """Bad input to the inverse kinematics: one row per case, the error type and the argument the
 message names."""
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -8,22 +10,49 @@ import sympy as sp
 import screwkit as sk
 from screwkit import ik
 
-PUMA = sk.robots.puma560()
-T0 = PUMA.fk(np.zeros(6))
+
+@functools.cache
+def puma():
+    return sk.robots.puma560()
+
+
+@functools.cache
+def t0():
+    return puma().fk(np.zeros(6))
+
+
 SCALED = np.diag([1.0, 2.0, 1.0, 1.0])
 Z_AXIS = [0, 0, 1, 0, 0, 0]
-PLANAR_3R = sk.robots.planar([1.0, 1.0, 1.0])
+
+
+@functools.cache
+def planar_3r():
+    return sk.robots.planar([1.0, 1.0, 1.0])
+
+
 # a 6R chain whose wrist axes do not meet: the PUMA with a4 = 0.1
-SKEW_WRIST = sk.Chain(
-    list(PUMA.links[:3])
-    + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
-    + list(PUMA.links[4:])
-)
+@functools.cache
+def skew_wrist():
+    return sk.Chain(
+        list(puma().links[:3])
+        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
+        + list(puma().links[4:])
+    )
+
+
 # a 6R chain whose joints 2 and 3 are not parallel
-TWISTED = sk.Chain(
-    [PUMA.links[0], sk.Link.revolute(a=0.4318, alpha=0.3)] + list(PUMA.links[2:])
-)
-PRISMATIC = sk.Chain([sk.Link.prismatic()] + list(PUMA.links[1:]))
+@functools.cache
+def twisted():
+    return sk.Chain(
+        [puma().links[0], sk.Link.revolute(a=0.4318, alpha=0.3)]
+        + list(puma().links[2:])
+    )
+
+
+@functools.cache
+def prismatic():
+    return sk.Chain([sk.Link.prismatic()] + list(puma().links[1:]))
+
 
 CASES = [
     # (id, call, error type, pattern the message must contain)
@@ -37,73 +66,73 @@ CASES = [
     ("T a string", lambda: ik.puma560_ik("pose"), TypeError, "T must be"),
     (
         "T a batch",
-        lambda: ik.puma560_ik(np.stack([T0, T0])),
+        lambda: ik.puma560_ik(np.stack([t0(), t0()])),
         ValueError,
         r"T must be one pose of shape \(4, 4\)",
     ),
     (
         "T wrong shape",
-        lambda: ik.analytic_ik_all(PUMA, np.eye(3)),
+        lambda: ik.analytic_ik_all(puma(), np.eye(3)),
         ValueError,
         r"T must have shape \(4 x 4\)",
     ),
     (
         "T wrong batch shape",
-        lambda: ik.analytic_ik_all(PUMA, np.zeros((2, 3, 4, 4))),
+        lambda: ik.analytic_ik_all(puma(), np.zeros((2, 3, 4, 4))),
         ValueError,
         r"T must have shape \(4, 4\) or \(N, 4, 4\)",
     ),
     (
         "last row",
-        lambda: ik.analytic_ik(PUMA, np.vstack([T0[:3], [0, 0, 1, 1]])),
+        lambda: ik.analytic_ik(puma(), np.vstack([t0()[:3], [0, 0, 1, 1]])),
         ValueError,
         r"T must have last row",
     ),
     (
         "label unknown",
-        lambda: ik.puma560_ik(T0).by_config("xyz"),
+        lambda: ik.puma560_ik(t0()).by_config("xyz"),
         ValueError,
         "config must be one of lun",
     ),
     (
         "near wrong length",
-        lambda: ik.puma560_ik(T0, near=[0, 0]),
+        lambda: ik.puma560_ik(t0(), near=[0, 0]),
         ValueError,
         "near must be a joint vector of 6 entries",
     ),
     (
         "within_limits not bool",
-        lambda: ik.puma560_ik(T0, within_limits="yes"),
+        lambda: ik.puma560_ik(t0(), within_limits="yes"),
         TypeError,
         "within_limits must be True or False",
     ),
     (
         "robot not a chain",
-        lambda: ik.puma560_ik(T0, robot="puma"),
+        lambda: ik.puma560_ik(t0(), robot="puma"),
         TypeError,
         r"robot must be a screwkit Chain .*got 'puma'",
     ),
     (
         "chain of 3 joints",
-        lambda: ik.analytic_ik(PLANAR_3R, T0),
+        lambda: ik.analytic_ik(planar_3r(), t0()),
         ValueError,
         "chain must have 6 joints for the closed form, got 3",
     ),
     (
         "prismatic joint",
-        lambda: ik.analytic_ik(PRISMATIC, T0),
+        lambda: ik.analytic_ik(prismatic(), t0()),
         ValueError,
         "chain must have revolute joints only",
     ),
     (
         "wrist axes miss",
-        lambda: ik.analytic_ik(SKEW_WRIST, T0),
+        lambda: ik.analytic_ik(skew_wrist(), t0()),
         ValueError,
         "chain must have a spherical wrist: the axes of joints 4, 5 and 6 must meet",
     ),
     (
         "joints 2, 3 not parallel",
-        lambda: ik.analytic_ik(TWISTED, T0),
+        lambda: ik.analytic_ik(twisted(), t0()),
         ValueError,
         "chain must have parallel axes for joints 2 and 3",
     ),
@@ -121,43 +150,43 @@ CASES = [
     ),
     (
         "numeric q0 short",
-        lambda: ik.numeric_ik(PUMA, T0, np.zeros(4)),
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(4)),
         ValueError,
         "q0 must have 6 entries",
     ),
     (
         "numeric chain",
-        lambda: ik.numeric_ik("puma", T0, np.zeros(6)),
+        lambda: ik.numeric_ik("puma", t0(), np.zeros(6)),
         TypeError,
         "chain must be a screwkit Chain",
     ),
     (
         "numeric T batch",
-        lambda: ik.numeric_ik(PUMA, np.stack([T0, T0]), np.zeros(6)),
+        lambda: ik.numeric_ik(puma(), np.stack([t0(), t0()]), np.zeros(6)),
         ValueError,
         "T must be one pose",
     ),
     (
         "numeric frame",
-        lambda: ik.numeric_ik(PUMA, T0, np.zeros(6), frame="world"),
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), frame="world"),
         ValueError,
         "frame must be 'body' or 'space'",
     ),
     (
         "numeric tol",
-        lambda: ik.numeric_ik(PUMA, T0, np.zeros(6), tol=-1),
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), tol=-1),
         ValueError,
         "tol must be a positive number",
     ),
     (
         "numeric iterations",
-        lambda: ik.numeric_ik(PUMA, T0, np.zeros(6), max_iterations=0),
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), max_iterations=0),
         ValueError,
         "max_iterations must be a positive integer",
     ),
     (
         "numeric damping",
-        lambda: ik.numeric_ik(PUMA, T0, np.zeros(6), damping=-0.1),
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), damping=-0.1),
         ValueError,
         "damping must be None or a number >= 0",
     ),

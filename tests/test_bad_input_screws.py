@@ -1,6 +1,8 @@
 """Bad input to screws, screw systems, mobility and joints: each case raises the documented
 error, and its message names the argument at fault."""
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -12,7 +14,13 @@ from screwkit.systems import ScrewSystem
 
 X, Y, Z, O = [1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]
 theta = sp.Symbol("theta_11")
-LIMBS = sk.robots.planar_3rrr()
+
+
+@functools.cache
+def planar_limbs():
+    return sk.robots.planar_3rrr()
+
+
 REVOLUTE = (Z, O, 0)
 
 SCREW_CASES = [  # (call, error, a phrase the message must contain)
@@ -153,55 +161,63 @@ MOBILITY_CASES = [
         ValueError,
         "tol must be a positive number below 1",
     ),
-    (lambda: sk.mobility(LIMBS, at=[(theta, 0)]), TypeError, "at must be a dict"),
-    (lambda: sk.mobility(LIMBS, at={"theta_11": 0}), TypeError, "at must be a dict"),
     (
-        lambda: sk.mobility(LIMBS, at={sp.Symbol("phi"): 0}),
+        lambda: sk.mobility(planar_limbs(), at=[(theta, 0)]),
+        TypeError,
+        "at must be a dict",
+    ),
+    (
+        lambda: sk.mobility(planar_limbs(), at={"theta_11": 0}),
+        TypeError,
+        "at must be a dict",
+    ),
+    (
+        lambda: sk.mobility(planar_limbs(), at={sp.Symbol("phi"): 0}),
         ValueError,
         r"at gives values for \['phi'\]",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={sp.Symbol("theta_11", real=True): 0}),
+        lambda: sk.mobility(planar_limbs(), at={sp.Symbol("theta_11", real=True): 0}),
         ValueError,
         "at gives values for",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: float("nan")}),
+        lambda: sk.mobility(planar_limbs(), at={theta: float("nan")}),
         ValueError,
         r"at\[theta_11\] must be finite",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: np.inf}),
+        lambda: sk.mobility(planar_limbs(), at={theta: np.inf}),
         ValueError,
         r"at\[theta_11\] must be finite",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: sp.nan}),
+        lambda: sk.mobility(planar_limbs(), at={theta: sp.nan}),
         ValueError,
         r"at\[theta_11\] must be finite",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: sp.oo}),
+        lambda: sk.mobility(planar_limbs(), at={theta: sp.oo}),
         ValueError,
         r"at\[theta_11\] must be finite",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: "0.3"}),
+        lambda: sk.mobility(planar_limbs(), at={theta: "0.3"}),
         TypeError,
         r"at\[theta_11\] must be a number",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: None}),
+        lambda: sk.mobility(planar_limbs(), at={theta: None}),
         TypeError,
         r"at\[theta_11\] must be a number",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: True}),
+        lambda: sk.mobility(planar_limbs(), at={theta: True}),
         TypeError,
         r"at\[theta_11\] must be a number",
     ),
     (
-        lambda: sk.mobility(LIMBS, at={theta: [0.1, 0.2]}),
+        lambda: sk.mobility(planar_limbs(), at={theta: [0.1, 0.2]}),
         TypeError,
         r"at\[theta_11\] must be a number",
     ),

@@ -1,6 +1,8 @@
 """Closed-form IK of arms with a spherical wrist (PUMA 560 of any size, with base and tool; the
 Kawasaki CX210L): round trips, labels, singular configurations, reach, limits; numeric IK."""
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -19,28 +21,47 @@ from screwkit.ik import (
     puma560_ik_all,
 )
 
-PUMA = sk.robots.puma560()
+
+@functools.cache
+def puma():
+    return sk.robots.puma560()
+
+
 A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
-KAWASAKI = sk.robots.kawasaki_cx210l()
+
+
+@functools.cache
+def kawasaki():
+    return sk.robots.kawasaki_cx210l()
 
 
 def puma_with(d1=0.0, d6=0.0):
     """The PUMA 560 with a pedestal d1 and a flange d6 (the Robotics Toolbox has d1 = 0.672)."""
-    links = list(PUMA.links)
+    links = list(puma().links)
     links[0] = sk.Link.revolute(d=d1, alpha=sp.pi / 2, qlim=links[0].qlim)
     links[5] = sk.Link.revolute(d=d6, qlim=links[5].qlim)
     return sk.Chain(links, name="PUMA 560 with d1")
 
 
-PEDESTAL = puma_with(d1=0.6718, d6=0.0562)
-MOUNTED = PUMA.with_base(
-    sk.transl(0.2, -0.1, 0.6) @ sk.homogeneous(sk.rotx(0.4))
-).with_tool(sk.transl(0.0, 0.02, 0.15) @ sk.homogeneous(sk.roty(0.3)))
+@functools.cache
+def pedestal():
+    return puma_with(d1=0.6718, d6=0.0562)
+
+
+@functools.cache
+def mounted():
+    return (
+        puma()
+        .with_base(sk.transl(0.2, -0.1, 0.6) @ sk.homogeneous(sk.rotx(0.4)))
+        .with_tool(sk.transl(0.0, 0.02, 0.15) @ sk.homogeneous(sk.roty(0.3)))
+    )
+
+
 ARMS = {
-    "puma": PUMA,
-    "puma_d1": PEDESTAL,
-    "puma_base_tool": MOUNTED,
-    "kawasaki": KAWASAKI,
+    "puma": puma,
+    "puma_d1": pedestal,
+    "puma_base_tool": mounted,
+    "kawasaki": kawasaki,
 }
 
 
@@ -80,11 +101,11 @@ generic = arrays(float, 6, elements=st.floats(-np.pi, np.pi, allow_nan=False)).f
 @settings(max_examples=300, deadline=None)
 @given(generic)
 def test_puma_round_trip_and_corke_labels(q):
-    T = PUMA.fk(q)
+    T = puma().fk(q)
     solutions = puma560_ik(T)
     assert [s.config for s in solutions] == list(CONFIGURATIONS)
     Q = np.array([s.q for s in solutions])
-    assert np.max(np.abs(PUMA.fk(Q) - T)) < 1e-10  # every solution reaches the pose
+    assert np.max(np.abs(puma().fk(Q) - T)) < 1e-10  # every solution reaches the pose
     distances = np.abs(wrapped(Q[:, None] - Q[None])).max(axis=-1) + np.eye(8)
     assert distances.min() > 1e-6  # eight distinct solutions
     assert puma560_config(q) == corke_label(q)
@@ -95,7 +116,7 @@ def test_puma_round_trip_and_corke_labels(q):
 
 @pytest.mark.parametrize("name", sorted(ARMS))
 def test_round_trip_on_random_poses(name):
-    robot = ARMS[name]
+    robot = ARMS[name]()
     q = np.random.default_rng(5).uniform(-np.pi, np.pi, (3000, 6))
     T = robot.fk(q)
     Q = analytic_ik_all(robot, T)
@@ -116,7 +137,7 @@ def test_round_trip_on_random_poses(name):
 
 def test_labels_of_solutions_are_their_branches():
     q = np.random.default_rng(8).uniform(-np.pi, np.pi, (500, 6))
-    for robot in (PEDESTAL, KAWASAKI):
+    for robot in (pedestal(), kawasaki()):
         Q = analytic_ik_all(robot, robot.fk(q))
         poses, branches = np.nonzero(~np.isnan(Q[..., 0]))
         labels = configuration(robot, Q[poses, branches])
@@ -124,24 +145,24 @@ def test_labels_of_solutions_are_their_branches():
 
 
 def test_kawasaki_paper_poses():
-    for q in KAWASAKI.configurations.values():
-        solutions = analytic_ik(KAWASAKI, KAWASAKI.fk(q))
+    for q in kawasaki().configurations.values():
+        solutions = analytic_ik(kawasaki(), kawasaki().fk(q))
         assert 4 <= len(solutions) <= 8
-        same = solutions.by_config(configuration(KAWASAKI, q))
+        same = solutions.by_config(configuration(kawasaki(), q))
         assert np.allclose(
             same.q[:3], q[:3], atol=1e-10
         )  # q5 = 0: the wrist rule sets q4
-        assert np.allclose(KAWASAKI.fk(same.q), KAWASAKI.fk(q), atol=1e-10)
+        assert np.allclose(kawasaki().fk(same.q), kawasaki().fk(q), atol=1e-10)
 
 
 def test_rtb_pedestal_pose_needs_its_robot():
     """The Robotics Toolbox's PUMA has d1 = 0.672 m: its poses are solved with that robot."""
     q = np.radians([10, 30, -80, 20, 40, 60])
-    T = PEDESTAL.fk(q)
-    with_robot = puma560_ik(T, robot=PEDESTAL)
+    T = pedestal().fk(q)
+    with_robot = puma560_ik(T, robot=pedestal())
     assert np.allclose(with_robot.by_config(corke_label(q)).q, q, atol=1e-9)
     for s in puma560_ik(T):  # the d1 = 0 model answers for its own pose, 0.67 m lower
-        assert not np.allclose(PEDESTAL.fk(s.q), T, atol=1e-3)
+        assert not np.allclose(pedestal().fk(s.q), T, atol=1e-3)
 
 
 def test_shoulder_singularity_issue_16():
@@ -158,10 +179,10 @@ def test_shoulder_singularity_issue_16():
             np.full(200, 0.6),
         ]
     )
-    T = PUMA.fk(q)
+    T = puma().fk(q)
     Q = puma560_ik_all(T)
     assert not np.any(np.isnan(Q))
-    assert np.max(np.abs(PUMA.fk(Q.reshape(-1, 6)) - np.repeat(T, 8, axis=0))) < 1e-10
+    assert np.max(np.abs(puma().fk(Q.reshape(-1, 6)) - np.repeat(T, 8, axis=0))) < 1e-10
     for k in range(0, 200, 7):
         solutions = puma560_ik(T[k])
         assert len(solutions) == 8
@@ -176,9 +197,9 @@ def test_shoulder_singularity_issue_16():
 
 @pytest.mark.parametrize("name", ["zero", "ready", "stretch"])
 def test_named_wrist_singular_poses_round_trip(name):
-    q = PUMA.configurations[name]
+    q = puma().configurations[name]
     assert q[3] == q[4] == 0
-    solutions = puma560_ik(PUMA.fk(q))
+    solutions = puma560_ik(puma().fk(q))
     label = puma560_config(q)
     assert label.endswith("f")  # q5 = 0 and cos q4 >= 0
     assert np.allclose(wrapped(solutions.by_config(label).q - q), 0, atol=1e-12)
@@ -186,7 +207,7 @@ def test_named_wrist_singular_poses_round_trip(name):
 
 def test_wrist_singularity_rule():
     q = np.array([0.2, 0.4, -1.0, 0.7, 0.0, 0.3])  # q5 = 0: only q4 + q6 = 1.0 is fixed
-    solutions = puma560_ik(PUMA.fk(q))
+    solutions = puma560_ik(puma().fk(q))
     arm_elbow = corke_label(q)[:2]
     assert {s.config for s in solutions if "wrist" in s.singular} == {
         arm_elbow + "n",
@@ -199,7 +220,7 @@ def test_wrist_singularity_rule():
     assert np.allclose(flip.q, [0.2, 0.4, -1.0, 0.0, 0.0, 1.0], atol=1e-12)  # q4 = 0
     assert np.allclose(no_flip.q, [0.2, 0.4, -1.0, np.pi, 0.0, 1.0 - np.pi], atol=1e-12)
     for s in solutions:
-        assert np.allclose(PUMA.fk(s.q), PUMA.fk(q), atol=1e-10)
+        assert np.allclose(puma().fk(s.q), puma().fk(q), atol=1e-10)
         assert puma560_config(s.q) == s.config  # the tie rule labels both
 
 
@@ -207,13 +228,13 @@ def test_elbow_singularity():
     """a3 sin q3 + d4 cos q3 = 0: the forearm in line with the upper arm (stretched or folded)."""
     for q3 in (np.arctan2(-D4, A3), np.arctan2(D4, -A3)):
         q = np.array([0.3, 0.5, q3, 0.4, 0.7, 0.2])
-        solutions = puma560_ik(PUMA.fk(q))
+        solutions = puma560_ik(puma().fk(q))
         assert len(solutions) == 8 and all("elbow" in s.singular for s in solutions)
         assert np.allclose(
             wrapped(solutions.by_config(puma560_config(q)).q - q), 0, atol=1e-6
         )
         for s in solutions:
-            assert np.allclose(PUMA.fk(s.q), PUMA.fk(q), atol=1e-10)
+            assert np.allclose(puma().fk(s.q), puma().fk(q), atol=1e-10)
 
 
 def test_kawasaki_wrist_centre_on_axis_1():
@@ -222,7 +243,7 @@ def test_kawasaki_wrist_centre_on_axis_1():
 
     # the wrist centre (the origin of frame 4) is on axis 1 where its x in frame 1 is 0: bisect
     def x4(q3):
-        return KAWASAKI.frames(np.array([0, q2, q3, 0, 0, 0]))[4, 0, 3]
+        return kawasaki().frames(np.array([0, q2, q3, 0, 0, 0]))[4, 0, 3]
 
     low, high = -1.5, 1.5
     assert np.sign(x4(low)) != np.sign(x4(high))
@@ -232,14 +253,14 @@ def test_kawasaki_wrist_centre_on_axis_1():
             (middle, high) if np.sign(x4(middle)) == np.sign(x4(low)) else (low, middle)
         )
     q = np.array([0.0, q2, low, 0.3, 0.6, 0.9])
-    solutions = analytic_ik(KAWASAKI, KAWASAKI.fk(q))
+    solutions = analytic_ik(kawasaki(), kawasaki().fk(q))
     assert solutions and all(s.q[0] == 0 for s in solutions)
     assert all("shoulder" in s.singular for s in solutions)
     assert np.allclose(
-        wrapped(solutions.by_config(configuration(KAWASAKI, q)).q - q), 0, atol=1e-6
+        wrapped(solutions.by_config(configuration(kawasaki(), q)).q - q), 0, atol=1e-6
     )
     for s in solutions:
-        assert np.allclose(KAWASAKI.fk(s.q), KAWASAKI.fk(q), atol=1e-9)
+        assert np.allclose(kawasaki().fk(s.q), kawasaki().fk(q), atol=1e-9)
 
 
 def test_out_of_reach_has_a_reason():
@@ -257,27 +278,27 @@ def test_one_angle_convention_and_limits_as_an_option():
     # q2 = -170 deg is outside [-45, 225] deg but 190 deg is the same angle and inside
     q = np.radians([10, -170, -60, 20, 30, 40])
     label = puma560_config(q)
-    default = puma560_ik(PUMA.fk(q)).by_config(label)
-    moved = puma560_ik(PUMA.fk(q), within_limits=True).by_config(label)
-    batch = puma560_ik_all(PUMA.fk(q))[CONFIGURATIONS.index(label)]
+    default = puma560_ik(puma().fk(q)).by_config(label)
+    moved = puma560_ik(puma().fk(q), within_limits=True).by_config(label)
+    batch = puma560_ik_all(puma().fk(q))[CONFIGURATIONS.index(label)]
     assert np.allclose(default.q, batch) and np.isclose(default.q[1], np.radians(-170))
     assert default.within_limits and moved.within_limits
-    assert np.isclose(moved.q[1], np.radians(190)) and PUMA.within_limits(moved.q)
+    assert np.isclose(moved.q[1], np.radians(190)) and puma().within_limits(moved.q)
 
 
 def test_within_limits_filters_and_explains():
     q = np.array([0.3, 0.5, -2.0, 0.4, 0.7, 0.2])
-    solutions = puma560_ik(PUMA.fk(q))
-    allowed = puma560_ik(PUMA.fk(q), within_limits=True)
+    solutions = puma560_ik(puma().fk(q))
+    allowed = puma560_ik(puma().fk(q), within_limits=True)
     assert 0 < len(allowed) < len(solutions)
-    assert all(PUMA.within_limits(s.q) for s in allowed)
+    assert all(puma().within_limits(s.q) for s in allowed)
     assert solutions.nearest(q + 0.01).config == "ruf"
-    assert puma560_ik(PUMA.fk(q), near=q + 0.01)[0].config == "ruf"
+    assert puma560_ik(puma().fk(q), near=q + 0.01)[0].config == "ruf"
     # joint 1 limited to +-10 deg and a pose at q1 = 90 deg: the arms have q1 = 90 deg and
     # about -90 deg, so nothing is left, and the reason says so
     tight = sk.Chain(
         [sk.Link.revolute(alpha=sp.pi / 2, qlim=np.radians([-10, 10]))]
-        + list(PUMA.links[1:])
+        + list(puma().links[1:])
     )
     T = tight.fk(np.radians([90, 60, -100, 0, 40, 0]))
     assert len(puma560_ik(T, robot=tight)) == 8
@@ -291,9 +312,9 @@ def test_batch_answers_and_chunks():
     q = np.random.default_rng(3).uniform(
         -np.pi, np.pi, (9000, 6)
     )  # more than one chunk
-    T = KAWASAKI.fk(q)
-    Q = analytic_ik_all(KAWASAKI, T)
-    answers = analytic_ik(KAWASAKI, T[[0, 8999]])
+    T = kawasaki().fk(q)
+    Q = analytic_ik_all(kawasaki(), T)
+    answers = analytic_ik(kawasaki(), T[[0, 8999]])
     for answer, row in zip(answers, Q[[0, 8999]]):
         assert [s.config for s in answer] == [
             c for c, r in zip(CONFIGURATIONS, row) if not np.isnan(r[0])
@@ -303,7 +324,9 @@ def test_batch_answers_and_chunks():
 # ---- numeric ----------------------------------------------------------------------------
 
 
-PLANAR = sk.robots.planar([1.0, 1.0])
+@functools.cache
+def planar_2r():
+    return sk.robots.planar([1.0, 1.0])
 
 
 def body_jacobian_2r(theta2):
@@ -320,19 +343,21 @@ def test_newton_raphson_example_6_1():
     target = sk.transl(
         np.cos(np.pi / 6) - 0.5, 0.5 + np.cos(np.pi / 6), 0
     ) @ sk.homogeneous(sk.rotz(2 * np.pi / 3))
-    assert np.allclose(target, PLANAR.fk(np.radians([30, 90])))
+    assert np.allclose(target, planar_2r().fk(np.radians([30, 90])))
     theta0 = np.radians([0.0, 30.0])
     # the first error twist by hand: the rotation left is 90 deg about z, and v follows from
     # exp_twist; check the solver's first step against pinv(J_b) V_b
-    V = sk.ik.pose_error(PLANAR.fk(theta0), target)
+    V = sk.ik.pose_error(planar_2r().fk(theta0), target)
     assert np.allclose(V[:3], [0, 0, np.pi / 2])
-    assert np.allclose(sk.exp_twist(V, 1.0), np.linalg.inv(PLANAR.fk(theta0)) @ target)
+    assert np.allclose(
+        sk.exp_twist(V, 1.0), np.linalg.inv(planar_2r().fk(theta0)) @ target
+    )
     one = sk.ik.numeric_ik(
-        PLANAR, target, theta0, damping=0, max_iterations=1, within_limits=False
+        planar_2r(), target, theta0, damping=0, max_iterations=1, within_limits=False
     )
     expected = theta0 + np.linalg.pinv(body_jacobian_2r(theta0[1])) @ V
     assert np.allclose(one.q, expected, atol=1e-12)
-    result = sk.ik.numeric_ik(PLANAR, target, theta0, damping=0)
+    result = sk.ik.numeric_ik(planar_2r(), target, theta0, damping=0)
     assert result.success and np.allclose(result.q, np.radians([30, 90]), atol=1e-9)
     assert result.iterations <= 6
 
@@ -340,12 +365,12 @@ def test_newton_raphson_example_6_1():
 @pytest.mark.parametrize("frame", ["body", "space"])
 def test_numeric_ik_puma(frame):
     q = np.array([0.3, 0.5, -2.0, 0.4, 0.7, 0.2])
-    T = PUMA.fk(q)
-    result = sk.ik.numeric_ik(PUMA, T, q + 0.2, frame=frame)
+    T = puma().fk(q)
+    result = sk.ik.numeric_ik(puma(), T, q + 0.2, frame=frame)
     assert result.success and result.error < 1e-10 and result.iterations < 50
     assert np.allclose(wrapped(result.q - q), 0, atol=1e-8)
     starts = np.random.default_rng(2).uniform(-np.pi, np.pi, (40, 6))
-    batch = sk.ik.numeric_ik(PUMA, T, starts, frame=frame, within_limits=False)
+    batch = sk.ik.numeric_ik(puma(), T, starts, frame=frame, within_limits=False)
     assert batch.q.shape == (40, 6) and batch.success.mean() > 0.7
     closed = np.array([s.q for s in puma560_ik(T)])
     for qk in batch.q[batch.success]:  # every converged start lands on one of the eight
@@ -354,23 +379,25 @@ def test_numeric_ik_puma(frame):
 
 def test_numeric_ik_unreachable_never_succeeds():
     result = sk.ik.numeric_ik(
-        PUMA, sk.transl(1.5, 0.0, 0.2), np.zeros(6), max_iterations=100
+        puma(), sk.transl(1.5, 0.0, 0.2), np.zeros(6), max_iterations=100
     )
     assert not result.success and result.error > 0.5  # 1.5 m is 0.64 m beyond the reach
     batch = sk.ik.numeric_ik(
-        PLANAR, sk.transl(2.5, 0, 0), np.random.default_rng(0).uniform(-3, 3, (10, 2))
+        planar_2r(),
+        sk.transl(2.5, 0, 0),
+        np.random.default_rng(0).uniform(-3, 3, (10, 2)),
     )
     assert not np.any(batch.success)
 
 
 def test_numeric_ik_respects_limits():
     q = np.radians([10, 30, -60, 20, 40, 60])
-    T = PUMA.fk(q)
+    T = puma().fk(q)
     start = np.radians([150, 200, -200, 160, 90, 250])
-    result = sk.ik.numeric_ik(PUMA, T, start, max_iterations=300)
-    assert PUMA.within_limits(result.q)
+    result = sk.ik.numeric_ik(puma(), T, start, max_iterations=300)
+    assert puma().within_limits(result.q)
     if result.success:
-        assert np.allclose(PUMA.fk(result.q), T, atol=1e-9)
+        assert np.allclose(puma().fk(result.q), T, atol=1e-9)
     # a 2R arm reaches a planar pose (x, y, angle) with one q only; with the elbow limited
     # to [0.1, 3.0] rad the pose made by q2 = -1.0 is out of reach, and the answer says so
     arm = sk.robots.planar([1.0, 1.0], qlim=[[-np.pi, np.pi], [0.1, 3.0]])

@@ -7,6 +7,8 @@ by a dense scan of the platform angle, singular poses from their geometry (concu
 leg lines, Fichter's 90 degree turn, a stretched limb, vertical forearms).
 """
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -80,28 +82,46 @@ def random_planar_pose(scale=0.1, centre=(0, 0), angle=0.0):
     )
 
 
-STEWART = parallel.stewart_gough()
-RPR = parallel.planar_3rpr()
-RRR = parallel.planar_3rrr()
-DELTA = parallel.delta()
-TRIPTERON = parallel.tripteron()
+@functools.cache
+def stewart():
+    return parallel.stewart_gough()
+
+
+@functools.cache
+def rpr():
+    return parallel.planar_3rpr()
+
+
+@functools.cache
+def rrr():
+    return parallel.planar_3rrr()
+
+
+@functools.cache
+def delta_robot():
+    return parallel.delta()
+
+
+@functools.cache
+def tripteron_robot():
+    return parallel.tripteron()
 
 
 def test_default_stewart_geometry_is_the_documented_one():
     degrees = np.radians([-15, 15, 105, 135, 225, 255])
     assert np.allclose(
-        STEWART.base_points, np.c_[np.cos(degrees), np.sin(degrees), 0 * degrees]
+        stewart().base_points, np.c_[np.cos(degrees), np.sin(degrees), 0 * degrees]
     )
     degrees = np.radians([-45, 45, 75, 165, 195, 285])
     assert np.allclose(
-        STEWART.platform_points,
+        stewart().platform_points,
         0.5 * np.c_[np.cos(degrees), np.sin(degrees), 0 * degrees],
     )
-    assert np.allclose(STEWART.home(), pose(np.eye(3), [0, 0, 1]))
+    assert np.allclose(stewart().home(), pose(np.eye(3), [0, 0, 1]))
 
 
 def test_viewer_attributes():
-    for pm in (STEWART, RPR, RRR, DELTA, TRIPTERON):
+    for pm in (stewart(), rpr(), rrr(), delta_robot(), tripteron_robot()):
         assert pm.base_points.shape == (pm.m, 3) and pm.base_points.dtype == float
         assert pm.platform_points.shape == (pm.m, 3) and isinstance(pm.name, str)
         assert pm.home().shape == (4, 4) and isinstance(pm.planar, bool)
@@ -109,7 +129,7 @@ def test_viewer_attributes():
             assert np.all(pm.platform_points[:, 2] == 0) and np.all(
                 pm.base_points[:, 2] == 0
             )
-    assert STEWART.leg_limits.shape == (6, 2) and RRR.leg_limits is None
+    assert stewart().leg_limits.shape == (6, 2) and rrr().leg_limits is None
 
 
 # ---- inverse kinematics ------------------------------------------------------------
@@ -118,37 +138,37 @@ def test_viewer_attributes():
 def test_stewart_leg_lengths_match_the_written_out_formula():
     for _ in range(20):
         T = random_stewart_pose()
-        expected = leg_lengths(STEWART.base_points, STEWART.platform_points, T)
-        assert np.max(np.abs(STEWART.ik(T) - expected)) < 1e-12
+        expected = leg_lengths(stewart().base_points, stewart().platform_points, T)
+        assert np.max(np.abs(stewart().ik(T) - expected)) < 1e-12
 
 
 def test_stewart_ik_batch_equals_one_by_one():
     T = np.array([random_stewart_pose() for _ in range(50)])
     expected = np.array(
-        [leg_lengths(STEWART.base_points, STEWART.platform_points, t) for t in T]
+        [leg_lengths(stewart().base_points, stewart().platform_points, t) for t in T]
     )
-    assert STEWART.ik(T).shape == (50, 6)
-    assert np.max(np.abs(STEWART.ik(T) - expected)) < 1e-12
+    assert stewart().ik(T).shape == (50, 6)
+    assert np.max(np.abs(stewart().ik(T) - expected)) < 1e-12
 
 
 def test_3rpr_leg_lengths_match_the_written_out_formula():
     for _ in range(20):
         T = random_planar_pose(centre=(0.3, 0.85), angle=np.pi / 2)
-        expected = leg_lengths(RPR.base_points, RPR.platform_points, T)
-        assert np.max(np.abs(RPR.ik(T) - expected)) < 1e-12
+        expected = leg_lengths(rpr().base_points, rpr().platform_points, T)
+        assert np.max(np.abs(rpr().ik(T) - expected)) < 1e-12
 
 
 def test_exact_ik_of_the_stewart_platform():
     T = sp.eye(4)
     T[2, 3] = 1
-    rho = STEWART.ik(T)
+    rho = stewart().ik(T)
     # leg 1 at home: base (cos 15, -sin 15, 0), platform (cos 45, -sin 45, 0) / 2, 1
     # above
     c15, s15, c45 = sp.cos(sp.pi / 12), sp.sin(sp.pi / 12), sp.sqrt(2) / 2
     expected = sp.sqrt((c45 / 2 - c15) ** 2 + (-c45 / 2 + s15) ** 2 + 1)
     assert all(isinstance(r, sp.Expr) for r in rho)
     assert sp.simplify(rho[0] - expected) == 0
-    assert abs(float(rho[0]) - STEWART.ik(STEWART.home())[0]) < 1e-15
+    assert abs(float(rho[0]) - stewart().ik(stewart().home())[0]) < 1e-15
 
 
 def crank_closure(pm, T, theta, l1, l2):
@@ -161,47 +181,47 @@ def crank_closure(pm, T, theta, l1, l2):
 
 def test_3rrr_has_eight_labelled_working_modes_each_closing_the_loops():
     T = pose(rotation([0, 0, 1], 0.2), [0.05, -0.03, 0])
-    modes = RRR.ik_all(T)
+    modes = rrr().ik_all(T)
     assert sorted(modes) == sorted(a + b + c for a in "+-" for b in "+-" for c in "+-")
     solutions = np.array(list(modes.values()))
     assert len({tuple(np.round(s, 9)) for s in solutions}) == 8
     for theta in solutions:
-        assert np.max(np.abs(crank_closure(RRR, T, theta, 0.6, 0.5))) < 1e-12
+        assert np.max(np.abs(crank_closure(rrr(), T, theta, 0.6, 0.5))) < 1e-12
 
 
 def test_passive_joints_on_request():
     T = pose(rotation([0, 0, 1], 0.2), [0.05, -0.03, 0])
-    result = RRR.ik(T, mode="+-+", passive=True)
+    result = rrr().ik(T, mode="+-+", passive=True)
     theta = result.rho
-    B = RRR.base_points + 0.6 * np.c_[np.cos(theta), np.sin(theta), 0 * theta]
+    B = rrr().base_points + 0.6 * np.c_[np.cos(theta), np.sin(theta), 0 * theta]
     assert np.allclose(result.passive["elbow"], B) and result.mode == "+-+"
-    C = (T[:3, :3] @ RRR.platform_points.T).T + T[:3, 3]
+    C = (T[:3, :3] @ rrr().platform_points.T).T + T[:3, 3]
     phi = np.arctan2(C[:, 1] - B[:, 1], C[:, 0] - B[:, 0])
     assert np.allclose(
         np.exp(1j * (theta + result.passive["theta2"])), np.exp(1j * phi)
     )
-    leg = STEWART.ik(STEWART.home(), passive=True)
+    leg = stewart().ik(stewart().home(), passive=True)
     n = (
-        (STEWART.home()[:3, :3] @ STEWART.platform_points.T).T
+        (stewart().home()[:3, :3] @ stewart().platform_points.T).T
         + [0, 0, 1]
-        - STEWART.base_points
+        - stewart().base_points
     ) / leg.rho[:, None]
     assert np.allclose(np.sin(leg.passive["u2"]), n[:, 0])
 
 
 def test_out_of_reach_gives_nan_rows_and_a_reason_in_a_batch():
     T = np.array([pose(np.eye(3), [0.02, 0, 0]), pose(np.eye(3), [3.0, 0, 0])])
-    result = RRR.ik(T, passive=True)
+    result = rrr().ik(T, passive=True)
     assert np.all(np.isfinite(result.rho[0])) and np.all(np.isnan(result.rho[1]))
     assert result.reachable.tolist() == [True, False]
     assert result.reason[0] == "" and "cannot reach" in result.reason[1]
-    far = STEWART.ik(pose(np.eye(3), [0, 0, 3.0]), passive=True)
+    far = stewart().ik(pose(np.eye(3), [0, 0, 3.0]), passive=True)
     assert np.all(np.isnan(far.rho)) and "outside their limits" in far.reason
 
 
 def test_delta_and_tripteron_ik_closes_their_loops():
     T = pose(np.eye(3), [0.03, -0.02, -0.33])
-    theta = DELTA.ik(T)
+    theta = delta_robot().ik(T)
     radial = np.c_[
         np.cos(np.radians([0, 120, 240])), np.sin(np.radians([0, 120, 240])), [0] * 3
     ]
@@ -211,7 +231,7 @@ def test_delta_and_tripteron_ik_closes_their_loops():
     C = 0.05 * radial + T[:3, 3]
     assert np.max(np.abs(np.linalg.norm(C - B, axis=1) - 0.45)) < 1e-12
     p = np.array([0.3, 0.4, 0.36])
-    d = TRIPTERON.ik(pose(np.eye(3), p))
+    d = tripteron_robot().ik(pose(np.eye(3), p))
     # carriage i moves along axis e_i from (0, 1, 0), (0, 0, 1), (0, 0, 0): its position
     # is e_i . (p + b_i - carriage_i), with b_i = (0, .1, 0), (0, 0, .1), (.1, 0, 0)
     # normal to e_i
@@ -233,20 +253,21 @@ def finite_difference_jacobian(pm, T, freedoms, mode=None, eps=1e-5):
 
 
 @pytest.mark.parametrize(
-    "pm, make, freedoms",
+    "build, make, freedoms",
     [
-        (STEWART, random_stewart_pose, range(6)),
+        (stewart, random_stewart_pose, range(6)),
         (
-            RPR,
+            rpr,
             lambda: random_planar_pose(centre=(0.3, 0.85), angle=np.pi / 2),
             [2, 3, 4],
         ),
-        (RRR, lambda: random_planar_pose(0.05), [2, 3, 4]),
-        (DELTA, lambda: pose(np.eye(3), [0.02, 0.01, -0.33]), [3, 4, 5]),
-        (TRIPTERON, lambda: pose(np.eye(3), [0.3, 0.4, 0.36]), [3, 4, 5]),
+        (rrr, lambda: random_planar_pose(0.05), [2, 3, 4]),
+        (delta_robot, lambda: pose(np.eye(3), [0.02, 0.01, -0.33]), [3, 4, 5]),
+        (tripteron_robot, lambda: pose(np.eye(3), [0.3, 0.4, 0.36]), [3, 4, 5]),
     ],
 )
-def test_jacobian_matches_finite_differences_of_ik(pm, make, freedoms):
+def test_jacobian_matches_finite_differences_of_ik(build, make, freedoms):
+    pm = build()
     for mode in pm.working_modes[:4]:
         T = make()
         J = pm.jacobian(T, mode=mode)
@@ -259,18 +280,18 @@ def test_jacobian_matches_finite_differences_of_ik(pm, make, freedoms):
 
 def test_stewart_jacobian_rows_are_unit_line_screws_and_batch():
     T = np.array([random_stewart_pose() for _ in range(30)])
-    J = STEWART.jacobian(T)
+    J = stewart().jacobian(T)
     assert J.shape == (30, 6, 6)
     for t, j in zip(T, J):
-        C = (t[:3, :3] @ STEWART.platform_points.T).T + t[:3, 3]
-        n = (C - STEWART.base_points) / np.linalg.norm(C - STEWART.base_points, axis=1)[
-            :, None
-        ]
-        assert np.allclose(j, np.c_[np.cross(STEWART.base_points, n), n], atol=1e-14)
+        C = (t[:3, :3] @ stewart().platform_points.T).T + t[:3, 3]
+        n = (C - stewart().base_points) / np.linalg.norm(
+            C - stewart().base_points, axis=1
+        )[:, None]
+        assert np.allclose(j, np.c_[np.cross(stewart().base_points, n), n], atol=1e-14)
 
 
 def test_exact_jacobian_equals_the_numeric_one():
-    for pm in (STEWART, RPR, RRR):
+    for pm in (stewart(), rpr(), rrr()):
         exact = pm.jacobian(pm.home_exact())
         assert isinstance(exact, sp.MatrixBase)
         assert (
@@ -283,16 +304,17 @@ def test_exact_jacobian_equals_the_numeric_one():
 
 
 @pytest.mark.parametrize(
-    "pm, make",
+    "build, make",
     [
-        (STEWART, random_stewart_pose),
-        (RPR, lambda: random_planar_pose(centre=(0.3, 0.85), angle=np.pi / 2)),
-        (RRR, lambda: random_planar_pose(0.05)),
-        (DELTA, lambda: pose(np.eye(3), [0.02, 0.01, -0.33])),
-        (TRIPTERON, lambda: pose(np.eye(3), [0.3, 0.4, 0.36])),
+        (stewart, random_stewart_pose),
+        (rpr, lambda: random_planar_pose(centre=(0.3, 0.85), angle=np.pi / 2)),
+        (rrr, lambda: random_planar_pose(0.05)),
+        (delta_robot, lambda: pose(np.eye(3), [0.02, 0.01, -0.33])),
+        (tripteron_robot, lambda: pose(np.eye(3), [0.3, 0.4, 0.36])),
     ],
 )
-def test_fk_of_ik_returns_the_pose_from_a_nearby_guess(pm, make):
+def test_fk_of_ik_returns_the_pose_from_a_nearby_guess(build, make):
+    pm = build()
     T = make()
     guess = (
         expm_twist(
@@ -309,7 +331,7 @@ def test_fk_of_ik_returns_the_pose_from_a_nearby_guess(pm, make):
 def test_batched_fk_with_batched_guesses():
     T = np.array([random_stewart_pose() for _ in range(100)])
     guess = np.array([expm_twist(RNG.normal(size=6), 0.02) @ t for t in T])
-    result = STEWART.fk(STEWART.ik(T), guess=guess)
+    result = stewart().fk(stewart().ik(T), guess=guess)
     assert result.T.shape == (100, 4, 4) and result.success.all()
     assert np.max(np.abs(result.T - T)) < 1e-9
 
@@ -327,10 +349,10 @@ def test_fk_that_cannot_converge_says_so():
     # too few steps from a far guess: not converged, and said so
     T = random_stewart_pose()
     far = pose(rotation([1, 1, 0], 0.8), [0.3, 0, 0.8])
-    result = STEWART.fk(STEWART.ik(T), guess=far, max_iterations=2)
+    result = stewart().fk(stewart().ik(T), guess=far, max_iterations=2)
     assert not result.success and np.all(np.isnan(result.T)) and result.error > 1e-6
     # leg lengths that no pose has (legs 1 and 2: 1 cm each, platform points 0.58 m apart)
-    result = RPR.fk([0.01, 0.01, 1.5])
+    result = rpr().fk([0.01, 0.01, 1.5])
     assert not result.success and np.all(np.isnan(result.T)) and result.error > 1e-3
 
 
@@ -354,13 +376,15 @@ def scan_modes(a, b, rho, samples=400_001):
 
 def test_3rpr_instance_with_six_real_modes_returns_exactly_six():
     rho = np.array(parallel.RPR_SIX_MODES_RHO)
-    a, b = RPR.base_points[:, :2], RPR.platform_points[:, :2]
+    a, b = rpr().base_points[:, :2], rpr().platform_points[:, :2]
     assert scan_modes(a, b, rho) == 6
-    poses = RPR.fk_all(rho)
+    poses = rpr().fk_all(rho)
     assert len(poses) == 6
     for T in poses:
         assert (
-            np.max(np.abs(leg_lengths(RPR.base_points, RPR.platform_points, T) - rho))
+            np.max(
+                np.abs(leg_lengths(rpr().base_points, rpr().platform_points, T) - rho)
+            )
             < 1e-9
         )
 
@@ -368,16 +392,18 @@ def test_3rpr_instance_with_six_real_modes_returns_exactly_six():
 def test_3rpr_fk_all_returns_the_generating_pose_and_counts_agree_with_the_scan():
     for _ in range(10):
         T = random_planar_pose(0.3, centre=(0.3, 0.5), angle=RNG.uniform(-3, 3))
-        rho = RPR.ik(T)
-        poses = RPR.fk_all(rho)
+        rho = rpr().ik(T)
+        poses = rpr().fk_all(rho)
         assert min(np.max(np.abs(P - T)) for P in poses) < 1e-9
         assert len(poses) == scan_modes(
-            RPR.base_points[:, :2], RPR.platform_points[:, :2], rho
+            rpr().base_points[:, :2], rpr().platform_points[:, :2], rho
         )
         for P in poses:
             assert (
                 np.max(
-                    np.abs(leg_lengths(RPR.base_points, RPR.platform_points, P) - rho)
+                    np.abs(
+                        leg_lengths(rpr().base_points, rpr().platform_points, P) - rho
+                    )
                 )
                 < 1e-9
             )
@@ -385,8 +411,8 @@ def test_3rpr_fk_all_returns_the_generating_pose_and_counts_agree_with_the_scan(
 
 def test_stewart_fk_all_returns_the_generating_pose_and_only_true_modes():
     T = random_stewart_pose()
-    rho = STEWART.ik(T)
-    poses = STEWART.fk_all(rho)
+    rho = stewart().ik(T)
+    poses = stewart().fk_all(rho)
     assert min(np.max(np.abs(P - T)) for P in poses) < 1e-9
     mirror = np.diag([1.0, 1, -1, 1]) @ T @ np.diag([1.0, 1, -1, 1])
     assert min(np.max(np.abs(P - mirror)) for P in poses) < 1e-9
@@ -395,7 +421,8 @@ def test_stewart_fk_all_returns_the_generating_pose_and_only_true_modes():
         assert (
             np.max(
                 np.abs(
-                    leg_lengths(STEWART.base_points, STEWART.platform_points, P) - rho
+                    leg_lengths(stewart().base_points, stewart().platform_points, P)
+                    - rho
                 )
             )
             < 1e-9
@@ -406,14 +433,14 @@ def test_stewart_fk_all_returns_the_generating_pose_and_only_true_modes():
 
 
 def test_wrenches_joshi_tsai_form():
-    actuation, constraint = STEWART.wrenches(STEWART.home())
+    actuation, constraint = stewart().wrenches(stewart().home())
     assert actuation.rank == 6 and constraint.rank == 0
-    for pm in (RPR, RRR, DELTA, TRIPTERON):
+    for pm in (rpr(), rrr(), delta_robot(), tripteron_robot()):
         actuation, constraint = pm.wrenches(pm.home_exact())
         assert not actuation.numeric and actuation.rank == 3 and constraint.rank == 3
         assert actuation.union(constraint).rank == 6
     # the 3-RPR's constraint wrenches: the couples about x and y and the force along z
-    _, constraint = RPR.wrenches(RPR.home_exact())
+    _, constraint = rpr().wrenches(rpr().home_exact())
     assert (
         sk.ScrewSystem(
             [[0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 1, 0, 0, 0]], kind=sk.Wrench
@@ -461,16 +488,16 @@ def test_fichter_singularity_of_the_symmetric_stewart_platform():
     for height in (sp.Rational(7, 10), 1, sp.Rational(3, 2)):
         for angle in (sp.pi / 2, -sp.pi / 2):
             T = exact_pose(sk.rotz(angle), [0, 0, height])
-            assert STEWART.singularities(T) == {"direct"}
+            assert stewart().singularities(T) == {"direct"}
             # the same with six legs' lines written out here: their 6 x 6 is singular
             Tn = np.array(T.evalf(), float)
-            C = (Tn[:3, :3] @ STEWART.platform_points.T).T + Tn[:3, 3]
-            n = C - STEWART.base_points
+            C = (Tn[:3, :3] @ stewart().platform_points.T).T + Tn[:3, 3]
+            n = C - stewart().base_points
             assert (
-                abs(np.linalg.det(np.c_[n, np.cross(STEWART.base_points, n)])) < 1e-12
+                abs(np.linalg.det(np.c_[n, np.cross(stewart().base_points, n)])) < 1e-12
             )
         assert (
-            STEWART.singularities(exact_pose(sk.rotz(sp.pi / 3), [0, 0, height]))
+            stewart().singularities(exact_pose(sk.rotz(sp.pi / 3), [0, 0, height]))
             == set()
         )
 
@@ -479,9 +506,9 @@ def test_inverse_singularity_of_a_stretched_3rrr_limb():
     # leg 1: A = (1, 0), platform point p + (1/4, 0); p = (-7/20, 0) puts it 11/10 = l1
     # + l2 away
     T = exact_pose(sp.eye(3), [sp.Rational(-7, 20), 0, 0])
-    assert "inverse" in RRR.singularities(T)
+    assert "inverse" in rrr().singularities(T)
     assert (
-        RRR.singularities(exact_pose(sp.eye(3), [sp.Rational(-3, 10), 0, 0])) == set()
+        rrr().singularities(exact_pose(sp.eye(3), [sp.Rational(-3, 10), 0, 0])) == set()
     )
 
 
@@ -491,15 +518,15 @@ def test_constraint_singularity_of_the_delta_with_vertical_forearms():
     # are all along z
     height = -sp.sqrt(7) / 20 - sp.Rational(9, 20)
     T = exact_pose(sp.eye(3), [0, 0, height])
-    found = {mode: DELTA.singularities(T, mode=mode) for mode in ("+++", "---")}
+    found = {mode: delta_robot().singularities(T, mode=mode) for mode in ("+++", "---")}
     assert any("constraint" in f for f in found.values())
-    assert DELTA.singularities(DELTA.home_exact()) == set()
+    assert delta_robot().singularities(delta_robot().home_exact()) == set()
 
 
 def test_float_and_exact_singularities_agree_on_fichter():
     T = pose(rotation([0, 0, 1], np.pi / 2), [0, 0, 1.1])
-    assert STEWART.singularities(T) == {"direct"}
-    assert STEWART.singularities(random_stewart_pose()) == set()
+    assert stewart().singularities(T) == {"direct"}
+    assert stewart().singularities(random_stewart_pose()) == set()
 
 
 # ---- workspace ---------------------------------------------------------------------
@@ -507,18 +534,18 @@ def test_float_and_exact_singularities_agree_on_fichter():
 
 def test_stewart_constant_orientation_workspace():
     x = np.linspace(-0.6, 0.6, 41)
-    w = STEWART.workspace(x, x, z=1.1)
+    w = stewart().workspace(x, x, z=1.1)
     assert w.inside.shape == (41, 41) and w.rho.shape == (41, 41, 6)
     X, Y = np.meshgrid(x, x)
     for i, j in [(20, 20), (5, 30), (0, 0), (40, 12)]:
         rho = leg_lengths(
-            STEWART.base_points,
-            STEWART.platform_points,
+            stewart().base_points,
+            stewart().platform_points,
             pose(np.eye(3), [X[i, j], Y[i, j], 1.1]),
         )
         assert w.inside[i, j] == bool(np.all((rho >= 0.9) & (rho <= 1.6)))
     assert w.inside[20, 20] and not w.inside[0, 0]
-    chunked = STEWART.workspace(x, x, z=1.1, chunk=100)
+    chunked = stewart().workspace(x, x, z=1.1, chunk=100)
     assert np.array_equal(chunked.inside, w.inside)
     assert np.allclose(chunked.det, w.det, equal_nan=True)
 
@@ -529,45 +556,47 @@ def test_stewart_constant_orientation_workspace():
 @pytest.mark.parametrize(
     "call, error, match",
     [
-        (lambda: STEWART.ik(np.eye(3)), ValueError, r"T must have shape \(4 x 4\)"),
-        (lambda: STEWART.ik(np.full((4, 4), np.nan)), ValueError, "T must be finite"),
-        (lambda: STEWART.ik(np.diag([2.0, 1, 1, 1])), ValueError, "rotation matrix"),
-        (lambda: STEWART.ik("home"), TypeError, "T must be a number or an array"),
-        (lambda: STEWART.fk([1.0] * 5), ValueError, r"rho must have shape \(6,\)"),
+        (lambda: stewart().ik(np.eye(3)), ValueError, r"T must have shape \(4 x 4\)"),
+        (lambda: stewart().ik(np.full((4, 4), np.nan)), ValueError, "T must be finite"),
+        (lambda: stewart().ik(np.diag([2.0, 1, 1, 1])), ValueError, "rotation matrix"),
+        (lambda: stewart().ik("home"), TypeError, "T must be a number or an array"),
+        (lambda: stewart().fk([1.0] * 5), ValueError, r"rho must have shape \(6,\)"),
         (
-            lambda: STEWART.fk([1.0, 1, 1, 1, 1, -1]),
+            lambda: stewart().fk([1.0, 1, 1, 1, 1, -1]),
             ValueError,
             "rho must be leg lengths > 0",
         ),
         (
-            lambda: STEWART.fk([1.0] * 6, guess=np.eye(3)),
+            lambda: stewart().fk([1.0] * 6, guess=np.eye(3)),
             ValueError,
             "guess must have shape",
         ),
         (
-            lambda: STEWART.fk([1.0] * 6, guess=np.zeros((3, 4, 4)) + np.eye(4)),
+            lambda: stewart().fk([1.0] * 6, guess=np.zeros((3, 4, 4)) + np.eye(4)),
             ValueError,
             "guess must be one pose or 1 poses",
         ),
-        (lambda: STEWART.fk([np.nan] * 6), ValueError, "rho must be finite"),
+        (lambda: stewart().fk([np.nan] * 6), ValueError, "rho must be finite"),
         (
-            lambda: DELTA.ik(pose(rotation([1, 0, 0], 0.1), [0, 0, -0.3])),
+            lambda: delta_robot().ik(pose(rotation([1, 0, 0], 0.1), [0, 0, -0.3])),
             ValueError,
             "only translates",
         ),
         (
-            lambda: TRIPTERON.jacobian(pose(rotation([0, 0, 1], 0.1), [0.3, 0.3, 0.3])),
+            lambda: tripteron_robot().jacobian(
+                pose(rotation([0, 0, 1], 0.1), [0.3, 0.3, 0.3])
+            ),
             ValueError,
             "only translates",
         ),
         (
-            lambda: RPR.ik(pose(rotation([1, 0, 0], 0.1), [0, 0, 0])),
+            lambda: rpr().ik(pose(rotation([1, 0, 0], 0.1), [0, 0, 0])),
             ValueError,
             "planar pose",
         ),
-        (lambda: RPR.ik(pose(np.eye(3), [0, 0, 0.2])), ValueError, "planar pose"),
-        (lambda: RRR.ik(np.eye(4), mode="++"), ValueError, "mode must be one of"),
-        (lambda: RPR.fk_all([[1.0, 1, 1]] * 2), ValueError, "one input"),
+        (lambda: rpr().ik(pose(np.eye(3), [0, 0, 0.2])), ValueError, "planar pose"),
+        (lambda: rrr().ik(np.eye(4), mode="++"), ValueError, "mode must be one of"),
+        (lambda: rpr().fk_all([[1.0, 1, 1]] * 2), ValueError, "one input"),
         (
             lambda: parallel.stewart_gough(base=np.zeros((5, 3))),
             ValueError,
@@ -595,11 +624,15 @@ def test_stewart_constant_orientation_workspace():
             "each lower limit below its upper one",
         ),
         (
-            lambda: STEWART.workspace(np.zeros(4000), np.zeros(4000)),
+            lambda: stewart().workspace(np.zeros(4000), np.zeros(4000)),
             ValueError,
             "more than 10000000",
         ),
-        (lambda: STEWART.workspace([0.0], [0.0], chunk=0), ValueError, "chunk must be"),
+        (
+            lambda: stewart().workspace([0.0], [0.0], chunk=0),
+            ValueError,
+            "chunk must be",
+        ),
     ],
 )
 def test_bad_input_is_refused_with_a_sentence(call, error, match):
@@ -612,24 +645,24 @@ def test_catalogue_is_in_robots():
     assert sk.robots.parallel_3rrr is parallel.planar_3rrr
     assert isinstance(sk.robots.delta(), parallel.ParallelManipulator)
     # the mobility analysis of the limbs at a pose agrees with the motion type
-    assert sk.mobility(RPR.limbs()[0]).type == RPR.motion_type == "2T1R"
-    assert sk.mobility(TRIPTERON.limbs()[0]).number == 3
+    assert sk.mobility(rpr().limbs()[0]).type == rpr().motion_type == "2T1R"
+    assert sk.mobility(tripteron_robot().limbs()[0]).number == 3
 
 
 def test_exact_ik_of_the_3rrr_equals_the_float_one_in_every_mode():
     T = sp.eye(4)
     T[0, 3], T[1, 3] = sp.Rational(1, 20), sp.Rational(-1, 50)
     for mode in ("+++", "-+-"):
-        exact = RRR.ik(T, mode=mode)
+        exact = rrr().ik(T, mode=mode)
         assert all(isinstance(t, sp.Expr) for t in exact)
-        numeric = RRR.ik(np.array(T, dtype=float), mode=mode)
+        numeric = rrr().ik(np.array(T, dtype=float), mode=mode)
         assert np.max(np.abs(np.array([float(t) for t in exact]) - numeric)) < 1e-14
 
 
 def test_delta_fk_all_poses_close_every_loop():
     T = pose(np.eye(3), [0.03, -0.02, -0.33])
-    theta = DELTA.ik(T)
-    poses = DELTA.fk_all(theta)
+    theta = delta_robot().ik(T)
+    poses = delta_robot().fk_all(theta)
     assert min(np.max(np.abs(P - T)) for P in poses) < 1e-9
     radial = np.c_[
         np.cos(np.radians([0, 120, 240])), np.sin(np.radians([0, 120, 240])), [0] * 3
@@ -646,12 +679,14 @@ def test_delta_fk_all_poses_close_every_loop():
 def test_exact_out_of_reach_is_an_answer_or_a_clear_error():
     far = sp.eye(4)
     far[2, 3] = 3
-    assert STEWART.ik(far) == [sp.nan] * 6  # legs of 3 m: outside the limits 0.9-1.6 m
-    assert "outside their limits" in STEWART.ik(far, passive=True).reason
+    assert (
+        stewart().ik(far) == [sp.nan] * 6
+    )  # legs of 3 m: outside the limits 0.9-1.6 m
+    assert "outside their limits" in stewart().ik(far, passive=True).reason
     away = sp.eye(4)
     away[0, 3] = 3
-    assert all(r is sp.nan for r in RRR.ik(away))
-    J = RRR.jacobian(away)
+    assert all(r is sp.nan for r in rrr().ik(away))
+    J = rrr().jacobian(away)
     assert all(e is sp.nan for e in J)
     with pytest.raises(ValueError, match="out of reach of leg 0"):
-        RRR.singularities(away)
+        rrr().singularities(away)

@@ -1,6 +1,8 @@
 """Redundancy resolution: paths, planar kinematics against the general chain, the exact
 manipulability gradient, the null-space projector, tracking accuracy, joint limits, bad input."""
 
+import functools
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -11,17 +13,33 @@ import screwkit as sk
 from screwkit import redundancy as rd
 
 LENGTHS = np.array([0.3, 0.25, 0.2, 0.15, 0.1])
-ARM = sk.robots.planar(LENGTHS)
-CIRCLE = rd.circle((0.45, 0.25), 0.15, duration=10.0, dt=0.01)
-Q0 = rd.start_configuration(
-    ARM, CIRCLE.position[0], np.radians([30, -30, -30, -30, -30])
-)
+
+
+@functools.cache
+def five_link():
+    return sk.robots.planar(LENGTHS)
+
+
+@functools.cache
+def circle_path():
+    return rd.circle((0.45, 0.25), 0.15, duration=10.0, dt=0.01)
+
+
+@functools.cache
+def start_q():
+    return rd.start_configuration(
+        five_link(), circle_path().position[0], np.radians([30, -30, -30, -30, -30])
+    )
+
+
 angles = arrays(float, 5, elements=st.floats(-np.pi, np.pi))
 
 
 def test_circle_starts_at_center_plus_radius_and_runs_counter_clockwise_once():
-    p, v = CIRCLE.position, CIRCLE.velocity
-    assert p.shape == v.shape == (1001, 2) and CIRCLE.t[-1] == pytest.approx(10.0)
+    p, v = circle_path().position, circle_path().velocity
+    assert p.shape == v.shape == (1001, 2) and circle_path().t[-1] == pytest.approx(
+        10.0
+    )
     assert np.allclose(p[0], [0.6, 0.25]) and np.allclose(p[-1], [0.6, 0.25])
     assert np.allclose(np.linalg.norm(p - [0.45, 0.25], axis=1), 0.15)
     relative = p - [0.45, 0.25]
@@ -32,7 +50,9 @@ def test_circle_starts_at_center_plus_radius_and_runs_counter_clockwise_once():
     assert swept[-1] - swept[0] == pytest.approx(2 * np.pi)
     # smooth timing: at rest at both ends, and the velocity is the derivative of the position
     assert np.allclose(v[[0, -1]], 0)
-    assert np.allclose(np.gradient(p, CIRCLE.t, axis=0)[1:-1], v[1:-1], atol=2e-4)
+    assert np.allclose(
+        np.gradient(p, circle_path().t, axis=0)[1:-1], v[1:-1], atol=2e-4
+    )
 
 
 def test_line_runs_from_start_to_end():
@@ -48,8 +68,8 @@ def test_line_runs_from_start_to_end():
 @given(angles)
 def test_planar_kinematics_equals_the_general_chain(q):
     points, J = rd.planar_kinematics(LENGTHS, q)
-    assert np.allclose(points[-1], ARM.fk(q)[:2, 3], atol=1e-12)
-    assert np.allclose(J, ARM.geometric_jacobian(q)[:2], atol=1e-12)
+    assert np.allclose(points[-1], five_link().fk(q)[:2, 3], atol=1e-12)
+    assert np.allclose(J, five_link().geometric_jacobian(q)[:2], atol=1e-12)
 
 
 @settings(max_examples=50, deadline=None)
@@ -57,7 +77,7 @@ def test_planar_kinematics_equals_the_general_chain(q):
 def test_manipulability_gradient_is_exact(q):
     w, gradient = rd.manipulability_gradient(LENGTHS, q)
     assert np.isclose(
-        w, ARM.manipulability(q, rows="planar"), atol=1e-12
+        w, five_link().manipulability(q, rows="planar"), atol=1e-12
     )  # by singular values
     if (
         w > 0.05
@@ -96,30 +116,34 @@ def test_null_space_motion_never_moves_the_end_effector(q):
 
 
 def test_circle_is_tracked_within_a_tenth_of_a_millimetre_and_null_space_raises_manipulability():
-    plain = rd.resolve(ARM, CIRCLE, Q0)
-    climbing = rd.resolve(ARM, CIRCLE, Q0, null_space_gain=5.0)
+    plain = rd.resolve(five_link(), circle_path(), start_q())
+    climbing = rd.resolve(five_link(), circle_path(), start_q(), null_space_gain=5.0)
     for run in (plain, climbing):
         assert run.q.shape == (1001, 5) and run.error.max() < 1e-4
         # the reported position and manipulability belong to the reported q
-        assert np.allclose(run.position, ARM.fk(run.q)[:, :2, 3], atol=1e-12)
+        assert np.allclose(run.position, five_link().fk(run.q)[:, :2, 3], atol=1e-12)
         assert np.allclose(
-            run.manipulability, ARM.manipulability(run.q, rows="planar"), atol=1e-12
+            run.manipulability,
+            five_link().manipulability(run.q, rows="planar"),
+            atol=1e-12,
         )
     assert climbing.manipulability.mean() > plain.manipulability.mean() + 0.01
     assert climbing.manipulability.min() > plain.manipulability.min() + 0.01
     # without the feedback term, Euler integration drifts off the path
-    open_loop = rd.resolve(ARM, CIRCLE, Q0, feedback_gain=0.0)
+    open_loop = rd.resolve(five_link(), circle_path(), start_q(), feedback_gain=0.0)
     assert open_loop.error.max() > 10 * plain.error.max()
 
 
 def test_joint_limits_clamping_costs_accuracy_and_avoidance_recovers_it():
     limits = np.radians([[-180, 180]] + [[-60, 60]] * 4)
     arm = sk.robots.planar(LENGTHS, qlim=limits)
-    assert arm.within_limits(Q0)
-    free = rd.resolve(arm, CIRCLE, Q0, null_space_gain=5.0)
+    assert arm.within_limits(start_q())
+    free = rd.resolve(arm, circle_path(), start_q(), null_space_gain=5.0)
     assert np.any(~arm.within_limits(free.q))  # the limits matter on this path
-    clamped = rd.resolve(arm, CIRCLE, Q0, joint_limits="clamp")
-    avoided = rd.resolve(arm, CIRCLE, Q0, null_space_gain=5.0, joint_limits="avoid")
+    clamped = rd.resolve(arm, circle_path(), start_q(), joint_limits="clamp")
+    avoided = rd.resolve(
+        arm, circle_path(), start_q(), null_space_gain=5.0, joint_limits="avoid"
+    )
     for run in (clamped, avoided):
         assert np.all((run.q >= limits[:, 0] - 1e-12) & (run.q <= limits[:, 1] + 1e-12))
     assert (
@@ -151,19 +175,19 @@ def test_bad_input_is_refused_with_a_clear_message():
     with pytest.raises(
         ValueError, match=r"reachable annulus 0.0000 m <= \|p\| <= 1.0000 m"
     ):
-        rd.resolve(ARM, far, Q0)
+        rd.resolve(five_link(), far, start_q())
     with pytest.raises(ValueError, match=r"q0 must have 5 entries"):
-        rd.resolve(ARM, CIRCLE, Q0[:4])
+        rd.resolve(five_link(), circle_path(), start_q()[:4])
     with pytest.raises(ValueError, match=r"from the path's start"):
-        rd.resolve(ARM, CIRCLE, Q0 + 0.1)
+        rd.resolve(five_link(), circle_path(), start_q() + 0.1)
     with pytest.raises(ValueError, match="planar arm"):
-        rd.resolve(sk.robots.puma560(), CIRCLE, np.zeros(6))
+        rd.resolve(sk.robots.puma560(), circle_path(), np.zeros(6))
     with pytest.raises(TypeError, match="path must be a Path"):
-        rd.resolve(ARM, CIRCLE.position, Q0)
+        rd.resolve(five_link(), circle_path().position, start_q())
     with pytest.raises(ValueError, match="stable loop"):
-        rd.resolve(ARM, CIRCLE, Q0, feedback_gain=500.0)
+        rd.resolve(five_link(), circle_path(), start_q(), feedback_gain=500.0)
     with pytest.raises(ValueError, match="joint_limits must be"):
-        rd.resolve(ARM, CIRCLE, Q0, joint_limits="soft")
+        rd.resolve(five_link(), circle_path(), start_q(), joint_limits="soft")
     with pytest.raises(ValueError, match="whole number of steps"):
         rd.circle((0, 0), 0.1, duration=1.0, dt=0.3)
     with pytest.raises(ValueError, match="radius must be a positive number"):
@@ -190,8 +214,8 @@ def test_damping_slows_the_joints_near_a_singularity():
 
 def test_a_negative_null_space_gain_lowers_manipulability():
     # the null-space term follows k grad w: with k < 0 it descends, so w falls below the plain run
-    plain = rd.resolve(ARM, CIRCLE, Q0)
-    lowering = rd.resolve(ARM, CIRCLE, Q0, null_space_gain=-2.0)
+    plain = rd.resolve(five_link(), circle_path(), start_q())
+    lowering = rd.resolve(five_link(), circle_path(), start_q(), null_space_gain=-2.0)
     assert (
         lowering.error.max() < 1e-3
         and lowering.manipulability.mean() < plain.manipulability.mean() - 0.005
@@ -202,7 +226,7 @@ def test_q0_outside_the_limits_is_refused_only_where_the_limits_are_used():
     limits = np.radians([[-180, 180]] + [[-60, 60]] * 4)
     arm = sk.robots.planar(LENGTHS, qlim=limits)
     q0 = rd.start_configuration(
-        arm, CIRCLE.position[0], np.radians([30, 70, -30, -30, -30])
+        arm, circle_path().position[0], np.radians([30, 70, -30, -30, -30])
     )
     assert not arm.within_limits(q0)
     joint = int(np.flatnonzero((q0 < limits[:, 0]) | (q0 > limits[:, 1]))[0]) + 1
@@ -210,9 +234,9 @@ def test_q0_outside_the_limits_is_refused_only_where_the_limits_are_used():
         with pytest.raises(
             ValueError, match=rf"q0 must lie within .* joint {joint} is"
         ):
-            rd.resolve(arm, CIRCLE, q0, joint_limits=mode)
+            rd.resolve(arm, circle_path(), q0, joint_limits=mode)
     assert (
-        rd.resolve(arm, CIRCLE, q0).error.max() < 1e-4
+        rd.resolve(arm, circle_path(), q0).error.max() < 1e-4
     )  # joint_limits=None ignores them
 
 
@@ -220,13 +244,20 @@ def test_start_configuration_needs_one_iteration_and_reports_its_budget():
     with pytest.raises(
         ValueError, match="max_iterations must be an integer >= 1, got 0"
     ):
-        rd.start_configuration(ARM, CIRCLE.position[0], Q0, max_iterations=0)
+        rd.start_configuration(
+            five_link(), circle_path().position[0], start_q(), max_iterations=0
+        )
     # from the answer itself, no step is needed; from a guess, one Newton step is not enough
     assert np.array_equal(
-        rd.start_configuration(ARM, CIRCLE.position[0], Q0, max_iterations=1), Q0
+        rd.start_configuration(
+            five_link(), circle_path().position[0], start_q(), max_iterations=1
+        ),
+        start_q(),
     )
     with pytest.raises(ValueError, match=r"in 1 iterations, got a residual of"):
-        rd.start_configuration(ARM, CIRCLE.position[0], Q0 + 0.3, max_iterations=1)
+        rd.start_configuration(
+            five_link(), circle_path().position[0], start_q() + 0.3, max_iterations=1
+        )
 
 
 def test_paths_must_be_uniform_in_time_with_two_samples_or_more():
