@@ -30,7 +30,7 @@ settings.register_profile("explore", max_examples=1000, deadline=None, print_blo
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
-# ---- robots: chains are immutable, so one of each serves the whole session ----------------
+# ---- robots: chains are immutable, so one of each serves the whole session -----------
 
 
 @pytest.fixture(scope="session")
@@ -51,12 +51,13 @@ def rng():
     return np.random.default_rng(20241201)
 
 
-# ---- figures --------------------------------------------------------------------------------
+# ---- figures -------------------------------------------------------------------------
 
 
 @pytest.fixture
 def figure():
-    """A new matplotlib figure, closed after the test (so no test sees another's figures)."""
+    """A new matplotlib figure, closed after the test (so no test sees another's
+    figures)."""
     import matplotlib
 
     matplotlib.use("Agg")

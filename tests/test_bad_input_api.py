@@ -573,7 +573,7 @@ def test_bad_input_is_a_clear_error_naming_the_argument(call, error, name):
     assert "got" in message or "must" in message or "undefined" in message
 
 
-# ---- every public function with arguments has a row somewhere --------------------------
+# ---- every public function with arguments has a row somewhere ------------------------
 
 TABLES = sorted(Path(__file__).parent.glob("test_bad_input_*.py"))
 MODULES = [

@@ -76,7 +76,8 @@ EYE = np.eye(4)
 
 
 def limits_q0():
-    """A q0 outside LIMITED's limits (joint 2 at 90 deg) that still starts on the path."""
+    """A q0 outside LIMITED's limits (joint 2 at 90 deg) that still starts on the
+    path."""
     return rd.start_configuration(limited(), path().position[0], [-1.0, 1.6, 0.2])
 
 
@@ -1267,7 +1268,7 @@ def test_a_non_chain_gets_one_message_everywhere():
             call()
 
 
-# ---- valid edge cases are answers -------------------------------------------------------
+# ---- valid edge cases are answers ----------------------------------------------------
 
 
 def test_numpy_integer_scalars_are_real_numbers():
@@ -1303,7 +1304,7 @@ def test_the_hypothesis_profile_is_derandomized():
     assert settings.default.derandomize and settings.default.database is None
 
 
-# ---- nothing changes its input ----------------------------------------------------------
+# ---- nothing changes its input -------------------------------------------------------
 
 
 def _mutation_calls():

@@ -1,5 +1,5 @@
-"""Bad input to the inverse kinematics: one row per case, the error type and the argument the
-message names."""
+"""Bad input to the inverse kinematics: one row per case, the error type and the
+argument the message names."""
 
 import functools
 

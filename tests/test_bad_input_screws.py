@@ -1,5 +1,5 @@
-"""Bad input to screws, screw systems, mobility and joints: each case raises the documented
-error, and its message names the argument at fault."""
+"""Bad input to screws, screw systems, mobility and joints: each case raises the
+documented error, and its message names the argument at fault."""
 
 import functools
 

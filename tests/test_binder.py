@@ -1,10 +1,11 @@
-"""Binder builds the course: its Python is a supported one and its requirements resolve on it.
+"""Binder builds the course: its Python is a supported one and its requirements resolve
+on it.
 
 Binder (repo2docker) takes its Python from binder/runtime.txt and installs
-binder/requirements.txt (the course's pins, JupyterLab and screwkit) with pip. The resolution
-test runs pip's dry run with that exact minor version of Python; it is skipped, saying why,
-when this machine has no such interpreter or no access to the package index.
-"""
+binder/requirements.txt (the course's pins, JupyterLab and screwkit) with pip. The
+resolution test runs pip's dry run with that exact minor version of Python; it is
+skipped, saying why, when this machine has no such interpreter or no access to the
+package index."""
 
 import glob
 import json
@@ -69,7 +70,8 @@ def test_binder_python_is_in_the_supported_range():
 
 
 def test_the_classifiers_state_the_supported_range():
-    """The classifiers name consecutive minor versions, the lowest being requires-python's."""
+    """The classifiers name consecutive minor versions, the lowest being
+    requires-python's."""
     assert CLASSIFIED == [
         Version(f"3.{n}") for n in range(CLASSIFIED[0].minor, CLASSIFIED[-1].minor + 1)
     ]

@@ -50,7 +50,8 @@ def test_a_chapter_without_outcomes_fails_and_front_matter_is_exempt():
 
 def test_placeholder_launch_url_fails():
     parser = site_check.parse(
-        '<a href="https://hub.example.edu/hub/user-redirect/git-pull?repo=x">JupyterHub</a>'
+        '<a href="https://hub.example.edu/hub/user-redirect/git-pull?repo=x">'
+        "JupyterHub</a>"
         '<a href="https://mybinder.org/v2/gh/screwkit/x/main">Binder</a>'
     )
     problems = site_check.check_placeholder_links("notebooks/a.html", parser)
@@ -58,7 +59,8 @@ def test_placeholder_launch_url_fails():
 
 
 BIB = r"""
-@article{three, author = {Surriani, Atikah and Arrofiq, Muhammad and Fahmizal}, year = {2018}}
+@article{three, author = {Surriani, Atikah and Arrofiq, Muhammad and Fahmizal},
+  year = {2018}}
 @book{two, author = {Lynch, Kevin M. and Park, Frank C.}, year = {2017}}
 @book{one, author = {Craig, John J.}, year = {2005}}
 @misc{anonymous, title = {A study}, shorthand = {CX210L study 2021}, year = {2021}}
@@ -109,7 +111,8 @@ BOOK_COLUMN_PX = 688  # the book's content column at 1280 px (pydata-sphinx-them
 
 
 def stored_figures():
-    """(notebook, cell number, PNG bytes) of every figure stored in the chapter notebooks."""
+    """(notebook, cell number, PNG bytes) of every figure stored in the chapter
+    notebooks."""
     for path in sorted((ROOT / "notebooks").glob("*.ipynb")):
         cells = json.loads(path.read_text())["cells"]
         for k, cell in enumerate(cells):
@@ -119,8 +122,9 @@ def stored_figures():
 
 
 def test_every_stored_figure_fits_the_book_column():
-    # myst-nb shows a PNG at its natural size (one pixel a CSS pixel): wider than the column,
-    # the browser shrinks it and its text with it. The width is bytes 16-19 of the PNG header.
+    # myst-nb shows a PNG at its natural size (one pixel a CSS pixel): wider than the
+    # column, the browser shrinks it and its text with it. The width is bytes 16-19 of
+    # the PNG header.
     figures = list(stored_figures())
     assert len(figures) >= 9  # every chapter shows at least one
     wide = [
@@ -132,7 +136,8 @@ def test_every_stored_figure_fits_the_book_column():
 
 
 def test_no_stored_figure_is_a_thumbnail():
-    # A formula rendered as a tiny PNG (SymPy's LaTeX image) is blurry: show it as MathJax.
+    # A formula rendered as a tiny PNG (SymPy's LaTeX image) is blurry: show it as
+    # MathJax.
     small = [
         (name, k)
         for name, k, png in stored_figures()
@@ -160,7 +165,8 @@ def test_a_mobility_chapter_must_draw_every_mechanism(tmp_path):
         site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", two)
         == []
     )
-    # a chapter that builds mechanisms without analysing their mobility is not of that kind
+    # a chapter that builds mechanisms without analysing their mobility is not of that
+    # kind
     source.write_text(
         json.dumps(
             {"cells": [{"cell_type": "code", "source": ["sk.robots.pm_3prrr()"]}]}

@@ -1,4 +1,5 @@
-"""DH chains: FK against independent closed forms, the paper's named poses, PoE, conventions."""
+"""DH chains: FK against independent closed forms, the paper's named poses, PoE,
+conventions."""
 
 import numpy as np
 import pytest
@@ -15,8 +16,9 @@ joint_vectors = arrays(float, 6, elements=st.floats(-np.pi, np.pi, allow_nan=Fal
 
 
 def puma_by_hand(q):
-    """The PUMA 560 pose derived by hand: the wrist centre from the arm's plane, and
-    R = Rz(q1) Rx(90) Rz(q2 + q3) Rx(-90) . Rz(q4) Ry(-q5) Rz(q6) (the wrist's Z-Y-Z angles)."""
+    """The PUMA 560 pose derived by hand: the wrist centre from the arm's plane, and R =
+    Rz(q1) Rx(90) Rz(q2 + q3) Rx(-90) . Rz(q4) Ry(-q5) Rz(q6) (the wrist's Z-Y-Z
+    angles)."""
     q1, q2, q3, q4, q5, q6 = q
     reach = A2 * np.cos(q2) + A3 * np.cos(q2 + q3) - D4 * np.sin(q2 + q3)
     height = A2 * np.sin(q2) + A3 * np.sin(q2 + q3) + D4 * np.cos(q2 + q3)
@@ -55,7 +57,8 @@ def test_batch_fk_equals_single_fk(puma):
 
 
 def test_named_poses(puma):
-    # zero: upper arm along x, forearm up: (a2 + a3, -d3, d4); the paper prints z = 0.4381 (digits swapped)
+    # zero: upper arm along x, forearm up: (a2 + a3, -d3, d4); the paper prints z =
+    # 0.4381 (digits swapped)
     assert np.allclose(
         puma.fk(puma.configurations["zero"]), transl(A2 + A3, -D3, D4), atol=1e-12
     )
@@ -63,9 +66,9 @@ def test_named_poses(puma):
     assert np.allclose(
         puma.fk(puma.configurations["ready"]), transl(A3, -D3, A2 + D4), atol=1e-12
     )
-    # stretch (q3 = -90) and nominal (q2 = 45, q3 = -180, q5 = 45): the tool's z is along x0 and
-    # its x along -z0 (the paper prints a stray 1 at r11). By hand, the reach along x is
-    # a2 c2 + a3 c23 - d4 s23 and the height a2 s2 + a3 s23 + d4 c23.
+    # stretch (q3 = -90) and nominal (q2 = 45, q3 = -180, q5 = 45): the tool's z is
+    # along x0 and its x along -z0 (the paper prints a stray 1 at r11). By hand, the
+    # reach along x is a2 c2 + a3 c23 - d4 s23 and the height a2 s2 + a3 s23 + d4 c23.
     R = np.array([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])
     h = np.sqrt(0.5)
     expected = {
@@ -165,8 +168,8 @@ def test_general_chain_fk_poe_and_batch():
 
 
 def test_modified_dh_describes_the_same_arm():
-    # Tx(a) and Rx(alpha) commute, so a standard chain is the modified chain whose link i
-    # carries alpha_{i-1}, a_{i-1}, with Tx(a_n) Rx(alpha_n) as tool.
+    # Tx(a) and Rx(alpha) commute, so a standard chain is the modified chain whose link
+    # i carries alpha_{i-1}, a_{i-1}, with Tx(a_n) Rx(alpha_n) as tool.
     links = random_chain(8)
     standard = sk.Chain(links)
     shifted = [

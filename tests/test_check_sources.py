@@ -1,4 +1,5 @@
-"""The CI check of .ci/check_sources.py: chapter sources and notebooks agree, code fits a page."""
+"""The CI check of .ci/check_sources.py: chapter sources and notebooks agree, code fits
+a page."""
 
 import importlib.util
 import pathlib
@@ -132,10 +133,12 @@ def page(code, prose="A page."):
     """A built page in the shape Jupyter Book gives a code cell."""
     return (
         f"<html><body><p>{prose}</p>"
-        '<div class="cell docutils container"><div class="cell_input docutils container">'
+        '<div class="cell docutils container">'
+        '<div class="cell_input docutils container">'
         '<div class="highlight-ipython3 notranslate"><div class="highlight"><pre>'
         f"{code}</pre></div></div></div>"
-        '<div class="cell_output docutils container"><div class="output stream highlight-myst-ansi'
+        '<div class="cell_output docutils container">'
+        '<div class="output stream highlight-myst-ansi'
         ' notranslate"><div class="highlight"><pre><span></span>' + "9" * 120 + "</pre>"
         "</div></div></div></div></body></html>"
     )

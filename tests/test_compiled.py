@@ -24,7 +24,8 @@ def test_term_algebra_and_text():
     [[0, 0, 1, 0, 0, 0], [0, 0, 0, 0.6, 0, 0.8], [0.6, 0.8, 0, 1.0, -0.75, 2.0]],
 )
 def test_exponential_coefficients_give_exp_twist(twist):
-    """exp([X] theta) = K1 + Kc cos + Ks sin + Kt theta, against transforms.exp_twist."""
+    """exp([X] theta) = K1 + Kc cos + Ks sin + Kt theta, against
+    transforms.exp_twist."""
     K1, Kc, Ks, Kt = exponential_coefficients(np.array(twist, dtype=float))
     for theta in (-2.0, 0.3, 1.7):
         expected = sk.exp_twist(twist, theta)
@@ -33,8 +34,8 @@ def test_exponential_coefficients_give_exp_twist(twist):
 
 
 def test_program_pose_is_the_product_of_exponentials(rng):
-    """A made-up program C0 exp(X1 t1) C1 exp(X2 t2) C2 run as generated code, against the
-    product written with exp_twist."""
+    """A made-up program C0 exp(X1 t1) C1 exp(X2 t2) C2 run as generated code, against
+    the product written with exp_twist."""
     C = [
         sk.transl(*rng.normal(size=3))
         @ sk.homogeneous(sk.rot_axis(rng.normal(size=3), 0.7))
@@ -113,6 +114,7 @@ def test_in_chunks_concatenates_and_fills(monkeypatch):
 
 
 def test_exact_model_numbers_are_snapped():
-    """alpha = pi/2 given exactly generates no 6e-17 terms: the source has no tiny numbers."""
+    """alpha = pi/2 given exactly generates no 6e-17 terms: the source has no tiny
+    numbers."""
     arm = sk.Chain([sk.Link.revolute(alpha=sp.pi / 2, a=1.0), sk.Link.revolute(a=1.0)])
     assert "e-1" not in arm.source("pose")

@@ -1,5 +1,5 @@
-"""The test files build robots and figures when a test asks for them, never at import:
-a file's import must not construct a chain, a parallel manipulator or a matplotlib figure
+"""The test files build robots and figures when a test asks for them, never at import: a
+file's import must not construct a chain, a parallel manipulator or a matplotlib figure
 (shared ones come from conftest.py's fixtures or a file's cached builder functions)."""
 
 import importlib.util

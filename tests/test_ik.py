@@ -1,5 +1,6 @@
-"""Closed-form IK of arms with a spherical wrist (PUMA 560 of any size, with base and tool; the
-Kawasaki CX210L): round trips, labels, singular configurations, reach, limits; numeric IK."""
+"""Closed-form IK of arms with a spherical wrist (PUMA 560 of any size, with base and
+tool; the Kawasaki CX210L): round trips, labels, singular configurations, reach, limits;
+numeric IK."""
 
 import functools
 
@@ -36,7 +37,8 @@ def kawasaki():
 
 
 def puma_with(d1=0.0, d6=0.0):
-    """The PUMA 560 with a pedestal d1 and a flange d6 (the Robotics Toolbox has d1 = 0.672)."""
+    """The PUMA 560 with a pedestal d1 and a flange d6 (the Robotics Toolbox has d1 =
+    0.672)."""
     links = list(puma().links)
     links[0] = sk.Link.revolute(d=d1, alpha=sp.pi / 2, qlim=links[0].qlim)
     links[5] = sk.Link.revolute(d=d6, qlim=links[5].qlim)
@@ -70,9 +72,10 @@ def wrapped(angle):
 
 
 def corke_label(q):
-    """Corke's PUMA label from the DH geometry (the definition checked against the Robotics
-    Toolbox's ikine_a): arm 'r' if the wrist centre is in front along x1, elbow 'u' if the
-    elbow is above the shoulder-wrist line seen with the arm forward, wrist 'f' if q5 > 0."""
+    """Corke's PUMA label from the DH geometry (the definition checked against the
+    Robotics Toolbox's ikine_a): arm 'r' if the wrist centre is in front along x1, elbow
+    'u' if the elbow is above the shoulder-wrist line seen with the arm forward, wrist
+    'f' if q5 > 0."""
     q2, q3, q5 = q[1], q[2], q[4]
     forward = A2 * np.cos(q2) + A3 * np.cos(q2 + q3) - D4 * np.sin(q2 + q3)
     up = A2 * np.sin(q2) + A3 * np.sin(q2 + q3) + D4 * np.cos(q2 + q3)
@@ -156,7 +159,8 @@ def test_kawasaki_paper_poses():
 
 
 def test_rtb_pedestal_pose_needs_its_robot():
-    """The Robotics Toolbox's PUMA has d1 = 0.672 m: its poses are solved with that robot."""
+    """The Robotics Toolbox's PUMA has d1 = 0.672 m: its poses are solved with that
+    robot."""
     q = np.radians([10, 30, -80, 20, 40, 60])
     T = pedestal().fk(q)
     with_robot = puma560_ik(T, robot=pedestal())
@@ -166,8 +170,8 @@ def test_rtb_pedestal_pose_needs_its_robot():
 
 
 def test_shoulder_singularity_issue_16():
-    """Wrist centre at exactly the shoulder offset: r^2 - d3^2 is 0 up to round-off (and the
-    arm points straight up: the elbow is stretched too)."""
+    """Wrist centre at exactly the shoulder offset: r^2 - d3^2 is 0 up to round-off (and
+    the arm points straight up: the elbow is stretched too)."""
     q1 = np.linspace(-np.pi, np.pi, 200)
     q = np.column_stack(
         [
@@ -225,7 +229,8 @@ def test_wrist_singularity_rule():
 
 
 def test_elbow_singularity():
-    """a3 sin q3 + d4 cos q3 = 0: the forearm in line with the upper arm (stretched or folded)."""
+    """a3 sin q3 + d4 cos q3 = 0: the forearm in line with the upper arm (stretched or
+    folded)."""
     for q3 in (np.arctan2(-D4, A3), np.arctan2(D4, -A3)):
         q = np.array([0.3, 0.5, q3, 0.4, 0.7, 0.2])
         solutions = puma560_ik(puma().fk(q))
@@ -238,10 +243,12 @@ def test_elbow_singularity():
 
 
 def test_kawasaki_wrist_centre_on_axis_1():
-    """No shoulder offset: the wrist centre can be on axis 1, q1 is free; the rule is q1 = 0."""
+    """No shoulder offset: the wrist centre can be on axis 1, q1 is free; the rule is q1
+    = 0."""
     q2 = 1.2
 
-    # the wrist centre (the origin of frame 4) is on axis 1 where its x in frame 1 is 0: bisect
+    # the wrist centre (the origin of frame 4) is on axis 1 where its x in frame 1 is 0:
+    # bisect
     def x4(q3):
         return kawasaki().frames(np.array([0, q2, q3, 0, 0, 0]))[4, 0, 3]
 
@@ -294,8 +301,8 @@ def test_within_limits_filters_and_explains():
     assert all(puma().within_limits(s.q) for s in allowed)
     assert solutions.nearest(q + 0.01).config == "ruf"
     assert puma560_ik(puma().fk(q), near=q + 0.01)[0].config == "ruf"
-    # joint 1 limited to +-10 deg and a pose at q1 = 90 deg: the arms have q1 = 90 deg and
-    # about -90 deg, so nothing is left, and the reason says so
+    # joint 1 limited to +-10 deg and a pose at q1 = 90 deg: the arms have q1 = 90 deg
+    # and about -90 deg, so nothing is left, and the reason says so
     tight = sk.Chain(
         [sk.Link.revolute(alpha=sp.pi / 2, qlim=np.radians([-10, 10]))]
         + list(puma().links[1:])
@@ -321,7 +328,7 @@ def test_batch_answers_and_chunks():
         ]
 
 
-# ---- numeric ----------------------------------------------------------------------------
+# ---- numeric -------------------------------------------------------------------------
 
 
 @functools.cache
@@ -330,23 +337,24 @@ def planar_2r():
 
 
 def body_jacobian_2r(theta2):
-    """Lynch and Park's 2R arm, L1 = L2 = 1: body Jacobian columns [omega; v] (derived by hand:
-    joint 2 is 1 m behind the tool along x, joint 1 is reached through both links)."""
+    """Lynch and Park's 2R arm, L1 = L2 = 1: body Jacobian columns [omega; v] (derived
+    by hand: joint 2 is 1 m behind the tool along x, joint 1 is reached through both
+    links)."""
     return np.array(
         [[0, 0], [0, 0], [1, 1], [np.sin(theta2), 0], [1 + np.cos(theta2), 1], [0, 0]]
     )
 
 
 def test_newton_raphson_example_6_1():
-    """Lynch and Park, Example 6.1: T_sd puts the tool at (0.366, 1.366) turned by 120 deg;
-    from theta0 = (0, 30 deg) Newton-Raphson converges to (30, 90) deg."""
+    """Lynch and Park, Example 6.1: T_sd puts the tool at (0.366, 1.366) turned by 120
+    deg; from theta0 = (0, 30 deg) Newton-Raphson converges to (30, 90) deg."""
     target = sk.transl(
         np.cos(np.pi / 6) - 0.5, 0.5 + np.cos(np.pi / 6), 0
     ) @ sk.homogeneous(sk.rotz(2 * np.pi / 3))
     assert np.allclose(target, planar_2r().fk(np.radians([30, 90])))
     theta0 = np.radians([0.0, 30.0])
-    # the first error twist by hand: the rotation left is 90 deg about z, and v follows from
-    # exp_twist; check the solver's first step against pinv(J_b) V_b
+    # the first error twist by hand: the rotation left is 90 deg about z, and v follows
+    # from exp_twist; check the solver's first step against pinv(J_b) V_b
     V = sk.ik.pose_error(planar_2r().fk(theta0), target)
     assert np.allclose(V[:3], [0, 0, np.pi / 2])
     assert np.allclose(
@@ -398,8 +406,9 @@ def test_numeric_ik_respects_limits():
     assert puma().within_limits(result.q)
     if result.success:
         assert np.allclose(puma().fk(result.q), T, atol=1e-9)
-    # a 2R arm reaches a planar pose (x, y, angle) with one q only; with the elbow limited
-    # to [0.1, 3.0] rad the pose made by q2 = -1.0 is out of reach, and the answer says so
+    # a 2R arm reaches a planar pose (x, y, angle) with one q only; with the elbow
+    # limited to [0.1, 3.0] rad the pose made by q2 = -1.0 is out of reach, and the
+    # answer says so
     arm = sk.robots.planar([1.0, 1.0], qlim=[[-np.pi, np.pi], [0.1, 3.0]])
     target = arm.fk(np.array([0.4, -1.0]))
     out = sk.ik.numeric_ik(arm, target, np.array([0.4, 0.5]))
@@ -409,8 +418,8 @@ def test_numeric_ik_respects_limits():
 
 
 def test_numeric_ik_helical_chain():
-    """A product-of-exponentials chain with a helical joint (pitch 0.1 m/rad) and a prismatic
-    one: the answer reaches the pose made by a known q."""
+    """A product-of-exponentials chain with a helical joint (pitch 0.1 m/rad) and a
+    prismatic one: the answer reaches the pose made by a known q."""
     axes = [
         sk.twist_from_axis([0, 0, 1], [0, 0, 0], 0.1),
         sk.twist_from_axis([0, 1, 0], [0.5, 0, 0.3], 0),
@@ -427,7 +436,8 @@ def test_numeric_ik_helical_chain():
 
 
 def test_numeric_ik_takes_a_numpy_tolerance():
-    """tol=np.float32(1e-6) is a positive number like any other (the checks of _checks)."""
+    """tol=np.float32(1e-6) is a positive number like any other (the checks of
+    _checks)."""
     puma = sk.robots.puma560()
     q = np.array([0.3, 0.5, -2.0, 0.4, 0.7, 0.2])
     result = sk.ik.numeric_ik(puma, puma.fk(q), q + 0.05, tol=np.float32(1e-6))

@@ -1,5 +1,6 @@
-"""Jacobians: finite differences of FK, the change of reference point, the factorised determinant,
-manipulability and its ellipsoid against closed forms, singular configurations, bad input."""
+"""Jacobians: finite differences of FK, the change of reference point, the factorised
+determinant, manipulability and its ellipsoid against closed forms, singular
+configurations, bad input."""
 
 import numpy as np
 import pytest
@@ -41,10 +42,12 @@ def chain(request, puma, kawasaki):
 
 @pytest.mark.parametrize("chain", ARMS, indirect=True)
 def test_geometric_jacobian_equals_finite_differences(chain):
-    # numerical_jacobian differences FK: independent of the joint axes the geometric Jacobian uses
+    # numerical_jacobian differences FK: independent of the joint axes the geometric
+    # Jacobian uses
     Q = np.random.default_rng(1).uniform(-2, 2, (10, chain.n))
     for q in Q:
-        # central differences with h = 1e-6 are exact to O(h^2) ~ 1e-12 times the third derivative
+        # central differences with h = 1e-6 are exact to O(h^2) ~ 1e-12 times the third
+        # derivative
         assert np.allclose(
             chain.geometric_jacobian(q),
             jacobians.numerical_jacobian(chain, q),
@@ -70,7 +73,8 @@ def test_space_jacobian_is_the_geometric_one_moved_to_the_base_origin(chain):
     )
     assert np.allclose(Jg[:, :3], v_point, atol=1e-9)
     assert np.allclose(Jg[:, 3:], omega, atol=1e-12)
-    # at q = 0 the space Jacobian's columns are the screw axes of the product of exponentials
+    # at q = 0 the space Jacobian's columns are the screw axes of the product of
+    # exponentials
     assert np.allclose(
         chain.space_jacobian(np.zeros(chain.n)).T, chain.screw_axes(), atol=1e-12
     )
@@ -80,7 +84,8 @@ def test_puma_determinant_factorises_into_shoulder_elbow_and_wrist(puma):
     q2, q3, q5 = puma.q_symbols[1], puma.q_symbols[2], puma.q_symbols[4]
     a2, a3, d4 = sp.symbols("a2 a3 d4", positive=True)
     det = jacobians.determinant_symbolic(puma, point=4, symbolic_lengths=True)
-    # the textbook result (e.g. Siciliano et al. 2009, sec. 3.3): elbow, shoulder and wrist factors
+    # the textbook result (e.g. Siciliano et al. 2009, sec. 3.3): elbow, shoulder and
+    # wrist factors
     expected = (
         a2
         * (a3 * sp.sin(q3) + d4 * sp.cos(q3))
@@ -148,7 +153,8 @@ def test_manipulability_and_ellipsoid_of_a_two_link_arm_match_closed_forms():
         l1 * l2 * np.abs(np.sin(Q[:, 1])),
         atol=1e-12,
     )
-    # unit links at q2 = 90 deg: J J^T = [[2, 1], [1, 1]] up to a rotation, radii the golden ratio and its inverse
+    # unit links at q2 = 90 deg: J J^T = [[2, 1], [1, 1]] up to a rotation, radii the
+    # golden ratio and its inverse
     unit = sk.robots.planar([1.0, 1.0])
     centre, radii, axes = jacobians.ellipsoid(unit, [0.3, np.pi / 2])
     golden = (1 + np.sqrt(5)) / 2

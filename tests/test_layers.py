@@ -1,14 +1,15 @@
-"""screwkit's layers: every import points down the one order below, and none closes a circle.
+"""screwkit's layers: every import points down the one order below, and none closes a
+circle.
 
-``ORDER`` is the one table of the package's layers, bottom up (design.md, "Layers"). A module
-may import the modules listed before it (the layers below, and the modules before it in its own
-layer), never one listed after it or itself: so no circle can form. Imports are read from the
-source with ``ast``, at the top of a file and inside functions alike. Only the display layer
-may import inside a function (matplotlib, ipywidgets and PIL, whose import time a student should
-not pay before the first figure, and screwkit modules below it); elsewhere every import is at
-the top of the file. To add a module, add it to its layer here: a screwkit module that is not
-listed fails the test, and a listed module that does not exist (yet) is skipped.
-"""
+``ORDER`` is the one table of the package's layers, bottom up (design.md, "Layers"). A
+module may import the modules listed before it (the layers below, and the modules before
+it in its own layer), never one listed after it or itself: so no circle can form.
+Imports are read from the source with ``ast``, at the top of a file and inside functions
+alike. Only the display layer may import inside a function (matplotlib, ipywidgets and
+PIL, whose import time a student should not pay before the first figure, and screwkit
+modules below it); elsewhere every import is at the top of the file. To add a module,
+add it to its layer here: a screwkit module that is not listed fails the test, and a
+listed module that does not exist (yet) is skipped."""
 
 import ast
 from pathlib import Path
@@ -67,7 +68,8 @@ ORDER = [
     ),
 ]
 
-#: The package's entry point re-exports every layer (and loads the display layer lazily).
+#: The package's entry point re-exports every layer (and loads the display layer
+#: lazily).
 TOP = "__init__"
 
 #: What the display layer may import inside a function.
@@ -82,8 +84,8 @@ MODULES = sorted(path.stem for path in PACKAGE.glob("*.py"))
 
 
 def imports(module, source=None):
-    """(line, imported screwkit module or None, top-level name, inside a function) for every
-    import statement of ``module`` (its file, or ``source``)."""
+    """(line, imported screwkit module or None, top-level name, inside a function) for
+    every import statement of ``module`` (its file, or ``source``)."""
     if source is None:
         source = (PACKAGE / f"{module}.py").read_text(encoding="utf-8")
     tree = ast.parse(source)
@@ -132,7 +134,8 @@ def test_the_order_lists_each_module_once():
 
 
 def upward(module, found):
-    """The imports of ``found`` that point at or above ``module`` in ORDER, as sentences."""
+    """The imports of ``found`` that point at or above ``module`` in ORDER, as
+    sentences."""
     wrong = []
     for line, target, _, _ in found:
         if target is None:
@@ -148,7 +151,8 @@ def upward(module, found):
 
 
 def lazy(module, found):
-    """The imports of ``found`` inside a function that the layer of ``module`` may not make."""
+    """The imports of ``found`` inside a function that the layer of ``module`` may not
+    make."""
     inside = [
         (line, target or top) for line, target, top, in_function in found if in_function
     ]
@@ -183,7 +187,8 @@ def test_the_entry_point_imports_only_listed_modules():
     assert not unlisted
 
 
-# the checker itself, on made-up sources: the four edges that once closed screwkit's circle
+# the checker itself, on made-up sources: the four edges that once closed screwkit's
+# circle
 @pytest.mark.parametrize(
     "module, source",
     [

@@ -1,5 +1,6 @@
-"""The adjoint, the Lie bracket and the logarithms, against hand derivations and the identities
-they must satisfy; numbers from the Modern Robotics library's documented examples."""
+"""The adjoint, the Lie bracket and the logarithms, against hand derivations and the
+identities they must satisfy; numbers from the Modern Robotics library's documented
+examples."""
 
 import numpy as np
 import pytest
@@ -11,7 +12,8 @@ import screwkit as sk
 from screwkit.screws import Twist, Wrench
 from screwkit.transforms import rot_axis
 
-# Modern Robotics (Lynch & Park) library, Adjoint and MatrixLog6 examples: Rx(90 deg), p = (0, 0, 3).
+# Modern Robotics (Lynch & Park) library, Adjoint and MatrixLog6 examples: Rx(90 deg), p
+# = (0, 0, 3).
 T_MR = np.array([[1, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 3], [0, 0, 0, 1]])
 
 
@@ -40,7 +42,8 @@ def test_adjoint_of_the_modern_robotics_example_by_hand():
 
 
 def test_log_of_the_modern_robotics_example_exactly():
-    # omega theta = (pi/2, 0, 0); v theta = (I - [phi]/2 + k [phi]^2) p = (0, 3 pi/4, 3 pi/4)
+    # omega theta = (pi/2, 0, 0); v theta = (I - [phi]/2 + k [phi]^2) p = (0, 3 pi/4, 3
+    # pi/4)
     assert sk.log_transform(sp.Matrix(T_MR)) == sp.Matrix(
         [sp.pi / 2, 0, 0, 0, 3 * sp.pi / 4, 3 * sp.pi / 4]
     )

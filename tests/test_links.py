@@ -50,7 +50,8 @@ def test_link_transform_against_the_dh_formula(convention, formula):
 
 
 def test_dh_factors_multiply_to_the_link_transform():
-    """pre exp([X] t) post is the same matrix as the exact transform (floats, any angle)."""
+    """pre exp([X] t) post is the same matrix as the exact transform (floats, any
+    angle)."""
     link = Link.revolute(d=0.3, a=0.2, alpha=0.9)
     for convention in Convention:
         pre, twist, post = links.dh_factors(link, 1, convention)

@@ -1,4 +1,5 @@
-"""sk.plotting.draw_mechanism: every catalogue mechanism, what is drawn where, and bad input."""
+"""sk.plotting.draw_mechanism: every catalogue mechanism, what is drawn where, and bad
+input."""
 
 import matplotlib
 
@@ -46,8 +47,8 @@ def test_the_platform_goes_through_each_limbs_last_joint():
 
 
 def test_symmetric_values_close_the_planar_3rrr_on_an_equilateral_triangle():
-    # Every limb is limb 1 turned by 120 degrees, with the same angles: so are the platform's
-    # corners, which makes the drawn platform an equilateral triangle.
+    # Every limb is limb 1 turned by 120 degrees, with the same angles: so are the
+    # platform's corners, which makes the drawn platform an equilateral triangle.
     ax = sk.plotting.draw_mechanism(
         sk.robots.planar_3rrr(), sk.robots.DRAWING_VALUES["planar_3rrr"]
     )
@@ -68,7 +69,8 @@ def test_platform_twists_are_drawn_one_arrow_each():
 
 
 def test_every_text_of_a_mechanism_drawing_is_at_least_9_pt_in_the_course_style():
-    # The course's minimum (screwkit.plotting): legend, title, axis and tick labels alike.
+    # The course's minimum (screwkit.plotting): legend, title, axis and tick labels
+    # alike.
     limbs = sk.robots.pm_4prru()
     with plt.rc_context(sk.plotting.COURSE_STYLE):
         ax = sk.plotting.draw_mechanism(

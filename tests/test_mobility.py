@@ -10,7 +10,8 @@ import screwkit as sk
 from screwkit.mobility import grubler_kutzbach, mobility
 from screwkit.transforms import rot_axis
 
-PAPER = {  # the paper's mobility dictionaries (its notebook's outputs, and Table/eqs. 4-6)
+# the paper's mobility dictionaries (its notebook's outputs, and Table/eqs. 4-6)
+PAPER = {
     "pm_3prrr": {"Number": 3, "Type": "3T", "Direction": ["Tx", "Ty", "Tz"]},
     "pm_3prpar": {"Number": 3, "Type": "3T", "Direction": ["Tx", "Ty", "Tz"]},
     "pm_4prru": {"Number": 4, "Type": "3T1R", "Direction": ["Tx", "Ty", "Tz", "Rz"]},
@@ -71,8 +72,9 @@ def test_grubler_kutzbach_reproduces_the_paper_counts():
             grubler_kutzbach(row["links"], row["joints"], row["freedoms"])
             == row["mobility"]
         ), name
-    # Counted as serial limbs of one-freedom screws, with the redundant constraints and the
-    # idle freedoms that screw theory finds, the corrected count gives the true mobility.
+    # Counted as serial limbs of one-freedom screws, with the redundant constraints and
+    # the idle freedoms that screw theory finds, the corrected count gives the true
+    # mobility.
     for name in ("pm_3prrr", "pm_4prru", "pm_3prpar"):
         m = mobility(getattr(sk.robots, name)())
         assert (
@@ -136,8 +138,9 @@ def test_numeric_configurations_agree_with_the_symbolic_answer(name):
 
 
 def test_a_singular_configuration_differs_from_the_generic_one():
-    # Tripteron limb 1 folded (theta_12 = theta_13): still 3T, the limbs stay independent.
-    # A planar 3-RRR with every limb stretched straight loses a motion: the answer says so.
+    # Tripteron limb 1 folded (theta_12 = theta_13): still 3T, the limbs stay
+    # independent. A planar 3-RRR with every limb stretched straight loses a motion: the
+    # answer says so.
     limbs = sk.robots.planar_3rrr()
     theta = {sp.Symbol(f"theta_{i}{j}"): 0 for i in (1, 2, 3) for j in (1, 2)}
     stretched = [
@@ -175,7 +178,8 @@ def test_bad_limbs_are_named(limbs, error, message):
 
 
 def test_3prpar_limb_wrenches_equal_the_papers():
-    # The paper's notebook prints each LWS as (0, 0, 0, m_x, m_y, 1) with tan(theta_i2) terms.
+    # The paper's notebook prints each LWS as (0, 0, 0, m_x, m_y, 1) with tan(theta_i2)
+    # terms.
     t = [sp.Symbol(f"theta_{i}2") for i in (1, 2, 3)]
     paper = [
         [0, 0, 0, 0, -sp.tan(t[0]), 1],
@@ -206,17 +210,19 @@ def test_a_configuration_given_with_at_says_whether_it_is_singular():
         mobility(limbs, at={"theta_11": 0})
 
 
-def test_delta_type_3ruu_is_translational_and_each_limb_constrains_the_couple_u_cross_v():
+def test_delta_type_3ruu_is_translational_each_limb_constraining_the_couple_u_x_v():
     limbs = sk.robots.pm_3ruu()
     m = mobility(limbs)
     assert (m.type, m.directions) == ("3T", ["Tx", "Ty", "Tz"])
-    # a couple (0; c) is reciprocal to a revolute (s; r x s) iff c . s = 0: c is along u x v
+    # a couple (0; c) is reciprocal to a revolute (s; r x s) iff c . s = 0: c is along u
+    # x v
     theta = sp.Symbol("theta_12")
     u, v = sp.Matrix([0, 1, 0]), sp.Matrix([sp.sin(theta), 0, sp.cos(theta)])
     couple = list(m.limb_wrench_systems[0].basis()[0].vector)
     assert couple[:3] == [0, 0, 0]
     assert sp.simplify(sp.Matrix(couple[3:]).cross(u.cross(v))) == sp.zeros(3, 1)
-    # with every v radial (theta_i2 = 90 deg) the three couples are parallel: a constraint singularity
+    # with every v radial (theta_i2 = 90 deg) the three couples are parallel: a
+    # constraint singularity
     radial = mobility(
         limbs, at={sp.Symbol(f"theta_{i}2"): sp.pi / 2 for i in (1, 2, 3)}
     )
@@ -224,7 +230,8 @@ def test_delta_type_3ruu_is_translational_and_each_limb_constrains_the_couple_u_
 
 
 def _tilted_planar_3rrr_from_floats():
-    """A planar 3-RRR (all axes along the plane's normal) in a plane tilted with NumPy floats."""
+    """A planar 3-RRR (all axes along the plane's normal) in a plane tilted with NumPy
+    floats."""
     c, s = np.cos(0.4), np.sin(0.4)
     tilt = np.array([[1, 0, 0], [0, c, -s], [0, s, c]]) @ np.array(
         [[c, 0, s], [0, 1, 0], [-s, 0, c]]
@@ -251,8 +258,9 @@ def _tilted_planar_3rrr_from_floats():
 
 
 def test_a_tilted_planar_3rrr_built_from_floats_has_planar_motion():
-    # Turning the fixed frame does not change the motions: in the tilted plane the platform
-    # translates two ways and turns about the plane's normal (2T1R), and each limb allows it.
+    # Turning the fixed frame does not change the motions: in the tilted plane the
+    # platform translates two ways and turns about the plane's normal (2T1R), and each
+    # limb allows it.
     limbs, tilt = _tilted_planar_3rrr_from_floats()
     m = mobility(limbs)
     assert (m.number, m.type) == (3, "2T1R")
@@ -269,8 +277,9 @@ def test_a_tilted_planar_3rrr_built_from_floats_has_planar_motion():
 
 def test_float_tolerance_is_the_callers_to_choose():
     limbs, _ = _tilted_planar_3rrr_from_floats()
-    # With a tolerance below round-off, the three limbs' axes (equal only to ~1e-16) count as
-    # different directions and the platform locks: the tolerance is what decides.
+    # With a tolerance below round-off, the three limbs' axes (equal only to ~1e-16)
+    # count as different directions and the platform locks: the tolerance is what
+    # decides.
     assert mobility(limbs, tol=1e-300).number < 3
     with pytest.raises(ValueError, match="tol must be a positive number below 1"):
         mobility(limbs, tol=0.0)
@@ -282,9 +291,9 @@ def test_floats_and_symbols_together_are_refused_with_the_exact_way_to_write_the
 
 
 def test_exact_coordinates_with_pi_and_square_roots():
-    # Three identical limbs P(x) P(y) H(z, pitch h): each allows Tx, Ty and the screw motion
-    # (e_z; h e_z); so does the platform (2T1R), and the screw's twist reduced to end in 1 at
-    # v_z is (0, 0, 1/h, 0, 0, 1) = (0, 0, 200 pi, 0, 0, 1).
+    # Three identical limbs P(x) P(y) H(z, pitch h): each allows Tx, Ty and the screw
+    # motion (e_z; h e_z); so does the platform (2T1R), and the screw's twist reduced to
+    # end in 1 at v_z is (0, 0, 1/h, 0, 0, 1) = (0, 0, 200 pi, 0, 0, 1).
     h = 1 / (200 * sp.pi)
     limb = (
         sk.joints.prismatic([1, 0, 0])
@@ -317,8 +326,8 @@ def test_typeset_results_keep_the_plain_text_for_terminals():
 
 
 def test_builders_write_the_limbs_their_rotation_matrices_give():
-    """The builders write entries directly; the reference turns the paper's limbs with SymPy's
-    matrix products (rotx, roty, rotz) and expands, as the paper's code does."""
+    """The builders write entries directly; the reference turns the paper's limbs with
+    SymPy's matrix products (rotx, roty, rotz) and expands, as the paper's code does."""
     from screwkit.joints import parallelogram, prismatic, revolute
     from screwkit.transforms import rotx, roty, rotz
 
@@ -395,8 +404,9 @@ def test_rotate_limb_is_the_matrix_product():
 
 
 def test_null_space_of_rows_with_fractions_and_denominators():
-    """Rows with rational coefficients and rational-function entries: the exact null space is
-    checked by M N^T = 0 and by its canonical form (each basis row ends in its own 1)."""
+    """Rows with rational coefficients and rational-function entries: the exact null
+    space is checked by M N^T = 0 and by its canonical form (each basis row ends in its
+    own 1)."""
     from screwkit import _exact
 
     a, t = sp.symbols("a t")

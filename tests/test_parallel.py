@@ -351,7 +351,8 @@ def test_fk_that_cannot_converge_says_so():
     far = pose(rotation([1, 1, 0], 0.8), [0.3, 0, 0.8])
     result = stewart().fk(stewart().ik(T), guess=far, max_iterations=2)
     assert not result.success and np.all(np.isnan(result.T)) and result.error > 1e-6
-    # leg lengths that no pose has (legs 1 and 2: 1 cm each, platform points 0.58 m apart)
+    # leg lengths that no pose has (legs 1 and 2: 1 cm each, platform points 0.58 m
+    # apart)
     result = rpr().fk([0.01, 0.01, 1.5])
     assert not result.success and np.all(np.isnan(result.T)) and result.error > 1e-3
 

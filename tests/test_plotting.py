@@ -32,7 +32,7 @@ def test_animation_html_needs_no_network():
     )  # three frames and a play button
 
 
-# ---- the course's style: figures that fit the book's 688 px column, text of 9 pt or more -------
+# ---- the course's style: figures that fit the book's 688 px column, text >= 9 pt -----
 
 BOOK_COLUMN_PX = 688  # the content column of the book at 1280 px (pydata-sphinx-theme)
 
@@ -94,8 +94,9 @@ def test_use_course_style_sets_the_column_width_and_dpi():
 
 
 def test_frames_that_share_an_origin_get_one_label():
-    # PUMA 560, standard DH, q = 0: d1 = a1 = 0 puts {1} on {0}; a4 = a5 = d5 = d6 = 0 puts
-    # {4}, {5} and {6} on the wrist centre; {2} and {3} are apart (a2 = 0.4318 m, a3 = 0.0203 m).
+    # PUMA 560, standard DH, q = 0: d1 = a1 = 0 puts {1} on {0}; a4 = a5 = d5 = d6 = 0
+    # puts {4}, {5} and {6} on the wrist centre; {2} and {3} are apart (a2 = 0.4318 m,
+    # a3 = 0.0203 m).
     ax = sk.plotting.axes3d()
     sk.plotting.draw_chain(ax, sk.robots.puma560(), np.zeros(6), frames=True)
     labels = [text.get_text() for text in ax.texts]

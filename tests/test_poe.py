@@ -1,5 +1,6 @@
-"""Chains from screws (product of exponentials): Modern Robotics' worked examples, DH = PoE for
-every catalogue robot, helical joints by hand, exact = numeric, body Jacobians, immutability."""
+"""Chains from screws (product of exponentials): Modern Robotics' worked examples, DH =
+PoE for every catalogue robot, helical joints by hand, exact = numeric, body Jacobians,
+immutability."""
 
 import numpy as np
 import pytest
@@ -8,7 +9,8 @@ import sympy as sp
 import screwkit as sk
 from screwkit.transforms import rotx, rotz, transl
 
-# Modern Robotics library examples (FKinSpace / FKinBody): a helical third joint of pitch 0.1.
+# Modern Robotics library examples (FKinSpace / FKinBody): a helical third joint of
+# pitch 0.1.
 M = np.array([[-1, 0, 0, 0], [0, 1, 0, 6], [0, 0, -1, 2], [0, 0, 0, 1.0]])
 S_LIST = [[0, 0, 1, 4, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, -1, -6, 0, -0.1]]
 B_LIST = [[0, 0, -1, 2, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 1, 0, 0, 0.1]]
@@ -55,7 +57,8 @@ def test_modern_robotics_forward_kinematics_space_and_body():
     assert np.allclose(body.fk(THETA), T_EXPECTED, atol=1e-8)
     # z = 2 - 0.1 pi exactly: the helical joint advances 0.1 m/rad over pi, downwards
     assert abs(space.fk(THETA)[2, 3] - (2 - 0.1 * np.pi)) < 1e-14
-    # the two descriptions are one robot: the body screws are the space screws moved by M^-1
+    # the two descriptions are one robot: the body screws are the space screws moved by
+    # M^-1
     assert np.allclose(space.body_screw_axes(), B_LIST, atol=1e-14)
     assert np.allclose(body.screw_axes(), S_LIST, atol=1e-14)
 
@@ -121,7 +124,8 @@ def test_dh_and_product_of_exponentials_are_the_same_robot(name):
 
 
 def test_a_helical_joint_by_hand():
-    # A screw along z through (1, 0, 0), pitch 0.05 m/rad; the tool sits at (2, 0, 0.3) at home.
+    # A screw along z through (1, 0, 0), pitch 0.05 m/rad; the tool sits at (2, 0, 0.3)
+    # at home.
     h = 0.05
     chain = sk.Chain.from_screws(
         [sk.Twist.from_axis([0, 0, 1], [1, 0, 0], h)], transl(2, 0, 0.3)
@@ -132,7 +136,8 @@ def test_a_helical_joint_by_hand():
             rotz(q)
         )
         assert np.allclose(chain.fk([q]), expected, atol=1e-14)
-    # its Jacobian column: angular z, linear velocity of the tool point = z x (p - r) + h z
+    # its Jacobian column: angular z, linear velocity of the tool point = z x (p - r) +
+    # h z
     J = chain.geometric_jacobian([0.4])
     assert np.allclose(J[:, 0], [-np.sin(0.4), np.cos(0.4), h, 0, 0, 1], atol=1e-14)
 
@@ -164,7 +169,8 @@ def test_joint_twists_of_a_singular_puma_are_an_exact_screw_system():
     assert lost.rank == 1
     assert all(sp.simplify(t @ w) == 0 for t in twists.screws for w in lost.screws)
     # numerically: the space Jacobian's columns, rank 5 there, 6 elsewhere
-    # float q: a ScrewSystem too (SVD rank), rank 5 there as NumPy's rank of the Jacobian says
+    # float q: a ScrewSystem too (SVD rank), rank 5 there as NumPy's rank of the
+    # Jacobian says
     q_float = np.array([0, 0.7, -1.5, 1.0, 0.0, 0])
     floats = puma.joint_twists(q_float)
     assert isinstance(floats, sk.ScrewSystem) and floats.rank == 5
@@ -344,7 +350,8 @@ def test_the_lost_wrench_of_a_stretched_elbow_is_a_force_along_the_arm():
     assert (twists.rank, lost.rank) == (5, 1)
     wrench = lost.basis()[0]
     assert all(sp.simplify(t @ wrench) == 0 for t in twists.screws)
-    # a pure force (zero moment about the shoulder at the origin) along the line to the wrist centre
+    # a pure force (zero moment about the shoulder at the origin) along the line to the
+    # wrist centre
     f, m = np.array(wrench.vector, dtype=float).reshape(2, 3)
     wrist_centre = puma.fk(np.array([float(v) for v in q]))[:3, 3]
     assert np.allclose(m, 0) and np.allclose(np.cross(f, wrist_centre), 0, atol=1e-12)
@@ -382,7 +389,8 @@ def test_batch_cosines_and_sines_from_the_half_angle_tangent():
     ]
     angles = np.concatenate([np.linspace(-4 * np.pi, 4 * np.pi, 100_001), special])
     c, s = cos_sin(angles)
-    # against the C library's cos and sin, one angle at a time: within 3 units in the last place
+    # against the C library's cos and sin, one angle at a time: within 3 units in the
+    # last place
     assert max(abs(x - math.cos(t)) for x, t in zip(c, angles)) < 6e-16
     assert max(abs(x - math.sin(t)) for x, t in zip(s, angles)) < 6e-16
     puma = sk.robots.puma560()

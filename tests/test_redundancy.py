@@ -1,5 +1,6 @@
 """Redundancy resolution: paths, planar kinematics against the general chain, the exact
-manipulability gradient, the null-space projector, tracking accuracy, joint limits, bad input."""
+manipulability gradient, the null-space projector, tracking accuracy, joint limits, bad
+input."""
 
 import functools
 
@@ -48,7 +49,8 @@ def test_circle_starts_at_center_plus_radius_and_runs_counter_clockwise_once():
     )  # counter-clockwise
     swept = np.unwrap(np.arctan2(relative[:, 1], relative[:, 0]))
     assert swept[-1] - swept[0] == pytest.approx(2 * np.pi)
-    # smooth timing: at rest at both ends, and the velocity is the derivative of the position
+    # smooth timing: at rest at both ends, and the velocity is the derivative of the
+    # position
     assert np.allclose(v[[0, -1]], 0)
     assert np.allclose(
         np.gradient(p, circle_path().t, axis=0)[1:-1], v[1:-1], atol=2e-4
@@ -98,7 +100,8 @@ def test_manipulability_gradient_is_exact(q):
 @given(angles)
 def test_null_space_motion_never_moves_the_end_effector(q):
     _, J = rd.planar_kinematics(LENGTHS, q)
-    # the identity is exact; J^T (J J^T)^-1 squares the condition number, and so does its round-off
+    # the identity is exact; J^T (J J^T)^-1 squares the condition number, and so does
+    # its round-off
     condition = np.linalg.cond(J)
     if condition < 100:
         tolerance = 1e-14 * condition**2
@@ -115,7 +118,7 @@ def test_null_space_motion_never_moves_the_end_effector(q):
         )
 
 
-def test_circle_is_tracked_within_a_tenth_of_a_millimetre_and_null_space_raises_manipulability():
+def test_circle_is_tracked_to_a_tenth_of_a_mm_and_null_space_raises_manipulability():
     plain = rd.resolve(five_link(), circle_path(), start_q())
     climbing = rd.resolve(five_link(), circle_path(), start_q(), null_space_gain=5.0)
     for run in (plain, climbing):
@@ -213,7 +216,8 @@ def test_damping_slows_the_joints_near_a_singularity():
 
 
 def test_a_negative_null_space_gain_lowers_manipulability():
-    # the null-space term follows k grad w: with k < 0 it descends, so w falls below the plain run
+    # the null-space term follows k grad w: with k < 0 it descends, so w falls below the
+    # plain run
     plain = rd.resolve(five_link(), circle_path(), start_q())
     lowering = rd.resolve(five_link(), circle_path(), start_q(), null_space_gain=-2.0)
     assert (
@@ -247,7 +251,8 @@ def test_start_configuration_needs_one_iteration_and_reports_its_budget():
         rd.start_configuration(
             five_link(), circle_path().position[0], start_q(), max_iterations=0
         )
-    # from the answer itself, no step is needed; from a guess, one Newton step is not enough
+    # from the answer itself, no step is needed; from a guess, one Newton step is not
+    # enough
     assert np.array_equal(
         rd.start_configuration(
             five_link(), circle_path().position[0], start_q(), max_iterations=1

@@ -228,14 +228,16 @@ def test_systems_typeset_as_tables_and_print_as_text():
 
 
 def test_square_roots_keep_their_products_exact():
-    # (sqrt(b), sqrt(ab)) = sqrt(b) (1, sqrt(a)): rank 1. The roots' sample values must satisfy
-    # sqrt(ab) = sqrt(a) sqrt(b); chosen independently, (2, 7), (3, 7) and (2, 11) came out rank 2.
+    # (sqrt(b), sqrt(ab)) = sqrt(b) (1, sqrt(a)): rank 1. The roots' sample values must
+    # satisfy sqrt(ab) = sqrt(a) sqrt(b); chosen independently, (2, 7), (3, 7) and (2,
+    # 11) came out rank 2.
     for a, b in [(2, 3), (2, 7), (3, 7), (2, 11), (5, 7)]:
         first = Twist(sp.Matrix([1, sp.sqrt(a), 0, 0, 0, 0]))
         second = Twist(sp.Matrix([sp.sqrt(b), sp.sqrt(a * b), 0, 0, 0, 0]))
         assert ScrewSystem([first, second]).rank == 1
         assert ScrewSystem([first, second]).reciprocal().rank == 5
-    # nested roots are algebraic numbers too (issue 23): sqrt(10 - 2 sqrt 5) = sqrt 2 sqrt(5 - sqrt 5)
+    # nested roots are algebraic numbers too (issue 23): sqrt(10 - 2 sqrt 5) = sqrt 2
+    # sqrt(5 - sqrt 5)
     nested = [
         sp.Matrix([sp.sqrt(5 - sp.sqrt(5)), 1, 0, 0, 0, 0]),
         sp.Matrix([sp.sqrt(10 - 2 * sp.sqrt(5)), sp.sqrt(2), 0, 0, 0, 0]),

@@ -1,14 +1,14 @@
 """Every slider of the course behaves (issue 18, item 4).
 
-The rules: the default lies on the slider's grid and strictly inside its range; the grid is
-anchored at 0 (both ends are multiples of the step), so 0 and round values are reachable; a
-joint's range lies within its limits; every slider names its unit.
+The rules: the default lies on the slider's grid and strictly inside its range; the grid
+is anchored at 0 (both ends are multiples of the step), so 0 and round values are
+reachable; a joint's range lies within its limits; every slider names its unit.
 
 The sliders are collected from the chapters as executed: every in-page figure stores its
-sliders in its output (the JSON the page reads), and nbval checks that these stored outputs
-are what a fresh execution gives. Sliders built by hand in a chapter (ipywidgets' FloatSlider
-or IntSlider called directly) would bypass the rules, so none may be.
-"""
+sliders in its output (the JSON the page reads), and nbval checks that these stored
+outputs are what a fresh execution gives. Sliders built by hand in a chapter
+(ipywidgets' FloatSlider or IntSlider called directly) would bypass the rules, so none
+may be."""
 
 import glob
 import json
@@ -90,7 +90,8 @@ def test_no_chapter_builds_a_slider_by_hand(path):
 
 def test_the_known_bad_sliders_are_gone():
     # Jacobians: q3 of the PUMA from -20 deg; PUMA FK: q3 of the nominal pose, -180 deg,
-    # inside the limits [-225, 45] deg rather than on the edge of a range clipped to 180.
+    # inside the limits [-225, 45] deg rather than on the edge of a range clipped to
+    # 180.
     by_label = {}
     for chapter in ("jacobians", "puma_fk"):
         by_label[chapter] = {

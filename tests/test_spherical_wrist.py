@@ -1,5 +1,5 @@
-"""screwkit.spherical_wrist: the geometry of a 6R arm with a spherical wrist, its labels and
-its closed form, step by step; the wrist singularity decided by one measure."""
+"""screwkit.spherical_wrist: the geometry of a 6R arm with a spherical wrist, its labels
+and its closed form, step by step; the wrist singularity decided by one measure."""
 
 import numpy as np
 import pytest
@@ -42,9 +42,9 @@ def test_joint1_step_holds_the_true_angle(puma, arm):
 
 @pytest.mark.parametrize("q5", [0.0, 1e-12, -1e-12])
 def test_wrist_singular_labels_round_trip(puma, q5):
-    """At (and within round-off of) the wrist singularity, the solution of a pose computed
-    by fk carries the label of the configuration it came from, and reaches the pose:
-    10,000 random joint vectors for each q5."""
+    """At (and within round-off of) the wrist singularity, the solution of a pose
+    computed by fk carries the label of the configuration it came from, and reaches the
+    pose: 10,000 random joint vectors for each q5."""
     rng = np.random.default_rng(2024)
     Q = rng.uniform(-np.pi, np.pi, (10_000, 6))
     Q[:, 4] = q5

@@ -1,5 +1,5 @@
-"""The Paden–Kahan subproblems: hand-built cases with known answers (exact), random round
-trips (float), and the empty answers with their reasons."""
+"""The Paden–Kahan subproblems: hand-built cases with known answers (exact), random
+round trips (float), and the empty answers with their reasons."""
 
 import numpy as np
 import pytest
@@ -62,9 +62,9 @@ def test_subproblem2_one_none_and_free():
     # q on axis 1: theta1 is free (0 returned), theta2 turns p onto q
     free = subproblem2(Z_AXIS, X_AXIS, [0, 1, 0], [0, 0, 1])
     assert free.free and len(free) == 1 and np.isclose(free[0][1], np.pi / 2)
-    # orthogonal axes: z = alpha w1 + beta w2 + gamma w1 x w2 with alpha = q_z, beta = p_x,
-    # gamma^2 = 1 - alpha^2 - beta^2. Tangent circles (gamma = 0): p = (0.6, 0.8, 0),
-    # q = (0.6, 0, 0.8) give z = q, theta1 = 0 and a quarter turn about x
+    # orthogonal axes: z = alpha w1 + beta w2 + gamma w1 x w2 with alpha = q_z, beta =
+    # p_x, gamma^2 = 1 - alpha^2 - beta^2. Tangent circles (gamma = 0): p = (0.6, 0.8,
+    # 0), q = (0.6, 0, 0.8) give z = q, theta1 = 0 and a quarter turn about x
     one = subproblem2(Z_AXIS, X_AXIS, [0.6, 0.8, 0], [0.6, 0, 0.8])
     assert len(one) == 1 and np.allclose(one[0], (0, np.pi / 2))
     # q_z = 0.96: gamma^2 = 1 - 0.9216 - 0.36 < 0
@@ -114,7 +114,8 @@ def test_subproblem3_law_of_cosines():
     assert subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], 3.0) == [pytest.approx(np.pi)]
     far = subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], 5.0)
     assert far == [] and "1.0000 to 3.0000 m" in far.reason
-    # a height difference adds in quadrature: p at z = 1, delta = 2 -> in-plane distance sqrt 3
+    # a height difference adds in quadrature: p at z = 1, delta = 2 -> in-plane distance
+    # sqrt 3
     tall = subproblem3(Z_AXIS, [1, 0, 1], [2, 0, 0], 2.0)
     assert np.allclose(sorted(tall), [-np.pi / 3, np.pi / 3])
 

@@ -33,7 +33,7 @@ def twist_matrix(twist):
     return M
 
 
-# --- exact (SymPy) results -------------------------------------------------------------
+# --- exact (SymPy) results ------------------------------------------------------------
 
 
 def test_elementary_rotations_are_the_textbook_matrices():
@@ -108,7 +108,7 @@ def test_symbolic_and_numeric_results_agree():
         )
 
 
-# --- numeric (NumPy) results -------------------------------------------------------------
+# --- numeric (NumPy) results ----------------------------------------------------------
 
 
 @settings(max_examples=200, deadline=None)
@@ -177,7 +177,7 @@ def test_transl_forms_agree():
     assert sk.transl([[1, 2, 3], [4, 5, 6]]).shape == (2, 4, 4)
 
 
-# --- bad input -------------------------------------------------------------------------
+# --- bad input ------------------------------------------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -266,7 +266,7 @@ def test_strings_are_not_sympified_into_symbols():
         sk.twist_from_axis([0, 0, 1], [theta, 0, 0], "h")
 
 
-# --- edge cases that used to be silent ----------------------------------------------------
+# --- edge cases that used to be silent ------------------------------------------------
 
 
 @pytest.mark.parametrize(

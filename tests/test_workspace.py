@@ -31,7 +31,8 @@ def test_two_link_sweep_fills_the_annulus():
 
 
 def test_kawasaki_conclusion_extents_come_from_a_ten_degree_grid():
-    # the paper's conclusion: x from -2114.7 to 2945.4 mm and "y" (the height z) from -905.4 to 3195.4 mm
+    # the paper's conclusion: x from -2114.7 to 2945.4 mm and "y" (the height z) from
+    # -905.4 to 3195.4 mm
     robot = sk.robots.kawasaki_cx210l()
     coarse = sk.workspace.sweep(
         robot, {2: (30 * DEG, 180 * DEG), 3: (-90 * DEG, 60 * DEG)}, num=(16, 16)
@@ -40,7 +41,8 @@ def test_kawasaki_conclusion_extents_come_from_a_ten_degree_grid():
     assert np.allclose(x, [-2114.7, 2945.4], atol=0.1) and np.allclose(
         z, [-905.4, 3195.4], atol=0.1
     )
-    # the full reach from the shoulder is a1 + a2 + sqrt(a3^2 + (d4 + d6)^2) away in the arm plane
+    # the full reach from the shoulder is a1 + a2 + sqrt(a3^2 + (d4 + d6)^2) away in the
+    # arm plane
     shoulder = [0.3, 0, 0.55]
     fine = sk.workspace.sweep(
         robot, {2: (30 * DEG, 180 * DEG), 3: (-90 * DEG, 60 * DEG)}, num=1501
@@ -61,7 +63,8 @@ def test_sweep_determinant_changes_sign_across_the_elbow_singularity():
         <= np.arctan2(-1.19, 0.3)
         <= s.values[0][crossing[0] + 1]
     )
-    # the singular mask marks the two grid points on either side of the crossing, and nothing else
+    # the singular mask marks the two grid points on either side of the crossing, and
+    # nothing else
     assert np.flatnonzero(s.singular()).tolist() == [crossing[0], crossing[0] + 1]
 
 
@@ -95,7 +98,8 @@ def test_section_of_a_solid_sweep_is_the_swept_plane():
         robot, {2: (30 * DEG, 180 * DEG), 3: (-90 * DEG, 60 * DEG)}, num=31
     )
     assert np.all(np.abs(cut[:, 1]) <= 1e-9)
-    # it holds the plane sweep at q1 = 0 and its mirror at q1 = +-pi (the section turned half way)
+    # it holds the plane sweep at q1 = 0 and its mirror at q1 = +-pi (the section turned
+    # half way)
     expected = np.concatenate(
         [plane.points.reshape(-1, 3), plane.points.reshape(-1, 3) * [-1, 1, 1]]
     )
@@ -109,8 +113,9 @@ def test_section_of_a_solid_sweep_is_the_swept_plane():
 
 
 def test_planar_singular_points_are_found_with_the_planar_rows():
-    # A two-link arm is singular exactly where det [[-l1 s1 - l2 s12, -l2 s12], [l1 c1 + l2 c12, l2 c12]]
-    # = l1 l2 sin q2 vanishes: on this grid, the 33 points with q2 = 0 (q2 in [-1, 1] holds no +-pi).
+    # A two-link arm is singular exactly where det [[-l1 s1 - l2 s12, -l2 s12], [l1 c1 +
+    # l2 c12, l2 c12]] = l1 l2 sin q2 vanishes: on this grid, the 33 points with q2 = 0
+    # (q2 in [-1, 1] holds no +-pi).
     l1, l2 = 1.0, 0.5
     s = sk.workspace.sweep(
         sk.robots.planar([l1, l2]), {1: (-np.pi, np.pi), 2: (-1.0, 1.0)}, num=33
@@ -120,7 +125,8 @@ def test_planar_singular_points_are_found_with_the_planar_rows():
     assert np.allclose(
         s.determinant(rows="planar"), l1 * l2 * np.sin(s.q[..., 1]), atol=1e-12
     )
-    # all six rows keep rank 2 (the angular rows z, z and the planar rows differ): none found
+    # all six rows keep rank 2 (the angular rows z, z and the planar rows differ): none
+    # found
     assert s.singular().sum() == 0
 
 
@@ -149,7 +155,8 @@ def test_a_sweep_too_large_is_refused_up_front_with_its_size_and_a_suggestion():
         r"would take 197.00 GB\)",
     ):
         sk.workspace.sweep(puma, {1: (0, 1), 2: (0, 1), 3: (0, 1), 4: (0, 1)})
-    # the limit is a keyword: 3 x 3 x 3 = 27 configurations need max_configurations >= 27
+    # the limit is a keyword: 3 x 3 x 3 = 27 configurations need max_configurations >=
+    # 27
     with pytest.raises(ValueError, match="got 3 x 3 x 3 = 27"):
         sk.workspace.sweep(
             puma, {1: (0, 1), 2: (0, 1), 3: (0, 1)}, num=3, max_configurations=26
