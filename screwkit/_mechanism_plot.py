@@ -1,10 +1,12 @@
-"""Draw a parallel mechanism from the limbs :func:`screwkit.mobility` takes (matplotlib 3D).
+"""Draw a parallel mechanism from the limbs :func:`screwkit.mobility` takes
+(matplotlib 3D).
 
-The limbs are lists of (s, r, h) joint screws with symbols; ``values`` gives every symbol a
-number, and the drawing shows the mechanism at that configuration: the base (the polygon
-through each limb's first joint), the platform (the polygon through each limb's last joint),
-each limb as a polyline through its joints, and every joint's screw axis, with revolute,
-prismatic and helical joints told apart by colour, marker and line style.
+The limbs are lists of (s, r, h) joint screws with symbols; ``values`` gives every
+symbol a number, and the drawing shows the mechanism at that configuration: the base
+(the polygon through each limb's first joint), the platform (the polygon through each
+limb's last joint), each limb as a polyline through its joints, and every joint's screw
+axis, with revolute, prismatic and helical joints told apart by colour, marker and line
+style.
 """
 
 import matplotlib.pyplot as plt
@@ -31,7 +33,8 @@ def _kind(h):
 
 
 def _check_values(limbs, values):
-    """{Symbol: float} for every symbol of the limbs; keys may be symbols or their names."""
+    """{Symbol: float} for every symbol of the limbs; keys may be symbols or their
+    names."""
     if not isinstance(values, dict):
         raise TypeError(
             f"values must be a dict {{symbol or name: number}}, got {describe(values)}"
@@ -103,7 +106,8 @@ def _numeric(vector, numbers, name):
 
 
 def evaluate(limbs, values):
-    """The joints at these values: per limb a list of (kind, unit axis (3,), point (3,)) in m."""
+    """The joints at these values: per limb a list of (kind, unit axis (3,), point (3,))
+    in m."""
     _check_limbs(limbs)
     numbers = _check_values(limbs, values)
     result = []
@@ -139,7 +143,8 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
     Parameters
     ----------
     limbs : list of limbs, each a list of (s, r, h) joint screws as :func:`screwkit.mobility`
-        takes them (s, r in m; h = 0 revolute, sympy.oo prismatic, else helical in m/rad)
+        takes them (s, r in m; h = 0 revolute, sympy.oo prismatic, else helical in
+        m/rad)
     values : dict {symbol or symbol name: number}: a number (m or rad) for every symbol
     ax : a 3D matplotlib axes, or None for a new figure
     twists : optional platform twists (Twist objects, or a Mobility whose platform twist system
@@ -155,11 +160,11 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
 
     Notes
     -----
-    The base and the platform are drawn as the polygons through each limb's first and last
-    joints. The drawing shows the joints where the limbs put them at these values: it is one
-    rigid platform only when the values satisfy the loop-closure equations. The catalogue's
-    :data:`screwkit.robots.DRAWING_VALUES` give every limb the same values, so the symmetric
-    limbs close on a regular polygon.
+    The base and the platform are drawn as the polygons through each limb's first and
+    last joints. The drawing shows the joints where the limbs put them at these values:
+    it is one rigid platform only when the values satisfy the loop-closure equations.
+    The catalogue's :data:`screwkit.robots.DRAWING_VALUES` give every limb the same
+    values, so the symmetric limbs close on a regular polygon.
     """
     joints = evaluate(limbs, values)
     if ax is None:

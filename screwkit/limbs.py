@@ -1,12 +1,12 @@
 """Limbs for the mobility zeroth step: each builder returns a list of (s, r, h) triples.
 
 (The builders were :mod:`screwkit.joints`, a name that also meant the joint kinds
-:class:`screwkit.Joint`, a chain's ``joints`` and the DH rows ``Link.revolute``; that module
-stays as an alias of this one for one release.)
+:class:`screwkit.Joint`, a chain's ``joints`` and the DH rows ``Link.revolute``; that
+module stays as an alias of this one for one release.)
 
-A limb reads like its name: ``prismatic(x) + revolute(x, A) + universal(y, z, B)`` is a PRU limb.
-Multi-freedom joints are sets of 1-freedom screws through one point: C = R + P on one
-axis, U = two crossing R, S = three crossing R.
+A limb reads like its name: ``prismatic(x) + revolute(x, A) + universal(y, z, B)`` is a
+PRU limb. Multi-freedom joints are sets of 1-freedom screws through one point: C = R + P
+on one axis, U = two crossing R, S = three crossing R.
 
 >>> import sympy as sp
 >>> len(spherical([0, 0, 1]))
@@ -44,8 +44,8 @@ def _direction(v, name):
 
 
 def _is_zero(expr):
-    """True if ``expr`` is zero for every value of its symbols: exactly after expansion, or,
-    when trigonometric identities are needed, at three random points (to 1e-9)."""
+    """True if ``expr`` is zero for every value of its symbols: exactly after expansion,
+    or, when trigonometric identities are needed, at three random points (to 1e-9)."""
     expr = sp.expand(expr)
     if expr == 0:
         return True
@@ -70,12 +70,14 @@ def revolute(s, r):
 
 
 def prismatic(s, r=(0, 0, 0)):
-    """P: translation along ``s`` (r only for drawing: a prismatic twist has no position)."""
+    """P: translation along ``s`` (r only for drawing: a prismatic twist has no
+    position)."""
     return [(_direction(s, "s"), _vec(r, "r"), sp.oo)]
 
 
 def helical(s, r, h):
-    """H: rotation about (s, r) with translation h per radian along it (h in m/rad, finite)."""
+    """H: rotation about (s, r) with translation h per radian along it
+    (h in m/rad, finite)."""
     if isinstance(h, (str, bytes)) or h is None or h is sp.oo:
         raise TypeError(
             f"h must be a finite pitch (m/rad): a number or a SymPy expression, got {describe(h)}"
@@ -123,8 +125,8 @@ def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
 def parallelogram(s, a1, a2, b1, b2):
     """Pa: four parallel revolute axes s at the corners A1, A2 (base side) and B1, B2.
 
-    The corners must make a parallelogram: B1 - A1 = B2 - A2 (equal, parallel long sides),
-    with A1 != A2 and B1 != A1.
+    The corners must make a parallelogram: B1 - A1 = B2 - A2
+    (equal, parallel long sides), with A1 != A2 and B1 != A1.
     """
     corners = [
         _vec(c, name) for c, name in ((a1, "a1"), (a2, "a2"), (b1, "b1"), (b2, "b2"))
@@ -157,9 +159,11 @@ def _check_limb(limb, name="limb"):
 
 
 def rotate_limb(limb, R):
-    """The limb turned by the rotation matrix R (3x3) about the origin of the fixed frame.
+    """The limb turned by the rotation matrix R (3x3) about the origin of the fixed
+    frame.
 
-    R must be a rotation (orthonormal, determinant +1): a scaling or a reflection is refused.
+    R must be a rotation (orthonormal, determinant +1): a scaling or a reflection is
+    refused.
     """
     _check_limb(limb)
     if not (isinstance(R, sp.MatrixBase) and _exact_rotation(R)):
