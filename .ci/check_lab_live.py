@@ -70,7 +70,10 @@ CELLS = [
     "import numpy as np\nimport screwkit as sk\n\npuma = sk.robots.puma560()",
     "sk.widgets.joint_sliders(puma)",
     "sk.viewer.robot_viewer(puma, np.radians([0, -30, 20, 0, 30, 0]), ellipsoid=True)",
-    'print(f"live kernel: PUMA 560 tool z at home = {puma.fk(np.zeros(6))[2, 3]:.4f} m")',
+    (
+        'print(f"live kernel: PUMA 560 tool z at home = '
+        '{puma.fk(np.zeros(6))[2, 3]:.4f} m")'
+    ),
 ]
 STDERR = (
     '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"], '
@@ -309,7 +312,7 @@ def run_all_cells(page, count, timeout=240):
                 const prompts = [...document.querySelectorAll('.jp-CodeCell .jp-InputPrompt')];
                 return document.querySelector(errors) !== null || (prompts.length === n
                     && prompts.every(p => /\\[\\d+\\]/.test(p.textContent)));
-            }""",
+            }""",  # noqa: E501 (JavaScript: its lines are the string's text)
             arg=[count, STDERR],
             timeout=timeout * 1000,
             polling=500,
@@ -348,7 +351,7 @@ def move_widget_slider(page, handles_expected=None, handle=0, timeout=90):
         const cell = document.querySelectorAll('.jp-CodeCell')[index];
         const img = cell.querySelector('.widget-output img');
         return cell.querySelector(errors) !== null || (img !== null && img.src !== before);
-    }"""
+    }"""  # noqa: E501 (JavaScript: its lines are the string's text)
     page.wait_for_function(
         figure_changed, arg=[index, None, STDERR], timeout=timeout * 1000
     )
@@ -378,8 +381,8 @@ def move_widget_slider(page, handles_expected=None, handle=0, timeout=90):
     took = time.monotonic() - start
     check_no_errors(page, f"after moving the slider {label}")
     log(
-        f"ipywidgets slider {label}: {value} -> {readout.inner_text()}; the kernel's new "
-        f"figure arrived {took * 1000:.0f} ms after the key press"
+        f"ipywidgets slider {label}: {value} -> {readout.inner_text()}; "
+        f"the kernel's new figure arrived {took * 1000:.0f} ms after the key press"
     )
 
 
@@ -424,8 +427,8 @@ def move_page_viewer(page):
             "dragging across the in-page viewer (orbit) did not redraw it in Lab"
         )
     log(
-        f"in-page viewer: q2 -> {slider.input_value()} deg and a drag (orbit) redrew the "
-        "canvas in Lab"
+        f"in-page viewer: q2 -> {slider.input_value()} deg and a drag (orbit) "
+        "redrew the canvas in Lab"
     )
 
 

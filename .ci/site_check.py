@@ -267,8 +267,8 @@ def check_first_cell(root, page):
         cells = [c for c in json.load(f)["cells"] if c["cell_type"] == "code"]
     if not cells or not INSTALLS_SCREWKIT.search("".join(cells[0]["source"])):
         return [
-            f"{page}: the first code cell does not install screwkit where it is missing "
-            "(copy the first code cell of another chapter)"
+            f"{page}: the first code cell does not install screwkit where it is "
+            "missing (copy the first code cell of another chapter)"
         ]
     return []
 
@@ -308,8 +308,9 @@ def check_mechanism_drawings(root, page, figures):
     mechanisms = sorted(set(MECHANISM_BUILDER.findall(code)))
     if len(figures) < len(mechanisms):
         return [
-            f"{page}: {len(mechanisms)} mechanisms analysed ({', '.join(mechanisms)}) but only "
-            f"{len(figures)} figures: draw each one (sk.plotting.draw_mechanism)"
+            f"{page}: {len(mechanisms)} mechanisms analysed "
+            f"({', '.join(mechanisms)}) but only {len(figures)} figures: "
+            "draw each one (sk.plotting.draw_mechanism)"
         ]
     return []
 
@@ -477,7 +478,7 @@ MEASURE_LAYOUT = """() => {
     }).filter(([src, width]) => width > right - left + 1);
     const page = document.documentElement.scrollWidth > innerWidth + 1;
     return {column: Math.round(right - left), out, scrolling, images, page};
-}"""
+}"""  # noqa: E501 (JavaScript: its lines are the string's text)
 
 
 def check_layout(page, page_name, width):
@@ -689,7 +690,7 @@ MOVE_CONTROL = """([id, k]) => {
     control.dispatchEvent(new Event(control.tagName === "SELECT" ? "change" : "input"));
     const elapsed = performance.now() - start;
     return [drawing() !== before, elapsed, label];
-}"""
+}"""  # noqa: E501 (JavaScript: its lines are the string's text)
 
 
 def check_interactive(browser, origin, pages):
@@ -719,7 +720,8 @@ def check_interactive(browser, origin, pages):
             ).count()
             if placeholders:
                 problems.append(
-                    f"{page_name}: {placeholders} widget placeholders (blank in the book)"
+                    f"{page_name}: {placeholders} widget placeholders "
+                    "(blank in the book)"
                 )
             figures = page.eval_on_selector_all(
                 "div.screwkit-viewer", "d => d.map(e => e.id)"
@@ -744,7 +746,8 @@ def check_interactive(browser, origin, pages):
             problems += [f"{page_name}: JavaScript error: {e}" for e in errors]
             if times:
                 print(
-                    f"{page_name}: {len(figures)} interactive figures, {len(times)} controls moved, "
+                    f"{page_name}: {len(figures)} interactive figures, "
+                    f"{len(times)} controls moved, "
                     f"redraw median {sorted(times)[len(times) // 2]:.1f} ms, "
                     f"max {max(times):.1f} ms (goal {REDRAW_GOAL_MS} ms)"
                 )
@@ -761,7 +764,8 @@ def main(root):
     pages = toc_pages(root)
     if not pages:
         sys.exit(
-            f"site check: no pages under {root}/book or {root}/notebooks; build the book first"
+            f"site check: no pages under {root}/book or {root}/notebooks; "
+            "build the book first"
         )
     browser = find_chromium()
     server = serve(root)
