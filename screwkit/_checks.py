@@ -17,7 +17,7 @@ Traceback (most recent call last):
 TypeError: theta must be a number or an array of numbers (real ones), got a string '0.5' in a list of length 1
 >>> as_real_scalar(np.int64(3), "steps")
 3.0
-"""
+"""  # noqa: E501 (the doctest's expected TypeError is one line, as Python prints it)
 
 import numbers
 
@@ -152,23 +152,26 @@ def as_float_array(value, name):
                 "" if not isinstance(value, (list, tuple)) else f" in {describe(value)}"
             )
             raise TypeError(
-                f"{name} must be a number or an array of numbers (real ones), got {reason}{where}"
+                f"{name} must be a number or an array of numbers (real ones), got "
+                f"{reason}{where}"
             )
         try:
             array = np.asarray(value, dtype=float)
         except ValueError:
             raise ValueError(
-                f"{name} must be a rectangular array of real numbers (rows of equal length), "
-                f"got {describe(value)} with rows of different lengths"
+                f"{name} must be a rectangular array of real numbers "
+                f"(rows of equal length), got {describe(value)} with rows of different "
+                "lengths"
             ) from None
         except TypeError:
             raise TypeError(
-                f"{name} must be a number or an array of numbers (real ones), got {describe(value)}"
+                f"{name} must be a number or an array of numbers (real ones), got "
+                f"{describe(value)}"
             ) from None
         except OverflowError:
             raise ValueError(
-                f"{name} must be finite, got an integer too large for a float (above 1.8e308) "
-                f"in {describe(value)}"
+                f"{name} must be finite, got an integer too large for a float "
+                f"(above 1.8e308) in {describe(value)}"
             ) from None
     check_finite(array, name)
     return array
@@ -251,7 +254,8 @@ def check_chain(value, name="chain"):
     """
     if not isinstance(value, ChainType):
         raise TypeError(
-            f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got {describe(value)}"
+            f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got "
+            f"{describe(value)}"
         )
     return value
 
@@ -289,7 +293,8 @@ def as_sympy_matrix(value, name, shape):
             )
         if _contains_string(value):
             raise TypeError(
-                f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}"
+                f"{name} must hold numbers or SymPy expressions, not strings, got "
+                f"{value!r}"
             )
         if _contains_none(value):
             raise TypeError(

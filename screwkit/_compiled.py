@@ -4,7 +4,8 @@
 Every serial chain, whatever way it was described (a DH table, or joint screws and a
 home pose), is the product
 
-    T(q) = C_0  exp([X_1] theta_1) C_1  exp([X_2] theta_2) C_2 ... exp([X_n] theta_n) C_n,
+    T(q) = C_0  exp([X_1] theta_1) C_1  exp([X_2] theta_2) C_2 ...
+    exp([X_n] theta_n) C_n,
 
 of constant rigid transforms C_k and exponentials of unit joint twists X_k = (w; v)
 written in the frame just before them, with theta_k = q_k + offset_k. For a unit w the
@@ -71,8 +72,8 @@ def _snap(array):
 
 
 def exponential_coefficients(twist):
-    """The 4x4 coefficient matrices (K1, Kc, Ks, Kt) with exp([X] theta) = K1 + Kc
-    cos + Ks sin + Kt theta.
+    """The 4x4 coefficient matrices (K1, Kc, Ks, Kt) with
+    exp([X] theta) = K1 + Kc cos + Ks sin + Kt theta.
 
     ``twist`` (6,) is a unit twist: |w| = 1, or w = 0 and |v| = 1.
     """
@@ -135,11 +136,11 @@ class Program:
     Parameters
     ----------
     start : (4, 4) the constant C_0
-    factors : list of (twist (6,), post (4, 4), point (3,)) per joint, a JointFactor: X_k, the
-        constant C_k after the
-        exponential, and a point on the joint axis in the frame just before it
-    marks : dict {k: (4, 4) offset}: record the frame reached after joint k (k = 0 before any
-        joint) times the offset, as a link frame
+    factors : list of (twist (6,), post (4, 4), point (3,)) per joint, a JointFactor:
+        X_k, the constant C_k after the exponential, and a point on the joint axis in
+        the frame just before it
+    marks : dict {k: (4, 4) offset}: record the frame reached after joint k
+        (k = 0 before any joint) times the offset, as a link frame
     """
 
     def __init__(self, start, factors, marks=None):

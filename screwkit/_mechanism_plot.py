@@ -54,8 +54,8 @@ def _check_values(limbs, values):
         name = str(key)
         if name not in by_name:
             raise ValueError(
-                f"values gives a number for {name!r}, which is not a symbol of the limbs "
-                f"(their symbols are {sorted(by_name)})"
+                f"values gives a number for {name!r}, which is not a symbol of the "
+                f"limbs (their symbols are {sorted(by_name)})"
             )
         if isinstance(value, (str, bytes, bool)) or value is None:
             raise TypeError(
@@ -94,7 +94,8 @@ def _check_limbs(limbs):
         for j, joint in enumerate(limb):
             if not isinstance(joint, (list, tuple)) or len(joint) != 3:
                 raise TypeError(
-                    f"limb {i}, joint {j} must be an (s, r, h) triple, got {describe(joint)}"
+                    f"limb {i}, joint {j} must be an (s, r, h) triple, got "
+                    f"{describe(joint)}"
                 )
 
 
@@ -142,15 +143,17 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
 
     Parameters
     ----------
-    limbs : list of limbs, each a list of (s, r, h) joint screws as :func:`screwkit.mobility`
-        takes them (s, r in m; h = 0 revolute, sympy.oo prismatic, else helical in
-        m/rad)
+    limbs : list of limbs, each a list of (s, r, h) joint screws
+        as :func:`screwkit.mobility` takes them (s, r in m; h = 0 revolute, sympy.oo
+        prismatic, else helical in m/rad)
     values : dict {symbol or symbol name: number}: a number (m or rad) for every symbol
     ax : a 3D matplotlib axes, or None for a new figure
-    twists : optional platform twists (Twist objects, or a Mobility whose platform twist system
-        is drawn) at the platform's centre: rotations as red arrows along their axis,
-        translations as green arrows
-    axis_length : length (m) of the drawn joint axes; by default a fifth of the mechanism's size
+    twists : optional platform twists
+        (Twist objects, or a Mobility whose platform twist system is drawn) at the
+        platform's centre: rotations as red arrows along their axis, translations as
+        green arrows
+    axis_length : length (m) of the drawn joint axes; by default a fifth of the
+        mechanism's size
     title : optional axes title
 
     Returns
@@ -216,8 +219,9 @@ def _draw_twists(ax, twists, centre, length):
             raise TypeError(f"twists[{k}] must be a Twist, got {describe(twist)}")
         if twist.vector.free_symbols:
             raise ValueError(
-                f"twists[{k}] has symbols {sorted(map(str, twist.vector.free_symbols))}: "
-                "substitute numbers before drawing"
+                f"twists[{k}] has symbols "
+                f"{sorted(map(str, twist.vector.free_symbols))}: substitute numbers "
+                "before drawing"
             )
         w = np.array([float(e) for e in twist.primary])
         v = np.array([float(e) for e in twist.secondary])

@@ -41,9 +41,9 @@ def to_array(rows, name="screws"):
     )
     if symbols:
         raise ValueError(
-            f"{name} mix floats with the symbols {symbols}: pass exact numbers instead of floats "
-            "(sympy.Rational('0.3'), sympy.sqrt(3)/2, sympy.pi/6) to keep the symbols, or give "
-            "every symbol a number"
+            f"{name} mix floats with the symbols {symbols}: pass exact numbers instead "
+            "of floats (sympy.Rational('0.3'), sympy.sqrt(3)/2, sympy.pi/6) to keep "
+            "the symbols, or give every symbol a number"
         )
     return np.array([[float(e) for e in row] for row in rows], dtype=float).reshape(
         len(rows), -1

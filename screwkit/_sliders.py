@@ -31,7 +31,8 @@ class SliderSpec:
     ----------
     label : str, e.g. 'q3'
     unit : str, e.g. 'deg' or 'm'
-    low, high, step, value : float, in ``unit``; low <= value <= high, all multiples of step
+    low, high, step, value : float, in ``unit``; low <= value <= high, all multiples of
+        step
     scale : float, SI units per displayed unit (pi/180 for degrees)
     """
 
@@ -105,7 +106,8 @@ def slider_spec(label, unit, low, high, value, steps=ANGLE_STEPS, scale=1.0):
 def _one_turn(value_deg):
     """A one-turn range for a revolute joint without limits, the default away from its
     edges."""
-    wrapped = value_deg  # by whole turns into [-180, 180], toward zero: 540 -> 180, -540 -> -180
+    # by whole turns into [-180, 180], toward zero: 540 -> 180, -540 -> -180
+    wrapped = value_deg
     if wrapped > 180.0:
         wrapped -= 360.0 * math.ceil((wrapped - 180.0) / 360.0)
     elif wrapped < -180.0:

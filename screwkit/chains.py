@@ -106,7 +106,8 @@ class Chain(ChainType):
     convention : Convention.STANDARD (default) or Convention.MODIFIED
     base, tool : 4x4 rigid transforms (default identity): T = base @ A_1 ... A_n @ tool
     name : str, used in messages and titles
-    configurations : optional {name: joint vector (n,)}, named configurations ('zero', ...)
+    configurations : optional {name: joint vector (n,)}, named configurations
+        ('zero', ...)
     """
 
     #: The URDF joint names in order for a chain from :meth:`from_urdf`, None otherwise.
@@ -205,7 +206,8 @@ class Chain(ChainType):
         rows = as_float_array(table, "table")
         if rows.ndim != 2 or rows.shape[1] != 4 or rows.shape[0] < 1:
             raise ValueError(
-                f"table must have shape (n, 4), columns (theta, d, a, alpha), got shape {rows.shape}"
+                "table must have shape (n, 4), columns (theta, d, a, alpha), got "
+                f"shape {rows.shape}"
             )
         n = rows.shape[0]
         try:
@@ -222,7 +224,8 @@ class Chain(ChainType):
             or not all(k in (Joint.REVOLUTE, Joint.PRISMATIC) for k in kinds)
         ):
             raise ValueError(
-                f"joints must name {n} joints ('R' or 'P', or Joint members), got {joints!r}"
+                f"joints must name {n} joints ('R' or 'P', or Joint members), got "
+                f"{joints!r}"
             )
         limits = [None] * n if qlim is None else limits_table(qlim, n)
         links = []
@@ -258,9 +261,9 @@ class Chain(ChainType):
 
         Parameters
         ----------
-        axes : list of n Twist objects or 6-vectors [omega; v] (or an (n, 6) array): unit screw
-            axes, |omega| = 1 for a revolute (pitch 0) or helical (pitch omega . v)
-            joint, omega = 0 and |v| = 1 for a prismatic one
+        axes : list of n Twist objects or 6-vectors [omega; v] (or an (n, 6) array):
+            unit screw axes, |omega| = 1 for a revolute (pitch 0) or helical
+            (pitch omega . v) joint, omega = 0 and |v| = 1 for a prismatic one
         home : (4, 4) rigid transform M, the end-effector pose at q = 0 (m)
         frame : 'space' or 'body'
         qlim : (n, 2) joint limits (rad, or m for prismatic joints; +-inf: none) or None
@@ -375,8 +378,8 @@ class Chain(ChainType):
             return (
                 ""
                 if row[0] == -np.inf and row[1] == np.inf
-                else f"[{number(row[0], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}, "
-                f"{number(row[1], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}]"
+                else f"[{number(row[0], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}, "  # noqa: E501
+                f"{number(row[1], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}]"  # noqa: E501
             )
 
         rows = []
@@ -456,8 +459,8 @@ class Chain(ChainType):
         q = as_float_array(q, name)
         if q.ndim not in (1, 2) or q.shape[-1] != self.n:
             raise ValueError(
-                f"{name} must have {self.n} entries for this chain, shape ({self.n},) or (N, {self.n}), "
-                f"got shape {q.shape}"
+                f"{name} must have {self.n} entries for this chain, shape ({self.n},) "
+                f"or (N, {self.n}), got shape {q.shape}"
             )
         return q
 
@@ -467,7 +470,8 @@ class Chain(ChainType):
         q = self.check_q(q, name)
         if q.ndim != 1:
             raise ValueError(
-                f"{name} must be one configuration of shape ({self.n},), got shape {q.shape}"
+                f"{name} must be one configuration of shape ({self.n},), got shape "
+                f"{q.shape}"
             )
         return q
 
@@ -559,9 +563,11 @@ class Chain(ChainType):
     def fk_symbolic(self, simplify=True, symbolic_lengths=False, upto=None):
         """The exact end-effector pose, a 4x4 SymPy matrix in the joint symbols q1..qn.
 
-        simplify : combine sums of angles (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3))
-            after each factor, as textbooks write c23
-        symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for lengths
+        simplify : combine sums of angles
+            (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3)) after each factor, as
+            textbooks write c23
+        symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for
+            lengths
         upto : (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool
         """
         simplify = check_flag(simplify, "simplify")
@@ -573,7 +579,8 @@ class Chain(ChainType):
         if not self.is_dh:
             if symbolic_lengths or upto is not None:
                 raise ValueError(
-                    "symbolic_lengths and upto are for DH chains; this chain is built from screws"
+                    "symbolic_lengths and upto are for DH chains; this chain is built "
+                    "from screws"
                 )
             T = exact_matrix(self.base)
             factors = [
@@ -754,7 +761,8 @@ class Chain(ChainType):
         (the Jacobians, 6 x n) or 'axes' (each joint's twist and a point, then the
         pose). What :meth:`fk` and the Jacobians run, as text to read.
 
-        >>> print(Chain([Link.revolute(a=1.0)]).source())  # doctest: +NORMALIZE_WHITESPACE
+        >>> arm = Chain([Link.revolute(a=1.0)])
+        >>> print(arm.source())  # doctest: +NORMALIZE_WHITESPACE
         def kinematics(t, c, s):
             c1 = c[0]
             s1 = s[0]

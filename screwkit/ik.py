@@ -101,7 +101,10 @@ class IKSolution:
     def __repr__(self):
         q = ", ".join(f"{v:+.4f}" for v in self.q)
         extra = f", singular={self.singular}" if self.singular else ""
-        return f"IKSolution({self.config}: q=[{q}], within_limits={self.within_limits}{extra})"
+        return (
+            f"IKSolution({self.config}: q=[{q}], "
+            f"within_limits={self.within_limits}{extra})"
+        )
 
 
 class IKSolutions(list):
@@ -195,9 +198,10 @@ def analytic_ik_all(chain, T):
 
     Returns
     -------
-    Q : array, shape (8, 6) or (N, 8, 6), rad in (-pi, pi]; NaN rows for the branches that
-        do not reach a pose (all eight when it is out of reach; see :func:`analytic_ik`
-        for the reason). Computed in chunks, so memory stays bounded for large batches.
+    Q : array, shape (8, 6) or (N, 8, 6), rad in (-pi, pi];
+        NaN rows for the branches that do not reach a pose (all eight when it is out of
+        reach; see :func:`analytic_ik` for the reason). Computed in chunks, so memory
+        stays bounded for large batches.
     """
     arm = _arm(chain)
     T = check_poses(T, "T")
@@ -214,16 +218,18 @@ def analytic_ik(chain, T, within_limits=False, near=None):
         arm (joints 2, 3, 4 parallel) or an RRP arm with a spherical wrist (Stanford);
         any other arm is a ``ValueError`` saying what each structure needs
     T : array, shape (4, 4) (or (N, 4, 4): a list of answers), the tool pose (m)
-    within_limits : False (default): angles in (-pi, pi]. True: each angle moved by whole
-        turns into its joint limits, the solutions that cannot be dropped; if none is
-        left, the answer is empty and its ``reason`` says so
+    within_limits : False (default): angles in (-pi, pi].
+        True: each angle moved by whole turns into its joint limits, the solutions
+        that cannot be dropped; if none is left, the answer is empty and its
+        ``reason`` says so
     near : optional joint vector (6,): sort the solutions by their distance to it
 
     Returns
     -------
-    IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS (sorted by distance
-        to ``near`` if given); empty with a ``reason`` when out of reach; ``structure``
-        names the structure recognised. For a batch, a list of IKSolutions.
+    IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS
+        (sorted by distance to ``near`` if given); empty with a ``reason`` when out of
+        reach; ``structure`` names the structure recognised. For a batch, a list of
+        IKSolutions.
     """
     return _analytic_ik(_arm(chain), chain, check_poses(T, "T"), within_limits, near)
 

@@ -14,7 +14,8 @@ used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) 
 
 >>> import screwkit as sk, numpy as np
 >>> arm = sk.robots.planar([1.0, 1.0])
->>> float(np.round(manipulability(arm, [0.0, np.pi / 2], rows="planar"), 12))  # |l1 l2 sin q2|
+>>> w = manipulability(arm, [0.0, np.pi / 2], rows="planar")  # |l1 l2 sin q2|
+>>> float(np.round(w, 12))
 1.0
 >>> int(rank(arm, [0.0, 0.0], rows="planar"))  # stretched: singular
 1
@@ -25,7 +26,9 @@ import sympy as sp
 
 from ._checks import as_sympy_matrix, check_chain, check_flag, describe
 from ._compiled import in_chunks
-from .chains import ROWS, check_rows  # noqa: F401  (ROWS re-exported: sk.jacobians.ROWS)
+
+# ROWS re-exported: sk.jacobians.ROWS
+from .chains import ROWS, check_rows  # noqa: F401
 from .links import Joint
 
 __all__ = [
@@ -127,7 +130,8 @@ def _symbolic_point(chain, point, end, frames):
             )
         if not 0 <= point <= chain.n:
             raise ValueError(
-                f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}"
+                f"point must be a frame number 0..{chain.n}, a 3-vector or None, got "
+                f"{point!r}"
             )
         return frames[point][:3, 3]
     return as_sympy_matrix(point, "point", (3, 1))
@@ -136,10 +140,11 @@ def _symbolic_point(chain, point, end, frames):
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     """The exact geometric Jacobian (6, n), a SymPy matrix in the joint symbols q1..qn.
 
-    point : the reference point whose velocity the rows v give: None for the end-effector
-        point, an integer k for the origin of frame k of a DH chain
+    point : the reference point whose velocity the rows v give: None for the
+        end-effector point, an integer k for the origin of frame k of a DH chain
         (e.g. a wrist centre), or a 3-vector of expressions in the base frame.
-    symbolic_lengths : (DH) lengths as the symbols a_i, d_i (see ``Chain.length_symbols``).
+    symbolic_lengths : (DH) lengths as the symbols a_i, d_i
+        (see ``Chain.length_symbols``).
 
     Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the
     point: (v_i + omega_i x p; omega_i).

@@ -66,7 +66,8 @@ def adjoint(T):
 
     Parameters
     ----------
-    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m); or a SymPy 4x4 matrix
+    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m);
+        or a SymPy 4x4 matrix
 
     Returns
     -------
@@ -211,19 +212,20 @@ def log_transform(T):
     [0, pi].
 
     With phi = omega theta = log_rotation(R) and the translation p,
-    v theta = (I - [phi] / 2 + k [phi]^2) p,  k = (1 - (theta / 2)
-    cot(theta / 2)) / theta^2, which tends to 1/12 as theta -> 0
+    v theta = (I - [phi] / 2 + k [phi]^2) p,
+    k = (1 - (theta / 2) cot(theta / 2)) / theta^2, which tends to 1/12 as theta -> 0
     (a pure translation gives [0; p]) and is 1 / pi^2 at pi.
     ``exp_twist(log_transform(T), 1)`` is T.
 
     Parameters
     ----------
-    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m); or a SymPy 4x4 matrix
+    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m);
+        or a SymPy 4x4 matrix
 
     Returns
     -------
     ndarray, shape (6,) or (N, 6), ordered [omega theta (rad); v theta (m)];
-    sympy.Matrix (6, 1) for SymPy input
+        sympy.Matrix (6, 1) for SymPy input
     """
     T = check_transform(T, "T")
     if isinstance(T, sp.MatrixBase):

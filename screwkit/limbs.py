@@ -80,7 +80,8 @@ def helical(s, r, h):
     (h in m/rad, finite)."""
     if isinstance(h, (str, bytes)) or h is None or h is sp.oo:
         raise TypeError(
-            f"h must be a finite pitch (m/rad): a number or a SymPy expression, got {describe(h)}"
+            "h must be a finite pitch (m/rad): a number or a SymPy expression, got "
+            f"{describe(h)}"
         )
     return [(_direction(s, "s"), _vec(r, "r"), as_sympy_scalar(h, "h"))]
 
@@ -95,8 +96,9 @@ def universal(s1, s2, r):
     first, second = revolute(_vec(s1, "s1"), r), revolute(_vec(s2, "s2"), r)
     if _parallel(first[0][0], second[0][0]):
         raise ValueError(
-            f"s1 and s2 of a universal joint must not be parallel, got s1 = {list(first[0][0])} "
-            f"and s2 = {list(second[0][0])} (two parallel axes make a planar pair, not a U)"
+            "s1 and s2 of a universal joint must not be parallel, got s1 = "
+            f"{list(first[0][0])} and s2 = {list(second[0][0])} "
+            "(two parallel axes make a planar pair, not a U)"
         )
     return first + second
 
@@ -134,13 +136,15 @@ def parallelogram(s, a1, a2, b1, b2):
     A1, A2, B1, B2 = corners
     if not all(_is_zero(e) for e in (B1 - A1) - (B2 - A2)):
         raise ValueError(
-            "a1, a2, b1, b2 must be the corners of a parallelogram (b1 - a1 = b2 - a2), "
-            f"got b1 - a1 = {list(B1 - A1)} and b2 - a2 = {list(B2 - A2)}"
+            "a1, a2, b1, b2 must be the corners of a parallelogram "
+            f"(b1 - a1 = b2 - a2), got b1 - a1 = {list(B1 - A1)} and b2 - a2 = "
+            f"{list(B2 - A2)}"
         )
     for P, Q, names in ((A1, A2, "a1 and a2"), (A1, B1, "a1 and b1")):
         if all(_is_zero(e) for e in P - Q):
             raise ValueError(
-                f"{names} of a parallelogram must be different points, got {list(P)} for both"
+                f"{names} of a parallelogram must be different points, got {list(P)} "
+                "for both"
             )
     s = _direction(s, "s")
     return [(s.copy(), corner, 0) for corner in corners]

@@ -46,7 +46,8 @@ class Convention(enum.Enum):
 def check_convention(convention):
     if not isinstance(convention, Convention):
         raise TypeError(
-            f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}"
+            "convention must be a Convention (STANDARD or MODIFIED), got "
+            f"{convention!r}"
         )
     return convention
 
@@ -107,7 +108,8 @@ class Link:
     def __post_init__(self):
         if not isinstance(self.joint, Joint) or self.joint is Joint.HELICAL:
             raise TypeError(
-                f"joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got {self.joint!r}"
+                "joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got "
+                f"{self.joint!r}"
             )
         for name in ("d", "a", "alpha", "theta", "offset"):
             object.__setattr__(self, name, _check_parameter(getattr(self, name), name))
@@ -163,8 +165,8 @@ class Link:
             value = getattr(self, name)
             if isinstance(value, sp.Basic) and value.free_symbols:
                 raise ValueError(
-                    f"link {index}'s {name} is the expression {value}: the numeric path "
-                    "(fk, Jacobians) needs numbers; use fk_symbolic for symbols"
+                    f"link {index}'s {name} is the expression {value}: the numeric "
+                    "path (fk, Jacobians) needs numbers; use fk_symbolic for symbols"
                 )
             values.append(value)
         alpha = values.pop()
@@ -299,7 +301,8 @@ def check_screws(axes):
         items = list(axes)
     else:
         raise TypeError(
-            f"axes must be a list of Twist objects or 6-vectors [omega; v], got {describe(axes)}"
+            "axes must be a list of Twist objects or 6-vectors [omega; v], got "
+            f"{describe(axes)}"
         )
     if not items:
         raise ValueError("axes must hold at least one joint screw, got none")
@@ -347,12 +350,14 @@ def check_screws(axes):
             raise ValueError(f"{name} must be a unit screw axis, got the zero twist")
         if w != 0 and abs(w - 1) > UNIT_TOL:
             raise ValueError(
-                f"{name} must be a unit screw axis: |omega| = 1 for a revolute or helical "
-                f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}"
+                f"{name} must be a unit screw axis: |omega| = 1 for a revolute or "
+                "helical joint (or omega = 0 and |v| = 1 for a prismatic one), got "
+                f"|omega| = {w:.6g}"
             )
         if w == 0 and abs(v - 1) > UNIT_TOL:
             raise ValueError(
-                f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}"
+                f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = "
+                f"{v:.6g}"
             )
         numbers.append(
             values / (w or v)

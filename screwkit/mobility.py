@@ -4,19 +4,21 @@ Zeroth step (the user's): each limb as a list of (s, r, h) joint screws in the f
 frame.
 1. limb twist systems (LTS): the span of each limb's joint twists;
 2. limb wrench systems (LWS): the wrenches reciprocal to each LTS
-   (the limb's constraints);
+(the limb's constraints);
 3. platform wrench system (PWS): the span of all the LWS
-   (every constraint on the platform);
+(every constraint on the platform);
 4. platform twist system (PTS): the twists reciprocal to the PWS
-   (the platform's motions).
+(the platform's motions).
 
 The mobility is the order of the PTS; its twists give the type (e.g. 3T1R) and
 directions.
 
 >>> import sympy as sp
 >>> x, y, z = [1, 0, 0], [0, 1, 0], [0, 0, 1]
->>> cartesian = [[(x, [0, 0, 0], sp.oo)], [(y, [0, 0, 0], sp.oo)], [(z, [0, 0, 0], sp.oo)]]
->>> sk_result = mobility([limb + [(x, [0, 0, 0], sp.oo), (y, [0, 0, 0], sp.oo), (z, [0, 0, 0], sp.oo)]
+>>> cartesian = [[(x, [0, 0, 0], sp.oo)], [(y, [0, 0, 0], sp.oo)],
+...              [(z, [0, 0, 0], sp.oo)]]
+>>> sk_result = mobility([limb + [(x, [0, 0, 0], sp.oo), (y, [0, 0, 0], sp.oo),
+...                               (z, [0, 0, 0], sp.oo)]
 ...                       for limb in cartesian])
 >>> sk_result.number, sk_result.type, sk_result.directions
 (3, '3T', ['Tx', 'Ty', 'Tz'])
@@ -113,11 +115,13 @@ class Mobility:
 
     def _repr_latex_(self):
         lines = [
-            rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & {latex_table(s.basis())}"
+            rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & "
+            f"{latex_table(s.basis())}"
             for name, s in self._systems()
         ]
         lines.append(
-            rf"\text{{mobility}} & \text{{{self.number} ({self.type}): {', '.join(self.directions)}}}"
+            rf"\text{{mobility}} & \text{{{self.number} ({self.type}): "
+            f"{', '.join(self.directions)}}}"
         )
         return "$\\begin{array}{ll}" + r" \\ ".join(lines) + r"\end{array}$"
 
@@ -141,15 +145,22 @@ class Mobility:
                 for i, s in enumerate(systems, 1)
             )
             rows.append(
-                f'<p><b>{title}</b></p><div style="overflow-x:auto"><table><tr>{tables}</tr></table></div>'
+                f"<p><b>{title}</b></p>"
+                f'<div style="overflow-x:auto"><table><tr>{tables}</tr></table></div>'
             )
-        title = f"Mobility {self.number} ({self.type}): {', '.join(self.directions) or 'none'}"
+        title = (
+            f"Mobility {self.number} ({self.type}): "
+            f"{', '.join(self.directions) or 'none'}"
+        )
         notes = "".join(f"<p>{note}</p>" for note in self.notes)
-        return f'<div class="screwkit-mobility">{"".join(rows)}<p><b>{title}</b></p>{notes}</div>'
+        return (
+            f'<div class="screwkit-mobility">{"".join(rows)}'
+            f"<p><b>{title}</b></p>{notes}</div>"
+        )
 
     def as_dict(self):
-        """The paper's mobility dictionary: {'Number': ..., 'Type': ..., 'Direction':
-        [...]}."""
+        """The paper's mobility dictionary:
+        {'Number': ..., 'Type': ..., 'Direction': [...]}."""
         return {
             "Number": self.number,
             "Type": self.type,
@@ -163,18 +174,21 @@ def _check_limbs(limbs):
     for i, limb in enumerate(limbs):
         if not isinstance(limb, (list, tuple)) or not limb:
             raise ValueError(
-                f"limb {i} must be a non-empty list of (s, r, h) joint screws, got {limb!r}"
+                f"limb {i} must be a non-empty list of (s, r, h) joint screws, got "
+                f"{limb!r}"
             )
         for j, joint in enumerate(limb):
             if isinstance(joint, Screw):
                 if isinstance(joint, Wrench):
                     raise TypeError(
-                        f"limb {i}, joint {j} is a wrench; a limb is made of joint twists"
+                        f"limb {i}, joint {j} is a wrench; a limb is made of joint "
+                        "twists"
                     )
                 continue
             if not isinstance(joint, (list, tuple)) or len(joint) != 3:
                 raise TypeError(
-                    f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got {joint!r}"
+                    f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got "
+                    f"{joint!r}"
                 )
 
 
@@ -231,18 +245,20 @@ def mobility(limbs, at=None, tol=None):
     limbs : list of limbs; each limb a list of (s, r, h) triples in the fixed frame
         (s, r: 3-vectors in m, SymPy symbols allowed; h: 0, a finite pitch in m/rad, or
         sympy.oo), or Twists.
-    at : optional {symbol: value}, a particular configuration. The result is then the mobility
-        at those values, and its ``notes`` say whether it is the general answer
-        (the symbols free) or a singular configuration that gains or loses freedoms.
-        Every key must be a symbol of the limbs. Float values are read as the exact
-        rationals they store (the geometry stays exact; only the values are particular).
-    tol : relative tolerance of the ranks when the limbs are given with floats (default 1e-9).
+    at : optional {symbol: value}, a particular configuration.
+        The result is then the mobility at those values, and its ``notes`` say whether
+        it is the general answer (the symbols free) or a singular configuration that
+        gains or loses freedoms. Every key must be a symbol of the limbs. Float values
+        are read as the exact rationals they store (the geometry stays exact; only the
+        values are particular).
+    tol : relative tolerance of the ranks when the limbs are given with floats
+        (default 1e-9).
 
     Returns
     -------
     Mobility with ``number``, ``type`` (e.g. '3T1R'), ``directions``
-    (e.g. ['Tx', 'Ty', 'Tz', 'Rz']), the four screw systems, and the Grübler–Kutzbach
-    comparison.
+        (e.g. ['Tx', 'Ty', 'Tz', 'Rz']), the four screw systems, and the
+        Grübler–Kutzbach comparison.
 
     Notes
     -----
@@ -421,7 +437,8 @@ def _at_configuration(limbs, at, tol):
         general.directions,
     ):
         special.notes.append(
-            f"general configuration: the mobility at these values, {here}, is the general one"
+            f"general configuration: the mobility at these values, {here}, is the "
+            "general one"
         )
     else:
         change = "changes"

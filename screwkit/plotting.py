@@ -30,7 +30,9 @@ from ._checks import (
     describe,
     is_symbolic,
 )
-from ._mechanism_plot import draw_mechanism  # noqa: F401  (re-exported: sk.plotting.draw_mechanism)
+
+# re-exported: sk.plotting.draw_mechanism
+from ._mechanism_plot import draw_mechanism  # noqa: F401
 
 __all__ = [
     "COLUMN_WIDTH",
@@ -51,8 +53,8 @@ __all__ = [
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
 #: Pixels per inch of the course's figures: a figure shows at its natural size in the
-#: book, where 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's 1.33
-#: px per pt.
+#: book, where 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's
+#: 1.33 px per pt.
 DPI = 100
 #: The widest figure, in inches: 660 px at ``DPI``, plus the 0.1 in margin IPython adds
 #: on each side when it trims a figure (savefig.pad_inches): 680 px, within the 688 px
@@ -166,7 +168,8 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
     limits = as_float_array(limits, "limits")
     if limits.shape != (3, 2):
         raise ValueError(
-            f"limits must be three (min, max) pairs, shape (3, 2), got shape {limits.shape}"
+            "limits must be three (min, max) pairs, shape (3, 2), got shape "
+            f"{limits.shape}"
         )
     if np.any(limits[:, 0] >= limits[:, 1]):
         raise ValueError(
@@ -176,7 +179,8 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
         size = as_float_array(figsize, "figsize")
         if size.shape != (2,) or np.any(size <= 0):
             raise ValueError(
-                f"figsize must be (width, height) in inches, both positive, got {figsize!r}"
+                "figsize must be (width, height) in inches, both positive, got "
+                f"{figsize!r}"
             )
         figure = plt.figure(figsize=tuple(size))
         ax = figure.add_subplot(projection="3d")
@@ -246,7 +250,8 @@ def draw_screw_motion(ax, Ts, every=1, length=0.2):
     Ts = check_transform(as_float_array(Ts, "Ts"), "Ts")
     if Ts.ndim != 3 or len(Ts) < 1:
         raise ValueError(
-            f"Ts must be a batch of transforms of shape (N, 4, 4), N >= 1, got shape {Ts.shape}"
+            "Ts must be a batch of transforms of shape (N, 4, 4), N >= 1, got shape "
+            f"{Ts.shape}"
         )
     every = check_integer(every, "every", minimum=1)
     length = check_positive(length, "length")
@@ -399,7 +404,7 @@ _PLAYER = """<figure class="screwkit-animation" id="{id}">
   slider.addEventListener("input", function () {{ stop(); show(+slider.value); }});
 }})();
 </script>
-</figure>"""
+</figure>"""  # noqa: E501 (HTML and JavaScript: its lines are the string's text)
 
 
 def _describe_figure(figure, count):
@@ -441,7 +446,8 @@ def animation_html(animation, alt=None, label="Frame of the animation"):
 
     if not isinstance(animation, Animation):
         raise TypeError(
-            f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}"
+            "animation must be a matplotlib Animation (e.g. FuncAnimation), got "
+            f"{describe(animation)}"
         )
     for value, name in ((alt, "alt"), (label, "label")):
         if value is not None and not (isinstance(value, str) and value.strip()):

@@ -71,7 +71,8 @@ class Path:
         t = np.array(as_float_array(self.t, "t"))
         if t.ndim != 1 or t.size < 2:
             raise ValueError(
-                f"t must be a 1-D array of at least two sample times (s), got shape {t.shape}"
+                "t must be a 1-D array of at least two sample times (s), got shape "
+                f"{t.shape}"
             )
         steps = np.diff(t)
         dt = steps[0]
@@ -82,15 +83,15 @@ class Path:
         if not np.allclose(steps, dt, rtol=1e-9, atol=0):
             worst = int(np.argmax(np.abs(steps - dt)))
             raise ValueError(
-                f"t must be uniform (one time step dt = {dt:.6g} s), but the step after sample "
-                f"{worst} is {steps[worst]:.6g} s"
+                f"t must be uniform (one time step dt = {dt:.6g} s), but the step "
+                f"after sample {worst} is {steps[worst]:.6g} s"
             )
         for field in ("position", "velocity"):
             array = np.array(as_float_array(getattr(self, field), field))
             if array.shape != (t.size, 2):
                 raise ValueError(
-                    f"{field} must have shape ({t.size}, 2), one planar point per sample of t, "
-                    f"got shape {array.shape}"
+                    f"{field} must have shape ({t.size}, 2), one planar point per "
+                    f"sample of t, got shape {array.shape}"
                 )
             object.__setattr__(self, field, array)
         if not isinstance(self.name, str):
@@ -136,13 +137,14 @@ def _samples(duration, dt):
     dt = check_positive(dt, "dt")
     if duration / dt > MAX_SAMPLES:
         raise ValueError(
-            f"duration / dt must be at most {MAX_SAMPLES:,} steps, got {duration / dt:.3g} "
-            f"(duration={duration} s, dt={dt} s); use a larger dt"
+            f"duration / dt must be at most {MAX_SAMPLES:,} steps, got "
+            f"{duration / dt:.3g} (duration={duration} s, dt={dt} s); use a larger dt"
         )
     steps = int(round(duration / dt))
     if steps < 1 or not np.isclose(steps * dt, duration, rtol=1e-9, atol=0):
         raise ValueError(
-            f"duration must be a whole number of steps dt, got duration={duration} and dt={dt}"
+            f"duration must be a whole number of steps dt, got duration={duration} and "
+            f"dt={dt}"
         )
     return np.arange(steps + 1) * dt, duration
 
@@ -209,7 +211,8 @@ def _lengths(arm):
         planar = False
     if not planar or not np.allclose(arm.tool, np.eye(4)):
         raise ValueError(
-            f"arm must be a planar arm of revolute links about z (sk.robots.planar), got {arm!r}"
+            "arm must be a planar arm of revolute links about z (sk.robots.planar), "
+            f"got {arm!r}"
         )
     return lengths
 
@@ -260,15 +263,16 @@ def _lengths_and_q(lengths, q):
     lengths = as_float_array(lengths, "lengths")
     if lengths.ndim != 1 or lengths.size < 1:
         raise ValueError(
-            f"lengths must be a 1-D array of link lengths (m), got shape {lengths.shape}"
+            "lengths must be a 1-D array of link lengths (m), got shape "
+            f"{lengths.shape}"
         )
     if np.any(lengths < 0):
         raise ValueError(f"lengths must be >= 0 (m), got {lengths.tolist()}")
     q = as_float_array(q, "q")
     if q.ndim not in (1, 2) or q.shape[-1] != lengths.size:
         raise ValueError(
-            f"q must have {lengths.size} entries, one per length, shape ({lengths.size},) "
-            f"or (N, {lengths.size}), got shape {q.shape}"
+            f"q must have {lengths.size} entries, one per length, shape "
+            f"({lengths.size},) or (N, {lengths.size}), got shape {q.shape}"
         )
     return lengths, q
 
@@ -403,12 +407,12 @@ def resolve(
     phi = ``null_space_gain`` * grad w (thesis eqs. 2.37-2.38). ``damping`` > 0 uses
     damped least squares near singularities (see :func:`pseudo_inverse`).
 
-    joint_limits : None (ignored), 'clamp' (the arm's qlim cut the step: the end effector then
-        leaves the path), or 'avoid' (clamp, and subtract limit_gain * grad H from phi,
-        with H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)), which is 1 per
-        joint at mid-range and grows without bound at a limit: the null space pushes
-        joints away from their limits; the push's length is capped at ``max_rate``
-        rad/s).
+    joint_limits : None (ignored), 'clamp'
+        (the arm's qlim cut the step: the end effector then leaves the path), or 'avoid'
+        (clamp, and subtract limit_gain * grad H from phi, with
+        H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)), which is 1 per joint at
+        mid-range and grows without bound at a limit: the null space pushes joints away
+        from their limits; the push's length is capped at ``max_rate`` rad/s).
 
     A path that leaves the reachable annulus, a q0 of the wrong length, or a q0 whose
     end effector is more than ``start_tolerance`` (m) from the path's start is refused
@@ -433,7 +437,8 @@ def resolve(
     dt = path.dt
     if not feedback_gain * dt < 2:
         raise ValueError(
-            f"feedback_gain * dt must be in [0, 2) for a stable loop, got {feedback_gain} * {dt}"
+            "feedback_gain * dt must be in [0, 2) for a stable loop, got "
+            f"{feedback_gain} * {dt}"
         )
     if joint_limits is not None and not arm.within_limits(q):
         outside = [
@@ -441,8 +446,9 @@ def resolve(
         ]
         i = outside[0]
         raise ValueError(
-            f"q0 must lie within the arm's joint limits when joint_limits={joint_limits!r}, but "
-            f"joint {i + 1} is {q[i]:.4f} rad, outside [{arm.qlim[i, 0]:.4f}, {arm.qlim[i, 1]:.4f}]"
+            "q0 must lie within the arm's joint limits when "
+            f"joint_limits={joint_limits!r}, but joint {i + 1} is {q[i]:.4f} rad, "
+            f"outside [{arm.qlim[i, 0]:.4f}, {arm.qlim[i, 1]:.4f}]"
         )
     R, origin = _base_2d(arm)
     target = (path.position - origin) @ R  # the path in the arm's base frame
@@ -451,8 +457,9 @@ def resolve(
     start = planar_kinematics(lengths, q)[0][-1]
     if np.linalg.norm(start - target[0]) > start_tolerance:
         raise ValueError(
-            f"q0 must put the end effector within start_tolerance = {start_tolerance} m of the "
-            f"path's start {np.round(path.position[0], 4).tolist()}, got "
+            "q0 must put the end effector within start_tolerance = "
+            f"{start_tolerance} m of the path's start "
+            f"{np.round(path.position[0], 4).tolist()}, got "
             f"{np.round(start @ R.T + origin, 4).tolist()} m, "
             f"{np.linalg.norm(start - target[0]):.4f} m from the path's start; "
             "use start_configuration(arm, path.position[0], q_guess)"
@@ -524,8 +531,9 @@ def _check_reachable(lengths, target, path):
     if outside.size:
         i = outside[0]
         raise ValueError(
-            f"path must stay in the reachable annulus {inner:.4f} m <= |p| <= {outer:.4f} m around "
-            f"the arm's base, got {outside.size} of {len(radius)} samples outside it (the path "
-            f"leaves the reachable annulus), the first at t = {path.t[i]:.3f} s, "
-            f"point {np.round(path.position[i], 4).tolist()} m, |p| = {radius[i]:.4f} m"
+            f"path must stay in the reachable annulus {inner:.4f} m <= |p| <= "
+            f"{outer:.4f} m around the arm's base, got {outside.size} of {len(radius)} "
+            "samples outside it (the path leaves the reachable annulus), the first at "
+            f"t = {path.t[i]:.3f} s, point {np.round(path.position[i], 4).tolist()} m, "
+            f"|p| = {radius[i]:.4f} m"
         )

@@ -6,7 +6,7 @@ The reciprocal product $1 @ $2 = s1 . s0_2 + s0_1 . s2 is, for a twist and a
 wrench, the instantaneous power.
 
 >>> import sympy as sp
->>> t = Twist.from_axis([0, 0, 1], [1, 0, 0], 0)      # revolute about z through (1, 0, 0)
+>>> t = Twist.from_axis([0, 0, 1], [1, 0, 0], 0)  # revolute about z through (1, 0, 0)
 >>> t.vector.T
 Matrix([[0, 0, 1, 0, -1, 0]])
 >>> w = Wrench.from_axis([0, 0, 1], [0, 0, 0], sp.oo)  # a couple about z
@@ -58,7 +58,8 @@ class Screw:
             return cls._checked(axis_coordinates(s, None, sp.oo))
         if isinstance(h, str) or h is None:
             raise TypeError(
-                f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}"
+                "h must be a pitch (a number, a SymPy expression or sympy.oo), got "
+                f"{describe(h)}"
             )
         h = as_sympy_scalar(h, "h")
         return cls._checked(axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), h))
@@ -148,8 +149,8 @@ class Screw:
             )
         if type(other) is not type(self):
             raise TypeError(
-                f"cannot {operation} a {self.kind} and a {other.kind}: they live in different spaces "
-                "(use @ for the reciprocal product)"
+                f"cannot {operation} a {self.kind} and a {other.kind}: they live in "
+                "different spaces (use @ for the reciprocal product)"
             )
         return True
 

@@ -413,9 +413,9 @@ class SphericalWristArm:
         return _Arm(q2, c2, s2, _wrap_angle(q3), c3, s3q)
 
     def _joints45(self, RG, shoulder, arm):
-        """Joints 4 and 5 (subproblem 2): the rotation left for the wrist, Rw = R23^T
-        R1^T RG, takes w6 to t and x6 to b; two (q4, q5) pairs per arm and elbow, n and
-        f.
+        """Joints 4 and 5 (subproblem 2): the rotation left for the wrist,
+        Rw = R23^T R1^T RG, takes w6 to t and x6 to b; two (q4, q5) pairs per arm and
+        elbow, n and f.
 
         At the wrist singularity (axis 6 of the target on axis 4, the sine between them
         at most :data:`WRIST_TOL`) q4 is free: 'n' takes pi, 'f' takes 0.
@@ -551,8 +551,8 @@ class SphericalWristArm:
         offset = abs(w[1] @ (c - p[0]))
         if code == 1:
             return (
-                f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer than "
-                f"the shoulder offset {offset:.5f} m"
+                f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer "
+                f"than the shoulder offset {offset:.5f} m"
             )
         if code == 2:
             u3 = np.linalg.norm(c - p[2] - w[2] * (w[2] @ (c - p[2])))

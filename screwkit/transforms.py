@@ -121,8 +121,8 @@ def axis_coordinates(s, r, h):
 
     Parameters
     ----------
-    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3); r is unused
-        for h = oo
+    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3);
+        r is unused for h = oo
     h : the pitch (m/rad): a number, a SymPy expression, or oo / inf for a translation
 
     Returns
@@ -221,8 +221,9 @@ def rot_axis(axis, theta):
 
     Returns
     -------
-    sympy.Matrix (3, 3) if ``axis`` or ``theta`` is symbolic (a float angle then becomes
-    a SymPy Float), else ndarray, shape (3, 3) or (N, 3, 3)
+    sympy.Matrix (3, 3) if ``axis`` or ``theta`` is symbolic
+        (a float angle then becomes a SymPy Float), else ndarray, shape (3, 3) or
+        (N, 3, 3)
 
     >>> rot_axis([0, 0, 2], np.pi / 2).round(12)
     array([[ 0., -1.,  0.],
@@ -244,8 +245,9 @@ def _exact_angle(theta, name):
     refused."""
     if isinstance(theta, (list, tuple, np.ndarray, sp.MatrixBase)):
         raise TypeError(
-            f"{name} must be a single number or SymPy expression when the result is symbolic "
-            f"(SymPy in, SymPy out), got {describe(theta)}; for a batch of angles pass numbers"
+            f"{name} must be a single number or SymPy expression when the result is "
+            f"symbolic (SymPy in, SymPy out), got {describe(theta)}; for a batch of "
+            "angles pass numbers"
         )
     return as_sympy_scalar(theta, name)
 
@@ -268,7 +270,8 @@ def _unit_vector(value, name):
     norm = _norm(v)
     if norm < ZERO_AXIS:
         raise ValueError(
-            f"{name} must be a non-zero 3-vector (norm at least {ZERO_AXIS:g}), got {v.tolist()}"
+            f"{name} must be a non-zero 3-vector (norm at least {ZERO_AXIS:g}), got "
+            f"{v.tolist()}"
         )
     scale = np.abs(v).max()
     u = v / scale  # scaled first: the norm of [1e200, 0, 0] must not overflow to inf
@@ -308,7 +311,8 @@ def transl(*p):
             )
     else:
         raise TypeError(
-            f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} arguments"
+            f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} "
+            "arguments"
         )
     return homogeneous(None, p)
 
@@ -440,7 +444,8 @@ def exp_twist(twist, theta):
     Parameters
     ----------
     twist : array-like, shape (6,), ordered [w; v], or a SymPy 6-vector
-    theta : float, array of shape (N,), or a SymPy expression (rad, or m for a translation)
+    theta : float, array of shape (N,), or a SymPy expression
+        (rad, or m for a translation)
 
     Returns
     -------

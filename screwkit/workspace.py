@@ -36,8 +36,8 @@ from .jacobians import ROWS, geometric_jacobian, manipulability
 __all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]
 
 #: The largest sweep that :func:`sweep` builds by default: 10^7 configurations, whose
-#: points take 240 MB (and the grid of joint values, if asked for with ``Sweep.q``, 80
-#: MB per joint).
+#: points take 240 MB (and the grid of joint values, if asked for with ``Sweep.q``,
+#: 80 MB per joint).
 MAX_CONFIGURATIONS = 10_000_000
 
 
@@ -174,8 +174,9 @@ class Sweep:
         m = len(range(6)[block])
         if m != self.chain.n:
             raise ValueError(
-                f"rows must select {self.chain.n} rows, one per joint, for det J (a square "
-                f"Jacobian), got rows={rows!r} with {m} rows; use manipulability() instead"
+                f"rows must select {self.chain.n} rows, one per joint, for det J "
+                f"(a square Jacobian), got rows={rows!r} with {m} rows; use "
+                "manipulability() instead"
             )
         return self._per_point(
             lambda q: np.linalg.det(geometric_jacobian(self.chain, q)[:, block])
@@ -216,8 +217,9 @@ class Sweep:
 def _check_result_size(nbytes, what, suggestion):
     if nbytes > MAX_RESULT_BYTES:
         raise ValueError(
-            f"{what} would build one array of {nbytes / 1e9:.2f} GB, more than the limit of "
-            f"{MAX_RESULT_BYTES / 1e9:.0f} GB; {suggestion}, or sweep a coarser grid"
+            f"{what} would build one array of {nbytes / 1e9:.2f} GB, more than the "
+            f"limit of {MAX_RESULT_BYTES / 1e9:.0f} GB; {suggestion}, or sweep a "
+            "coarser grid"
         )
 
 
@@ -230,8 +232,8 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
     ranges : {joint number (1..n): (low, high)} for each swept joint, in rad (or m)
     num : points per swept joint (an int >= 2, or a sequence of one per joint)
     q : the values of the other joints, shape (n,) (default zero)
-    max_configurations : the largest grid built (default ``MAX_CONFIGURATIONS``, 10^7); a
-        larger sweep is refused before anything is allocated
+    max_configurations : the largest grid built (default ``MAX_CONFIGURATIONS``, 10^7);
+        a larger sweep is refused before anything is allocated
 
     Returns
     -------
@@ -240,8 +242,8 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
     chain = check_chain(chain)
     if not isinstance(ranges, dict) or not ranges:
         raise TypeError(
-            "ranges must be a dict {joint number: (low, high)} with at least one joint, "
-            f"got {describe(ranges)}"
+            "ranges must be a dict {joint number: (low, high)} with at least one "
+            f"joint, got {describe(ranges)}"
         )
     joints = tuple(ranges)
     for joint in joints:
@@ -249,7 +251,8 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
             joint, (int, np.integer)
         ):
             raise TypeError(
-                f"ranges keys must be joint numbers 1..{chain.n} (integers), got {joint!r}"
+                f"ranges keys must be joint numbers 1..{chain.n} (integers), got "
+                f"{joint!r}"
             )
         if not 1 <= joint <= chain.n:
             raise ValueError(
@@ -276,10 +279,10 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
         grid = " x ".join(str(c) for c in counts)
         fewer = max(2, int(limit ** (1 / len(counts))))
         raise ValueError(
-            f"a sweep must have at most max_configurations = {limit:,} configurations, got "
-            f"{grid} = {size:,} (its points alone would take {size * 24 / 1e9:.2f} GB); "
-            f"use fewer steps (e.g. num={fewer}), or sweep fewer joints and fix the others "
-            "with q (a section)"
+            f"a sweep must have at most max_configurations = {limit:,} configurations, "
+            f"got {grid} = {size:,} (its points alone would take "
+            f"{size * 24 / 1e9:.2f} GB); use fewer steps (e.g. num={fewer}), or sweep "
+            "fewer joints and fix the others with q (a section)"
         )
     fixed = np.zeros(chain.n) if q is None else chain.check_one(q, "q")
     result = Sweep(
@@ -297,7 +300,8 @@ def _counts(num, joints):
     if isinstance(num, (list, tuple, np.ndarray)):
         if len(num) != joints:
             raise ValueError(
-                f"num must be one integer or one per swept joint ({joints}), got {describe(num)}"
+                f"num must be one integer or one per swept joint ({joints}), got "
+                f"{describe(num)}"
             )
         return [check_integer(n, "num", minimum=2) for n in num]
     return [check_integer(num, "num", minimum=2)] * joints
