@@ -1,22 +1,23 @@
 """Sliders in JupyterLab against a live kernel, in headless Chromium (issue 14, item 3).
 
-Starts the JupyterLab of .venv headless on a free 127.0.0.1 port with a token of its own,
-serving a temporary directory with a copy of the redundancy chapter (its ipywidgets slider,
-the null-space gain, re-runs a resolution in Python) and a small notebook with
-``sk.widgets.joint_sliders`` and the in-page ``sk.viewer.robot_viewer``; nothing under
-notebooks/ changes. The system Chromium, driven by Playwright, with every host but 127.0.0.1
-unresolvable, opens each in Lab, runs all its cells against the live kernel, then:
+Starts the JupyterLab of .venv headless on a free 127.0.0.1 port with a token of its
+own, serving a temporary directory with a copy of the redundancy chapter
+(its ipywidgets slider, the null-space gain, re-runs a resolution in Python) and a small
+notebook with ``sk.widgets.joint_sliders`` and the in-page ``sk.viewer.robot_viewer``;
+nothing under notebooks/ changes. The system Chromium, driven by Playwright, with every
+host but 127.0.0.1 unresolvable, opens each in Lab, runs all its cells against the live
+kernel, then:
 
-- moves an ipywidgets slider with the keyboard and waits for the kernel's new figure (the
-  PNG differs): the chapter's gain k, and the PUMA 560's q2;
-- moves a slider of the in-page viewer (its script ran, as the output is trusted) and checks
-  that its canvas and caption change;
+- moves an ipywidgets slider with the keyboard and waits for the kernel's new figure
+  (the PNG differs): the chapter's gain k, and the PUMA 560's q2;
+- moves a slider of the in-page viewer (its script ran, as the output is trusted) and
+  checks that its canvas and caption change;
 - fails on any cell error or stderr output and on any error in the browser console.
 
-Every wait is bounded; kernels and server are shut down (and checked gone) whatever happens.
-Prints how long each step took; on failure, where a screenshot of the page was saved.
-Usage: .venv/bin/python .ci/check_lab_live.py (needs .ci/requirements.txt and JupyterLab in
-.venv: `make lab` installs it on first use).
+Every wait is bounded; kernels and server are shut down (and checked gone) whatever
+happens. Prints how long each step took; on failure, where a screenshot of the page was
+saved. Usage: .venv/bin/python .ci/check_lab_live.py (needs .ci/requirements.txt and
+JupyterLab in .venv: `make lab` installs it on first use).
 """
 
 import json
@@ -69,7 +70,10 @@ CELLS = [
     "import numpy as np\nimport screwkit as sk\n\npuma = sk.robots.puma560()",
     "sk.widgets.joint_sliders(puma)",
     "sk.viewer.robot_viewer(puma, np.radians([0, -30, 20, 0, 30, 0]), ellipsoid=True)",
-    'print(f"live kernel: PUMA 560 tool z at home = {puma.fk(np.zeros(6))[2, 3]:.4f} m")',
+    (
+        'print(f"live kernel: PUMA 560 tool z at home = '
+        '{puma.fk(np.zeros(6))[2, 3]:.4f} m")'
+    ),
 ]
 STDERR = (
     '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"], '
@@ -78,7 +82,8 @@ STDERR = (
 
 
 class CheckFailed(Exception):
-    """One step of the check failed; the message says what was expected and what was seen."""
+    """One step of the check failed; the message says what was expected and what was
+    seen."""
 
 
 def log(message):
@@ -97,7 +102,8 @@ def timed(name):
 
 
 def wait_until(condition, timeout, what, interval=0.5):
-    """Poll ``condition()`` until it is true; CheckFailed naming ``what`` after ``timeout`` s."""
+    """Poll ``condition()`` until it is true; CheckFailed naming ``what`` after
+    ``timeout`` s."""
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         if condition():
@@ -107,7 +113,8 @@ def wait_until(condition, timeout, what, interval=0.5):
 
 
 class Lab:
-    """A headless JupyterLab on a free port, its state in ``home`` (settings, runtime, kernels)."""
+    """A headless JupyterLab on a free port, its state in ``home``
+    (settings, runtime, kernels)."""
 
     def __init__(self, home):
         self.home = home
@@ -186,7 +193,8 @@ class Lab:
         return json.loads(body) if body else None
 
     def kernel_pids(self):
-        """Processes whose command line names a connection file of this server's runtime dir."""
+        """Processes whose command line names a connection file of this server's runtime
+        dir."""
         runtime = str(self.home / "runtime")
         pids = []
         for entry in Path("/proc").iterdir():
@@ -235,7 +243,8 @@ class Lab:
 
 
 def write_notebooks(folder):
-    """The chapter's copy and the small notebook of CELLS in ``folder``; code cells of each."""
+    """The chapter's copy and the small notebook of CELLS in ``folder``; code cells of
+    each."""
     folder.mkdir()
     shutil.copy(ROOT / "notebooks" / CHAPTER, folder / CHAPTER)
     notebook = nbformat.v4.new_notebook()
@@ -254,7 +263,8 @@ def write_notebooks(folder):
 
 
 def open_notebook(page, lab, name, timeout=120):
-    """Open ``name`` in Lab (a workspace of its own) and wait for its kernel to be idle."""
+    """Open ``name`` in Lab (a workspace of its own) and wait for its kernel to be
+    idle."""
     page.goto(
         f"{lab.url}/lab/workspaces/{Path(name).stem}/tree/{name}?token={lab.token}",
         timeout=timeout * 1000,
@@ -271,14 +281,16 @@ def open_notebook(page, lab, name, timeout=120):
 
 
 def close_notebook(lab, name):
-    """Shut down the kernel of ``name`` (its session), as File > Close and Shut Down does."""
+    """Shut down the kernel of ``name`` (its session), as File > Close and Shut Down
+    does."""
     for session in lab.api("sessions"):
         if session["path"] == name:
             lab.api(f"sessions/{session['id']}", method="DELETE", timeout=30)
 
 
 def check_no_errors(page, when):
-    """CheckFailed quoting every error or stderr output of the notebook, if there is one."""
+    """CheckFailed quoting every error or stderr output of the notebook, if there is
+    one."""
     errors = page.locator(STDERR)
     if errors.count():
         raise CheckFailed(
@@ -288,7 +300,8 @@ def check_no_errors(page, when):
 
 
 def run_all_cells(page, count, timeout=240):
-    """Run > Run All Cells; wait until every code cell shows its execution count (or errs)."""
+    """Run > Run All Cells; wait until every code cell shows its execution count
+    (or errs)."""
     page.locator(".lm-MenuBar-item", has_text="Run").first.click()
     page.locator(
         "li.lm-Menu-item:has(.lm-Menu-itemLabel:text-is('Run All Cells'))"
@@ -299,7 +312,7 @@ def run_all_cells(page, count, timeout=240):
                 const prompts = [...document.querySelectorAll('.jp-CodeCell .jp-InputPrompt')];
                 return document.querySelector(errors) !== null || (prompts.length === n
                     && prompts.every(p => /\\[\\d+\\]/.test(p.textContent)));
-            }""",
+            }""",  # noqa: E501 (JavaScript: its lines are the string's text)
             arg=[count, STDERR],
             timeout=timeout * 1000,
             polling=500,
@@ -314,7 +327,8 @@ def run_all_cells(page, count, timeout=240):
 
 
 def move_widget_slider(page, handles_expected=None, handle=0, timeout=90):
-    """Move the ``handle``-th slider of the first ipywidget to its end with the keyboard.
+    """Move the ``handle``-th slider of the first ipywidget to its end with the
+    keyboard.
 
     The kernel must answer with a different figure (PNG) in the widget's output. With
     ``handles_expected``, the widget must show that many sliders.
@@ -337,7 +351,7 @@ def move_widget_slider(page, handles_expected=None, handle=0, timeout=90):
         const cell = document.querySelectorAll('.jp-CodeCell')[index];
         const img = cell.querySelector('.widget-output img');
         return cell.querySelector(errors) !== null || (img !== null && img.src !== before);
-    }"""
+    }"""  # noqa: E501 (JavaScript: its lines are the string's text)
     page.wait_for_function(
         figure_changed, arg=[index, None, STDERR], timeout=timeout * 1000
     )
@@ -367,13 +381,14 @@ def move_widget_slider(page, handles_expected=None, handle=0, timeout=90):
     took = time.monotonic() - start
     check_no_errors(page, f"after moving the slider {label}")
     log(
-        f"ipywidgets slider {label}: {value} -> {readout.inner_text()}; the kernel's new "
-        f"figure arrived {took * 1000:.0f} ms after the key press"
+        f"ipywidgets slider {label}: {value} -> {readout.inner_text()}; "
+        f"the kernel's new figure arrived {took * 1000:.0f} ms after the key press"
     )
 
 
 def move_page_viewer(page):
-    """The in-page viewer mounted in Lab: q2 redraws canvas and caption; a drag orbits."""
+    """The in-page viewer mounted in Lab: q2 redraws canvas and caption; a drag
+    orbits."""
     root = page.locator(".jp-CodeCell div.screwkit-viewer").first
     root.wait_for(state="attached", timeout=30_000)
     figure_id = root.get_attribute("id")
@@ -412,8 +427,8 @@ def move_page_viewer(page):
             "dragging across the in-page viewer (orbit) did not redraw it in Lab"
         )
     log(
-        f"in-page viewer: q2 -> {slider.input_value()} deg and a drag (orbit) redrew the "
-        "canvas in Lab"
+        f"in-page viewer: q2 -> {slider.input_value()} deg and a drag (orbit) "
+        "redrew the canvas in Lab"
     )
 
 
@@ -468,7 +483,8 @@ def check_in_browser(lab, notebooks):
 
 
 def kill(pid, group=False):
-    """SIGKILL a process (or its group) that this check started; gone already is fine."""
+    """SIGKILL a process (or its group) that this check started; gone already is
+    fine."""
     try:
         (os.killpg if group else os.kill)(pid, signal.SIGKILL)
     except ProcessLookupError:
@@ -476,7 +492,8 @@ def kill(pid, group=False):
 
 
 def watchdog(lab, seconds):
-    """End the whole check (server and kernel included) if it runs longer than ``seconds``."""
+    """End the whole check (server and kernel included) if it runs longer than
+    ``seconds``."""
 
     def expire():
         log(f"FAILED: the check did not finish within {seconds:.0f} s (LAB_LIVE_TOTAL)")

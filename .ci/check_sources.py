@@ -1,11 +1,14 @@
 """Check that every chapter has one source and that its code fits on a page.
 
-Each chapter is a MyST Markdown notebook notebooks/NAME.md (what people edit) paired with
-notebooks/NAME.ipynb (generated from it by `make notebooks`, stored with outputs). Fails unless:
+Each chapter is a MyST Markdown notebook notebooks/NAME.md (what people edit) paired
+with notebooks/NAME.ipynb (generated from it by `make notebooks`, stored with outputs).
+Fails unless:
   - every .ipynb has its .md and every .md its .ipynb;
-  - the .ipynb's cells equal the .md's: same cell types, sources and tags, in the same order;
+  - the .ipynb's cells equal the .md's: same cell types, sources and tags, in the same
+    order;
   - no code line of a chapter is longer than 88 characters;
-  - no code cell carries an nbval comment (nbval's cell tags do that job, unseen by readers);
+  - no code cell carries an nbval comment (nbval's cell tags do that job, unseen by
+    readers);
   - every chapter with code opens with the cell that installs screwkit where it is
     missing (`if importlib.util.find_spec("screwkit") is None: %pip install ...`);
   - no printed output line of a stored notebook (streams, plain text shown as text) is

@@ -1,32 +1,39 @@
 """Check the built book as a reader's browser sees it, with no network.
 
 Serves the HTML build on 127.0.0.1 and loads every page of the build under book/ and
-notebooks/ (by rule, not by list: a new chapter cannot slip by; and every file of _toc.yml
-must be one of them) in headless Chromium (every host but 127.0.0.1 unresolvable). Fails
-unless:
+notebooks/ (by rule, not by list: a new chapter cannot slip by; and every file of
+_toc.yml must be one of them) in headless Chromium (every host but 127.0.0.1
+unresolvable). Fails unless:
   - math is typeset by the bundled MathJax (mjx-container elements, no MathJax errors)
     on every page that has math;
-  - every chapter page (notebooks/) shows at least one figure whose file is in the build,
-    and its first code cell installs screwkit where it is missing (Colab, a bare hub);
+  - every chapter page (notebooks/) shows at least one figure whose file is in the
+    build, and its first code cell installs screwkit where it is missing
+    (Colab, a bare hub);
   - every image has an alt text that says what it shows (not its file's path, not a
     placeholder such as "precomputed figure");
   - no page links to a missing file or anchor of the book;
-  - no page asked for anything off this machine (Chromium's net log lists every request);
-  - every slider or drop-down of every in-page interactive figure (screwkit.viewer), when
-    moved, changes the drawing, and no page logs a JavaScript error (Playwright driving the
-    system Chromium); the redraw time of each move is printed (goal: under 50 ms);
-  - no page holds a widget placeholder (a widget view with no fallback: blank in the book);
-  - every chapter says what the student will learn ("What you will learn") and ends with a
-    "Summary";
-  - no link (a launch button above all) points to a placeholder host such as hub.example.edu;
-  - every file a page asks the server for exists (MathJax fonts and extensions included);
+  - no page asked for anything off this machine (Chromium's net log lists every
+    request);
+  - every slider or drop-down of every in-page interactive figure (screwkit.viewer),
+    when moved, changes the drawing, and no page logs a JavaScript error
+    (Playwright driving the system Chromium); the redraw time of each move is printed
+    (goal: under 50 ms);
+  - no page holds a widget placeholder (a widget view with no fallback: blank in the
+    book);
+  - every chapter says what the student will learn ("What you will learn") and ends with
+    a "Summary";
+  - no link (a launch button above all) points to a placeholder host such as
+    hub.example.edu;
+  - every file a page asks the server for exists (MathJax fonts and extensions
+    included);
   - at 390, 800 and 1280 px (a phone, tapped; a tablet; a laptop): one search control in
-    sight, and the table-of-contents and page-outline buttons open their sidebars (Escape
-    closes them), with no tooltip left on screen after; a search finds pages;
-  - at 1280 px, by rule over every element of the article: nothing wider than the content
-    column, no code cell, output or table that scrolls sideways (the code font fits 88
-    characters), no figure image wider than the column; at every width the page itself never
-    scrolls sideways and equations and tables stay in the column (in their own scrolling box);
+    sight, and the table-of-contents and page-outline buttons open their sidebars
+    (Escape closes them), with no tooltip left on screen after; a search finds pages;
+  - at 1280 px, by rule over every element of the article: nothing wider than the
+    content column, no code cell, output or table that scrolls sideways
+    (the code font fits 88 characters), no figure image wider than the column; at every
+    width the page itself never scrolls sideways and equations and tables stay in the
+    column (in their own scrolling box);
   - axe-core (from the npm registry, fetched at check time) finds no critical or serious
     violation on any page;
   - every page weighs at most 2.5 MB cold (its HTML and all it loads, empty cache);
@@ -203,7 +210,8 @@ def check_links(root, page, parser, cache):
 
 BOOK_LIMIT_MB = 20
 REDRAW_GOAL_MS = 50
-# What a chapter must show, as a heading or an admonition's title (the text of one element).
+# What a chapter must show, as a heading or an admonition's title
+# (the text of one element).
 CHAPTER_SHAPE = {
     "What you will learn": re.compile(r">\s*What you will learn\s*<"),
     "Summary": re.compile(r"<h[2-6][^>]*>\s*Summary\s*<"),
@@ -230,8 +238,9 @@ PLACEHOLDER_ALTS = {"", "image", "figure", "precomputed figure", "png", "output"
 
 
 def check_alt_texts(page, parser):
-    """Every image of a page says what it shows: an alt text that is not its file's path,
-    nor a placeholder (decorations, such as a launch button's logo, name what they are)."""
+    """Every image of a page says what it shows: an alt text that is not its file's
+    path, nor a placeholder (decorations, such as a launch button's logo, name what they
+    are)."""
     problems = []
     for src, alt in parser.alts:
         text = (alt or "").strip()
@@ -242,8 +251,8 @@ def check_alt_texts(page, parser):
     return problems
 
 
-# The first code cell of every chapter installs screwkit where it is missing (Colab, a bare
-# JupyterHub), as the book's first chapter does.
+# The first code cell of every chapter installs screwkit where it is missing
+# (Colab, a bare JupyterHub), as the book's first chapter does.
 INSTALLS_SCREWKIT = re.compile(r'find_spec\(\s*"screwkit"\s*\)[\s\S]*pip install')
 
 
@@ -258,14 +267,15 @@ def check_first_cell(root, page):
         cells = [c for c in json.load(f)["cells"] if c["cell_type"] == "code"]
     if not cells or not INSTALLS_SCREWKIT.search("".join(cells[0]["source"])):
         return [
-            f"{page}: the first code cell does not install screwkit where it is missing "
-            "(copy the first code cell of another chapter)"
+            f"{page}: the first code cell does not install screwkit where it is "
+            "missing (copy the first code cell of another chapter)"
         ]
     return []
 
 
 def check_toc_built(root, toc="_toc.yml"):
-    """Every file of the table of contents is a page of the build (none left out of the checks)."""
+    """Every file of the table of contents is a page of the build
+    (none left out of the checks)."""
     toc = os.path.join(os.path.dirname(os.path.dirname(root)), toc)
     if not os.path.exists(toc):
         return []
@@ -278,14 +288,15 @@ def check_toc_built(root, toc="_toc.yml"):
     ]
 
 
-# The parallel mechanisms of the catalogue (screwkit.robots): a chapter that analyses them with
-# sk.mobility must draw each one.
+# The parallel mechanisms of the catalogue (screwkit.robots): a chapter that analyses
+# them with sk.mobility must draw each one.
 MECHANISM_BUILDER = re.compile(r"robots\.(pm_\w+|planar_3rrr|spherical_3rrr)\b")
 
 
 def check_mechanism_drawings(root, page, figures):
-    """A chapter of the mobility kind (its code calls sk.mobility) must show at least as many
-    figures as the catalogue mechanisms its code builds (read from the page's .ipynb source)."""
+    """A chapter of the mobility kind (its code calls sk.mobility) must show at least as
+    many figures as the catalogue mechanisms its code builds
+    (read from the page's .ipynb source)."""
     source = os.path.join(root, "_sources", os.path.splitext(page)[0] + ".ipynb")
     if not page.startswith("notebooks/") or not os.path.exists(source):
         return []
@@ -297,14 +308,16 @@ def check_mechanism_drawings(root, page, figures):
     mechanisms = sorted(set(MECHANISM_BUILDER.findall(code)))
     if len(figures) < len(mechanisms):
         return [
-            f"{page}: {len(mechanisms)} mechanisms analysed ({', '.join(mechanisms)}) but only "
-            f"{len(figures)} figures: draw each one (sk.plotting.draw_mechanism)"
+            f"{page}: {len(mechanisms)} mechanisms analysed "
+            f"({', '.join(mechanisms)}) but only {len(figures)} figures: "
+            "draw each one (sk.plotting.draw_mechanism)"
         ]
     return []
 
 
 def check_placeholder_links(page, parser):
-    """Links (launch buttons among them) must not point to a placeholder such as hub.example.edu."""
+    """Links (launch buttons among them) must not point to a placeholder such as
+    hub.example.edu."""
     problems = []
     for href in parser.links:
         host = urlsplit(href).hostname or ""
@@ -313,9 +326,10 @@ def check_placeholder_links(page, parser):
     return problems
 
 
-# ---- The book as a reader sees it: navigation, weight, accessibility and layout, at the widths
-# of a phone (390 px), a tablet (800 px) and a laptop (1280 px), on every page (by rule: every
-# page of the build under book/ and notebooks/, so a new chapter cannot slip by).
+# ---- The book as a reader sees it: navigation, weight, accessibility and layout, at
+# the widths of a phone (390 px), a tablet (800 px) and a laptop (1280 px), on every
+# page (by rule: every page of the build under book/ and notebooks/, so a new chapter
+# cannot slip by).
 
 WIDTHS = (390, 800, 1280)
 PAGE_LIMIT_MB = 2.5  # a page, cold (empty cache): the HTML and everything it loads
@@ -335,7 +349,8 @@ TOOLTIPS = "() => [...document.querySelectorAll('.tooltip.show')].length"
 
 
 def check_navigation(page, page_name, width):
-    """One search; the table-of-contents and page-outline buttons open their sidebars."""
+    """One search; the table-of-contents and page-outline buttons open their
+    sidebars."""
     problems = []
     where = f"{page_name} at {width} px"
     press = (
@@ -405,9 +420,9 @@ def check_navigation(page, page_name, width):
 
 
 # In the page (by rule, every element of the article): the content column; elements that
-# stick out of it (not inside a box that clips or scrolls them); boxes that scroll sideways,
-# by kind; images meant to be shown wider than the column; and whether the page itself
-# scrolls sideways.
+# stick out of it (not inside a box that clips or scrolls them); boxes that scroll
+# sideways, by kind; images meant to be shown wider than the column; and whether the
+# page itself scrolls sideways.
 MEASURE_LAYOUT = """() => {
     const article = document.querySelector("article.bd-article") || document.querySelector("main");
     const style = getComputedStyle(article), box = article.getBoundingClientRect();
@@ -463,14 +478,14 @@ MEASURE_LAYOUT = """() => {
     }).filter(([src, width]) => width > right - left + 1);
     const page = document.documentElement.scrollWidth > innerWidth + 1;
     return {column: Math.round(right - left), out, scrolling, images, page};
-}"""
+}"""  # noqa: E501 (JavaScript: its lines are the string's text)
 
 
 def check_layout(page, page_name, width):
     """At 1280 px nothing wider than the column, and no code cell, output or table that
-    scrolls sideways (an equation too long for any column, or a code block of the prose, may:
-    they are listed); at every width the page itself never scrolls sideways, and equations
-    and tables stay in the column (scrolling inside their own box)."""
+    scrolls sideways (an equation too long for any column, or a code block of the prose,
+    may: they are listed); at every width the page itself never scrolls sideways, and
+    equations and tables stay in the column (scrolling inside their own box)."""
     layout = page.evaluate(MEASURE_LAYOUT)
     where, column = f"{page_name} at {width} px", layout["column"]
     problems, counts, notes = [], {}, []
@@ -551,7 +566,8 @@ def check_accessibility(page, page_name, axe):
 
 
 def check_search(chromium, url, word="screw"):
-    """The search button opens the search box, and a search finds pages (on search.html)."""
+    """The search button opens the search box, and a search finds pages
+    (on search.html)."""
     page = chromium.new_page(viewport={"width": 1280, "height": 900})
     page.goto(url, wait_until="load")
     page.locator(".bd-header-article .search-button").click()
@@ -569,7 +585,8 @@ def check_search(chromium, url, word="screw"):
 
 
 def cold_weight(chromium, url):
-    """Bytes a first visit downloads (empty cache): the page and all it loads, read to its end."""
+    """Bytes a first visit downloads (empty cache): the page and all it loads, read to
+    its end."""
     context = chromium.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
     requests = []
@@ -584,7 +601,8 @@ def cold_weight(chromium, url):
 
 
 def check_reader(browser, origin, pages, cache):
-    """Every page at every width: navigation, layout and (at 1280 px) axe; and its cold weight."""
+    """Every page at every width: navigation, layout and (at 1280 px) axe; and its cold
+    weight."""
     from playwright.sync_api import sync_playwright
 
     axe = axe_source(cache)
@@ -651,7 +669,8 @@ def check_reader(browser, origin, pages, cache):
 
 
 # In the page: move control k of figure `id` to another value of its grid, return
-# [changed?, milliseconds, label]. A figure's drawing is its canvas pixels or its frame's HTML.
+# [changed?, milliseconds, label]. A figure's drawing is its canvas pixels or its
+# frame's HTML.
 MOVE_CONTROL = """([id, k]) => {
     const root = document.getElementById(id);
     const drawing = () => [...root.querySelectorAll("canvas")].map(c => c.toDataURL()).join()
@@ -671,11 +690,12 @@ MOVE_CONTROL = """([id, k]) => {
     control.dispatchEvent(new Event(control.tagName === "SELECT" ? "change" : "input"));
     const elapsed = performance.now() - start;
     return [drawing() !== before, elapsed, label];
-}"""
+}"""  # noqa: E501 (JavaScript: its lines are the string's text)
 
 
 def check_interactive(browser, origin, pages):
-    """Move every control of every in-page figure; the drawing must change, without JS errors."""
+    """Move every control of every in-page figure; the drawing must change, without JS
+    errors."""
     from playwright.sync_api import sync_playwright
 
     problems = []
@@ -700,7 +720,8 @@ def check_interactive(browser, origin, pages):
             ).count()
             if placeholders:
                 problems.append(
-                    f"{page_name}: {placeholders} widget placeholders (blank in the book)"
+                    f"{page_name}: {placeholders} widget placeholders "
+                    "(blank in the book)"
                 )
             figures = page.eval_on_selector_all(
                 "div.screwkit-viewer", "d => d.map(e => e.id)"
@@ -725,7 +746,8 @@ def check_interactive(browser, origin, pages):
             problems += [f"{page_name}: JavaScript error: {e}" for e in errors]
             if times:
                 print(
-                    f"{page_name}: {len(figures)} interactive figures, {len(times)} controls moved, "
+                    f"{page_name}: {len(figures)} interactive figures, "
+                    f"{len(times)} controls moved, "
                     f"redraw median {sorted(times)[len(times) // 2]:.1f} ms, "
                     f"max {max(times):.1f} ms (goal {REDRAW_GOAL_MS} ms)"
                 )
@@ -742,7 +764,8 @@ def main(root):
     pages = toc_pages(root)
     if not pages:
         sys.exit(
-            f"site check: no pages under {root}/book or {root}/notebooks; build the book first"
+            f"site check: no pages under {root}/book or {root}/notebooks; "
+            "build the book first"
         )
     browser = find_chromium()
     server = serve(root)

@@ -40,8 +40,9 @@ from .transforms import (
 
 __version__ = "0.1.0"
 
-# Drawing, widgets and the in-page viewer load matplotlib and ipywidgets: imported on first use
-# (sk.plotting, sk.widgets, sk.viewer); sk.exercises, the display of self-checks, too.
+# Drawing, widgets and the in-page viewer load matplotlib and ipywidgets: imported on
+# first use (sk.plotting, sk.widgets, sk.viewer); sk.exercises, the display of
+# self-checks, too.
 _LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises")
 
 

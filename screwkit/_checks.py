@@ -17,7 +17,7 @@ Traceback (most recent call last):
 TypeError: theta must be a number or an array of numbers (real ones), got a string '0.5' in a list of length 1
 >>> as_real_scalar(np.int64(3), "steps")
 3.0
-"""
+"""  # noqa: E501 (the doctest's expected TypeError is one line, as Python prints it)
 
 import numbers
 
@@ -57,11 +57,12 @@ def is_symbolic(value):
     return False
 
 
-# ---- real numbers (NumPy) ---------------------------------------------------------------
+# ---- real numbers (NumPy) ------------------------------------------------------------
 
 
 def _not_real(entry):
-    """A phrase naming why ``entry`` (one element) is not a real number, or None if it is one."""
+    """A phrase naming why ``entry`` (one element) is not a real number, or None if it
+    is one."""
     if entry is None:
         return "None"
     if isinstance(entry, (bool, np.bool_)):
@@ -84,7 +85,8 @@ def _not_real(entry):
 
 
 def _first_not_real(value):
-    """The phrase of the first element of a nested list/tuple/object array that is not real."""
+    """The phrase of the first element of a nested list/tuple/object array that is not
+    real."""
     stack = [value]
     while stack:
         item = stack.pop()
@@ -106,8 +108,9 @@ _PLAIN = (float, int, np.floating, np.integer)
 
 
 def _plain_numbers(value):
-    """True if every element of a nested sequence is a float or a (non-bool) integer: a fast
-    test (types are collected in C), so that only unusual input is walked element by element."""
+    """True if every element of a nested sequence is a float or a (non-bool) integer: a
+    fast test (types are collected in C), so that only unusual input is walked element
+    by element."""
     try:
         elements = np.asarray(value, dtype=object).ravel().tolist()
     except ValueError:
@@ -149,30 +152,34 @@ def as_float_array(value, name):
                 "" if not isinstance(value, (list, tuple)) else f" in {describe(value)}"
             )
             raise TypeError(
-                f"{name} must be a number or an array of numbers (real ones), got {reason}{where}"
+                f"{name} must be a number or an array of numbers (real ones), got "
+                f"{reason}{where}"
             )
         try:
             array = np.asarray(value, dtype=float)
         except ValueError:
             raise ValueError(
-                f"{name} must be a rectangular array of real numbers (rows of equal length), "
-                f"got {describe(value)} with rows of different lengths"
+                f"{name} must be a rectangular array of real numbers "
+                f"(rows of equal length), got {describe(value)} with rows of different "
+                "lengths"
             ) from None
         except TypeError:
             raise TypeError(
-                f"{name} must be a number or an array of numbers (real ones), got {describe(value)}"
+                f"{name} must be a number or an array of numbers (real ones), got "
+                f"{describe(value)}"
             ) from None
         except OverflowError:
             raise ValueError(
-                f"{name} must be finite, got an integer too large for a float (above 1.8e308) "
-                f"in {describe(value)}"
+                f"{name} must be finite, got an integer too large for a float "
+                f"(above 1.8e308) in {describe(value)}"
             ) from None
     check_finite(array, name)
     return array
 
 
 def check_finite(array, name):
-    """Raise ``ValueError`` naming the first NaN or infinite entry of the float ``array``."""
+    """Raise ``ValueError`` naming the first NaN or infinite entry of the float
+    ``array``."""
     finite = np.isfinite(array)
     if not finite.all():
         index = tuple(int(i) for i in np.argwhere(~finite)[0])
@@ -182,7 +189,8 @@ def check_finite(array, name):
 
 
 def as_real_scalar(value, name):
-    """One finite real number as a Python float (NumPy integers and 0-d arrays accepted)."""
+    """One finite real number as a Python float (NumPy integers and 0-d arrays
+    accepted)."""
     array = as_float_array(value, name)
     if array.shape != ():
         raise TypeError(f"{name} must be a single real number, got {describe(value)}")
@@ -199,7 +207,8 @@ def check_positive(value, name, allow_zero=False):
 
 
 def check_integer(value, name, minimum=None):
-    """One integer (Python or NumPy; not a bool or a float) >= ``minimum``, as an int."""
+    """One integer (Python or NumPy; not a bool or a float) >= ``minimum``, as an
+    int."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(
         value, (numbers.Integral, np.integer)
     ):
@@ -210,14 +219,16 @@ def check_integer(value, name, minimum=None):
 
 
 def check_flag(value, name):
-    """``value`` as a bool if it is True or False (NumPy's too), else a ``TypeError``."""
+    """``value`` as a bool if it is True or False (NumPy's too), else a
+    ``TypeError``."""
     if not isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{name} must be True or False, got {describe(value)}")
     return bool(value)
 
 
 def check_option(value, name, options):
-    """``value`` if it is one of ``options`` (strings or None), else a ``ValueError`` naming them."""
+    """``value`` if it is one of ``options`` (strings or None), else a ``ValueError``
+    naming them."""
     if isinstance(value, (str, type(None))) and value in options:
         return value
     listed = ", ".join(repr(o) for o in options)
@@ -226,7 +237,8 @@ def check_option(value, name, options):
 
 
 class ChainType:
-    """The type the checks recognise as a chain: :class:`screwkit.Chain` derives from it.
+    """The type the checks recognise as a chain: :class:`screwkit.Chain` derives from
+    it.
 
     The checks are the lowest layer and the chains a higher one: this marker lets
     :func:`check_chain` recognise a chain without importing the layer above it.
@@ -242,7 +254,8 @@ def check_chain(value, name="chain"):
     """
     if not isinstance(value, ChainType):
         raise TypeError(
-            f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got {describe(value)}"
+            f"{name} must be a screwkit Chain (e.g. sk.robots.puma560()), got "
+            f"{describe(value)}"
         )
     return value
 
@@ -259,11 +272,12 @@ def check_shape(array, name, shape):
     return array
 
 
-# ---- exact numbers (SymPy) --------------------------------------------------------------
+# ---- exact numbers (SymPy) -----------------------------------------------------------
 
 
 def as_sympy_matrix(value, name, shape):
-    """``value`` as an exact SymPy matrix of the given ``shape`` (a row is taken as a column).
+    """``value`` as an exact SymPy matrix of the given ``shape``
+    (a row is taken as a column).
 
     Entries must be real numbers or SymPy expressions; strings, booleans, complex
     numbers (such as ``sympy.I``) and non-finite values are refused.
@@ -279,7 +293,8 @@ def as_sympy_matrix(value, name, shape):
             )
         if _contains_string(value):
             raise TypeError(
-                f"{name} must hold numbers or SymPy expressions, not strings, got {value!r}"
+                f"{name} must hold numbers or SymPy expressions, not strings, got "
+                f"{value!r}"
             )
         if _contains_none(value):
             raise TypeError(
@@ -359,14 +374,16 @@ def _contains_none(value):
 
 
 def _exact_if_integral(entry):
-    """A float with an integer value (1.0, -0.0) is that integer, exactly; other entries stay."""
+    """A float with an integer value (1.0, -0.0) is that integer, exactly; other entries
+    stay."""
     if isinstance(entry, sp.Float) and float(entry).is_integer():
         return sp.Integer(int(entry))
     return entry
 
 
 def as_scalar_or_batch(value, name):
-    """An angle or distance: a real SymPy expression, or a float64 array of any shape."""
+    """An angle or distance: a real SymPy expression, or a float64 array of any
+    shape."""
     if is_symbolic(value):
         if isinstance(value, (list, tuple, np.ndarray, sp.MatrixBase)):
             raise TypeError(
@@ -382,7 +399,7 @@ def as_scalar_or_batch(value, name):
     return as_float_array(value, name)
 
 
-# ---- rotations and transforms -----------------------------------------------------------
+# ---- rotations and transforms --------------------------------------------------------
 
 
 def check_rotation(rotation, name="R"):
@@ -427,7 +444,8 @@ def _check_rotation_numeric(R, name):
 
 
 def check_transform(transform, name="T"):
-    """A homogeneous transform: shape (4, 4) or (N, 4, 4), rotation block, last row [0 0 0 1]."""
+    """A homogeneous transform: shape (4, 4) or (N, 4, 4), rotation block, last row
+    [0 0 0 1]."""
     if is_symbolic(transform):
         T = as_sympy_matrix(transform, name, (4, 4))
         if any((entry - target) != 0 for entry, target in zip(T[3, :], [0, 0, 0, 1])):
@@ -450,7 +468,8 @@ def check_transform(transform, name="T"):
 
 
 def check_poses(T, name="T", single_only=False):
-    """``T`` as float64 (4, 4) or (N, 4, 4) rigid transforms (one pose if ``single_only``)."""
+    """``T`` as float64 (4, 4) or (N, 4, 4) rigid transforms
+    (one pose if ``single_only``)."""
     if isinstance(T, (str, bytes)) or T is None:
         raise TypeError(
             f"{name} must be a 4x4 pose or an (N, 4, 4) batch, got {describe(T)}"

@@ -1,26 +1,30 @@
-"""A chain's numeric kinematics as straight-line Python, generated from numbers (no SymPy).
+"""A chain's numeric kinematics as straight-line Python, generated from numbers
+(no SymPy).
 
-Every serial chain, whatever way it was described (a DH table, or joint screws and a home
-pose), is the product
+Every serial chain, whatever way it was described (a DH table, or joint screws and a
+home pose), is the product
 
-    T(q) = C_0  exp([X_1] theta_1) C_1  exp([X_2] theta_2) C_2 ... exp([X_n] theta_n) C_n,
+    T(q) = C_0  exp([X_1] theta_1) C_1  exp([X_2] theta_2) C_2 ...
+    exp([X_n] theta_n) C_n,
 
-of constant rigid transforms C_k and exponentials of unit joint twists X_k = (w; v) written
-in the frame just before them, with theta_k = q_k + offset_k. For a unit w the exponential is
+of constant rigid transforms C_k and exponentials of unit joint twists X_k = (w; v)
+written in the frame just before them, with theta_k = q_k + offset_k. For a unit w the
+exponential is
 
     R = (I + [w]^2) + sin(theta) [w] - cos(theta) [w]^2,
     p = [w] v + theta (v + [w]^2 v) - cos(theta) [w] v - sin(theta) [w]^2 v,
 
 and for w = 0 (a prismatic joint) R = I, p = theta v: every entry is a fixed linear
-combination of 1, cos(theta), sin(theta) and theta. :class:`Program` multiplies these out
-once, symbol by symbol, dropping every product by an exact 0 or 1, and writes the result as a
-Python function. Run on floats it costs microseconds; run on arrays (a batch of
-configurations, the batch last) it is vectorised NumPy. Building it takes about a
-millisecond per joint.
+combination of 1, cos(theta), sin(theta) and theta. :class:`Program` multiplies these
+out once, symbol by symbol, dropping every product by an exact 0 or 1, and writes the
+result as a Python function. Run on floats it costs microseconds; run on arrays
+(a batch of configurations, the batch last) it is vectorised NumPy. Building it takes
+about a millisecond per joint.
 
-The same walk gives, at no extra cost, the joint twists in the base frame (the columns of the
-space Jacobian, Ad(G_k) X_k for the frame G_k just before joint k), a point on each joint
-axis, and any intermediate frame the chain asks to record (its link frames).
+The same walk gives, at no extra cost, the joint twists in the base frame
+(the columns of the space Jacobian, Ad(G_k) X_k for the frame G_k just before joint k),
+a point on each joint axis, and any intermediate frame the chain asks to record
+(its link frames).
 """
 
 import math
@@ -35,17 +39,19 @@ from .transforms import _skew
 #: Coefficients this close to 0 or +-1 are taken as exact (cos(pi/2) computes as 6e-17).
 SNAP = 1e-14
 
-#: Configurations per chunk of a batch: the one chunk size of screwkit (the generated code,
-#: the Jacobians and their measures, the closed-form IK, the workspace sweeps). The temporaries
-#: of a chunk stay in the cache, and the memory of a big batch stays bounded.
+#: Configurations per chunk of a batch: the one chunk size of screwkit
+#: (the generated code, the Jacobians and their measures, the closed-form IK, the
+#: workspace sweeps). The temporaries of a chunk stay in the cache, and the memory of a
+#: big batch stays bounded.
 CHUNK = 8192
 
 
 def in_chunks(batch, function, out=None):
     """``function(part)`` over chunks of :data:`CHUNK` rows of ``batch`` (N, ...).
 
-    With ``out`` (an array of N rows), each result is written into its rows and ``out`` is
-    returned; without, the results are concatenated (one call for a batch of one chunk).
+    With ``out`` (an array of N rows), each result is written into its rows and ``out``
+    is returned; without, the results are concatenated (one call for a batch of one
+    chunk).
     """
     if out is None:
         if batch.shape[0] <= CHUNK:
@@ -66,7 +72,8 @@ def _snap(array):
 
 
 def exponential_coefficients(twist):
-    """The 4x4 coefficient matrices (K1, Kc, Ks, Kt) with exp([X] theta) = K1 + Kc cos + Ks sin + Kt theta.
+    """The 4x4 coefficient matrices (K1, Kc, Ks, Kt) with
+    exp([X] theta) = K1 + Kc cos + Ks sin + Kt theta.
 
     ``twist`` (6,) is a unit twist: |w| = 1, or w = 0 and |v| = 1.
     """
@@ -85,7 +92,8 @@ def exponential_coefficients(twist):
 
 
 class JointFactor(NamedTuple):
-    """One joint of a Program: exp([twist] theta_k) post, and a point on the axis (drawing)."""
+    """One joint of a Program: exp([twist] theta_k) post, and a point on the axis
+    (drawing)."""
 
     twist: np.ndarray  # X_k (6,), a unit twist in the frame just before the joint
     post: np.ndarray  # C_k (4, 4), the constant after the exponential
@@ -96,8 +104,9 @@ class JointFactor(NamedTuple):
 class Term:
     """coefficient * f1 * f2 * ...: a number times a product of named values.
 
-    The names are those of the generated code: ``c3``, ``s3``, ``t3`` (cos, sin and the angle
-    of joint 3) and ``e12`` (an earlier line). No factors: the constant ``coefficient``.
+    The names are those of the generated code: ``c3``, ``s3``, ``t3``
+    (cos, sin and the angle of joint 3) and ``e12`` (an earlier line). No factors: the
+    constant ``coefficient``.
     """
 
     coefficient: float
@@ -127,11 +136,11 @@ class Program:
     Parameters
     ----------
     start : (4, 4) the constant C_0
-    factors : list of (twist (6,), post (4, 4), point (3,)) per joint, a JointFactor: X_k, the
-        constant C_k after the
-        exponential, and a point on the joint axis in the frame just before it
-    marks : dict {k: (4, 4) offset}: record the frame reached after joint k (k = 0 before any
-        joint) times the offset, as a link frame
+    factors : list of (twist (6,), post (4, 4), point (3,)) per joint, a JointFactor:
+        X_k, the constant C_k after the exponential, and a point on the joint axis in
+        the frame just before it
+    marks : dict {k: (4, 4) offset}: record the frame reached after joint k
+        (k = 0 before any joint) times the offset, as a link frame
     """
 
     def __init__(self, start, factors, marks=None):
@@ -159,8 +168,8 @@ class Program:
     def _combine(self, terms):
         """The sum of ``terms`` (Terms; a Term without factors is a constant).
 
-        Returns a float when nothing variable remains, the Term itself for a single scaled
-        name, otherwise Term(1.0, (name of a new line,)).
+        Returns a float when nothing variable remains, the Term itself for a single
+        scaled name, otherwise Term(1.0, (name of a new line,)).
         """
         constant, parts = 0.0, []
         for term in terms:
@@ -230,7 +239,8 @@ class Program:
         return entries
 
     def _axis(self, G, twist, point):
-        """The joint's twist in the base frame, Ad(G) X, and its point G r: 9 entries."""
+        """The joint's twist in the base frame, Ad(G) X, and its point G r: 9
+        entries."""
         w, v, point = (
             _snap(twist[:3]),
             _snap(twist[3:]),
@@ -259,7 +269,8 @@ class Program:
         return omega + moment + located
 
     def _at_point(self, twist, p):
-        """A space twist (omega; v) as a geometric Jacobian column: (v + omega x p; omega)."""
+        """A space twist (omega; v) as a geometric Jacobian column:
+        (v + omega x p; omega)."""
         omega, v = twist[:3], twist[3:]
         linear = []
         for r, (a, b, c, d) in enumerate([(1, 2, 2, 1), (2, 0, 0, 2), (0, 1, 1, 0)]):
@@ -276,8 +287,9 @@ class Program:
 
         outputs : 'pose' (the 12 entries of T's top rows), 'axes' (per joint the twist
             [omega; v] and a point, 9 entries, then the pose), 'frames' (12 entries per
-            recorded frame, in the order of ``marks``), 'space' (the space Jacobian, 6 x n,
-            row by row) or 'geometric' (the geometric Jacobian [v + omega x p; omega], 6 x n).
+            recorded frame, in the order of ``marks``), 'space'
+            (the space Jacobian, 6 x n, row by row) or 'geometric'
+            (the geometric Jacobian [v + omega x p; omega], 6 x n).
         """
         self._lines, self._count = [], 0
         T = self._constant(self.start)[:3]
@@ -327,7 +339,8 @@ class Program:
 
 
 def evaluate(function, angles):
-    """Run a generated function at one configuration: ``angles`` (n,) floats -> list of entries."""
+    """Run a generated function at one configuration: ``angles`` (n,) floats -> list of
+    entries."""
     values = angles.tolist()
     return function(
         values, [math.cos(x) for x in values], [math.sin(x) for x in values]
@@ -338,10 +351,11 @@ def cos_sin(angles):
     """cos and sin of an array of angles (rad), from t = tan(theta / 2) as
     cos = 2 / (1 + t^2) - 1 and sin = 2 t / (1 + t^2).
 
-    NumPy computes tan with SIMD instructions and cos, sin without on many machines: this is
-    about three times faster for a batch, and as accurate (within 6e-16, 3 units in the last
-    place, of the C library's cos and sin; tested). At theta = pi, t is about 1.6e16 and the formulas give -1 and 1.2e-16, as np.cos
-    and np.sin do.
+    NumPy computes tan with SIMD instructions and cos, sin without on many machines:
+    this is about three times faster for a batch, and as accurate
+    (within 6e-16, 3 units in the last place, of the C library's cos and sin; tested).
+    At theta = pi, t is about 1.6e16 and the formulas give -1 and 1.2e-16, as np.cos and
+    np.sin do.
     """
     t = np.tan(0.5 * angles)
     d = 2.0 / (1.0 + t * t)
@@ -349,7 +363,8 @@ def cos_sin(angles):
 
 
 def evaluate_batch(function, angles, out, rows):
-    """Run a generated function over a batch ``angles`` (N, n): entry k goes to ``out[rows[k]]``.
+    """Run a generated function over a batch ``angles`` (N, n): entry k goes to
+    ``out[rows[k]]``.
 
     ``out`` has shape (M, N), the batch last (each entry's values contiguous). Chunks of
     :data:`CHUNK` configurations keep the temporaries in the cache.

@@ -1,10 +1,12 @@
-"""Draw a parallel mechanism from the limbs :func:`screwkit.mobility` takes (matplotlib 3D).
+"""Draw a parallel mechanism from the limbs :func:`screwkit.mobility` takes
+(matplotlib 3D).
 
-The limbs are lists of (s, r, h) joint screws with symbols; ``values`` gives every symbol a
-number, and the drawing shows the mechanism at that configuration: the base (the polygon
-through each limb's first joint), the platform (the polygon through each limb's last joint),
-each limb as a polyline through its joints, and every joint's screw axis, with revolute,
-prismatic and helical joints told apart by colour, marker and line style.
+The limbs are lists of (s, r, h) joint screws with symbols; ``values`` gives every
+symbol a number, and the drawing shows the mechanism at that configuration: the base
+(the polygon through each limb's first joint), the platform (the polygon through each
+limb's last joint), each limb as a polyline through its joints, and every joint's screw
+axis, with revolute, prismatic and helical joints told apart by colour, marker and line
+style.
 """
 
 import matplotlib.pyplot as plt
@@ -31,7 +33,8 @@ def _kind(h):
 
 
 def _check_values(limbs, values):
-    """{Symbol: float} for every symbol of the limbs; keys may be symbols or their names."""
+    """{Symbol: float} for every symbol of the limbs; keys may be symbols or their
+    names."""
     if not isinstance(values, dict):
         raise TypeError(
             f"values must be a dict {{symbol or name: number}}, got {describe(values)}"
@@ -51,8 +54,8 @@ def _check_values(limbs, values):
         name = str(key)
         if name not in by_name:
             raise ValueError(
-                f"values gives a number for {name!r}, which is not a symbol of the limbs "
-                f"(their symbols are {sorted(by_name)})"
+                f"values gives a number for {name!r}, which is not a symbol of the "
+                f"limbs (their symbols are {sorted(by_name)})"
             )
         if isinstance(value, (str, bytes, bool)) or value is None:
             raise TypeError(
@@ -91,7 +94,8 @@ def _check_limbs(limbs):
         for j, joint in enumerate(limb):
             if not isinstance(joint, (list, tuple)) or len(joint) != 3:
                 raise TypeError(
-                    f"limb {i}, joint {j} must be an (s, r, h) triple, got {describe(joint)}"
+                    f"limb {i}, joint {j} must be an (s, r, h) triple, got "
+                    f"{describe(joint)}"
                 )
 
 
@@ -103,7 +107,8 @@ def _numeric(vector, numbers, name):
 
 
 def evaluate(limbs, values):
-    """The joints at these values: per limb a list of (kind, unit axis (3,), point (3,)) in m."""
+    """The joints at these values: per limb a list of (kind, unit axis (3,), point (3,))
+    in m."""
     _check_limbs(limbs)
     numbers = _check_values(limbs, values)
     result = []
@@ -138,14 +143,17 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
 
     Parameters
     ----------
-    limbs : list of limbs, each a list of (s, r, h) joint screws as :func:`screwkit.mobility`
-        takes them (s, r in m; h = 0 revolute, sympy.oo prismatic, else helical in m/rad)
+    limbs : list of limbs, each a list of (s, r, h) joint screws
+        as :func:`screwkit.mobility` takes them (s, r in m; h = 0 revolute, sympy.oo
+        prismatic, else helical in m/rad)
     values : dict {symbol or symbol name: number}: a number (m or rad) for every symbol
     ax : a 3D matplotlib axes, or None for a new figure
-    twists : optional platform twists (Twist objects, or a Mobility whose platform twist system
-        is drawn) at the platform's centre: rotations as red arrows along their axis,
-        translations as green arrows
-    axis_length : length (m) of the drawn joint axes; by default a fifth of the mechanism's size
+    twists : optional platform twists
+        (Twist objects, or a Mobility whose platform twist system is drawn) at the
+        platform's centre: rotations as red arrows along their axis, translations as
+        green arrows
+    axis_length : length (m) of the drawn joint axes; by default a fifth of the
+        mechanism's size
     title : optional axes title
 
     Returns
@@ -155,11 +163,11 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
 
     Notes
     -----
-    The base and the platform are drawn as the polygons through each limb's first and last
-    joints. The drawing shows the joints where the limbs put them at these values: it is one
-    rigid platform only when the values satisfy the loop-closure equations. The catalogue's
-    :data:`screwkit.robots.DRAWING_VALUES` give every limb the same values, so the symmetric
-    limbs close on a regular polygon.
+    The base and the platform are drawn as the polygons through each limb's first and
+    last joints. The drawing shows the joints where the limbs put them at these values:
+    it is one rigid platform only when the values satisfy the loop-closure equations.
+    The catalogue's :data:`screwkit.robots.DRAWING_VALUES` give every limb the same
+    values, so the symmetric limbs close on a regular polygon.
     """
     joints = evaluate(limbs, values)
     if ax is None:
@@ -211,8 +219,9 @@ def _draw_twists(ax, twists, centre, length):
             raise TypeError(f"twists[{k}] must be a Twist, got {describe(twist)}")
         if twist.vector.free_symbols:
             raise ValueError(
-                f"twists[{k}] has symbols {sorted(map(str, twist.vector.free_symbols))}: "
-                "substitute numbers before drawing"
+                f"twists[{k}] has symbols "
+                f"{sorted(map(str, twist.vector.free_symbols))}: substitute numbers "
+                "before drawing"
             )
         w = np.array([float(e) for e in twist.primary])
         v = np.array([float(e) for e in twist.secondary])

@@ -1,9 +1,11 @@
-"""Numerical inverse kinematics of any chain: Newton–Raphson on the twist of the pose error.
+"""Numerical inverse kinematics of any chain: Newton–Raphson on the twist of the pose
+error.
 
 The algorithm needs of a chain only what every chain offers (``fk``, ``space_jacobian``,
-``body_jacobian``, ``check_q``, ``qlim``, ``joints``), so it sits below :mod:`screwkit.chains`
-(as the Robotics Toolbox's kinematics mixin sits below its robot classes): ``Chain.numeric_ik``
-calls it without an import circle. Public as :func:`screwkit.ik.numeric_ik`.
+``body_jacobian``, ``check_q``, ``qlim``, ``joints``), so it sits below
+:mod:`screwkit.chains` (as the Robotics Toolbox's kinematics mixin sits below its robot
+classes): ``Chain.numeric_ik`` calls it without an import circle. Public as
+:func:`screwkit.ik.numeric_ik`.
 """
 
 from dataclasses import dataclass
@@ -57,15 +59,16 @@ def numeric_ik(
     damping=None,
     within_limits=True,
 ):
-    """Numerical inverse kinematics in twist coordinates, for any chain (DH or product of
-    exponentials; revolute, prismatic and helical joints).
+    """Numerical inverse kinematics in twist coordinates, for any chain
+    (DH or product of exponentials; revolute, prismatic and helical joints).
 
-    Each step is Newton–Raphson on the error twist: with V = log(T(q)^-1 T*) (body frame)
-    or Ad(T(q)) V (space frame) and J the body (space) Jacobian, it solves
-    (J^T J + lambda I) dq = J^T V. Damped least squares: lambda = |V|^2 / 2 + 1e-9 by default
-    (strong far from the target and near singularities, vanishing at the solution, Sugihara
-    2011); ``damping=0`` is the plain Newton–Raphson step dq = pinv(J) V (Lynch and Park,
-    sec. 6.2.2). With ``within_limits`` every iterate is clipped into the joint limits.
+    Each step is Newton–Raphson on the error twist: with V = log(T(q)^-1 T*)
+    (body frame) or Ad(T(q)) V (space frame) and J the body (space) Jacobian, it solves
+    (J^T J + lambda I) dq = J^T V. Damped least squares: lambda = |V|^2 / 2 + 1e-9 by
+    default (strong far from the target and near singularities, vanishing at the
+    solution, Sugihara 2011); ``damping=0`` is the plain Newton–Raphson step
+    dq = pinv(J) V (Lynch and Park, sec. 6.2.2). With ``within_limits`` every iterate is
+    clipped into the joint limits.
 
     Parameters
     ----------
@@ -170,7 +173,8 @@ def _error_twist(chain, q, T, frame):
 
 
 def _wrap_revolute(chain, q, within_limits):
-    """Revolute angles into (-pi, pi] (with limits: only those the wrap keeps inside them)."""
+    """Revolute angles into (-pi, pi] (with limits: only those the wrap keeps inside
+    them)."""
     revolute = np.array([j is Joint.REVOLUTE for j in chain.joints])
     wrapped = q.copy()
     wrapped[..., revolute] = _wrap_angle(q[..., revolute])

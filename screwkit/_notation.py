@@ -12,8 +12,8 @@ __all__ = ["textbook"]
 def textbook(expr, q_symbols=None, collect=True):
     """``expr`` in textbook notation: cos(q1) -> c1, sin(q2 + q3) -> s23.
 
-    With ``collect``, sums are grouped by c1/s1 first, then by the next angles, which gives
-    nested forms like c1 (c23 (...) - s23 (...)) - s1 (...).
+    With ``collect``, sums are grouped by c1/s1 first, then by the next angles, which
+    gives nested forms like c1 (c23 (...) - s23 (...)) - s1 (...).
     """
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: textbook(e, q_symbols, collect))
@@ -58,7 +58,8 @@ def textbook(expr, q_symbols=None, collect=True):
 
 
 def _nested_collect(expr, symbols):
-    """Collect by the first symbol pair (c_k, s_k) present, then recurse into the coefficients."""
+    """Collect by the first symbol pair (c_k, s_k) present, then recurse into the
+    coefficients."""
     present = [s for s in symbols if expr.has(s)]
     if not present or not isinstance(expr, sp.Add):
         return expr

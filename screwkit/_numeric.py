@@ -1,12 +1,13 @@
 """Screw systems of floating-point numbers: ranks by SVD with a stated tolerance.
 
-Exact input (integers, rationals, symbols, pi, square roots) is handled by :mod:`._exact`.
-Floats are measurements or the result of float arithmetic (a frame tilted with NumPy): two
-axes meant to be parallel differ in their last bits, and an exact rank would count them as
-independent. Here a matrix's rank is the number of its singular values above
-``tol * max(1, largest singular value)``, with ``tol = 1e-9`` unless the caller says
-otherwise, and bases are reduced as in the exact layer (each row ends in a 1 at its own pivot
-column, found from the right), with entries within ``tol`` of an integer set to that integer.
+Exact input (integers, rationals, symbols, pi, square roots) is handled by
+:mod:`._exact`. Floats are measurements or the result of float arithmetic
+(a frame tilted with NumPy): two axes meant to be parallel differ in their last bits,
+and an exact rank would count them as independent. Here a matrix's rank is the number of
+its singular values above ``tol * max(1, largest singular value)``, with ``tol = 1e-9``
+unless the caller says otherwise, and bases are reduced as in the exact layer
+(each row ends in a 1 at its own pivot column, found from the right), with entries
+within ``tol`` of an integer set to that integer.
 """
 
 import numpy as np
@@ -33,15 +34,16 @@ def check_tol(tol):
 
 
 def to_array(rows, name="screws"):
-    """Rows of SymPy numbers as a float array; a clear error if a symbol is left in them."""
+    """Rows of SymPy numbers as a float array; a clear error if a symbol is left in
+    them."""
     symbols = sorted(
         {str(s) for row in rows for e in row for s in sp.sympify(e).free_symbols}
     )
     if symbols:
         raise ValueError(
-            f"{name} mix floats with the symbols {symbols}: pass exact numbers instead of floats "
-            "(sympy.Rational('0.3'), sympy.sqrt(3)/2, sympy.pi/6) to keep the symbols, or give "
-            "every symbol a number"
+            f"{name} mix floats with the symbols {symbols}: pass exact numbers instead "
+            "of floats (sympy.Rational('0.3'), sympy.sqrt(3)/2, sympy.pi/6) to keep "
+            "the symbols, or give every symbol a number"
         )
     return np.array([[float(e) for e in row] for row in rows], dtype=float).reshape(
         len(rows), -1
@@ -49,8 +51,8 @@ def to_array(rows, name="screws"):
 
 
 def lost_rank(sigma, m, n):
-    """True where an m x n matrix with singular values ``sigma`` (..., k), largest first, has
-    lost rank: NumPy's rank rule (``matrix_rank``) on the smallest one."""
+    """True where an m x n matrix with singular values ``sigma`` (..., k), largest
+    first, has lost rank: NumPy's rank rule (``matrix_rank``) on the smallest one."""
     return sigma[..., -1] <= sigma[..., 0] * max(m, n) * np.finfo(float).eps
 
 
@@ -67,15 +69,17 @@ def rank(A, tol=TOL):
 
 
 def _clean(A, tol):
-    """Entries within tol of an integer become that integer (so axes read as 1, 0, -1)."""
+    """Entries within tol of an integer become that integer
+    (so axes read as 1, 0, -1)."""
     A = np.where(np.abs(A) < tol, 0.0, A)
     nearest = np.round(A)
     return np.where(np.abs(A - nearest) < tol, nearest, A)
 
 
 def reduced_basis(A, tol=TOL):
-    """A canonical basis of the row space of A (rows), as in the exact layer: pivot columns
-    chosen from the right, each basis row 1 at its own pivot and 0 at the others'."""
+    """A canonical basis of the row space of A (rows), as in the exact layer: pivot
+    columns chosen from the right, each basis row 1 at its own pivot and 0 at the
+    others'."""
     A = np.asarray(A, dtype=float).reshape(-1, 6)
     if rank(A, tol) == 0:
         return np.zeros((0, A.shape[1]))

@@ -1,9 +1,11 @@
-"""Slider grids shared by the in-page viewers and the ipywidgets: range, step and default together.
+"""Slider grids shared by the in-page viewers and the ipywidgets: range, step and
+default together.
 
-The rules (issue 18): the default lies on the slider's grid and inside its range; the grid is
-anchored at 0 (both ends are multiples of the step), so 0 and round values are reachable where
-the range holds them; a joint's range comes from its limits, and a revolute joint without
-limits gets one turn placed so that its default is not at an edge; every slider names its unit.
+The rules (issue 18): the default lies on the slider's grid and inside its range; the
+grid is anchored at 0 (both ends are multiples of the step), so 0 and round values are
+reachable where the range holds them; a joint's range comes from its limits, and a
+revolute joint without limits gets one turn placed so that its default is not at an
+edge; every slider names its unit.
 """
 
 import math
@@ -22,13 +24,15 @@ _TOL = 1e-9
 
 @dataclass(frozen=True)
 class SliderSpec:
-    """One slider: values in the displayed ``unit``; ``scale`` converts them to SI (value * scale).
+    """One slider: values in the displayed ``unit``; ``scale`` converts them to SI
+    (value * scale).
 
     Attributes
     ----------
     label : str, e.g. 'q3'
     unit : str, e.g. 'deg' or 'm'
-    low, high, step, value : float, in ``unit``; low <= value <= high, all multiples of step
+    low, high, step, value : float, in ``unit``; low <= value <= high, all multiples of
+        step
     scale : float, SI units per displayed unit (pi/180 for degrees)
     """
 
@@ -64,16 +68,19 @@ def on_grid(x, step):
 
 
 def _snap(x, step):
-    """``x`` on the grid of ``step``, written without binary noise (-87.0, not -86.99999999)."""
+    """``x`` on the grid of ``step``, written without binary noise
+    (-87.0, not -86.99999999)."""
     return round(round(x / step) * step, 10) + 0.0
 
 
 def slider_spec(label, unit, low, high, value, steps=ANGLE_STEPS, scale=1.0):
-    """A slider over [low, high] (in ``unit``) starting at ``value``, obeying the rules above.
+    """A slider over [low, high] (in ``unit``) starting at ``value``, obeying the rules
+    above.
 
-    The step is the coarsest of ``steps`` on which ``value`` lies (the finest if none: the
-    value is then rounded to it). The ends are moved inward onto the grid. Raises ValueError
-    if ``value`` is outside [low, high] or the range holds no grid point.
+    The step is the coarsest of ``steps`` on which ``value`` lies
+    (the finest if none: the value is then rounded to it). The ends are moved inward
+    onto the grid. Raises ValueError if ``value`` is outside [low, high] or the range
+    holds no grid point.
     """
     if not unit:
         raise ValueError(f"unit of slider {label!r} must name the unit, got {unit!r}")
@@ -97,8 +104,10 @@ def slider_spec(label, unit, low, high, value, steps=ANGLE_STEPS, scale=1.0):
 
 
 def _one_turn(value_deg):
-    """A one-turn range for a revolute joint without limits, the default away from its edges."""
-    wrapped = value_deg  # by whole turns into [-180, 180], toward zero: 540 -> 180, -540 -> -180
+    """A one-turn range for a revolute joint without limits, the default away from its
+    edges."""
+    # by whole turns into [-180, 180], toward zero: 540 -> 180, -540 -> -180
+    wrapped = value_deg
     if wrapped > 180.0:
         wrapped -= 360.0 * math.ceil((wrapped - 180.0) / 360.0)
     elif wrapped < -180.0:
@@ -110,8 +119,9 @@ def _one_turn(value_deg):
 def slider_specs(chain, q=None):
     """One SliderSpec per joint of ``chain`` at ``q`` (rad / m, default zeros).
 
-    Revolute (and other angular) joints in degrees, prismatic joints in metres. A revolute
-    default outside its limits is wrapped by whole turns into them; ValueError if that fails.
+    Revolute (and other angular) joints in degrees, prismatic joints in metres. A
+    revolute default outside its limits is wrapped by whole turns into them; ValueError
+    if that fails.
     """
     q = np.zeros(chain.n) if q is None else chain.check_one(q)
     specs = []
@@ -149,7 +159,8 @@ def slider_specs(chain, q=None):
 
 
 def grid_values(low, high, step, name="values"):
-    """The grid low, low + step, ..., high (inclusive) as floats; ValueError if it does not fit."""
+    """The grid low, low + step, ..., high (inclusive) as floats; ValueError if it does
+    not fit."""
     low, high, step = (float(v) for v in as_float_array([low, high, step], name))
     count = (high - low) / step
     if step <= 0 or high <= low or abs(count - round(count)) > 1e-9:
@@ -160,5 +171,6 @@ def grid_values(low, high, step, name="values"):
     return [round(low + k * step, 10) + 0.0 for k in range(int(round(count)) + 1)]
 
 
-#: The old name of :func:`slider_specs` (``widgets.joint_sliders`` is the widget); for one release.
+#: The old name of :func:`slider_specs` (``widgets.joint_sliders`` is the widget); for
+#: one release.
 joint_sliders = slider_specs

@@ -1,14 +1,16 @@
-"""Serial chains: from a Denavit–Hartenberg (DH) table or from joint screws (product of exponentials).
+"""Serial chains: from a Denavit–Hartenberg (DH) table or from joint screws
+(product of exponentials).
 
-A :class:`Chain` is a fixed, immutable model. Underneath, every chain is its joint twists and
-a home pose: T(q) = base exp([S_1] q_1) ... exp([S_n] q_n) M tool (Lynch and Park's product of
-exponentials); a DH table is one way to write those screws down, :meth:`Chain.from_screws`
-another. Both kinds have the same methods:
+A :class:`Chain` is a fixed, immutable model. Underneath, every chain is its joint
+twists and a home pose: T(q) = base exp([S_1] q_1) ... exp([S_n] q_n) M tool
+(Lynch and Park's product of exponentials); a DH table is one way to write those screws
+down, :meth:`Chain.from_screws` another. Both kinds have the same methods:
 
-* exact (SymPy): ``fk_symbolic`` in the joint symbols q1..qn, ``joint_twists`` at exact values;
+* exact (SymPy): ``fk_symbolic`` in the joint symbols q1..qn, ``joint_twists`` at exact
+  values;
 * fast (NumPy): ``fk``, ``frames``, the Jacobians, one configuration ``(n,)`` or a batch
-  ``(N, n)``, computed by straight-line code generated from the chain's numbers when it is
-  first used (see :mod:`screwkit._compiled`; no SymPy, about a millisecond).
+  ``(N, n)``, computed by straight-line code generated from the chain's numbers when it
+  is first used (see :mod:`screwkit._compiled`; no SymPy, about a millisecond).
 
 Standard DH (the default):  A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i).
 Modified DH (Craig):        A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_i),
@@ -64,8 +66,8 @@ from .urdf import read_urdf
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
 
-#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n
-#: Jacobian of an arm that moves in its base's x-y plane.
+#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the
+#: 2 x n Jacobian of an arm that moves in its base's x-y plane.
 ROWS = {
     "all": slice(0, 6),
     "position": slice(0, 3),
@@ -75,14 +77,16 @@ ROWS = {
 
 
 def check_rows(rows):
-    """The slice of the geometric Jacobian's rows named ``rows`` (one of :data:`ROWS`)."""
+    """The slice of the geometric Jacobian's rows named ``rows``
+    (one of :data:`ROWS`)."""
     return ROWS[check_option(rows, "rows", tuple(ROWS))]
 
 
 def _numbers_out(matrix, values=None):
-    """``matrix`` at ``values``, expanded; with no symbol left, trigonometric functions of sums
-    are expanded too (sin(pi/4 - atan(u)) becomes an algebraic number), so that screw-system
-    ranks see the numbers themselves, not unrelated-looking trigonometric atoms."""
+    """``matrix`` at ``values``, expanded; with no symbol left, trigonometric functions
+    of sums are expanded too (sin(pi/4 - atan(u)) becomes an algebraic number), so that
+    screw-system ranks see the numbers themselves, not unrelated-looking trigonometric
+    atoms."""
     matrix = matrix.subs(values) if values else matrix
     if matrix.free_symbols:
         return matrix.applyfunc(sp.expand)
@@ -92,8 +96,9 @@ def _numbers_out(matrix, values=None):
 class Chain(ChainType):
     """A serial chain between a fixed ``base`` and a ``tool`` transform; immutable.
 
-    ``Chain(links, ...)`` describes it by a DH table; :meth:`from_table` takes the table as
-    an array, and :meth:`from_screws` builds a chain from joint screws and a home pose.
+    ``Chain(links, ...)`` describes it by a DH table; :meth:`from_table` takes the table
+    as an array, and :meth:`from_screws` builds a chain from joint screws and a home
+    pose.
 
     Parameters
     ----------
@@ -101,7 +106,8 @@ class Chain(ChainType):
     convention : Convention.STANDARD (default) or Convention.MODIFIED
     base, tool : 4x4 rigid transforms (default identity): T = base @ A_1 ... A_n @ tool
     name : str, used in messages and titles
-    configurations : optional {name: joint vector (n,)}, named configurations ('zero', ...)
+    configurations : optional {name: joint vector (n,)}, named configurations
+        ('zero', ...)
     """
 
     #: The URDF joint names in order for a chain from :meth:`from_urdf`, None otherwise.
@@ -183,22 +189,25 @@ class Chain(ChainType):
             "(e.g. chain.with_tool(T), chain.with_base(T))"
         )
 
-    # ---- constructors ---------------------------------------------------------------------
+    # ---- constructors ----------------------------------------------------------------
 
     @classmethod
     def from_table(
         cls, table, joints=None, convention=Convention.STANDARD, qlim=None, **options
     ):
-        """A chain from a DH table of shape (n, 4), columns (theta, d, a, alpha) in m and rad.
+        """A chain from a DH table of shape (n, 4), columns (theta, d, a, alpha) in m
+        and rad.
 
-        For a revolute joint, theta is the joint offset (theta = q + offset); for a prismatic
-        one, d is (d = q + offset). ``joints`` is a sequence of Joint, or a string such as
-        'RRP' (default all revolute); ``qlim`` an (n, 2) array (+-inf: no limit) or None.
+        For a revolute joint, theta is the joint offset (theta = q + offset); for a
+        prismatic one, d is (d = q + offset). ``joints`` is a sequence of Joint, or a
+        string such as 'RRP' (default all revolute); ``qlim`` an (n, 2) array
+        (+-inf: no limit) or None.
         """
         rows = as_float_array(table, "table")
         if rows.ndim != 2 or rows.shape[1] != 4 or rows.shape[0] < 1:
             raise ValueError(
-                f"table must have shape (n, 4), columns (theta, d, a, alpha), got shape {rows.shape}"
+                "table must have shape (n, 4), columns (theta, d, a, alpha), got "
+                f"shape {rows.shape}"
             )
         n = rows.shape[0]
         try:
@@ -215,7 +224,8 @@ class Chain(ChainType):
             or not all(k in (Joint.REVOLUTE, Joint.PRISMATIC) for k in kinds)
         ):
             raise ValueError(
-                f"joints must name {n} joints ('R' or 'P', or Joint members), got {joints!r}"
+                f"joints must name {n} joints ('R' or 'P', or Joint members), got "
+                f"{joints!r}"
             )
         limits = [None] * n if qlim is None else limits_table(qlim, n)
         links = []
@@ -244,15 +254,16 @@ class Chain(ChainType):
     ):
         """A chain from its joint screws and home pose: the product of exponentials.
 
-        frame="space": T(q) = base exp([S_1] q_1) ... exp([S_n] q_n) M tool, the S_i written in
-        the base frame at q = 0; frame="body": T(q) = base M exp([B_1] q_1) ... exp([B_n] q_n)
-        tool, the B_i written in the end-effector frame at q = 0.
+        frame="space": T(q) = base exp([S_1] q_1) ... exp([S_n] q_n) M tool, the S_i
+        written in the base frame at q = 0; frame="body": T(q) = base M
+        exp([B_1] q_1) ... exp([B_n] q_n) tool, the B_i written in the end-effector
+        frame at q = 0.
 
         Parameters
         ----------
-        axes : list of n Twist objects or 6-vectors [omega; v] (or an (n, 6) array): unit screw
-            axes, |omega| = 1 for a revolute (pitch 0) or helical (pitch omega . v) joint,
-            omega = 0 and |v| = 1 for a prismatic one
+        axes : list of n Twist objects or 6-vectors [omega; v] (or an (n, 6) array):
+            unit screw axes, |omega| = 1 for a revolute (pitch 0) or helical
+            (pitch omega . v) joint, omega = 0 and |v| = 1 for a prismatic one
         home : (4, 4) rigid transform M, the end-effector pose at q = 0 (m)
         frame : 'space' or 'body'
         qlim : (n, 2) joint limits (rad, or m for prismatic joints; +-inf: none) or None
@@ -282,11 +293,12 @@ class Chain(ChainType):
     @classmethod
     def from_urdf(cls, source, base_link=None, tip_link=None):
         """A chain from a URDF file or text: the joints from ``base_link`` (default: the
-        root) to ``tip_link`` (required when the tree branches), as joint screws in the base
-        link's frame, exact where the file's numbers are (:mod:`screwkit.urdf`).
+        root) to ``tip_link`` (required when the tree branches), as joint screws in the
+        base link's frame, exact where the file's numbers are (:mod:`screwkit.urdf`).
 
         Revolute, continuous and prismatic joints; fixed joints folded into their
-        neighbours; limits into ``qlim``; ``chain.joint_names`` lists the URDF joint names.
+        neighbours; limits into ``qlim``; ``chain.joint_names`` lists the URDF joint
+        names.
         """
         urdf = read_urdf(source, base_link, tip_link)
         chain = cls.from_screws(
@@ -327,7 +339,7 @@ class Chain(ChainType):
         """The same chain on another base transform (4, 4)."""
         return self._copy(base=base)
 
-    # ---- description ------------------------------------------------------------------------
+    # ---- description -----------------------------------------------------------------
 
     @property
     def n(self):
@@ -354,8 +366,9 @@ class Chain(ChainType):
         return f"Chain({self.name!r}, {self.n} joints {kinds}, {form})"
 
     def table(self):
-        """The chain's parameters as rows of strings, with a header: the DH table (theta, d, a,
-        alpha; the joint variable marked q_i) or the joint screws (omega, v, pitch), and limits."""
+        """The chain's parameters as rows of strings, with a header: the DH table
+        (theta, d, a, alpha; the joint variable marked q_i) or the joint screws
+        (omega, v, pitch), and limits."""
 
         def number(value, scale=1.0):
             value = float(value) * scale
@@ -365,8 +378,8 @@ class Chain(ChainType):
             return (
                 ""
                 if row[0] == -np.inf and row[1] == np.inf
-                else f"[{number(row[0], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}, "
-                f"{number(row[1], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}]"
+                else f"[{number(row[0], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}, "  # noqa: E501
+                f"{number(row[1], *(() if kind is Joint.PRISMATIC else (180 / np.pi,)))}]"  # noqa: E501
             )
 
         rows = []
@@ -422,7 +435,8 @@ class Chain(ChainType):
         return header, rows
 
     def _repr_html_(self):
-        """The parameter table, typeset (Jupyter and the book); ``repr`` stays one line."""
+        """The parameter table, typeset (Jupyter and the book); ``repr`` stays one
+        line."""
         header, rows = self.table()
         form = (
             f"{self.convention.value} DH"
@@ -438,24 +452,26 @@ class Chain(ChainType):
             f"<tr>{cells}</tr>{body}</table>"
         )
 
-    # ---- input checks -------------------------------------------------------------------
+    # ---- input checks ----------------------------------------------------------------
 
     def check_q(self, q, name="q"):
         """``q`` as float64, shape (n,) or (N, n); a clear error otherwise."""
         q = as_float_array(q, name)
         if q.ndim not in (1, 2) or q.shape[-1] != self.n:
             raise ValueError(
-                f"{name} must have {self.n} entries for this chain, shape ({self.n},) or (N, {self.n}), "
-                f"got shape {q.shape}"
+                f"{name} must have {self.n} entries for this chain, shape ({self.n},) "
+                f"or (N, {self.n}), got shape {q.shape}"
             )
         return q
 
     def check_one(self, q, name="q"):
-        """``q`` as float64 of shape (n,): one configuration (a batch is refused, clearly)."""
+        """``q`` as float64 of shape (n,): one configuration
+        (a batch is refused, clearly)."""
         q = self.check_q(q, name)
         if q.ndim != 1:
             raise ValueError(
-                f"{name} must be one configuration of shape ({self.n},), got shape {q.shape}"
+                f"{name} must be one configuration of shape ({self.n},), got shape "
+                f"{q.shape}"
             )
         return q
 
@@ -464,7 +480,7 @@ class Chain(ChainType):
         q = self.check_q(q)
         return np.all((q >= self._qlim[:, 0]) & (q <= self._qlim[:, 1]), axis=-1)
 
-    # ---- exact ----------------------------------------------------------------------------
+    # ---- exact -----------------------------------------------------------------------
 
     def _require_dh(self, what):
         if not self.is_dh:
@@ -474,7 +490,8 @@ class Chain(ChainType):
             )
 
     def _exact_q(self, q, name="q"):
-        """q for the exact routines: n numbers or SymPy expressions (the joint symbols if None)."""
+        """q for the exact routines: n numbers or SymPy expressions
+        (the joint symbols if None)."""
         if q is None:
             return list(self.q_symbols)
         if isinstance(q, (str, bytes)) or not isinstance(
@@ -495,13 +512,15 @@ class Chain(ChainType):
         ]
 
     def link_transforms(self, q=None):
-        """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint symbols."""
+        """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint
+        symbols."""
         self._require_dh("link_transforms")
         q = self._exact_q(q)
         return [link.transform(qi, self.convention) for link, qi in zip(self.links, q)]
 
     def length_symbols(self):
-        """Symbols a_i, d_i for every non-zero link length of a DH chain: {symbol: value} (m)."""
+        """Symbols a_i, d_i for every non-zero link length of a DH chain:
+        {symbol: value} (m)."""
         self._require_dh("length_symbols")
         table = {}
         for i, link in enumerate(self.links, start=1):
@@ -544,9 +563,11 @@ class Chain(ChainType):
     def fk_symbolic(self, simplify=True, symbolic_lengths=False, upto=None):
         """The exact end-effector pose, a 4x4 SymPy matrix in the joint symbols q1..qn.
 
-        simplify : combine sums of angles (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3))
-            after each factor, as textbooks write c23
-        symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for lengths
+        simplify : combine sums of angles
+            (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3)) after each factor, as
+            textbooks write c23
+        symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for
+            lengths
         upto : (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool
         """
         simplify = check_flag(simplify, "simplify")
@@ -558,7 +579,8 @@ class Chain(ChainType):
         if not self.is_dh:
             if symbolic_lengths or upto is not None:
                 raise ValueError(
-                    "symbolic_lengths and upto are for DH chains; this chain is built from screws"
+                    "symbolic_lengths and upto are for DH chains; this chain is built "
+                    "from screws"
                 )
             T = exact_matrix(self.base)
             factors = [
@@ -584,7 +606,8 @@ class Chain(ChainType):
         return T
 
     def frames_symbolic(self, symbolic_lengths=False):
-        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain: n + 1 SymPy matrices."""
+        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain:
+        n + 1 SymPy matrices."""
         self._require_dh("frames_symbolic")
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
         base = exact_matrix(self.base)
@@ -596,9 +619,11 @@ class Chain(ChainType):
         ]
 
     def joint_frames(self, frames):
-        """Of the n + 1 frames of a DH chain (base first, no tool), the n whose z axis is a joint axis.
+        """Of the n + 1 frames of a DH chain (base first, no tool), the n whose z axis
+        is a joint axis.
 
-        Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame i.
+        Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame
+        i.
         """
         self._require_dh("joint_frames")
         if not isinstance(frames, (list, tuple)) or len(frames) != self.n + 1:
@@ -609,12 +634,14 @@ class Chain(ChainType):
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
 
     def twists_symbolic(self, q=None, symbolic_lengths=False, rational=False):
-        """The joint twists [omega; v] in the base frame, exactly: a list of n SymPy 6-vectors.
+        """The joint twists [omega; v] in the base frame, exactly: a list of n SymPy
+        6-vectors.
 
-        ``q`` is a joint vector of exact values or symbols (default the joint symbols q1..qn).
-        These are the columns of the space Jacobian. With ``rational``, every decimal number of
-        the model (lengths, pitches, base, tool, home) is read as the exact decimal it prints as
-        (0.4318 -> 2159/5000) before any product, so no round-off term can appear.
+        ``q`` is a joint vector of exact values or symbols (default the joint symbols
+        q1..qn). These are the columns of the space Jacobian. With ``rational``, every
+        decimal number of the model (lengths, pitches, base, tool, home) is read as the
+        exact decimal it prints as (0.4318 -> 2159/5000) before any product, so no
+        round-off term can appear.
         """
         q = self._exact_q(q)
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -659,14 +686,15 @@ class Chain(ChainType):
     def joint_twists(self, q):
         """The joint twists at q in the base frame.
 
-        Exact q (SymPy numbers or symbols; the model's decimals and float entries of q are read
-        as the exact decimals they print as): a :class:`~screwkit.systems.ScrewSystem` of Twists,
-        so that ``.rank`` and ``.reciprocal()`` give a singular configuration's lost freedoms
-        and the wrenches the structure bears without motors. Numeric q (n,): the same
-        ScrewSystem, of float twists, whose rank is by SVD with its tolerance (1e-9 relative,
-        :mod:`screwkit.systems`), as :func:`screwkit.mobility` does. A batch (N, n): the
-        (N, n, 6) array of the space Jacobians' columns (``space_jacobian(q).T`` is one
-        configuration's (n, 6) array).
+        Exact q (SymPy numbers or symbols; the model's decimals and float entries of q
+        are read as the exact decimals they print as): a
+        :class:`~screwkit.systems.ScrewSystem` of Twists, so that ``.rank`` and
+        ``.reciprocal()`` give a singular configuration's lost freedoms and the wrenches
+        the structure bears without motors. Numeric q (n,): the same ScrewSystem, of
+        float twists, whose rank is by SVD with its tolerance
+        (1e-9 relative, :mod:`screwkit.systems`), as :func:`screwkit.mobility` does. A
+        batch (N, n): the (N, n, 6) array of the space Jacobians' columns
+        (``space_jacobian(q).T`` is one configuration's (n, 6) array).
         """
         if is_symbolic(q):
             return ScrewSystem(
@@ -677,11 +705,12 @@ class Chain(ChainType):
             return twists
         return ScrewSystem([Twist(t) for t in twists])
 
-    # ---- fast -----------------------------------------------------------------------------
+    # ---- fast ------------------------------------------------------------------------
 
     @cached_property
     def _program(self):
-        """The chain as constants and unit joint twists for :mod:`screwkit._compiled` (floats only)."""
+        """The chain as constants and unit joint twists for :mod:`screwkit._compiled`
+        (floats only)."""
         if self.is_dh:
             parts = [
                 dh_factors(link, i, self.convention)
@@ -706,7 +735,8 @@ class Chain(ChainType):
             points = axis_points(self._screws, np.zeros(3))
         else:
             start, last = np.asarray(self.base) @ home, np.asarray(self.tool)
-            # the screws are in end-effector coordinates: start from the base origin seen there
+            # the screws are in end-effector coordinates: start from the base origin
+            # seen there
             points = axis_points(self._screws, -home[:3, :3].T @ home[:3, 3])
         factors = [(S, np.eye(4), r) for S, r in zip(self._screws, points)]
         factors[-1] = (factors[-1][0], last, factors[-1][2])
@@ -716,20 +746,23 @@ class Chain(ChainType):
 
     @cached_property
     def _functions(self):
-        """The generated functions, compiled on first use: {'pose' | 'axes' | 'frames': function}."""
+        """The generated functions, compiled on first use: {'pose' | 'axes' | 'frames':
+        function}."""
         return {}
 
     def source(self, outputs="pose"):
         """The straight-line Python that computes this chain's ``outputs`` (a string).
 
         The function ``kinematics(t, c, s)`` generated from the chain's numbers (see
-        :mod:`screwkit._compiled`): ``t`` the joint angles plus their offsets (t = q + offset;
-        the DH theta or d offsets), ``c``, ``s`` their cosines and sines; it returns the entries
-        row by row. ``outputs``: 'pose' (the 12 entries of T's top three rows), 'frames',
-        'space' or 'geometric' (the Jacobians, 6 x n) or 'axes' (each joint's twist and a
-        point, then the pose). What :meth:`fk` and the Jacobians run, as text to read.
+        :mod:`screwkit._compiled`): ``t`` the joint angles plus their offsets
+        (t = q + offset; the DH theta or d offsets), ``c``, ``s`` their cosines and
+        sines; it returns the entries row by row. ``outputs``: 'pose'
+        (the 12 entries of T's top three rows), 'frames', 'space' or 'geometric'
+        (the Jacobians, 6 x n) or 'axes' (each joint's twist and a point, then the
+        pose). What :meth:`fk` and the Jacobians run, as text to read.
 
-        >>> print(Chain([Link.revolute(a=1.0)]).source())  # doctest: +NORMALIZE_WHITESPACE
+        >>> arm = Chain([Link.revolute(a=1.0)])
+        >>> print(arm.source())  # doctest: +NORMALIZE_WHITESPACE
         def kinematics(t, c, s):
             c1 = c[0]
             s1 = s[0]
@@ -741,7 +774,8 @@ class Chain(ChainType):
         return self._program[0].source(outputs)
 
     def _run(self, outputs, q, rows=None, out=None):
-        """Generated code ``outputs`` at q: a list of entries for (n,), else ``out[rows[k]]`` filled."""
+        """Generated code ``outputs`` at q: a list of entries for (n,), else
+        ``out[rows[k]]`` filled."""
         program, offsets = self._program
         if outputs not in self._functions:
             self._functions[outputs] = program.compile(outputs)
@@ -751,7 +785,8 @@ class Chain(ChainType):
         return _compiled.evaluate_batch(function, q + offsets, out, rows)
 
     def fk(self, q):
-        """The end-effector pose: q (n,) -> (4, 4); a batch Q (N, n) -> (N, 4, 4) (m)."""
+        """The end-effector pose: q (n,) -> (4, 4); a batch Q (N, n) -> (N, 4, 4)
+        (m)."""
         q = self.check_q(q)
         if q.ndim == 1:
             T = np.eye(4)
@@ -765,11 +800,13 @@ class Chain(ChainType):
         )  # a view: each entry was computed as one contiguous row
 
     def frames(self, q):
-        """The base frame and every link frame: q (n,) -> (n + 1, 4, 4), (N, n) -> (N, n + 1, 4, 4).
+        """The base frame and every link frame: q (n,) -> (n + 1, 4, 4),
+        (N, n) -> (N, n + 1, 4, 4).
 
-        DH chain: frame k is base @ A_1 ... A_k; the last frame also carries the tool. Chain from
-        screws: frame k < n sits on the axis of joint k + 1 (a point of it, moved by joints
-        1..k), frame 0 has the base's orientation, and the last frame is the end effector.
+        DH chain: frame k is base @ A_1 ... A_k; the last frame also carries the tool.
+        Chain from screws: frame k < n sits on the axis of joint k + 1
+        (a point of it, moved by joints 1..k), frame 0 has the base's orientation, and
+        the last frame is the end effector.
         """
         q = self.check_q(q)
         count = self.n + 1
@@ -785,7 +822,8 @@ class Chain(ChainType):
         return np.ascontiguousarray(T.transpose(3, 0, 1, 2))
 
     def _twists_and_pose(self, q):
-        """Joint twists, axis points and pose, batch last: omega, v, point (3, n[, N]), T (3, 4[, N])."""
+        """Joint twists, axis points and pose, batch last: omega, v, point (3, n[, N]),
+        T (3, 4[, N])."""
         rows = 9 * self.n + 12
         if q.ndim == 1:
             values = np.array(self._run("axes", q))
@@ -802,10 +840,12 @@ class Chain(ChainType):
         )
 
     def joint_axes(self, q):
-        """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3).
+        """Direction z_i and a point o_i of every joint axis in the base frame, each
+        (n, 3) or (N, n, 3).
 
-        DH: joint i moves about z of frame i-1 (standard) or of frame i (modified), through
-        its origin. A prismatic joint's direction is its translation; its point is for drawing.
+        DH: joint i moves about z of frame i-1 (standard) or of frame i (modified),
+        through its origin. A prismatic joint's direction is its translation; its point
+        is for drawing.
         """
         q = self.check_q(q)
         omega, v, point, _ = self._twists_and_pose(q)
@@ -816,10 +856,11 @@ class Chain(ChainType):
             return z, point
         return np.swapaxes(z, 0, 1), np.swapaxes(point, 0, 1)
 
-    # ---- Jacobians: outputs of the generated program -----------------------------------------
+    # ---- Jacobians: outputs of the generated program ---------------------------------
 
     def _generated_jacobian(self, q, outputs):
-        """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n) or (N, 6, n)."""
+        """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n)
+        or (N, 6, n)."""
         q = self.check_q(q)
         n, rows = self.n, 6 * self.n
         if q.ndim == 1:
@@ -834,24 +875,29 @@ class Chain(ChainType):
         return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
     def space_jacobian(self, q):
-        """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
+        """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns
+        [omega; v].
 
-        Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i) for a
-        revolute joint about z_i through o_i (v is the velocity of the body point at the base
-        origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
+        Column i is the twist of joint i in the base frame, Ad(G_i) X_i:
+        (z_i; o_i x z_i) for a revolute joint about z_i through o_i
+        (v is the velocity of the body point at the base origin), (0; z_i) for a
+        prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
         """
         return self._generated_jacobian(q, "space")
 
     def geometric_jacobian(self, q):
-        """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows [v; omega].
+        """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows
+        [v; omega].
 
-        Column i is the space twist moved to the end-effector point p: (v_i + omega_i x p; omega_i),
-        i.e. (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic one.
+        Column i is the space twist moved to the end-effector point p:
+        (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint
+        and (z_i; 0) for a prismatic one.
         """
         return self._generated_jacobian(q, "geometric")
 
     def body_jacobian(self, q):
-        """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
+        """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns
+        [omega; v].
 
         Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
         (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
@@ -872,7 +918,8 @@ class Chain(ChainType):
         return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, self.n)))
 
     def jacobian_rows(self, q, rows="all"):
-        """The rows ``rows`` (a key of :data:`ROWS`) of the geometric Jacobian: (m, n) or (N, m, n).
+        """The rows ``rows`` (a key of :data:`ROWS`) of the geometric Jacobian: (m, n)
+        or (N, m, n).
 
         'planar' reads v_x, v_y in the chain's base frame.
         """
@@ -884,7 +931,8 @@ class Chain(ChainType):
         return J[..., selected, :]
 
     def singular_values(self, q, rows="all"):
-        """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
+        """Singular values of the geometric Jacobian's rows, largest first: (k,) or
+        (N, k)."""
         check_rows(rows)
         q = self.check_q(q)
 
@@ -894,45 +942,51 @@ class Chain(ChainType):
         return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
 
     def lost_rank(self, sigma, rows="all"):
-        """True where the Jacobian rows with singular values ``sigma`` (..., k) have lost rank:
-        NumPy's rank rule on the smallest singular value."""
+        """True where the Jacobian rows with singular values ``sigma`` (..., k) have
+        lost rank: NumPy's rank rule on the smallest singular value."""
         return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), self.n)
 
     def manipulability(self, q, rows="all"):
         """Yoshikawa's manipulability, the product of the singular values: () or (N,).
 
-        That is sqrt(det(J J^T)) for J with no more rows than columns (sqrt(det(J^T J)) otherwise).
-        Exactly 0.0 where J has lost rank (by NumPy's rank tolerance), so a singular
-        configuration is an answer, not noise. With rows='all' the product mixes metres and
-        radians; 'position' gives the volume factor of the velocity ellipsoid in m/s. rows:
-        'all', 'position' (the rows v), 'orientation' (the rows omega) or 'planar' (v_x, v_y in
-        the chain's base frame).
+        That is sqrt(det(J J^T)) for J with no more rows than columns
+        (sqrt(det(J^T J)) otherwise). Exactly 0.0 where J has lost rank
+        (by NumPy's rank tolerance), so a singular configuration is an answer, not
+        noise. With rows='all' the product mixes metres and radians; 'position' gives
+        the volume factor of the velocity ellipsoid in m/s. rows: 'all', 'position'
+        (the rows v), 'orientation' (the rows omega) or 'planar'
+        (v_x, v_y in the chain's base frame).
         """
         sigma = self.singular_values(q, rows)
         return np.where(self.lost_rank(sigma, rows), 0.0, np.prod(sigma, axis=-1))[()]
 
     def numeric_ik(self, T, q0, **options):
-        """Numerical inverse kinematics of this chain: see :func:`screwkit.ik.numeric_ik`."""
+        """Numerical inverse kinematics of this chain: see
+        :func:`screwkit.ik.numeric_ik`."""
         return _newton.numeric_ik(self, T, q0, **options)
 
-    # ---- product of exponentials ----------------------------------------------------------
+    # ---- product of exponentials -----------------------------------------------------
 
     def home(self):
-        """The end-effector pose at q = 0, M (4, 4): the home pose of the product of exponentials."""
+        """The end-effector pose at q = 0, M (4, 4): the home pose of the product of
+        exponentials."""
         return self.fk(np.zeros(self.n))
 
     def screw_axes(self):
-        """The joint screws at q = 0 in the base frame, (n, 6) rows [omega; v]: the columns of
-        the space Jacobian at q = 0. Revolute: (z, p x z) for the axis z through p; prismatic: (0, z).
+        """The joint screws at q = 0 in the base frame, (n, 6) rows [omega; v]: the
+        columns of the space Jacobian at q = 0. Revolute: (z, p x z) for the axis z
+        through p; prismatic: (0, z).
         """
         return self.space_jacobian(np.zeros(self.n)).T
 
     def body_screw_axes(self):
-        """The joint screws at q = 0 in the end-effector frame, (n, 6) rows [omega; v]."""
+        """The joint screws at q = 0 in the end-effector frame, (n, 6) rows
+        [omega; v]."""
         return self.body_jacobian(np.zeros(self.n)).T
 
     def fk_poe(self, q):
-        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M, q (n,) -> (4, 4).
+        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M, q
+        (n,) -> (4, 4).
 
         An independent route to :meth:`fk` (a loop of 4x4 exponentials), for checking.
         """

@@ -19,12 +19,13 @@ needs: use :func:`numeric_ik`. :func:`puma560_ik` is the same solver under the P
 name.
 
 One angle convention: every closed-form angle is in (-pi, pi]. ``within_limits=True`` is
-the explicit option that moves angles by whole turns into the joint limits (e.g. q2 = -170
-deg becomes 190 deg for the PUMA) and drops the solutions that cannot be moved there.
+the explicit option that moves angles by whole turns into the joint limits
+(e.g. q2 = -170 deg becomes 190 deg for the PUMA) and drops the solutions that cannot be
+moved there.
 
-Numeric (:func:`numeric_ik`): Newton–Raphson on the twist of the pose error (the logarithm
-of T(q)^-1 T*, :func:`screwkit.log_transform`), damped least squares near singularities,
-joint limits respected; for any chain.
+Numeric (:func:`numeric_ik`): Newton–Raphson on the twist of the pose error
+(the logarithm of T(q)^-1 T*, :func:`screwkit.log_transform`), damped least squares near
+singularities, joint limits respected; for any chain.
 
 >>> import numpy as np, screwkit as sk
 >>> robot = sk.robots.puma560()
@@ -87,8 +88,8 @@ __all__ = [
 
 @dataclass(frozen=True)
 class IKSolution:
-    """One closed-form solution: joint vector ``q`` (6,) rad (m for a prismatic joint), its
-    ``config`` label, the singularities it sits on (``'shoulder'``, ``'elbow'``,
+    """One closed-form solution: joint vector ``q`` (6,) rad (m for a prismatic joint),
+    its ``config`` label, the singularities it sits on (``'shoulder'``, ``'elbow'``,
     ``'wrist'``; the Stanford arm's boom counts as its elbow) and ``within_limits``:
     whether q, or q moved by whole turns, respects the joint limits."""
 
@@ -100,13 +101,16 @@ class IKSolution:
     def __repr__(self):
         q = ", ".join(f"{v:+.4f}" for v in self.q)
         extra = f", singular={self.singular}" if self.singular else ""
-        return f"IKSolution({self.config}: q=[{q}], within_limits={self.within_limits}{extra})"
+        return (
+            f"IKSolution({self.config}: q=[{q}], "
+            f"within_limits={self.within_limits}{extra})"
+        )
 
 
 class IKSolutions(list):
-    """The solutions for one pose (a list of :class:`IKSolution`); ``reason`` says why it is
-    empty (out of reach, or outside the joint limits) or is None; ``structure`` names
-    the structure the closed form recognised (see :data:`STRUCTURES`)."""
+    """The solutions for one pose (a list of :class:`IKSolution`); ``reason`` says why
+    it is empty (out of reach, or outside the joint limits) or is None; ``structure``
+    names the structure the closed form recognised (see :data:`STRUCTURES`)."""
 
     def __init__(self, solutions=(), reason=None, structure=None):
         super().__init__(solutions)
@@ -114,7 +118,8 @@ class IKSolutions(list):
         self.structure = structure
 
     def by_config(self, config):
-        """The solution with this label ('lun', ...), or None if that branch has no solution.
+        """The solution with this label ('lun', ...), or None if that branch has no
+        solution.
 
         A string that is not one of the eight labels is a ``ValueError``.
         """
@@ -125,7 +130,8 @@ class IKSolutions(list):
         return next((s for s in self if s.config == config), None)
 
     def nearest(self, q):
-        """The solution closest to the joint vector ``q`` (wrapped angle differences), or None."""
+        """The solution closest to the joint vector ``q`` (wrapped angle differences),
+        or None."""
         q = as_float_array(q, "q")
         if q.shape != (6,):
             raise ValueError(f"q must have 6 entries, got shape {q.shape}")
@@ -182,7 +188,8 @@ def structure(chain):
 
 
 def analytic_ik_all(chain, T):
-    """All eight closed-form solutions of one pose or a batch, in the order of CONFIGURATIONS.
+    """All eight closed-form solutions of one pose or a batch, in the order of
+    CONFIGURATIONS.
 
     Parameters
     ----------
@@ -191,9 +198,10 @@ def analytic_ik_all(chain, T):
 
     Returns
     -------
-    Q : array, shape (8, 6) or (N, 8, 6), rad in (-pi, pi]; NaN rows for the branches that
-        do not reach a pose (all eight when it is out of reach; see :func:`analytic_ik` for
-        the reason). Computed in chunks, so memory stays bounded for large batches.
+    Q : array, shape (8, 6) or (N, 8, 6), rad in (-pi, pi];
+        NaN rows for the branches that do not reach a pose (all eight when it is out of
+        reach; see :func:`analytic_ik` for the reason). Computed in chunks, so memory
+        stays bounded for large batches.
     """
     arm = _arm(chain)
     T = check_poses(T, "T")
@@ -210,16 +218,18 @@ def analytic_ik(chain, T, within_limits=False, near=None):
         arm (joints 2, 3, 4 parallel) or an RRP arm with a spherical wrist (Stanford);
         any other arm is a ``ValueError`` saying what each structure needs
     T : array, shape (4, 4) (or (N, 4, 4): a list of answers), the tool pose (m)
-    within_limits : False (default): angles in (-pi, pi]. True: each angle moved by whole
-        turns into its joint limits, the solutions that cannot be dropped; if none is left,
-        the answer is empty and its ``reason`` says so
+    within_limits : False (default): angles in (-pi, pi].
+        True: each angle moved by whole turns into its joint limits, the solutions
+        that cannot be dropped; if none is left, the answer is empty and its
+        ``reason`` says so
     near : optional joint vector (6,): sort the solutions by their distance to it
 
     Returns
     -------
-    IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS (sorted by distance
-        to ``near`` if given); empty with a ``reason`` when out of reach; ``structure``
-        names the structure recognised. For a batch, a list of IKSolutions.
+    IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS
+        (sorted by distance to ``near`` if given); empty with a ``reason`` when out of
+        reach; ``structure`` names the structure recognised. For a batch, a list of
+        IKSolutions.
     """
     return _analytic_ik(_arm(chain), chain, check_poses(T, "T"), within_limits, near)
 
@@ -294,9 +304,10 @@ def _into_limits(Q, qlim, revolute=None):
 
 
 def configuration(chain, q):
-    """The label ('ruf', ...) of a joint vector (6,) or the labels of a batch (N, 6), from the
-    geometric definitions of the chain's structure (:mod:`screwkit.spherical_wrist`,
-    :mod:`screwkit.ur_ik`, :mod:`screwkit.stanford_ik`), singular cases included."""
+    """The label ('ruf', ...) of a joint vector (6,) or the labels of a batch (N, 6),
+    from the geometric definitions of the chain's structure
+    (:mod:`screwkit.spherical_wrist`, :mod:`screwkit.ur_ik`,
+    :mod:`screwkit.stanford_ik`), singular cases included."""
     arm = _arm(chain)
     q = chain.check_q(q)
     labels = arm.labels(q)
@@ -304,12 +315,13 @@ def configuration(chain, q):
 
 
 def puma560_ik(T, robot=None, within_limits=False, near=None):
-    """Every closed-form solution for one pose T (4, 4) of a PUMA 560: :func:`analytic_ik`.
+    """Every closed-form solution for one pose T (4, 4) of a PUMA 560:
+    :func:`analytic_ik`.
 
-    ``robot`` is the chain the pose belongs to (any lengths d1, d3, a2, a3, d4, d6, offsets,
-    base and tool); without one, ``robots.puma560()`` is used: Corke's model with d1 = 0, the
-    base frame on the shoulder. Poses of a PUMA with a pedestal (the Robotics Toolbox's
-    d1 = 0.672 m) need that robot passed in.
+    ``robot`` is the chain the pose belongs to (any lengths d1, d3, a2, a3, d4, d6,
+    offsets, base and tool); without one, ``robots.puma560()`` is used: Corke's model
+    with d1 = 0, the base frame on the shoulder. Poses of a PUMA with a pedestal
+    (the Robotics Toolbox's d1 = 0.672 m) need that robot passed in.
     """
     robot = _default_puma() if robot is None else robot
     arm = _arm(robot, "robot")
@@ -319,8 +331,9 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
 
 
 def puma560_ik_all(Ts, robot=None):
-    """All eight solutions of a batch of PUMA poses (N, 4, 4) -> (N, 8, 6), rad in (-pi, pi]
-    (NaN where out of reach): :func:`analytic_ik_all` with ``robots.puma560()`` by default."""
+    """All eight solutions of a batch of PUMA poses (N, 4, 4) -> (N, 8, 6), rad in
+    (-pi, pi] (NaN where out of reach): :func:`analytic_ik_all` with
+    ``robots.puma560()`` by default."""
     return analytic_ik_all(_default_puma() if robot is None else robot, Ts)
 
 
@@ -329,9 +342,10 @@ def puma560_config(q, robot=None):
 
     Arm 'r' when the wrist centre is in front of the shoulder along x1
     (a2 c2 + a3 c23 - d4 s23 > 0); elbow 'u' when the elbow is above the line from the
-    shoulder to the wrist centre, seen with the arm pointing forward; wrist 'f' when q5 > 0.
-    Singular cases follow the rule of :mod:`screwkit.spherical_wrist` (shoulder: 'r',
-    elbow: 'd', wrist: 'f' when cos q4 >= 0), so that every label round-trips.
+    shoulder to the wrist centre, seen with the arm pointing forward; wrist 'f' when
+    q5 > 0. Singular cases follow the rule of :mod:`screwkit.spherical_wrist`
+    (shoulder: 'r', elbow: 'd', wrist: 'f' when cos q4 >= 0), so that every label
+    round-trips.
     """
     robot = _default_puma() if robot is None else check_chain(robot, "robot")
     return configuration(robot, robot.check_one(q))

@@ -2,19 +2,20 @@
 
 Two Jacobians, with names that say which:
 
-* ``geometric_jacobian``: rows [v; omega], v the velocity of the end-effector point, both in
-  the base frame (Spong, Siciliano, Corke's ``jacob0``);
-* ``space_jacobian``: columns are the joint twists [omega; v] in the base frame, v being the
-  velocity of the body point at the base origin (Lynch & Park's J_s).
+* ``geometric_jacobian``: rows [v; omega], v the velocity of the end-effector point,
+  both in the base frame (Spong, Siciliano, Corke's ``jacob0``);
+* ``space_jacobian``: columns are the joint twists [omega; v] in the base frame, v being
+  the velocity of the body point at the base origin (Lynch & Park's J_s).
 
 From the Jacobian: singular values, Yoshikawa's manipulability sqrt(det(J J^T)), the
 condition number, the rank, and the manipulability ellipsoid. ``rows`` selects the rows
-used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) or 'planar'
-(v_x, v_y: the 2 x n Jacobian of an arm in the x-y plane).
+used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) or
+'planar' (v_x, v_y: the 2 x n Jacobian of an arm in the x-y plane).
 
 >>> import screwkit as sk, numpy as np
 >>> arm = sk.robots.planar([1.0, 1.0])
->>> float(np.round(manipulability(arm, [0.0, np.pi / 2], rows="planar"), 12))  # |l1 l2 sin q2|
+>>> w = manipulability(arm, [0.0, np.pi / 2], rows="planar")  # |l1 l2 sin q2|
+>>> float(np.round(w, 12))
 1.0
 >>> int(rank(arm, [0.0, 0.0], rows="planar"))  # stretched: singular
 1
@@ -25,7 +26,9 @@ import sympy as sp
 
 from ._checks import as_sympy_matrix, check_chain, check_flag, describe
 from ._compiled import in_chunks
-from .chains import ROWS, check_rows  # noqa: F401  (ROWS re-exported: sk.jacobians.ROWS)
+
+# ROWS re-exported: sk.jacobians.ROWS
+from .chains import ROWS, check_rows  # noqa: F401
 from .links import Joint
 
 __all__ = [
@@ -45,16 +48,18 @@ __all__ = [
 
 
 def joint_axes(chain, q):
-    """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3) or (N, n, 3)."""
+    """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3)
+    or (N, n, 3)."""
     return check_chain(chain).joint_axes(q)
 
 
 def space_jacobian(chain, q):
     """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
 
-    Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i) for a
-    revolute joint about z_i through o_i (v is the velocity of the body point at the base
-    origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
+    Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i)
+    for a revolute joint about z_i through o_i (v is the velocity of the body point at
+    the base origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a
+    helical one of pitch h.
     """
     return check_chain(chain).space_jacobian(q)
 
@@ -62,8 +67,9 @@ def space_jacobian(chain, q):
 def geometric_jacobian(chain, q):
     """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows [v; omega].
 
-    Column i is the space twist moved to the end-effector point p: (v_i + omega_i x p; omega_i),
-    i.e. (z_i x (p - o_i); z_i) for a revolute joint and (z_i; 0) for a prismatic one.
+    Column i is the space twist moved to the end-effector point p:
+    (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint and
+    (z_i; 0) for a prismatic one.
     """
     return check_chain(chain).geometric_jacobian(q)
 
@@ -80,8 +86,9 @@ def body_jacobian(chain, q):
 def numerical_jacobian(chain, q, h=1e-6):
     """The geometric Jacobian (6, n) of one configuration by central differences of FK.
 
-    Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the skew
-    matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian` (error O(h^2)).
+    Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the
+    skew matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian`
+    (error O(h^2)).
     """
     q = check_chain(chain).check_one(q)
     if (
@@ -102,7 +109,7 @@ def numerical_jacobian(chain, q, h=1e-6):
     return np.array(columns).T
 
 
-# ---- exact ---------------------------------------------------------------------------------
+# ---- exact ---------------------------------------------------------------------------
 
 
 def _symbolic_point(chain, point, end, frames):
@@ -123,7 +130,8 @@ def _symbolic_point(chain, point, end, frames):
             )
         if not 0 <= point <= chain.n:
             raise ValueError(
-                f"point must be a frame number 0..{chain.n}, a 3-vector or None, got {point!r}"
+                f"point must be a frame number 0..{chain.n}, a 3-vector or None, got "
+                f"{point!r}"
             )
         return frames[point][:3, 3]
     return as_sympy_matrix(point, "point", (3, 1))
@@ -132,13 +140,14 @@ def _symbolic_point(chain, point, end, frames):
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     """The exact geometric Jacobian (6, n), a SymPy matrix in the joint symbols q1..qn.
 
-    point : the reference point whose velocity the rows v give: None for the end-effector
-        point, an integer k for the origin of frame k of a DH chain (e.g. a wrist centre), or
-        a 3-vector of expressions in the base frame.
-    symbolic_lengths : (DH) lengths as the symbols a_i, d_i (see ``Chain.length_symbols``).
+    point : the reference point whose velocity the rows v give: None for the
+        end-effector point, an integer k for the origin of frame k of a DH chain
+        (e.g. a wrist centre), or a 3-vector of expressions in the base frame.
+    symbolic_lengths : (DH) lengths as the symbols a_i, d_i
+        (see ``Chain.length_symbols``).
 
-    Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the point:
-    (v_i + omega_i x p; omega_i).
+    Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the
+    point: (v_i + omega_i x p; omega_i).
     """
     check_chain(chain)
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -168,10 +177,11 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
     """det J of a six-joint chain, factorised: a SymPy expression in q1..q6.
 
     det J does not depend on the reference point (moving it multiplies J by a matrix of
-    determinant 1), so pick ``point`` where J is simple: at a wrist centre (frame 4 of an arm
-    with a spherical wrist) J is block triangular, [[A, 0], [C, D]], and det J = det A det D.
-    A DH chain's lengths are factored as symbols and only then replaced by their numbers, so
-    the factors are exact (no round-off terms from decimal lengths).
+    determinant 1), so pick ``point`` where J is simple: at a wrist centre
+    (frame 4 of an arm with a spherical wrist) J is block triangular, [[A, 0], [C, D]],
+    and det J = det A det D. A DH chain's lengths are factored as symbols and only then
+    replaced by their numbers, so the factors are exact (no round-off terms from decimal
+    lengths).
     """
     if check_chain(chain).n != 6:
         raise ValueError(
@@ -189,27 +199,30 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
     return result.xreplace({s: sp.sympify(v) for s, v in lengths.items()})
 
 
-# ---- numbers from the Jacobian ---------------------------------------------------------------
+# ---- numbers from the Jacobian -------------------------------------------------------
 
 
 def singular_values(chain, q, rows="all"):
-    """Singular values of the geometric Jacobian's rows, largest first: (k,) or (N, k)."""
+    """Singular values of the geometric Jacobian's rows, largest first: (k,) or
+    (N, k)."""
     return check_chain(chain).singular_values(q, rows)
 
 
 def manipulability(chain, q, rows="all"):
     """Yoshikawa's manipulability, the product of the singular values: () or (N,).
 
-    That is sqrt(det(J J^T)) for J with no more rows than columns (sqrt(det(J^T J)) otherwise).
-    Exactly 0.0 where J has lost rank (by NumPy's rank tolerance), so a singular
-    configuration is an answer, not noise. With rows='all' the product mixes metres and
-    radians; 'position' gives the volume factor of the velocity ellipsoid in m/s.
+    That is sqrt(det(J J^T)) for J with no more rows than columns
+    (sqrt(det(J^T J)) otherwise). Exactly 0.0 where J has lost rank
+    (by NumPy's rank tolerance), so a singular configuration is an answer, not noise.
+    With rows='all' the product mixes metres and radians; 'position' gives the volume
+    factor of the velocity ellipsoid in m/s.
     """
     return check_chain(chain).manipulability(q, rows)
 
 
 def condition_number(chain, q, rows="all"):
-    """sigma_max / sigma_min of the Jacobian's rows (1 is isotropic); inf where singular."""
+    """sigma_max / sigma_min of the Jacobian's rows (1 is isotropic); inf where
+    singular."""
     sigma = singular_values(chain, q, rows)
     singular = check_chain(chain).lost_rank(sigma, rows)
     with np.errstate(divide="ignore"):
@@ -231,8 +244,9 @@ def ellipsoid(chain, q, rows="position"):
     """The manipulability ellipsoid {J qdot : |qdot| <= 1} of one configuration q (n,).
 
     Returns (center, radii, axes): the end-effector point (3,), the semi-axes (3,) in
-    m/s (position) or rad/s (orientation) per unit joint-rate norm, and their directions as
-    the columns of axes (3, 3). A zero radius is a direction the end effector cannot move in.
+    m/s (position) or rad/s (orientation) per unit joint-rate norm, and their directions
+    as the columns of axes (3, 3). A zero radius is a direction the end effector cannot
+    move in.
     """
     q = check_chain(chain).check_one(q)
     if rows not in ("position", "orientation"):

@@ -1,8 +1,8 @@
 """Deprecated alias of :mod:`screwkit.limbs`, the limb builders, kept for one release.
 
-"joints" also names the joint kinds (:class:`screwkit.Joint`), a chain's ``joints`` and the
-DH rows (``Link.revolute``); the builders of (s, r, h) limbs are :mod:`screwkit.limbs`:
-``sk.joints.revolute`` is ``sk.limbs.revolute``.
+"joints" also names the joint kinds (:class:`screwkit.Joint`), a chain's ``joints`` and
+the DH rows (``Link.revolute``); the builders of (s, r, h) limbs are
+:mod:`screwkit.limbs`: ``sk.joints.revolute`` is ``sk.limbs.revolute``.
 """
 
 from .limbs import (

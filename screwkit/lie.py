@@ -1,19 +1,24 @@
-"""Frame changes and logarithms of rigid motions: the adjoint, the Lie bracket, log R and log T.
+"""Frame changes and logarithms of rigid motions: the adjoint, the Lie bracket, log R
+and log T.
 
-If T = T_ab is the pose of frame {b} in frame {a}, a twist V_b = (omega; v) written in {b}
-coordinates is written in {a} coordinates as V_a = Ad(T) V_b, with (screw order [angular; linear])
+If T = T_ab is the pose of frame {b} in frame {a}, a twist V_b = (omega; v) written in
+{b} coordinates is written in {a} coordinates as V_a = Ad(T) V_b, with
+(screw order [angular; linear])
 
     Ad(T) = [[R, 0], [[p] R, R]].
 
-A wrench (f; m), in the same [angular; linear] order (force first), changes frame by the same
-matrix: f_a = R f_b, m_a = R m_b + p x f_a. Written in Modern Robotics' order (m; f) this is
-their "transposed adjoint" rule F_b = Ad(T_ab)^T F_a; both keep the power V . F unchanged.
+A wrench (f; m), in the same [angular; linear] order (force first), changes frame by the
+same matrix: f_a = R f_b, m_a = R m_b + p x f_a. Written in Modern Robotics' order
+(m; f) this is their "transposed adjoint" rule F_b = Ad(T_ab)^T F_a; both keep the power
+V . F unchanged.
 
-The logarithms invert the exponentials of :mod:`screwkit.transforms`: ``log_rotation(R)`` is
-the rotation vector omega theta with theta in [0, pi], and ``log_transform(T)`` the 6-vector
-[omega; v] theta with ``exp_twist(log_transform(T), 1) == T``.
+The logarithms invert the exponentials of :mod:`screwkit.transforms`:
+``log_rotation(R)`` is the rotation vector omega theta with theta in [0, pi], and
+``log_transform(T)`` the 6-vector [omega; v] theta with
+``exp_twist(log_transform(T), 1) == T``.
 
-Every function is exact for SymPy input and float64 (batched over leading axes) otherwise.
+Every function is exact for SymPy input and float64 (batched over leading axes)
+otherwise.
 
 >>> import numpy as np
 >>> T = np.array([[1, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 3], [0, 0, 0, 1]])
@@ -35,12 +40,14 @@ from .transforms import _skew, _skew_exact
 
 __all__ = ["adjoint", "ad", "log_rotation", "log_transform", "vee"]
 
-#: Below this angle (rad) the series of theta / sin(theta) and of the translation factor is used.
+#: Below this angle (rad) the series of theta / sin(theta) and of the translation factor
+#: is used.
 SMALL_ANGLE = 1e-4
 
 
 def vee(W):
-    """The 3-vector w of a skew-symmetric matrix W = [w] (the inverse of ``skew``): (..., 3)."""
+    """The 3-vector w of a skew-symmetric matrix W = [w] (the inverse of ``skew``):
+    (..., 3)."""
     if is_symbolic(W):
         W = as_sympy_matrix(W, "W", (3, 3))
         return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
@@ -51,14 +58,16 @@ def vee(W):
 
 
 def adjoint(T):
-    """The 6x6 adjoint Ad(T) = [[R, 0], [[p] R, R]] of a pose T, for screws [angular; linear].
+    """The 6x6 adjoint Ad(T) = [[R, 0], [[p] R, R]] of a pose T, for screws
+    [angular; linear].
 
-    ``adjoint(T) @ V`` writes in the frame of T's reference a twist (or wrench (f; m)) given
-    in the moving frame. Ad(T1 T2) = Ad(T1) Ad(T2) and Ad(T^-1) = Ad(T)^-1.
+    ``adjoint(T) @ V`` writes in the frame of T's reference a twist (or wrench (f; m))
+    given in the moving frame. Ad(T1 T2) = Ad(T1) Ad(T2) and Ad(T^-1) = Ad(T)^-1.
 
     Parameters
     ----------
-    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m); or a SymPy 4x4 matrix
+    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m);
+        or a SymPy 4x4 matrix
 
     Returns
     -------
@@ -82,7 +91,8 @@ def adjoint(T):
 def ad(twist):
     """The 6x6 matrix [ad_V] = [[[w], 0], [[v], [w]]] of a twist V = (w; v).
 
-    [ad_V1] V2 is the Lie bracket [V1, V2]: the derivative of Ad(exp([V1] t)) V2 at t = 0.
+    [ad_V1] V2 is the Lie bracket [V1, V2]: the derivative of Ad(exp([V1] t)) V2 at
+    t = 0.
 
     Parameters
     ----------
@@ -113,13 +123,14 @@ def ad(twist):
 
 
 def log_rotation(R):
-    """The rotation vector omega theta of a rotation R = exp([omega] theta), theta in [0, pi].
+    """The rotation vector omega theta of a rotation R = exp([omega] theta), theta in
+    [0, pi].
 
-    theta = atan2(|vee(R - R^T)| / 2, (tr R - 1) / 2), exact to round-off at every angle: near 0
-    by the series of theta / sin(theta); near pi from the symmetric part
-    (R + R^T) / 2 = cos(theta) I + (1 - cos(theta)) omega omega^T, since the skew part vanishes
-    there. At exactly theta = pi the rotations by omega and -omega are the same; the axis
-    returned is the one whose largest-magnitude component is positive.
+    theta = atan2(|vee(R - R^T)| / 2, (tr R - 1) / 2), exact to round-off at every
+    angle: near 0 by the series of theta / sin(theta); near pi from the symmetric part
+    (R + R^T) / 2 = cos(theta) I + (1 - cos(theta)) omega omega^T, since the skew part
+    vanishes there. At exactly theta = pi the rotations by omega and -omega are the
+    same; the axis returned is the one whose largest-magnitude component is positive.
 
     Parameters
     ----------
@@ -156,7 +167,8 @@ def log_rotation(R):
 
 
 def _axis_near_pi(R, skew_part, cos_theta):
-    """The unit axis from the symmetric part of R (accurate when theta is far from 0)."""
+    """The unit axis from the symmetric part of R (accurate when theta is far from
+    0)."""
     outer = 0.5 * (R + np.swapaxes(R, -1, -2)) - cos_theta[..., None, None] * np.eye(3)
     outer = (
         outer / np.maximum(1.0 - cos_theta, 0.5)[..., None, None]
@@ -164,7 +176,8 @@ def _axis_near_pi(R, skew_part, cos_theta):
     column = np.argmax(np.diagonal(outer, axis1=-2, axis2=-1), axis=-1)
     axis = np.take_along_axis(outer, column[..., None, None], axis=-1)[..., 0]
     axis = axis / np.maximum(np.linalg.norm(axis, axis=-1, keepdims=True), 1e-300)
-    # the sign: along omega sin(theta) when that is informative, else largest component positive
+    # the sign: along omega sin(theta) when that is informative, else largest component
+    # positive
     dot = np.sum(axis * skew_part, axis=-1)
     largest = np.take_along_axis(
         axis, np.argmax(np.abs(axis), axis=-1)[..., None], axis=-1
@@ -195,21 +208,24 @@ def _log_rotation_exact(R):
 
 
 def log_transform(T):
-    """The twist coordinates [omega; v] theta of a pose T = exp([V] theta), theta in [0, pi].
+    """The twist coordinates [omega; v] theta of a pose T = exp([V] theta), theta in
+    [0, pi].
 
     With phi = omega theta = log_rotation(R) and the translation p,
-    v theta = (I - [phi] / 2 + k [phi]^2) p,  k = (1 - (theta / 2) cot(theta / 2)) / theta^2,
-    which tends to 1/12 as theta -> 0 (a pure translation gives [0; p]) and is 1 / pi^2 at pi.
+    v theta = (I - [phi] / 2 + k [phi]^2) p,
+    k = (1 - (theta / 2) cot(theta / 2)) / theta^2, which tends to 1/12 as theta -> 0
+    (a pure translation gives [0; p]) and is 1 / pi^2 at pi.
     ``exp_twist(log_transform(T), 1)`` is T.
 
     Parameters
     ----------
-    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m); or a SymPy 4x4 matrix
+    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m);
+        or a SymPy 4x4 matrix
 
     Returns
     -------
-    ndarray, shape (6,) or (N, 6), ordered [omega theta (rad); v theta (m)]; sympy.Matrix (6, 1)
-    for SymPy input
+    ndarray, shape (6,) or (N, 6), ordered [omega theta (rad); v theta (m)];
+        sympy.Matrix (6, 1) for SymPy input
     """
     T = check_transform(T, "T")
     if isinstance(T, sp.MatrixBase):

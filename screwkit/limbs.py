@@ -1,12 +1,12 @@
 """Limbs for the mobility zeroth step: each builder returns a list of (s, r, h) triples.
 
 (The builders were :mod:`screwkit.joints`, a name that also meant the joint kinds
-:class:`screwkit.Joint`, a chain's ``joints`` and the DH rows ``Link.revolute``; that module
-stays as an alias of this one for one release.)
+:class:`screwkit.Joint`, a chain's ``joints`` and the DH rows ``Link.revolute``; that
+module stays as an alias of this one for one release.)
 
-A limb reads like its name: ``prismatic(x) + revolute(x, A) + universal(y, z, B)`` is a PRU limb.
-Multi-freedom joints are sets of 1-freedom screws through one point: C = R + P on one
-axis, U = two crossing R, S = three crossing R.
+A limb reads like its name: ``prismatic(x) + revolute(x, A) + universal(y, z, B)`` is a
+PRU limb. Multi-freedom joints are sets of 1-freedom screws through one point: C = R + P
+on one axis, U = two crossing R, S = three crossing R.
 
 >>> import sympy as sp
 >>> len(spherical([0, 0, 1]))
@@ -44,8 +44,8 @@ def _direction(v, name):
 
 
 def _is_zero(expr):
-    """True if ``expr`` is zero for every value of its symbols: exactly after expansion, or,
-    when trigonometric identities are needed, at three random points (to 1e-9)."""
+    """True if ``expr`` is zero for every value of its symbols: exactly after expansion,
+    or, when trigonometric identities are needed, at three random points (to 1e-9)."""
     expr = sp.expand(expr)
     if expr == 0:
         return True
@@ -70,15 +70,18 @@ def revolute(s, r):
 
 
 def prismatic(s, r=(0, 0, 0)):
-    """P: translation along ``s`` (r only for drawing: a prismatic twist has no position)."""
+    """P: translation along ``s`` (r only for drawing: a prismatic twist has no
+    position)."""
     return [(_direction(s, "s"), _vec(r, "r"), sp.oo)]
 
 
 def helical(s, r, h):
-    """H: rotation about (s, r) with translation h per radian along it (h in m/rad, finite)."""
+    """H: rotation about (s, r) with translation h per radian along it
+    (h in m/rad, finite)."""
     if isinstance(h, (str, bytes)) or h is None or h is sp.oo:
         raise TypeError(
-            f"h must be a finite pitch (m/rad): a number or a SymPy expression, got {describe(h)}"
+            "h must be a finite pitch (m/rad): a number or a SymPy expression, got "
+            f"{describe(h)}"
         )
     return [(_direction(s, "s"), _vec(r, "r"), as_sympy_scalar(h, "h"))]
 
@@ -93,8 +96,9 @@ def universal(s1, s2, r):
     first, second = revolute(_vec(s1, "s1"), r), revolute(_vec(s2, "s2"), r)
     if _parallel(first[0][0], second[0][0]):
         raise ValueError(
-            f"s1 and s2 of a universal joint must not be parallel, got s1 = {list(first[0][0])} "
-            f"and s2 = {list(second[0][0])} (two parallel axes make a planar pair, not a U)"
+            "s1 and s2 of a universal joint must not be parallel, got s1 = "
+            f"{list(first[0][0])} and s2 = {list(second[0][0])} "
+            "(two parallel axes make a planar pair, not a U)"
         )
     return first + second
 
@@ -123,8 +127,8 @@ def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
 def parallelogram(s, a1, a2, b1, b2):
     """Pa: four parallel revolute axes s at the corners A1, A2 (base side) and B1, B2.
 
-    The corners must make a parallelogram: B1 - A1 = B2 - A2 (equal, parallel long sides),
-    with A1 != A2 and B1 != A1.
+    The corners must make a parallelogram: B1 - A1 = B2 - A2
+    (equal, parallel long sides), with A1 != A2 and B1 != A1.
     """
     corners = [
         _vec(c, name) for c, name in ((a1, "a1"), (a2, "a2"), (b1, "b1"), (b2, "b2"))
@@ -132,13 +136,15 @@ def parallelogram(s, a1, a2, b1, b2):
     A1, A2, B1, B2 = corners
     if not all(_is_zero(e) for e in (B1 - A1) - (B2 - A2)):
         raise ValueError(
-            "a1, a2, b1, b2 must be the corners of a parallelogram (b1 - a1 = b2 - a2), "
-            f"got b1 - a1 = {list(B1 - A1)} and b2 - a2 = {list(B2 - A2)}"
+            "a1, a2, b1, b2 must be the corners of a parallelogram "
+            f"(b1 - a1 = b2 - a2), got b1 - a1 = {list(B1 - A1)} and b2 - a2 = "
+            f"{list(B2 - A2)}"
         )
     for P, Q, names in ((A1, A2, "a1 and a2"), (A1, B1, "a1 and b1")):
         if all(_is_zero(e) for e in P - Q):
             raise ValueError(
-                f"{names} of a parallelogram must be different points, got {list(P)} for both"
+                f"{names} of a parallelogram must be different points, got {list(P)} "
+                "for both"
             )
     s = _direction(s, "s")
     return [(s.copy(), corner, 0) for corner in corners]
@@ -157,9 +163,11 @@ def _check_limb(limb, name="limb"):
 
 
 def rotate_limb(limb, R):
-    """The limb turned by the rotation matrix R (3x3) about the origin of the fixed frame.
+    """The limb turned by the rotation matrix R (3x3) about the origin of the fixed
+    frame.
 
-    R must be a rotation (orthonormal, determinant +1): a scaling or a reflection is refused.
+    R must be a rotation (orthonormal, determinant +1): a scaling or a reflection is
+    refused.
     """
     _check_limb(limb)
     if not (isinstance(R, sp.MatrixBase) and _exact_rotation(R)):

@@ -2,11 +2,12 @@
 
 * :class:`Link` is one row of a Denavit–Hartenberg table (standard or modified, see
   :class:`Convention`), with numbers that are floats or exact SymPy values;
-* a joint screw (omega; v) is checked to be a unit screw (:func:`check_screws`) and named a
-  :class:`Joint` kind by its pitch: revolute (0), helical (finite) or prismatic (omega = 0).
+* a joint screw (omega; v) is checked to be a unit screw (:func:`check_screws`) and
+  named a :class:`Joint` kind by its pitch: revolute (0), helical (finite) or prismatic
+  (omega = 0).
 
-:mod:`screwkit.chains` builds chains from either. Every DH link is also, numerically, a pre
-transform, a joint twist and a post transform: A(q) = pre exp([X] (q + offset)) post
+:mod:`screwkit.chains` builds chains from either. Every DH link is also, numerically, a
+pre transform, a joint twist and a post transform: A(q) = pre exp([X] (q + offset)) post
 (:func:`dh_factors`), which is how a DH chain joins the product of exponentials.
 """
 
@@ -21,12 +22,14 @@ from .screws import Screw
 
 __all__ = ["Joint", "Convention", "Link"]
 
-#: How far from 1 the norm of a joint screw's omega (or of v, for a prismatic joint) may be.
+#: How far from 1 the norm of a joint screw's omega (or of v, for a prismatic joint) may
+#: be.
 UNIT_TOL = 1e-9
 
 
 class Joint(enum.Enum):
-    """The kind of a joint: its variable q is an angle (revolute, helical) or a length (prismatic)."""
+    """The kind of a joint: its variable q is an angle (revolute, helical) or a length
+    (prismatic)."""
 
     REVOLUTE = "R"
     PRISMATIC = "P"
@@ -43,13 +46,15 @@ class Convention(enum.Enum):
 def check_convention(convention):
     if not isinstance(convention, Convention):
         raise TypeError(
-            f"convention must be a Convention (STANDARD or MODIFIED), got {convention!r}"
+            "convention must be a Convention (STANDARD or MODIFIED), got "
+            f"{convention!r}"
         )
     return convention
 
 
 def _check_parameter(value, name):
-    """A DH number: a finite real number, or a SymPy expression (exact, possibly symbolic)."""
+    """A DH number: a finite real number, or a SymPy expression
+    (exact, possibly symbolic)."""
     if isinstance(value, sp.Basic):
         value = sp.sympify(value)
         if (
@@ -84,11 +89,12 @@ def _check_parameter(value, name):
 class Link:
     """One row of a DH table (m, rad).
 
-    The joint variable q adds to ``offset``: theta = q + offset for a revolute joint (then
-    ``theta`` is unused), d = q + offset for a prismatic one (then ``d`` is unused).
-    ``qlim`` is (min, max) of q, or None for no limit (+-inf in either place is no limit there).
-    Numbers may be floats or exact SymPy values (``sympy.pi / 2``); symbols are allowed for the
-    exact path (``fk_symbolic``) but the numeric path needs numbers.
+    The joint variable q adds to ``offset``: theta = q + offset for a revolute joint
+    (then ``theta`` is unused), d = q + offset for a prismatic one
+    (then ``d`` is unused). ``qlim`` is (min, max) of q, or None for no limit
+    (+-inf in either place is no limit there). Numbers may be floats or exact SymPy
+    values (``sympy.pi / 2``); symbols are allowed for the exact path (``fk_symbolic``)
+    but the numeric path needs numbers.
     """
 
     joint: Joint
@@ -102,7 +108,8 @@ class Link:
     def __post_init__(self):
         if not isinstance(self.joint, Joint) or self.joint is Joint.HELICAL:
             raise TypeError(
-                f"joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got {self.joint!r}"
+                "joint must be Joint.REVOLUTE or Joint.PRISMATIC for a DH link, got "
+                f"{self.joint!r}"
             )
         for name in ("d", "a", "alpha", "theta", "offset"):
             object.__setattr__(self, name, _check_parameter(getattr(self, name), name))
@@ -121,7 +128,8 @@ class Link:
         )
 
     def transform(self, q, convention=Convention.STANDARD):
-        """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or symbol q."""
+        """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or
+        symbol q."""
         check_convention(convention)
         theta, d = (
             (q + self.offset, self.d)
@@ -150,14 +158,15 @@ class Link:
         )
 
     def _numbers(self, index):
-        """(d, a, theta, offset) as floats and (cos alpha, sin alpha), for the numeric path."""
+        """(d, a, theta, offset) as floats and (cos alpha, sin alpha), for the numeric
+        path."""
         values = []
         for name in ("d", "a", "theta", "offset", "alpha"):
             value = getattr(self, name)
             if isinstance(value, sp.Basic) and value.free_symbols:
                 raise ValueError(
-                    f"link {index}'s {name} is the expression {value}: the numeric path "
-                    "(fk, Jacobians) needs numbers; use fk_symbolic for symbols"
+                    f"link {index}'s {name} is the expression {value}: the numeric "
+                    "path (fk, Jacobians) needs numbers; use fk_symbolic for symbols"
                 )
             values.append(value)
         alpha = values.pop()
@@ -179,7 +188,8 @@ class Link:
 
 
 def _limit_numbers(qlim, name, expected):
-    """Joint limits as a float array (+-inf allowed: no limit); TypeError for anything else."""
+    """Joint limits as a float array (+-inf allowed: no limit); TypeError for anything
+    else."""
     if isinstance(qlim, (str, bytes)):
         raise TypeError(f"{name} must be {expected} or None, got {qlim!r}")
     try:
@@ -205,7 +215,8 @@ def _check_qlim(qlim, name="qlim"):
 
 
 def _exact(value):
-    """Floats that are integers or multiples of pi/2 become exact, so cos(pi/2) is exactly 0."""
+    """Floats that are integers or multiples of pi/2 become exact, so cos(pi/2) is
+    exactly 0."""
     value = sp.sympify(value)
     if isinstance(value, sp.Float):
         quarter_turns = float(value) / (np.pi / 2)
@@ -215,7 +226,8 @@ def _exact(value):
 
 
 def decimal(value):
-    """A Float as the exact decimal it prints as (0.4318 -> 2159/5000); other values unchanged."""
+    """A Float as the exact decimal it prints as (0.4318 -> 2159/5000); other values
+    unchanged."""
     value = sp.sympify(value)
     if isinstance(value, sp.Float):
         return sp.nsimplify(value, rational=True)
@@ -236,7 +248,8 @@ def exact_matrix(T):
 
 
 def rigid(value, name):
-    """A 4x4 rigid transform as a fresh, read-only float array (never the caller's array)."""
+    """A 4x4 rigid transform as a fresh, read-only float array
+    (never the caller's array)."""
     if value is None:
         T = np.eye(4)
     else:
@@ -263,7 +276,8 @@ def translation(p):
 
 
 def dh_factors(link, index, convention):
-    """(pre, twist, post) of a DH link: A(q) = pre exp([X] (q + offset)) post (floats)."""
+    """(pre, twist, post) of a DH link: A(q) = pre exp([X] (q + offset)) post
+    (floats)."""
     (d, a, theta, _), (ca, sa) = link._numbers(index)
     Rx = np.array([[1.0, 0, 0, 0], [0, ca, -sa, 0], [0, sa, ca, 0], [0, 0, 0, 1]])
     Tx, Tz = translation([a, 0, 0]), translation([0, 0, d])
@@ -279,14 +293,16 @@ def dh_factors(link, index, convention):
 
 
 def check_screws(axes):
-    """The joint screws as an (n, 6) float array of unit screws, and their exact forms."""
+    """The joint screws as an (n, 6) float array of unit screws, and their exact
+    forms."""
     if isinstance(axes, np.ndarray) and axes.ndim == 2:
         items = list(axes)
     elif isinstance(axes, (list, tuple)):
         items = list(axes)
     else:
         raise TypeError(
-            f"axes must be a list of Twist objects or 6-vectors [omega; v], got {describe(axes)}"
+            "axes must be a list of Twist objects or 6-vectors [omega; v], got "
+            f"{describe(axes)}"
         )
     if not items:
         raise ValueError("axes must hold at least one joint screw, got none")
@@ -334,12 +350,14 @@ def check_screws(axes):
             raise ValueError(f"{name} must be a unit screw axis, got the zero twist")
         if w != 0 and abs(w - 1) > UNIT_TOL:
             raise ValueError(
-                f"{name} must be a unit screw axis: |omega| = 1 for a revolute or helical "
-                f"joint (or omega = 0 and |v| = 1 for a prismatic one), got |omega| = {w:.6g}"
+                f"{name} must be a unit screw axis: |omega| = 1 for a revolute or "
+                "helical joint (or omega = 0 and |v| = 1 for a prismatic one), got "
+                f"|omega| = {w:.6g}"
             )
         if w == 0 and abs(v - 1) > UNIT_TOL:
             raise ValueError(
-                f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = {v:.6g}"
+                f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = "
+                f"{v:.6g}"
             )
         numbers.append(
             values / (w or v)
@@ -356,10 +374,11 @@ def joint_kind(screw):
 
 
 def axis_points(screws, start):
-    """A point on each screw axis (revolute/helical): the one nearest the previous joint's point.
+    """A point on each screw axis (revolute/helical): the one nearest the previous
+    joint's point.
 
-    Only for drawing: the first joint's point is the one nearest ``start``; a prismatic joint
-    keeps the previous point.
+    Only for drawing: the first joint's point is the one nearest ``start``; a prismatic
+    joint keeps the previous point.
     """
     points, previous = [], np.asarray(start, dtype=float)
     for screw in screws:

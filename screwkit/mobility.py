@@ -1,17 +1,24 @@
 """The mobility of a parallel manipulator by screw theory, in four steps.
 
-Zeroth step (the user's): each limb as a list of (s, r, h) joint screws in the fixed frame.
+Zeroth step (the user's): each limb as a list of (s, r, h) joint screws in the fixed
+frame.
 1. limb twist systems (LTS): the span of each limb's joint twists;
-2. limb wrench systems (LWS): the wrenches reciprocal to each LTS (the limb's constraints);
-3. platform wrench system (PWS): the span of all the LWS (every constraint on the platform);
-4. platform twist system (PTS): the twists reciprocal to the PWS (the platform's motions).
+2. limb wrench systems (LWS): the wrenches reciprocal to each LTS
+(the limb's constraints);
+3. platform wrench system (PWS): the span of all the LWS
+(every constraint on the platform);
+4. platform twist system (PTS): the twists reciprocal to the PWS
+(the platform's motions).
 
-The mobility is the order of the PTS; its twists give the type (e.g. 3T1R) and directions.
+The mobility is the order of the PTS; its twists give the type (e.g. 3T1R) and
+directions.
 
 >>> import sympy as sp
 >>> x, y, z = [1, 0, 0], [0, 1, 0], [0, 0, 1]
->>> cartesian = [[(x, [0, 0, 0], sp.oo)], [(y, [0, 0, 0], sp.oo)], [(z, [0, 0, 0], sp.oo)]]
->>> sk_result = mobility([limb + [(x, [0, 0, 0], sp.oo), (y, [0, 0, 0], sp.oo), (z, [0, 0, 0], sp.oo)]
+>>> cartesian = [[(x, [0, 0, 0], sp.oo)], [(y, [0, 0, 0], sp.oo)],
+...              [(z, [0, 0, 0], sp.oo)]]
+>>> sk_result = mobility([limb + [(x, [0, 0, 0], sp.oo), (y, [0, 0, 0], sp.oo),
+...                               (z, [0, 0, 0], sp.oo)]
 ...                       for limb in cartesian])
 >>> sk_result.number, sk_result.type, sk_result.directions
 (3, '3T', ['Tx', 'Ty', 'Tz'])
@@ -35,9 +42,11 @@ _AXES = "xyz"
 
 
 def grubler_kutzbach(links, joints, freedoms, order=6):
-    """The Grübler–Kutzbach count M = order (links - joints - 1) + sum of joint freedoms.
+    """The Grübler–Kutzbach count M = order (links - joints - 1) + sum of joint
+    freedoms.
 
-    ``links`` includes the base and the platform; ``order`` is 6 in space, 3 in the plane.
+    ``links`` includes the base and the platform; ``order`` is 6 in space, 3 in the
+    plane.
     """
     for name, value in (
         ("links", links),
@@ -52,7 +61,8 @@ def grubler_kutzbach(links, joints, freedoms, order=6):
 
 @dataclass
 class Mobility:
-    """The result of :func:`mobility`: the number, type and directions of the platform's motions."""
+    """The result of :func:`mobility`: the number, type and directions of the platform's
+    motions."""
 
     number: int
     type: str
@@ -105,11 +115,13 @@ class Mobility:
 
     def _repr_latex_(self):
         lines = [
-            rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & {latex_table(s.basis())}"
+            rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & "
+            f"{latex_table(s.basis())}"
             for name, s in self._systems()
         ]
         lines.append(
-            rf"\text{{mobility}} & \text{{{self.number} ({self.type}): {', '.join(self.directions)}}}"
+            rf"\text{{mobility}} & \text{{{self.number} ({self.type}): "
+            f"{', '.join(self.directions)}}}"
         )
         return "$\\begin{array}{ll}" + r" \\ ".join(lines) + r"\end{array}$"
 
@@ -133,14 +145,22 @@ class Mobility:
                 for i, s in enumerate(systems, 1)
             )
             rows.append(
-                f'<p><b>{title}</b></p><div style="overflow-x:auto"><table><tr>{tables}</tr></table></div>'
+                f"<p><b>{title}</b></p>"
+                f'<div style="overflow-x:auto"><table><tr>{tables}</tr></table></div>'
             )
-        title = f"Mobility {self.number} ({self.type}): {', '.join(self.directions) or 'none'}"
+        title = (
+            f"Mobility {self.number} ({self.type}): "
+            f"{', '.join(self.directions) or 'none'}"
+        )
         notes = "".join(f"<p>{note}</p>" for note in self.notes)
-        return f'<div class="screwkit-mobility">{"".join(rows)}<p><b>{title}</b></p>{notes}</div>'
+        return (
+            f'<div class="screwkit-mobility">{"".join(rows)}'
+            f"<p><b>{title}</b></p>{notes}</div>"
+        )
 
     def as_dict(self):
-        """The paper's mobility dictionary: {'Number': ..., 'Type': ..., 'Direction': [...]}."""
+        """The paper's mobility dictionary:
+        {'Number': ..., 'Type': ..., 'Direction': [...]}."""
         return {
             "Number": self.number,
             "Type": self.type,
@@ -154,18 +174,21 @@ def _check_limbs(limbs):
     for i, limb in enumerate(limbs):
         if not isinstance(limb, (list, tuple)) or not limb:
             raise ValueError(
-                f"limb {i} must be a non-empty list of (s, r, h) joint screws, got {limb!r}"
+                f"limb {i} must be a non-empty list of (s, r, h) joint screws, got "
+                f"{limb!r}"
             )
         for j, joint in enumerate(limb):
             if isinstance(joint, Screw):
                 if isinstance(joint, Wrench):
                     raise TypeError(
-                        f"limb {i}, joint {j} is a wrench; a limb is made of joint twists"
+                        f"limb {i}, joint {j} is a wrench; a limb is made of joint "
+                        "twists"
                     )
                 continue
             if not isinstance(joint, (list, tuple)) or len(joint) != 3:
                 raise TypeError(
-                    f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got {joint!r}"
+                    f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got "
+                    f"{joint!r}"
                 )
 
 
@@ -173,7 +196,8 @@ _NOT_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 
 
 def _checked_vector(v):
-    """A 3 x 1 SymPy matrix from the joint helpers, finite, as a list; None if it needs the full check."""
+    """A 3 x 1 SymPy matrix from the joint helpers, finite, as a list; None if it needs
+    the full check."""
     if isinstance(v, sp.MatrixBase) and v.shape == (3, 1):
         entries = _exact.entries(v)
         if not any(e.has(*_NOT_FINITE) for e in entries):
@@ -182,8 +206,9 @@ def _checked_vector(v):
 
 
 def _twist(joint, i, j):
-    """The joint's twist (s; r x s + h s), or (0; s) for h = oo. Joints from :mod:`.joints` hold
-    checked SymPy vectors and are built directly; anything else goes through Twist.from_axis."""
+    """The joint's twist (s; r x s + h s), or (0; s) for h = oo. Joints from
+    :mod:`.joints` hold checked SymPy vectors and are built directly; anything else goes
+    through Twist.from_axis."""
     if isinstance(joint, Screw):
         return Twist._checked(joint.vector)
     s, r, h = joint
@@ -202,7 +227,8 @@ def _twist(joint, i, j):
 
 
 def _describe(vector):
-    """'Tx' / 'Rz' for an axis-aligned twist through the origin, else its coordinates."""
+    """'Tx' / 'Rz' for an axis-aligned twist through the origin, else its
+    coordinates."""
     nonzero = [k for k, e in enumerate(vector) if e != 0]
     if len(nonzero) == 1 and vector[nonzero[0]] == 1:
         k = nonzero[0]
@@ -211,33 +237,38 @@ def _describe(vector):
 
 
 def mobility(limbs, at=None, tol=None):
-    """The mobility of a parallel manipulator whose limbs are lists of (s, r, h) joint screws.
+    """The mobility of a parallel manipulator whose limbs are lists of (s, r, h) joint
+    screws.
 
     Parameters
     ----------
     limbs : list of limbs; each limb a list of (s, r, h) triples in the fixed frame
         (s, r: 3-vectors in m, SymPy symbols allowed; h: 0, a finite pitch in m/rad, or
         sympy.oo), or Twists.
-    at : optional {symbol: value}, a particular configuration. The result is then the mobility
-        at those values, and its ``notes`` say whether it is the general answer (the symbols
-        free) or a singular configuration that gains or loses freedoms. Every key must be a
-        symbol of the limbs. Float values are read as the exact rationals they store (the
-        geometry stays exact; only the values are particular).
-    tol : relative tolerance of the ranks when the limbs are given with floats (default 1e-9).
+    at : optional {symbol: value}, a particular configuration.
+        The result is then the mobility at those values, and its ``notes`` say whether
+        it is the general answer (the symbols free) or a singular configuration that
+        gains or loses freedoms. Every key must be a symbol of the limbs. Float values
+        are read as the exact rationals they store (the geometry stays exact; only the
+        values are particular).
+    tol : relative tolerance of the ranks when the limbs are given with floats
+        (default 1e-9).
 
     Returns
     -------
-    Mobility with ``number``, ``type`` (e.g. '3T1R'), ``directions`` (e.g. ['Tx', 'Ty', 'Tz', 'Rz']),
-    the four screw systems, and the Grübler–Kutzbach comparison.
+    Mobility with ``number``, ``type`` (e.g. '3T1R'), ``directions``
+        (e.g. ['Tx', 'Ty', 'Tz', 'Rz']), the four screw systems, and the
+        Grübler–Kutzbach comparison.
 
     Notes
     -----
-    Exact limbs (integers, rationals, symbols, pi, square roots, sin/cos/tan of symbols) are
-    computed exactly, the ranks being generic in the symbols (see :mod:`screwkit._exact`).
-    Limbs given with floats and no symbols (say, a frame tilted with NumPy) are computed by SVD:
-    a rank counts the singular values above ``tol * max(1, the largest)``, so axes that differ
-    by round-off count as parallel (see :mod:`screwkit._numeric`). Floats together with symbols
-    are refused with a ValueError that says how to write them exactly.
+    Exact limbs (integers, rationals, symbols, pi, square roots, sin/cos/tan of symbols)
+    are computed exactly, the ranks being generic in the symbols
+    (see :mod:`screwkit._exact`). Limbs given with floats and no symbols
+    (say, a frame tilted with NumPy) are computed by SVD: a rank counts the singular
+    values above ``tol * max(1, the largest)``, so axes that differ by round-off count
+    as parallel (see :mod:`screwkit._numeric`). Floats together with symbols are refused
+    with a ValueError that says how to write them exactly.
     """
     tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
     if at is not None:
@@ -252,7 +283,8 @@ def mobility(limbs, at=None, tol=None):
     ):
         return _mobility_of_floats(limbs, twists, tol)
 
-    # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own symbols.
+    # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own
+    # symbols.
     lts, lws, lts_ranks = [], [], []
     for limb in twists:
         rows = [_exact.entries(t.vector) for t in limb]
@@ -298,7 +330,8 @@ def mobility(limbs, at=None, tol=None):
 
 
 def _mobility_of_floats(limbs, twists, tol):
-    """The four steps by SVD with the relative tolerance ``tol`` (limbs given with floats)."""
+    """The four steps by SVD with the relative tolerance ``tol``
+    (limbs given with floats)."""
     for limb in twists:
         _numeric.to_array(
             [list(t.vector) for t in limb], "limbs"
@@ -343,8 +376,8 @@ def _limb_symbols(limbs):
 
 
 def _check_at(limbs, at):
-    """``at`` as {symbol: exact value}: keys are symbols of the limbs, values finite numbers or
-    SymPy expressions (floats become the exact rationals they store)."""
+    """``at`` as {symbol: exact value}: keys are symbols of the limbs, values finite
+    numbers or SymPy expressions (floats become the exact rationals they store)."""
     if not isinstance(at, dict) or not all(isinstance(k, sp.Symbol) for k in at):
         raise TypeError(f"at must be a dict {{sympy.Symbol: value}}, got {at!r}")
     symbols = _limb_symbols(limbs)
@@ -376,7 +409,8 @@ def _check_at(limbs, at):
 
 
 def _at_configuration(limbs, at, tol):
-    """The mobility at the values ``at``, with notes comparing it with the general configuration."""
+    """The mobility at the values ``at``, with notes comparing it with the general
+    configuration."""
     _check_limbs(limbs)
     values = _check_at(limbs, at)
 
@@ -403,7 +437,8 @@ def _at_configuration(limbs, at, tol):
         general.directions,
     ):
         special.notes.append(
-            f"general configuration: the mobility at these values, {here}, is the general one"
+            f"general configuration: the mobility at these values, {here}, is the "
+            "general one"
         )
     else:
         change = "changes"

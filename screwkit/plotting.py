@@ -1,7 +1,9 @@
-"""Matplotlib drawings of frames, screw axes and screw motions (metres), in the course's style.
+"""Matplotlib drawings of frames, screw axes and screw motions (metres), in the course's
+style.
 
-Every chapter calls ``use_course_style()`` before its first figure: figures then fit the book's
-content column (688 px, at most ``COLUMN_WIDTH`` inches at ``DPI``) with text of at least 9 pt.
+Every chapter calls ``use_course_style()`` before its first figure: figures then fit the
+book's content column (688 px, at most ``COLUMN_WIDTH`` inches at ``DPI``) with text of
+at least 9 pt.
 
 >>> ax = axes3d()
 >>> draw_frame(ax, np.eye(4), label="0")
@@ -28,7 +30,9 @@ from ._checks import (
     describe,
     is_symbolic,
 )
-from ._mechanism_plot import draw_mechanism  # noqa: F401  (re-exported: sk.plotting.draw_mechanism)
+
+# re-exported: sk.plotting.draw_mechanism
+from ._mechanism_plot import draw_mechanism  # noqa: F401
 
 __all__ = [
     "COLUMN_WIDTH",
@@ -48,14 +52,17 @@ __all__ = [
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
-#: Pixels per inch of the course's figures: a figure shows at its natural size in the book, where
-#: 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's 1.33 px per pt.
+#: Pixels per inch of the course's figures: a figure shows at its natural size in the
+#: book, where 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's
+#: 1.33 px per pt.
 DPI = 100
-#: The widest figure, in inches: 660 px at ``DPI``, plus the 0.1 in margin IPython adds on
-#: each side when it trims a figure (savefig.pad_inches): 680 px, within the 688 px column.
+#: The widest figure, in inches: 660 px at ``DPI``, plus the 0.1 in margin IPython adds
+#: on each side when it trims a figure (savefig.pad_inches): 680 px, within the 688 px
+#: column.
 COLUMN_WIDTH = 6.6
-#: The course's matplotlib style. Constrained layout keeps titles, labels and legends inside the
-#: figure, so a saved figure is never wider than its figsize and IPython's margin.
+#: The course's matplotlib style. Constrained layout keeps titles, labels and legends
+#: inside the figure, so a saved figure is never wider than its figsize and IPython's
+#: margin.
 COURSE_STYLE = {
     "figure.dpi": DPI,
     "savefig.dpi": DPI,
@@ -75,12 +82,13 @@ COURSE_STYLE = {
 def use_course_style():
     """Apply ``COURSE_STYLE`` to matplotlib: every figure made after the call uses it.
 
-    Called once per chapter, before its first figure (in the book, a live notebook or Colab).
+    Called once per chapter, before its first figure (in the book, a live notebook or
+    Colab).
     """
     plt.rcParams.update(COURSE_STYLE)
 
 
-# ---- argument checks -------------------------------------------------------------------
+# ---- argument checks -----------------------------------------------------------------
 
 
 def _check_axes(ax, three_d=True):
@@ -99,7 +107,8 @@ def _check_axes(ax, three_d=True):
 
 
 def _numeric(value, name):
-    """A float array from numbers, or from SymPy entries without free symbols (drawings are numeric)."""
+    """A float array from numbers, or from SymPy entries without free symbols
+    (drawings are numeric)."""
     if not is_symbolic(value):
         return as_float_array(value, name)
     if isinstance(value, sp.Basic) and not isinstance(value, sp.MatrixBase):
@@ -159,7 +168,8 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
     limits = as_float_array(limits, "limits")
     if limits.shape != (3, 2):
         raise ValueError(
-            f"limits must be three (min, max) pairs, shape (3, 2), got shape {limits.shape}"
+            "limits must be three (min, max) pairs, shape (3, 2), got shape "
+            f"{limits.shape}"
         )
     if np.any(limits[:, 0] >= limits[:, 1]):
         raise ValueError(
@@ -169,7 +179,8 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
         size = as_float_array(figsize, "figsize")
         if size.shape != (2,) or np.any(size <= 0):
             raise ValueError(
-                f"figsize must be (width, height) in inches, both positive, got {figsize!r}"
+                "figsize must be (width, height) in inches, both positive, got "
+                f"{figsize!r}"
             )
         figure = plt.figure(figsize=tuple(size))
         ax = figure.add_subplot(projection="3d")
@@ -185,7 +196,8 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
 
 
 def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
-    """Draw the frame of a 4x4 transform ``T``: x red, y green, z blue, ``length`` in m."""
+    """Draw the frame of a 4x4 transform ``T``: x red, y green, z blue, ``length`` in
+    m."""
     _check_axes(ax)
     T = check_transform(_numeric(T, "T"), "T")
     if T.ndim != 2:
@@ -198,7 +210,8 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
         tip = origin + length * T[:3, k]
         ax.plot(*np.stack([origin, tip]).T, color=AXIS_COLOURS[k], lw=2, alpha=alpha)
     if label is not None:
-        # beside the origin, away from the x and y arrows, on a pale patch over the links
+        # beside the origin, away from the x and y arrows, on a pale patch over the
+        # links
         ax.text(
             *(origin - 0.35 * length * (T[:3, 0] + T[:3, 1])),
             f"{{{label}}}",
@@ -215,7 +228,8 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
 
 
 def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
-    """Draw the screw axis through point ``r`` with direction ``s`` as a dash-dot line."""
+    """Draw the screw axis through point ``r`` with direction ``s`` as a dash-dot
+    line."""
     _check_axes(ax)
     s, r = _vector(s, "s"), _vector(r, "r")
     length = check_positive(length, "length")
@@ -230,12 +244,14 @@ def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
 
 
 def draw_screw_motion(ax, Ts, every=1, length=0.2):
-    """Draw the path of the origin over a batch of transforms ``Ts`` (N, 4, 4), and every k-th frame."""
+    """Draw the path of the origin over a batch of transforms ``Ts`` (N, 4, 4), and
+    every k-th frame."""
     _check_axes(ax)
     Ts = check_transform(as_float_array(Ts, "Ts"), "Ts")
     if Ts.ndim != 3 or len(Ts) < 1:
         raise ValueError(
-            f"Ts must be a batch of transforms of shape (N, 4, 4), N >= 1, got shape {Ts.shape}"
+            "Ts must be a batch of transforms of shape (N, 4, 4), N >= 1, got shape "
+            f"{Ts.shape}"
         )
     every = check_integer(every, "every", minimum=1)
     length = check_positive(length, "length")
@@ -256,10 +272,10 @@ def draw_chain(
 ):
     """Draw a serial chain at the joint vector q (n,) as a stick figure.
 
-    Links join the frame origins; each joint axis is a short black segment; the tool frame is
-    drawn, and with ``frames`` every link frame too, labelled once per point: frames that share
-    an origin (the PUMA's {0} and {1}, or {4}, {5} and {6} at its wrist) get one label
-    "{0, 1}". Returns the (n + 1, 4, 4) frames.
+    Links join the frame origins; each joint axis is a short black segment; the tool
+    frame is drawn, and with ``frames`` every link frame too, labelled once per point:
+    frames that share an origin (the PUMA's {0} and {1}, or {4}, {5} and {6} at its
+    wrist) get one label "{0, 1}". Returns the (n + 1, 4, 4) frames.
     """
     _check_axes(ax)
     chain = check_chain(chain)
@@ -289,7 +305,8 @@ def draw_chain(
 
 
 def _shared_origin_labels(origins, tolerance=1e-6):
-    """{index of the last frame at a point: "0, 1"} for frame origins (m) that coincide."""
+    """{index of the last frame at a point: "0, 1"} for frame origins (m) that
+    coincide."""
     groups = []
     for k, origin in enumerate(origins):
         for group in groups:
@@ -302,7 +319,8 @@ def _shared_origin_labels(origins, tolerance=1e-6):
 
 
 def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha=0.35):
-    """Draw the ellipsoid centre + axes @ diag(radii) u over unit vectors u (see jacobians.ellipsoid).
+    """Draw the ellipsoid centre + axes @ diag(radii) u over unit vectors u
+    (see jacobians.ellipsoid).
 
     ``scale`` converts the radii to metres on the drawing (e.g. 0.2 m per m/s).
     """
@@ -325,7 +343,8 @@ def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha
 
 
 def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0, 0.0)):
-    """Draw a planar arm (x-y plane) at q (n,) as a 2D stick figure; returns the line."""
+    """Draw a planar arm (x-y plane) at q (n,) as a 2D stick figure; returns the
+    line."""
     _check_axes(ax, three_d=False)
     chain = check_chain(chain)
     q = _one_q(chain, q)
@@ -344,9 +363,9 @@ def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0
     return line
 
 
-# The player of ``animation_html``: its frames are loaded one at a time, when shown (the book
-# turns them into image files, book/_ext/light_pages.py), so a page does not download a whole
-# animation before its reader presses play.
+# The player of ``animation_html``: its frames are loaded one at a time, when shown
+# (the book turns them into image files, book/_ext/light_pages.py), so a page does not
+# download a whole animation before its reader presses play.
 _PLAYER = """<figure class="screwkit-animation" id="{id}">
 <img src="{first}" alt="{alt}" width="{width}" height="{height}" data-alt="{alt_source}"
      style="max-width: 100%; height: auto">
@@ -385,11 +404,12 @@ _PLAYER = """<figure class="screwkit-animation" id="{id}">
   slider.addEventListener("input", function () {{ stop(); show(+slider.value); }});
 }})();
 </script>
-</figure>"""
+</figure>"""  # noqa: E501 (HTML and JavaScript: its lines are the string's text)
 
 
 def _describe_figure(figure, count):
-    """A sentence on what an animated figure shows, from its axes' titles, labels and legends."""
+    """A sentence on what an animated figure shows, from its axes' titles, labels and
+    legends."""
     panels = []
     for ax in figure.get_axes():
         words = ax.get_title() or (
@@ -411,20 +431,23 @@ def _describe_figure(figure, count):
 
 
 def animation_html(animation, alt=None, label="Frame of the animation"):
-    """A matplotlib animation as self-contained HTML with a small player (no request leaves the page).
+    """A matplotlib animation as self-contained HTML with a small player
+    (no request leaves the page).
 
-    The frames are rendered by matplotlib (as ``animation.to_jshtml()`` does) and embedded as
-    PNG data; the page shows one at a time, with a play/pause button and a slider. ``alt`` is
-    the image's text for readers who do not see it (default: a sentence built from the axes'
-    titles, labels and legends; the book replaces it by the cell's ``mystnb.image.alt``);
-    ``label`` names the slider. The output depends only on the frames, so it is the same at
-    every run. Display it with ``IPython.display.HTML``.
+    The frames are rendered by matplotlib (as ``animation.to_jshtml()`` does) and
+    embedded as PNG data; the page shows one at a time, with a play/pause button and a
+    slider. ``alt`` is the image's text for readers who do not see it
+    (default: a sentence built from the axes' titles, labels and legends; the book
+    replaces it by the cell's ``mystnb.image.alt``); ``label`` names the slider. The
+    output depends only on the frames, so it is the same at every run. Display it with
+    ``IPython.display.HTML``.
     """
     from matplotlib.animation import Animation
 
     if not isinstance(animation, Animation):
         raise TypeError(
-            f"animation must be a matplotlib Animation (e.g. FuncAnimation), got {describe(animation)}"
+            "animation must be a matplotlib Animation (e.g. FuncAnimation), got "
+            f"{describe(animation)}"
         )
     for value, name in ((alt, "alt"), (label, "label")):
         if value is not None and not (isinstance(value, str) and value.strip()):

@@ -1,14 +1,15 @@
-"""Redundancy resolution for planar arms: paths, resolved-rate IK with the pseudo-inverse, and
-null-space motion that climbs the gradient of Yoshikawa's manipulability.
+"""Redundancy resolution for planar arms: paths, resolved-rate IK with the
+pseudo-inverse, and null-space motion that climbs the gradient of Yoshikawa's
+manipulability.
 
-A planar arm (``sk.robots.planar(lengths)``) has n joints and a 2D task, the point (x, y); with
-n > 2 it is redundant, and the joint rates
+A planar arm (``sk.robots.planar(lengths)``) has n joints and a 2D task, the point
+(x, y); with n > 2 it is redundant, and the joint rates
 
     qdot = J+ (xdot_d + K e) + k (I - J+ J) grad w,       J+ = J^T (J J^T)^-1,
 
 follow the path (first term; K e corrects the drift of Euler integration) and, without
-disturbing the end effector, move the arm so that w = sqrt(det(J J^T)) grows (second term).
-Lengths in metres, angles in radians, time in seconds.
+disturbing the end effector, move the arm so that w = sqrt(det(J J^T)) grows
+(second term). Lengths in metres, angles in radians, time in seconds.
 
 >>> import numpy as np, screwkit as sk
 >>> arm = sk.robots.planar([0.4, 0.3, 0.2])
@@ -49,15 +50,16 @@ __all__ = [
 ]
 
 
-# ---- paths ---------------------------------------------------------------------------------
+# ---- paths ---------------------------------------------------------------------------
 
 
 @dataclass(frozen=True)
 class Path:
-    """A sampled path of the end effector: t (steps,) s, position and velocity (steps, 2) in m, m/s.
+    """A sampled path of the end effector: t (steps,) s, position and velocity
+    (steps, 2) in m, m/s.
 
-    The samples are uniform in time (Euler steps of one dt), at least two, and the arrays are
-    copied, so changing the caller's arrays later does not change the path.
+    The samples are uniform in time (Euler steps of one dt), at least two, and the
+    arrays are copied, so changing the caller's arrays later does not change the path.
     """
 
     t: np.ndarray
@@ -69,7 +71,8 @@ class Path:
         t = np.array(as_float_array(self.t, "t"))
         if t.ndim != 1 or t.size < 2:
             raise ValueError(
-                f"t must be a 1-D array of at least two sample times (s), got shape {t.shape}"
+                "t must be a 1-D array of at least two sample times (s), got shape "
+                f"{t.shape}"
             )
         steps = np.diff(t)
         dt = steps[0]
@@ -80,15 +83,15 @@ class Path:
         if not np.allclose(steps, dt, rtol=1e-9, atol=0):
             worst = int(np.argmax(np.abs(steps - dt)))
             raise ValueError(
-                f"t must be uniform (one time step dt = {dt:.6g} s), but the step after sample "
-                f"{worst} is {steps[worst]:.6g} s"
+                f"t must be uniform (one time step dt = {dt:.6g} s), but the step "
+                f"after sample {worst} is {steps[worst]:.6g} s"
             )
         for field in ("position", "velocity"):
             array = np.array(as_float_array(getattr(self, field), field))
             if array.shape != (t.size, 2):
                 raise ValueError(
-                    f"{field} must have shape ({t.size}, 2), one planar point per sample of t, "
-                    f"got shape {array.shape}"
+                    f"{field} must have shape ({t.size}, 2), one planar point per "
+                    f"sample of t, got shape {array.shape}"
                 )
             object.__setattr__(self, field, array)
         if not isinstance(self.name, str):
@@ -104,8 +107,9 @@ class Path:
 def timing(t, duration, kind="smooth"):
     """The path parameter s(t) in [0, 1] and its rate ds/dt.
 
-    'smooth': the quintic s = 10 u^3 - 15 u^4 + 6 u^5 (u = t / duration), which starts and ends
-    at rest with zero acceleration; 'constant': s = u. ``t`` (s) must lie in [0, duration].
+    'smooth': the quintic s = 10 u^3 - 15 u^4 + 6 u^5 (u = t / duration), which starts
+    and ends at rest with zero acceleration; 'constant': s = u. ``t`` (s) must lie in
+    [0, duration].
     """
     kind = check_option(kind, "kind", ("smooth", "constant"))
     duration = check_positive(duration, "duration")
@@ -133,19 +137,21 @@ def _samples(duration, dt):
     dt = check_positive(dt, "dt")
     if duration / dt > MAX_SAMPLES:
         raise ValueError(
-            f"duration / dt must be at most {MAX_SAMPLES:,} steps, got {duration / dt:.3g} "
-            f"(duration={duration} s, dt={dt} s); use a larger dt"
+            f"duration / dt must be at most {MAX_SAMPLES:,} steps, got "
+            f"{duration / dt:.3g} (duration={duration} s, dt={dt} s); use a larger dt"
         )
     steps = int(round(duration / dt))
     if steps < 1 or not np.isclose(steps * dt, duration, rtol=1e-9, atol=0):
         raise ValueError(
-            f"duration must be a whole number of steps dt, got duration={duration} and dt={dt}"
+            f"duration must be a whole number of steps dt, got duration={duration} and "
+            f"dt={dt}"
         )
     return np.arange(steps + 1) * dt, duration
 
 
 def circle(center, radius, duration, dt, timing_kind="smooth"):
-    """A circle once counter-clockwise, from center + (radius, 0), over ``duration`` seconds."""
+    """A circle once counter-clockwise, from center + (radius, 0), over ``duration``
+    seconds."""
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     center = _point(center, "center")
     radius = check_positive(radius, "radius")
@@ -163,7 +169,8 @@ def circle(center, radius, duration, dt, timing_kind="smooth"):
 
 
 def line(start, end, duration, dt, timing_kind="smooth"):
-    """A straight line from ``start`` to ``end`` (points (2,), m) over ``duration`` seconds."""
+    """A straight line from ``start`` to ``end`` (points (2,), m) over ``duration``
+    seconds."""
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     start, end = _point(start, "start"), _point(end, "end")
     if np.allclose(start, end):
@@ -184,11 +191,12 @@ def _point(value, name):
     return point
 
 
-# ---- planar kinematics ---------------------------------------------------------------------
+# ---- planar kinematics ---------------------------------------------------------------
 
 
 def _lengths(arm):
-    """The link lengths of a planar arm (a Chain of revolute links with d = 0 and alpha = 0)."""
+    """The link lengths of a planar arm (a Chain of revolute links with d = 0 and
+    alpha = 0)."""
     check_chain(arm, "arm")
     try:
         planar = all(
@@ -203,13 +211,15 @@ def _lengths(arm):
         planar = False
     if not planar or not np.allclose(arm.tool, np.eye(4)):
         raise ValueError(
-            f"arm must be a planar arm of revolute links about z (sk.robots.planar), got {arm!r}"
+            "arm must be a planar arm of revolute links about z (sk.robots.planar), "
+            f"got {arm!r}"
         )
     return lengths
 
 
 def _base_2d(arm):
-    """The arm's base as a planar rotation (2, 2) and origin (2,); an error if it is not planar."""
+    """The arm's base as a planar rotation (2, 2) and origin (2,); an error if it is not
+    planar."""
     B = arm.base
     if not (np.allclose(B[2], [0, 0, 1, 0]) and np.allclose(B[:2, 2], 0)):
         raise ValueError(
@@ -219,7 +229,8 @@ def _base_2d(arm):
 
 
 def planar_kinematics(lengths, q):
-    """Joint positions and the end-effector Jacobian of a planar arm in its own base frame.
+    """Joint positions and the end-effector Jacobian of a planar arm in its own base
+    frame.
 
     q (n,) -> points (n + 1, 2) (the base, each joint, the end effector) and J (2, n);
     a batch (N, n) -> (N, n + 1, 2) and (N, 2, n). Column i of J is z x (p - o_i).
@@ -237,12 +248,13 @@ def planar_kinematics(lengths, q):
 
 
 def manipulability_gradient(lengths, q):
-    """w = sqrt(det(J J^T)) and its exact gradient dw/dq: q (n,) -> (), (n,); (N, n) -> (N,), (N, n).
+    """w = sqrt(det(J J^T)) and its exact gradient dw/dq: q (n,) -> (), (n,);
+    (N, n) -> (N,), (N, n).
 
-    By Cauchy-Binet, w^2 = sum over i < j of m_ij^2 with m_ij = r_i x r_j, r_i the vector from
-    joint i to the end effector. Turning joint k rotates r_i by z x r_max(i,k), so
-    dm_ij/dq_k = r_i . r_max(j,k) - r_max(i,k) . r_j, and dw/dq_k = sum_ij m_ij dm_ij/dq_k / (2 w).
-    Where w = 0 the gradient is returned as 0.
+    By Cauchy-Binet, w^2 = sum over i < j of m_ij^2 with m_ij = r_i x r_j, r_i the
+    vector from joint i to the end effector. Turning joint k rotates r_i by
+    z x r_max(i,k), so dm_ij/dq_k = r_i . r_max(j,k) - r_max(i,k) . r_j, and
+    dw/dq_k = sum_ij m_ij dm_ij/dq_k / (2 w). Where w = 0 the gradient is returned as 0.
     """
     return _gradient(planar_kinematics(lengths, q)[0])
 
@@ -251,15 +263,16 @@ def _lengths_and_q(lengths, q):
     lengths = as_float_array(lengths, "lengths")
     if lengths.ndim != 1 or lengths.size < 1:
         raise ValueError(
-            f"lengths must be a 1-D array of link lengths (m), got shape {lengths.shape}"
+            "lengths must be a 1-D array of link lengths (m), got shape "
+            f"{lengths.shape}"
         )
     if np.any(lengths < 0):
         raise ValueError(f"lengths must be >= 0 (m), got {lengths.tolist()}")
     q = as_float_array(q, "q")
     if q.ndim not in (1, 2) or q.shape[-1] != lengths.size:
         raise ValueError(
-            f"q must have {lengths.size} entries, one per length, shape ({lengths.size},) "
-            f"or (N, {lengths.size}), got shape {q.shape}"
+            f"q must have {lengths.size} entries, one per length, shape "
+            f"({lengths.size},) or (N, {lengths.size}), got shape {q.shape}"
         )
     return lengths, q
 
@@ -287,7 +300,8 @@ def _gradient(points):
 
 @functools.cache
 def _gradient_indices(n):
-    """Index pairs (i, max(j, k)) and (max(i, k), j) over (k, i, j), as flat indices into G (n, n)."""
+    """Index pairs (i, max(j, k)) and (max(i, k), j) over (k, i, j), as flat indices
+    into G (n, n)."""
     k, i, j = np.meshgrid(np.arange(n), np.arange(n), np.arange(n), indexing="ij")
     return (i, np.maximum(j, k)), (np.maximum(i, k), j)
 
@@ -295,9 +309,10 @@ def _gradient_indices(n):
 def pseudo_inverse(J, damping=0.0, singular_region=0.05):
     """J+ = J^T (J J^T + lambda^2 I)^-1 for J (2, n).
 
-    lambda = 0 (the exact Moore-Penrose inverse of a full-rank J) unless ``damping`` > 0, then
-    lambda^2 = damping^2 (1 - (sigma_min / singular_region)^2) inside the singular region
-    sigma_min < singular_region (m): damped least squares that fades in near a singularity.
+    lambda = 0 (the exact Moore-Penrose inverse of a full-rank J) unless
+    ``damping`` > 0, then lambda^2 = damping^2 (1 - (sigma_min / singular_region)^2)
+    inside the singular region sigma_min < singular_region (m): damped least squares
+    that fades in near a singularity.
     """
     J = as_float_array(J, "J")
     if J.ndim != 2 or J.shape[0] != 2 or J.shape[1] < 1:
@@ -322,15 +337,17 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
     return J.T @ inverse
 
 
-# ---- resolution ----------------------------------------------------------------------------
+# ---- resolution ----------------------------------------------------------------------
 
 
 def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
-    """Joint angles that put the end effector at ``point`` (2,), by Newton steps with the
-    pseudo-inverse from ``q_guess`` (n,); the nearest solution to the guess, roughly.
+    """Joint angles that put the end effector at ``point`` (2,), by Newton steps with
+    the pseudo-inverse from ``q_guess`` (n,); the nearest solution to the guess,
+    roughly.
 
-    ``tol`` (m) is the distance accepted, ``max_iterations`` (>= 1) the Newton steps allowed; a
-    point out of reach, or one not reached in time, is a ValueError with the residual.
+    ``tol`` (m) is the distance accepted, ``max_iterations`` (>= 1) the Newton steps
+    allowed; a point out of reach, or one not reached in time, is a ValueError with the
+    residual.
     """
     lengths = _lengths(arm)
     q = np.array(arm.check_one(q_guess, "q_guess"))  # a copy: the caller's array stays
@@ -356,9 +373,10 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
 class Resolution:
     """The result of :func:`resolve`; row i belongs to the path's sample i.
 
-    t (steps,) s; q (steps, n) rad; position (steps, 2) m, the end effector in the world frame;
-    error (steps,) m, its distance from the path; manipulability (steps,), sqrt(det(J J^T)) at q;
-    limited (steps,) bool, True where a joint limit clamped the step that led to row i.
+    t (steps,) s; q (steps, n) rad; position (steps, 2) m, the end effector in the world
+    frame; error (steps,) m, its distance from the path; manipulability (steps,),
+    sqrt(det(J J^T)) at q; limited (steps,) bool, True where a joint limit clamped the
+    step that led to row i.
     """
 
     t: np.ndarray
@@ -384,22 +402,24 @@ def resolve(
 ):
     """Follow ``path`` with the end effector of the planar ``arm`` from ``q0`` (n,).
 
-    Euler steps q_{k+1} = q_k + qdot dt with qdot = J+ (xdot_d + K e) + (I - J+ J) phi, where
-    K = ``feedback_gain`` (1/s; K dt < 2 for stability), e the position error, and phi =
-    ``null_space_gain`` * grad w (thesis eqs. 2.37-2.38). ``damping`` > 0 uses damped least
-    squares near singularities (see :func:`pseudo_inverse`).
+    Euler steps q_{k+1} = q_k + qdot dt with qdot = J+ (xdot_d + K e) + (I - J+ J) phi,
+    where K = ``feedback_gain`` (1/s; K dt < 2 for stability), e the position error, and
+    phi = ``null_space_gain`` * grad w (thesis eqs. 2.37-2.38). ``damping`` > 0 uses
+    damped least squares near singularities (see :func:`pseudo_inverse`).
 
-    joint_limits : None (ignored), 'clamp' (the arm's qlim cut the step: the end effector then
-        leaves the path), or 'avoid' (clamp, and subtract limit_gain * grad H from phi, with
-        H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)), which is 1 per joint at mid-range
-        and grows without bound at a limit: the null space pushes joints away from their limits;
-        the push's length is capped at ``max_rate`` rad/s).
+    joint_limits : None (ignored), 'clamp'
+        (the arm's qlim cut the step: the end effector then leaves the path), or 'avoid'
+        (clamp, and subtract limit_gain * grad H from phi, with
+        H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)), which is 1 per joint at
+        mid-range and grows without bound at a limit: the null space pushes joints away
+        from their limits; the push's length is capped at ``max_rate`` rad/s).
 
-    A path that leaves the reachable annulus, a q0 of the wrong length, or a q0 whose end effector
-    is more than ``start_tolerance`` (m) from the path's start is refused with a ValueError; so is
-    a q0 outside the arm's joint limits when ``joint_limits`` is 'clamp' or 'avoid'. Gains are
-    finite real numbers: ``null_space_gain`` of either sign (negative lowers w), the others >= 0;
-    ``max_rate`` and ``start_tolerance`` positive.
+    A path that leaves the reachable annulus, a q0 of the wrong length, or a q0 whose
+    end effector is more than ``start_tolerance`` (m) from the path's start is refused
+    with a ValueError; so is a q0 outside the arm's joint limits when ``joint_limits``
+    is 'clamp' or 'avoid'. Gains are finite real numbers: ``null_space_gain`` of either
+    sign (negative lowers w), the others >= 0; ``max_rate`` and ``start_tolerance``
+    positive.
     """
     lengths = _lengths(arm)
     if not isinstance(path, Path):
@@ -417,7 +437,8 @@ def resolve(
     dt = path.dt
     if not feedback_gain * dt < 2:
         raise ValueError(
-            f"feedback_gain * dt must be in [0, 2) for a stable loop, got {feedback_gain} * {dt}"
+            "feedback_gain * dt must be in [0, 2) for a stable loop, got "
+            f"{feedback_gain} * {dt}"
         )
     if joint_limits is not None and not arm.within_limits(q):
         outside = [
@@ -425,8 +446,9 @@ def resolve(
         ]
         i = outside[0]
         raise ValueError(
-            f"q0 must lie within the arm's joint limits when joint_limits={joint_limits!r}, but "
-            f"joint {i + 1} is {q[i]:.4f} rad, outside [{arm.qlim[i, 0]:.4f}, {arm.qlim[i, 1]:.4f}]"
+            "q0 must lie within the arm's joint limits when "
+            f"joint_limits={joint_limits!r}, but joint {i + 1} is {q[i]:.4f} rad, "
+            f"outside [{arm.qlim[i, 0]:.4f}, {arm.qlim[i, 1]:.4f}]"
         )
     R, origin = _base_2d(arm)
     target = (path.position - origin) @ R  # the path in the arm's base frame
@@ -435,8 +457,9 @@ def resolve(
     start = planar_kinematics(lengths, q)[0][-1]
     if np.linalg.norm(start - target[0]) > start_tolerance:
         raise ValueError(
-            f"q0 must put the end effector within start_tolerance = {start_tolerance} m of the "
-            f"path's start {np.round(path.position[0], 4).tolist()}, got "
+            "q0 must put the end effector within start_tolerance = "
+            f"{start_tolerance} m of the path's start "
+            f"{np.round(path.position[0], 4).tolist()}, got "
             f"{np.round(start @ R.T + origin, 4).tolist()} m, "
             f"{np.linalg.norm(start - target[0]):.4f} m from the path's start; "
             "use start_configuration(arm, path.position[0], q_guess)"
@@ -459,8 +482,9 @@ def resolve(
         if joint_limits == "avoid":
             push = limit_gain * _limit_gradient(q, low, high, finite)
             size = np.linalg.norm(push)
-            # the barrier's gradient is unbounded at a limit, an Euler step must not be: cap its
-            # length (not its entries, which would turn it away from the descent direction)
+            # the barrier's gradient is unbounded at a limit, an Euler step must not be:
+            # cap its length (not its entries, which would turn it away from the descent
+            # direction)
             phi = phi - (push if size <= max_rate else push * (max_rate / size))
         if null_space_gain or joint_limits == "avoid":
             qdot = qdot + (identity - J_plus @ J) @ phi
@@ -485,7 +509,8 @@ def resolve(
 
 
 def _limit_gradient(q, low, high, finite):
-    """grad H of H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)) over joints with finite limits."""
+    """grad H of H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)) over joints with
+    finite limits."""
     low, high = np.where(finite, low, -1.0), np.where(finite, high, 1.0)
     inside = np.clip(q, low + 1e-9, high - 1e-9)
     gradient = (
@@ -497,7 +522,8 @@ def _limit_gradient(q, low, high, finite):
 
 
 def _check_reachable(lengths, target, path):
-    """Refuse a path that leaves the annulus r_min <= |p| <= r_max around the arm's base."""
+    """Refuse a path that leaves the annulus r_min <= |p| <= r_max around the arm's
+    base."""
     outer = lengths.sum()
     inner = max(0.0, 2 * lengths.max() - outer)
     radius = np.linalg.norm(target, axis=-1)
@@ -505,8 +531,9 @@ def _check_reachable(lengths, target, path):
     if outside.size:
         i = outside[0]
         raise ValueError(
-            f"path must stay in the reachable annulus {inner:.4f} m <= |p| <= {outer:.4f} m around "
-            f"the arm's base, got {outside.size} of {len(radius)} samples outside it (the path "
-            f"leaves the reachable annulus), the first at t = {path.t[i]:.3f} s, "
-            f"point {np.round(path.position[i], 4).tolist()} m, |p| = {radius[i]:.4f} m"
+            f"path must stay in the reachable annulus {inner:.4f} m <= |p| <= "
+            f"{outer:.4f} m around the arm's base, got {outside.size} of {len(radius)} "
+            "samples outside it (the path leaves the reachable annulus), the first at "
+            f"t = {path.t[i]:.3f} s, point {np.round(path.position[i], 4).tolist()} m, "
+            f"|p| = {radius[i]:.4f} m"
         )

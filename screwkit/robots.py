@@ -1,9 +1,9 @@
 """The catalogue of mechanisms and robots used in the course.
 
 Parallel manipulators are returned in the mobility paper's zeroth-step format: a list of
-limbs, each a list of (s, r, h) joint screws in the fixed frame, with the paper's symbols
-for lengths (a, b, L, R, ...), actuated displacements d_i and joint angles theta_ij.
-Serial arms are :class:`~screwkit.chains.Chain` objects (SI units).
+limbs, each a list of (s, r, h) joint screws in the fixed frame, with the paper's
+symbols for lengths (a, b, L, R, ...), actuated displacements d_i and joint angles
+theta_ij. Serial arms are :class:`~screwkit.chains.Chain` objects (SI units).
 """
 
 import numpy as np
@@ -47,7 +47,8 @@ X, Y, Z, O = (
     sp.zeros(3, 1),
 )
 
-#: The paper's Grübler–Kutzbach inputs (links with base and platform, joints, freedoms) and counts.
+#: The paper's Grübler–Kutzbach inputs (links with base and platform, joints, freedoms)
+#: and counts.
 PAPER_GRUBLER_KUTZBACH = {
     "3-PRRR": {"links": 11, "joints": 12, "freedoms": 12, "mobility": 0},
     "3-PR(Pa)R": {"links": 17, "joints": 21, "freedoms": 21, "mobility": -9},
@@ -56,9 +57,9 @@ PAPER_GRUBLER_KUTZBACH = {
 }
 
 
-#: Numbers (m, rad) for every symbol of each parallel mechanism, for sk.plotting.draw_mechanism.
-#: Every limb gets the same values, so the symmetric limbs end on a regular polygon: the drawn
-#: platform is rigid. Keys are the builders' names.
+#: Numbers (m, rad) for every symbol of each parallel mechanism, for
+#: sk.plotting.draw_mechanism. Every limb gets the same values, so the symmetric limbs
+#: end on a regular polygon: the drawn platform is rigid. Keys are the builders' names.
 DRAWING_VALUES = {
     "pm_3prrr": {
         "a": 0.45,
@@ -153,7 +154,8 @@ def pm_3prrr():
 
 
 def pm_3prpar():
-    """STAR-like 3-PR(Pa)R: P and R along X, a parallelogram, and a last R along X (§3.2.2).
+    """STAR-like 3-PR(Pa)R: P and R along X, a parallelogram, and a last R along X
+    (§3.2.2).
 
     Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
     """
@@ -185,8 +187,8 @@ def pm_3prpar():
 
 
 def _turn_about_z(angle):
-    """v -> Rz(angle) v with expanded entries, written out (no matrix product): a limb turned
-    about Z, as rotate_limb(limb, rotz(angle)) gives it."""
+    """v -> Rz(angle) v with expanded entries, written out (no matrix product): a limb
+    turned about Z, as rotate_limb(limb, rotz(angle)) gives it."""
     c, s = sp.cos(angle), sp.sin(angle)
 
     def turn(v):
@@ -204,7 +206,8 @@ def pm_4prru():
     P along Z; three R axes parallel to Rx(alpha) Y (the first one at A, tilted by alpha
     so it is not perpendicular to P); a U whose second axis is Z. Limbs are turned by
     90-degree steps about Z. The paper's code places C with the rotation N applied twice
-    and never uses theta_i3; here B and C follow theta_i2 and theta_i3 about the tilted axis.
+    and never uses theta_i3; here B and C follow theta_i2 and theta_i3 about the tilted
+    axis.
     """
     R, a, b, alpha = sp.symbols("R a b alpha")
     d = sp.symbols("d_1:5")
@@ -215,7 +218,8 @@ def pm_4prru():
 
     def turned(length, angle):
         # length * X turned by angle about the unit axis w (Rodrigues, with w . X = 0):
-        # cos(angle) X + sin(angle) w x X, written out so no trigonometric simplification runs
+        # cos(angle) X + sin(angle) w x X, written out so no trigonometric
+        # simplification runs
         return length * sp.Matrix(
             [sp.cos(angle), sp.sin(angle) * w[2], -sp.sin(angle) * w[1]]
         )
@@ -231,7 +235,8 @@ def pm_4prru():
 
 
 def pm_6ups():
-    """6-UPS (Gough–Stewart type): U at A, P along the leg, S at B; limbs turned by 60 degrees (§3.2.4)."""
+    """6-UPS (Gough–Stewart type): U at A, P along the leg, S at B; limbs turned by 60
+    degrees (§3.2.4)."""
     R = sp.Symbol("R")
     d = sp.symbols("d_1:7")
     theta = _symbols("theta", 6, 1, 2)
@@ -252,7 +257,8 @@ def pm_6ups():
 
 
 def planar_3rrr():
-    """Planar 3-RRR: three RRR limbs with all axes along Z (3 motions in the plane: 2T1R)."""
+    """Planar 3-RRR: three RRR limbs with all axes along Z
+    (3 motions in the plane: 2T1R)."""
     a, b = sp.symbols("a b")
     theta = _symbols("theta", 3, 1, 2)
     limbs = []
@@ -266,7 +272,8 @@ def planar_3rrr():
 
 
 def pm_3rps():
-    """3-RPS: R tangent to the base circle, P along the leg, S on the platform (1T2R)."""
+    """3-RPS: R tangent to the base circle, P along the leg, S on the platform
+    (1T2R)."""
     R = sp.Symbol("R")
     d = sp.symbols("d_1:4")
     theta = [sp.Symbol(f"theta_{i}") for i in range(1, 4)]
@@ -280,12 +287,13 @@ def pm_3rps():
 
 
 def pm_3ruu():
-    """Delta-type translational 3-RUU (3T): the kinematic equivalent of Clavel's Delta with a U-U
-    link in place of each spatial parallelogram (Tsai's translational conditions).
+    """Delta-type translational 3-RUU (3T): the kinematic equivalent of Clavel's Delta
+    with a U-U link in place of each spatial parallelogram
+    (Tsai's translational conditions).
 
-    Limb 1: R about u = Y at A = (R, 0, 0); a U at B (axes u, then v = rotation of Z about u by
-    theta_12); a U at C (axes v, then u). Each limb then constrains the one couple along u x v.
-    Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
+    Limb 1: R about u = Y at A = (R, 0, 0); a U at B (axes u, then v = rotation of Z
+    about u by theta_12); a U at C (axes v, then u). Each limb then constrains the one
+    couple along u x v. Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
     """
     R, a, b = sp.symbols("R a b")
     limbs = []
@@ -301,7 +309,8 @@ def pm_3ruu():
 
 
 def spherical_3rrr():
-    """Spherical 3-RRR (agile eye type): every joint axis passes through the origin (3R)."""
+    """Spherical 3-RRR (agile eye type): every joint axis passes through the origin
+    (3R)."""
     theta = _symbols("theta", 3, 1, 2)
     limbs = []
     for i in range(3):
@@ -315,12 +324,14 @@ def spherical_3rrr():
 
 
 def puma560():
-    """The PUMA 560 in standard DH, Corke's parameters (the PUMA paper's Table 2), in metres.
+    """The PUMA 560 in standard DH, Corke's parameters (the PUMA paper's Table 2), in
+    metres.
 
     As in the paper there is no pedestal (d1 = 0: frame 0 is on the shoulder axis);
     d3 = 0.15005 m (Table 2 rounds it to 0.15). Joint limits are those of Corke's model
-    (Robotics Toolbox, from Wang & Chen 1991): q2 in [-45, 225] deg and q3 in [-225, 45] deg.
-    Named configurations: 'zero', 'ready', 'stretch', 'nominal' (the paper's eqs. 32-35).
+    (Robotics Toolbox, from Wang & Chen 1991): q2 in [-45, 225] deg and q3 in [-225, 45]
+    deg. Named configurations: 'zero', 'ready', 'stretch', 'nominal'
+    (the paper's eqs. 32-35).
     """
     deg = np.pi / 180
     links = [
@@ -343,15 +354,18 @@ def puma560():
 
 
 def kawasaki_cx210l():
-    """The Kawasaki CX210L 6R arm in standard DH (m), reconstructed from the workspace paper.
+    """The Kawasaki CX210L 6R arm in standard DH (m), reconstructed from the workspace
+    paper.
 
-    Lengths are the paper's (Table 1): d1 = 0.55, a1 = 0.3, a2 = 1.19, a3 = 0.3, d4 = 1.19,
-    d6 = 0.235. Twists (-90, 0, -90, 90, -90, 0) deg and the offset of 180 deg on joint 2 are
-    the only choice that reproduces the paper's MATLAB validation poses (Table 2, to 0.05 mm):
-    alpha3 = -90 comes from the MATLAB listing (Table 1 prints +90), alpha5 = -90 and alpha6 = 0
-    from Table 1 (the listing has +90 and 180). q2 = 90 deg is the upper arm vertical, as in the
+    Lengths are the paper's (Table 1): d1 = 0.55, a1 = 0.3, a2 = 1.19, a3 = 0.3,
+    d4 = 1.19, d6 = 0.235. Twists (-90, 0, -90, 90, -90, 0) deg and the offset of 180
+    deg on joint 2 are the only choice that reproduces the paper's MATLAB validation
+    poses (Table 2, to 0.05 mm): alpha3 = -90 comes from the MATLAB listing
+    (Table 1 prints +90), alpha5 = -90 and alpha6 = 0 from Table 1
+    (the listing has +90 and 180). q2 = 90 deg is the upper arm vertical, as in the
     paper. No joint limits are set: the paper quotes only the maker's q3 >= -75 deg.
-    Named configurations: 'table2_1', 'table2_2', 'table2_3' (q2 = 30, q3 = -90, -80, -70 deg).
+    Named configurations: 'table2_1', 'table2_2', 'table2_3'
+    (q2 = 30, q3 = -90, -80, -70 deg).
     """
     deg = sp.pi / 180
     links = [
@@ -370,11 +384,13 @@ def kawasaki_cx210l():
 
 
 def planar(lengths, qlim=None):
-    """An n-link planar arm (n >= 2): revolute joints about z, link i of length lengths[i] (m).
+    """An n-link planar arm (n >= 2): revolute joints about z, link i of length
+    lengths[i] (m).
 
-    Standard DH with a_i = lengths[i] and every other parameter zero, so the end effector
-    moves in the x-y plane; the rows 'position' of its geometric Jacobian hold the 2 x n
-    planar Jacobian in their first two rows. ``qlim`` is (n, 2) in rad, or None.
+    Standard DH with a_i = lengths[i] and every other parameter zero, so the end
+    effector moves in the x-y plane; the rows 'position' of its geometric Jacobian hold
+    the 2 x n planar Jacobian in their first two rows. ``qlim`` is (n, 2) in rad, or
+    None.
     """
     if lengths is None or isinstance(lengths, (str, bytes)):
         raise TypeError(
@@ -399,9 +415,9 @@ def planar(lengths, qlim=None):
 
 
 def two_arm_planar(lengths=(0.3, 0.25, 0.2, 0.15, 0.1), separation=0.4, qlim=None):
-    """A two-arm planar robot: two copies of ``planar(lengths)`` (links l0..l4 as in the thesis)
-    with their bases on the x axis at x = -separation/2 (left) and +separation/2 (right), in m.
-    Returns (left, right)."""
+    """A two-arm planar robot: two copies of ``planar(lengths)``
+    (links l0..l4 as in the thesis) with their bases on the x axis at x = -separation/2
+    (left) and +separation/2 (right), in m. Returns (left, right)."""
     half = as_real_scalar(separation, "separation") / 2
     arms = []
     for name, x in (("left", -half), ("right", half)):

@@ -6,7 +6,7 @@ The reciprocal product $1 @ $2 = s1 . s0_2 + s0_1 . s2 is, for a twist and a
 wrench, the instantaneous power.
 
 >>> import sympy as sp
->>> t = Twist.from_axis([0, 0, 1], [1, 0, 0], 0)      # revolute about z through (1, 0, 0)
+>>> t = Twist.from_axis([0, 0, 1], [1, 0, 0], 0)  # revolute about z through (1, 0, 0)
 >>> t.vector.T
 Matrix([[0, 0, 1, 0, -1, 0]])
 >>> w = Wrench.from_axis([0, 0, 1], [0, 0, 0], sp.oo)  # a couple about z
@@ -32,7 +32,8 @@ __all__ = ["Screw", "Twist", "Wrench", "axis_coordinates"]
 
 
 class Screw:
-    """A screw as an exact 6-vector [angular; linear]; see Twist and Wrench for the typed kinds."""
+    """A screw as an exact 6-vector [angular; linear]; see Twist and Wrench for the
+    typed kinds."""
 
     kind = "screw"
 
@@ -42,7 +43,8 @@ class Screw:
     # --- constructors -------------------------------------------------------------
     @classmethod
     def from_axis(cls, s, r, h):
-        """The screw of axis direction ``s`` (any non-zero length) through ``r`` with pitch ``h``.
+        """The screw of axis direction ``s`` (any non-zero length) through ``r`` with
+        pitch ``h``.
 
         Parameters
         ----------
@@ -56,14 +58,16 @@ class Screw:
             return cls._checked(axis_coordinates(s, None, sp.oo))
         if isinstance(h, str) or h is None:
             raise TypeError(
-                f"h must be a pitch (a number, a SymPy expression or sympy.oo), got {describe(h)}"
+                "h must be a pitch (a number, a SymPy expression or sympy.oo), got "
+                f"{describe(h)}"
             )
         h = as_sympy_scalar(h, "h")
         return cls._checked(axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), h))
 
     @classmethod
     def _checked(cls, vector):
-        """A screw from a 6 x 1 SymPy matrix built from checked parts (no second check)."""
+        """A screw from a 6 x 1 SymPy matrix built from checked parts
+        (no second check)."""
         screw = cls.__new__(cls)
         screw.vector = vector
         return screw
@@ -119,7 +123,8 @@ class Screw:
 
     @property
     def point(self):
-        """The point of the axis nearest the origin, s x s0 / (s . s); None for an infinite pitch.
+        """The point of the axis nearest the origin, s x s0 / (s . s); None for an
+        infinite pitch.
 
         The zero screw has no axis: ``ValueError``.
         """
@@ -131,7 +136,8 @@ class Screw:
         return (s.cross(s0) / ss).applyfunc(sp.simplify)
 
     # --- algebra -----------------------------------------------------------------
-    # NumPy defers to these operators (no element-wise broadcast of an array with a screw)
+    # NumPy defers to these operators (no element-wise broadcast of an array with a
+    # screw)
     __array_ufunc__ = None
 
     def _same_kind(self, other, operation):
@@ -143,8 +149,8 @@ class Screw:
             )
         if type(other) is not type(self):
             raise TypeError(
-                f"cannot {operation} a {self.kind} and a {other.kind}: they live in different spaces "
-                "(use @ for the reciprocal product)"
+                f"cannot {operation} a {self.kind} and a {other.kind}: they live in "
+                "different spaces (use @ for the reciprocal product)"
             )
         return True
 
@@ -180,7 +186,8 @@ class Screw:
     __rmul__ = __mul__
 
     def __matmul__(self, other):
-        """The reciprocal product s . s0' + s0 . s' (for a twist and a wrench: the power)."""
+        """The reciprocal product s . s0' + s0 . s' (for a twist and a wrench: the
+        power)."""
         if not isinstance(other, Screw):
             raise TypeError(
                 f"the reciprocal product @ takes two screws (a twist and a wrench), "
@@ -191,12 +198,13 @@ class Screw:
         )
 
     def transform(self, T):
-        """This screw written in another frame: Ad(T) $ for the pose T (4, 4) of its frame there.
+        """This screw written in another frame: Ad(T) $ for the pose T (4, 4) of its
+        frame there.
 
-        A twist (w; v) becomes (R w; R v + p x R w); a wrench (f; m), in the same [angular;
-        linear] order, changes the same way (Modern Robotics, ordering (m; f), writes this
-        as the transposed adjoint: F_b = Ad(T_ab)^T F_a). Exact for a SymPy T; a float T gives
-        Float coordinates.
+        A twist (w; v) becomes (R w; R v + p x R w); a wrench (f; m), in the same
+        [angular; linear] order, changes the same way (Modern Robotics, ordering (m; f),
+        writes this as the transposed adjoint: F_b = Ad(T_ab)^T F_a). Exact for a SymPy
+        T; a float T gives Float coordinates.
         """
         T = check_transform(
             T if isinstance(T, sp.MatrixBase) else as_float_array(T, "T"), "T"
@@ -230,8 +238,8 @@ class Twist(Screw):
     def exp(self, theta):
         """The rigid motion exp([V] theta) (4, 4) of moving ``theta`` along this twist.
 
-        Exact (a SymPy matrix) when theta or the twist holds SymPy symbols or theta is a SymPy
-        number; float64 for a numeric theta, (N,) angles giving (N, 4, 4). See
+        Exact (a SymPy matrix) when theta or the twist holds SymPy symbols or theta is a
+        SymPy number; float64 for a numeric theta, (N,) angles giving (N, 4, 4). See
         :func:`screwkit.transforms.exp_twist`.
 
         >>> np.round(Twist.from_axis([0, 0, 1], [1, 0, 0], 0).exp(np.pi)[:3, 3], 12)

@@ -1,10 +1,11 @@
 """Closed-form inverse kinematics of a 6R arm with a spherical wrist, from its screws.
 
 The arm fits when its last three axes meet in a point c (the wrist centre), the axes of
-joints 2 and 3 are parallel, and joint 1's axis is not parallel to them (the PUMA 560 with
-any lengths and offsets, the Kawasaki CX210L, and many industrial arms). With the joint
-screws xi_i at q = 0 and the home pose M, T = exp(xi_1 q1) ... exp(xi_6 q6) M, and the
-wrist joints leave c where it is, so the wrist centre of the target is w = T M^-1 c and
+joints 2 and 3 are parallel, and joint 1's axis is not parallel to them
+(the PUMA 560 with any lengths and offsets, the Kawasaki CX210L, and many industrial
+arms). With the joint screws xi_i at q = 0 and the home pose M, T = exp(xi_1 q1) ...
+exp(xi_6 q6) M, and the wrist joints leave c where it is, so the wrist centre of the
+target is w = T M^-1 c and
 
 1. joint 1 (:func:`~screwkit.subproblems.subproblem4`): joints 2 and 3 move c in a plane
    perpendicular to their common axis direction u, so q1 must turn w back into the plane
@@ -16,28 +17,31 @@ wrist joints leave c where it is, so the wrist centre of the target is w = T M^-
    wrist takes the direction of axis 6 to where it must point: two pairs, flip ('f') or
    not ('n'); joint 6 (:func:`~screwkit.subproblems.subproblem1`): the rest.
 
-Labels are geometric (they hold for any arm that fits, and equal Corke's for the PUMA 560),
-with w1 the wrist centre in the frame of link 1 (i.e. at q1 = 0) and w_i the axis directions:
+Labels are geometric (they hold for any arm that fits, and equal Corke's for the PUMA
+560), with w1 the wrist centre in the frame of link 1 (i.e. at q1 = 0) and w_i the axis
+directions:
 
 * arm 'r' when w1 lies on the side of axis 1 that w_1 x w_2 points to, 'l' otherwise;
-* elbow 'u' when, seen with the arm pointing forward (w_1 x w_2 for 'r', the opposite for
-  'l'), the elbow (axis 3) lies above the line from the shoulder (axis 2) to w1:
+* elbow 'u' when, seen with the arm pointing forward (w_1 x w_2 for 'r', the opposite
+  for 'l'), the elbow (axis 3) lies above the line from the shoulder (axis 2) to w1:
   sigma ((w1 - p2) x (e - p2)) . w_2 > 0, with sigma = +1 for 'r' and -1 for 'l';
-* wrist 'f' when (w_4 x w_6) . w_5 > 0 at the current configuration (for the PUMA: q5 > 0).
+* wrist 'f' when (w_4 x w_6) . w_5 > 0 at the current configuration
+  (for the PUMA: q5 > 0).
 
 The singular cases, where labels tie or angles are free, follow one documented rule:
 
 * shoulder (w1 on the plane through axis 1 spanned by w_1 and w_2: the two arm solutions
-  coincide): the label is 'r'; if w1 is on axis 1 itself (only possible without a shoulder
-  offset), q1 is free and the solutions take q1 = 0;
+  coincide): the label is 'r'; if w1 is on axis 1 itself
+  (only possible without a shoulder offset), q1 is free and the solutions take q1 = 0;
 * elbow (stretched or folded: the two elbow solutions coincide): the label is 'd';
 * wrist (axes 4 and 6 aligned: only q4 + q6 or q4 - q6 is fixed; the sine of the angle
   between them at most :data:`WRIST_TOL`): the 'f' solution takes q4 = 0 and the 'n'
   solution q4 = pi; a configuration there is labelled 'f' when cos q4 >= 0 and 'n'
   otherwise, so both labels round-trip.
 
-Round-off that pushes a square-root or arccos argument just outside its range (by less than
-:data:`CLIP_TOL`, relative) is clipped: a pose on a singularity is solved, not dropped.
+Round-off that pushes a square-root or arccos argument just outside its range
+(by less than :data:`CLIP_TOL`, relative) is clipped: a pose on a singularity is solved,
+not dropped.
 """
 
 from dataclasses import dataclass
@@ -61,17 +65,19 @@ CONFIGURATIONS = ("lun", "luf", "ldn", "ldf", "run", "ruf", "rdn", "rdf")
 #: Relative tolerance for the structure checks and for clipping round-off.
 CLIP_TOL = 1e-10
 #: A solution is reported singular when its measure is below this: the squared distance
-#: (m^2, relative) of the wrist centre from the plane of axis 1 and w_1 x w_2 (shoulder),
-#: 1 - |cos| of the elbow angle (elbow), the sine between axes 4 and 6 (wrist).
+#: (m^2, relative) of the wrist centre from the plane of axis 1 and w_1 x w_2
+#: (shoulder), 1 - |cos| of the elbow angle (elbow), the sine between axes 4 and 6
+#: (wrist).
 SINGULAR_TOL = 1e-9
 
 
-#: The wrist is singular (axes 4 and 6 aligned, q4 + q6 or q4 - q6 alone fixed) where the
-#: sine of the angle between them is at most this. The sine is a unit-free measure computed
-#: without cancellation (from the components of axis 6 across axis 4, not as 1 - cos^2), so
-#: its round-off is a few 1e-16 whatever the arm's lengths; the labels and the closed form
-#: test the same measure against the same number, so every label round-trips. A pose within
-#: it is solved with q4 = 0 or pi: its orientation is then off by at most this angle (rad).
+#: The wrist is singular (axes 4 and 6 aligned, q4 + q6 or q4 - q6 alone fixed) where
+#: the sine of the angle between them is at most this. The sine is a unit-free measure
+#: computed without cancellation (from the components of axis 6 across axis 4, not as
+#: 1 - cos^2), so its round-off is a few 1e-16 whatever the arm's lengths; the labels
+#: and the closed form test the same measure against the same number, so every label
+#: round-trips. A pose within it is solved with q4 = 0 or pi: its orientation is then
+#: off by at most this angle (rad).
 WRIST_TOL = 1e-10
 
 
@@ -127,7 +133,8 @@ def _rotate(w, angle, x):
 
 
 def _polar(y, x):
-    """atan2(y, x) with its cosine and sine, without calling cos and sin (0 where x = y = 0)."""
+    """atan2(y, x) with its cosine and sine, without calling cos and sin
+    (0 where x = y = 0)."""
     h = np.hypot(x, y)
     safe = np.where(h > 0, h, 1.0)
     return np.arctan2(y, x), np.where(h > 0, x / safe, 1.0), y / safe
@@ -139,7 +146,8 @@ def _apply(K, v):
 
 
 class _Rotor:
-    """Rotations about one fixed unit direction w, applied to vectors laid out (3, ...)."""
+    """Rotations about one fixed unit direction w, applied to vectors laid out
+    (3, ...)."""
 
     def __init__(self, w):
         self.w = w
@@ -155,7 +163,8 @@ class _Rotor:
         return _apply(self.cross_matrix(w), v)
 
     def rotate(self, v, cos, sin):
-        """v (3, ...) turned about w by the angles with these cosines and sines (...)."""
+        """v (3, ...) turned about w by the angles with these cosines and sines
+        (...)."""
         along = _dot(self.w, v) * (1 - cos)
         return (
             v * cos
@@ -166,11 +175,12 @@ class _Rotor:
 
 @dataclass(frozen=True)
 class SphericalWristArm:
-    """The geometry of a 6R arm with a spherical wrist, taken from its screws (m, unit w_i).
+    """The geometry of a 6R arm with a spherical wrist, taken from its screws
+    (m, unit w_i).
 
     Build it with :meth:`from_chain`; it raises ``ValueError`` naming the condition that
-    fails. ``w``, ``p``: (6, 3) axis directions and points at q = 0; ``c``: the wrist centre;
-    ``home``: M (4, 4).
+    fails. ``w``, ``p``: (6, 3) axis directions and points at q = 0; ``c``: the wrist
+    centre; ``home``: M (4, 4).
     """
 
     w: np.ndarray
@@ -251,10 +261,11 @@ class SphericalWristArm:
             )
         return cls(w=w, p=p, c=c, home=chain.home(), scale=scale)
 
-    # ---- labels ---------------------------------------------------------------------------
+    # ---- labels ----------------------------------------------------------------------
 
     def _arm_plane(self, q2, q3):
-        """The wrist centre w1 (..., 3) at q1 = 0 and the elbow point relative to axis 2."""
+        """The wrist centre w1 (..., 3) at q1 = 0 and the elbow point relative to axis
+        2."""
         w, p, c = self.w, self.p, self.c
         wrist = p[2] + _rotate(w[2], q3, np.broadcast_to(c - p[2], q3.shape + (3,)))
         w1 = p[1] + _rotate(w[1], q2, wrist - p[1])
@@ -262,7 +273,8 @@ class SphericalWristArm:
         return w1, elbow
 
     def measures(self, q):
-        """(forward, elbow, wrist) of q (..., 6): the signed measures the labels test."""
+        """(forward, elbow, wrist) of q (..., 6): the signed measures the labels
+        test."""
         w, p = self.w, self.p
         w1, elbow = self._arm_plane(q[..., 1], q[..., 2])
         forward = (w1 - p[0]) @ np.cross(w[0], w[1])
@@ -273,8 +285,8 @@ class SphericalWristArm:
         return forward, above, flip
 
     def wrist_sine(self, q5):
-        """``|w4 x R(w5, q5) w6|``: the sine of the angle between axes 4 and 6 at q5 (...), the
-        measure of the wrist singularity (see :data:`WRIST_TOL`)."""
+        """``|w4 x R(w5, q5) w6|``: the sine of the angle between axes 4 and 6 at q5
+        (...), the measure of the wrist singularity (see :data:`WRIST_TOL`)."""
         w4, w5, w6 = self.w[3], self.w[4], self.w[5]
         c5, s5 = np.cos(q5)[..., None], np.sin(q5)[..., None]
         across = (
@@ -297,14 +309,15 @@ class SphericalWristArm:
             np.char.add(arm, np.where(up, "u", "d")), np.where(flipped, "f", "n")
         )
 
-    # ---- the closed form ------------------------------------------------------------------
+    # ---- the closed form -------------------------------------------------------------
 
     def solve(self, T):
         """All eight solutions of the poses T (N, 4, 4), in the order of CONFIGURATIONS.
 
-        Returns Q (N, 8, 6) in (-pi, pi], NaN where a branch does not reach the pose; the
-        singularity flags (N, 8, 3) (shoulder, elbow, wrist); and the reason code per pose
-        (N,): 0 reached, 1 shoulder offset, 2 out of the arm's reach, 3 wrist orientation.
+        Returns Q (N, 8, 6) in (-pi, pi], NaN where a branch does not reach the pose;
+        the singularity flags (N, 8, 3) (shoulder, elbow, wrist); and the reason code
+        per pose (N,): 0 reached, 1 shoulder offset, 2 out of the arm's reach, 3 wrist
+        orientation.
         """
         N = T.shape[0]
         Q = np.empty((N, 8, 6))
@@ -334,8 +347,8 @@ class SphericalWristArm:
         return self._assemble(shoulder, elbow, arm, wrist, q6)
 
     def _joint1(self, d):
-        """Joint 1 (subproblem 4): turn the wrist centre d (3, N) by theta = -q1 onto the
-        plane w2 . x = w2 . c; two angles (N, 2), the arm l and r."""
+        """Joint 1 (subproblem 4): turn the wrist centre d (3, N) by theta = -q1 onto
+        the plane w2 . x = w2 . c; two angles (N, 2), the arm l and r."""
         w, p, c = self.w, self.p, self.c
         w1, w2 = w[0], w[1]
         phi, half, excess, rho2 = plane_angles(w1, w2, w2 @ (c - p[0]), d)
@@ -369,8 +382,8 @@ class SphericalWristArm:
         return _Elbow(q3, s3, u3, cosine, ok)
 
     def _joint2(self, b1, elbow):
-        """Joint 2 (subproblem 1): the angle about w2 from a = p3 - p2 + R3 (c - p3) to b1,
-        then the two elbow solutions ordered u first, d second."""
+        """Joint 2 (subproblem 1): the angle about w2 from a = p3 - p2 + R3 (c - p3) to
+        b1, then the two elbow solutions ordered u first, d second."""
         w, p, c = self.w, self.p, self.c
         w2 = w[1]
         s3, u3 = elbow.s3, elbow.u3
@@ -386,7 +399,8 @@ class SphericalWristArm:
             crosses[0] + c3 * crosses[1] + s3q * crosses[2],
             dots[0] + c3 * dots[1] + s3q * dots[2] - along,
         )
-        # the elbow label: above = ((w1 - p2) x R2 (p3 - p2)) . w2; the larger sigma*above is 'u'
+        # the elbow label: above = ((w1 - p2) x R2 (p3 - p2)) . w2; the larger
+        # sigma*above is 'u'
         e = p[2] - p[1] - w2 * (w2 @ (p[2] - p[1]))
         above = c2 * _dot(e, m)[..., None] + s2 * _dot(_cross3(w2, e), m)[..., None]
         sigma = np.array([-1.0, 1.0])
@@ -399,11 +413,12 @@ class SphericalWristArm:
         return _Arm(q2, c2, s2, _wrap_angle(q3), c3, s3q)
 
     def _joints45(self, RG, shoulder, arm):
-        """Joints 4 and 5 (subproblem 2): the rotation left for the wrist, Rw = R23^T R1^T RG,
-        takes w6 to t and x6 to b; two (q4, q5) pairs per arm and elbow, n and f.
+        """Joints 4 and 5 (subproblem 2): the rotation left for the wrist,
+        Rw = R23^T R1^T RG, takes w6 to t and x6 to b; two (q4, q5) pairs per arm and
+        elbow, n and f.
 
-        At the wrist singularity (axis 6 of the target on axis 4, the sine between them at
-        most :data:`WRIST_TOL`) q4 is free: 'n' takes pi, 'f' takes 0.
+        At the wrist singularity (axis 6 of the target on axis 4, the sine between them
+        at most :data:`WRIST_TOL`) q4 is free: 'n' takes pi, 'f' takes 0.
         """
         w = self.w
         w2, w4, w5, w6 = w[1], w[3], w[4], w[5]
@@ -433,8 +448,8 @@ class SphericalWristArm:
         t4, t5, tn, tm = (_dot(v, t) for v in (w4, w5, n45, _cross3(w4, n45)))
         a = (c45 * c56 - t4) / (c45**2 - 1)
         bb = (c45 * t4 - c56) / (c45**2 - 1)
-        # gamma^2 = |z_perp|^2 / |n45|^2 - bb^2 with |z_perp| = |t_perp| (no cancellation
-        # of 1 - t4^2 near the wrist singularity)
+        # gamma^2 = |z_perp|^2 / |n45|^2 - bb^2 with |z_perp| = |t_perp|
+        # (no cancellation of 1 - t4^2 near the wrist singularity)
         gamma2 = (tn**2 + tm**2) / (n45 @ n45) ** 2 - bb**2
         sine46 = np.sqrt(tn**2 + tm**2) / np.sqrt(
             n45 @ n45
@@ -466,8 +481,8 @@ class SphericalWristArm:
 
     def _joint6(self, wrist):
         """Joint 6 (subproblem 1): about w6 from x6 to y = R5^T R4^T b, with y . e =
-        b . (R4 R5 e) expanded by Rodrigues into dot products of b with fixed vectors (no
-        rotated copies of b)."""
+        b . (R4 R5 e) expanded by Rodrigues into dot products of b with fixed vectors
+        (no rotated copies of b)."""
         w4, w5, w6 = self.w[3], self.w[4], self.w[5]
         b, c4, s4, c5, s5 = wrist.b, wrist.c4, wrist.s4, wrist.c5, wrist.s5
 
@@ -488,8 +503,9 @@ class SphericalWristArm:
         return np.arctan2(along(_cross3(w6, wrist.x6)), along(wrist.x6))
 
     def _assemble(self, shoulder, elbow, arm, wrist, q6):
-        """The answer: Q (N, 8, 6) in the order of CONFIGURATIONS (NaN where a branch does
-        not reach), the singularity flags (N, 8, 3) and the reason codes (N,)."""
+        """The answer: Q (N, 8, 6) in the order of CONFIGURATIONS
+        (NaN where a branch does not reach), the singularity flags (N, 8, 3) and the
+        reason codes (N,)."""
         N = shoulder.theta.shape[0]
         shape = (N, 2, 2, 2)
         Q = np.empty(shape + (6,))
@@ -535,8 +551,8 @@ class SphericalWristArm:
         offset = abs(w[1] @ (c - p[0]))
         if code == 1:
             return (
-                f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer than "
-                f"the shoulder offset {offset:.5f} m"
+                f"the wrist centre is {radial:.4f} m from the axis of joint 1, closer "
+                f"than the shoulder offset {offset:.5f} m"
             )
         if code == 2:
             u3 = np.linalg.norm(c - p[2] - w[2] * (w[2] @ (c - p[2])))

@@ -4,18 +4,19 @@ Each subproblem asks for the joint angles that move a point somewhere, about zer
 twists xi = (w; v) with |w| = 1 (the axis through r = w x v):
 
 * :func:`subproblem1` -- the angle theta with exp(theta xi) p = q;
-* :func:`subproblem2` -- the pairs (theta1, theta2) with exp(theta1 xi1) exp(theta2 xi2) p = q,
-  for two axes that meet in a point;
+* :func:`subproblem2` -- the pairs (theta1, theta2) with exp(theta1 xi1) exp(theta2 xi2)
+  p = q, for two axes that meet in a point;
 * :func:`subproblem3` -- the angles with |exp(theta xi) p - q| = delta;
 * :func:`subproblem4` -- the angles that bring p onto the plane n . x = d;
-* :func:`subproblem1_prismatic`, :func:`subproblem3_prismatic` -- the same questions for a
-  translation along a unit direction s (the twist (0; s)).
+* :func:`subproblem1_prismatic`, :func:`subproblem3_prismatic` -- the same questions for
+  a translation along a unit direction s (the twist (0; s)).
 
 Each returns a :class:`Solutions` list: SymPy expressions for SymPy input (the formula a
-student reads), floats otherwise. No solution is an empty list whose ``reason`` says why;
-when every angle solves the problem (the point is on the axis) the list holds the angle 0 and
-``free`` is True. Formulas after Murray, Li and Sastry, *A Mathematical Introduction to
-Robotic Manipulation* (1994), sec. 3.3; subproblem 4 after Elias and Wen's IK-Geo (2022).
+student reads), floats otherwise. No solution is an empty list whose ``reason`` says
+why; when every angle solves the problem (the point is on the axis) the list holds the
+angle 0 and ``free`` is True. Formulas after Murray, Li and Sastry, *A Mathematical
+Introduction to Robotic Manipulation* (1994), sec. 3.3; subproblem 4 after Elias and
+Wen's IK-Geo (2022).
 
 >>> import numpy as np
 >>> z_axis = [0, 0, 1, 0, 0, 0]            # rotation about z through the origin
@@ -52,8 +53,8 @@ TOL = 1e-9
 
 
 class Solutions(list):
-    """The solutions of a subproblem (a list); ``reason`` says why it is empty, ``free`` is
-    True when every angle solves it (the list then holds the representative 0)."""
+    """The solutions of a subproblem (a list); ``reason`` says why it is empty, ``free``
+    is True when every angle solves it (the list then holds the representative 0)."""
 
     def __init__(self, solutions=(), reason=None, free=False):
         super().__init__(solutions)
@@ -66,7 +67,7 @@ class Solutions(list):
         return super().__repr__() + (" (every angle: free)" if self.free else "")
 
 
-# ---- input ------------------------------------------------------------------------------
+# ---- input ---------------------------------------------------------------------------
 
 
 def _symbolic(*values):
@@ -150,11 +151,12 @@ def _distance(delta, name, exact):
     return delta
 
 
-# ---- helpers for both layers ---------------------------------------------------------------
+# ---- helpers for both layers ---------------------------------------------------------
 
 
 def _zero(value, scale, exact):
-    """Is a consistency residual zero? Exactly (or undecidable: assumed) or within TOL * scale."""
+    """Is a consistency residual zero? Exactly (or undecidable: assumed) or within
+    TOL * scale."""
     if exact:
         value = sp.simplify(value)
         return not (value.is_number and value != 0)
@@ -192,10 +194,10 @@ def _cross(a, b, exact):
     return a.cross(b) if exact else np.cross(a, b)
 
 
-# ---- batch kernels: float arrays, vectors laid out (3, ...), no checks -------------------
-# The closed-form IK (:mod:`screwkit.spherical_wrist`) runs its steps through these, over a
-# whole batch of poses at once; the scalar subproblems below run their numeric case through
-# them too, so each formula is written once.
+# ---- batch kernels: float arrays, vectors laid out (3, ...), no checks ---------------
+# The closed-form IK (:mod:`screwkit.spherical_wrist`) runs its steps through these,
+# over a whole batch of poses at once; the scalar subproblems below run their numeric
+# case through them too, so each formula is written once.
 
 
 def _dot_batch(w, v):
@@ -215,14 +217,14 @@ def _cross_fixed(a, b):
 
 
 def plane_angles(w, n, h, x):
-    """Subproblem 4 over a batch: the angles about the unit axis w through the origin that
-    bring the points x (3, ...) onto the plane n . y = h.
+    """Subproblem 4 over a batch: the angles about the unit axis w through the origin
+    that bring the points x (3, ...) onto the plane n . y = h.
 
-    With A = n . x - (w . x)(w . n), B = (n x w) . x and C = h - (w . x)(n . w), the angles
-    are phi -+ half, phi = atan2(B, A), half = atan2(sqrt(A^2 + B^2 - C^2), C). Returns
-    (phi, half, excess, radius2), each (...): ``excess`` = A^2 + B^2 - C^2 is negative where
-    no angle reaches the plane (``half`` is then that of excess 0), ``radius2`` = A^2 + B^2
-    is 0 where x is on the axis (every angle, or none).
+    With A = n . x - (w . x)(w . n), B = (n x w) . x and C = h - (w . x)(n . w), the
+    angles are phi -+ half, phi = atan2(B, A), half = atan2(sqrt(A^2 + B^2 - C^2), C).
+    Returns (phi, half, excess, radius2), each (...): ``excess`` = A^2 + B^2 - C^2 is
+    negative where no angle reaches the plane (``half`` is then that of excess 0),
+    ``radius2`` = A^2 + B^2 is 0 where x is on the axis (every angle, or none).
     """
     along = _dot_batch(w, x)
     A = _dot_batch(n, x) - along * (w @ n)
@@ -236,8 +238,8 @@ def plane_angles(w, n, h, x):
 
 
 def distance_angles(w, u, v, delta2):
-    """Subproblem 3 in the plane across the unit axis w: for u, v (3,) perpendicular to w
-    and squared distances delta2 (...), the angle theta0 from u to v and the cosine
+    """Subproblem 3 in the plane across the unit axis w: for u, v (3,) perpendicular to
+    w and squared distances delta2 (...), the angle theta0 from u to v and the cosine
     (|u|^2 + |v|^2 - delta2) / (2 |u| |v|) whose arccos is added to it and subtracted; a
     cosine beyond +-1 means no angle reaches the distance. Returns (theta0, cosine)."""
     lu, lv = np.linalg.norm(u), np.linalg.norm(v)
@@ -245,14 +247,15 @@ def distance_angles(w, u, v, delta2):
     return np.arctan2(_cross_fixed(u, v) @ w, u @ v), cosine
 
 
-# ---- the subproblems --------------------------------------------------------------------
+# ---- the subproblems -----------------------------------------------------------------
 
 
 def subproblem1(twist, p, q):
     """The angle theta of the rotation about ``twist`` that takes the point p to q.
 
     With r on the axis, u = p - r and v = q - r, and u', v' their parts perpendicular to
-    w: theta = atan2(w . (u' x v'), u' . v'). Solvable when w . u = w . v and |u'| = |v'|.
+    w: theta = atan2(w . (u' x v'), u' . v'). Solvable when w . u = w . v and
+    |u'| = |v'|.
 
     Parameters
     ----------
@@ -291,10 +294,11 @@ def subproblem2(twist1, twist2, p, q):
     """The angle pairs (theta1, theta2) with exp(theta1 xi1) exp(theta2 xi2) p = q.
 
     The axes must meet in a point r. The middle point z = exp(theta2 xi2) p =
-    exp(-theta1 xi1) q lies on both circles: z = r + alpha w1 + beta w2 + gamma (w1 x w2),
-    with alpha, beta from w1 . (z - r) = w1 . (q - r) and w2 . (z - r) = w2 . (p - r), and
-    gamma^2 = (|u|^2 - alpha^2 - beta^2 - 2 alpha beta w1 . w2) / |w1 x w2|^2 (u = p - r).
-    Two pairs for gamma^2 > 0, one for gamma^2 = 0, none for gamma^2 < 0.
+    exp(-theta1 xi1) q lies on both circles: z = r + alpha w1 + beta w2 + gamma
+    (w1 x w2), with alpha, beta from w1 . (z - r) = w1 . (q - r) and
+    w2 . (z - r) = w2 . (p - r), and gamma^2 = (|u|^2 - alpha^2 - beta^2 - 2 alpha beta
+    w1 . w2) / |w1 x w2|^2 (u = p - r). Two pairs for gamma^2 > 0, one for gamma^2 = 0,
+    none for gamma^2 < 0.
 
     Returns
     -------
@@ -358,8 +362,8 @@ def subproblem3(twist, p, q, delta):
     """The angles theta with |exp(theta xi) p - q| = delta.
 
     In the plane perpendicular to w: delta'^2 = delta^2 - (w . (p - q))^2 and
-    theta = theta0 +- acos((|u'|^2 + |v'|^2 - delta'^2) / (2 |u'| |v'|)), theta0 being the
-    subproblem-1 angle from u' to v'. Two, one or no solutions.
+    theta = theta0 +- acos((|u'|^2 + |v'|^2 - delta'^2) / (2 |u'| |v'|)), theta0 being
+    the subproblem-1 angle from u' to v'. Two, one or no solutions.
 
     Returns
     -------
@@ -414,7 +418,8 @@ def subproblem3(twist, p, q, delta):
 
 
 def subproblem4(twist, p, normal, d):
-    """The angles theta that bring p onto the plane normal . x = d: normal . exp(theta xi) p = d.
+    """The angles theta that bring p onto the plane normal . x = d:
+    normal . exp(theta xi) p = d.
 
     With u = p - r: normal . exp(theta xi) p = A cos(theta) + B sin(theta) + C, where
     A = n . u', B = n . (w x u), C = n . r + (n . w)(w . u). So

@@ -49,7 +49,7 @@ __all__ = [
 ]
 
 
-# ---- the unchecked kernels every layer above uses (checked inputs, no copies) ----------------
+# ---- the unchecked kernels every layer above uses (checked inputs, no copies) --------
 
 
 def _skew(v):
@@ -73,7 +73,8 @@ def _skew_exact(v):
 
 
 def _cross(a, b):
-    """a x b along axis 0, for arrays laid out (3, ...): cheaper than np.cross on strided data."""
+    """a x b along axis 0, for arrays laid out (3, ...): cheaper than np.cross on
+    strided data."""
     return np.stack(
         [
             a[1] * b[2] - a[2] * b[1],
@@ -84,18 +85,21 @@ def _cross(a, b):
 
 
 def _rodrigues(W, s, c1):
-    """I + s [w] + c1 [w]^2 from W = [w] (..., 3, 3), s = sin and c1 = 1 - cos (..., 1, 1)."""
+    """I + s [w] + c1 [w]^2 from W = [w] (..., 3, 3), s = sin and c1 = 1 - cos
+    (..., 1, 1)."""
     return np.eye(3) + s * W + c1 * (W @ W)
 
 
 def _rodrigues_exact(W, theta):
-    """I + sin(theta) W + (1 - cos(theta)) W^2 for a SymPy W = [w] (|w| = 1), exactly."""
+    """I + sin(theta) W + (1 - cos(theta)) W^2 for a SymPy W = [w] (|w| = 1),
+    exactly."""
     return sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W * W
 
 
 def _is_infinite_pitch(h):
-    """True for the pitch of a pure translation: sympy.oo, or a real +inf (a Python or NumPy
-    float, or a 0-d array); the one test of an infinite pitch (no other check)."""
+    """True for the pitch of a pure translation: sympy.oo, or a real +inf
+    (a Python or NumPy float, or a 0-d array); the one test of an infinite pitch
+    (no other check)."""
     if h is sp.oo:
         return True
     return (
@@ -108,15 +112,17 @@ def _is_infinite_pitch(h):
 
 
 def axis_coordinates(s, r, h):
-    """The screw coordinates of an axis: (s; r x s + h s), or (0; s) for the pitch h = oo.
+    """The screw coordinates of an axis: (s; r x s + h s), or (0; s) for the pitch
+    h = oo.
 
-    The one place screwkit writes this formula (also :func:`screwkit.screws.axis_coordinates`).
-    ``s`` is used as given (not normalised).
+    The one place screwkit writes this formula
+    (also :func:`screwkit.screws.axis_coordinates`). ``s`` is used as given
+    (not normalised).
 
     Parameters
     ----------
-    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3); r is unused
-        for h = oo
+    s, r : SymPy 3x1 matrices (exact), or float arrays of shape (3,) or (N, 3);
+        r is unused for h = oo
     h : the pitch (m/rad): a number, a SymPy expression, or oo / inf for a translation
 
     Returns
@@ -137,7 +143,7 @@ def axis_coordinates(s, r, h):
     return np.concatenate([s, np.cross(r, s) + h * s], axis=-1)
 
 
-# ---- checked, public ---------------------------------------------------------------------
+# ---- checked, public -----------------------------------------------------------------
 
 
 def _vector3(value, name):
@@ -215,8 +221,9 @@ def rot_axis(axis, theta):
 
     Returns
     -------
-    sympy.Matrix (3, 3) if ``axis`` or ``theta`` is symbolic (a float angle then becomes a
-    SymPy Float), else ndarray, shape (3, 3) or (N, 3, 3)
+    sympy.Matrix (3, 3) if ``axis`` or ``theta`` is symbolic
+        (a float angle then becomes a SymPy Float), else ndarray, shape (3, 3) or
+        (N, 3, 3)
 
     >>> rot_axis([0, 0, 2], np.pi / 2).round(12)
     array([[ 0., -1.,  0.],
@@ -234,11 +241,13 @@ def rot_axis(axis, theta):
 
 
 def _exact_angle(theta, name):
-    """One angle for an exact (SymPy) result: a float becomes a SymPy Float, a batch is refused."""
+    """One angle for an exact (SymPy) result: a float becomes a SymPy Float, a batch is
+    refused."""
     if isinstance(theta, (list, tuple, np.ndarray, sp.MatrixBase)):
         raise TypeError(
-            f"{name} must be a single number or SymPy expression when the result is symbolic "
-            f"(SymPy in, SymPy out), got {describe(theta)}; for a batch of angles pass numbers"
+            f"{name} must be a single number or SymPy expression when the result is "
+            f"symbolic (SymPy in, SymPy out), got {describe(theta)}; for a batch of "
+            "angles pass numbers"
         )
     return as_sympy_scalar(theta, name)
 
@@ -261,7 +270,8 @@ def _unit_vector(value, name):
     norm = _norm(v)
     if norm < ZERO_AXIS:
         raise ValueError(
-            f"{name} must be a non-zero 3-vector (norm at least {ZERO_AXIS:g}), got {v.tolist()}"
+            f"{name} must be a non-zero 3-vector (norm at least {ZERO_AXIS:g}), got "
+            f"{v.tolist()}"
         )
     scale = np.abs(v).max()
     u = v / scale  # scaled first: the norm of [1e200, 0, 0] must not overflow to inf
@@ -301,7 +311,8 @@ def transl(*p):
             )
     else:
         raise TypeError(
-            f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} arguments"
+            f"transl takes a 3-vector p or three numbers x, y, z, got {len(p)} "
+            "arguments"
         )
     return homogeneous(None, p)
 
@@ -433,7 +444,8 @@ def exp_twist(twist, theta):
     Parameters
     ----------
     twist : array-like, shape (6,), ordered [w; v], or a SymPy 6-vector
-    theta : float, array of shape (N,), or a SymPy expression (rad, or m for a translation)
+    theta : float, array of shape (N,), or a SymPy expression
+        (rad, or m for a translation)
 
     Returns
     -------
@@ -470,12 +482,14 @@ def exp_twist(twist, theta):
         ..., None, None
     ]  # 1 - cos, without cancellation
     t = theta[..., None, None]
-    # theta - sin(theta) cancels for small theta: its series there (error below 1e-20 rad)
+    # theta - sin(theta) cancels for small theta: its series there
+    # (error below 1e-20 rad)
     small = np.abs(theta) < 1e-2
     series = theta**3 / 6 - theta**5 / 120 + theta**7 / 5040
     t_minus_s = np.where(small, series, theta - np.sin(theta))[..., None, None]
     R = _rodrigues(W, s, c1)
-    # p = G v with G = I theta + (1 - cos) [w] + (theta - sin) [w]^2, applied to v directly
+    # p = G v with G = I theta + (1 - cos) [w] + (theta - sin) [w]^2, applied to v
+    # directly
     with np.errstate(over="ignore", invalid="ignore"):
         p = t[..., 0] * v + c1[..., 0] * (W @ v) + t_minus_s[..., 0] * (W2 @ v)
     _check_finite_product(p, "twist * theta")
@@ -483,7 +497,8 @@ def exp_twist(twist, theta):
 
 
 def _check_finite_product(value, what):
-    """Finite inputs whose product overflows give a clear error, not a silent inf or NaN."""
+    """Finite inputs whose product overflows give a clear error, not a silent inf or
+    NaN."""
     if not np.all(np.isfinite(value)):
         raise ValueError(
             f"{what} overflows float64: twist and theta must be far below 1e308 in size"
@@ -504,7 +519,8 @@ def _exp_twist_symbolic(xi, theta):
 
 
 def screw_motion(s, r, h, theta):
-    """The motion along a screw axis: rotate ``theta`` about the line (s, r), advance h*theta.
+    """The motion along a screw axis: rotate ``theta`` about the line (s, r), advance
+    h*theta.
 
     With ``h = sympy.oo`` the motion is a translation by ``theta`` metres along ``s``.
     Equivalent to ``exp_twist(twist_from_axis(s, r, h), theta)``.

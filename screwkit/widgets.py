@@ -1,11 +1,12 @@
-"""Interactive widgets (ipywidgets) for a live kernel, each with a figure for pages without one.
+"""Interactive widgets (ipywidgets) for a live kernel, each with a figure for pages
+without one.
 
-Every function returns a ``LiveFigure``: in JupyterLab, Notebook 7, VS Code or Colab it is the
-ipywidgets slider that re-runs Python; its output also carries an HTML fallback (the same
-figure computed in the page by ``screwkit.viewer``, or precomputed frames) that the static
-book shows instead of a blank widget placeholder (``nb_mime_priority_overrides`` in
-``_config.yml``). Sliders follow the rules of ``screwkit._sliders``: default on the grid,
-0 reachable, unit in the label.
+Every function returns a ``LiveFigure``: in JupyterLab, Notebook 7, VS Code or Colab it
+is the ipywidgets slider that re-runs Python; its output also carries an HTML fallback
+(the same figure computed in the page by ``screwkit.viewer``, or precomputed frames)
+that the static book shows instead of a blank widget placeholder
+(``nb_mime_priority_overrides`` in ``_config.yml``). Sliders follow the rules of
+``screwkit._sliders``: default on the grid, 0 reachable, unit in the label.
 """
 
 import ipywidgets as widgets
@@ -20,7 +21,8 @@ __all__ = ["LiveFigure", "screw_motion_slider", "joint_sliders", "figure_slider"
 
 
 class LiveFigure:
-    """An ipywidget for live kernels plus ``fallback`` (an object with ``_repr_html_``) for pages.
+    """An ipywidget for live kernels plus ``fallback`` (an object with ``_repr_html_``)
+    for pages.
 
     ``widget`` is the ipywidgets object (its ``.children`` hold the sliders).
     """
@@ -56,11 +58,12 @@ def _float_slider(spec):
 def screw_motion_slider(
     s, r, h, start=None, limits=((-1, 1), (-1, 1), (0, 2)), theta=90.0
 ):
-    """A slider for theta (deg) that moves the frame ``start`` about the screw (s, r, h).
+    """A slider for theta (deg) that moves the frame ``start`` about the screw
+    (s, r, h).
 
-    The frame drawn is exp([xi] theta) @ start, with the twist xi of the axis through ``r``
-    along ``s`` with pitch ``h`` (m/rad). Without a kernel, the same motion is computed in
-    the page (``viewer.screw_motion_viewer``). Returns a LiveFigure.
+    The frame drawn is exp([xi] theta) @ start, with the twist xi of the axis through
+    ``r`` along ``s`` with pitch ``h`` (m/rad). Without a kernel, the same motion is
+    computed in the page (``viewer.screw_motion_viewer``). Returns a LiveFigure.
     """
     start = (
         np.eye(4)
@@ -89,11 +92,12 @@ def screw_motion_slider(
 def joint_sliders(
     chain, q=None, limits=((-0.9, 0.9), (-0.9, 0.9), (-0.5, 1.0)), draw=None
 ):
-    """One slider per joint (deg, or m for prismatic joints, within the limits) that redraws.
+    """One slider per joint (deg, or m for prismatic joints, within the limits) that
+    redraws.
 
     ``draw(ax, q)`` may add to each drawing (for example the pose's numbers). Without a
-    kernel, the chain is drawn and moved in the page (``viewer.robot_viewer``). Returns a
-    LiveFigure.
+    kernel, the chain is drawn and moved in the page (``viewer.robot_viewer``). Returns
+    a LiveFigure.
     """
     specs = _sliders.slider_specs(check_chain(chain), q)
     fallback = viewer.robot_viewer(chain, q)
@@ -113,12 +117,13 @@ def joint_sliders(
 
 
 def figure_slider(draw, label, unit=None, values=None, choices=None, value=None):
-    """A slider over a grid ``values`` (or a drop-down over ``choices``) that shows ``draw(v)``.
+    """A slider over a grid ``values`` (or a drop-down over ``choices``) that shows
+    ``draw(v)``.
 
     ``draw(v)`` returns a matplotlib Figure or a str. With a kernel, every grid value is
-    computed when chosen; without one, the page steps through the figures computed now for
-    each value (``viewer.stepped_figure``). Give ``values`` from ``viewer.grid`` with its
-    ``unit``. Returns a LiveFigure.
+    computed when chosen; without one, the page steps through the figures computed now
+    for each value (``viewer.stepped_figure``). Give ``values`` from ``viewer.grid``
+    with its ``unit``. Returns a LiveFigure.
     """
     fallback = viewer.stepped_figure(
         draw, label, unit, values=values, choices=choices, value=value

@@ -1,10 +1,10 @@
 """Workspaces by sweeping joints over grids, computed in chunks so memory stays bounded.
 
 Joints are numbered 1..n as in the text (q1..qn); angles in radians, lengths in metres.
-A sweep keeps only its end-effector points (24 bytes per configuration); the joint values
-of the grid, the Jacobians, determinants and manipulabilities are computed chunk by chunk
-from the grid's axes. A sweep of more than ``MAX_CONFIGURATIONS`` configurations is refused
-up front with its size and a suggestion.
+A sweep keeps only its end-effector points (24 bytes per configuration); the joint
+values of the grid, the Jacobians, determinants and manipulabilities are computed chunk
+by chunk from the grid's axes. A sweep of more than ``MAX_CONFIGURATIONS``
+configurations is refused up front with its size and a suggestion.
 
 >>> import numpy as np, screwkit as sk
 >>> arm = sk.robots.planar([1.0, 0.5])
@@ -35,12 +35,14 @@ from .jacobians import ROWS, geometric_jacobian, manipulability
 
 __all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]
 
-#: The largest sweep that :func:`sweep` builds by default: 10^7 configurations, whose points
-#: take 240 MB (and the grid of joint values, if asked for with ``Sweep.q``, 80 MB per joint).
+#: The largest sweep that :func:`sweep` builds by default: 10^7 configurations, whose
+#: points take 240 MB (and the grid of joint values, if asked for with ``Sweep.q``,
+#: 80 MB per joint).
 MAX_CONFIGURATIONS = 10_000_000
 
 
-#: The largest result (bytes) that ``Sweep.q`` or ``Sweep.jacobians`` builds in one array.
+#: The largest result (bytes) that ``Sweep.q`` or ``Sweep.jacobians`` builds in one
+#: array.
 MAX_RESULT_BYTES = 1_000_000_000
 
 
@@ -72,7 +74,8 @@ class Sweep:
         return math.prod(self.shape)
 
     def configurations(self, start=0, stop=None):
-        """The joint vectors of grid points start..stop-1 in C order: shape (stop - start, n)."""
+        """The joint vectors of grid points start..stop-1 in C order: shape
+        (stop - start, n)."""
         start = check_integer(start, "start", minimum=0)
         stop = self.size if stop is None else check_integer(stop, "stop", minimum=start)
         if stop > self.size:
@@ -88,7 +91,8 @@ class Sweep:
 
     @property
     def q(self):
-        """Every configuration, shape grid + (n,) (built on demand: 8 bytes x n per point)."""
+        """Every configuration, shape grid + (n,) (built on demand: 8 bytes x n per
+        point)."""
         _check_result_size(
             self.size * self.chain.n * 8,
             "Sweep.q",
@@ -102,7 +106,8 @@ class Sweep:
             yield slice(start, stop), self.configurations(start, stop)
 
     def _per_point(self, function):
-        """``function`` (a batch (m, n) -> (m,)) at every grid point, chunk by chunk: shape grid."""
+        """``function`` (a batch (m, n) -> (m,)) at every grid point, chunk by chunk:
+        shape grid."""
         out = np.empty(self.size)
         for part, q in self._chunks():
             out[part] = function(q)
@@ -117,7 +122,8 @@ class Sweep:
         }
 
     def reach(self, centre):
-        """(min, max) distance of the swept points from ``centre`` (3,), e.g. a shoulder (m)."""
+        """(min, max) distance of the swept points from ``centre`` (3,), e.g. a shoulder
+        (m)."""
         centre = as_float_array(centre, "centre")
         if centre.shape != (3,):
             raise ValueError(
@@ -131,10 +137,11 @@ class Sweep:
         return float(low), float(high)
 
     def section(self, axis="y", value=0.0, tolerance=0.01):
-        """The swept points within ``tolerance`` (m) of the plane ``axis`` = ``value``: (M, 3).
+        """The swept points within ``tolerance`` (m) of the plane ``axis`` = ``value``:
+        (M, 3).
 
-        For a sweep that includes joint 1 this cuts the solid workspace, e.g. axis 'y', value 0
-        gives the points in the x-z plane.
+        For a sweep that includes joint 1 this cuts the solid workspace, e.g. axis 'y',
+        value 0 gives the points in the x-z plane.
         """
         check_option(axis, "axis", ("x", "y", "z"))
         value = as_float_array(value, "value")
@@ -159,33 +166,37 @@ class Sweep:
         return out.reshape(self.shape + (m, self.chain.n))
 
     def determinant(self, rows="all"):
-        """det J at every grid point, J the Jacobian's ``rows`` (square: as many rows as joints,
-        e.g. rows='all' for six joints, 'planar' for a two-link planar arm): shape grid. Its
-        sign changes across a singular surface, so ``contour(..., levels=[0])`` draws it."""
+        """det J at every grid point, J the Jacobian's ``rows``
+        (square: as many rows as joints, e.g. rows='all' for six joints, 'planar' for a
+        two-link planar arm): shape grid. Its sign changes across a singular surface, so
+        ``contour(..., levels=[0])`` draws it."""
         block = ROWS[check_option(rows, "rows", tuple(ROWS))]
         m = len(range(6)[block])
         if m != self.chain.n:
             raise ValueError(
-                f"rows must select {self.chain.n} rows, one per joint, for det J (a square "
-                f"Jacobian), got rows={rows!r} with {m} rows; use manipulability() instead"
+                f"rows must select {self.chain.n} rows, one per joint, for det J "
+                f"(a square Jacobian), got rows={rows!r} with {m} rows; use "
+                "manipulability() instead"
             )
         return self._per_point(
             lambda q: np.linalg.det(geometric_jacobian(self.chain, q)[:, block])
         )
 
     def manipulability(self, rows="all"):
-        """Yoshikawa's manipulability of the Jacobian's ``rows`` at every grid point: shape grid
-        (0.0 where singular)."""
+        """Yoshikawa's manipulability of the Jacobian's ``rows`` at every grid point:
+        shape grid (0.0 where singular)."""
         check_option(rows, "rows", tuple(ROWS))
         return self._per_point(lambda q: manipulability(self.chain, q, rows))
 
     def singular(self, rows="all"):
-        """A mask (shape grid) of the singular configurations of the Jacobian's ``rows``.
+        """A mask (shape grid) of the singular configurations of the Jacobian's
+        ``rows``.
 
-        True where J has lost rank (manipulability 0), and, for a square J, on both sides of
-        every strict sign change of det J between grid neighbours (a singular surface passes
-        between them). ``rows`` as in :func:`screwkit.jacobians.manipulability`: use
-        ``rows='planar'`` for a planar arm, whose six-row Jacobian never loses rank.
+        True where J has lost rank (manipulability 0), and, for a square J, on both
+        sides of every strict sign change of det J between grid neighbours
+        (a singular surface passes between them). ``rows`` as in
+        :func:`screwkit.jacobians.manipulability`: use ``rows='planar'`` for a planar
+        arm, whose six-row Jacobian never loses rank.
         """
         block = ROWS[check_option(rows, "rows", tuple(ROWS))]
         lost = self.manipulability(rows) == 0.0
@@ -206,8 +217,9 @@ class Sweep:
 def _check_result_size(nbytes, what, suggestion):
     if nbytes > MAX_RESULT_BYTES:
         raise ValueError(
-            f"{what} would build one array of {nbytes / 1e9:.2f} GB, more than the limit of "
-            f"{MAX_RESULT_BYTES / 1e9:.0f} GB; {suggestion}, or sweep a coarser grid"
+            f"{what} would build one array of {nbytes / 1e9:.2f} GB, more than the "
+            f"limit of {MAX_RESULT_BYTES / 1e9:.0f} GB; {suggestion}, or sweep a "
+            "coarser grid"
         )
 
 
@@ -220,8 +232,8 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
     ranges : {joint number (1..n): (low, high)} for each swept joint, in rad (or m)
     num : points per swept joint (an int >= 2, or a sequence of one per joint)
     q : the values of the other joints, shape (n,) (default zero)
-    max_configurations : the largest grid built (default ``MAX_CONFIGURATIONS``, 10^7); a
-        larger sweep is refused before anything is allocated
+    max_configurations : the largest grid built (default ``MAX_CONFIGURATIONS``, 10^7);
+        a larger sweep is refused before anything is allocated
 
     Returns
     -------
@@ -230,8 +242,8 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
     chain = check_chain(chain)
     if not isinstance(ranges, dict) or not ranges:
         raise TypeError(
-            "ranges must be a dict {joint number: (low, high)} with at least one joint, "
-            f"got {describe(ranges)}"
+            "ranges must be a dict {joint number: (low, high)} with at least one "
+            f"joint, got {describe(ranges)}"
         )
     joints = tuple(ranges)
     for joint in joints:
@@ -239,7 +251,8 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
             joint, (int, np.integer)
         ):
             raise TypeError(
-                f"ranges keys must be joint numbers 1..{chain.n} (integers), got {joint!r}"
+                f"ranges keys must be joint numbers 1..{chain.n} (integers), got "
+                f"{joint!r}"
             )
         if not 1 <= joint <= chain.n:
             raise ValueError(
@@ -266,10 +279,10 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
         grid = " x ".join(str(c) for c in counts)
         fewer = max(2, int(limit ** (1 / len(counts))))
         raise ValueError(
-            f"a sweep must have at most max_configurations = {limit:,} configurations, got "
-            f"{grid} = {size:,} (its points alone would take {size * 24 / 1e9:.2f} GB); "
-            f"use fewer steps (e.g. num={fewer}), or sweep fewer joints and fix the others "
-            "with q (a section)"
+            f"a sweep must have at most max_configurations = {limit:,} configurations, "
+            f"got {grid} = {size:,} (its points alone would take "
+            f"{size * 24 / 1e9:.2f} GB); use fewer steps (e.g. num={fewer}), or sweep "
+            "fewer joints and fix the others with q (a section)"
         )
     fixed = np.zeros(chain.n) if q is None else chain.check_one(q, "q")
     result = Sweep(
@@ -282,11 +295,13 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
 
 
 def _counts(num, joints):
-    """Points per swept joint: ``num`` is one int >= 2 or a sequence of ``joints`` of them."""
+    """Points per swept joint: ``num`` is one int >= 2 or a sequence of ``joints`` of
+    them."""
     if isinstance(num, (list, tuple, np.ndarray)):
         if len(num) != joints:
             raise ValueError(
-                f"num must be one integer or one per swept joint ({joints}), got {describe(num)}"
+                f"num must be one integer or one per swept joint ({joints}), got "
+                f"{describe(num)}"
             )
         return [check_integer(n, "num", minimum=2) for n in num]
     return [check_integer(num, "num", minimum=2)] * joints
