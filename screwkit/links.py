@@ -310,7 +310,7 @@ def check_screws(axes):
     for i, item in enumerate(items):
         name = f"axes[{i}]"
         if isinstance(item, Screw):
-            if item.kind == "wrench":
+            if item.noun == "wrench":
                 raise TypeError(
                     f"{name} must be a twist (a joint's motion), got a Wrench"
                 )

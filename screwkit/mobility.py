@@ -37,7 +37,6 @@ from .systems import ScrewSystem, html_table, latex_table
 
 __all__ = ["mobility", "Mobility", "grubler_kutzbach"]
 
-_SWAP = [3, 4, 5, 0, 1, 2]
 _AXES = "xyz"
 
 
@@ -115,7 +114,7 @@ class Mobility:
 
     def _repr_latex_(self):
         lines = [
-            rf"\text{{{name} ({s.kind.kind} {s.rank}-system)}} & "
+            rf"\text{{{name} ({s.noun} {s.rank}-system)}} & "
             f"{latex_table(s.basis())}"
             for name, s in self._systems()
         ]
@@ -138,8 +137,7 @@ class Mobility:
                 '<td style="vertical-align:top">'
                 + html_table(
                     s.basis(),
-                    (f"{prefix} {i}: " if prefix else "")
-                    + f"{s.kind.kind} {s.rank}-system",
+                    (f"{prefix} {i}: " if prefix else "") + f"{s.noun} {s.rank}-system",
                 )
                 + "</td>"
                 for i, s in enumerate(systems, 1)
@@ -278,80 +276,29 @@ def mobility(limbs, at=None, tol=None):
         [_twist(joint, i, j) for j, joint in enumerate(limb)]
         for i, limb in enumerate(limbs)
     ]
-    if _numeric.has_floats(
+    numeric = _numeric.has_floats(
         [e for limb in twists for t in limb for e in _exact.entries(t.vector)]
-    ):
-        return _mobility_of_floats(limbs, twists, tol)
-
-    # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own
-    # symbols.
-    lts, lws, lts_ranks = [], [], []
-    for limb in twists:
-        rows = [_exact.entries(t.vector) for t in limb]
-        F = _exact.Field([e for row in rows for e in row])
-        M = F.matrix(rows)
-        independent = F.independent_rows(M)
-        N = _exact.null_space(F, M.extract(list(range(M.shape[0])), _SWAP), independent)
-        wrenches = [
-            Wrench._checked(sp.Matrix(6, 1, [F.to_sympy(e) for e in row]))
-            for row in N.to_list()
-        ]
-        lts.append(
-            ScrewSystem(
-                limb, kind=Twist, _field=F, _rank=len(independent), _floats=False
-            )
-        )
-        lts_ranks.append(len(independent))
-        lws.append(
-            ScrewSystem(
-                wrenches,
-                kind=Wrench,
-                _rank=len(wrenches),
-                _basis=wrenches,
-                _floats=False,
-            )
-        )
-
-    # Steps 3 and 4: the platform's constraints, and the motions they leave.
-    constraints = [w for system in lws for w in system.screws]
-    pws = ScrewSystem(constraints, kind=Wrench, _floats=False)
-    pws = ScrewSystem(
-        pws.basis(),
-        kind=Wrench,
-        _field=pws.field,
-        _rank=pws.rank,
-        _basis=pws.basis(),
-        _floats=False,
     )
-    pts = pws.reciprocal()
-    basis = pts.basis()
-    rotations = _exact.generic_rank([list(t.primary) for t in basis]) if basis else 0
-    return _result(limbs, lts, lws, pws, pts, lts_ranks, rotations)
-
-
-def _mobility_of_floats(limbs, twists, tol):
-    """The four steps by SVD with the relative tolerance ``tol``
-    (limbs given with floats)."""
-    for limb in twists:
-        _numeric.to_array(
-            [list(t.vector) for t in limb], "limbs"
-        )  # floats with symbols: refused
+    if numeric:  # floats with symbols are refused here, naming the limbs
+        for limb in twists:
+            _numeric.to_array([list(t.vector) for t in limb], "limbs")
+    # Steps 1 and 2, limb by limb: each limb in the smallest field that holds its own
+    # symbols (exact), or by SVD (floats).
     lts = [ScrewSystem(limb, kind=Twist, tol=tol) for limb in twists]
     lws = [system.reciprocal() for system in lts]
-    pws = ScrewSystem(
-        [w for system in lws for w in system.screws], kind=Wrench, tol=tol
-    )
-    pws = ScrewSystem(
-        pws.basis(), kind=Wrench, tol=tol, _rank=pws.rank, _basis=pws.basis()
-    )
+    # Steps 3 and 4: the platform's constraints, and the motions they leave.
+    constraints = [w for system in lws for w in system.screws]
+    pws = ScrewSystem(constraints, kind=Wrench, tol=tol).reduced()
     pts = pws.reciprocal()
     basis = pts.basis()
-    angular = np.array([[float(e) for e in t.primary] for t in basis]).reshape(
-        len(basis), 3
-    )
-    return _result(
-        limbs, lts, lws, pws, pts, [s.rank for s in lts], _numeric.rank(angular, tol)
-    )
+    if numeric:
+        angular = np.array([[float(e) for e in t.primary] for t in basis])
+        rotations = _numeric.rank(angular.reshape(len(basis), 3), tol)
+    else:
+        rotations = (
+            _exact.generic_rank([list(t.primary) for t in basis]) if basis else 0
+        )
+    return _result(limbs, lts, lws, pws, pts, [s.rank for s in lts], rotations)
 
 
 def _limb_symbols(limbs):

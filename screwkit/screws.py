@@ -35,7 +35,8 @@ class Screw:
     """A screw as an exact 6-vector [angular; linear]; see Twist and Wrench for the
     typed kinds."""
 
-    kind = "screw"
+    #: the kind of screw as a word, for messages and captions
+    noun = "screw"
 
     def __init__(self, vector):
         self.vector = as_sympy_matrix(vector, "vector", (6, 1))
@@ -92,7 +93,7 @@ class Screw:
         """The zero screw has no axis: its pitch, direction and point are undefined."""
         if all(sp.simplify(e) == 0 for e in self.vector):
             raise ValueError(
-                f"the {quantity} of the zero {self.kind} is undefined: it has no "
+                f"the {quantity} of the zero {self.noun} is undefined: it has no "
                 "axis (every coordinate is 0)"
             )
 
@@ -143,13 +144,13 @@ class Screw:
     def _same_kind(self, other, operation):
         if not isinstance(other, Screw):
             raise TypeError(
-                f"cannot {operation} a {self.kind} and {describe(other)}: the other "
-                f"operand must be a {self.kind} too (Twist.from_vector, "
+                f"cannot {operation} a {self.noun} and {describe(other)}: the other "
+                f"operand must be a {self.noun} too (Twist.from_vector, "
                 "Wrench.from_vector make one from a 6-vector)"
             )
         if type(other) is not type(self):
             raise TypeError(
-                f"cannot {operation} a {self.kind} and a {other.kind}: they live in "
+                f"cannot {operation} a {self.noun} and a {other.noun}: they live in "
                 "different spaces (use @ for the reciprocal product)"
             )
         return True
@@ -174,12 +175,12 @@ class Screw:
     def __mul__(self, scalar):
         if isinstance(scalar, Screw):
             raise TypeError(
-                f"cannot multiply a {self.kind} by a {scalar.kind}: a {self.kind} must "
+                f"cannot multiply a {self.noun} by a {scalar.noun}: a {self.noun} must "
                 "be scaled by one number (use @ for the reciprocal product)"
             )
         if isinstance(scalar, (sp.MatrixBase, list, tuple, np.ndarray)):
             raise TypeError(
-                f"a {self.kind} is scaled by one number, got {describe(scalar)}"
+                f"a {self.noun} is scaled by one number, got {describe(scalar)}"
             )
         return type(self)(self.vector * as_sympy_scalar(scalar, "scalar"))
 
@@ -191,7 +192,7 @@ class Screw:
         if not isinstance(other, Screw):
             raise TypeError(
                 f"the reciprocal product @ takes two screws (a twist and a wrench), "
-                f"got a {self.kind} and {describe(other)}"
+                f"got a {self.noun} and {describe(other)}"
             )
         return sp.expand(
             self.primary.dot(other.secondary) + self.secondary.dot(other.primary)
@@ -233,7 +234,8 @@ class Screw:
 class Twist(Screw):
     """A twist (w; v): a joint's motion, or a platform's instantaneous motion."""
 
-    kind = "twist"
+    #: the kind of screw as a word, for messages and captions
+    noun = "twist"
 
     def exp(self, theta):
         """The rigid motion exp([V] theta) (4, 4) of moving ``theta`` along this twist.
@@ -253,4 +255,5 @@ class Twist(Screw):
 class Wrench(Screw):
     """A wrench (f; m): a force and moment, or a constraint a limb applies."""
 
-    kind = "wrench"
+    #: the kind of screw as a word, for messages and captions
+    noun = "wrench"

@@ -22,6 +22,7 @@ symbols are refused with a message saying how to write them exactly.
 import sympy as sp
 
 from . import _exact, _numeric
+from ._checks import describe
 from .screws import Screw, Twist, Wrench
 
 __all__ = ["ScrewSystem"]
@@ -39,26 +40,15 @@ class ScrewSystem:
 
     Parameters
     ----------
-    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples as
-    in
-        the mobility paper's zeroth step (s, r in m, h in m/rad or sympy.oo)
+    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples
+        as in the mobility paper's zeroth step (s, r in m, h in m/rad or sympy.oo)
     kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for
-    vectors)
+        vectors)
     tol : relative tolerance of the rank when the screws hold floats (SVD; default
-    1e-9);
-        exact screws ignore it
+        1e-9); exact screws ignore it
     """
 
-    def __init__(
-        self,
-        screws,
-        kind=None,
-        tol=None,
-        _field=None,
-        _rank=None,
-        _basis=None,
-        _floats=None,
-    ):
+    def __init__(self, screws, kind=None, tol=None):
         if isinstance(screws, ScrewSystem):
             screws = screws.screws
         if not isinstance(screws, (list, tuple)):
@@ -72,23 +62,42 @@ class ScrewSystem:
         if len(kinds) > 1:
             raise TypeError(
                 "a screw system holds one kind of screw, got "
-                f"{sorted(k.kind for k in kinds)}"
+                f"{sorted(k.noun for k in kinds)}"
             )
         self.kind = kind or (kinds.pop() if kinds else Twist)
         self.tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
         self.screws = [self._as_screw(s, i) for i, s in enumerate(screws)]
-        if _floats is None:  # mobility() knows, and says so
-            _floats = _numeric.has_floats(
-                [e for s in self.screws for e in _exact.entries(s.vector)]
-            )
-        self.numeric = _floats
+        self.numeric = _numeric.has_floats(
+            [e for s in self.screws for e in _exact.entries(s.vector)]
+        )
         if self.numeric:
             self._array = _numeric.to_array(
                 [list(s.vector) for s in self.screws], "screws"
             )
-        self._field = _field
-        self._rank = _rank
-        self._basis = _basis
+        self._field = self._independent = self._basis = self._rank = None
+
+    @classmethod
+    def _of_basis(cls, basis, kind, tol, field=None):
+        """The system spanned by ``basis``, screws already independent and reduced (the
+        results of basis() and reciprocal(), whose rank and basis are known). Numeric
+        when an entry is a float, as for any system (a basis of integers is exact)."""
+        system = cls.__new__(cls)
+        system.kind, system.tol, system.screws = kind, tol, list(basis)
+        system.numeric = _numeric.has_floats(
+            [e for s in basis for e in _exact.entries(s.vector)]
+        )
+        if system.numeric:
+            system._array = _numeric.to_array([list(s.vector) for s in basis], "screws")
+        system._field = field
+        system._independent = list(range(len(basis)))
+        system._rank = len(basis)
+        system._basis = list(basis)
+        return system
+
+    @property
+    def noun(self):
+        """The kind of screw as a word: 'twist', 'wrench' or 'screw'."""
+        return self.kind.noun
 
     def _as_screw(self, item, index):
         if isinstance(item, Screw):
@@ -119,24 +128,29 @@ class ScrewSystem:
             return sp.zeros(6, 0)
         return sp.Matrix.hstack(*(s.vector for s in self.screws))
 
-    def _domain_matrix(self):
-        return (
-            self.field.matrix([_exact.entries(s.vector) for s in self.screws])
-            if self.screws
-            else None
-        )
+    def _domain_matrix(self, swap=False):
+        order = _swap if swap else list
+        return self.field.matrix([order(_exact.entries(s.vector)) for s in self.screws])
+
+    def _independent_rows(self):
+        """Indices of a largest generically independent set of the (exact) screws."""
+        if self._independent is None:
+            self._independent = (
+                self.field.independent_rows(self._domain_matrix())
+                if self.screws
+                else []
+            )
+        return self._independent
 
     @property
     def rank(self):
         """The order of the system: the number of independent screws, for generic symbol
         values (exact), or by SVD with the tolerance ``tol`` (floats)."""
         if self._rank is None:
-            if not self.screws:
-                self._rank = 0
-            elif self.numeric:
-                self._rank = _numeric.rank(self._array, self.tol)
+            if self.numeric:
+                self._rank = _numeric.rank(self._array, self.tol) if self.screws else 0
             else:
-                self._rank = self.field.rank(self._domain_matrix())
+                self._rank = len(self._independent_rows())
         return self._rank
 
     order = rank
@@ -153,14 +167,17 @@ class ScrewSystem:
                 )
                 self._basis = [self.kind._checked(sp.Matrix(6, 1, row)) for row in rows]
             else:
-                R = _exact.reduced_basis(self.field, self._domain_matrix())
-                self._basis = [
-                    self.kind._checked(
-                        sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])
-                    )
-                    for row in R.to_list()
-                ]
+                R = _exact.reduced_basis(
+                    self.field, self._domain_matrix(), self._independent_rows()
+                )
+                self._basis = [self._from_field(row) for row in R.to_list()]
         return list(self._basis)
+
+    def reduced(self):
+        """The same span with its canonical basis as its screws (rank and basis known):
+        what a system is printed as, and the cheaper one to take further."""
+        field = None if self.numeric else self.field
+        return ScrewSystem._of_basis(self.basis(), self.kind, self.tol, field)
 
     def reciprocal(self):
         """The system of every screw reciprocal to all of these (twists -> wrenches and
@@ -174,17 +191,20 @@ class ScrewSystem:
                 other._checked(sp.Matrix(6, 1, row))
                 for row in _numeric.as_sympy_rows(kernel)
             ]
-            return ScrewSystem(
-                basis, kind=other, tol=self.tol, _rank=len(basis), _basis=basis
-            )
-        M = self.field.matrix([_swap(_exact.entries(s.vector)) for s in self.screws])
-        N = _exact.null_space(self.field, M)
+            return ScrewSystem._of_basis(basis, other, self.tol)
+        # swapping the columns keeps the independent rows: x . swap(y) is reciprocity
+        kernel = _exact.null_space(
+            self.field, self._domain_matrix(swap=True), self._independent_rows()
+        )
         basis = [
             other._checked(sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row]))
-            for row in N.to_list()
+            for row in kernel.to_list()
         ]
-        return ScrewSystem(
-            basis, kind=other, _rank=len(basis), _basis=basis, _floats=False
+        return ScrewSystem._of_basis(basis, other, self.tol)
+
+    def _from_field(self, row):
+        return self.kind._checked(
+            sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])
         )
 
     def union(self, other):
@@ -210,34 +230,33 @@ class ScrewSystem:
     def _check_kind(self, other, operation):
         if not isinstance(other, ScrewSystem):
             raise TypeError(
-                f"{operation} needs another ScrewSystem, got {type(other).__name__}"
+                f"other must be a ScrewSystem (the {operation} is of two systems), "
+                f"got {describe(other)}"
             )
         if other.kind is not self.kind:
             raise TypeError(
-                f"cannot take the {operation} of a {self.kind.kind} system and a "
-                f"{other.kind.kind} system"
+                f"cannot take the {operation} of a {self.noun} system and a "
+                f"{other.noun} system"
             )
 
     def __len__(self):
         return len(self.screws)
 
     def __repr__(self):
-        return f"ScrewSystem({len(self.screws)} {self.kind.kind}s, rank {self.rank})"
+        return f"ScrewSystem({len(self.screws)} {self.noun}s, rank {self.rank})"
 
     def summary(self):
         """The system as plain text: its order and its canonical basis, one screw a
         line."""
         rows = [str(list(s.vector)) for s in self.basis()] or ["(none)"]
-        return "\n".join(
-            [f"{self.kind.kind} {self.rank}-system"] + ["  " + r for r in rows]
-        )
+        return "\n".join([f"{self.noun} {self.rank}-system"] + ["  " + r for r in rows])
 
     def _repr_latex_(self):
-        name = f"{self.kind.kind} {self.rank}-system: "
+        name = f"{self.noun} {self.rank}-system: "
         return f"$\\text{{{name}}}{latex_table(self.basis())}$"
 
     def _repr_html_(self):
-        return html_table(self.basis(), f"{self.kind.kind} {self.rank}-system")
+        return html_table(self.basis(), f"{self.noun} {self.rank}-system")
 
 
 _HEADERS = {Twist: ("ω", "v"), Wrench: ("f", "m"), Screw: ("s", "s₀")}

@@ -592,6 +592,15 @@ MODULES = [
     "mobility",
     "_notation",
     "widgets",
+    "systems",
+    "spherical_wrist",
+    "ur_ik",
+    "stanford_ik",
+    "orientation",
+    "urdf",
+    "exercises",
+    "parallel",
+    "viewer",
 ]
 #: Builders without arguments (the catalogue's fixed models) and accessors of an object
 #: already checked when it was made.

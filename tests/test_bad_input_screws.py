@@ -98,7 +98,7 @@ SYSTEM_CASES = [
     (
         lambda: ScrewSystem([REVOLUTE]).union([REVOLUTE]),
         TypeError,
-        "union needs another ScrewSystem",
+        r"other must be a ScrewSystem \(the union is of two systems\)",
     ),
     (
         lambda: ScrewSystem([REVOLUTE]).union(ScrewSystem([REVOLUTE], kind=Wrench)),
@@ -108,7 +108,7 @@ SYSTEM_CASES = [
     (
         lambda: ScrewSystem([REVOLUTE]).intersection(None),
         TypeError,
-        "intersection needs another ScrewSystem",
+        r"other must be a ScrewSystem \(the intersection is of two systems\)",
     ),
 ]
 

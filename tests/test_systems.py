@@ -154,3 +154,16 @@ def test_refusals_say_why():
         _ = ScrewSystem([[sp.pi, sp.sin(1), 0, 0, 0, 0]]).rank
     with pytest.raises(TypeError, match="cannot decide exactly"):
         _ = ScrewSystem([[sp.cos(sp.E), 1, 0, 0, 0, 0]]).rank
+
+
+def test_reduced_is_the_same_span_written_by_its_basis():
+    # three planar twists about parallel z axes through (0,0), (1,0), (0,1): rank 3,
+    # spanned by Rz, Tx, Ty (by hand: the differences of the axes' twists are Ty, -Tx)
+    system = ScrewSystem([([0, 0, 1], r, 0) for r in ([0, 0, 0], [1, 0, 0], [0, 1, 0])])
+    reduced = system.reduced()
+    assert reduced.screws == system.basis() and reduced.rank == system.rank == 3
+    assert reduced.reciprocal().rank == system.reciprocal().rank == 3
+    for screw in system.screws:
+        assert reduced.contains(screw)
+    assert reduced.kind is Twist and reduced.noun == "twist"
+    assert system.reciprocal().noun == "wrench"
