@@ -162,8 +162,10 @@ def grid_values(low, high, step, name="values"):
     """The grid low, low + step, ..., high (inclusive) as floats; ValueError if it does
     not fit."""
     low, high, step = (float(v) for v in as_float_array([low, high, step], name))
+    if step <= 0:
+        raise ValueError(f"step must be a positive number, got step={step:g}")
     count = (high - low) / step
-    if step <= 0 or high <= low or abs(count - round(count)) > 1e-9:
+    if high <= low or abs(count - round(count)) > 1e-9:
         raise ValueError(
             f"{name} must be a grid low < high with (high - low) a whole number of "
             f"steps > 0, got low={low:g}, high={high:g}, step={step:g}"

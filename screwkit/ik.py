@@ -205,7 +205,7 @@ def analytic_ik_all(chain, T):
     """
     arm = _arm(chain)
     T = check_poses(T, "T")
-    Q, _, _ = arm.solve(T[None] if T.ndim == 2 else T)
+    Q, _, _ = arm._solve_batch(T[None] if T.ndim == 2 else T)
     return Q[0] if T.ndim == 2 else Q
 
 
@@ -244,7 +244,7 @@ def _analytic_ik(arm, chain, T, within_limits, near):
                 f"near must be a joint vector of 6 entries, got shape {near.shape}"
             )
     batch = T if T.ndim == 3 else T[None]
-    Q, flags, code = arm.solve(batch)
+    Q, flags, code = arm._solve_batch(batch)
     limits = chain.qlim
     answers = [
         _answer(arm, batch[k], Q[k], flags[k], code[k], limits, within_limits, near)
@@ -255,7 +255,7 @@ def _analytic_ik(arm, chain, T, within_limits, near):
 
 def _answer(arm, T, Q, flags, code, limits, within_limits, near):
     if code != 0:
-        return IKSolutions([], reason=arm.reason(T, code), structure=_name(arm))
+        return IKSolutions([], reason=arm._reason(T, code), structure=_name(arm))
     names = ("shoulder", "elbow", "wrist")
     moved, inside = _into_limits(Q, limits, getattr(arm, "revolute", None))
     solutions = []
@@ -310,7 +310,7 @@ def configuration(chain, q):
     :mod:`screwkit.stanford_ik`), singular cases included."""
     arm = _arm(chain)
     q = chain.check_q(q)
-    labels = arm.labels(q)
+    labels = arm._labels(q)
     return str(labels) if q.ndim == 1 else labels.tolist()
 
 

@@ -531,7 +531,9 @@ class ParallelManipulator:
             )
         if isinstance(self._legs, Prismatic) and self.planar:
             return _parallel_search.rpr_sextic(self, values)
-        return _parallel_search.multistart(self, values, starts or 400, seed)
+        starts = 400 if starts is None else check_integer(starts, "starts", minimum=1)
+        seed = check_integer(seed, "seed", minimum=0)
+        return _parallel_search.multistart(self, values, starts, seed)
 
     # ---- workspace ------------------------------------------------------------------
 

@@ -49,8 +49,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._checks import check_chain
-from ._compiled import CHUNK
+from ._checks import as_float_array, check_chain
+from ._closed_form import ClosedFormArm
 from .links import Joint
 from .subproblems import _cross_fixed as _cross3
 from .subproblems import _dot_batch as _dot
@@ -174,7 +174,7 @@ class _Rotor:
 
 
 @dataclass(frozen=True)
-class SphericalWristArm:
+class SphericalWristArm(ClosedFormArm):
     """The geometry of a 6R arm with a spherical wrist, taken from its screws
     (m, unit w_i).
 
@@ -272,7 +272,7 @@ class SphericalWristArm:
         elbow = _rotate(w[1], q2, np.broadcast_to(p[2] - p[1], q2.shape + (3,)))
         return w1, elbow
 
-    def measures(self, q):
+    def _measures(self, q):
         """(forward, elbow, wrist) of q (..., 6): the signed measures the labels
         test."""
         w, p = self.w, self.p
@@ -286,7 +286,11 @@ class SphericalWristArm:
 
     def wrist_sine(self, q5):
         """``|w4 x R(w5, q5) w6|``: the sine of the angle between axes 4 and 6 at q5
-        (...), the measure of the wrist singularity (see :data:`WRIST_TOL`)."""
+        (..., rad), the measure of the wrist singularity (see :data:`WRIST_TOL`)."""
+        return self._wrist_sine(as_float_array(q5, "q5"))
+
+    def _wrist_sine(self, q5):
+        """:meth:`wrist_sine` of a float array q5 (...)."""
         w4, w5, w6 = self.w[3], self.w[4], self.w[5]
         c5, s5 = np.cos(q5)[..., None], np.sin(q5)[..., None]
         across = (
@@ -296,13 +300,13 @@ class SphericalWristArm:
         )
         return np.linalg.norm(across, axis=-1)
 
-    def labels(self, q):
+    def _labels(self, q):
         """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
-        forward, above, flip = self.measures(q)
+        forward, above, flip = self._measures(q)
         tol = CLIP_TOL * self.scale
         right = forward >= -tol
         up = np.where(right, above, -above) > tol * self.scale
-        singular = self.wrist_sine(q[..., 4]) <= WRIST_TOL
+        singular = self._wrist_sine(q[..., 4]) <= WRIST_TOL
         flipped = np.where(singular, np.cos(q[..., 3]) >= 0, flip > 0)
         arm = np.where(right, "r", "l")
         return np.char.add(
@@ -310,23 +314,6 @@ class SphericalWristArm:
         )
 
     # ---- the closed form -------------------------------------------------------------
-
-    def solve(self, T):
-        """All eight solutions of the poses T (N, 4, 4), in the order of CONFIGURATIONS.
-
-        Returns Q (N, 8, 6) in (-pi, pi], NaN where a branch does not reach the pose;
-        the singularity flags (N, 8, 3) (shoulder, elbow, wrist); and the reason code
-        per pose (N,): 0 reached, 1 shoulder offset, 2 out of the arm's reach, 3 wrist
-        orientation.
-        """
-        N = T.shape[0]
-        Q = np.empty((N, 8, 6))
-        flags = np.empty((N, 8, 3), dtype=bool)
-        code = np.empty(N, dtype=int)
-        for start in range(0, N, CHUNK):
-            part = slice(start, start + CHUNK)
-            Q[part], flags[part], code[part] = self._solve(T[part])
-        return Q, flags, code
 
     def _solve(self, T):
         """The closed form of the poses T (N, 4, 4), one named step per joint group.
@@ -541,7 +528,7 @@ class SphericalWristArm:
         )
         return Q, flags.reshape(N, 8, 3), code
 
-    def reason(self, T, code):
+    def _reason(self, T, code):
         """A sentence for an unreachable pose T (4, 4) with reason code 1, 2 or 3."""
         w, p, c = self.w, self.p, self.c
         G = T @ inv(self.home)

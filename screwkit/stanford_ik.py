@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import check_chain
+from ._closed_form import ClosedFormArm
 from .transforms import _wrap_angle, inv
 
 __all__ = ["StanfordArm", "STRUCTURE"]
@@ -42,8 +43,6 @@ STRUCTURE = "RRP arm with a spherical wrist (Stanford)"
 CLIP_TOL = 1e-10
 #: A solution is flagged singular when its measure is below this.
 SINGULAR_TOL = 1e-9
-#: Poses per chunk of a batch.
-CHUNK = 4096
 
 
 def _angle_about(w, a, b):
@@ -74,7 +73,7 @@ def _two_axes(w1, w2, x, y):
 
 
 @dataclass(frozen=True)
-class StanfordArm:
+class StanfordArm(ClosedFormArm):
     """The geometry of an RRP arm with a spherical wrist, from its screws: directions
     ``w`` (6, 3; w[2] is the prismatic direction v), points ``p`` (6, 3), the meeting
     point ``o`` of axes 1 and 2, the wrist centre ``c``, ``home`` M (4, 4) (m).
@@ -149,7 +148,7 @@ class StanfordArm:
 
     # ---- labels ---------------------------------------------------------------------
 
-    def measures(self, q):
+    def _measures(self, q):
         """(forward, boom, flip) of q (..., 6): the signed measures the labels test."""
         w, o, c = self.w, self.o, self.c
         q = np.asarray(q, dtype=float)
@@ -162,9 +161,9 @@ class StanfordArm:
         flip = A * np.cos(q[..., 4]) + B * np.sin(q[..., 4])
         return forward, boom, flip
 
-    def labels(self, q):
+    def _labels(self, q):
         """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
-        forward, boom, flip = self.measures(q)
+        forward, boom, flip = self._measures(q)
         tol = CLIP_TOL * self.scale
         arm = np.where(forward >= -tol * self.scale, "r", "l")
         elbow = np.where(boom >= -tol, "u", "d")
@@ -172,21 +171,6 @@ class StanfordArm:
         return np.char.add(np.char.add(arm, elbow), wrist)
 
     # ---- the closed form ------------------------------------------------------------
-
-    def solve(self, T):
-        """All eight solutions of the poses T (N, 4, 4), in the order of CONFIGURATIONS
-        (arm l/r, boom u/d, wrist n/f): Q (N, 8, 6), revolute angles in (-pi, pi], q3 in
-        m, NaN where a branch does not reach the pose; the singularity flags (N, 8, 3)
-        (shoulder, boom, wrist); and a reason code per pose (N,): 0 reached, 1 shoulder,
-        2 out of the boom's reach, 3 wrist orientation."""
-        N = T.shape[0]
-        Q = np.empty((N, 8, 6))
-        flags = np.empty((N, 8, 3), dtype=bool)
-        code = np.empty(N, dtype=int)
-        for start in range(0, N, CHUNK):
-            part = slice(start, start + CHUNK)
-            Q[part], flags[part], code[part] = self._solve(T[part])
-        return Q, flags, code
 
     def _solve(self, T):
         w, o, c = self.w, self.o, self.c
@@ -265,7 +249,7 @@ class StanfordArm:
         )
         return Q, flags.reshape(N, 8, 3), code
 
-    def reason(self, T, code):
+    def _reason(self, T, code):
         """A sentence for an unreachable pose T (4, 4) with reason code 1, 2 or 3."""
         G = T @ inv(self.home)
         y = G[:3, :3] @ self.c + G[:3, 3] - self.o

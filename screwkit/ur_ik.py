@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import check_chain
+from ._closed_form import ClosedFormArm
 from .chains import Joint
 from .transforms import _wrap_angle, inv
 
@@ -51,8 +52,6 @@ STRUCTURE = "UR-type (joints 2, 3, 4 parallel, axes 5 and 6 meet)"
 CLIP_TOL = 1e-10
 #: A solution is flagged singular when its measure is below this (see spherical_wrist).
 SINGULAR_TOL = 1e-9
-#: Poses per chunk of a batch.
-CHUNK = 4096
 
 
 def _cross_matrix(w):
@@ -88,7 +87,7 @@ def _roots(A, B, C):
 
 
 @dataclass(frozen=True)
-class URArm:
+class URArm(ClosedFormArm):
     """The geometry of a UR-type arm, from its screws: axis directions ``w`` (6, 3),
     points ``p`` (6, 3), the meeting point ``c`` of axes 5 and 6, ``home`` M (4, 4) (m).
 
@@ -154,7 +153,7 @@ class URArm:
 
     # ---- labels ---------------------------------------------------------------------
 
-    def measures(self, q):
+    def _measures(self, q):
         """(forward, above, flip) of q (..., 6): the signed measures the labels test."""
         w, p, c, u = self.w, self.p, self.c, self.w[1]
         q = np.asarray(q, dtype=float)
@@ -175,9 +174,9 @@ class URArm:
         flip = np.cross(w[3], w6) @ w[4]
         return forward, above, flip
 
-    def labels(self, q):
+    def _labels(self, q):
         """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
-        forward, above, flip = self.measures(q)
+        forward, above, flip = self._measures(q)
         tol = CLIP_TOL * self.scale
         arm = np.where(forward >= -tol, "r", "l")
         elbow = np.where(above > tol * self.scale, "u", "d")
@@ -185,21 +184,6 @@ class URArm:
         return np.char.add(np.char.add(arm, elbow), wrist)
 
     # ---- the closed form ------------------------------------------------------------
-
-    def solve(self, T):
-        """All eight solutions of the poses T (N, 4, 4), in the order of CONFIGURATIONS
-        (arm l/r, elbow u/d, wrist n/f): Q (N, 8, 6) in (-pi, pi], NaN where a branch
-        does not reach the pose; the singularity flags (N, 8, 3) (shoulder, elbow,
-        wrist); and a reason code per pose (N,): 0 reached, 1 shoulder offset, 2 out of
-        the arm's reach, 3 wrist orientation."""
-        N = T.shape[0]
-        Q = np.empty((N, 8, 6))
-        flags = np.empty((N, 8, 3), dtype=bool)
-        code = np.empty(N, dtype=int)
-        for start in range(0, N, CHUNK):
-            part = slice(start, start + CHUNK)
-            Q[part], flags[part], code[part] = self._solve(T[part])
-        return Q, flags, code
 
     def _solve(self, T):
         w, p, c = self.w, self.p, self.c
@@ -326,7 +310,7 @@ class URArm:
         )
         return Q, flags.reshape(N, 8, 3), code
 
-    def reason(self, T, code):
+    def _reason(self, T, code):
         """A sentence for an unreachable pose T (4, 4) with reason code 1, 2 or 3."""
         w, p, c = self.w, self.p, self.c
         G = T @ inv(self.home)

@@ -96,7 +96,10 @@ def _parse(source):
     try:
         root = ET.fromstring(text)
     except ET.ParseError as error:
-        raise ValueError(f"source is not well-formed XML ({where}): {error}") from None
+        raise ValueError(
+            f"source must be well-formed XML (URDF), got text that is not well-formed "
+            f"XML ({where}): {error}"
+        ) from None
     if root.tag != "robot":
         raise ValueError(
             f"source must be a URDF with a <robot> root element, got <{root.tag}>"
@@ -320,8 +323,10 @@ def read_urdf(source, base_link=None, tip_link=None):
 def data_file(name):
     """The path of a URDF shipped with screwkit (``'ur5e.urdf'``: the UR5e written from
     Universal Robots' published DH parameters)."""
+    if not isinstance(name, str):
+        raise TypeError(f"name must be a file name (str), got {describe(name)}")
     folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
-    path = os.path.join(folder, name) if isinstance(name, str) else ""
+    path = os.path.join(folder, name)
     if not os.path.isfile(path):
         shipped = sorted(os.listdir(folder))
         raise ValueError(

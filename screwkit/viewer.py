@@ -31,6 +31,7 @@ from . import _sliders
 from ._checks import (
     as_float_array,
     check_chain,
+    check_flag,
     check_positive,
     check_shape,
     check_transform,
@@ -171,6 +172,8 @@ class Viewer:
         carries them while none has been displayed, since Lab may draw the widget
         instead. Stepped figures need no three.js and always carry ``viewer.js``.
         """
+        if library is not None:
+            library = check_flag(library, "library")
         needs = self.model["kind"] != "steps"
         if library is None:
             library = self._carries_library
@@ -209,6 +212,8 @@ class Viewer:
     def page(self, title=None):
         """A whole HTML page holding this figure and three.js (for a file or a
         browser)."""
+        if title is not None and not isinstance(title, str):
+            raise TypeError(f"title must be a str or None, got {describe(title)}")
         title = html.escape(title or self.model.get("name") or "screwkit viewer")
         return (
             '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8">'

@@ -45,6 +45,7 @@ ORDER = [
         "algorithms",
         [
             "jacobians",
+            "_closed_form",
             "spherical_wrist",
             "ur_ik",
             "stanford_ik",
