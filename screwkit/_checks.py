@@ -197,6 +197,24 @@ def as_real_scalar(value, name):
     return float(array)
 
 
+def real_number(value, name, what="a real number"):
+    """One finite real number (not a bool, text, None or complex): an int stays an int,
+    anything else float() takes becomes a float."""
+    if (
+        isinstance(value, (bool, np.bool_, str, bytes))
+        or value is None
+        or isinstance(value, (complex, np.complexfloating))
+    ):
+        raise TypeError(f"{name} must be {what}, got {describe(value)}")
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be {what}, got {describe(value)}") from None
+    if not np.isfinite(number):
+        raise ValueError(f"{name} must be finite, got {number}")
+    return int(value) if isinstance(value, (int, np.integer)) else number
+
+
 def check_positive(value, name, allow_zero=False):
     """One finite real number > 0 (or >= 0 with ``allow_zero``), as a float."""
     number = as_real_scalar(value, name)

@@ -13,7 +13,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
 
-from ._checks import describe
+from ._checks import describe, real_number
+from .limbs import check_limbs
 from .screws import Screw, Wrench
 
 __all__ = ["draw_mechanism"]
@@ -57,19 +58,7 @@ def _check_values(limbs, values):
                 f"values gives a number for {name!r}, which is not a symbol of the "
                 f"limbs (their symbols are {sorted(by_name)})"
             )
-        if isinstance(value, (str, bytes, bool)) or value is None:
-            raise TypeError(
-                f"values[{name!r}] must be a real number, got {describe(value)}"
-            )
-        try:
-            number = float(value)
-        except (TypeError, ValueError):
-            raise TypeError(
-                f"values[{name!r}] must be a real number, got {describe(value)}"
-            ) from None
-        if not np.isfinite(number):
-            raise ValueError(f"values[{name!r}] must be finite, got {value!r}")
-        numbers[by_name[name]] = number
+        numbers[by_name[name]] = float(real_number(value, f"values[{name!r}]"))
     missing = sorted(name for name, x in by_name.items() if x not in numbers)
     if missing:
         raise ValueError(
@@ -78,25 +67,6 @@ def _check_values(limbs, values):
             + ": give every symbol of the limbs a number"
         )
     return numbers
-
-
-def _check_limbs(limbs):
-    if not isinstance(limbs, (list, tuple)) or not limbs:
-        raise ValueError(
-            f"limbs must be a non-empty list of limbs, got {describe(limbs)}"
-        )
-    for i, limb in enumerate(limbs):
-        if not isinstance(limb, (list, tuple)) or not limb:
-            raise ValueError(
-                f"limb {i} has no joints: each limb must be a non-empty list of "
-                f"(s, r, h) joint screws, got {limb!r}"
-            )
-        for j, joint in enumerate(limb):
-            if not isinstance(joint, (list, tuple)) or len(joint) != 3:
-                raise TypeError(
-                    f"limb {i}, joint {j} must be an (s, r, h) triple, got "
-                    f"{describe(joint)}"
-                )
 
 
 def _numeric(vector, numbers, name):
@@ -109,7 +79,7 @@ def _numeric(vector, numbers, name):
 def evaluate(limbs, values):
     """The joints at these values: per limb a list of (kind, unit axis (3,), point (3,))
     in m."""
-    _check_limbs(limbs)
+    check_limbs(limbs, twists=False)
     numbers = _check_values(limbs, values)
     result = []
     for i, limb in enumerate(limbs):

@@ -74,15 +74,7 @@ def stewart_gough(base, platform, height, leg_limits):
     platform = _geometry(platform, "platform", 6, 3, STEWART_PLATFORM)
     height = as_sympy_scalar(height, "height")
     home = sp.Matrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, height], [0, 0, 0, 1]])
-    return dict(
-        name="Stewart-Gough 6-UPS",
-        legs=Prismatic(base, planar=False),
-        base=base,
-        platform=platform,
-        motion="spatial",
-        home=home,
-        leg_limits=leg_limits,
-    )
+    return _prismatic_legs("Stewart-Gough 6-UPS", base, platform, home, leg_limits)
 
 
 def planar_3rpr(base, platform, home, leg_limits):
@@ -93,12 +85,18 @@ def planar_3rpr(base, platform, home, leg_limits):
             sp.Matrix([sp.Rational(3, 10), sp.Rational(17, 20), 0])
         )
         home = home.col_join(sp.Matrix([[0, 0, 0, 1]]))
+    return _prismatic_legs("3-RPR", base, platform, home, leg_limits, planar=True)
+
+
+def _prismatic_legs(name, base, platform, home, leg_limits, planar=False):
+    """The description of a mechanism whose legs are prismatic (the actuated lengths
+    between base point i and platform point i)."""
     return dict(
-        name="3-RPR",
-        legs=Prismatic(base, planar=True),
+        name=name,
+        legs=Prismatic(base, planar=planar),
         base=base,
         platform=platform,
-        motion="planar",
+        motion="planar" if planar else "spatial",
         home=home,
         leg_limits=leg_limits,
     )

@@ -43,20 +43,13 @@ from functools import lru_cache
 
 import numpy as np
 
+from . import subproblems
 from ._checks import as_float_array, check_chain, check_flag, check_poses
 from ._newton import NumericIKResult, numeric_ik, pose_error
 from .robots import puma560
 from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
 from .stanford_ik import StanfordArm
-from .subproblems import (
-    Solutions,
-    subproblem1,
-    subproblem1_prismatic,
-    subproblem2,
-    subproblem3,
-    subproblem3_prismatic,
-    subproblem4,
-)
+from .subproblems import *  # noqa: F403 (the Paden-Kahan subproblems, as sk.ik.*)
 from .transforms import _wrap_angle
 from .ur_ik import URArm
 
@@ -73,16 +66,10 @@ __all__ = [
     "NumericIKResult",
     "numeric_ik",
     "pose_error",
-    "Solutions",
-    "subproblem1",
-    "subproblem2",
-    "subproblem3",
-    "subproblem4",
-    "subproblem1_prismatic",
-    "subproblem3_prismatic",
     "SINGULAR_TOL",
     "STRUCTURES",
     "structure",
+    *subproblems.__all__,
 ]
 
 

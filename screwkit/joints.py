@@ -5,26 +5,5 @@ the DH rows (``Link.revolute``); the builders of (s, r, h) limbs are
 :mod:`screwkit.limbs`: ``sk.joints.revolute`` is ``sk.limbs.revolute``.
 """
 
-from .limbs import (
-    cylindrical,
-    helical,
-    parallelogram,
-    prismatic,
-    revolute,
-    rotate_limb,
-    spherical,
-    translate_limb,
-    universal,
-)
-
-__all__ = [
-    "revolute",
-    "prismatic",
-    "helical",
-    "cylindrical",
-    "universal",
-    "spherical",
-    "parallelogram",
-    "rotate_limb",
-    "translate_limb",
-]
+from .limbs import *  # noqa: F403 (the alias re-exports every limb builder)
+from .limbs import __all__  # noqa: F401

@@ -18,6 +18,7 @@ import random
 import sympy as sp
 
 from ._checks import as_sympy_matrix, as_sympy_scalar, check_rotation, describe
+from .screws import Screw, Wrench
 
 __all__ = [
     "revolute",
@@ -210,3 +211,33 @@ def translate_limb(limb, p):
     _check_limb(limb)
     p = _vec(p, "p")
     return [(_vec(s, "s"), _vec(r, "r") + p, h) for s, r, h in limb]
+
+
+def check_limbs(limbs, twists=True):
+    """``limbs`` as given if it is a non-empty list of non-empty limbs, each joint an
+    (s, r, h) triple (or a Twist, with ``twists``); else the error naming the limb and
+    joint at fault."""
+    if not isinstance(limbs, (list, tuple)) or not limbs:
+        raise ValueError(
+            f"limbs must be a non-empty list of limbs, got {describe(limbs)}"
+        )
+    expected = "an (s, r, h) triple or a Twist" if twists else "an (s, r, h) triple"
+    for i, limb in enumerate(limbs):
+        if not isinstance(limb, (list, tuple)) or not limb:
+            raise ValueError(
+                f"limb {i} must be a non-empty list of (s, r, h) joint screws, got "
+                f"{limb!r}"
+            )
+        for j, joint in enumerate(limb):
+            if twists and isinstance(joint, Screw):
+                if isinstance(joint, Wrench):
+                    raise TypeError(
+                        f"limb {i}, joint {j} is a wrench; a limb is made of joint "
+                        "twists"
+                    )
+                continue
+            if not isinstance(joint, (list, tuple)) or len(joint) != 3:
+                raise TypeError(
+                    f"limb {i}, joint {j} must be {expected}, got {describe(joint)}"
+                )
+    return limbs

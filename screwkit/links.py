@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from ._checks import as_float_array, check_transform, describe
+from ._checks import as_float_array, check_transform, describe, real_number
 from .screws import Screw
 
 __all__ = ["Joint", "Convention", "Link"]
@@ -66,23 +66,7 @@ def _check_parameter(value, name):
                 f"{name} must be a finite real number or SymPy expression, got {value}"
             )
         return value
-    if (
-        isinstance(value, (bool, str, bytes))
-        or value is None
-        or isinstance(value, (complex, np.complexfloating))
-    ):
-        raise TypeError(
-            f"{name} must be a real number (m or rad), got {describe(value)}"
-        )
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise TypeError(
-            f"{name} must be a real number (m or rad), got {describe(value)}"
-        ) from None
-    if not np.isfinite(number):
-        raise ValueError(f"{name} must be finite, got {number}")
-    return int(value) if isinstance(value, (int, np.integer)) else number
+    return real_number(value, name, "a real number (m or rad)")
 
 
 @dataclass(frozen=True)

@@ -32,6 +32,7 @@ import sympy as sp
 
 from . import _exact, _numeric
 from ._checks import as_sympy_matrix, as_sympy_scalar, describe
+from .limbs import check_limbs
 from .screws import Screw, Twist, Wrench, axis_coordinates
 from .systems import ScrewSystem, html_table, latex_table
 
@@ -166,30 +167,6 @@ class Mobility:
         }
 
 
-def _check_limbs(limbs):
-    if not isinstance(limbs, (list, tuple)) or not limbs:
-        raise ValueError(f"limbs must be a non-empty list of limbs, got {limbs!r}")
-    for i, limb in enumerate(limbs):
-        if not isinstance(limb, (list, tuple)) or not limb:
-            raise ValueError(
-                f"limb {i} must be a non-empty list of (s, r, h) joint screws, got "
-                f"{limb!r}"
-            )
-        for j, joint in enumerate(limb):
-            if isinstance(joint, Screw):
-                if isinstance(joint, Wrench):
-                    raise TypeError(
-                        f"limb {i}, joint {j} is a wrench; a limb is made of joint "
-                        "twists"
-                    )
-                continue
-            if not isinstance(joint, (list, tuple)) or len(joint) != 3:
-                raise TypeError(
-                    f"limb {i}, joint {j} must be an (s, r, h) triple or a Twist, got "
-                    f"{joint!r}"
-                )
-
-
 _NOT_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 
 
@@ -271,7 +248,7 @@ def mobility(limbs, at=None, tol=None):
     tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
     if at is not None:
         return _at_configuration(limbs, at, tol)
-    _check_limbs(limbs)
+    check_limbs(limbs)
     twists = [
         [_twist(joint, i, j) for j, joint in enumerate(limb)]
         for i, limb in enumerate(limbs)
@@ -358,7 +335,7 @@ def _check_at(limbs, at):
 def _at_configuration(limbs, at, tol):
     """The mobility at the values ``at``, with notes comparing it with the general
     configuration."""
-    _check_limbs(limbs)
+    check_limbs(limbs)
     values = _check_at(limbs, at)
 
     def substitute(joint):

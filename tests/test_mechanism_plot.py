@@ -93,7 +93,7 @@ def test_every_text_of_a_mechanism_drawing_is_at_least_9_pt_in_the_course_style(
 @pytest.mark.parametrize(
     "limbs, values, error, phrase",
     [
-        ([[]], {}, ValueError, "limb 0 has no joints"),
+        ([[]], {}, ValueError, "limb 0 must be a non-empty list"),
         ([], {}, ValueError, "limbs must be a non-empty list"),
         (
             sk.robots.planar_3rrr(),
