@@ -102,14 +102,16 @@ def _prismatic_legs(name, base, platform, home, leg_limits, planar=False):
     )
 
 
+def _three_arms(base_radius, platform_radius, l1, l2):
+    """Base and platform points on circles at 0, 120 and 240 degrees, and the two arm
+    lengths: the checked geometry of the 3-RRR and the Delta (m)."""
+    base = _circle(_length(base_radius, "base_radius"), [0, 120, 240])
+    platform = _circle(_length(platform_radius, "platform_radius"), [0, 120, 240])
+    return base, platform, _length(l1, "l1"), _length(l2, "l2")
+
+
 def planar_3rrr(base_radius, platform_radius, l1, l2):
-    base_radius, platform_radius = (
-        _length(base_radius, "base_radius"),
-        _length(platform_radius, "platform_radius"),
-    )
-    l1, l2 = _length(l1, "l1"), _length(l2, "l2")
-    base = _circle(base_radius, [0, 120, 240])
-    platform = _circle(platform_radius, [0, 120, 240])
+    base, platform, l1, l2 = _three_arms(base_radius, platform_radius, l1, l2)
     z, x = [0, 0, 1], [1, 0, 0]
     legs = Revolute(base, [z] * 3, [x] * 3, l1, l2, spatial=False)
     return dict(
@@ -123,13 +125,7 @@ def planar_3rrr(base_radius, platform_radius, l1, l2):
 
 
 def delta(base_radius, platform_radius, l1, l2, height):
-    base_radius, platform_radius = (
-        _length(base_radius, "base_radius"),
-        _length(platform_radius, "platform_radius"),
-    )
-    l1, l2 = _length(l1, "l1"), _length(l2, "l2")
-    base = _circle(base_radius, [0, 120, 240])
-    platform = _circle(platform_radius, [0, 120, 240])
+    base, platform, l1, l2 = _three_arms(base_radius, platform_radius, l1, l2)
     radial = _circle(1, [0, 120, 240])
     tangent = [[-r[1], r[0], 0] for r in radial]
     home = sp.eye(4)
