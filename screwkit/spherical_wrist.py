@@ -55,7 +55,7 @@ from .links import Joint
 from .subproblems import _cross_fixed as _cross3
 from .subproblems import _dot_batch as _dot
 from .subproblems import distance_angles, plane_angles
-from .transforms import _skew, _wrap_angle, inv
+from .transforms import _rotate_vectors, _skew, _wrap_angle, inv
 
 __all__ = ["CONFIGURATIONS", "SphericalWristArm", "WRIST_TOL"]
 
@@ -124,12 +124,6 @@ class _Wrist(NamedTuple):
 
 def _unit(v):
     return v / np.linalg.norm(v)
-
-
-def _rotate(w, angle, x):
-    """Rotate x (..., 3) about the unit direction w (3,) by angle (...): Rodrigues."""
-    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
-    return x * c + np.cross(w, x) * s + w * ((x @ w)[..., None] * (1 - c))
 
 
 def _polar(y, x):
@@ -267,9 +261,11 @@ class SphericalWristArm(ClosedFormArm):
         """The wrist centre w1 (..., 3) at q1 = 0 and the elbow point relative to axis
         2."""
         w, p, c = self.w, self.p, self.c
-        wrist = p[2] + _rotate(w[2], q3, np.broadcast_to(c - p[2], q3.shape + (3,)))
-        w1 = p[1] + _rotate(w[1], q2, wrist - p[1])
-        elbow = _rotate(w[1], q2, np.broadcast_to(p[2] - p[1], q2.shape + (3,)))
+        wrist = p[2] + _rotate_vectors(
+            w[2], q3, np.broadcast_to(c - p[2], q3.shape + (3,))
+        )
+        w1 = p[1] + _rotate_vectors(w[1], q2, wrist - p[1])
+        elbow = _rotate_vectors(w[1], q2, np.broadcast_to(p[2] - p[1], q2.shape + (3,)))
         return w1, elbow
 
     def _measures(self, q):
@@ -550,7 +546,7 @@ class SphericalWristArm(ClosedFormArm):
             half = np.arctan2(np.sqrt(max(A**2 + B**2 - C**2, 0.0)), C)
             distances = []
             for theta in (np.arctan2(B, A) - half, np.arctan2(B, A) + half):
-                w1 = p[0] + _rotate(w[0], np.array(theta), d)
+                w1 = p[0] + _rotate_vectors(w[0], np.array(theta), d)
                 distances.append(
                     np.sqrt(max(np.sum((w1 - p[1]) ** 2) - (w[2] @ (c - p[1])) ** 2, 0))
                 )

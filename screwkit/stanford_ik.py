@@ -33,7 +33,7 @@ import numpy as np
 
 from ._checks import check_chain
 from ._closed_form import ClosedFormArm
-from .transforms import _wrap_angle, inv
+from .transforms import _rotate_vectors, _wrap_angle, inv
 
 __all__ = ["StanfordArm", "STRUCTURE"]
 
@@ -50,12 +50,6 @@ def _angle_about(w, a, b):
     a_ = a - w * (a @ w)[..., None]
     b_ = b - w * (b @ w)[..., None]
     return np.arctan2(np.cross(a_, b_) @ w, np.sum(a_ * b_, axis=-1))
-
-
-def _turn(w, x, angle):
-    """x (..., 3) turned about the unit direction w by angle (...): Rodrigues."""
-    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
-    return x * c + np.cross(w, x) * s + w * ((x @ w)[..., None] * (1 - c))
 
 
 def _two_axes(w1, w2, x, y):
@@ -153,7 +147,7 @@ class StanfordArm(ClosedFormArm):
         w, o, c = self.w, self.o, self.c
         q = np.asarray(q, dtype=float)
         x = c + q[..., 2, None] * w[2] - o
-        x = _turn(w[1], x, q[..., 1])
+        x = _rotate_vectors(w[1], q[..., 1], x)
         forward = x @ np.cross(w[0], w[1])
         boom = q[..., 2] + w[2] @ (c - o)
         A = np.cross(w[3], w[5]) @ w[4]
@@ -196,7 +190,7 @@ class StanfordArm(ClosedFormArm):
 
         # the wrist: Rw = R2^T R1^T RG = R4 R5 R6; t = Rw w6
         t = np.einsum("nij,j->ni", RG, w[5])[:, None, None]
-        t = _turn(w[1], _turn(w[0], t, -q1), -q2)  # (N, 2, 2, 3)
+        t = _rotate_vectors(w[1], -q2, _rotate_vectors(w[0], -q1, t))  # (N, 2, 2, 3)
         zw, gamma_w = _two_axes(w[3], w[4], np.broadcast_to(w[5], t.shape), t)
         wrist_ok = gamma_w >= -CLIP_TOL
         q5 = _angle_about(w[4], w[5], zw)  # (N, 2, 2, 2)
@@ -209,8 +203,8 @@ class StanfordArm(ClosedFormArm):
         x6 = np.cross(w[4], w[5])
         x6 = x6 / np.linalg.norm(x6)
         g = np.einsum("nij,j->ni", RG, x6)[:, None, None]
-        g = _turn(w[1], _turn(w[0], g, -q1), -q2)[..., None, :]
-        g = _turn(w[4], _turn(w[3], g, -q4), -q5)
+        g = _rotate_vectors(w[1], -q2, _rotate_vectors(w[0], -q1, g))[..., None, :]
+        g = _rotate_vectors(w[4], -q5, _rotate_vectors(w[3], -q4, g))
         q6 = _angle_about(w[5], np.broadcast_to(x6, g.shape), g)
 
         # the answer: (N, boom, arm, wrist) -> (N, arm, boom, wrist) = CONFIGURATIONS

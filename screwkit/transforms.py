@@ -66,6 +66,13 @@ def _skew(v):
     )
 
 
+def _rotate_vectors(w, angle, x):
+    """x (..., 3) turned about the unit direction w (3,) by angle (..., rad): Rodrigues'
+    formula on vectors, x c + (w x x) s + w (w . x)(1 - c). No checks."""
+    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
+    return x * c + np.cross(w, x) * s + w * ((x @ w)[..., None] * (1 - c))
+
+
 def _skew_exact(v):
     """[v] for a SymPy 3-vector (or any 3 entries): a 3x3 SymPy matrix. No checks."""
     x, y, z = v

@@ -42,7 +42,7 @@ import numpy as np
 from ._checks import check_chain
 from ._closed_form import ClosedFormArm
 from .chains import Joint
-from .transforms import _wrap_angle, inv
+from .transforms import _skew, _wrap_angle, inv
 
 __all__ = ["URArm", "STRUCTURE"]
 
@@ -54,15 +54,11 @@ CLIP_TOL = 1e-10
 SINGULAR_TOL = 1e-9
 
 
-def _cross_matrix(w):
-    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-
-
 class _Turn:
     """Rotations about one fixed unit direction w of vectors laid out (..., 3)."""
 
     def __init__(self, w):
-        self.w, self.KT = w, _cross_matrix(w).T
+        self.w, self.KT = w, _skew(w).T
 
     def __call__(self, x, c, s):
         """x (..., 3) turned by the angles of cosines c and sines s (they broadcast)."""
