@@ -16,6 +16,7 @@ import sympy as sp
 from ._checks import describe, real_number
 from .limbs import check_limbs
 from .screws import Screw, Wrench
+from .transforms import _is_infinite_pitch
 
 __all__ = ["draw_mechanism"]
 
@@ -28,7 +29,7 @@ JOINT_STYLES = {
 
 
 def _kind(h):
-    if h is sp.oo or (isinstance(h, float) and np.isinf(h)):
+    if _is_infinite_pitch(h):
         return "prismatic"
     return "revolute" if sp.sympify(h) == 0 else "helical"
 

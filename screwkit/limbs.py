@@ -19,6 +19,7 @@ import sympy as sp
 
 from ._checks import as_sympy_matrix, as_sympy_scalar, check_rotation, describe
 from .screws import Screw, Wrench
+from .transforms import _is_infinite_pitch
 
 __all__ = [
     "revolute",
@@ -79,7 +80,7 @@ def prismatic(s, r=(0, 0, 0)):
 def helical(s, r, h):
     """H: rotation about (s, r) with translation h per radian along it
     (h in m/rad, finite)."""
-    if isinstance(h, (str, bytes)) or h is None or h is sp.oo:
+    if isinstance(h, (str, bytes)) or h is None or _is_infinite_pitch(h):
         raise TypeError(
             "h must be a finite pitch (m/rad): a number or a SymPy expression, got "
             f"{describe(h)}"

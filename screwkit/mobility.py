@@ -192,7 +192,7 @@ def _twist(joint, i, j):
         direction is not None
         and point is not None
         and any(e != 0 for e in direction)
-        and (h is sp.oo or h == 0)
+        and (h is sp.oo or h == 0)  # as the limb builders write them
     ):
         return Twist._checked(axis_coordinates(s, r, h))
     try:
