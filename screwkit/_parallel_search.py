@@ -1,7 +1,7 @@
 """Every assembly mode of a parallel manipulator for given actuated values.
 
 - :func:`rpr_sextic`: the planar 3-RPR's univariate polynomial (Gosselin, Sefrioui &
-  Richard 1994). Two of the three loop equations minus the first are linear in the
+  Richard 1992). Two of the three loop equations minus the first are linear in the
   platform point q once the angle phi is fixed; with t = tan((phi - phi0) / 2) Cramer's
   rule gives q as ratios of polynomials in t and the first equation becomes one
   polynomial of degree 8 in t, which holds the factor (1 + t^2) (the circular points)

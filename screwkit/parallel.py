@@ -515,7 +515,7 @@ class ParallelManipulator:
         """Every real assembly mode with actuated values rho (m,): a list of (4, 4)
         poses.
 
-        The 3-RPR solves its univariate sextic (Gosselin, Sefrioui & Richard 1994):
+        The 3-RPR solves its univariate sextic (Gosselin, Sefrioui & Richard 1992):
         complete, up to six modes. Other mechanisms run a multi-start Newton search
         (:func:`screwkit._parallel_search.multistart`, ``starts`` random poses around
         the home pose plus their mirror images through the base plane, seeded): every
