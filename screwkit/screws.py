@@ -44,8 +44,10 @@ class Screw:
     # --- constructors -------------------------------------------------------------
     @classmethod
     def from_axis(cls, s, r, h):
-        """The screw of axis direction ``s`` (any non-zero length) through ``r`` with
-        pitch ``h``.
+        """The screw of axis direction ``s`` through ``r`` with pitch ``h``.
+
+        ``s`` may have any non-zero length and is not normalised: its length is the
+        screw's magnitude ([s; r x s + h s]), exact or float alike.
 
         Parameters
         ----------
