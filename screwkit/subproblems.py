@@ -254,8 +254,8 @@ def subproblem1(twist, p, q):
     """The angle theta of the rotation about ``twist`` that takes the point p to q.
 
     With r on the axis, u = p - r and v = q - r, and u', v' their parts perpendicular to
-    w: theta = atan2(w . (u' x v'), u' . v'). Solvable when w . u = w . v and
-    |u'| = |v'|.
+    w: theta = atan2(w . (u' x v'), u' . v'). Solvable when w . u = w . v
+    and |u'| = |v'|.
 
     Parameters
     ----------
