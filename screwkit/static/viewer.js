@@ -1305,13 +1305,23 @@
       return stage.tag(String(i + 1));
     });
     this.frameParts = stage.frame();
-    stage.fit(
-      padded(model.base.concat(top), 0.05 * size).concat([[0, 0, this.floorZ]])
-    );
+    stage.fit(this.framePoints(T0, top).concat([[0, 0, this.floorZ]]));
   }
 
   PlatformFigure.prototype.pose = function (values) {
     return platformPose(this.model, values);
+  };
+
+  // What must stay in the picture: the base, the platform's points and its frame's arrows
+  PlatformFigure.prototype.framePoints = function (T, top) {
+    var size = this.size;
+    return padded(this.model.base.concat(top), 0.05 * size).concat(
+      [0, 1, 2].map(function (k) {
+        var end = [0, 0, 0];
+        end[k] = 0.25 * size;
+        return apply(T, end);
+      })
+    );
   };
 
   PlatformFigure.prototype.draw = function (values) {
@@ -1347,12 +1357,7 @@
       this.tags[i].span.textContent = out ? i + 1 + " !" : String(i + 1);
     }
     S.placeFrame(this.frameParts, T, 0.25 * size);
-    var axisEnds = [0, 1, 2].map(function (k) {
-      var end = [0, 0, 0];
-      end[k] = 0.25 * size;
-      return apply(T, end);
-    });
-    S.keepInView(padded(top, 0.05 * size).concat(axisEnds));
+    S.keepInView(this.framePoints(T, top));
     this.lastPose = T;
     this.lastLengths = lengths;
     S.render();
