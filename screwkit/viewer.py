@@ -258,7 +258,10 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     Returns
     -------
     Viewer, displayed as HTML. Sliders in degrees (revolute) or metres (prismatic), each
-    ranging over the joint's limits with its default on the slider's grid.
+    ranging over the joint's limits with its default on the slider's grid. The tool
+    frame carries a two-finger gripper along its approach axis (the tool axis nearest the
+    offset from the last joint's axis point to the tool, +z when there is none), so that
+    the wrist's turn shows; a pose that reaches out of the view widens the view.
     """
     _check_chain(chain)
     specs = _sliders.slider_specs(chain, q)
