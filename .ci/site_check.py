@@ -584,17 +584,51 @@ def check_search(chromium, url, word="screw"):
     return [] if found else [f"searching for {word!r} from {url} found nothing"]
 
 
+# In the page: resolves when MathJax (if the page loads it) has typeset the page. Its
+# loader fetches its components only after the page's own scripts have run (a viewer's
+# three.js, say), which can come after a quiet half second: "networkidle" alone may miss
+# them.
+MATHJAX_DONE = """() => window.MathJax && MathJax.startup && MathJax.startup.promise
+    ? MathJax.startup.promise.then(() => true) : false"""
+
+
+def settle(page, pending, quiet_ms=700, limit_ms=30000):
+    """Wait until no request has been pending or started for `quiet_ms` (at most
+    `limit_ms`). `pending` is a list of [started, finished] counts kept by the page's
+    request events."""
+    waited, last, still = 0, None, 0
+    while waited < limit_ms:
+        state = tuple(pending)
+        still = still + 100 if state == last and state[0] == state[1] else 0
+        if still >= quiet_ms:
+            return
+        last = state
+        page.wait_for_timeout(100)
+        waited += 100
+
+
 def cold_weight(chromium, url):
     """Bytes a first visit downloads (empty cache): the page and all it loads, read to
-    its end."""
+    its end, once its math is typeset and nothing more is asked for."""
     context = chromium.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
-    requests = []
-    page.on("requestfinished", lambda request: requests.append(request))
+    requests, pending = [], [0, 0]
+
+    def started(_):
+        pending[0] += 1
+
+    def ended(request, done=True):
+        pending[1] += 1
+        if done:
+            requests.append(request)
+
+    page.on("request", started)
+    page.on("requestfinished", ended)
+    page.on("requestfailed", lambda request: ended(request, done=False))
     page.goto(url, wait_until="networkidle")
+    page.evaluate(MATHJAX_DONE)
     page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
-    page.wait_for_load_state("networkidle")
-    page.wait_for_timeout(300)
+    settle(page, pending)
     size = sum(request.sizes()["responseBodySize"] for request in list(requests))
     context.close()
     return size
@@ -756,9 +790,6 @@ def check_interactive(browser, origin, pages):
     return problems
 
 
-KNOWN_OPEN = ("not what it shows", "changed nothing", "MB cold, over", "MB limit")
-
-
 def main(root):
     root = os.path.abspath(root)
     pages = toc_pages(root)
@@ -837,15 +868,6 @@ def main(root):
         problems.append(
             f"the book is {size / 1e6:.1f} MB, over the {BOOK_LIMIT_MB} MB limit"
         )
-    # Open in issue 25 after the last merge (new figures without alt metadata, wrist
-    # sliders whose redraw the canvas comparison does not see, pages grown past the
-    # weight limits): printed every run, not failed, until that issue is closed.
-    known = [p for p in problems if any(k in p for k in KNOWN_OPEN)]
-    if known:
-        print("\nsite check: known open problems (issue 25), reported, not failed:")
-        for problem in known:
-            print("  - " + problem)
-    problems = [p for p in problems if p not in known]
     if problems:
         print("\nsite check FAILED:")
         for problem in problems:

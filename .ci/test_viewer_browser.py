@@ -10,6 +10,7 @@ them. Run by `make site-check` (it needs .ci/requirements.txt); skipped without
 Chromium.
 """
 
+import math
 import shutil
 
 import numpy as np
@@ -155,6 +156,80 @@ def test_moving_a_slider_redraws(page):
     assert after != before
     assert page.locator(f"[id='{figure_id}'] .screwkit-caption").inner_text() != caption
     assert page.errors == []
+
+
+# In the page: where the tool point and every joint point of a robot figure fall in
+# normalised device coordinates (inside the picture when both lie in [-1, 1]).
+PROJECTED = """id => {
+    const v = window.screwkit.viewers[id], S = v.stage, f = v.figure;
+    const pose = window.screwkit.chainPose(f.model, v.sliders.map(
+        s => +s.input.value * s.spec.scale));
+    return f.points(pose).map(p => {
+        const n = new S.THREE.Vector3(p[0], p[1], p[2]).project(S.camera);
+        return [n.x, n.y];
+    });
+}"""
+
+
+def site_check_moves(model):
+    """Each slider's value after the site check's move (.ci/site_check.py, MOVE_CONTROL):
+    a third of its range further along its grid, wrapping past its top."""
+    moves = []
+    for s in model["sliders"]:
+        count = math.floor((s["max"] - s["min"]) / s["step"] + 0.5)
+        here = math.floor((s["value"] - s["min"]) / s["step"] + 0.5)
+        jump = max(1, math.floor(count / 3 + 0.5))
+        moves.append(s["min"] + s["step"] * ((here + jump) % (count + 1)))
+    return moves
+
+
+@pytest.mark.parametrize(
+    "make, pose",
+    [(sk.robots.puma560, "nominal"), (sk.robots.panda, "ready")],
+    ids=["puma560", "panda"],
+)
+def test_the_arm_stays_in_the_picture_and_every_joint_moves_it(page, make, pose):
+    # The site check's moves lift the PUMA's wrist (q1 to 107, q2 to 135, q3 to -90 deg)
+    # and swing the Panda's hand beyond the first view: the view must follow, so that
+    # the wrist joints' moves still show.
+    chain = make()
+    figure = viewer.robot_viewer(chain, chain.configurations[pose])
+    figure_id = show(page, figure)
+    root = page.locator(f"[id='{figure_id}']")
+    snapshot = (
+        f"() => document.getElementById('{figure_id}').querySelector('canvas')"
+        ".toDataURL()"
+    )
+    for k, value in enumerate(site_check_moves(figure.model)):
+        before = page.evaluate(snapshot)
+        root.locator("input[type=range]").nth(k).fill(f"{value:g}")
+        assert page.evaluate(snapshot) != before, f"moving q{k + 1} changed nothing"
+        inside = np.abs(page.evaluate(PROJECTED, figure_id))
+        assert inside.max() <= 1.0, f"after q{k + 1}: a joint or the tool left the view"
+    assert page.errors == []
+
+
+def test_the_gripper_is_drawn_on_the_tool_frame(page):
+    # The gripper (palm and fingers) is a group placed by the tool pose itself, so the
+    # wrist's turn shows: its matrix is chain.fk at the sliders' values, to 1e-9.
+    puma = sk.robots.puma560()
+    figure_id = show(page, viewer.robot_viewer(puma))
+    root = page.locator(f"[id='{figure_id}']")
+    degrees = [10, -30, 40, 70, -50, 120]
+    for k, value in enumerate(degrees):
+        root.locator("input[type=range]").nth(k).fill(str(value))
+    matrix, parts = page.evaluate(
+        """id => {
+        const g = window.screwkit.viewers[id].figure.gripper.group;
+        g.updateMatrixWorld(true);
+        return [g.matrixWorld.clone().transpose().toArray(), g.children.length];
+    }""",
+        figure_id,
+    )
+    np.testing.assert_allclose(
+        np.reshape(matrix, (4, 4)), puma.fk(np.radians(degrees)), atol=1e-9
+    )
+    assert parts == 4  # stub, palm and two fingers
 
 
 # ---- platforms: a stand-in with the interface of sk.robots.stewart_gough() ----

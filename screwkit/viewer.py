@@ -263,7 +263,10 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     Returns
     -------
     Viewer, displayed as HTML. Sliders in degrees (revolute) or metres (prismatic), each
-    ranging over the joint's limits with its default on the slider's grid.
+    ranging over the joint's limits with its default on the slider's grid. The tool
+    frame carries a two-finger gripper along its approach axis (the tool axis nearest the
+    offset from the last joint's axis point to the tool, +z when there is none), so that
+    the wrist's turn shows; a pose that reaches out of the view widens the view.
     """
     _check_chain(chain)
     specs = _sliders.slider_specs(chain, q)
@@ -291,6 +294,7 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
         "points": _numbers(points),
         "axes": _numbers(axes),
         "joints": [joint.value for joint in chain.joints],
+        "approach": _approach(home, points[-1]),
         "sliders": [s.as_dict() for s in specs],
         "radius": radius,
         "centre": [0.0, 0.0, 0.0],
@@ -304,6 +308,20 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     )
     extra = " with its manipulability ellipsoid" if ellipsoid else ""
     return Viewer(model, f"{chain.name}{extra}: sliders {sliders}")
+
+
+def _approach(home, last_point):
+    """The tool frame's axis the gripper is drawn along: [axis 0, 1 or 2, sign +-1].
+
+    The axis of the home tool frame nearest the direction from the last joint's point to
+    the tool (a flange offset along z, a planar arm's last link along x); +z when the tool
+    sits on the last joint's axis point (the PUMA's wrist centre).
+    """
+    offset = home[:3, :3].T @ (home[:3, 3] - np.asarray(last_point, dtype=float))
+    if np.linalg.norm(offset) < 1e-9:
+        return [2, 1]
+    axis = int(np.argmax(np.abs(offset)))
+    return [axis, 1 if offset[axis] > 0 else -1]
 
 
 def _chain_label(chain, ellipsoid):
@@ -320,8 +338,8 @@ def _chain_label(chain, ellipsoid):
     return (
         f"{chain.name}: a serial robot arm of {chain.n} joints ({counts}), drawn in 3D "
         "on a floor with numbered joints (cylinders revolute, boxes prismatic) and "
-        "the "
-        f"tool frame{extra}. The sliders below set the joints; drag or use the arrow "
+        "the tool frame with a two-finger gripper along its approach axis"
+        f"{extra}. The sliders below set the joints; drag or use the arrow "
         f"keys to turn the view, + and - to zoom."
     )
 

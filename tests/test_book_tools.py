@@ -165,6 +165,103 @@ def test_animation_alt_and_label_are_checked():
     assert 'aria-label="Time step"' in given
 
 
+def fake_build(outdir):
+    """What scripts_to_files reads of Sphinx's app: the builder's format, the outdir."""
+    return types.SimpleNamespace(
+        builder=types.SimpleNamespace(format="html"), outdir=str(outdir)
+    )
+
+
+def a_doctree(*fragments):
+    from docutils import nodes
+    from docutils.utils import new_document
+
+    document = new_document("page")
+    for fragment in fragments:
+        document += nodes.raw("", fragment, format="html")
+    return document
+
+
+def test_screwkit_scripts_become_one_file_each_loaded_in_place(tmp_path):
+    from screwkit import viewer
+
+    puma = sk.robots.puma560()
+    first = viewer.robot_viewer(puma).html(library=True)
+    steps = viewer.stepped_figure(str, "k", "1/s", values=viewer.grid(0, 1, 0.5))
+    box = sk.exercises.answer_box("puma_fk", 2, script=True)._repr_html_()
+    doctree = a_doctree(first, steps.html(), box)
+    light_pages.scripts_to_files(fake_build(tmp_path), doctree, "notebooks/puma_fk")
+    pages = [raw.astext() for raw in doctree.findall(lambda n: n.tagname == "raw")]
+    folder = tmp_path / "_static" / "screwkit"
+    files = {path.read_text(encoding="utf-8"): path.name for path in folder.iterdir()}
+    # three scripts, each written once, byte for byte as screwkit inlines it
+    assert set(files) == {
+        viewer.library_script() + "\n",
+        viewer.viewer_script(),
+        sk.exercises.exercises_script(),
+    }
+    src = '<script src="../_static/screwkit/{}"></script>'.format
+    assert src(files[viewer.library_script() + "\n"]) in pages[0]
+    assert pages[0].index(src(files[viewer.viewer_script()])) < pages[0].index(
+        "window.screwkit.mount("
+    )  # viewer.js still runs before the figure's mount call
+    assert "<script>\n" + viewer.viewer_script() not in "".join(pages)
+    assert "screwkit viewer:" not in pages[1]  # the page's second copy is dropped
+    assert 'type="application/json"' in pages[1]  # the stepped figure itself stays
+    assert src(files[sk.exercises.exercises_script()]) in pages[2]
+
+
+def test_the_widget_state_is_left_out_when_the_book_loads_no_widget_script(tmp_path):
+    page = tmp_path / "a.html"
+    kept = '<script type="application/json">{"kind": "robot"}</script>'
+    state = (
+        '\n<script type="application/vnd.jupyter.widget-state+json">'
+        '{"state": {"m": {}}}</script>'
+    )
+    page.write_text(f"<html><head>{state}</head><body>{kept}</body></html>")
+    light_pages.drop_script(str(tmp_path), widget_state=True)
+    assert "widget-state" in page.read_text()
+    light_pages.drop_script(str(tmp_path), widget_state=False)
+    assert page.read_text() == f"<html><head></head><body>{kept}</body></html>"
+
+
+def test_figures_are_written_with_a_palette_only_when_that_keeps_them(tmp_path):
+    import numpy as np
+    from PIL import Image
+
+    # a plot of 5 colours: written losslessly; a matplotlib figure (a viridis field, a
+    # line, antialiased text: thousands of colours): quantised within the mean-error
+    # bound; one with transparency: left alone
+    flat = np.full((120, 200, 4), 255, np.uint8)
+    for k, colour in enumerate(
+        [(31, 119, 180), (255, 127, 14), (44, 160, 44), (0,) * 3]
+    ):
+        flat[20 + 20 * k : 30 + 20 * k, 10:190, :3] = colour
+    clear = flat.copy()
+    clear[:10, :10, 3] = 0
+    for name, pixels in (("flat", flat), ("clear", clear)):
+        Image.fromarray(pixels, "RGBA").save(tmp_path / f"{name}.png")
+    fig, ax = plt.subplots(figsize=(4, 3), dpi=80)
+    x = np.linspace(0, 3, 200)
+    ax.pcolormesh(x, x, np.sin(x[:, None]) * np.cos(x[None, :]), cmap="viridis")
+    ax.plot(x, 1.5 + np.sin(3 * x), color="red")
+    ax.set_title("|det J| (m$^3$)")
+    fig.savefig(tmp_path / "plot.png")
+    plt.close(fig)
+    plot = np.asarray(Image.open(tmp_path / "plot.png").convert("RGB"), dtype=float)
+    assert Image.open(tmp_path / "plot.png").getcolors(256) is None  # > 256 colours
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert light_pages.shrink_png(str(tmp_path / "flat.png")) > 0
+    assert light_pages.shrink_png(str(tmp_path / "plot.png")) > 0
+    assert light_pages.shrink_png(str(tmp_path / "clear.png")) == 0
+    assert (tmp_path / "clear.png").read_bytes() == before["clear.png"]
+    flat_after = np.asarray(Image.open(tmp_path / "flat.png").convert("RGB"))
+    assert (flat_after == flat[..., :3]).all()
+    plot_after = np.asarray(Image.open(tmp_path / "plot.png").convert("RGB"))
+    assert np.abs(plot_after - plot).mean() <= light_pages.MAX_MEAN_ERROR
+    assert len((tmp_path / "plot.png").read_bytes()) < len(before["plot.png"]) / 2
+
+
 # ---- the site check's static rules
 # ----------------------------------------------------------
 

@@ -167,6 +167,25 @@ def test_payload_rebuilds_the_chain_fk():
     np.testing.assert_allclose(T @ np.array(model["home"]), puma.fk(q), atol=1e-10)
 
 
+def test_the_gripper_points_along_the_tool_axis_that_leaves_the_last_joint():
+    # The gripper is drawn along the tool frame's axis nearest the offset from the last
+    # joint's point to the tool at q = 0, read off each model's table: the planar 2R's
+    # tool lies 0.2 m along its own x past joint 2; the Panda's flange 0.107 m along its
+    # own z past joint 7; the PUMA's tool is the wrist centre itself (d6 = 0), so +z.
+    planar = sk.robots.planar([0.3, 0.2])
+    assert model_of(viewer.robot_viewer(planar))["approach"] == [0, 1]
+    panda = sk.robots.panda()
+    panda_viewer = viewer.robot_viewer(panda, panda.configurations["ready"])
+    assert model_of(panda_viewer)["approach"] == [2, 1]
+    assert model_of(viewer.robot_viewer(sk.robots.puma560()))["approach"] == [2, 1]
+    # a tool turned by pi about y, 0.4 m along the base x from its joint: along its -x
+    flipped = sk.Chain.from_screws(
+        [[0, 0, 1, 0, 0, 0]],
+        np.array([[-1, 0, 0, 0.4], [0, 1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1.0]]),
+    )
+    assert model_of(viewer.robot_viewer(flipped))["approach"] == [0, -1]
+
+
 def test_same_figure_gives_the_same_payload_and_distinct_ids():
     puma = sk.robots.puma560()
     first, second = viewer.robot_viewer(puma), viewer.robot_viewer(puma)

@@ -16,7 +16,7 @@ import sys
 import numpy as np
 
 import screwkit as sk
-from screwkit import viewer
+from screwkit import parallel, viewer
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 OUT = ROOT / "screenshots" / "viewers"
@@ -59,6 +59,7 @@ def figures():
         puma.screw_axes(), puma.home(), qlim=puma.qlim, name="PUMA 560 (PoE)"
     )
     q_base = np.radians([0, 30, 0, 0, 45, 0])
+    panda = sk.robots.panda()
     found = [
         ("puma_fk-puma560", viewer.robot_viewer(puma, puma.configurations["nominal"])),
         ("poe-puma560", viewer.robot_viewer(puma_poe, puma.configurations["nominal"])),
@@ -80,6 +81,18 @@ def figures():
             "platform-stand-in",
             viewer.show_platform(StandInPlatform(), pose=[0.05, 0, 0.12, 0, 12, 0]),
         ),
+        (
+            "puma_ik-ur5e",
+            viewer.robot_viewer(
+                sk.robots.ur5e(), np.array([0.4, -1.3, 1.7, 0.2, 1.1, -0.6])
+            ),
+        ),
+        ("puma_ik-panda", viewer.robot_viewer(panda, panda.configurations["ready"])),
+        (
+            "parallel_kinematics-stewart",
+            viewer.show_platform(sk.robots.stewart_gough()),
+        ),
+        ("parallel_kinematics-3rpr", viewer.show_platform(parallel.planar_3rpr())),
     ]
     for name, builder in [
         ("3-PRRR", "pm_3prrr"),

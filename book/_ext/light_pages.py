@@ -21,6 +21,23 @@ file; in the book each becomes a file of ``_images/`` (named by its hash), which
 browser fetches only when the frame is shown, and caches. The redundancy chapter's
 animation was 1.7 MB of HTML.
 
+screwkit's own scripts travel inside the HTML outputs of a notebook, so that a notebook
+needs no file and no network: three.js (deflated, 230 kB) and ``viewer.js`` (50 kB) with
+the first viewer of a page, the answer boxes' script (12 kB) with the first box. In the
+book each becomes a file of ``_static/screwkit/`` named by its hash, loaded by a
+``<script src>`` at the same place (so it runs in the same order), which the browser
+fetches once for the whole book and caches. A page's second copy of the same script (a
+stepped figure and a 3D viewer both carry ``viewer.js``) is dropped: the first copy has
+defined ``window.screwkit``, and every figure mounts itself with the call that follows
+it. The notebooks' ipywidgets state (a live widget's model, 118 kB on the mobility page)
+is left out of the pages too: the book loads no widget script that would read it.
+
+The figures (PNG files of ``_images/``) are written with a palette when they have at most
+256 colours (lossless), and otherwise quantised to 256 colours (median cut, no
+dithering, as the stepped figures already are) when that changes no pixel by more than
+``MAX_MEAN_ERROR`` on average; matplotlib's RGBA output of a white figure is three to
+four times larger. A figure with transparency, or one that would not shrink, is kept.
+
 Alt texts: a code cell's ``mystnb: image: alt:`` metadata is myst-nb's alt text for the
 cell's image outputs; the same text is given here to the images of the cell's HTML
 outputs whose alt text says nothing (a stepped figure's "precomputed figure", an
@@ -65,11 +82,20 @@ FONT_FACE = re.compile(
 )
 
 
-def drop_script(outdir, search_everywhere=False):
+# myst-nb's script of a notebook's ipywidgets state (read only by the widget scripts)
+WIDGET_STATE = re.compile(
+    r'\s*<script type="application/vnd\.jupyter\.widget-state\+json">.*?</script>',
+    re.S,
+)
+
+
+def drop_script(outdir, search_everywhere=False, widget_state=True):
     for page in glob.glob(os.path.join(outdir, "**", "*.html"), recursive=True):
         with open(page, encoding="utf-8") as f:
             html = f.read()
         lighter = SCRIPT_TAG.sub("", html)
+        if not widget_state:
+            lighter = WIDGET_STATE.sub("", lighter)
         if not search_everywhere and os.path.basename(page) != "search.html":
             lighter = SEARCH_TAGS.sub("", lighter)
         if lighter != html:
@@ -202,17 +228,103 @@ def images_to_files(app, doctree, docname):
                 replace_raw(raw, new)
 
 
+# screwkit's scripts inside HTML outputs, each as screwkit writes it: three.js
+# (viewer.library_script), viewer.js (viewer.viewer_script), exercises.js
+SCREWKIT_SCRIPT = re.compile(
+    r"<script>\n((?:if\(!window\.THREE\)\{\(function\(\)\{var module="
+    r"|/\* screwkit viewer: |// screwkit's self-checking answer boxes).*?)</script>\n?",
+    re.S,
+)
+SCRIPTS = "_static/screwkit"
+
+
+def scripts_to_files(app, doctree, docname):
+    """screwkit's inline scripts become files of _static/screwkit/ (see above)."""
+    if app.builder.format != "html":
+        return
+    folder = os.path.join(app.outdir, *SCRIPTS.split("/"))
+    prefix = posixpath.relpath(SCRIPTS, posixpath.dirname(docname) or ".")
+    seen = set()
+
+    def to_file(match):
+        body = match.group(1)
+        digest = hashlib.sha256(body.encode("utf-8")).hexdigest()[:16]
+        if digest in seen:
+            return ""
+        seen.add(digest)
+        name = f"{digest}.js"
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, name)
+        if not os.path.exists(path):
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(body)
+        return f'<script src="{prefix}/{name}"></script>\n'
+
+    for raw in list(doctree.findall(nodes.raw)):
+        if "html" in raw.get("format", "") and "<script>" in raw.astext():
+            new = SCREWKIT_SCRIPT.sub(to_file, raw.astext())
+            if new != raw.astext():
+                replace_raw(raw, new)
+
+
+MAX_MEAN_ERROR = 1.0  # of 255, per channel, over the figure
+
+
+def shrink_png(path):
+    """Rewrite the PNG at `path` with a palette (see above); returns bytes saved."""
+    import numpy as np
+    from PIL import Image
+
+    with open(path, "rb") as f:
+        original = f.read()
+    image = Image.open(io.BytesIO(original))
+    if image.mode not in ("RGB", "RGBA"):
+        return 0
+    pixels = np.asarray(image)
+    if image.mode == "RGBA":
+        if pixels[..., 3].min() < 255:
+            return 0  # transparency: kept as it is
+        image = image.convert("RGB")
+        pixels = pixels[..., :3]
+    exact = image.getcolors(256) is not None
+    palette = image.quantize(
+        colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE
+    )
+    if not exact:
+        error = np.abs(np.asarray(palette.convert("RGB"), dtype=float) - pixels).mean()
+        if error > MAX_MEAN_ERROR:
+            return 0
+    buffer = io.BytesIO()
+    palette.save(buffer, format="png", optimize=True)
+    smaller = buffer.getvalue()
+    if len(smaller) >= len(original):
+        return 0
+    with open(path, "wb") as f:
+        f.write(smaller)
+    return len(original) - len(smaller)
+
+
+def shrink_images(outdir):
+    return sum(
+        shrink_png(path) for path in glob.glob(os.path.join(outdir, "_images", "*.png"))
+    )
+
+
 def lighten(app, exception):
     if exception is None and app.builder.format == "html":
         options = app.config.html_theme_options or {}
         drop_script(
-            app.outdir, search_everywhere=bool(options.get("search_as_you_type"))
+            app.outdir,
+            search_everywhere=bool(options.get("search_as_you_type")),
+            widget_state=bool(getattr(app.config, "nb_ipywidgets_js", None)),
         )
         subset_fonts(app.outdir)
+        shrink_images(app.outdir)
 
 
 def setup(app):
     app.connect("doctree-resolved", describe_html_images)
     app.connect("doctree-resolved", images_to_files)
+    app.connect("doctree-resolved", scripts_to_files)
     app.connect("build-finished", lighten)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

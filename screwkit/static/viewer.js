@@ -345,7 +345,9 @@
     path: 0x9467bd,
     axis: 0x7f7f7f,
     twistR: 0xd62728,
-    twistT: 0x2ca02c
+    twistT: 0x2ca02c,
+    gripper: 0x5d6f8c,
+    finger: 0x2b3038
   };
 
   function Stage(root, model, label) {
@@ -582,6 +584,26 @@
     this.distance = Math.max(distance, 1e-3);
   };
 
+  // Keep the points (k, 3) of the pose just drawn in the picture. The view is framed on
+  // the first pose; a pose that reaches beyond the box of everything framed so far is
+  // framed again together with it (the view grows, never shrinks by itself: the reset
+  // button and a double-click frame it anew). Returns whether the view changed.
+  Stage.prototype.keepInView = function (points) {
+    var framed = this.points || [],
+      box = bounds(framed.length ? framed : points),
+      margin = 0.01 * box.size;
+    var outside = points.some(function (p) {
+      for (var k = 0; k < 3; k++)
+        if (p[k] < box.lo[k] - margin || p[k] > box.hi[k] + margin) return true;
+      return false;
+    });
+    if (!outside) return false;
+    var all = framed.concat(points);
+    if (all.length > 600) all = corners(bounds(all)); // a long session: its box suffices
+    this.fit(all);
+    return true;
+  };
+
   Stage.prototype.reset = function (quiet) {
     this.azimuth = this.azimuth0;
     this.elevation = this.elevation0;
@@ -803,6 +825,19 @@
     return z;
   }
 
+  // The eight corners of a box from bounds()
+  function corners(box) {
+    var out = [];
+    for (var i = 0; i < 8; i++) {
+      out.push([
+        i & 1 ? box.hi[0] : box.lo[0],
+        i & 2 ? box.hi[1] : box.lo[1],
+        i & 4 ? box.hi[2] : box.lo[2]
+      ]);
+    }
+    return out;
+  }
+
   // The points (k, 3) grown by `pad` along each axis: room for what is drawn there
   function padded(points, pad) {
     var out = [];
@@ -845,6 +880,46 @@
     );
   }
 
+  // A two-finger gripper on the tool frame, in tool coordinates: a short stub along the
+  // approach axis from the frame's origin, a palm across the jaw axis and two fingers
+  // along the approach, so that the tool's orientation shows (its roll about the approach
+  // too). approach = [axis 0, 1 or 2 of the tool frame, sign]; the jaws open along y
+  // (along z when the approach is y). Returns the group and the points it reaches.
+  function gripper(stage, approach, size) {
+    var THREE = stage.THREE,
+      a = approach[0],
+      sign = approach[1] < 0 ? -1 : 1,
+      j = a === 1 ? 2 : 1,
+      t = 3 - a - j;
+    var group = new THREE.Group();
+    group.matrixAutoUpdate = false;
+    stage.scene.add(group);
+    function box(colour, from, to, jaw, across, offset) {
+      var mesh = new THREE.Mesh(stage.unitBox, stage.material(colour)),
+        scale = [0, 0, 0],
+        at = [0, 0, 0];
+      scale[a] = (to - from) * size;
+      scale[j] = jaw * size;
+      scale[t] = across * size;
+      at[a] = (sign * (from + to) * size) / 2;
+      at[j] = offset * size;
+      mesh.scale.set(scale[0], scale[1], scale[2]);
+      mesh.position.set(at[0], at[1], at[2]);
+      group.add(mesh);
+    }
+    box(COLOURS.gripper, 0, 0.07, 0.045, 0.045, 0); // stub
+    box(COLOURS.gripper, 0.07, 0.1, 0.23, 0.065, 0); // palm
+    box(COLOURS.finger, 0.1, 0.24, 0.035, 0.05, -0.0975); // fingers
+    box(COLOURS.finger, 0.1, 0.24, 0.035, 0.05, 0.0975);
+    var reach = [-1, 1].map(function (side) {
+      var p = [0, 0, 0];
+      p[a] = sign * 0.24 * size;
+      p[j] = side * 0.115 * size;
+      return p;
+    });
+    return { group: group, reach: reach };
+  }
+
   function RobotFigure(model, stage) {
     this.model = model;
     this.stage = stage;
@@ -877,35 +952,43 @@
       return stage.tag(String(i + 1));
     });
     this.toolFrame = stage.frame();
+    this.gripper = gripper(stage, model.approach || [2, 1], size);
     this.toolTag = stage.tag("tool");
     if (model.ellipsoid) {
       this.ellipsoidMesh = stage.mesh(stage.unitSphere, COLOURS.ellipsoid, 0.35);
       this.ellipsoidMesh.matrixAutoUpdate = false;
     }
-    var toolEnds = [0, 1, 2].map(function (k) {
-      var e = [0, 0, 0];
-      e[k] = 0.22 * size;
-      return apply(pose.tool, e);
+    var e = model.ellipsoid ? ellipsoid(model, pose) : null;
+    stage.fit(this.framePoints(pose, first, e).concat([[0, 0, this.floorZ]]));
+  }
+
+  // What must stay in the picture at a pose: the links and joints (padded by the markers'
+  // size), the tool frame's arrows, the gripper and the ellipsoid's axes
+  RobotFigure.prototype.framePoints = function (pose, points, e) {
+    var size = this.size,
+      tool = pose.tool;
+    var out = padded(points, 0.07 * size);
+    [0, 1, 2].forEach(function (k) {
+      var end = [0, 0, 0];
+      end[k] = 0.3 * size;
+      out.push(apply(tool, end));
     });
-    var fitPoints = padded(first, 0.07 * size).concat(toolEnds, [[0, 0, this.floorZ]]);
-    if (model.ellipsoid) {
-      var e = ellipsoid(model, pose),
-        t = origin(pose.tool),
-        s = model.ellipsoid_scale;
+    this.gripper.reach.forEach(function (p) {
+      out.push(apply(tool, p));
+    });
+    if (e) {
+      var t = origin(tool),
+        s = this.model.ellipsoid_scale,
+        V = e.axes;
       for (var k = 0; k < 3; k++) {
         for (var sign = -1; sign <= 1; sign += 2) {
-          var rk = sign * e.radii[k] * s,
-            V = e.axes;
-          fitPoints.push([
-            t[0] + rk * V[k],
-            t[1] + rk * V[3 + k],
-            t[2] + rk * V[6 + k]
-          ]);
+          var rk = sign * e.radii[k] * s;
+          out.push([t[0] + rk * V[k], t[1] + rk * V[3 + k], t[2] + rk * V[6 + k]]);
         }
       }
     }
-    stage.fit(fitPoints);
-  }
+    return out;
+  };
 
   RobotFigure.prototype.points = function (pose) {
     var points = [[0, 0, 0]],
@@ -932,13 +1015,17 @@
       var off = 0.09 * this.size; // the number beside the joint, off its axis
       this.tags[i].at = [o[0] + off * 0.5, o[1] - off * 0.5, o[2] + off];
     }
-    S.placeFrame(this.toolFrame, pose.tool, 0.22 * this.size);
+    S.placeFrame(this.toolFrame, pose.tool, 0.3 * this.size);
+    var g = this.gripper.group;
+    g.matrix.set.apply(g.matrix, pose.tool);
+    g.matrixWorldNeedsUpdate = true;
     var tool = origin(pose.tool);
     this.toolTag.at = [tool[0], tool[1], tool[2] - 0.08 * this.size];
-    var text = "Tool at " + fixed(tool, 3) + " m.";
+    var text = "Tool at " + fixed(tool, 3) + " m.",
+      e = null;
     if (m.ellipsoid) {
-      var e = ellipsoid(m, pose),
-        s = m.ellipsoid_scale,
+      e = ellipsoid(m, pose);
+      var s = m.ellipsoid_scale,
         V = e.axes,
         M = this.ellipsoidMesh.matrix;
       var a = e.radii.map(function (x) {
@@ -975,6 +1062,7 @@
         ".";
       this.lastEllipsoid = e;
     }
+    S.keepInView(this.framePoints(pose, points, e));
     this.lastPose = pose;
     S.render();
     return text;
@@ -1073,6 +1161,16 @@
     S.placeFrame(this.frameParts, T, this.length);
     this.dot.position.set(o[0], o[1], o[2]);
     this.movedTag.at = apply(T, [0, 0, -0.15 * this.size]);
+    var L = this.length;
+    S.keepInView(
+      padded([o], 0.05 * this.size).concat(
+        [0, 1, 2].map(function (k) {
+          var end = [0, 0, 0];
+          end[k] = L;
+          return apply(T, end);
+        })
+      )
+    );
     this.lastPose = T;
     S.render();
     return (
@@ -1207,13 +1305,23 @@
       return stage.tag(String(i + 1));
     });
     this.frameParts = stage.frame();
-    stage.fit(
-      padded(model.base.concat(top), 0.05 * size).concat([[0, 0, this.floorZ]])
-    );
+    stage.fit(this.framePoints(T0, top).concat([[0, 0, this.floorZ]]));
   }
 
   PlatformFigure.prototype.pose = function (values) {
     return platformPose(this.model, values);
+  };
+
+  // What must stay in the picture: the base, the platform's points and its frame's arrows
+  PlatformFigure.prototype.framePoints = function (T, top) {
+    var size = this.size;
+    return padded(this.model.base.concat(top), 0.05 * size).concat(
+      [0, 1, 2].map(function (k) {
+        var end = [0, 0, 0];
+        end[k] = 0.25 * size;
+        return apply(T, end);
+      })
+    );
   };
 
   PlatformFigure.prototype.draw = function (values) {
@@ -1249,6 +1357,7 @@
       this.tags[i].span.textContent = out ? i + 1 + " !" : String(i + 1);
     }
     S.placeFrame(this.frameParts, T, 0.25 * size);
+    S.keepInView(this.framePoints(T, top));
     this.lastPose = T;
     this.lastLengths = lengths;
     S.render();
