@@ -172,8 +172,9 @@ PROJECTED = """id => {
 
 
 def site_check_moves(model):
-    """Each slider's value after the site check's move (.ci/site_check.py, MOVE_CONTROL):
-    a third of its range further along its grid, wrapping past its top."""
+    """Each slider's value after the site check's move (.ci/site_check.py,
+    MOVE_CONTROL): a third of its range further along its grid, wrapping past its
+    top."""
     moves = []
     for s in model["sliders"]:
         count = math.floor((s["max"] - s["min"]) / s["step"] + 0.5)

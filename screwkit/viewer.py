@@ -264,9 +264,9 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     -------
     Viewer, displayed as HTML. Sliders in degrees (revolute) or metres (prismatic), each
     ranging over the joint's limits with its default on the slider's grid. The tool
-    frame carries a two-finger gripper along its approach axis (the tool axis nearest the
-    offset from the last joint's axis point to the tool, +z when there is none), so that
-    the wrist's turn shows; a pose that reaches out of the view widens the view.
+    frame carries a two-finger gripper along its approach axis (the tool axis nearest
+    the offset from the last joint's axis point to the tool, +z when there is none), so
+    that the wrist's turn shows; a pose that reaches out of the view widens the view.
     """
     _check_chain(chain)
     specs = _sliders.slider_specs(chain, q)
@@ -313,9 +313,9 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
 def _approach(home, last_point):
     """The tool frame's axis the gripper is drawn along: [axis 0, 1 or 2, sign +-1].
 
-    The axis of the home tool frame nearest the direction from the last joint's point to
-    the tool (a flange offset along z, a planar arm's last link along x); +z when the tool
-    sits on the last joint's axis point (the PUMA's wrist centre).
+    The axis of the home tool frame nearest the direction from the last joint's point
+    to the tool (a flange offset along z, a planar arm's last link along x); +z when the
+    tool sits on the last joint's axis point (the PUMA's wrist centre).
     """
     offset = home[:3, :3].T @ (home[:3, 3] - np.asarray(last_point, dtype=float))
     if np.linalg.norm(offset) < 1e-9:
