@@ -182,9 +182,14 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
     return ax
 
 
-def _draw_twists(ax, twists, centre, length):
+def twist_arrows(twists, centre):
+    """Where to draw the platform's twists (a list of Twists, or a Mobility's platform
+    twists): per twist (kind, start (3,), unit direction (3,)) in m; a rotation
+    ('rotation') along its axis through the axis point nearest ``centre``, a
+    translation ('translation') from ``centre``."""
     if hasattr(twists, "platform_twist_system"):
         twists = twists.platform_twist_system.basis()
+    arrows = []
     for k, twist in enumerate(twists):
         if not isinstance(twist, Screw) or isinstance(twist, Wrench):
             raise TypeError(f"twists[{k}] must be a Twist, got {describe(twist)}")
@@ -196,15 +201,19 @@ def _draw_twists(ax, twists, centre, length):
             )
         w = np.array([float(e) for e in twist.primary])
         v = np.array([float(e) for e in twist.secondary])
-        if (
-            np.linalg.norm(w) > 1e-12
-        ):  # a rotation: along its axis, through its nearest point
+        if np.linalg.norm(w) > 1e-12:
             direction = w / np.linalg.norm(w)
             start = np.cross(w, v) / w.dot(w)
             start = start + direction.dot(centre - start) * direction
-            colour = "tab:red"
+            arrows.append(("rotation", start, direction))
         else:
-            direction, start, colour = v / np.linalg.norm(v), centre, "tab:green"
+            arrows.append(("translation", centre, v / np.linalg.norm(v)))
+    return arrows
+
+
+def _draw_twists(ax, twists, centre, length):
+    for kind, start, direction in twist_arrows(twists, centre):
+        colour = "tab:red" if kind == "rotation" else "tab:green"
         ax.quiver(*start, *(1.5 * length * direction), color=colour, lw=2, gid="twist")
 
 

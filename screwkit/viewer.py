@@ -628,8 +628,7 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     helical.
     """
     from . import robots
-    from ._mechanism_plot import evaluate
-    from .screws import Screw, Wrench
+    from ._mechanism_plot import evaluate, twist_arrows
 
     name = None
     if isinstance(limbs, str):
@@ -672,27 +671,8 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
         segments.append(sorted(pairs))
     arrows = []
     if twists is not None:
-        if hasattr(twists, "platform_twist_system"):
-            twists = twists.platform_twist_system.basis()
         centre = np.mean(platform, axis=0)
-        for k, twist in enumerate(twists):
-            if not isinstance(twist, Screw) or isinstance(twist, Wrench):
-                raise TypeError(f"twists[{k}] must be a Twist, got {describe(twist)}")
-            if twist.vector.free_symbols:
-                raise ValueError(
-                    f"twists[{k}] has symbols: substitute numbers before drawing"
-                )
-            w = np.array([float(e) for e in twist.primary])
-            v = np.array([float(e) for e in twist.secondary])
-            if (
-                np.linalg.norm(w) > 1e-12
-            ):  # along its axis, through its point nearest the centre
-                direction = w / np.linalg.norm(w)
-                start = np.cross(w, v) / w.dot(w)
-                start = start + direction.dot(centre - start) * direction
-                kind = "rotation"
-            else:
-                direction, start, kind = v / np.linalg.norm(v), centre, "translation"
+        for kind, start, direction in twist_arrows(twists, centre):
             arrows.append(
                 {
                     "kind": kind,
