@@ -91,15 +91,19 @@ def test_mobility_explains_the_parallelogram_as_a_uu_chain_and_checks_it():
 
 
 def _gain_table():
-    """{k: (max error in mm, clamped %)} as the Try-the-gain cell printed it."""
+    """{k: (max error in mm, clamped %)} as the Try-the-gain cell printed it; an error
+    printed as "> 0.1 mm" (machine-dependent past that) is read as infinity."""
     cell = [text for code, text, _ in outputs("redundancy") if "gain_runs = {" in code]
     assert len(cell) == 1
     rows = re.findall(
-        r"^\s*([\d.]+)\s+[\d.]+\s+[\d.]+\s+([\d.]+) mm\s+([\d.]+)%$",
+        r"^\s*([\d.]+)\s+[\d.]+\s+[\d.]+\s+(> 0\.1|[\d.]+) mm\s+([\d.]+)%$",
         cell[0],
         re.MULTILINE,
     )
-    return {float(k): (float(e), float(c)) for k, e, c in rows}
+    return {
+        float(k): (float("inf") if e == "> 0.1" else float(e), float(c))
+        for k, e, c in rows
+    }
 
 
 def test_redundancy_try_the_gain_prose_is_what_its_frames_show():
@@ -107,13 +111,16 @@ def test_redundancy_try_the_gain_prose_is_what_its_frames_show():
     assert sorted(table) == [0.0, 2.5, 5.0, 7.5, 10.0, 12.5, 15.0, 17.5, 20.0]
     prose = source("redundancy").split("### Try the gain")[1].split("## The two-arm")[0]
     prose = re.sub(r"```.*?```", "", prose, flags=re.DOTALL)
+    prose = " ".join(prose.split())
     assert "stays the same" not in prose
     # every error the prose quotes is the table's, at the gain it names
-    assert f"{table[17.5][0]:.3f} mm" in prose and f"{table[20.0][0]:.3f} mm" in prose
+    assert f"{table[17.5][0]:.3f} mm" in prose
     assert f"{table[20.0][1]:.1f}% of the steps" in prose
     assert all(abs(table[k][0] - 0.032) < 5e-4 for k in table if k <= 15)
     assert "up to $k = 15$ the tip error stays at 0.032 mm" in prose
-    assert table[17.5][0] < 0.1 < table[20.0][0]
+    # past 0.1 mm only that is printed, and the prose says why
+    assert table[17.5][0] < 0.1 and table[20.0][0] == float("inf")
+    assert "prints only that it is over 0.1 mm" in prose
 
 
 def test_redundancy_timing_pointer_goes_to_the_benchmarks():
