@@ -31,7 +31,7 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _compiled, _newton, _numeric
+from . import _compiled, _numeric
 from ._checks import (
     ChainType,
     as_float_array,
@@ -43,6 +43,7 @@ from ._checks import (
     is_symbolic,
 )
 from ._notation import textbook
+from .ik import newton as _newton
 from .lie import adjoint
 from .links import (
     Convention,

@@ -12,9 +12,9 @@ import pytest
 import screwkit as sk
 from screwkit import exercises, parallel, urdf, viewer
 from screwkit import orientation as ori
-from screwkit.spherical_wrist import SphericalWristArm
-from screwkit.stanford_ik import StanfordArm
-from screwkit.ur_ik import URArm
+from screwkit.ik.spherical_wrist import SphericalWristArm
+from screwkit.ik.stanford import StanfordArm
+from screwkit.ik.ur import URArm
 
 Z, O = [0, 0, 1], [0, 0, 0]
 

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from screwkit import ik
-from screwkit.spherical_wrist import CONFIGURATIONS, SphericalWristArm
+from screwkit.ik.spherical_wrist import CONFIGURATIONS, SphericalWristArm
 
 
 @pytest.fixture(scope="module")

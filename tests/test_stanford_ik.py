@@ -9,7 +9,7 @@ import pytest
 
 import screwkit as sk
 from screwkit import ik
-from screwkit.stanford_ik import STRUCTURE
+from screwkit.ik.stanford import STRUCTURE
 
 
 @functools.cache

@@ -9,7 +9,7 @@ import pytest
 
 import screwkit as sk
 from screwkit import ik
-from screwkit.ur_ik import STRUCTURE
+from screwkit.ik.ur import STRUCTURE
 
 
 @functools.cache

@@ -38,7 +38,9 @@ Four helpers keep the build strict (``-W -n``) without hiding a broken reference
   are not documented here: ``nitpick_ignore_regex`` lets them stand unlinked.
 """
 
+import ast
 import importlib
+import importlib.util
 import inspect
 import pkgutil
 import re
@@ -54,13 +56,23 @@ PACKAGE = "screwkit"
 
 
 def public_modules(package):
-    """The public modules of the package, in alphabetical order (imported)."""
+    """The public modules of the package and of its folders (``screwkit.ik.ur``), in
+    alphabetical order (imported); a deprecated alias is left out."""
     names = sorted(
         info.name
-        for info in pkgutil.iter_modules(package.__path__)
-        if not info.name.startswith("_")
+        for info in pkgutil.walk_packages(package.__path__, f"{package.__name__}.")
+        if not any(part.startswith("_") for part in info.name.split("."))
+        and not deprecated_alias(importlib.util.find_spec(info.name).origin)
     )
-    return [importlib.import_module(f"{package.__name__}.{name}") for name in names]
+    return [importlib.import_module(name) for name in names]
+
+
+def deprecated_alias(path):
+    """Whether the module at ``path`` is a deprecated alias (its docstring says so),
+    read without importing it (importing one warns)."""
+    with open(path, encoding="utf-8") as source:
+        docstring = ast.get_docstring(ast.parse(source.read())) or ""
+    return docstring.startswith("Deprecated alias")
 
 
 def public_names(module):

@@ -31,9 +31,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_chain
+from .._checks import check_chain
+from ..transforms import _rotate_vectors, _wrap_angle, inv
 from ._closed_form import ClosedFormArm
-from .transforms import _rotate_vectors, _wrap_angle, inv
 
 __all__ = ["StanfordArm", "STRUCTURE"]
 

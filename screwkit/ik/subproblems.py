@@ -30,13 +30,14 @@ Wen's IK-Geo (2022).
 import numpy as np
 import sympy as sp
 
-from ._checks import (
+from .._checks import (
     as_float_array,
     as_sympy_matrix,
     as_sympy_scalar,
     describe,
     is_symbolic,
 )
+from ..tolerances import SUBPROBLEM_TOL as TOL
 
 __all__ = [
     "Solutions",
@@ -47,9 +48,6 @@ __all__ = [
     "subproblem1_prismatic",
     "subproblem3_prismatic",
 ]
-
-#: Relative tolerance for the consistency conditions of floating-point input.
-TOL = 1e-9
 
 
 class Solutions(list):

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import (
+from .._checks import (
     as_float_array,
     check_chain,
     check_flag,
@@ -21,9 +21,10 @@ from ._checks import (
     check_transform,
     describe,
 )
-from .lie import log_transform
-from .links import Joint
-from .transforms import _wrap_angle, inv
+from ..lie import log_transform
+from ..links import Joint
+from ..tolerances import NEWTON_DAMPING, NEWTON_TOL
+from ..transforms import _wrap_angle, inv
 
 __all__ = ["NumericIKResult", "numeric_ik", "pose_error"]
 
@@ -53,7 +54,7 @@ def numeric_ik(
     chain,
     T,
     q0,
-    tol=1e-10,
+    tol=NEWTON_TOL,
     max_iterations=200,
     frame="body",
     damping=None,
@@ -64,11 +65,12 @@ def numeric_ik(
 
     Each step is Newton–Raphson on the error twist: with V = log(T(q)^-1 T*)
     (body frame) or Ad(T(q)) V (space frame) and J the body (space) Jacobian, it solves
-    (J^T J + lambda I) dq = J^T V. Damped least squares: lambda = |V|^2 / 2 + 1e-9 by
-    default (strong far from the target and near singularities, vanishing at the
-    solution, Sugihara 2011); ``damping=0`` is the plain Newton–Raphson step
-    dq = pinv(J) V (Lynch and Park, sec. 6.2.2). With ``within_limits`` every iterate is
-    clipped into the joint limits.
+    (J^T J + lambda I) dq = J^T V. Damped least squares: by default
+    lambda = |V|^2 / 2 + :data:`~screwkit.tolerances.NEWTON_DAMPING` (strong far from
+    the target and near singularities, vanishing at the solution, Sugihara 2011);
+    ``damping=0`` is the plain Newton–Raphson step dq = pinv(J) V (Lynch and Park,
+    sec. 6.2.2). With ``within_limits`` every iterate is clipped into the joint
+    limits.
 
     Parameters
     ----------
@@ -133,7 +135,7 @@ def numeric_ik(
             step = (np.linalg.pinv(J) @ V[..., None])[..., 0]
         else:
             lam = (
-                0.5 * np.sum(V**2, axis=-1) + 1e-9
+                0.5 * np.sum(V**2, axis=-1) + NEWTON_DAMPING
                 if damping is None
                 else np.full(len(V), float(damping))
             )

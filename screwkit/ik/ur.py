@@ -39,10 +39,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_chain
+from .._checks import check_chain
+from ..links import Joint
+from ..transforms import _skew, _wrap_angle, inv
 from ._closed_form import ClosedFormArm
-from .chains import Joint
-from .transforms import _skew, _wrap_angle, inv
 
 __all__ = ["URArm", "STRUCTURE"]
 

@@ -49,13 +49,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._checks import as_float_array, check_chain
+from .._checks import as_float_array, check_chain
+from ..links import Joint
+from ..transforms import _rotate_vectors, _skew, _wrap_angle, inv
 from ._closed_form import ClosedFormArm
-from .links import Joint
 from .subproblems import _cross_fixed as _cross3
 from .subproblems import _dot_batch as _dot
 from .subproblems import distance_angles, plane_angles
-from .transforms import _rotate_vectors, _skew, _wrap_angle, inv
 
 __all__ = ["CONFIGURATIONS", "SphericalWristArm", "WRIST_TOL"]
 

@@ -10,8 +10,8 @@ calls the public methods below, which check first.
 
 import numpy as np
 
-from ._checks import as_float_array, check_integer, check_poses
-from ._compiled import CHUNK
+from .._checks import as_float_array, check_integer, check_poses
+from .._compiled import CHUNK
 
 __all__ = ["ClosedFormArm", "REASON_CODES"]
 

@@ -43,15 +43,14 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import subproblems
-from ._checks import as_float_array, check_chain, check_flag, check_poses
-from ._newton import NumericIKResult, numeric_ik, pose_error
-from .robots import puma560
-from .spherical_wrist import CONFIGURATIONS, SINGULAR_TOL, SphericalWristArm
-from .stanford_ik import StanfordArm
-from .subproblems import *  # noqa: F403 (the Paden-Kahan subproblems, as sk.ik.*)
-from .transforms import _wrap_angle
-from .ur_ik import URArm
+from .._checks import as_float_array, check_chain, check_flag, check_poses
+from ..robots import puma560
+from ..tolerances import IK_JOINT_LIMIT_SLACK
+from ..tolerances import IK_SINGULAR_TOL as SINGULAR_TOL
+from ..transforms import _wrap_angle
+from .spherical_wrist import CONFIGURATIONS, SphericalWristArm
+from .stanford import StanfordArm
+from .ur import URArm
 
 __all__ = [
     "CONFIGURATIONS",
@@ -63,13 +62,9 @@ __all__ = [
     "puma560_ik",
     "puma560_ik_all",
     "puma560_config",
-    "NumericIKResult",
-    "numeric_ik",
-    "pose_error",
     "SINGULAR_TOL",
     "STRUCTURES",
     "structure",
-    *subproblems.__all__,
 ]
 
 
@@ -282,7 +277,8 @@ def _into_limits(Q, qlim, revolute=None):
     angles = np.ones(6, bool) if revolute is None else revolute
     turns = np.arange(-3, 4) * angles[:, None]
     candidates = Q[..., None] + 2 * np.pi * turns  # (k, 6, 7)
-    fits = (candidates >= low[:, None] - 1e-12) & (candidates <= high[:, None] + 1e-12)
+    slack = IK_JOINT_LIMIT_SLACK
+    fits = (candidates >= low[:, None] - slack) & (candidates <= high[:, None] + slack)
     distance = np.where(fits, np.abs(candidates - Q[..., None]), np.inf)
     nearest = np.take_along_axis(candidates, distance.argmin(axis=-1)[..., None], -1)[
         ..., 0
