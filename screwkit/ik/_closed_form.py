@@ -1,19 +1,29 @@
-"""What the closed-form IK engines share (:mod:`.spherical_wrist`, :mod:`.ur_ik`,
-:mod:`.stanford_ik`): checked public methods over each engine's unchecked kernels, and
-the batch solved in chunks.
+"""What the closed-form IK engines share (:mod:`.spherical_wrist`, :mod:`.ur`,
+:mod:`.stanford`): checked public methods over each engine's unchecked kernels, the
+batch solved in chunks, the arm's size, the wrist's flip measure and rotations about a
+fixed axis.
 
 An engine defines ``_measures(q)``, ``_labels(q)`` (q: float array (..., 6)),
 ``_solve(T)`` (one chunk of poses (N, 4, 4)) and ``_reason(T, code)`` (one pose);
-:mod:`.ik` calls the kernels with input it has checked already, a student or a test
-calls the public methods below, which check first.
+:mod:`.dispatch` calls the kernels with input it has checked already, a student or a
+test calls the public methods below, which check first.
 """
 
 import numpy as np
 
 from .._checks import as_float_array, check_integer, check_poses
 from .._compiled import CHUNK
+from ..transforms import _skew
+from .subproblems import _dot_batch
 
-__all__ = ["ClosedFormArm", "REASON_CODES"]
+__all__ = [
+    "ClosedFormArm",
+    "REASON_CODES",
+    "Turn",
+    "arm_scale",
+    "branches",
+    "flip_measure",
+]
 
 #: The reason codes of a pose no branch reaches (0 is reached): 1 shoulder, 2 out of
 #: the arm's reach, 3 wrist orientation (each engine's ``reason`` says it in words).
@@ -71,3 +81,106 @@ class ClosedFormArm:
             part = slice(start, start + CHUNK)
             Q[part], flags[part], code[part] = self._solve(T[part])
         return Q, flags, code
+
+
+def arm_scale(p):
+    """The size of an arm, the length its tolerances are measured against.
+
+    Parameters
+    ----------
+    p : array, shape (6, 3), the point of each joint axis nearest the base origin (m)
+
+    Returns
+    -------
+    float : 1 + the largest distance of an axis from the base origin (m); the 1 m keeps
+        it from vanishing for an arm whose axes all pass through the origin
+    """
+    return 1.0 + float(np.max(np.linalg.norm(p, axis=1)))
+
+
+def flip_measure(w, q5):
+    """The wrist's flip measure (w_4 x R(w_5, q5) w_6) . w_5: positive for the 'f'
+    solutions, negative for the 'n' ones, 0 at the wrist singularity.
+
+    Parameters
+    ----------
+    w : array, shape (6, 3), the unit axis directions at q = 0
+    q5 : array (...), joint 5's angle (rad)
+
+    Returns
+    -------
+    array (...): A cos(q5) + B sin(q5), A = (w_4 x w_6) . w_5,
+        B = w_4 . w_6 - (w_4 . w_5)(w_5 . w_6) (unit-free)
+    """
+    A = np.cross(w[3], w[5]) @ w[4]
+    B = w[3] @ w[5] - (w[3] @ w[4]) * (w[4] @ w[5])
+    return A * np.cos(q5) + B * np.sin(q5)
+
+
+def _apply(K, v):
+    """K @ v for a fixed K (3, 3) and vectors v (3, ...): one matrix product."""
+    return (K @ v.reshape(3, -1)).reshape(v.shape)
+
+
+class Turn:
+    """Rotations about one fixed unit direction, applied to many vectors at once.
+
+    Rodrigues' formula on vectors, x c + (w x x) s + w (w . x)(1 - c), with the cosines
+    c and sines s of the angles given (computed once, used for many vectors).
+
+    Parameters
+    ----------
+    w : array, shape (3,), the unit direction of the axis (through the origin)
+    """
+
+    def __init__(self, w):
+        self.w, self.K = w, _skew(w)
+
+    def __call__(self, x, c, s):
+        """Vectors x, shape (..., 3), turned by the angles of cosines c and sines s,
+        shape (...) (they broadcast); returns an array (..., 3)."""
+        along, cross = x @ self.w, x @ self.K.T
+        c, s = c[..., None], s[..., None]
+        return x * c + cross * s + self.w * (along[..., None] * (1 - c))
+
+    def first(self, x, c, s):
+        """The same for vectors laid out components first, x (3, ...), c and s (...):
+        the products with w and [w] are then single matrix products; returns an array
+        (3, ...)."""
+        along = _dot_batch(self.w, x) * (1 - c)
+        w = self.w.reshape((3,) + (1,) * along.ndim)
+        return x * c + _apply(self.K, x) * s + w * along
+
+    def fixed(self, v, c, s):
+        """One vector v, shape (3,), turned by many angles, cosines c and sines s
+        (...); returns an array (..., 3)."""
+        c, s = c[..., None], s[..., None]
+        v_along = self.w * (v @ self.w)
+        return (v - v_along) * c + (self.K @ v) * s + v_along
+
+
+def branches(Q, flags, reached, order=(0, 1, 2, 3)):
+    """The eight branches of a batch in the order of CONFIGURATIONS.
+
+    Parameters
+    ----------
+    Q : array, shape (N, 2, 2, 2, 6), the joint vectors of each pose's branches (rad,
+        m for a prismatic joint), in the engine's order of the three two-way choices
+    flags : array of bool, shape (N, 2, 2, 2, 3), the singularity flags of each branch
+    reached : array of bool, broadcasting to (N, 2, 2, 2): which branches reach
+    order : the axes of Q that hold (N, arm, elbow, wrist): a transposition of
+        (0, 1, 2, 3)
+
+    Returns
+    -------
+    Q : array (N, 8, 6), NaN where a branch does not reach
+    flags : array of bool (N, 8, 3)
+    """
+    N = Q.shape[0]
+    if not np.all(reached):
+        Q[~np.broadcast_to(reached, Q.shape[:4])] = np.nan
+    axes = (*order, 4)
+    return (
+        Q.transpose(axes).reshape(N, 8, 6),
+        flags.transpose(axes).reshape(N, 8, 3),
+    )

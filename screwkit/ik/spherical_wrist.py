@@ -39,9 +39,9 @@ The singular cases, where labels tie or angles are free, follow one documented r
   solution q4 = pi; a configuration there is labelled 'f' when cos q4 >= 0 and 'n'
   otherwise, so both labels round-trip.
 
-Round-off that pushes a square-root or arccos argument just outside its range
-(by less than :data:`CLIP_TOL`, relative) is clipped: a pose on a singularity is solved,
-not dropped.
+Round-off that pushes a square-root or arccos argument just outside its range (by less
+than :data:`~screwkit.tolerances.IK_CLIP_TOL`, relative) is clipped: a pose on a
+singularity is solved, not dropped.
 """
 
 from dataclasses import dataclass
@@ -51,9 +51,16 @@ import numpy as np
 
 from .._checks import as_float_array, check_chain
 from ..links import Joint
-from ..transforms import _rotate_vectors, _skew, _wrap_angle, inv
-from ._closed_form import ClosedFormArm
-from .subproblems import _cross_fixed as _cross3
+from ..tolerances import IK_CLIP_TOL, IK_LABEL_TOL, IK_SINGULAR_TOL, IK_STRUCTURE_TOL
+from ..transforms import _cross, _rotate_vectors, _skew, _wrap_angle, inv
+from ._closed_form import (
+    ClosedFormArm,
+    Turn,
+    _apply,
+    arm_scale,
+    branches,
+    flip_measure,
+)
 from .subproblems import _dot_batch as _dot
 from .subproblems import distance_angles, plane_angles
 
@@ -62,30 +69,22 @@ __all__ = ["CONFIGURATIONS", "SphericalWristArm", "WRIST_TOL"]
 #: The fixed order of the eight solutions: arm l/r, elbow u/d, wrist n/f.
 CONFIGURATIONS = ("lun", "luf", "ldn", "ldf", "run", "ruf", "rdn", "rdf")
 
-#: Relative tolerance for the structure checks and for clipping round-off.
-CLIP_TOL = 1e-10
-#: A solution is reported singular when its measure is below this: the squared distance
-#: (m^2, relative) of the wrist centre from the plane of axis 1 and w_1 x w_2
-#: (shoulder), 1 - |cos| of the elbow angle (elbow), the sine between axes 4 and 6
-#: (wrist).
-SINGULAR_TOL = 1e-9
-
-
 #: The wrist is singular (axes 4 and 6 aligned, q4 + q6 or q4 - q6 alone fixed) where
 #: the sine of the angle between them is at most this. The sine is a unit-free measure
 #: computed without cancellation (from the components of axis 6 across axis 4, not as
 #: 1 - cos^2), so its round-off is a few 1e-16 whatever the arm's lengths; the labels
 #: and the closed form test the same measure against the same number, so every label
 #: round-trips. A pose within it is solved with q4 = 0 or pi: its orientation is then
-#: off by at most this angle (rad).
-WRIST_TOL = 1e-10
+#: off by at most this angle (rad). It is the label tolerance of every closed-form
+#: engine, :data:`screwkit.tolerances.IK_LABEL_TOL`.
+WRIST_TOL = IK_LABEL_TOL
 
 
 class _Shoulder(NamedTuple):
     theta: np.ndarray  # (N, 2) = -q1 for the arm l, r
     ct: np.ndarray
     st: np.ndarray
-    turn1: "_Rotor"
+    turn1: Turn
     b1: np.ndarray  # (3, N, 2) the wrist centre at q1 = 0, from axis 2
     ok: np.ndarray  # (N,) reached
     forward: np.ndarray
@@ -134,39 +133,6 @@ def _polar(y, x):
     return np.arctan2(y, x), np.where(h > 0, x / safe, 1.0), y / safe
 
 
-def _apply(K, v):
-    """K @ v for a fixed K (3, 3) and vectors v (3, ...)."""
-    return (K @ v.reshape(3, -1)).reshape(v.shape)
-
-
-class _Rotor:
-    """Rotations about one fixed unit direction w, applied to vectors laid out
-    (3, ...)."""
-
-    def __init__(self, w):
-        self.w = w
-        self.K = self.cross_matrix(w)
-
-    @staticmethod
-    def cross_matrix(w):
-        """K with K @ x = w x x."""
-        return _skew(np.asarray(w, dtype=float))
-
-    def cross(self, w, v):
-        """w x v for a fixed w (3,) and vectors v (3, ...)."""
-        return _apply(self.cross_matrix(w), v)
-
-    def rotate(self, v, cos, sin):
-        """v (3, ...) turned about w by the angles with these cosines and sines
-        (...)."""
-        along = _dot(self.w, v) * (1 - cos)
-        return (
-            v * cos
-            + _apply(self.K, v) * sin
-            + self.w.reshape((3,) + (1,) * along.ndim) * along
-        )
-
-
 @dataclass(frozen=True)
 class SphericalWristArm(ClosedFormArm):
     """The geometry of a 6R arm with a spherical wrist, taken from its screws
@@ -200,18 +166,18 @@ class SphericalWristArm(ClosedFormArm):
         w, v = S[:, :3], S[:, 3:]
         norms = np.linalg.norm(w, axis=1)
         pitch = np.sum(w * v, axis=1) / norms**2
-        if np.any(np.abs(pitch) > 1e-9):
+        w = w / norms[:, None]
+        p = np.cross(
+            w, v / norms[:, None]
+        )  # the point of each axis nearest the base origin
+        scale = arm_scale(p)
+        tol = IK_STRUCTURE_TOL * scale
+        if np.any(np.abs(pitch) > tol):
             i = int(np.argmax(np.abs(pitch)))
             raise ValueError(
                 f"{name} must have revolute joints of pitch 0, "
                 f"joint {i + 1} is helical (pitch {pitch[i]:.6g} m/rad)"
             )
-        w = w / norms[:, None]
-        p = np.cross(
-            w, v / norms[:, None]
-        )  # the point of each axis nearest the base origin
-        scale = 1.0 + float(np.max(np.linalg.norm(p, axis=1)))
-        tol = 1e-9 * scale
         # the wrist centre: the point nearest to axes 4, 5, 6 (least squares)
         projectors = np.eye(3) - w[3:, :, None] * w[3:, None, :]
         c = np.linalg.lstsq(
@@ -221,7 +187,7 @@ class SphericalWristArm(ClosedFormArm):
             np.einsum("kij,kj->ki", projectors, c - p[3:]), axis=1
         ).max()
         parallel = [np.linalg.norm(np.cross(w[i], w[j])) for i, j in ((3, 4), (4, 5))]
-        if min(parallel) < 1e-9:
+        if min(parallel) < IK_STRUCTURE_TOL:
             raise ValueError(
                 f"{name} must have a spherical wrist: the axes of joints 4 and 5, "
                 "and of joints 5 and 6, must not be parallel"
@@ -231,13 +197,14 @@ class SphericalWristArm(ClosedFormArm):
                 f"{name} must have a spherical wrist: the axes of joints 4, 5 and "
                 f"6 must meet in one point, they miss it by {miss:.3g} m"
             )
-        angle23 = np.degrees(np.arcsin(min(1.0, np.linalg.norm(np.cross(w[1], w[2])))))
-        if angle23 > 1e-7:
+        sine23 = np.linalg.norm(np.cross(w[1], w[2]))
+        if sine23 > IK_STRUCTURE_TOL:
+            angle23 = np.degrees(np.arcsin(min(1.0, sine23)))
             raise ValueError(
                 f"{name} must have parallel axes for joints 2 and 3, got an angle "
                 f"of {angle23:.6g} deg between them"
             )
-        if np.linalg.norm(np.cross(w[0], w[1])) < 1e-9:
+        if np.linalg.norm(np.cross(w[0], w[1])) < IK_STRUCTURE_TOL:
             raise ValueError(
                 f"{name} must have the axis of joint 1 not parallel to the axes "
                 "of joints 2 and 3"
@@ -275,10 +242,7 @@ class SphericalWristArm(ClosedFormArm):
         w1, elbow = self._arm_plane(q[..., 1], q[..., 2])
         forward = (w1 - p[0]) @ np.cross(w[0], w[1])
         above = np.cross(w1 - p[1], elbow) @ w[1]
-        A = np.cross(w[3], w[5]) @ w[4]
-        B = w[3] @ w[5] - (w[3] @ w[4]) * (w[4] @ w[5])
-        flip = A * np.cos(q[..., 4]) + B * np.sin(q[..., 4])
-        return forward, above, flip
+        return forward, above, flip_measure(w, q[..., 4])
 
     def wrist_sine(self, q5):
         """``|w4 x R(w5, q5) w6|``: the sine of the angle between axes 4 and 6 at q5
@@ -299,7 +263,7 @@ class SphericalWristArm(ClosedFormArm):
     def _labels(self, q):
         """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
         forward, above, flip = self._measures(q)
-        tol = CLIP_TOL * self.scale
+        tol = IK_LABEL_TOL * self.scale  # forward is a length (m), above an area (m^2)
         right = forward >= -tol
         up = np.where(right, above, -above) > tol * self.scale
         singular = self._wrist_sine(q[..., 4]) <= WRIST_TOL
@@ -335,15 +299,15 @@ class SphericalWristArm(ClosedFormArm):
         w, p, c = self.w, self.p, self.c
         w1, w2 = w[0], w[1]
         phi, half, excess, rho2 = plane_angles(w1, w2, w2 @ (c - p[0]), d)
-        ok = excess >= -CLIP_TOL * self.scale**2
+        ok = excess >= -IK_CLIP_TOL * self.scale**2
         forward = np.sqrt(np.maximum(excess, 0.0))
-        free = rho2 < (CLIP_TOL * self.scale) ** 2  # the wrist centre on axis 1
+        free = rho2 < (IK_CLIP_TOL * self.scale) ** 2  # the wrist centre on axis 1
         theta = np.stack([phi - half, phi + half], axis=1)  # (N, 2): arm l, r
         theta = np.where(free[:, None], 0.0, theta)
         ct, st = np.cos(theta), np.sin(theta)
-        turn1 = _Rotor(w1)
+        turn1 = Turn(w1)
         # b1 = w1 - p2: the wrist centre at q1 = 0 seen from axis 2, (3, N, 2)
-        b1 = turn1.rotate(np.repeat(d[:, :, None], 2, axis=2), ct, st)
+        b1 = turn1.first(np.repeat(d[:, :, None], 2, axis=2), ct, st)
         b1 += (p[0] - p[1])[:, None, None]
         return _Shoulder(theta, ct, st, turn1, b1, ok, forward)
 
@@ -357,7 +321,7 @@ class SphericalWristArm(ClosedFormArm):
         v3 = p[1] - p[2] - w2 * (w2 @ (p[1] - p[2]))
         delta2 = np.sum(b1**2, axis=0) - (w2 @ (c - p[1])) ** 2
         theta0, cosine = distance_angles(w2, u3, v3, delta2)
-        ok = np.abs(cosine) <= 1 + CLIP_TOL
+        ok = np.abs(cosine) <= 1 + IK_CLIP_TOL
         cosine = np.clip(cosine, -1.0, 1.0)
         beta = np.arccos(cosine)
         theta0 = s3 * theta0
@@ -373,7 +337,7 @@ class SphericalWristArm(ClosedFormArm):
         # a = k0 + cos(q3) k1 + sin(q3) k2, and b1 . (w2 x k) = -m . k with m = w2 x b1
         c3, s3q = np.cos(s3 * elbow.q3), np.sin(s3 * elbow.q3)
         k0 = p[2] - p[1] + w2 * (w2 @ (c - p[2]))
-        k1, k2 = u3, _cross3(w2, u3)
+        k1, k2 = u3, _cross(w2, u3)
         m = _apply(_skew(w2), b1)
         dots = [_dot(k, b1)[..., None] for k in (k0, k1, k2)]
         crosses = [-_dot(k, m)[..., None] for k in (k0, k1, k2)]
@@ -385,7 +349,7 @@ class SphericalWristArm(ClosedFormArm):
         # the elbow label: above = ((w1 - p2) x R2 (p3 - p2)) . w2; the larger
         # sigma*above is 'u'
         e = p[2] - p[1] - w2 * (w2 @ (p[2] - p[1]))
-        above = c2 * _dot(e, m)[..., None] + s2 * _dot(_cross3(w2, e), m)[..., None]
+        above = c2 * _dot(e, m)[..., None] + s2 * _dot(_cross(w2, e), m)[..., None]
         sigma = np.array([-1.0, 1.0])
         swap = sigma * above[..., 0] < sigma * above[..., 1]  # (N, 2)
         swap = swap[..., None]
@@ -413,22 +377,22 @@ class SphericalWristArm(ClosedFormArm):
             arm.c3,
             arm.s3q,
         )
-        x6 = _unit(_cross3(w5, w6))
+        x6 = _unit(_cross(w5, w6))
         g = np.stack([RG @ w6, RG @ x6], axis=-1).transpose(1, 0, 2)  # (3, N, 2)
-        g = shoulder.turn1.rotate(
+        g = shoulder.turn1.first(
             np.repeat(g[:, :, None], 2, axis=2), ct[..., None], st[..., None]
         )
         c23, s23 = (
             c2 * c3 - s2 * s3q,
             s2 * c3 + c2 * s3q,
         )  # of q2 + s3 q3: turn back by it
-        g = _Rotor(w2).rotate(
+        g = Turn(w2).first(
             np.repeat(g[:, :, :, None], 2, axis=3), c23[..., None], -s23[..., None]
         )
         t, b = g[..., 0], g[..., 1]  # (3, N, 2, 2)
         c45, c46, c56 = w4 @ w5, w4 @ w6, w5 @ w6
-        n45 = _cross3(w4, w5)
-        t4, t5, tn, tm = (_dot(v, t) for v in (w4, w5, n45, _cross3(w4, n45)))
+        n45 = _cross(w4, w5)
+        t4, t5, tn, tm = (_dot(v, t) for v in (w4, w5, n45, _cross(w4, n45)))
         a = (c45 * c56 - t4) / (c45**2 - 1)
         bb = (c45 * t4 - c56) / (c45**2 - 1)
         # gamma^2 = |z_perp|^2 / |n45|^2 - bb^2 with |z_perp| = |t_perp|
@@ -437,13 +401,13 @@ class SphericalWristArm(ClosedFormArm):
         sine46 = np.sqrt(tn**2 + tm**2) / np.sqrt(
             n45 @ n45
         )  # |t x w4|: the wrist's sine
-        ok = gamma2 >= -CLIP_TOL
+        ok = gamma2 >= -IK_CLIP_TOL
         gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array(
             [1.0, -1.0]
         )  # n, f
         a, bb, t4, t5, tn, tm = (v[..., None] for v in (a, bb, t4, t5, tn, tm))
         # q5: about w5 from w6 to z = a w4 + bb w5 + gamma n45; q4: about w4 from z to t
-        n56 = _cross3(w5, w6)
+        n56 = _cross(w5, w6)
         # (z . t - (z . w4)(t . w4) written without the cancelling terms)
         q5, c5, s5 = _polar(
             a * (w4 @ n56) + gamma * (n45 @ n56),
@@ -472,18 +436,18 @@ class SphericalWristArm(ClosedFormArm):
         def turned4(f):  # b . R4 f
             return (
                 _dot(f, b)[..., None] * c4
-                + _dot(_cross3(w4, f), b)[..., None] * s4
+                + _dot(_cross(w4, f), b)[..., None] * s4
                 + _dot(w4, b)[..., None] * (w4 @ f) * (1 - c4)
             )
 
         def along(e):  # b . R4 R5 e, (N, 2, 2, 2)
             return (
                 turned4(e) * c5
-                + turned4(_cross3(w5, e)) * s5
+                + turned4(_cross(w5, e)) * s5
                 + turned4(w5) * (w5 @ e) * (1 - c5)
             )
 
-        return np.arctan2(along(_cross3(w6, wrist.x6)), along(wrist.x6))
+        return np.arctan2(along(_cross(w6, wrist.x6)), along(wrist.x6))
 
     def _assemble(self, shoulder, elbow, arm, wrist, q6):
         """The answer: Q (N, 8, 6) in the order of CONFIGURATIONS
@@ -501,18 +465,16 @@ class SphericalWristArm(ClosedFormArm):
             & elbow.ok[:, :, None, None]
             & wrist.ok[..., None]
         )
-        if not np.all(reached):
-            Q[~np.broadcast_to(reached, shape)] = np.nan
-        Q = Q.reshape(N, 8, 6)
         flags = np.empty(shape + (3,), dtype=bool)
-        flags[..., 0] = (shoulder.forward**2 < SINGULAR_TOL * self.scale**2)[
+        flags[..., 0] = (shoulder.forward**2 < IK_SINGULAR_TOL * self.scale**2)[
             :, None, None, None
         ]
-        flags[..., 1] = (1 - np.abs(elbow.cosine) < SINGULAR_TOL)[:, :, None, None]
+        flags[..., 1] = (1 - np.abs(elbow.cosine) < IK_SINGULAR_TOL)[:, :, None, None]
         flags[..., 2] = (
             np.sqrt(np.maximum(wrist.gamma2, 0)) * np.linalg.norm(wrist.n45)
-            < SINGULAR_TOL
+            < IK_SINGULAR_TOL
         )[..., None]
+        Q, flags = branches(Q, flags, reached)
         code = np.where(
             ~shoulder.ok,
             1,
@@ -522,7 +484,7 @@ class SphericalWristArm(ClosedFormArm):
                 np.where(np.all(np.isnan(Q[..., 0]), axis=1), 3, 0),
             ),
         )
-        return Q, flags.reshape(N, 8, 3), code
+        return Q, flags, code
 
     def _reason(self, T, code):
         """A sentence for an unreachable pose T (4, 4) with reason code 1, 2 or 3."""
@@ -540,12 +502,9 @@ class SphericalWristArm(ClosedFormArm):
         if code == 2:
             u3 = np.linalg.norm(c - p[2] - w[2] * (w[2] @ (c - p[2])))
             v3 = np.linalg.norm(p[1] - p[2] - w[2] * (w[2] @ (p[1] - p[2])))
-            along = d @ w[0]
-            A, B = (d - along * w[0]) @ w[1], d @ np.cross(w[1], w[0])
-            C = w[1] @ (c - p[0]) - along * (w[1] @ w[0])
-            half = np.arctan2(np.sqrt(max(A**2 + B**2 - C**2, 0.0)), C)
+            phi, half, _, _ = plane_angles(w[0], w[1], w[1] @ (c - p[0]), d)
             distances = []
-            for theta in (np.arctan2(B, A) - half, np.arctan2(B, A) + half):
+            for theta in (phi - half, phi + half):
                 w1 = p[0] + _rotate_vectors(w[0], np.array(theta), d)
                 distances.append(
                     np.sqrt(max(np.sum((w1 - p[1]) ** 2) - (w[2] @ (c - p[1])) ** 2, 0))

@@ -32,38 +32,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_chain
+from ..tolerances import IK_CLIP_TOL, IK_LABEL_TOL, IK_SINGULAR_TOL, IK_STRUCTURE_TOL
 from ..transforms import _rotate_vectors, _wrap_angle, inv
-from ._closed_form import ClosedFormArm
+from ._closed_form import ClosedFormArm, arm_scale, branches, flip_measure
+from .subproblems import meeting_points, rotation_angles
 
 __all__ = ["StanfordArm", "STRUCTURE"]
 
 #: The structure's name, as ``analytic_ik`` reports it.
 STRUCTURE = "RRP arm with a spherical wrist (Stanford)"
-#: Relative tolerance for the structure checks and for clipping round-off.
-CLIP_TOL = 1e-10
-#: A solution is flagged singular when its measure is below this.
-SINGULAR_TOL = 1e-9
-
-
-def _angle_about(w, a, b):
-    """The angle about the unit direction w that turns a (..., 3) towards b (..., 3)."""
-    a_ = a - w * (a @ w)[..., None]
-    b_ = b - w * (b @ w)[..., None]
-    return np.arctan2(np.cross(a_, b_) @ w, np.sum(a_ * b_, axis=-1))
-
-
-def _two_axes(w1, w2, x, y):
-    """Subproblem 2 through one point: z with z . w2 = x . w2, z . w1 = y . w1 and
-    |z| = |x|, for x, y (..., 3) from the meeting point: two z (..., 2, 3), gamma^2."""
-    c12 = w1 @ w2
-    n = np.cross(w1, w2)
-    xw2, yw1 = x @ w2, y @ w1
-    alpha = (c12 * xw2 - yw1) / (c12**2 - 1)
-    beta = (c12 * yw1 - xw2) / (c12**2 - 1)
-    gamma2 = (np.sum(x * x, -1) - alpha**2 - beta**2 - 2 * alpha * beta * c12) / (n @ n)
-    gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array([-1.0, 1.0])
-    z = alpha[..., None, None] * w1 + beta[..., None, None] * w2 + gamma[..., None] * n
-    return z, gamma2
 
 
 @dataclass(frozen=True)
@@ -103,13 +80,13 @@ class StanfordArm(ClosedFormArm):
         w[revolute] /= np.linalg.norm(w[revolute], axis=1)[:, None]
         p = np.zeros((6, 3))
         p[revolute] = np.cross(w[revolute], v[revolute])
-        scale = 1.0 + float(np.max(np.linalg.norm(p, axis=1)))
-        tol = 1e-9 * scale
+        scale = arm_scale(p)
+        tol = IK_STRUCTURE_TOL * scale
         points = []
         for axes, what in (((0, 1), "1 and 2"), ((3, 4, 5), "4, 5 and 6")):
             projectors = np.eye(3) - w[list(axes), :, None] * w[list(axes), None, :]
             A = projectors.sum(0)
-            if np.linalg.matrix_rank(A, tol=1e-9) < 3:
+            if np.linalg.matrix_rank(A, tol=IK_STRUCTURE_TOL) < 3:
                 raise ValueError(
                     f"{name} must have the axes of joints {what} meeting in "
                     "one point, got parallel axes"
@@ -132,7 +109,7 @@ class StanfordArm(ClosedFormArm):
                 np.linalg.norm(np.cross(w[3], w[4])),
                 np.linalg.norm(np.cross(w[4], w[5])),
             )
-            < 1e-9
+            < IK_STRUCTURE_TOL
         ):
             raise ValueError(
                 f"{name} must have a spherical wrist: the axes of joints 4 and "
@@ -150,18 +127,15 @@ class StanfordArm(ClosedFormArm):
         x = _rotate_vectors(w[1], q[..., 1], x)
         forward = x @ np.cross(w[0], w[1])
         boom = q[..., 2] + w[2] @ (c - o)
-        A = np.cross(w[3], w[5]) @ w[4]
-        B = w[3] @ w[5] - (w[3] @ w[4]) * (w[4] @ w[5])
-        flip = A * np.cos(q[..., 4]) + B * np.sin(q[..., 4])
-        return forward, boom, flip
+        return forward, boom, flip_measure(w, q[..., 4])
 
     def _labels(self, q):
         """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
         forward, boom, flip = self._measures(q)
-        tol = CLIP_TOL * self.scale
-        arm = np.where(forward >= -tol * self.scale, "r", "l")
+        tol = IK_LABEL_TOL * self.scale  # forward and boom are lengths (m)
+        arm = np.where(forward >= -tol, "r", "l")
         elbow = np.where(boom >= -tol, "u", "d")
-        wrist = np.where(flip >= -CLIP_TOL, "f", "n")
+        wrist = np.where(flip >= -IK_LABEL_TOL, "f", "n")
         return np.char.add(np.char.add(arm, elbow), wrist)
 
     # ---- the closed form ------------------------------------------------------------
@@ -177,27 +151,27 @@ class StanfordArm(ClosedFormArm):
         # joint 3: |c - o + q3 v| = |y|, the larger root first ('u', then 'd')
         b = v @ (c - o)
         disc = b**2 - ((c - o) @ (c - o) - np.sum(y * y, -1))
-        boom_ok = disc >= -CLIP_TOL * self.scale**2
+        boom_ok = disc >= -IK_CLIP_TOL * self.scale**2
         root = np.sqrt(np.maximum(disc, 0.0))
         q3 = -b + root[:, None] * np.array([1.0, -1.0])  # (N, 2): u, d
 
         # joints 1, 2: exp(xi2 q2) x = z, exp(xi1 q1) z = y with x = c - o + q3 v
         x = (c - o) + q3[..., None] * v  # (N, 2, 3)
-        z, gamma2 = _two_axes(w[0], w[1], x, y[:, None])  # (N, 2, 2, 3): boom, arm l/r
-        shoulder_ok = gamma2 >= -CLIP_TOL * self.scale**2
-        q2 = _angle_about(w[1], x[:, :, None], z)
-        q1 = _angle_about(w[0], z, y[:, None, None])  # (N, 2, 2)
+        z, gamma2 = meeting_points(
+            w[0], w[1], x, y[:, None]
+        )  # (N, 2, 2, 3): boom, arm l/r
+        shoulder_ok = gamma2 >= -IK_CLIP_TOL * self.scale**2
+        q2 = rotation_angles(w[1], x[:, :, None], z)
+        q1 = rotation_angles(w[0], z, y[:, None, None])  # (N, 2, 2)
 
         # the wrist: Rw = R2^T R1^T RG = R4 R5 R6; t = Rw w6
         t = np.einsum("nij,j->ni", RG, w[5])[:, None, None]
         t = _rotate_vectors(w[1], -q2, _rotate_vectors(w[0], -q1, t))  # (N, 2, 2, 3)
-        zw, gamma_w = _two_axes(w[3], w[4], np.broadcast_to(w[5], t.shape), t)
-        wrist_ok = gamma_w >= -CLIP_TOL
-        q5 = _angle_about(w[4], w[5], zw)  # (N, 2, 2, 2)
-        q4 = _angle_about(w[3], zw, t[..., None, :])
-        A = np.cross(w[3], w[5]) @ w[4]
-        B = w[3] @ w[5] - (w[3] @ w[4]) * (w[4] @ w[5])
-        order = np.argsort(A * np.cos(q5) + B * np.sin(q5), axis=-1)  # n first, then f
+        zw, gamma_w = meeting_points(w[3], w[4], np.broadcast_to(w[5], t.shape), t)
+        wrist_ok = gamma_w >= -IK_CLIP_TOL
+        q5 = rotation_angles(w[4], w[5], zw)  # (N, 2, 2, 2)
+        q4 = rotation_angles(w[3], zw, t[..., None, :])
+        order = np.argsort(flip_measure(w, q5), axis=-1)  # n first, then f
         q4, q5 = np.take_along_axis(q4, order, -1), np.take_along_axis(q5, order, -1)
         # q6: about w6 from x6 to R5^T R4^T Rw x6
         x6 = np.cross(w[4], w[5])
@@ -205,7 +179,7 @@ class StanfordArm(ClosedFormArm):
         g = np.einsum("nij,j->ni", RG, x6)[:, None, None]
         g = _rotate_vectors(w[1], -q2, _rotate_vectors(w[0], -q1, g))[..., None, :]
         g = _rotate_vectors(w[4], -q5, _rotate_vectors(w[3], -q4, g))
-        q6 = _angle_about(w[5], np.broadcast_to(x6, g.shape), g)
+        q6 = rotation_angles(w[5], np.broadcast_to(x6, g.shape), g)
 
         # the answer: (N, boom, arm, wrist) -> (N, arm, boom, wrist) = CONFIGURATIONS
         shape = (N, 2, 2, 2)
@@ -223,15 +197,15 @@ class StanfordArm(ClosedFormArm):
             & shoulder_ok[..., None, None]
             & wrist_ok[..., None]
         )
-        Q[~np.broadcast_to(reached, shape)] = np.nan
         flags = np.empty(shape + (3,), dtype=bool)
-        flags[..., 0] = (np.abs(gamma2) < SINGULAR_TOL * self.scale**2)[..., None, None]
-        flags[..., 1] = (np.abs(disc) < SINGULAR_TOL * self.scale**2)[
+        flags[..., 0] = (np.abs(gamma2) < IK_SINGULAR_TOL * self.scale**2)[
+            ..., None, None
+        ]
+        flags[..., 1] = (np.abs(disc) < IK_SINGULAR_TOL * self.scale**2)[
             :, None, None, None
         ]
-        flags[..., 2] = (np.abs(gamma_w) < SINGULAR_TOL)[..., None]
-        Q, flags = Q.transpose(0, 2, 1, 3, 4), flags.transpose(0, 2, 1, 3, 4)
-        Q = Q.reshape(N, 8, 6)
+        flags[..., 2] = (np.abs(gamma_w) < IK_SINGULAR_TOL)[..., None]
+        Q, flags = branches(Q, flags, reached, order=(0, 2, 1, 3))
         code = np.where(
             ~boom_ok,
             2,
@@ -241,7 +215,7 @@ class StanfordArm(ClosedFormArm):
                 np.where(np.all(np.isnan(Q[..., 0]), axis=1), 3, 0),
             ),
         )
-        return Q, flags.reshape(N, 8, 3), code
+        return Q, flags, code
 
     def _reason(self, T, code):
         """A sentence for an unreachable pose T (4, 4) with reason code 1, 2 or 3."""

@@ -38,6 +38,7 @@ from .._checks import (
     is_symbolic,
 )
 from ..tolerances import SUBPROBLEM_TOL as TOL
+from ..transforms import _cross
 
 __all__ = [
     "Solutions",
@@ -104,7 +105,7 @@ def _twist(twist, name, exact):
         raise ValueError(
             f"{name} must have pitch 0 (w . v = 0), got w . v = {w @ v:.6g}"
         )
-    return w, np.cross(w, v)
+    return w, _cross(w, v)
 
 
 def _direction(s, name, exact):
@@ -188,14 +189,16 @@ def _norm(a, exact):
     return sp.sqrt(_dot(a, a, exact)) if exact else float(np.linalg.norm(a))
 
 
-def _cross(a, b, exact):
-    return a.cross(b) if exact else np.cross(a, b)
+def _vector_cross(a, b, exact):
+    return a.cross(b) if exact else _cross(a, b)
 
 
-# ---- batch kernels: float arrays, vectors laid out (3, ...), no checks ---------------
-# The closed-form IK (:mod:`screwkit.spherical_wrist`) runs its steps through these,
-# over a whole batch of poses at once; the scalar subproblems below run their numeric
-# case through them too, so each formula is written once.
+# ---- batch kernels: float arrays, no checks ------------------------------------------
+# The closed-form engines (:mod:`.spherical_wrist`, :mod:`.ur`, :mod:`.stanford`) run
+# their steps through these, over a whole batch of poses at once; the scalar
+# subproblems below run their numeric case through them too, so each formula is written
+# once. Each kernel says how its vectors are laid out: (3, ...) (components first, so
+# that products with a fixed axis are one matrix product) or (..., 3).
 
 
 def _dot_batch(w, v):
@@ -203,31 +206,22 @@ def _dot_batch(w, v):
     return (w @ v.reshape(3, -1)).reshape(v.shape[1:])
 
 
-def _cross_fixed(a, b):
-    """a x b for two single 3-vectors (np.cross costs more than the arithmetic here)."""
-    return np.array(
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    )
+def sinusoid_angles(A, B, C):
+    """The angles theta with A cos(theta) + B sin(theta) = C, the equation every
+    closed-form step of one angle comes down to.
 
+    Parameters
+    ----------
+    A, B, C : array-like, broadcasting to shape (...), any one unit
 
-def plane_angles(w, n, h, x):
-    """Subproblem 4 over a batch: the angles about the unit axis w through the origin
-    that bring the points x (3, ...) onto the plane n . y = h.
-
-    With A = n . x - (w . x)(w . n), B = (n x w) . x and C = h - (w . x)(n . w), the
-    angles are phi -+ half, phi = atan2(B, A), half = atan2(sqrt(A^2 + B^2 - C^2), C).
-    Returns (phi, half, excess, radius2), each (...): ``excess`` = A^2 + B^2 - C^2 is
-    negative where no angle reaches the plane (``half`` is then that of excess 0),
-    ``radius2`` = A^2 + B^2 is 0 where x is on the axis (every angle, or none).
+    Returns
+    -------
+    phi, half : arrays (...), rad: the angles are phi - half and phi + half, with
+        phi = atan2(B, A) and half = atan2(sqrt(A^2 + B^2 - C^2), C)
+    excess : array (...), A^2 + B^2 - C^2: negative where no angle solves it (``half``
+        is then that of excess 0)
+    radius2 : array (...), A^2 + B^2: 0 where every angle or none solves it
     """
-    along = _dot_batch(w, x)
-    A = _dot_batch(n, x) - along * (w @ n)
-    B = _dot_batch(_cross_fixed(n, w), x)
-    C = h - along * (n @ w)
     radius2 = A**2 + B**2
     excess = radius2 - C**2
     phi = np.arctan2(B, A)
@@ -235,14 +229,98 @@ def plane_angles(w, n, h, x):
     return phi, half, excess, radius2
 
 
+def plane_angles(w, n, h, x):
+    """Subproblem 4 over a batch: the angles about the unit axis w through the origin
+    that bring the points x onto the plane n . y = h.
+
+    With A = n . x - (w . x)(w . n), B = (n x w) . x and C = h - (w . x)(n . w), the
+    angles solve A cos + B sin = C (:func:`sinusoid_angles`).
+
+    Parameters
+    ----------
+    w, n : array, shape (3,), unit axis direction and unit plane normal
+    h : float or array (...), the plane's offset (m)
+    x : array, shape (3, ...), points (m), laid out components first
+
+    Returns
+    -------
+    phi, half, excess, radius2 : arrays (...), as :func:`sinusoid_angles` returns them
+        (rad, rad, m^2, m^2): the angles are phi -+ half
+    """
+    along = _dot_batch(w, x)
+    A = _dot_batch(n, x) - along * (w @ n)
+    B = _dot_batch(_cross(n, w), x)
+    C = h - along * (n @ w)
+    return sinusoid_angles(A, B, C)
+
+
 def distance_angles(w, u, v, delta2):
-    """Subproblem 3 in the plane across the unit axis w: for u, v (3,) perpendicular to
-    w and squared distances delta2 (...), the angle theta0 from u to v and the cosine
-    (|u|^2 + |v|^2 - delta2) / (2 |u| |v|) whose arccos is added to it and subtracted; a
-    cosine beyond +-1 means no angle reaches the distance. Returns (theta0, cosine)."""
+    """Subproblem 3 in the plane across the unit axis w.
+
+    Parameters
+    ----------
+    w : array, shape (3,), unit axis direction
+    u, v : array, shape (3,), vectors perpendicular to w (m)
+    delta2 : array (...), squared distances across the axis (m^2)
+
+    Returns
+    -------
+    theta0 : float, rad, the angle about w from u to v
+    cosine : array (...), (|u|^2 + |v|^2 - delta2) / (2 |u| |v|): the angles are
+        theta0 -+ arccos(cosine); a cosine beyond +-1 means no angle reaches delta
+    """
     lu, lv = np.linalg.norm(u), np.linalg.norm(v)
     cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
-    return np.arctan2(_cross_fixed(u, v) @ w, u @ v), cosine
+    return np.arctan2(_cross(u, v) @ w, u @ v), cosine
+
+
+def rotation_angles(w, a, b):
+    """Subproblem 1 over a batch: the angle about the unit axis w (through the origin)
+    that turns a towards b, atan2(w . (a' x b'), a' . b') with a', b' their parts
+    across w.
+
+    Parameters
+    ----------
+    w : array, shape (3,), unit axis direction
+    a, b : arrays, shapes broadcasting to (..., 3), vectors laid out components last
+
+    Returns
+    -------
+    theta : array (...), rad in (-pi, pi]; 0 where a' or b' is 0 (every angle)
+    """
+    a_ = a - w * (a @ w)[..., None]
+    b_ = b - w * (b @ w)[..., None]
+    return np.arctan2(np.cross(a_, b_) @ w, np.sum(a_ * b_, axis=-1))
+
+
+def meeting_points(w1, w2, x, y):
+    """Subproblem 2 over a batch, for two axes through the origin: the points z with
+    z . w2 = x . w2, z . w1 = y . w1 and |z| = |x|, where the circle of x about w2
+    meets the circle of y about w1 (then exp(theta2 w2) x = z = exp(-theta1 w1) y).
+
+    z = alpha w1 + beta w2 + gamma (w1 x w2), with alpha, beta from the two planes and
+    gamma^2 = (|x|^2 - alpha^2 - beta^2 - 2 alpha beta w1 . w2) / |w1 x w2|^2.
+
+    Parameters
+    ----------
+    w1, w2 : array, shape (3,), unit directions of two axes that are not parallel
+    x, y : arrays, shapes broadcasting to (..., 3), vectors laid out components last
+
+    Returns
+    -------
+    z : array (..., 2, 3), the two points, gamma = -|gamma| first
+    gamma2 : array (...): negative where the circles do not meet (z then takes
+        gamma = 0)
+    """
+    c12 = w1 @ w2
+    n = np.cross(w1, w2)
+    xw2, yw1 = x @ w2, y @ w1
+    alpha = (c12 * xw2 - yw1) / (c12**2 - 1)
+    beta = (c12 * yw1 - xw2) / (c12**2 - 1)
+    gamma2 = (np.sum(x * x, -1) - alpha**2 - beta**2 - 2 * alpha * beta * c12) / (n @ n)
+    gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array([-1.0, 1.0])
+    z = alpha[..., None, None] * w1 + beta[..., None, None] * w2 + gamma[..., None] * n
+    return z, gamma2
 
 
 # ---- the subproblems -----------------------------------------------------------------
@@ -283,8 +361,14 @@ def _subproblem1(w, r, p, q, exact):
         return Solutions(reason="p and q are at different distances from the axis")
     if _sign(_dot(u1, u1, exact), scale * scale, exact) == 0:
         return Solutions([sp.S.Zero if exact else 0.0], free=True)
+    if not exact:
+        return Solutions([float(rotation_angles(w, u, v))])
     return Solutions(
-        [_atan2(_dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact)]
+        [
+            _atan2(
+                _dot(w, _vector_cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact
+            )
+        ]
     )
 
 
@@ -306,7 +390,7 @@ def subproblem2(twist1, twist2, p, q):
     w1, r1 = _twist(twist1, "twist1", exact)
     w2, r2 = _twist(twist2, "twist2", exact)
     p, q = _point(p, "p", exact), _point(q, "q", exact)
-    n = _cross(w1, w2, exact)
+    n = _vector_cross(w1, w2, exact)
     n2 = _dot(n, n, exact)
     if _sign(n2, 1.0, exact) == 0:
         raise ValueError(
@@ -324,27 +408,28 @@ def subproblem2(twist1, twist2, p, q):
     t = (_dot(d, w1, exact) - c12 * _dot(d, w2, exact)) / (1 - c12 * c12)
     r = r1 + w1 * t
     u, v = p - r, q - r
-    denominator = c12 * c12 - 1
-    alpha = (c12 * _dot(w2, u, exact) - _dot(w1, v, exact)) / denominator
-    beta = (c12 * _dot(w1, v, exact) - _dot(w2, u, exact)) / denominator
-    gamma2 = (_dot(u, u, exact) - alpha**2 - beta**2 - 2 * alpha * beta * c12) / n2
     if exact:
+        denominator = c12 * c12 - 1
+        alpha = (c12 * _dot(w2, u, exact) - _dot(w1, v, exact)) / denominator
+        beta = (c12 * _dot(w1, v, exact) - _dot(w2, u, exact)) / denominator
+        gamma2 = (_dot(u, u, exact) - alpha**2 - beta**2 - 2 * alpha * beta * c12) / n2
         gamma2 = sp.simplify(gamma2)
-    scale = 1.0 if exact else 1.0 + float(np.linalg.norm(u) + np.linalg.norm(v))
-    sign = _sign(gamma2, scale * scale, exact)
+        sign = _sign(gamma2, 1, exact)
+        middle = r + w1 * alpha + w2 * beta
+        roots = [sp.S.Zero] if sign == 0 else [sp.sqrt(gamma2), -sp.sqrt(gamma2)]
+        points = [middle + n * root for root in roots]
+    else:  # the batch kernel, on one pose: z - r for gamma = -|gamma|, +|gamma|
+        (below, above), gamma2 = meeting_points(w1, w2, u, v)
+        scale = 1.0 + float(np.linalg.norm(u) + np.linalg.norm(v))
+        sign = _sign(float(gamma2), scale * scale, exact)
+        points = [r + (below + above) / 2] if sign == 0 else [r + above, r + below]
     if sign < 0:
         return Solutions(
             reason="the circles of p about axis 2 and of q about axis 1 do not "
             "meet (gamma^2 < 0)"
         )
-    if sign == 0:
-        gammas = [sp.S.Zero if exact else 0.0]
-    else:
-        root = sp.sqrt(gamma2) if exact else float(np.sqrt(gamma2))
-        gammas = [root, -root]
     pairs, free = [], False
-    for gamma in gammas:
-        z = r + w1 * alpha + w2 * beta + n * gamma
+    for z in points:
         theta2 = _subproblem1(w2, r, p, z, exact)
         theta1 = _subproblem1(w1, r, z, q, exact)
         if not theta1 or not theta2:
@@ -388,7 +473,7 @@ def subproblem3(twist, p, q, delta):
         )
     if exact:
         theta0 = _atan2(
-            _dot(w, _cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact
+            _dot(w, _vector_cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact
         )
         cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
     else:
@@ -445,7 +530,7 @@ def subproblem4(twist, p, normal, d):
     if not exact:
         return _subproblem4_numeric(w, r, u, n, d)
     A = _dot(n, _project(w, u, exact), exact)
-    B = _dot(n, _cross(w, u, exact), exact)
+    B = _dot(n, _vector_cross(w, u, exact), exact)
     C = _dot(n, r, exact) + _dot(n, w, exact) * _dot(w, u, exact)
     radius2 = A**2 + B**2
     scale = 1.0

@@ -41,44 +41,22 @@ import numpy as np
 
 from .._checks import check_chain
 from ..links import Joint
-from ..transforms import _skew, _wrap_angle, inv
-from ._closed_form import ClosedFormArm
+from ..tolerances import IK_CLIP_TOL, IK_LABEL_TOL, IK_SINGULAR_TOL, IK_STRUCTURE_TOL
+from ..transforms import _wrap_angle, inv
+from ._closed_form import ClosedFormArm, Turn, arm_scale, branches
+from .subproblems import plane_angles, rotation_angles, sinusoid_angles
 
 __all__ = ["URArm", "STRUCTURE"]
 
 #: The structure's name, as ``analytic_ik`` reports it.
 STRUCTURE = "UR-type (joints 2, 3, 4 parallel, axes 5 and 6 meet)"
-#: Relative tolerance for the structure checks and for clipping round-off.
-CLIP_TOL = 1e-10
-#: A solution is flagged singular when its measure is below this (see spherical_wrist).
-SINGULAR_TOL = 1e-9
-
-
-class _Turn:
-    """Rotations about one fixed unit direction w of vectors laid out (..., 3)."""
-
-    def __init__(self, w):
-        self.w, self.KT = w, _skew(w).T
-
-    def __call__(self, x, c, s):
-        """x (..., 3) turned by the angles of cosines c and sines s (they broadcast)."""
-        along, cross = x @ self.w, x @ self.KT
-        c, s = c[..., None], s[..., None]
-        return x * c + cross * s + self.w * (along[..., None] * (1 - c))
-
-    def fixed(self, v, c, s):
-        """One vector v (3,) turned by the angles of cosines c and sines s (...)."""
-        c, s = c[..., None], s[..., None]
-        v_along = self.w * (v @ self.w)
-        return (v - v_along) * c + (self.KT.T @ v) * s + v_along
 
 
 def _roots(A, B, C):
-    """The two angles of A cos + B sin = C (..., 2), sorted later, and whether real."""
-    excess = A**2 + B**2 - C**2
-    ok = excess >= -CLIP_TOL * np.maximum(A**2 + B**2, 1e-300)
-    phi = np.arctan2(B, A)
-    half = np.arctan2(np.sqrt(np.maximum(excess, 0.0)), C)
+    """The two angles of A cos + B sin = C (..., 2), sorted later, and whether real
+    (the equation's ``excess`` clipped by :data:`~screwkit.tolerances.IK_CLIP_TOL`)."""
+    phi, half, excess, radius2 = sinusoid_angles(A, B, C)
+    ok = excess >= -IK_CLIP_TOL * radius2
     return np.stack([phi - half, phi + half], axis=-1), ok, excess
 
 
@@ -109,27 +87,27 @@ class URArm(ClosedFormArm):
         w, v = S[:, :3], S[:, 3:]
         w = w / np.linalg.norm(w, axis=1)[:, None]
         p = np.cross(w, v)
-        scale = 1.0 + float(np.max(np.linalg.norm(p, axis=1)))
+        scale = arm_scale(p)
         u = w[1]
         for i in (2, 3):
-            if np.linalg.norm(np.cross(u, w[i])) > 1e-9:
+            if np.linalg.norm(np.cross(u, w[i])) > IK_STRUCTURE_TOL:
                 raise ValueError(
                     f"{name} must have parallel axes for joints 2, 3 and 4 "
                     f"(joint {i + 1} is not parallel to joint 2)"
                 )
         for i, what in ((0, "1"), (4, "5")):
-            if np.linalg.norm(np.cross(u, w[i])) < 1e-9:
+            if np.linalg.norm(np.cross(u, w[i])) < IK_STRUCTURE_TOL:
                 raise ValueError(
                     f"{name} must have the axis of joint {what} not parallel "
                     "to the axes of joints 2, 3 and 4"
                 )
         n56 = np.cross(w[4], w[5])
-        if np.linalg.norm(n56) < 1e-9:
+        if np.linalg.norm(n56) < IK_STRUCTURE_TOL:
             raise ValueError(
                 f"{name} must have the axes of joints 5 and 6 not parallel"
             )
         gap = abs((p[5] - p[4]) @ n56) / np.linalg.norm(n56)
-        if gap > 1e-9 * scale:
+        if gap > IK_STRUCTURE_TOL * scale:
             raise ValueError(
                 f"{name} must have the axes of joints 5 and 6 meeting in a "
                 f"point, they miss by {gap:.3g} m"
@@ -140,7 +118,7 @@ class URArm(ClosedFormArm):
         c = p[4] + t * w[4]
         for i, j in ((1, 2), (2, 3)):
             between = p[j] - p[i] - u * (u @ (p[j] - p[i]))
-            if np.linalg.norm(between) < 1e-9 * scale:
+            if np.linalg.norm(between) < IK_STRUCTURE_TOL * scale:
                 raise ValueError(
                     f"{name} must have distinct axes for joints {i + 1} and "
                     f"{j + 1}, got the same line"
@@ -154,7 +132,7 @@ class URArm(ClosedFormArm):
         w, p, c, u = self.w, self.p, self.c, self.w[1]
         q = np.asarray(q, dtype=float)
         one = np.ones(q.shape[:-1])
-        rot = [_Turn(w[i]) for i in range(6)]
+        rot = [Turn(w[i]) for i in range(6)]
         angle = [(np.cos(q[..., i]), np.sin(q[..., i])) for i in range(6)]
 
         def move(i, x):  # exp(xi_i q_i) applied to points x (..., 3)
@@ -164,7 +142,7 @@ class URArm(ClosedFormArm):
         P = move(1, move(2, p[3] * one[..., None]))
         E = move(1, p[2] * one[..., None])
         forward = (x1 - p[0]) @ np.cross(w[0], u)
-        sigma = np.where(forward >= -CLIP_TOL * self.scale, 1.0, -1.0)
+        sigma = np.where(forward >= -IK_LABEL_TOL * self.scale, 1.0, -1.0)
         above = sigma * (np.cross(P - p[1], E - p[1]) @ u)
         w6 = rot[4](w[5] * one[..., None], *angle[4])
         flip = np.cross(w[3], w6) @ w[4]
@@ -173,10 +151,10 @@ class URArm(ClosedFormArm):
     def _labels(self, q):
         """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
         forward, above, flip = self._measures(q)
-        tol = CLIP_TOL * self.scale
+        tol = IK_LABEL_TOL * self.scale  # forward is a length (m), above an area (m^2)
         arm = np.where(forward >= -tol, "r", "l")
         elbow = np.where(above > tol * self.scale, "u", "d")
-        wrist = np.where(flip >= -CLIP_TOL, "f", "n")
+        wrist = np.where(flip >= -IK_LABEL_TOL, "f", "n")
         return np.char.add(np.char.add(arm, elbow), wrist)
 
     # ---- the closed form ------------------------------------------------------------
@@ -185,19 +163,17 @@ class URArm(ClosedFormArm):
         w, p, c = self.w, self.p, self.c
         u, w1, w5, w6 = w[1], w[0], w[4], w[5]
         s3, s4 = np.sign(w[2] @ u), np.sign(w[3] @ u)
-        turn1, turn5, turn6 = _Turn(w1), _Turn(w5), _Turn(w6)
+        turn1, turn5, turn6 = Turn(w1), Turn(w5), Turn(w6)
         N = T.shape[0]
         G = T @ inv(self.home)
         RG, tG = G[:, :3, :3], G[:, :3, 3]
 
         # joint 1: theta = -q1 turns d = G c - p1 into the plane u . x = u . c
         d = RG @ c + tG - p[0]  # (N, 3)
-        along = d @ w1
-        A = d @ u - along * (u @ w1)
-        B = d @ np.cross(u, w1)
-        C = u @ (c - p[0]) - along * (u @ w1)
-        theta, shoulder_ok, excess1 = _roots(A, B, C)  # (N, 2)
-        free = A**2 + B**2 < (CLIP_TOL * self.scale) ** 2  # c on axis 1: q1 free
+        phi, half, excess1, radius1 = plane_angles(w1, u, u @ (c - p[0]), d.T)
+        theta = np.stack([phi - half, phi + half], axis=-1)  # (N, 2)
+        shoulder_ok = excess1 >= -IK_CLIP_TOL * radius1
+        free = radius1 < (IK_CLIP_TOL * self.scale) ** 2  # c on axis 1: q1 free
         theta = np.where(free[:, None], 0.0, theta)
         ct, st = np.cos(theta), np.sin(theta)
         x1 = p[0] + turn1(d[:, None], ct, st)  # c at q1 = 0, (N, 2, 3)
@@ -227,9 +203,8 @@ class URArm(ClosedFormArm):
         a = np.einsum("nji,nkj->nki", RG, R1u)[:, :, None]  # (N, 2, 1, 3)
         b = turn5.fixed(u, c5, -s5)
         a_perp = a - w6 * (a @ w6)[..., None]
-        b_perp = b - w6 * (b @ w6)[..., None]
-        q6 = np.arctan2(np.cross(a_perp, b_perp) @ w6, np.sum(a_perp * b_perp, -1))
-        on_axis = np.sum(a_perp**2, -1) < CLIP_TOL**2
+        q6 = rotation_angles(w6, a, b)
+        on_axis = np.sum(a_perp**2, -1) < IK_CLIP_TOL**2
         q6 = np.where(on_axis, 0.0, q6)
         c6, s6 = np.cos(q6), np.sin(q6)
 
@@ -244,7 +219,7 @@ class URArm(ClosedFormArm):
         rx = turn5.fixed(x, c5, -s5)
         rx = turn6(rx, c6, -s6)
         rx = turn1(np.einsum("nij,nabj->nabi", RG, rx), ct4, st4)
-        phi = np.arctan2(np.cross(x, rx) @ u, rx @ x)
+        phi = rotation_angles(u, x, rx)
 
         # q3 (subproblem 3, planar): |r2 + R(w3, q3) r3| = |P - p2| across u
         def across(v):
@@ -257,10 +232,10 @@ class URArm(ClosedFormArm):
         q3, elbow_ok, excess3 = _roots(np.full_like(C3, A3), np.full_like(C3, B3), C3)
         c3, s3q = np.cos(q3), np.sin(q3)
         # q2 (subproblem 1): about u from r2 + R(w3, q3) r3 to (P - p2) across u
-        turn3 = _Turn(w[2])
+        turn3 = Turn(w[2])
         xs = r2 + turn3.fixed(r3, c3, s3q)
         ys = across(P - p[1])[..., None, :]
-        q2 = np.arctan2(np.cross(xs, ys) @ u, np.sum(xs * ys, -1))
+        q2 = rotation_angles(u, xs, ys)
         # above = ((P - p2) x R(u, q2) r2) . u, both across u
         above = np.cos(q2) * (np.cross(ys, r2) @ u) + np.sin(q2) * (ys @ r2)
         sigma = np.array([-1.0, 1.0])[None, :, None, None]
@@ -284,17 +259,15 @@ class URArm(ClosedFormArm):
             & wrist_ok[..., None, None]
             & elbow_ok[..., None]
         )
-        Q[~np.broadcast_to(reached, shape)] = np.nan
         flags = np.empty(shape + (3,), dtype=bool)
-        flags[..., 0] = (np.abs(excess1) < SINGULAR_TOL * (A**2 + B**2))[
+        flags[..., 0] = (np.abs(excess1) < IK_SINGULAR_TOL * radius1)[
             :, None, None, None
         ]
-        flags[..., 1] = (np.abs(excess3) < SINGULAR_TOL * (A3**2 + B3**2))[..., None]
+        flags[..., 1] = (np.abs(excess3) < IK_SINGULAR_TOL * (A3**2 + B3**2))[..., None]
         flags[..., 2] = (
-            on_axis[..., None] | (np.sum(a_perp**2, -1) < SINGULAR_TOL)[..., None]
+            on_axis[..., None] | (np.sum(a_perp**2, -1) < IK_SINGULAR_TOL)[..., None]
         )
-        Q, flags = Q.transpose(0, 1, 3, 2, 4), flags.transpose(0, 1, 3, 2, 4)
-        Q = Q.reshape(N, 8, 6)
+        Q, flags = branches(Q, flags, reached, order=(0, 1, 3, 2))
         code = np.where(
             ~shoulder_ok,
             1,
@@ -304,7 +277,7 @@ class URArm(ClosedFormArm):
                 0,
             ),
         )
-        return Q, flags.reshape(N, 8, 3), code
+        return Q, flags, code
 
     def _reason(self, T, code):
         """A sentence for an unreachable pose T (4, 4) with reason code 1, 2 or 3."""
