@@ -41,30 +41,78 @@ def _configurations(q):
 
 
 class ClosedFormArm:
-    """The public, checked side of a closed-form engine (see the module docstring)."""
+    """The public, checked side of a closed-form engine (see the module docstring).
+
+    A subclass is the geometry of one arm, built by its ``from_chain(chain, name)``;
+    the methods below check their input and call the subclass's kernels.
+    """
 
     def measures(self, q):
-        """The signed measures the labels test, at q (..., 6): three arrays (...)."""
+        """The signed measures the configuration labels test.
+
+        Parameters
+        ----------
+        q : array-like, shape (..., 6)
+            Joint vectors (rad; m for a prismatic joint).
+
+        Returns
+        -------
+        tuple of three ndarrays, shape (...)
+            The arm's, the elbow's (or boom's) and the wrist's measure; each engine's
+            module says what they measure and in which unit.
+        """
         return self._measures(_configurations(q))
 
     def labels(self, q):
-        """The configuration labels of q (..., 6): an array of strings like 'ruf'."""
+        """The configuration labels of joint vectors.
+
+        Parameters
+        ----------
+        q : array-like, shape (..., 6)
+            Joint vectors (rad; m for a prismatic joint).
+
+        Returns
+        -------
+        ndarray of str, shape (...)
+            Labels like 'ruf'.
+        """
         return self._labels(_configurations(q))
 
     def solve(self, T):
-        """All eight solutions of one pose T (4, 4) or a batch (N, 4, 4), in the order
-        of CONFIGURATIONS (a single pose as a batch of one).
+        """All eight solutions of one pose or a batch, in the order of CONFIGURATIONS.
 
-        Returns Q (N, 8, 6) in (-pi, pi] (prismatic joints in m), NaN where a branch
-        does not reach the pose; the singularity flags (N, 8, 3); and the reason code
-        per pose (N,): 0 reached, else one of :data:`REASON_CODES`.
+        Parameters
+        ----------
+        T : array-like, shape (4, 4) or (N, 4, 4)
+            Tool poses (m); a single pose is a batch of one.
+
+        Returns
+        -------
+        Q : ndarray, shape (N, 8, 6)
+            Joint vectors in (-pi, pi] (prismatic joints in m), NaN where a branch
+            does not reach the pose.
+        flags : ndarray of bool, shape (N, 8, 3)
+            The shoulder, elbow and wrist singularity of each solution.
+        code : ndarray of int, shape (N,)
+            0 where the pose is reached, else one of :data:`REASON_CODES`.
         """
         T = check_poses(T, "T")
         return self._solve_batch(T[None] if T.ndim == 2 else T)
 
     def reason(self, T, code):
-        """A sentence saying why the pose T (4, 4) is not reached, for its reason code
-        (one of :data:`REASON_CODES`, as :meth:`solve` returns it)."""
+        """A sentence saying why a pose is not reached.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4)
+            The tool pose (m).
+        code : int
+            Its reason code, one of :data:`REASON_CODES`, as :meth:`solve` returns it.
+
+        Returns
+        -------
+        str
+        """
         T = check_poses(T, "T", single_only=True)
         code = check_integer(code, "code")
         if code not in REASON_CODES:

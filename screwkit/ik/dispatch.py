@@ -1,31 +1,29 @@
-"""Inverse kinematics: closed form for some 6-joint arms, numeric for any chain.
+"""The closed-form dispatcher: which engine solves a chain, and the labelled answer.
 
 Closed form (:func:`analytic_ik`, :func:`analytic_ik_all`), solved from the chain's own
-screws by the Paden–Kahan subproblems (:mod:`screwkit.subproblems`, re-exported here),
-for any lengths, offsets, base and tool of these structures (:data:`STRUCTURES`, tried
-in order; :func:`structure` and ``IKSolutions.structure`` say which one a chain has):
+screws by the Paden–Kahan subproblems (:mod:`screwkit.ik.subproblems`), for any
+lengths, offsets, base and tool of these structures (:data:`STRUCTURES`, tried in order;
+:func:`structure` and ``IKSolutions.structure`` say which one a chain has):
 
 * 6R, a spherical wrist (the last three axes meet) and joints 2, 3 parallel: the PUMA
-  560, the Kawasaki CX210L (:mod:`screwkit.spherical_wrist`);
+  560, the Kawasaki CX210L (:mod:`screwkit.ik.spherical_wrist`);
 * UR-type 6R: joints 2, 3, 4 parallel and axes 5, 6 meeting: the Universal Robots arms
-  (:mod:`screwkit.ur_ik`, after Hawkins 2013);
+  (:mod:`screwkit.ik.ur`, after Hawkins 2013);
 * RRP with a spherical wrist, joints 1, 2 meeting: the Stanford arm
-  (:mod:`screwkit.stanford_ik`; eight solutions, four with the boom forward).
+  (:mod:`screwkit.ik.stanford`; eight solutions, four with the boom forward).
 
 Up to eight solutions, labelled l/r arm, u/d elbow, n/f wrist by geometric definitions
 (Corke's labels for the PUMA). Any other arm (7 joints, no spherical wrist and no three
 parallel axes, ...) is refused with a ``ValueError`` that says what each structure
-needs: use :func:`numeric_ik`. :func:`puma560_ik` is the same solver under the PUMA's
-name.
+needs: use :func:`screwkit.ik.numeric_ik`. :func:`puma560_ik` is the same solver under
+the PUMA's name.
 
 One angle convention: every closed-form angle is in (-pi, pi]. ``within_limits=True`` is
 the explicit option that moves angles by whole turns into the joint limits
 (e.g. q2 = -170 deg becomes 190 deg for the PUMA) and drops the solutions that cannot be
 moved there.
 
-Numeric (:func:`numeric_ik`): Newton–Raphson on the twist of the pose error
-(the logarithm of T(q)^-1 T*, :func:`screwkit.log_transform`), damped least squares near
-singularities, joint limits respected; for any chain.
+Numeric IK of any chain is :mod:`screwkit.ik.newton`.
 
 >>> import numpy as np, screwkit as sk
 >>> robot = sk.robots.puma560()
@@ -70,10 +68,20 @@ __all__ = [
 
 @dataclass(frozen=True)
 class IKSolution:
-    """One closed-form solution: joint vector ``q`` (6,) rad (m for a prismatic joint),
-    its ``config`` label, the singularities it sits on (``'shoulder'``, ``'elbow'``,
-    ``'wrist'``; the Stanford arm's boom counts as its elbow) and ``within_limits``:
-    whether q, or q moved by whole turns, respects the joint limits."""
+    """One closed-form solution of a pose.
+
+    Parameters
+    ----------
+    q : ndarray, shape (6,)
+        The joint vector (rad; m for a prismatic joint).
+    config : str
+        Its label, one of :data:`CONFIGURATIONS` ('lun' ... 'rdf').
+    singular : tuple of str
+        The singularities it sits on: ``'shoulder'``, ``'elbow'``, ``'wrist'`` (the
+        Stanford arm's boom counts as its elbow); empty for a regular solution.
+    within_limits : bool
+        Whether q, or q moved by whole turns, respects the joint limits.
+    """
 
     q: np.ndarray
     config: str
@@ -90,9 +98,17 @@ class IKSolution:
 
 
 class IKSolutions(list):
-    """The solutions for one pose (a list of :class:`IKSolution`); ``reason`` says why
-    it is empty (out of reach, or outside the joint limits) or is None; ``structure``
-    names the structure the closed form recognised (see :data:`STRUCTURES`)."""
+    """The solutions for one pose: a list of :class:`IKSolution`.
+
+    Parameters
+    ----------
+    solutions : iterable of IKSolution
+    reason : str or None
+        Why the list is empty (out of reach, or outside the joint limits); None when it
+        is not.
+    structure : str or None
+        The structure the closed form recognised (a key of :data:`STRUCTURES`).
+    """
 
     def __init__(self, solutions=(), reason=None, structure=None):
         super().__init__(solutions)
@@ -100,10 +116,18 @@ class IKSolutions(list):
         self.structure = structure
 
     def by_config(self, config):
-        """The solution with this label ('lun', ...), or None if that branch has no
-        solution.
+        """The solution with this label.
 
-        A string that is not one of the eight labels is a ``ValueError``.
+        Parameters
+        ----------
+        config : str
+            One of the eight labels of :data:`CONFIGURATIONS`; any other value is a
+            ``ValueError``.
+
+        Returns
+        -------
+        IKSolution or None
+            None if that branch has no solution.
         """
         if config not in CONFIGURATIONS:
             raise ValueError(
@@ -112,8 +136,18 @@ class IKSolutions(list):
         return next((s for s in self if s.config == config), None)
 
     def nearest(self, q):
-        """The solution closest to the joint vector ``q`` (wrapped angle differences),
-        or None."""
+        """The solution closest to a joint vector, by wrapped angle differences.
+
+        Parameters
+        ----------
+        q : array-like, shape (6,)
+            A joint vector (rad).
+
+        Returns
+        -------
+        IKSolution or None
+            None if there is no solution.
+        """
         q = as_float_array(q, "q")
         if q.shape != (6,):
             raise ValueError(f"q must have 6 entries, got shape {q.shape}")
@@ -164,8 +198,18 @@ def _name(arm):
 
 
 def structure(chain):
-    """The name of the structure of ``chain`` that :func:`analytic_ik` recognises (a key
-    of :data:`STRUCTURES`); a ``ValueError`` naming what each one needs otherwise."""
+    """The structure of a chain that :func:`analytic_ik` recognises.
+
+    Parameters
+    ----------
+    chain : Chain
+
+    Returns
+    -------
+    str
+        A key of :data:`STRUCTURES`; a chain of none of them is a ``ValueError`` that
+        names what each one needs.
+    """
     return _name(_arm(chain))
 
 
@@ -175,15 +219,18 @@ def analytic_ik_all(chain, T):
 
     Parameters
     ----------
-    chain : Chain of one of the :data:`STRUCTURES` (spherical wrist, UR-type, Stanford)
-    T : array, shape (4, 4) or (N, 4, 4), poses of the tool in the world frame (m)
+    chain : Chain
+        An arm of one of the :data:`STRUCTURES` (spherical wrist, UR-type, Stanford).
+    T : array-like, shape (4, 4) or (N, 4, 4)
+        Poses of the tool in the world frame (m).
 
     Returns
     -------
-    Q : array, shape (8, 6) or (N, 8, 6), rad in (-pi, pi];
-        NaN rows for the branches that do not reach a pose (all eight when it is out of
-        reach; see :func:`analytic_ik` for the reason). Computed in chunks, so memory
-        stays bounded for large batches.
+    Q : ndarray, shape (8, 6) or (N, 8, 6)
+        Joint vectors, rad in (-pi, pi] (m for a prismatic joint); NaN rows for the
+        branches that do not reach a pose (all eight when it is out of reach; see
+        :func:`analytic_ik` for the reason). Computed in chunks, so memory stays
+        bounded for large batches.
     """
     arm = _arm(chain)
     T = check_poses(T, "T")
@@ -196,21 +243,25 @@ def analytic_ik(chain, T, within_limits=False, near=None):
 
     Parameters
     ----------
-    chain : Chain, a 6R arm with a spherical wrist and joints 2, 3 parallel, a UR-type
-        arm (joints 2, 3, 4 parallel) or an RRP arm with a spherical wrist (Stanford);
-        any other arm is a ``ValueError`` saying what each structure needs
-    T : array, shape (4, 4) (or (N, 4, 4): a list of answers), the tool pose (m)
-    within_limits : False (default): angles in (-pi, pi].
-        True: each angle moved by whole turns into its joint limits, the solutions
-        that cannot be dropped; if none is left, the answer is empty and its
-        ``reason`` says so
-    near : optional joint vector (6,): sort the solutions by their distance to it
+    chain : Chain
+        A 6R arm with a spherical wrist and joints 2, 3 parallel, a UR-type arm (joints
+        2, 3, 4 parallel) or an RRP arm with a spherical wrist (Stanford); any other
+        arm is a ``ValueError`` saying what each structure needs.
+    T : array-like, shape (4, 4) or (N, 4, 4)
+        The tool pose (m); a batch gives a list of answers.
+    within_limits : bool, default False
+        False: angles in (-pi, pi]. True: each angle moved by whole turns into its
+        joint limits, the solutions that cannot be dropped; if none is left, the
+        answer is empty and its ``reason`` says so.
+    near : array-like, shape (6,), optional
+        A joint vector (rad): the solutions are sorted by their distance to it.
 
     Returns
     -------
-    IKSolutions : up to eight IKSolution in the order of CONFIGURATIONS
-        (sorted by distance to ``near`` if given); empty with a ``reason`` when out of
-        reach; ``structure`` names the structure recognised. For a batch, a list of
+    IKSolutions
+        Up to eight :class:`IKSolution` in the order of :data:`CONFIGURATIONS` (sorted
+        by distance to ``near`` if given); empty with a ``reason`` when out of reach;
+        ``structure`` names the structure recognised. For a batch, a list of
         IKSolutions.
     """
     return _analytic_ik(_arm(chain), chain, check_poses(T, "T"), within_limits, near)
@@ -287,10 +338,22 @@ def _into_limits(Q, qlim, revolute=None):
 
 
 def configuration(chain, q):
-    """The label ('ruf', ...) of a joint vector (6,) or the labels of a batch (N, 6),
-    from the geometric definitions of the chain's structure
-    (:mod:`screwkit.spherical_wrist`, :mod:`screwkit.ur_ik`,
-    :mod:`screwkit.stanford_ik`), singular cases included."""
+    """The configuration label of a joint vector, from the geometric definitions of the
+    chain's structure (:mod:`screwkit.ik.spherical_wrist`, :mod:`screwkit.ik.ur`,
+    :mod:`screwkit.ik.stanford`), singular cases included.
+
+    Parameters
+    ----------
+    chain : Chain
+        An arm of one of the :data:`STRUCTURES`.
+    q : array-like, shape (6,) or (N, 6)
+        Joint vectors (rad; m for a prismatic joint).
+
+    Returns
+    -------
+    str or list of str
+        The label ('ruf', ...) of q, or the N labels of a batch.
+    """
     arm = _arm(chain)
     q = chain.check_q(q)
     labels = arm._labels(q)
@@ -298,13 +361,24 @@ def configuration(chain, q):
 
 
 def puma560_ik(T, robot=None, within_limits=False, near=None):
-    """Every closed-form solution for one pose T (4, 4) of a PUMA 560:
-    :func:`analytic_ik`.
+    """Every closed-form solution for one pose of a PUMA 560: :func:`analytic_ik`.
 
-    ``robot`` is the chain the pose belongs to (any lengths d1, d3, a2, a3, d4, d6,
-    offsets, base and tool); without one, ``robots.puma560()`` is used: Corke's model
-    with d1 = 0, the base frame on the shoulder. Poses of a PUMA with a pedestal
-    (the Robotics Toolbox's d1 = 0.672 m) need that robot passed in.
+    Parameters
+    ----------
+    T : array-like, shape (4, 4)
+        The tool pose (m).
+    robot : Chain, optional
+        The PUMA the pose belongs to (any lengths d1, d3, a2, a3, d4, d6, offsets, base
+        and tool); without one, ``robots.puma560()``: Corke's model with d1 = 0, the
+        base frame on the shoulder. Poses of a PUMA with a pedestal (the Robotics
+        Toolbox's d1 = 0.672 m) need that robot passed in.
+    within_limits, near
+        As for :func:`analytic_ik`.
+
+    Returns
+    -------
+    IKSolutions
+        Up to eight solutions, as :func:`analytic_ik` returns them.
     """
     robot = _default_puma() if robot is None else robot
     arm = _arm(robot, "robot")
@@ -314,21 +388,46 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
 
 
 def puma560_ik_all(Ts, robot=None):
-    """All eight solutions of a batch of PUMA poses (N, 4, 4) -> (N, 8, 6), rad in
-    (-pi, pi] (NaN where out of reach): :func:`analytic_ik_all` with
-    ``robots.puma560()`` by default."""
+    """All eight solutions of a batch of PUMA poses: :func:`analytic_ik_all` with
+    ``robots.puma560()`` by default.
+
+    Parameters
+    ----------
+    Ts : array-like, shape (N, 4, 4) (or (4, 4))
+        Tool poses (m).
+    robot : Chain, optional
+        The PUMA the poses belong to (default ``robots.puma560()``).
+
+    Returns
+    -------
+    ndarray, shape (N, 8, 6) (or (8, 6))
+        Joint vectors, rad in (-pi, pi], in the order of :data:`CONFIGURATIONS`; NaN
+        where a branch does not reach.
+    """
     return analytic_ik_all(_default_puma() if robot is None else robot, Ts)
 
 
 def puma560_config(q, robot=None):
-    """The configuration label of a PUMA joint vector (6,): Corke's l/r, u/d, n/f.
+    """The configuration label of a PUMA joint vector: Corke's l/r, u/d, n/f.
 
     Arm 'r' when the wrist centre is in front of the shoulder along x1
     (a2 c2 + a3 c23 - d4 s23 > 0); elbow 'u' when the elbow is above the line from the
     shoulder to the wrist centre, seen with the arm pointing forward; wrist 'f' when
-    q5 > 0. Singular cases follow the rule of :mod:`screwkit.spherical_wrist`
+    q5 > 0. Singular cases follow the rule of :mod:`screwkit.ik.spherical_wrist`
     (shoulder: 'r', elbow: 'd', wrist: 'f' when cos q4 >= 0), so that every label
     round-trips.
+
+    Parameters
+    ----------
+    q : array-like, shape (6,)
+        A joint vector (rad).
+    robot : Chain, optional
+        The PUMA (default ``robots.puma560()``).
+
+    Returns
+    -------
+    str
+        The label, 'lun' ... 'rdf'.
     """
     robot = _default_puma() if robot is None else check_chain(robot, "robot")
     return configuration(robot, robot.check_one(q))

@@ -31,9 +31,19 @@ __all__ = ["NumericIKResult", "numeric_ik", "pose_error"]
 
 @dataclass
 class NumericIKResult:
-    """The result of :func:`numeric_ik`: ``q`` (n,) or (N, n) rad/m, ``success``, the
-    ``iterations`` used and the final ``error``: the norm of the error twist
-    [omega; v] theta (rad and m), one per start for a batch."""
+    """The result of :func:`numeric_ik`, one entry per start for a batch.
+
+    Parameters
+    ----------
+    q : ndarray, shape (n,) or (N, n)
+        The joint vector reached (rad; m for a prismatic joint).
+    success : bool or ndarray of bool, shape (N,)
+        Whether the final error is below the tolerance.
+    iterations : int or ndarray of int, shape (N,)
+        The Newton steps taken.
+    error : float or ndarray, shape (N,)
+        The norm of the final error twist [omega; v] theta (rad and m).
+    """
 
     q: np.ndarray
     success: np.ndarray
@@ -42,8 +52,18 @@ class NumericIKResult:
 
 
 def pose_error(T, T_target):
-    """The twist [omega; v] theta (body frame of T) of the motion from T to T_target:
-    ``log_transform(inv(T) @ T_target)``. T, T_target: (..., 4, 4) -> (..., 6)."""
+    """The twist of the motion from T to T_target: ``log_transform(inv(T) @ T_target)``.
+
+    Parameters
+    ----------
+    T, T_target : array-like, shape (..., 4, 4)
+        Rigid transforms (m); they broadcast.
+
+    Returns
+    -------
+    ndarray, shape (..., 6)
+        The twist [omega; v] theta in the body frame of T (rad and m).
+    """
     return log_transform(
         inv(check_transform(as_float_array(T, "T"), "T"))
         @ check_transform(as_float_array(T_target, "T_target"), "T_target")
@@ -75,20 +95,29 @@ def numeric_ik(
     Parameters
     ----------
     chain : Chain
-    T : array (4, 4), the target pose (m)
-    q0 : array (n,) one start, or (N, n) several starts solved together (rad, m)
-    tol : success when the norm of V is below tol (rad and m)
-    max_iterations : int >= 1
-    frame : 'body' or 'space', the frame of the error twist and the Jacobian
-    damping : None (adaptive, above) or a number lambda >= 0
-    within_limits : True (default): the answer respects the joint limits, and revolute
-        joints without limits are wrapped into (-pi, pi]; False: limits ignored, every
-        revolute angle wrapped into (-pi, pi]
+        Any serial chain.
+    T : array-like, shape (4, 4)
+        The target pose (m).
+    q0 : array-like, shape (n,) or (N, n)
+        One start, or N starts solved together (rad; m for a prismatic joint).
+    tol : float, default :data:`~screwkit.tolerances.NEWTON_TOL`
+        Success when the norm of V is below it (rad and m).
+    max_iterations : int, default 200
+        At least 1.
+    frame : {'body', 'space'}, default 'body'
+        The frame of the error twist and the Jacobian.
+    damping : float or None, default None
+        None: adaptive (above); or a number lambda >= 0.
+    within_limits : bool, default True
+        True: the answer respects the joint limits, and revolute joints without limits
+        are wrapped into (-pi, pi]; False: limits ignored, every revolute angle wrapped
+        into (-pi, pi].
 
     Returns
     -------
-    NumericIKResult : success is False whenever the final error is not below tol (an
-        unreachable pose never reports success)
+    NumericIKResult
+        ``q`` of shape (n,) or (N, n); ``success`` is False whenever the final error is
+        not below tol (an unreachable pose never reports success).
     """
     check_chain(chain)
     T = check_poses(T, "T", single_only=True)

@@ -135,12 +135,23 @@ def _polar(y, x):
 
 @dataclass(frozen=True)
 class SphericalWristArm(ClosedFormArm):
-    """The geometry of a 6R arm with a spherical wrist, taken from its screws
-    (m, unit w_i).
+    """The geometry of a 6R arm with a spherical wrist, taken from its screws.
 
-    Build it with :meth:`from_chain`; it raises ``ValueError`` naming the condition that
-    fails. ``w``, ``p``: (6, 3) axis directions and points at q = 0; ``c``: the wrist
-    centre; ``home``: M (4, 4).
+    Build it with :meth:`from_chain`.
+
+    Parameters
+    ----------
+    w : ndarray, shape (6, 3)
+        The unit axis directions at q = 0.
+    p : ndarray, shape (6, 3)
+        The point of each axis nearest the base origin (m).
+    c : ndarray, shape (3,)
+        The wrist centre, where axes 4, 5 and 6 meet (m).
+    home : ndarray, shape (4, 4)
+        The home pose M (m).
+    scale : float
+        The arm's size (:func:`~screwkit.ik._closed_form.arm_scale`, m), the length
+        its tolerances are measured against.
     """
 
     w: np.ndarray
@@ -151,6 +162,19 @@ class SphericalWristArm(ClosedFormArm):
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
+        """The engine of a chain, or a ``ValueError`` naming the condition it fails.
+
+        Parameters
+        ----------
+        chain : Chain
+            A 6R arm whose axes 4, 5, 6 meet and axes 2, 3 are parallel.
+        name : str
+            The argument's name, for the messages.
+
+        Returns
+        -------
+        SphericalWristArm
+        """
         check_chain(chain, name)
         if chain.n != 6:
             raise ValueError(
@@ -245,8 +269,18 @@ class SphericalWristArm(ClosedFormArm):
         return forward, above, flip_measure(w, q[..., 4])
 
     def wrist_sine(self, q5):
-        """``|w4 x R(w5, q5) w6|``: the sine of the angle between axes 4 and 6 at q5
-        (..., rad), the measure of the wrist singularity (see :data:`WRIST_TOL`)."""
+        """The measure of the wrist singularity (see :data:`WRIST_TOL`).
+
+        Parameters
+        ----------
+        q5 : array-like, shape (...)
+            Joint 5's angle (rad).
+
+        Returns
+        -------
+        ndarray, shape (...)
+            ``|w4 x R(w5, q5) w6|``, the sine of the angle between axes 4 and 6.
+        """
         return self._wrist_sine(as_float_array(q5, "q5"))
 
     def _wrist_sine(self, q5):

@@ -45,12 +45,26 @@ STRUCTURE = "RRP arm with a spherical wrist (Stanford)"
 
 @dataclass(frozen=True)
 class StanfordArm(ClosedFormArm):
-    """The geometry of an RRP arm with a spherical wrist, from its screws: directions
-    ``w`` (6, 3; w[2] is the prismatic direction v), points ``p`` (6, 3), the meeting
-    point ``o`` of axes 1 and 2, the wrist centre ``c``, ``home`` M (4, 4) (m).
+    """The geometry of an RRP arm with a spherical wrist, from its screws.
 
-    Build it with :meth:`from_chain`, which raises ``ValueError`` naming the condition
-    that fails."""
+    Build it with :meth:`from_chain`.
+
+    Parameters
+    ----------
+    w : ndarray, shape (6, 3)
+        The unit axis directions at q = 0; w[2] is the prismatic joint's direction v.
+    p : ndarray, shape (6, 3)
+        The point of each revolute axis nearest the base origin (m; 0 for joint 3).
+    o : ndarray, shape (3,)
+        The point where axes 1 and 2 meet (m).
+    c : ndarray, shape (3,)
+        The wrist centre, where axes 4, 5 and 6 meet (m).
+    home : ndarray, shape (4, 4)
+        The home pose M (m).
+    scale : float
+        The arm's size (:func:`~screwkit.ik._closed_form.arm_scale`, m), the length
+        its tolerances are measured against.
+    """
 
     w: np.ndarray
     p: np.ndarray
@@ -65,6 +79,19 @@ class StanfordArm(ClosedFormArm):
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
+        """The engine of a chain, or a ``ValueError`` naming the condition it fails.
+
+        Parameters
+        ----------
+        chain : Chain
+            An RRPRRR arm whose axes 1, 2 meet and axes 4, 5, 6 meet.
+        name : str
+            The argument's name, for the messages.
+
+        Returns
+        -------
+        StanfordArm
+        """
         check_chain(chain, name)
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints, got {chain.n}")

@@ -52,8 +52,18 @@ __all__ = [
 
 
 class Solutions(list):
-    """The solutions of a subproblem (a list); ``reason`` says why it is empty, ``free``
-    is True when every angle solves it (the list then holds the representative 0)."""
+    """The solutions of a subproblem: a list of angles (rad), pairs or distances (m).
+
+    Parameters
+    ----------
+    solutions : iterable
+        The solutions: floats, or SymPy expressions for SymPy input.
+    reason : str or None
+        Why the list is empty; None when it is not.
+    free : bool
+        True when every angle solves the problem (the list then holds the
+        representative 0).
+    """
 
     def __init__(self, solutions=(), reason=None, free=False):
         super().__init__(solutions)
@@ -335,12 +345,16 @@ def subproblem1(twist, p, q):
 
     Parameters
     ----------
-    twist : array-like, shape (6,), [w; v] with |w| = 1 and pitch 0
-    p, q : array-like, shape (3,), points (m)
+    twist : array-like, shape (6,)
+        A zero-pitch unit twist [w; v], |w| = 1, w . v = 0 (SymPy entries give SymPy
+        answers).
+    p, q : array-like, shape (3,)
+        Points (m).
 
     Returns
     -------
-    Solutions : [theta] (rad), or [] with ``reason``; ``free`` if p is on the axis
+    Solutions
+        [theta] (rad), or [] with ``reason``; ``free`` if p is on the axis.
     """
     exact = _symbolic(twist, p, q)
     w, r = _twist(twist, "twist", exact)
@@ -382,9 +396,18 @@ def subproblem2(twist1, twist2, p, q):
     w1 . w2) / |w1 x w2|^2 (u = p - r). Two pairs for gamma^2 > 0, one for gamma^2 = 0,
     none for gamma^2 < 0.
 
+    Parameters
+    ----------
+    twist1, twist2 : array-like, shape (6,)
+        Zero-pitch unit twists [w; v] whose axes meet in one point (else a
+        ``ValueError``).
+    p, q : array-like, shape (3,)
+        Points (m).
+
     Returns
     -------
-    Solutions : a list of (theta1, theta2) pairs (rad), or [] with ``reason``
+    Solutions
+        A list of (theta1, theta2) pairs (rad), or [] with ``reason``.
     """
     exact = _symbolic(twist1, twist2, p, q)
     w1, r1 = _twist(twist1, "twist1", exact)
@@ -448,9 +471,21 @@ def subproblem3(twist, p, q, delta):
     theta = theta0 +- acos((|u'|^2 + |v'|^2 - delta'^2) / (2 |u'| |v'|)), theta0 being
     the subproblem-1 angle from u' to v'. Two, one or no solutions.
 
+    Parameters
+    ----------
+    twist : array-like, shape (6,)
+        A zero-pitch unit twist [w; v], |w| = 1, w . v = 0 (SymPy entries give SymPy
+        answers).
+    p, q : array-like, shape (3,)
+        Points (m).
+    delta : float
+        A distance >= 0 (m).
+
     Returns
     -------
-    Solutions : angles (rad), or [] with ``reason``
+    Solutions
+        Angles (rad), or [] with ``reason``; ``free`` if the distance does not depend
+        on the angle and equals delta.
     """
     exact = _symbolic(twist, p, q, delta)
     w, r = _twist(twist, "twist", exact)
@@ -510,11 +545,20 @@ def subproblem4(twist, p, normal, d):
 
     Parameters
     ----------
-    twist : array-like (6,); p : point (3,); normal : unit direction (3,); d : float (m)
+    twist : array-like, shape (6,)
+        A zero-pitch unit twist [w; v], |w| = 1, w . v = 0 (SymPy entries give SymPy
+        answers).
+    p : array-like, shape (3,)
+        A point (m).
+    normal : array-like, shape (3,)
+        The plane's unit normal.
+    d : float
+        The plane's offset along the normal (m).
 
     Returns
     -------
-    Solutions : angles (rad), or [] with ``reason``
+    Solutions
+        Angles (rad), or [] with ``reason``; ``free`` if p's circle lies in the plane.
     """
     exact = _symbolic(twist, p, normal, d)
     w, r = _twist(twist, "twist", exact)
@@ -581,9 +625,17 @@ def subproblem1_prismatic(s, p, q):
 
     t = s . (q - p), provided q - p is parallel to s.
 
+    Parameters
+    ----------
+    s : array-like, shape (3,)
+        A unit direction (the twist (0; s)).
+    p, q : array-like, shape (3,)
+        Points (m).
+
     Returns
     -------
-    Solutions : [t] (m), or [] with ``reason``
+    Solutions
+        [t] (m), or [] with ``reason``.
     """
     exact = _symbolic(s, p, q)
     s = _direction(s, "s", exact)
@@ -603,9 +655,19 @@ def subproblem3_prismatic(s, p, q, delta):
 
     With u = p - q: t = -s . u +- sqrt((s . u)^2 - |u|^2 + delta^2).
 
+    Parameters
+    ----------
+    s : array-like, shape (3,)
+        A unit direction (the twist (0; s)).
+    p, q : array-like, shape (3,)
+        Points (m).
+    delta : float
+        A distance >= 0 (m).
+
     Returns
     -------
-    Solutions : distances (m), or [] with ``reason``
+    Solutions
+        Distances (m), or [] with ``reason``.
     """
     exact = _symbolic(s, p, q, delta)
     s = _direction(s, "s", exact)

@@ -62,11 +62,24 @@ def _roots(A, B, C):
 
 @dataclass(frozen=True)
 class URArm(ClosedFormArm):
-    """The geometry of a UR-type arm, from its screws: axis directions ``w`` (6, 3),
-    points ``p`` (6, 3), the meeting point ``c`` of axes 5 and 6, ``home`` M (4, 4) (m).
+    """The geometry of a UR-type arm, from its screws.
 
-    Build it with :meth:`from_chain`, which raises ``ValueError`` naming the condition
-    that fails."""
+    Build it with :meth:`from_chain`.
+
+    Parameters
+    ----------
+    w : ndarray, shape (6, 3)
+        The unit axis directions at q = 0.
+    p : ndarray, shape (6, 3)
+        The point of each axis nearest the base origin (m).
+    c : ndarray, shape (3,)
+        The point where axes 5 and 6 meet (m).
+    home : ndarray, shape (4, 4)
+        The home pose M (m).
+    scale : float
+        The arm's size (:func:`~screwkit.ik._closed_form.arm_scale`, m), the length
+        its tolerances are measured against.
+    """
 
     w: np.ndarray
     p: np.ndarray
@@ -78,6 +91,19 @@ class URArm(ClosedFormArm):
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
+        """The engine of a chain, or a ``ValueError`` naming the condition it fails.
+
+        Parameters
+        ----------
+        chain : Chain
+            A 6R arm whose axes 2, 3, 4 are parallel and axes 5, 6 meet.
+        name : str
+            The argument's name, for the messages.
+
+        Returns
+        -------
+        URArm
+        """
         check_chain(chain, name)
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints, got {chain.n}")
