@@ -7,15 +7,15 @@ arms). With the joint screws xi_i at q = 0 and the home pose M, T = exp(xi_1 q1)
 exp(xi_6 q6) M, and the wrist joints leave c where it is, so the wrist centre of the
 target is w = T M^-1 c and
 
-1. joint 1 (:func:`~screwkit.subproblems.subproblem4`): joints 2 and 3 move c in a plane
+1. joint 1 (:func:`~.subproblems.subproblem4`): joints 2 and 3 move c in a plane
    perpendicular to their common axis direction u, so q1 must turn w back into the plane
    u . x = u . c: two angles, the arm right ('r') or left ('l');
-2. joint 3 (:func:`~screwkit.subproblems.subproblem3`): the distance from axis 2 to the
+2. joint 3 (:func:`~.subproblems.subproblem3`): the distance from axis 2 to the
    wrist centre does not depend on q2: two angles, the elbow up ('u') or down ('d');
-3. joint 2 (:func:`~screwkit.subproblems.subproblem1`): turn exp(xi_3 q3) c onto w;
-4. joints 4, 5 (:func:`~screwkit.subproblems.subproblem2`): the rotation left for the
+3. joint 2 (:func:`~.subproblems.subproblem1`): turn exp(xi_3 q3) c onto w;
+4. joints 4, 5 (:func:`~.subproblems.subproblem2`): the rotation left for the
    wrist takes the direction of axis 6 to where it must point: two pairs, flip ('f') or
-   not ('n'); joint 6 (:func:`~screwkit.subproblems.subproblem1`): the rest.
+   not ('n'); joint 6 (:func:`~.subproblems.subproblem1`): the rest.
 
 Labels are geometric (they hold for any arm that fits, and equal Corke's for the PUMA
 560), with w1 the wrist centre in the frame of link 1 (i.e. at q1 = 0) and w_i the axis

@@ -7,11 +7,11 @@ joint screws xi_i at q = 0 and the home pose M, G = T M^-1 = exp(xi_1 q1) ...
 exp(xi_6 q6); the wrist joints leave c where it is, so the wrist centre of the target
 is w = G c and
 
-1. joint 3 (a line meets a sphere, :func:`~screwkit.subproblems.subproblem3_prismatic`):
+1. joint 3 (a line meets a sphere, :func:`~.subproblems.subproblem3_prismatic`):
    joints 1 and 2 turn about o, so |c + q3 v - o| = |w - o|: two lengths, the boom
    pointing to the wrist centre ('u', the larger q3) or through the shoulder away from
    it ('d', a q3 that a real boom's travel excludes);
-2. joints 1, 2 (:func:`~screwkit.subproblems.subproblem2`): turn c + q3 v onto w: two
+2. joints 1, 2 (:func:`~.subproblems.subproblem2`): turn c + q3 v onto w: two
    pairs, the arm right ('r') or left ('l');
 3. joints 4, 5 (subproblem 2 on directions): the rotation left for the wrist takes the
    direction of axis 6 to where it must point: two pairs, flip ('f') or not ('n'); joint

@@ -17,7 +17,7 @@ written with Paden–Kahan subproblems on the screws instead of DH symbols:
    arm: q3 from the distance of the point p4 of axis 4 to axis 2 (subproblem 3: elbow up
    'u' or down 'd'), q2 by subproblem 1, and q4 from the rotation about u that is left.
 
-Up to eight solutions, labelled with the letters of :mod:`screwkit.spherical_wrist`
+Up to eight solutions, labelled with the letters of :mod:`screwkit.ik.spherical_wrist`
 (arm l/r, elbow u/d, wrist n/f) by geometric definitions, with x1 = exp(xi_2 q2)
 exp(xi_3 q3) exp(xi_4 q4) c the point c at q1 = 0:
 
