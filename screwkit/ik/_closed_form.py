@@ -11,7 +11,7 @@ test calls the public methods below, which check first.
 
 import numpy as np
 
-from .._checks import as_float_array, check_integer, check_poses
+from .._checks import as_float_array, check_chain, check_integer, check_poses
 from .._compiled import CHUNK
 from ..transforms import _skew
 from .subproblems import _dot_batch
@@ -43,9 +43,41 @@ def _configurations(q):
 class ClosedFormArm:
     """The public, checked side of a closed-form engine (see the module docstring).
 
-    A subclass is the geometry of one arm, built by its ``from_chain(chain, name)``;
-    the methods below check their input and call the subclass's kernels.
+    A subclass is the geometry of one arm, built by :meth:`from_chain`; the methods
+    below check their input and call the subclass's kernels. Every engine holds:
+
+    Parameters
+    ----------
+    w : ndarray, shape (6, 3)
+        The unit axis directions at q = 0 (a prismatic joint's: its direction).
+    p : ndarray, shape (6, 3)
+        The point of each revolute axis nearest the base origin (m).
+    home : ndarray, shape (4, 4)
+        The home pose M (m).
+    scale : float
+        The arm's size (:func:`arm_scale`, m), the length its tolerances are measured
+        against.
     """
+
+    @classmethod
+    def from_chain(cls, chain, name="chain"):
+        """The engine of a chain: its geometry, read from its screws.
+
+        Parameters
+        ----------
+        chain : Chain
+            An arm of the engine's structure (its module says which).
+        name : str
+            The argument's name, for the messages.
+
+        Returns
+        -------
+        ClosedFormArm
+            An instance of the engine; a chain of another structure is a ``ValueError``
+            that names the condition it fails.
+        """
+        check_chain(chain, name)
+        return cls._from_chain(chain, name)
 
     def measures(self, q):
         """The signed measures the configuration labels test.
@@ -64,17 +96,13 @@ class ClosedFormArm:
         return self._measures(_configurations(q))
 
     def labels(self, q):
-        """The configuration labels of joint vectors.
-
-        Parameters
-        ----------
-        q : array-like, shape (..., 6)
-            Joint vectors (rad; m for a prismatic joint).
+        """The configuration labels of joint vectors q, shape (..., 6), as for
+        :meth:`measures`.
 
         Returns
         -------
         ndarray of str, shape (...)
-            Labels like 'ruf'.
+            Labels like 'ruf', from the signs of the measures.
         """
         return self._labels(_configurations(q))
 

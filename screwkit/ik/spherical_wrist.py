@@ -49,7 +49,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._checks import as_float_array, check_chain
+from .._checks import as_float_array
 from ..links import Joint
 from ..tolerances import IK_CLIP_TOL, IK_LABEL_TOL, IK_SINGULAR_TOL, IK_STRUCTURE_TOL
 from ..transforms import _cross, _rotate_vectors, _skew, _wrap_angle, inv
@@ -135,23 +135,9 @@ def _polar(y, x):
 
 @dataclass(frozen=True)
 class SphericalWristArm(ClosedFormArm):
-    """The geometry of a 6R arm with a spherical wrist, taken from its screws.
-
-    Build it with :meth:`from_chain`.
-
-    Parameters
-    ----------
-    w : ndarray, shape (6, 3)
-        The unit axis directions at q = 0.
-    p : ndarray, shape (6, 3)
-        The point of each axis nearest the base origin (m).
-    c : ndarray, shape (3,)
-        The wrist centre, where axes 4, 5 and 6 meet (m).
-    home : ndarray, shape (4, 4)
-        The home pose M (m).
-    scale : float
-        The arm's size (:func:`~screwkit.ik._closed_form.arm_scale`, m), the length
-        its tolerances are measured against.
+    """The geometry of a 6R arm with a spherical wrist, taken from its screws: the
+    fields of :class:`~screwkit.ik._closed_form.ClosedFormArm` and ``c``, shape (3,),
+    the wrist centre where axes 4, 5 and 6 meet (m). Build it with :meth:`from_chain`.
     """
 
     w: np.ndarray
@@ -161,21 +147,8 @@ class SphericalWristArm(ClosedFormArm):
     scale: float
 
     @classmethod
-    def from_chain(cls, chain, name="chain"):
-        """The engine of a chain, or a ``ValueError`` naming the condition it fails.
-
-        Parameters
-        ----------
-        chain : Chain
-            A 6R arm whose axes 4, 5, 6 meet and axes 2, 3 are parallel.
-        name : str
-            The argument's name, for the messages.
-
-        Returns
-        -------
-        SphericalWristArm
-        """
-        check_chain(chain, name)
+    def _from_chain(cls, chain, name):
+        """:meth:`from_chain` of a checked chain."""
         if chain.n != 6:
             raise ValueError(
                 f"{name} must have 6 joints for the closed form, got {chain.n}"

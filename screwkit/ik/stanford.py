@@ -31,7 +31,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._checks import check_chain
 from ..tolerances import IK_CLIP_TOL, IK_LABEL_TOL, IK_SINGULAR_TOL, IK_STRUCTURE_TOL
 from ..transforms import _rotate_vectors, _wrap_angle, inv
 from ._closed_form import ClosedFormArm, arm_scale, branches, flip_measure
@@ -45,25 +44,10 @@ STRUCTURE = "RRP arm with a spherical wrist (Stanford)"
 
 @dataclass(frozen=True)
 class StanfordArm(ClosedFormArm):
-    """The geometry of an RRP arm with a spherical wrist, from its screws.
-
-    Build it with :meth:`from_chain`.
-
-    Parameters
-    ----------
-    w : ndarray, shape (6, 3)
-        The unit axis directions at q = 0; w[2] is the prismatic joint's direction v.
-    p : ndarray, shape (6, 3)
-        The point of each revolute axis nearest the base origin (m; 0 for joint 3).
-    o : ndarray, shape (3,)
-        The point where axes 1 and 2 meet (m).
-    c : ndarray, shape (3,)
-        The wrist centre, where axes 4, 5 and 6 meet (m).
-    home : ndarray, shape (4, 4)
-        The home pose M (m).
-    scale : float
-        The arm's size (:func:`~screwkit.ik._closed_form.arm_scale`, m), the length
-        its tolerances are measured against.
+    """The geometry of an RRP arm with a spherical wrist, from its screws: the fields
+    of :class:`~screwkit.ik._closed_form.ClosedFormArm` (w[2] is the boom's direction
+    v, p[2] is 0), ``o``, shape (3,), where axes 1 and 2 meet, and ``c``, shape (3,),
+    the wrist centre where axes 4, 5 and 6 meet (m). Build it with :meth:`from_chain`.
     """
 
     w: np.ndarray
@@ -78,21 +62,8 @@ class StanfordArm(ClosedFormArm):
     revolute = np.array([True, True, False, True, True, True])
 
     @classmethod
-    def from_chain(cls, chain, name="chain"):
-        """The engine of a chain, or a ``ValueError`` naming the condition it fails.
-
-        Parameters
-        ----------
-        chain : Chain
-            An RRPRRR arm whose axes 1, 2 meet and axes 4, 5, 6 meet.
-        name : str
-            The argument's name, for the messages.
-
-        Returns
-        -------
-        StanfordArm
-        """
-        check_chain(chain, name)
+    def _from_chain(cls, chain, name):
+        """:meth:`from_chain` of a checked chain."""
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints, got {chain.n}")
         kinds = "".join(j.value for j in chain.joints)

@@ -476,10 +476,12 @@ def subproblem3(twist, p, q, delta):
     twist : array-like, shape (6,)
         A zero-pitch unit twist [w; v], |w| = 1, w . v = 0 (SymPy entries give SymPy
         answers).
-    p, q : array-like, shape (3,)
-        Points (m).
+    p : array-like, shape (3,)
+        The point turned about the axis (m).
+    q : array-like, shape (3,)
+        The point it must end at distance delta from (m).
     delta : float
-        A distance >= 0 (m).
+        The distance, >= 0 (m).
 
     Returns
     -------
@@ -659,10 +661,12 @@ def subproblem3_prismatic(s, p, q, delta):
     ----------
     s : array-like, shape (3,)
         A unit direction (the twist (0; s)).
-    p, q : array-like, shape (3,)
-        Points (m).
+    p : array-like, shape (3,)
+        The point moved along s (m).
+    q : array-like, shape (3,)
+        The centre of the sphere (m).
     delta : float
-        A distance >= 0 (m).
+        The sphere's radius, >= 0 (m).
 
     Returns
     -------

@@ -39,7 +39,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._checks import check_chain
 from ..links import Joint
 from ..tolerances import IK_CLIP_TOL, IK_LABEL_TOL, IK_SINGULAR_TOL, IK_STRUCTURE_TOL
 from ..transforms import _wrap_angle, inv
@@ -62,23 +61,9 @@ def _roots(A, B, C):
 
 @dataclass(frozen=True)
 class URArm(ClosedFormArm):
-    """The geometry of a UR-type arm, from its screws.
-
-    Build it with :meth:`from_chain`.
-
-    Parameters
-    ----------
-    w : ndarray, shape (6, 3)
-        The unit axis directions at q = 0.
-    p : ndarray, shape (6, 3)
-        The point of each axis nearest the base origin (m).
-    c : ndarray, shape (3,)
-        The point where axes 5 and 6 meet (m).
-    home : ndarray, shape (4, 4)
-        The home pose M (m).
-    scale : float
-        The arm's size (:func:`~screwkit.ik._closed_form.arm_scale`, m), the length
-        its tolerances are measured against.
+    """The geometry of a UR-type arm, from its screws: the fields of
+    :class:`~screwkit.ik._closed_form.ClosedFormArm` and ``c``, shape (3,), the point
+    where axes 5 and 6 meet (m). Build it with :meth:`from_chain`.
     """
 
     w: np.ndarray
@@ -90,21 +75,8 @@ class URArm(ClosedFormArm):
     structure = STRUCTURE
 
     @classmethod
-    def from_chain(cls, chain, name="chain"):
-        """The engine of a chain, or a ``ValueError`` naming the condition it fails.
-
-        Parameters
-        ----------
-        chain : Chain
-            A 6R arm whose axes 2, 3, 4 are parallel and axes 5, 6 meet.
-        name : str
-            The argument's name, for the messages.
-
-        Returns
-        -------
-        URArm
-        """
-        check_chain(chain, name)
+    def _from_chain(cls, chain, name):
+        """:meth:`from_chain` of a checked chain."""
         if chain.n != 6:
             raise ValueError(f"{name} must have 6 joints, got {chain.n}")
         if any(j is not Joint.REVOLUTE for j in chain.joints):
