@@ -474,8 +474,7 @@ def subproblem3(twist, p, q, delta):
     Parameters
     ----------
     twist : array-like, shape (6,)
-        A zero-pitch unit twist [w; v], |w| = 1, w . v = 0 (SymPy entries give SymPy
-        answers).
+        The rotation's axis, as for :func:`subproblem1`.
     p : array-like, shape (3,)
         The point turned about the axis (m).
     q : array-like, shape (3,)
@@ -548,10 +547,9 @@ def subproblem4(twist, p, normal, d):
     Parameters
     ----------
     twist : array-like, shape (6,)
-        A zero-pitch unit twist [w; v], |w| = 1, w . v = 0 (SymPy entries give SymPy
-        answers).
+        The axis of the rotation (see :func:`subproblem1`).
     p : array-like, shape (3,)
-        A point (m).
+        The point brought onto the plane (m).
     normal : array-like, shape (3,)
         The plane's unit normal.
     d : float
