@@ -33,10 +33,11 @@ ORDER = [
         [
             "limbs",
             "joints",
-            "_parallel_legs",
-            "_parallel_numeric",
-            "_parallel_search",
-            "_parallel_catalogue",
+            "parallel.legs",
+            "parallel.numeric",
+            "parallel.search",
+            "parallel.model",
+            "parallel.catalogue",
             "parallel",
             "robots",
         ],
@@ -60,7 +61,7 @@ ORDER = [
         [
             "_sliders",
             "_mechanism_plot",
-            "_parallel_plot",
+            "parallel.plotting",
             "plotting",
             "viewer",
             "widgets",
@@ -81,14 +82,45 @@ RANK = {
     for rank, module in enumerate(m for _, modules in ORDER for m in modules)
 }
 LAYER = {module: layer for layer, modules in ORDER for module in modules}
-MODULES = sorted(path.stem for path in PACKAGE.glob("*.py"))
+
+
+def _dotted(path):
+    """A module's name relative to the package: 'lie', 'parallel.model', and a
+    folder's __init__.py as the folder's name, 'parallel'."""
+    parts = path.relative_to(PACKAGE).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" and len(parts) > 1 else parts)
+
+
+#: Flat modules and the modules of the family folders (screwkit/parallel/...).
+MODULES = sorted(_dotted(p) for p in [*PACKAGE.glob("*.py"), *PACKAGE.glob("*/*.py")])
+
+
+def _source_path(module):
+    """The file of a module named as in ORDER."""
+    path = PACKAGE.joinpath(*module.split("."))
+    return path / "__init__.py" if path.is_dir() else path.with_suffix(".py")
+
+
+def _resolve(module, level, name):
+    """The module of ORDER that ``from <level dots><name> import ...`` in ``module``
+    imports (a folder's module when one is named, else the folder or flat module)."""
+    package = module.split(".")
+    if not PACKAGE.joinpath(*package).is_dir():
+        package = package[:-1]  # a module's own package, [] for a flat one
+    base = package[: len(package) - (level - 1)] if level else []
+    parts = base + [p for p in name.split(".") if p]
+    for end in range(len(parts), 0, -1):
+        candidate = ".".join(parts[:end])
+        if candidate in RANK or _source_path(candidate).exists():
+            return candidate
+    return ".".join(parts[:1]) or None
 
 
 def imports(module, source=None):
     """(line, imported screwkit module or None, top-level name, inside a function) for
     every import statement of ``module`` (its file, or ``source``)."""
     if source is None:
-        source = (PACKAGE / f"{module}.py").read_text(encoding="utf-8")
+        source = _source_path(module).read_text(encoding="utf-8")
     tree = ast.parse(source)
     found = []
 
@@ -100,7 +132,11 @@ def imports(module, source=None):
             if isinstance(child, ast.Import):
                 for alias in child.names:
                     name = alias.name
-                    local = name.split(".")[1] if name.startswith("screwkit.") else None
+                    local = (
+                        _resolve(module, 0, name.removeprefix("screwkit."))
+                        if name.startswith("screwkit.")
+                        else None
+                    )
                     found.append((child.lineno, local, name.split(".")[0], in_function))
             elif isinstance(child, ast.ImportFrom):
                 if child.level == 0 and not (child.module or "").startswith("screwkit"):
@@ -109,14 +145,25 @@ def imports(module, source=None):
                     )
                     continue
                 base = (child.module or "").removeprefix("screwkit").lstrip(".")
-                if base:  # from .x import y, from screwkit.x import y
+                level = child.level or 1  # from screwkit.x: as from .x at the top
+                if base:  # from .x import y, from ..x import y, from screwkit.x import y
                     found.append(
-                        (child.lineno, base.split(".")[0], "screwkit", in_function)
+                        (
+                            child.lineno,
+                            _resolve(module, level, base),
+                            "screwkit",
+                            in_function,
+                        )
                     )
                 else:  # from . import x, y
                     for alias in child.names:
                         found.append(
-                            (child.lineno, alias.name, "screwkit", in_function)
+                            (
+                                child.lineno,
+                                _resolve(module, level, alias.name),
+                                "screwkit",
+                                in_function,
+                            )
                         )
             visit(child, nested)
 
@@ -199,10 +246,33 @@ def test_the_entry_point_imports_only_listed_modules():
         ("screws", "import screwkit.chains\n"),
         ("lie", "from . import lie\n"),  # itself
         ("chains", "from .nowhere import thing\n"),  # not in ORDER
+        # a family folder's modules: siblings by one dot, flat modules by two
+        ("parallel.legs", "from .model import ParallelManipulator\n"),
+        ("parallel.model", "from ..robots import delta\n"),
+        ("parallel.numeric", "from screwkit.parallel.search import multistart\n"),
+        ("parallel.catalogue", "from . import plotting\n"),
+        ("robots", "from .parallel.plotting import draw_spatial\n"),
     ],
 )
 def test_the_checker_sees_an_upward_import(module, source):
     assert upward(module, imports(module, source))
+
+
+@pytest.mark.parametrize(
+    "module, source",
+    [
+        ("parallel.model", "from .legs import Linear\nfrom ..screws import Wrench\n"),
+        ("parallel", "from .catalogue import delta\n"),
+        ("robots", "from .parallel import delta\n"),
+        ("parallel.plotting", "from .model import ParallelManipulator\n"),
+    ],
+)
+def test_the_checker_lets_a_folder_module_import_down(module, source):
+    assert not upward(module, imports(module, source))
+
+
+def test_the_family_folders_modules_are_read():
+    assert {"parallel", "parallel.model", "parallel.plotting"} <= set(MODULES)
 
 
 @pytest.mark.parametrize(

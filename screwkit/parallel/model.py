@@ -13,6 +13,7 @@ rho' = J V. The rows of J are the actuation wrenches (force; moment) with their 
 swapped, scaled so that their power on V is the actuator's rate (Joshi & Tsai 2002): for
 the Stewart platform the legs' unit line screws.
 
+>>> from screwkit.parallel import stewart_gough
 >>> pm = stewart_gough()
 >>> rho = pm.ik(pm.home())
 >>> bool(np.allclose(pm.fk(rho, guess=pm.home()).T, pm.home()))
@@ -24,44 +25,29 @@ from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
-from sympy import Rational
 
-from . import _parallel_catalogue as _catalogue
-from . import _parallel_numeric as _numeric
-from . import _parallel_search
-from ._checks import (
+from .._checks import (
     as_float_array,
     check_integer,
     check_option,
+    check_poses,
     check_rotation,
+    check_transform,
     is_symbolic,
 )
-from ._parallel_catalogue import (
-    RPR_BASE,
-    RPR_PLATFORM,
-    RPR_SIX_MODES_RHO,
-    STEWART_BASE,
-    STEWART_PLATFORM,
-)
-from ._parallel_legs import Linear, Prismatic, evaluated
-from .screws import Wrench
-from .systems import ScrewSystem
+from ..screws import Wrench
+from ..systems import ScrewSystem
+from ..tolerances import PARALLEL_FK_TOL, PARALLEL_MOTION_TOL
+from . import numeric as _numeric
+from . import search as _search
+from .legs import Linear, Prismatic, evaluated
 
 __all__ = [
     "ParallelManipulator",
     "ParallelIK",
     "ParallelFK",
     "Workspace",
-    "stewart_gough",
-    "planar_3rpr",
-    "planar_3rrr",
-    "delta",
-    "tripteron",
-    "STEWART_BASE",
-    "STEWART_PLATFORM",
-    "RPR_BASE",
-    "RPR_PLATFORM",
-    "RPR_SIX_MODES_RHO",
+    "MAX_WORKSPACE_POINTS",
 ]
 
 #: Poses per block of the batched computations: a block's arrays stay in the cache.
@@ -156,6 +142,8 @@ class ParallelManipulator:
         self.base_points = np.array([[float(v) for v in row] for row in base])
         self.platform_points = np.array([[float(v) for v in row] for row in platform])
         self.m = len(self.base_points)
+        size = np.linalg.norm(np.vstack([self.base_points, self.platform_points]), axis=1)
+        self.scale = float(size.max()) or 1.0
         self.motion = motion
         self.planar = motion == "planar"
         self.freedoms = _FREEDOMS[motion]
@@ -202,7 +190,10 @@ class ParallelManipulator:
     def _pose(self, T, name="T"):
         """T checked (rigid, and of this mechanism's motion type): (float (N, 4, 4),
         batched) or (SymPy matrix, False)."""
-        T = _numeric.check_poses(T, name)
+        if is_symbolic(T):
+            T = check_transform(T, name)
+        else:
+            T = check_poses(T, name)
         if isinstance(T, sp.MatrixBase):
             self._check_motion(np.array(T.evalf(), dtype=float)[None], name)
             return T, False
@@ -215,7 +206,7 @@ class ParallelManipulator:
         R = T[:, :3, :3]
         if self.motion == "translational":
             tilt = np.max(np.abs(R - self.home()[:3, :3]), initial=0.0)
-            if tilt > 1e-9:
+            if tilt > PARALLEL_MOTION_TOL:
                 raise ValueError(
                     f"{name} must keep the platform's orientation: the {self.name} "
                     f"only translates (3T), got a rotation block that differs from the "
@@ -226,13 +217,18 @@ class ParallelManipulator:
             off = np.max(
                 np.abs(
                     np.concatenate(
-                        [R[:, 2, :2], R[:, :2, 2], T[:, 2:3, 3], R[:, 2:3, 2] - 1],
+                        [
+                            R[:, 2, :2],
+                            R[:, :2, 2],
+                            T[:, 2:3, 3] / self.scale,
+                            R[:, 2:3, 2] - 1,
+                        ],
                         axis=1,
                     )
                 ),
                 initial=0.0,
             )
-            if off > 1e-9:
+            if off > PARALLEL_MOTION_TOL:
                 raise ValueError(
                     f"{name} must be a planar pose (a rotation about z and a "
                     f"translation in the base xy-plane) for the {self.name}, got one "
@@ -453,7 +449,7 @@ class ParallelManipulator:
         than the six wrenches (the platform gains a freedom with the actuators locked);
         'constraint': the constraint wrenches lose rank (the mechanism's mobility
         changes; Zlatanov et al. 1995). Exact ranks for exact input, SVD ranks (relative
-        tolerance 1e-9) for floats.
+        tolerance of :class:`~screwkit.ScrewSystem`) for floats.
         """
         limbs, _ = self.limbs(T, mode)
         found = set()
@@ -468,7 +464,7 @@ class ParallelManipulator:
 
     # ---- forward kinematics ---------------------------------------------------------
 
-    def fk(self, rho, guess=None, tol=1e-12, max_iterations=50):
+    def fk(self, rho, guess=None, tol=None, max_iterations=50):
         """The pose with actuated values rho, by Newton-Raphson on the loop closure.
 
         Parameters
@@ -493,6 +489,7 @@ class ParallelManipulator:
                 f"guess must be one pose or {len(values)} poses (one per row of "
                 f"rho), got {len(T0)}"
             )
+        tol = PARALLEL_FK_TOL * self.scale if tol is None else tol
         T, success, iterations, error = self._newton(values, T0, tol, max_iterations)
         if not batched:
             return ParallelFK(
@@ -509,6 +506,7 @@ class ParallelManipulator:
             T0,
             tol,
             max_iterations,
+            self.scale,
         )
 
     def fk_all(self, rho, starts=None, seed=0):
@@ -517,7 +515,7 @@ class ParallelManipulator:
 
         The 3-RPR solves its univariate sextic (Gosselin, Sefrioui & Richard 1992):
         complete, up to six modes. Other mechanisms run a multi-start Newton search
-        (:func:`screwkit._parallel_search.multistart`, ``starts`` random poses around
+        (:func:`screwkit.parallel.search.multistart`, ``starts`` random poses around
         the home pose plus their mirror images through the base plane, seeded): every
         pose it returns satisfies the legs, but it may miss a mode no start leads to;
         the general Stewart-Gough platform has up to 40 (Dietmaier 1998 found 40 real
@@ -530,10 +528,10 @@ class ParallelManipulator:
                 f"got shape {values.shape}"
             )
         if isinstance(self._legs, Prismatic) and self.planar:
-            return _parallel_search.rpr_sextic(self, values)
+            return _search.rpr_sextic(self, values)
         starts = 400 if starts is None else check_integer(starts, "starts", minimum=1)
         seed = check_integer(seed, "seed", minimum=0)
-        return _parallel_search.multistart(self, values, starts, seed)
+        return _search.multistart(self, values, starts, seed)
 
     # ---- workspace ------------------------------------------------------------------
 
@@ -590,69 +588,3 @@ def _outside(legs, rho, limits):
         f"leg(s) {legs} outside their limits "
         f"(leg {i}: {rho[i]:.4g} not in [{limits[i, 0]:g}, {limits[i, 1]:g}])"
     )
-
-
-# ---- the catalogue -----------------------------------------------------------------
-# The geometry (defaults, checks, legs) is in screwkit._parallel_catalogue; each builder
-# here is the public name with its documentation.
-
-
-def stewart_gough(base=None, platform=None, height=1, leg_limits=((0.9, 1.6),) * 6):
-    """The 6-UPS Stewart-Gough platform: base (6, 3) and platform (6, 3) points (m).
-
-    Default: :data:`STEWART_BASE`, :data:`STEWART_PLATFORM` (exact; base points on a
-    circle of 1 m at 120 k -/+ 15 degrees, platform points on a circle of 0.5 m at
-    120 k -/+ 45 degrees, leg i from base point i to platform point i), home ``height``
-    (m) above the base, leg lengths within ``leg_limits`` (m; None for no limits).
-    """
-    return ParallelManipulator(
-        **_catalogue.stewart_gough(base, platform, height, leg_limits)
-    )
-
-
-def planar_3rpr(base=None, platform=None, home=None, leg_limits=None):
-    """The planar 3-RPR: base (3, 2) points A_i, platform (3, 2) points b_i (m),
-    actuated prismatic legs. Poses are planar 4 x 4 (rotation about z, translation in
-    xy). Default: :data:`RPR_BASE`, :data:`RPR_PLATFORM`, which have six real assembly
-    modes at the leg lengths :data:`RPR_SIX_MODES_RHO`."""
-    return ParallelManipulator(
-        **_catalogue.planar_3rpr(base, platform, home, leg_limits)
-    )
-
-
-def planar_3rrr(
-    base_radius=1, platform_radius=Rational(1, 4), l1=Rational(3, 5), l2=Rational(1, 2)
-):
-    """The planar 3-RRR: actuated cranks of length l1 at base points on a circle (120
-    degrees apart), distal links l2 to platform points on a circle of
-    ``platform_radius`` (m). Eight working modes '+++' ... '---' (the sign of each
-    elbow). Also ``sk.robots.parallel_3rrr`` (``sk.robots.planar_3rrr`` is the
-    mobility chapter's symbolic limbs)."""
-    return ParallelManipulator(
-        **_catalogue.planar_3rrr(base_radius, platform_radius, l1, l2)
-    )
-
-
-def delta(
-    base_radius=Rational(1, 5),
-    platform_radius=Rational(1, 20),
-    l1=Rational(1, 5),
-    l2=Rational(9, 20),
-    height=Rational(-7, 20),
-):
-    """Clavel's delta as its kinematic equivalent 3-RUU (3T): crank i of length l1 turns
-    about the tangent u_i at A_i (base circle, 120 degrees apart; theta > 0 lowers it),
-    and a link of length l2 (a U-U pair in place of the spatial parallelogram) reaches
-    the platform point b_i. The platform only translates: a tilted pose is refused.
-    Default working mode '---' (every knee out)."""
-    return ParallelManipulator(
-        **_catalogue.delta(base_radius, platform_radius, l1, l2, height)
-    )
-
-
-def tripteron(a=Rational(9, 20), b=Rational(9, 20), L=1):
-    """The 3-PRRR Tripteron of the mobility chapter: carriage i slides along the axis
-    e_i (x, y, z; rho_i its position, m), then three revolutes along e_i with links a, b
-    reach the platform point b_i. A decoupled translational mechanism:
-    rho_i = e_i . (p + b_i) - const."""
-    return ParallelManipulator(**_catalogue.tripteron(a, b, L))

@@ -23,22 +23,15 @@ the row of the Jacobian (the actuation wrench, swapped).
 import numpy as np
 import sympy as sp
 
-_EPS = 1e-12
+from ..tolerances import PARALLEL_AXIS_TOL, PARALLEL_REACH_TOL
+from ..transforms import _cross
+
+__all__ = ["Prismatic", "Revolute", "Linear", "evaluated"]
 
 
 def _dot(a, b):
     """Dot products of point arrays laid out component first: (3, ...) -> (...)."""
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-def _cross(a, b):
-    return np.stack(
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    )
 
 
 def _columns(points):
@@ -159,6 +152,7 @@ class Revolute:
         self.l1, self.l2 = float(l1), float(l2)
         self.exact = (base, axis, e0, l1, l2)
         self.spatial = spatial
+        self._axis_tol = PARALLEL_AXIS_TOL * (self.l1 + self.l2)
 
     def _crank(self, theta):
         c, s = np.cos(theta), np.sin(theta)
@@ -171,8 +165,8 @@ class Revolute:
         K, L = _dot(d, self.e0), _dot(d, self.e1)
         M = (_dot(d, d) + self.l1**2 - self.l2**2) / (2 * self.l1)
         radius = np.hypot(K, L)
-        ratio = M / np.where(radius > _EPS, radius, np.nan)
-        ok = np.abs(ratio) <= 1 + 1e-12
+        ratio = M / np.where(radius > self._axis_tol, radius, np.nan)
+        ok = np.abs(ratio) <= 1 + PARALLEL_REACH_TOL
         theta = np.arctan2(L, K) + signs * np.arccos(np.clip(ratio, -1, 1))
         theta = np.angle(np.exp(1j * theta))
         return np.where(ok, theta, np.nan), ok, None
@@ -278,8 +272,9 @@ class Linear:
         rho = _dot(d, self.e)
         planar = d - rho * self.e
         reach = np.sqrt(_dot(planar, planar))
-        ok = (reach <= self.l1 + self.l2 + 1e-12) & (
-            reach >= abs(self.l1 - self.l2) - 1e-12
+        slack = PARALLEL_REACH_TOL * (self.l1 + self.l2)
+        ok = (reach <= self.l1 + self.l2 + slack) & (
+            reach >= abs(self.l1 - self.l2) - slack
         )
         return np.where(ok, rho, np.nan), ok, None
 
