@@ -190,10 +190,13 @@ class ParallelManipulator:
     def _pose(self, T, name="T"):
         """T checked (rigid, and of this mechanism's motion type): (float (N, 4, 4),
         batched) or (SymPy matrix, False)."""
-        if is_symbolic(T):
-            T = check_transform(T, name)
-        else:
-            T = check_poses(T, name)
+        # a float batch takes check_poses' fast pass; anything else (SymPy stays
+        # exact) the full check
+        T = (
+            check_poses(T, name)
+            if isinstance(T, np.ndarray) and T.ndim == 3
+            else check_transform(T, name)
+        )
         if isinstance(T, sp.MatrixBase):
             self._check_motion(np.array(T.evalf(), dtype=float)[None], name)
             return T, False
