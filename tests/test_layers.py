@@ -20,7 +20,10 @@ PACKAGE = Path(__file__).resolve().parents[1] / "screwkit"
 
 #: The layers, bottom up; within a layer, a module may import those listed before it.
 ORDER = [
-    ("checks and engines", ["tolerances", "_checks", "_numeric", "_exact", "_notation"]),
+    (
+        "checks and engines",
+        ["tolerances", "_checks", "_numeric", "_exact", "_notation"],
+    ),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
     ("Lie algebra", ["lie", "subproblems"]),
@@ -146,7 +149,7 @@ def imports(module, source=None):
                     continue
                 base = (child.module or "").removeprefix("screwkit").lstrip(".")
                 level = child.level or 1  # from screwkit.x: as from .x at the top
-                if base:  # from .x import y, from ..x import y, from screwkit.x import y
+                if base:  # from .x import y, from ..x import y, from screwkit.x import
                     found.append(
                         (
                             child.lineno,

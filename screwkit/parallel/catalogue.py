@@ -15,19 +15,6 @@ from ..transforms import rotz
 from .legs import Linear, Prismatic, Revolute
 from .model import ParallelManipulator
 
-__all__ = [
-    "stewart_gough",
-    "planar_3rpr",
-    "planar_3rrr",
-    "delta",
-    "tripteron",
-    "STEWART_BASE",
-    "STEWART_PLATFORM",
-    "RPR_BASE",
-    "RPR_PLATFORM",
-    "RPR_SIX_MODES_RHO",
-]
-
 
 def _geometry(value, name, m, columns, default):
     if value is None:

@@ -42,14 +42,6 @@ from . import numeric as _numeric
 from . import search as _search
 from .legs import Linear, Prismatic, evaluated
 
-__all__ = [
-    "ParallelManipulator",
-    "ParallelIK",
-    "ParallelFK",
-    "Workspace",
-    "MAX_WORKSPACE_POINTS",
-]
-
 #: Poses per block of the batched computations: a block's arrays stay in the cache.
 _BLOCK = 4096
 
@@ -142,8 +134,10 @@ class ParallelManipulator:
         self.base_points = np.array([[float(v) for v in row] for row in base])
         self.platform_points = np.array([[float(v) for v in row] for row in platform])
         self.m = len(self.base_points)
-        size = np.linalg.norm(np.vstack([self.base_points, self.platform_points]), axis=1)
-        self.scale = float(size.max()) or 1.0
+        points = np.vstack([self.base_points, self.platform_points])
+        #: The mechanism's size (m): its farthest attachment point from the origin of
+        #: its frame; length tolerances are measured against it
+        self.scale = float(np.linalg.norm(points, axis=1).max()) or 1.0
         self.motion = motion
         self.planar = motion == "planar"
         self.freedoms = _FREEDOMS[motion]
