@@ -26,7 +26,7 @@ import sympy as sp
 from ..tolerances import PARALLEL_AXIS_TOL, PARALLEL_REACH_TOL
 from ..transforms import _cross
 
-__all__ = ["Prismatic", "Revolute", "Linear", "evaluated"]
+__all__ = ["Legs", "Prismatic", "Revolute", "Linear", "evaluated"]
 
 
 def _dot(a, b):
@@ -53,7 +53,17 @@ def _floats(value):
 
 
 def evaluated(legs):
-    """A copy of ``legs`` whose exact layer holds Floats (for a float pose's screws)."""
+    """A copy of ``legs`` whose exact layer holds Floats (for a float pose's screws).
+
+    Parameters
+    ----------
+    legs : Legs
+
+    Returns
+    -------
+    Legs
+        The same legs, their exact geometry as SymPy Floats.
+    """
     copy = object.__new__(type(legs))
     copy.__dict__.update(legs.__dict__)
     if hasattr(legs, "A_exact"):
@@ -63,8 +73,149 @@ def evaluated(legs):
     return copy
 
 
-class Prismatic:
-    """Legs whose actuated joint is their length (U-P-S or R-P-R)."""
+class Legs:
+    """The m legs of a parallel manipulator: what every kind of leg computes.
+
+    Numeric methods take the platform points C, shape (3, N, m) (m, base frame,
+    component first) and return arrays of shape (N, m); exact methods take one pose's
+    points as a list of m SymPy 3 x 1 matrices. ``signs`` (m,) holds +1 or -1 per leg,
+    the working mode (the sign of each elbow; ignored by legs with one mode).
+
+    Attributes
+    ----------
+    modes : tuple of str
+        Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
+    """
+
+    modes = ("",)
+
+    def ik(self, C, signs):
+        """The actuated joint values that reach the points C.
+
+        Parameters
+        ----------
+        C : ndarray, shape (3, N, m)
+        signs : ndarray, shape (m,)
+
+        Returns
+        -------
+        rho : ndarray, shape (N, m)
+            Leg lengths or carriage positions (m), or crank angles (rad); NaN where out
+            of reach.
+        ok : ndarray of bool, shape (N, m)
+            Where the leg reaches.
+        None
+            (room for the passive joints).
+        """
+        raise NotImplementedError
+
+    def closure(self, C, rho):
+        """The loop closure r(C, rho) = 0 of every leg, and its derivatives.
+
+        Parameters
+        ----------
+        C : ndarray, shape (3, N, m)
+        rho : ndarray, shape (N, m)
+
+        Returns
+        -------
+        r : ndarray, shape (N, m)
+            The residual (m).
+        g : ndarray, shape (3, N, m)
+            dr/dC (no unit).
+        dr : ndarray, shape (N, m), or float
+            dr/drho (no unit, or m per rad).
+        """
+        raise NotImplementedError
+
+    def rate_rows(self, C, rho):
+        """-g / (dr/drho): the actuators' rates are rho' = rate_rows . C'.
+
+        Parameters
+        ----------
+        C : ndarray, shape (3, N, m)
+        rho : ndarray, shape (N, m)
+
+        Returns
+        -------
+        ndarray, shape (3, N, m)
+        """
+        raise NotImplementedError
+
+    def passive(self, C, rho, signs):
+        """The passive joints at the points C with actuated values rho.
+
+        Parameters
+        ----------
+        C : ndarray, shape (3, N, m)
+        rho : ndarray, shape (N, m)
+        signs : ndarray, shape (m,)
+
+        Returns
+        -------
+        dict of str to ndarray
+            Joint angles (rad), shape (N, m), or elbow points (m), shape (3, N, m).
+        """
+        raise NotImplementedError
+
+    def ik_exact(self, C, signs):
+        """The actuated joint values that reach one pose's points, exactly.
+
+        Parameters
+        ----------
+        C : list of sympy.Matrix, shape (3, 1)
+        signs : sequence of int, length m
+
+        Returns
+        -------
+        list of SymPy expressions
+            One per leg (m or rad); sympy.nan where out of reach.
+        """
+        raise NotImplementedError
+
+    def rows_exact(self, C, signs):
+        """Each leg's closure gradient g and dr/drho, exactly: the Jacobian's row is
+        -[C x g, g] / (dr/drho).
+
+        Parameters
+        ----------
+        C : list of sympy.Matrix, shape (3, 1)
+        signs : sequence of int, length m
+
+        Returns
+        -------
+        list of (sympy.Matrix (3, 1), SymPy expression)
+        """
+        raise NotImplementedError
+
+    def limbs(self, C, signs):
+        """The joint screws of every leg at one pose, in the mobility paper's format.
+
+        Parameters
+        ----------
+        C : list of sympy.Matrix, shape (3, 1)
+        signs : sequence of int, length m
+
+        Returns
+        -------
+        limbs : list of list of (s, r, h)
+            Per leg, its joints' axis direction s (3,), point r (3,) in m and pitch h.
+        actuated : list of int
+            The actuated joint's index in each leg.
+        """
+        raise NotImplementedError
+
+
+class Prismatic(Legs):
+    """Legs whose actuated joint is their length (U-P-S or R-P-R).
+
+    Parameters
+    ----------
+    base : list of 3 numbers, length m
+        The base points A_i (m); exact entries stay exact.
+    planar : bool
+        R-P-R legs in the xy-plane (else U-P-S).
+    """
 
     modes = ("",)
 
@@ -92,8 +243,7 @@ class Prismatic:
         return length - rho, g, -1.0
 
     def rate_rows(self, C, rho):
-        """-g / (dr/drho): rho' = rate_rows . C' (the unit leg direction here)."""
-        g = np.subtract(C, self.A)
+        g = np.subtract(C, self.A)  # the unit leg direction
         with np.errstate(divide="ignore", invalid="ignore"):
             g *= 1.0 / rho
         return g
@@ -117,8 +267,6 @@ class Prismatic:
         return [sp.Matrix(a) for a in self.A_exact]
 
     def limbs(self, C, signs):
-        """Joint screws (s, r, h) per leg at the pose; the actuated joint's index per
-        leg."""
         limbs, actuated = [], []
         for c, a in zip(C, self._A()):
             n = c - a
@@ -141,8 +289,22 @@ class Prismatic:
         return limbs, actuated
 
 
-class Revolute:
-    """Legs with an actuated crank (R-R-R in the plane, R-U-U of the delta)."""
+class Revolute(Legs):
+    """Legs with an actuated crank (R-R-R in the plane, R-U-U of the delta).
+
+    Parameters
+    ----------
+    base : list of 3 numbers, length m
+        The cranks' pivots A_i (m).
+    axis : list of 3 numbers, length m
+        The cranks' unit axes u_i.
+    e0 : list of 3 numbers, length m
+        The unit directions normal to u_i where each crank angle is zero.
+    l1, l2 : number
+        Lengths of the cranks and of the distal links (m).
+    spatial : bool
+        R-U-U legs (the delta) rather than planar R-R-R.
+    """
 
     modes = ("+", "-")
 
@@ -256,9 +418,19 @@ class Revolute:
         return limbs, actuated
 
 
-class Linear:
+class Linear(Legs):
     """P-R-R-R legs (the Tripteron): carriage along e from A0, then three revolutes
-    along e."""
+    along e.
+
+    Parameters
+    ----------
+    base : list of 3 numbers, length m
+        The carriages' origins A0_i (m).
+    axis : list of 3 numbers, length m
+        The unit directions e_i of the rails (and of the revolutes).
+    l1, l2 : number
+        Lengths of the two links (m).
+    """
 
     modes = ("",)
 
