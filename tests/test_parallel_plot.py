@@ -54,3 +54,14 @@ def test_bad_input():
         draw_planar_platform([[0, 0, 1]], np.eye(4))
     with pytest.raises(ValueError, match=r"T must be one pose of shape \(4, 4\)"):
         draw_planar_platform(parallel.planar_3rpr(), np.eye(3))
+
+
+def test_the_drawings_are_reached_from_the_package_as_sk_parallel_plotting():
+    import screwkit as sk
+
+    assert sk.parallel.plotting.draw_planar_platform is draw_planar_platform
+    assert sk.parallel.plotting.__all__ == [
+        "draw_planar_platform",
+        "draw_spatial",
+        "draw_workspace",
+    ]
