@@ -718,7 +718,10 @@ def test_rpr_sextic_is_a_sextic_whose_real_roots_are_the_scanned_modes():
 @pytest.mark.parametrize(
     "call, match",
     [
-        (lambda: parallel.rpr_sextic(stewart(), [1.0] * 6), "pm must be a planar 3-RPR"),
+        (
+            lambda: parallel.rpr_sextic(stewart(), [1.0] * 6),
+            "pm must be a planar 3-RPR",
+        ),
         (lambda: parallel.rpr_sextic(rrr(), [0.1] * 3), "pm must be a planar 3-RPR"),
         (lambda: parallel.rpr_sextic(rpr(), [1.0, 1.0]), "rho must be 3 leg lengths"),
     ],
