@@ -75,6 +75,8 @@ def test_the_modules_are_found_on_disk():
         f"screwkit.{p.stem}"
         for p in (ROOT / "screwkit").glob("*.py")
         if not p.stem.startswith("_")
+    } | {  # the family folders (screwkit/parallel/) are packages
+        f"screwkit.{p.parent.name}" for p in (ROOT / "screwkit").glob("*/__init__.py")
     }
     assert names == on_disk
 
