@@ -114,8 +114,7 @@ class Legs:
 
         Parameters
         ----------
-        C : ndarray, shape (3, N, m)
-        rho : ndarray, shape (N, m)
+        C, rho : ndarray, shapes (3, N, m) and (N, m)
 
         Returns
         -------
@@ -131,14 +130,17 @@ class Legs:
     def rate_rows(self, C, rho):
         """-g / (dr/drho): the actuators' rates are rho' = rate_rows . C'.
 
+        For prismatic legs, the unit leg directions; with C' = v + w x C they make the
+        Jacobian's rows [C x g, g].
+
         Parameters
         ----------
-        C : ndarray, shape (3, N, m)
-        rho : ndarray, shape (N, m)
+        C, rho : as for :meth:`closure`
 
         Returns
         -------
         ndarray, shape (3, N, m)
+            No unit for a length rho, rad per m for a crank angle.
         """
         raise NotImplementedError
 
@@ -147,9 +149,7 @@ class Legs:
 
         Parameters
         ----------
-        C : ndarray, shape (3, N, m)
-        rho : ndarray, shape (N, m)
-        signs : ndarray, shape (m,)
+        C, rho, signs : ndarray, shapes (3, N, m), (N, m) and (m,)
 
         Returns
         -------
@@ -163,8 +163,7 @@ class Legs:
 
         Parameters
         ----------
-        C : list of sympy.Matrix, shape (3, 1)
-        signs : sequence of int, length m
+        C, signs : m SymPy 3 x 1 matrices, and m signs (+1 or -1)
 
         Returns
         -------
@@ -179,8 +178,7 @@ class Legs:
 
         Parameters
         ----------
-        C : list of sympy.Matrix, shape (3, 1)
-        signs : sequence of int, length m
+        C, signs : as for :meth:`ik_exact`
 
         Returns
         -------
@@ -191,10 +189,11 @@ class Legs:
     def limbs(self, C, signs):
         """The joint screws of every leg at one pose, in the mobility paper's format.
 
+        ``sk.mobility(limbs)`` analyses the mechanism at that pose.
+
         Parameters
         ----------
-        C : list of sympy.Matrix, shape (3, 1)
-        signs : sequence of int, length m
+        C, signs : as for :meth:`ik_exact`
 
         Returns
         -------
