@@ -17,6 +17,7 @@
 import numpy as np
 
 from .._checks import as_float_array
+from ..orientation import rotation_from_quaternion
 from ..tolerances import (
     PARALLEL_CRAMER_TOL,
     PARALLEL_FLAT_TOL,
@@ -162,26 +163,6 @@ def _same_pose(T1, T2, scale):
     return max(rotation, translation) < PARALLEL_SAME_POSE_TOL
 
 
-def _random_rotations(rng, n):
-    q = rng.normal(size=(n, 4))
-    q /= np.linalg.norm(q, axis=1, keepdims=True)
-    w, x, y, z = q.T
-    return np.stack(
-        [
-            np.stack(
-                [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)], -1
-            ),
-            np.stack(
-                [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)], -1
-            ),
-            np.stack(
-                [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)], -1
-            ),
-        ],
-        axis=1,
-    )
-
-
 def multistart(pm, rho, starts, seed):
     """Assembly modes by Newton from many seeded random poses: not proven complete.
 
@@ -216,7 +197,8 @@ def multistart(pm, rho, starts, seed):
     )
     T0 = np.repeat(home[None], starts, axis=0)
     if pm.motion == "spatial":
-        T0[:, :3, :3] = _random_rotations(rng, starts)
+        q = rng.normal(size=(starts, 4))  # uniform on SO(3): a normal 4-vector, unit
+        T0[:, :3, :3] = rotation_from_quaternion(q / np.linalg.norm(q, axis=1)[:, None])
     elif pm.motion == "planar":
         phi = rng.uniform(-np.pi, np.pi, starts)
         T0[:, 0, 0], T0[:, 0, 1], T0[:, 1, 0], T0[:, 1, 1] = (
