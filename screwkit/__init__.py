@@ -6,7 +6,17 @@ gives float64 arrays, vectorised over a leading batch axis). SI units:
 metres and radians. Screws and twists are ordered [angular; linear].
 """
 
-from . import ik, jacobians, joints, limbs, redundancy, robots, urdf, workspace
+from . import (
+    ik,
+    jacobians,
+    joints,
+    limbs,
+    parallel,
+    redundancy,
+    robots,
+    urdf,
+    workspace,
+)
 from .chains import Chain, Convention, Joint, Link, textbook
 from .lie import ad, adjoint, log_rotation, log_transform, vee
 from .mobility import Mobility, grubler_kutzbach, mobility
@@ -77,6 +87,7 @@ __all__ = [
     "limbs",
     "mobility",
     "orientation",
+    "parallel",
     "redundancy",
     "robots",
     "urdf",

@@ -69,3 +69,64 @@ NEWTON_TOL = 1e-10
 NEWTON_DAMPING = 1e-9
 
 # ---- parallel: model, legs, numerics, search ----------------------------------------
+# A length below is written for a mechanism about 1 m across and used times the
+# mechanism's own size (ParallelManipulator.scale, the farthest attachment point from
+# its frame's origin; a leg's l1 + l2 in the legs' kernels), so that the same mechanism
+# in millimetres gets the same answers, scaled.
+
+#: A platform pose of a planar or translational mechanism must keep its motion: the
+#: rotation block may differ from the allowed one (and a planar pose's z-translation,
+#: divided by the scale, from 0) by this much. Relative: rotation entries are numbers.
+PARALLEL_MOTION_TOL = 1e-9
+
+#: Forward kinematics stops when every loop-closure residual is below this length
+#: (times the scale): the residuals are lengths, reached by Newton to round-off.
+PARALLEL_FK_TOL = 1e-12
+
+#: A converged pose is accepted (success) when its residuals are below
+#: max(tol, this length times the scale): a looser floor than PARALLEL_FK_TOL, so that
+#: a pose Newton polished to round-off is not refused for its last bits.
+PARALLEL_FK_ACCEPT_TOL = 1e-10
+
+#: Newton's largest step in any component of the platform twist: 0.5 rad in angle,
+#: 0.5 times the scale in length. Damping keeps a far start from jumping across
+#: assembly modes; near the solution the step is far smaller and Newton is undamped.
+PARALLEL_NEWTON_MAX_STEP = 0.5
+
+#: A crank leg (3-RRR, delta) cannot be solved when the platform point lies on the
+#: crank's axis: the distance to the axis is compared with this length times l1 + l2.
+PARALLEL_AXIS_TOL = 1e-12
+
+#: A leg reaches its platform point when the law of cosines' ratio is within 1 + this
+#: (relative), or the point's distance within l1 + l2 and |l1 - l2| -/+ this length
+#: times l1 + l2: round-off at a leg stretched straight is not "out of reach".
+PARALLEL_REACH_TOL = 1e-12
+
+#: The 3-RPR's polynomial: a leading coefficient (or a remainder of the division by
+#: 1 + t^2) below this fraction of the largest coefficient counts as zero (relative).
+PARALLEL_POLY_ZERO_TOL = 1e-9
+
+#: A root t of the 3-RPR's sextic is real when |Im t| is below this fraction of
+#: 1 + |t| (relative): a double real root splits into a complex pair about sqrt(eps).
+PARALLEL_REAL_ROOT_TOL = 1e-6
+
+#: Cramer's rule for the 3-RPR's platform point fails where its determinant is below
+#: this fraction of its largest coefficient (or 1) (relative).
+PARALLEL_CRAMER_TOL = 1e-12
+
+#: Newton polishing a candidate assembly mode stops at this residual (times the
+#: scale), tighter than PARALLEL_FK_TOL: the modes are reported to round-off.
+PARALLEL_POLISH_TOL = 1e-13
+
+#: Two assembly modes are the same pose when no rotation entry differs by more than
+#: this (and no translation by more than this times the scale).
+PARALLEL_SAME_POSE_TOL = 1e-6
+
+#: Base and platform points lie in the base plane (the mirror image of a Stewart
+#: platform's pose is then an assembly mode too) when their z is below this length
+#: times the scale (NumPy's allclose default, which it replaces).
+PARALLEL_FLAT_TOL = 1e-8
+
+#: fk_all lists a spatial mechanism's modes by height, platform above the base first;
+#: heights that agree to this many decimals (of the scale) count as equal.
+PARALLEL_HEIGHT_DECIMALS = 9

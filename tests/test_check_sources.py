@@ -244,3 +244,57 @@ def test_an_output_line_of_exactly_88_characters_passes(chapter):
 def test_the_repository_chapters_pass(capsys):
     assert check_sources.main(["--notebooks", str(ROOT / "notebooks")]) == 0
     assert "agree" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "code, private",
+    [
+        ("from screwkit._parallel_plot import draw_planar", "screwkit._parallel_plot"),
+        ("import screwkit._checks as checks", "screwkit._checks"),
+        ("from screwkit import _numeric", "screwkit._numeric"),
+        ("import screwkit as sk\nsk._numeric.snap(1.0)", "sk._numeric"),
+        (
+            "from screwkit import parallel\n"
+            "parallel._parallel_search.rpr_sextic(None, (1, 1, 1))",
+            "parallel._parallel_search",
+        ),
+        ("import screwkit.parallel as par\npar._search", "par._search"),
+    ],
+)
+def test_a_chapter_using_a_private_name_of_screwkit_is_named(chapter, code, private):
+    source = SOURCE.replace("x = 1 + 1\n", code + "\nx = 1 + 1\n")
+    _write(chapter, source)
+    problems = check_sources.check_notebooks(str(chapter))
+    assert len(problems) == 1, problems
+    assert f"uses the private `{private}`" in problems[0]
+    line = code.splitlines()[-1]
+    assert problems[0].startswith(
+        f"{chapter / 'chapter.md'}:{source.splitlines().index(line) + 1}:"
+    )
+
+
+def test_a_private_name_in_a_solution_block_of_the_prose_is_named(chapter):
+    solution = (
+        ":::{admonition} Solution\n:class: dropdown\n```python\n"
+        "poses = parallel._parallel_search.rpr_sextic(rpr, rho)\n```\n:::\n"
+    )
+    source = SOURCE.replace(
+        "x = 1 + 1\n", "from screwkit import parallel\nx = 1 + 1\n"
+    ).replace("Some prose.\n", "Some prose.\n\n" + solution)
+    _write(chapter, source)
+    problems = check_sources.check_notebooks(str(chapter))
+    assert [p.split(": ", 1)[1] for p in problems] == [
+        "uses the private `parallel._parallel_search`; a chapter imports and uses "
+        "only screwkit's public names"
+    ]
+
+
+def test_public_names_dunders_and_other_packages_privates_pass(chapter):
+    code = (
+        "import numpy as np\nimport screwkit as sk\n"
+        "from screwkit.parallel.plotting import draw_spatial\n"
+        "print(sk.__version__, sk.parallel.rpr_sextic, np._NoValue)\n"
+        "values = {}\nvalues._private = 1\n"
+    )
+    _write(chapter, SOURCE.replace("x = 1 + 1\n", code + "x = 1 + 1\n"))
+    assert check_sources.check_notebooks(str(chapter)) == []

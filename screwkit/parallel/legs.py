@@ -23,22 +23,15 @@ the row of the Jacobian (the actuation wrench, swapped).
 import numpy as np
 import sympy as sp
 
-_EPS = 1e-12
+from ..tolerances import PARALLEL_AXIS_TOL, PARALLEL_REACH_TOL
+from ..transforms import _cross
+
+__all__ = ["Legs", "Prismatic", "Revolute", "Linear", "evaluated"]
 
 
 def _dot(a, b):
     """Dot products of point arrays laid out component first: (3, ...) -> (...)."""
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-def _cross(a, b):
-    return np.stack(
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    )
 
 
 def _columns(points):
@@ -60,7 +53,17 @@ def _floats(value):
 
 
 def evaluated(legs):
-    """A copy of ``legs`` whose exact layer holds Floats (for a float pose's screws)."""
+    """A copy of ``legs`` whose exact layer holds Floats (for a float pose's screws).
+
+    Parameters
+    ----------
+    legs : Legs
+
+    Returns
+    -------
+    Legs
+        The same legs, their exact geometry as SymPy Floats.
+    """
     copy = object.__new__(type(legs))
     copy.__dict__.update(legs.__dict__)
     if hasattr(legs, "A_exact"):
@@ -70,8 +73,148 @@ def evaluated(legs):
     return copy
 
 
-class Prismatic:
-    """Legs whose actuated joint is their length (U-P-S or R-P-R)."""
+class Legs:
+    """The m legs of a parallel manipulator: what every kind of leg computes.
+
+    Numeric methods take the platform points C, shape (3, N, m) (m, base frame,
+    component first) and return arrays of shape (N, m); exact methods take one pose's
+    points as a list of m SymPy 3 x 1 matrices. ``signs`` (m,) holds +1 or -1 per leg,
+    the working mode (the sign of each elbow; ignored by legs with one mode).
+
+    Attributes
+    ----------
+    modes : tuple of str
+        Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
+    """
+
+    modes = ("",)
+
+    def ik(self, C, signs):
+        """The actuated joint values that reach the points C.
+
+        Parameters
+        ----------
+        C : ndarray, shape (3, N, m)
+        signs : ndarray, shape (m,)
+
+        Returns
+        -------
+        rho : ndarray, shape (N, m)
+            Leg lengths or carriage positions (m), or crank angles (rad); NaN where out
+            of reach.
+        ok : ndarray of bool, shape (N, m)
+            Where the leg reaches.
+        None
+            (room for the passive joints).
+        """
+        raise NotImplementedError
+
+    def closure(self, C, rho):
+        """The loop closure r(C, rho) = 0 of every leg, and its derivatives.
+
+        Parameters
+        ----------
+        C, rho : ndarray, shapes (3, N, m) and (N, m)
+
+        Returns
+        -------
+        r : ndarray, shape (N, m)
+            The residual (m).
+        g : ndarray, shape (3, N, m)
+            dr/dC (no unit).
+        dr : ndarray, shape (N, m), or float
+            dr/drho (no unit, or m per rad).
+        """
+        raise NotImplementedError
+
+    def rate_rows(self, C, rho):
+        """-g / (dr/drho): the actuators' rates are rho' = rate_rows . C'.
+
+        For prismatic legs, the unit leg directions; with C' = v + w x C they make the
+        Jacobian's rows [C x g, g].
+
+        Parameters
+        ----------
+        C, rho : as for :meth:`closure`
+
+        Returns
+        -------
+        ndarray, shape (3, N, m)
+            No unit for a length rho, rad per m for a crank angle.
+        """
+        raise NotImplementedError
+
+    def passive(self, C, rho, signs):
+        """The passive joints at the points C with actuated values rho.
+
+        Parameters
+        ----------
+        C, rho, signs : ndarray, shapes (3, N, m), (N, m) and (m,)
+
+        Returns
+        -------
+        dict of str to ndarray
+            Joint angles (rad), shape (N, m), or elbow points (m), shape (3, N, m).
+        """
+        raise NotImplementedError
+
+    def ik_exact(self, C, signs):
+        """The actuated joint values that reach one pose's points, exactly.
+
+        Parameters
+        ----------
+        C, signs : m SymPy 3 x 1 matrices, and m signs (+1 or -1)
+
+        Returns
+        -------
+        list of SymPy expressions
+            One per leg (m or rad); sympy.nan where out of reach.
+        """
+        raise NotImplementedError
+
+    def rows_exact(self, C, signs):
+        """Each leg's closure gradient g and dr/drho, exactly: the Jacobian's row is
+        -[C x g, g] / (dr/drho).
+
+        Parameters
+        ----------
+        C, signs : as for :meth:`ik_exact`
+
+        Returns
+        -------
+        list of (sympy.Matrix (3, 1), SymPy expression)
+        """
+        raise NotImplementedError
+
+    def limbs(self, C, signs):
+        """The joint screws of every leg at one pose, in the mobility paper's format.
+
+        ``sk.mobility(limbs)`` analyses the mechanism at that pose.
+
+        Parameters
+        ----------
+        C, signs : as for :meth:`ik_exact`
+
+        Returns
+        -------
+        limbs : list of list of (s, r, h)
+            Per leg, its joints' axis direction s (3,), point r (3,) in m and pitch h.
+        actuated : list of int
+            The actuated joint's index in each leg.
+        """
+        raise NotImplementedError
+
+
+class Prismatic(Legs):
+    """Legs whose actuated joint is their length (U-P-S or R-P-R).
+
+    Parameters
+    ----------
+    base : list of 3 numbers, length m
+        The base points A_i (m); exact entries stay exact.
+    planar : bool
+        R-P-R legs in the xy-plane (else U-P-S).
+    """
 
     modes = ("",)
 
@@ -99,8 +242,7 @@ class Prismatic:
         return length - rho, g, -1.0
 
     def rate_rows(self, C, rho):
-        """-g / (dr/drho): rho' = rate_rows . C' (the unit leg direction here)."""
-        g = np.subtract(C, self.A)
+        g = np.subtract(C, self.A)  # the unit leg direction
         with np.errstate(divide="ignore", invalid="ignore"):
             g *= 1.0 / rho
         return g
@@ -124,8 +266,6 @@ class Prismatic:
         return [sp.Matrix(a) for a in self.A_exact]
 
     def limbs(self, C, signs):
-        """Joint screws (s, r, h) per leg at the pose; the actuated joint's index per
-        leg."""
         limbs, actuated = [], []
         for c, a in zip(C, self._A()):
             n = c - a
@@ -148,8 +288,22 @@ class Prismatic:
         return limbs, actuated
 
 
-class Revolute:
-    """Legs with an actuated crank (R-R-R in the plane, R-U-U of the delta)."""
+class Revolute(Legs):
+    """Legs with an actuated crank (R-R-R in the plane, R-U-U of the delta).
+
+    Parameters
+    ----------
+    base : list of 3 numbers, length m
+        The cranks' pivots A_i (m).
+    axis : list of 3 numbers, length m
+        The cranks' unit axes u_i.
+    e0 : list of 3 numbers, length m
+        The unit directions normal to u_i where each crank angle is zero.
+    l1, l2 : number
+        Lengths of the cranks and of the distal links (m).
+    spatial : bool
+        R-U-U legs (the delta) rather than planar R-R-R.
+    """
 
     modes = ("+", "-")
 
@@ -159,6 +313,7 @@ class Revolute:
         self.l1, self.l2 = float(l1), float(l2)
         self.exact = (base, axis, e0, l1, l2)
         self.spatial = spatial
+        self._axis_tol = PARALLEL_AXIS_TOL * (self.l1 + self.l2)
 
     def _crank(self, theta):
         c, s = np.cos(theta), np.sin(theta)
@@ -171,8 +326,8 @@ class Revolute:
         K, L = _dot(d, self.e0), _dot(d, self.e1)
         M = (_dot(d, d) + self.l1**2 - self.l2**2) / (2 * self.l1)
         radius = np.hypot(K, L)
-        ratio = M / np.where(radius > _EPS, radius, np.nan)
-        ok = np.abs(ratio) <= 1 + 1e-12
+        ratio = M / np.where(radius > self._axis_tol, radius, np.nan)
+        ok = np.abs(ratio) <= 1 + PARALLEL_REACH_TOL
         theta = np.arctan2(L, K) + signs * np.arccos(np.clip(ratio, -1, 1))
         theta = np.angle(np.exp(1j * theta))
         return np.where(ok, theta, np.nan), ok, None
@@ -262,9 +417,19 @@ class Revolute:
         return limbs, actuated
 
 
-class Linear:
+class Linear(Legs):
     """P-R-R-R legs (the Tripteron): carriage along e from A0, then three revolutes
-    along e."""
+    along e.
+
+    Parameters
+    ----------
+    base : list of 3 numbers, length m
+        The carriages' origins A0_i (m).
+    axis : list of 3 numbers, length m
+        The unit directions e_i of the rails (and of the revolutes).
+    l1, l2 : number
+        Lengths of the two links (m).
+    """
 
     modes = ("",)
 
@@ -278,8 +443,9 @@ class Linear:
         rho = _dot(d, self.e)
         planar = d - rho * self.e
         reach = np.sqrt(_dot(planar, planar))
-        ok = (reach <= self.l1 + self.l2 + 1e-12) & (
-            reach >= abs(self.l1 - self.l2) - 1e-12
+        slack = PARALLEL_REACH_TOL * (self.l1 + self.l2)
+        ok = (reach <= self.l1 + self.l2 + slack) & (
+            reach >= abs(self.l1 - self.l2) - slack
         )
         return np.where(ok, rho, np.nan), ok, None
 

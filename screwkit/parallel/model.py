@@ -13,6 +13,7 @@ rho' = J V. The rows of J are the actuation wrenches (force; moment) with their 
 swapped, scaled so that their power on V is the actuator's rate (Joshi & Tsai 2002): for
 the Stewart platform the legs' unit line screws.
 
+>>> from screwkit.parallel import stewart_gough
 >>> pm = stewart_gough()
 >>> rho = pm.ik(pm.home())
 >>> bool(np.allclose(pm.fk(rho, guess=pm.home()).T, pm.home()))
@@ -24,45 +25,22 @@ from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
-from sympy import Rational
 
-from . import _parallel_catalogue as _catalogue
-from . import _parallel_numeric as _numeric
-from . import _parallel_search
-from ._checks import (
+from .._checks import (
     as_float_array,
     check_integer,
     check_option,
+    check_poses,
     check_rotation,
+    check_transform,
     is_symbolic,
 )
-from ._parallel_catalogue import (
-    RPR_BASE,
-    RPR_PLATFORM,
-    RPR_SIX_MODES_RHO,
-    STEWART_BASE,
-    STEWART_PLATFORM,
-)
-from ._parallel_legs import Linear, Prismatic, evaluated
-from .screws import Wrench
-from .systems import ScrewSystem
-
-__all__ = [
-    "ParallelManipulator",
-    "ParallelIK",
-    "ParallelFK",
-    "Workspace",
-    "stewart_gough",
-    "planar_3rpr",
-    "planar_3rrr",
-    "delta",
-    "tripteron",
-    "STEWART_BASE",
-    "STEWART_PLATFORM",
-    "RPR_BASE",
-    "RPR_PLATFORM",
-    "RPR_SIX_MODES_RHO",
-]
+from ..screws import Wrench
+from ..systems import ScrewSystem
+from ..tolerances import PARALLEL_FK_TOL, PARALLEL_MOTION_TOL
+from . import numeric as _numeric
+from . import search as _search
+from .legs import Linear, Prismatic, evaluated
 
 #: Poses per block of the batched computations: a block's arrays stay in the cache.
 _BLOCK = 4096
@@ -81,10 +59,22 @@ _TYPES = {"spatial": "3T3R", "planar": "2T1R", "translational": "3T"}
 
 @dataclass
 class ParallelIK:
-    """Inverse kinematics in full: ``rho`` (m,) or (N, m), NaN where out of reach;
-    ``passive`` the passive joints (dict of arrays); ``reachable`` (bool or (N,));
-    ``reason`` (str, '' when reachable, or a list of them); ``mode`` the working mode's
-    label."""
+    """Inverse kinematics in full: what ``pm.ik(T, passive=True)`` returns.
+
+    Attributes
+    ----------
+    rho : ndarray, shape (m,) or (N, m)
+        The actuated joint values (m or rad), NaN where out of reach (or a list of
+        SymPy expressions for an exact pose).
+    passive : dict of str to ndarray
+        The passive joints by name ('phi', 'u1', 'u2', 'elbow', 'theta2'), each with
+        a leading batch axis for a batch of poses.
+    reachable : bool or ndarray of bool, shape (N,)
+    reason : str or list of str
+        '' when reachable, else which legs cannot reach or leave their limits.
+    mode : str
+        The working mode's label.
+    """
 
     rho: object
     passive: dict
@@ -95,9 +85,17 @@ class ParallelIK:
 
 @dataclass
 class ParallelFK:
-    """Forward kinematics: ``T`` (4, 4) or (N, 4, 4), NaN where Newton failed;
-    ``success``, ``iterations`` and ``error`` (the largest loop-closure residual, m) per
-    pose."""
+    """Forward kinematics: what ``pm.fk(rho)`` returns.
+
+    Attributes
+    ----------
+    T : ndarray, shape (4, 4) or (N, 4, 4)
+        The platform pose(s), NaN where Newton did not converge.
+    success : bool or ndarray of bool, shape (N,)
+    iterations : int or ndarray of int, shape (N,)
+    error : float or ndarray, shape (N,)
+        The largest loop-closure residual of each pose (m).
+    """
 
     T: np.ndarray
     success: object
@@ -107,10 +105,25 @@ class ParallelFK:
 
 @dataclass
 class Workspace:
-    """A constant-orientation workspace on a grid: ``inside`` (bool, grid shape) where
-    every leg is reachable and within its limits, ``det`` the determinant of the
-    Jacobian's free columns (NaN outside), ``rho`` the actuated values (grid shape +
-    (m,))."""
+    """A constant-orientation workspace on a grid: what ``pm.workspace(x, y)`` returns.
+
+    Attributes
+    ----------
+    x : ndarray, shape (nx,)
+    y : ndarray, shape (ny,)
+        The grid (m, base frame).
+    z : ndarray, shape ()
+        Its height (m).
+    inside : ndarray of bool, shape (ny, nx)
+        Where every leg is reachable and within its limits.
+    det : ndarray, shape (ny, nx)
+        The determinant of the Jacobian's free columns (NaN outside); its zero level
+        is the direct-singularity locus.
+    rho : ndarray, shape (ny, nx, m)
+        The actuated values (m or rad).
+    rotation : ndarray, shape (3, 3)
+        The platform's constant rotation.
+    """
 
     x: np.ndarray
     y: np.ndarray
@@ -124,17 +137,39 @@ class Workspace:
 class ParallelManipulator:
     """A parallel manipulator: m legs between a base and a platform, one actuator each.
 
+    Built by the catalogue (``sk.parallel.stewart_gough()`` and the others); models are
+    immutable.
+
     Parameters
     ----------
     name : str
-    legs : the legs' model (:mod:`screwkit._parallel_legs`): their IK and loop closure
-    base, platform : (m, 3) attachment points A_i (base frame) and b_i (platform
-        frame), in m; SymPy entries keep the exact layer exact
-    motion : 'spatial' (6 freedoms), 'planar' (x, y and the angle about z) or
-        'translational'
-    home : (4, 4) the home pose
-    leg_limits : (m, 2) limits of the actuated joints (m or rad), or None
-    default_mode : the working mode ``ik`` uses when none is given
+    legs : Prismatic, Revolute or Linear
+        The legs' model (:mod:`screwkit.parallel.legs`): their IK and loop closure.
+    base : array-like, shape (m, 3)
+        Attachment points A_i (m, base frame); SymPy entries keep the exact layer
+        exact.
+    platform : array-like, shape (m, 3)
+        Attachment points b_i (m, platform frame).
+    motion : {'spatial', 'planar', 'translational'}
+        6 freedoms, or x, y and the angle about z, or the three translations.
+    home : array-like, shape (4, 4)
+        The home pose.
+    leg_limits : array-like, shape (m, 2), optional
+        Limits of the actuated joints (m or rad); None for none.
+    default_mode : str, optional
+        The working mode ``ik`` uses when none is given.
+
+    Attributes
+    ----------
+    m : int
+        The number of legs.
+    base_points, platform_points : ndarray, shape (m, 3)
+        A_i and b_i as floats (m).
+    scale : float
+        The mechanism's size (m): its farthest attachment point from the origin of its
+        frame. Length tolerances are measured against it.
+    working_modes : list of str
+        The labels ``ik`` accepts as ``mode``.
     """
 
     def __init__(
@@ -156,6 +191,10 @@ class ParallelManipulator:
         self.base_points = np.array([[float(v) for v in row] for row in base])
         self.platform_points = np.array([[float(v) for v in row] for row in platform])
         self.m = len(self.base_points)
+        points = np.vstack([self.base_points, self.platform_points])
+        #: The mechanism's size (m): its farthest attachment point from the origin of
+        #: its frame; length tolerances are measured against it
+        self.scale = float(np.linalg.norm(points, axis=1).max()) or 1.0
         self.motion = motion
         self.planar = motion == "planar"
         self.freedoms = _FREEDOMS[motion]
@@ -190,11 +229,21 @@ class ParallelManipulator:
         return f"ParallelManipulator({self.name!r}, {self.m} legs, {self.motion_type})"
 
     def home(self):
-        """The home pose, (4, 4) float array."""
+        """The home pose.
+
+        Returns
+        -------
+        ndarray, shape (4, 4)
+        """
         return np.array(self._home, dtype=float)
 
     def home_exact(self):
-        """The home pose as an exact SymPy matrix."""
+        """The home pose, exactly.
+
+        Returns
+        -------
+        sympy.Matrix, shape (4, 4)
+        """
         return sp.Matrix(self._home)
 
     # ---- checks ---------------------------------------------------------------------
@@ -202,7 +251,13 @@ class ParallelManipulator:
     def _pose(self, T, name="T"):
         """T checked (rigid, and of this mechanism's motion type): (float (N, 4, 4),
         batched) or (SymPy matrix, False)."""
-        T = _numeric.check_poses(T, name)
+        # a float batch takes check_poses' fast pass; anything else (SymPy stays
+        # exact) the full check
+        T = (
+            check_poses(T, name)
+            if isinstance(T, np.ndarray) and T.ndim == 3
+            else check_transform(T, name)
+        )
         if isinstance(T, sp.MatrixBase):
             self._check_motion(np.array(T.evalf(), dtype=float)[None], name)
             return T, False
@@ -215,7 +270,7 @@ class ParallelManipulator:
         R = T[:, :3, :3]
         if self.motion == "translational":
             tilt = np.max(np.abs(R - self.home()[:3, :3]), initial=0.0)
-            if tilt > 1e-9:
+            if tilt > PARALLEL_MOTION_TOL:
                 raise ValueError(
                     f"{name} must keep the platform's orientation: the {self.name} "
                     f"only translates (3T), got a rotation block that differs from the "
@@ -226,13 +281,18 @@ class ParallelManipulator:
             off = np.max(
                 np.abs(
                     np.concatenate(
-                        [R[:, 2, :2], R[:, :2, 2], T[:, 2:3, 3], R[:, 2:3, 2] - 1],
+                        [
+                            R[:, 2, :2],
+                            R[:, :2, 2],
+                            T[:, 2:3, 3] / self.scale,
+                            R[:, 2:3, 2] - 1,
+                        ],
                         axis=1,
                     )
                 ),
                 initial=0.0,
             )
-            if off > 1e-9:
+            if off > PARALLEL_MOTION_TOL:
                 raise ValueError(
                     f"{name} must be a planar pose (a rotation about z and a "
                     f"translation in the base xy-plane) for the {self.name}, got one "
@@ -265,8 +325,18 @@ class ParallelManipulator:
     # ---- inverse kinematics ---------------------------------------------------------
 
     def attachments(self, T):
-        """The platform points in the base frame, C_i = p + R b_i: (m, 3) or (N, m,
-        3)."""
+        """The platform's attachment points in the base frame, C_i = p + R b_i.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4) or (N, 4, 4), or a SymPy 4 x 4
+            Platform pose(s).
+
+        Returns
+        -------
+        ndarray, shape (m, 3) or (N, m, 3)
+            C_i (m); a list of SymPy 3 x 1 matrices for an exact pose.
+        """
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
             return [T[:3, :3] * b + T[:3, 3] for b in self._platform_exact]
@@ -280,16 +350,22 @@ class ParallelManipulator:
 
         Parameters
         ----------
-        T : (4, 4) or (N, 4, 4) platform pose(s), or an exact SymPy 4 x 4
-        mode : a working mode label from ``working_modes`` (e.g. '+-+' for the
-            3-RRR: the sign of each leg's elbow), default ``default_mode``
-        passive : also return the passive joints and the reason a pose is out of reach
+        T : array-like, shape (4, 4) or (N, 4, 4), or a SymPy 4 x 4
+            Platform pose(s) (m, base frame).
+        mode : str, optional
+            A working mode label from ``working_modes`` (e.g. '+-+' for the 3-RRR: the
+            sign of each leg's elbow); default ``default_mode``.
+        passive : bool
+            Also return the passive joints and the reason a pose is out of reach.
 
         Returns
         -------
-        rho : (m,) or (N, m), NaN rows where out of reach or outside ``leg_limits``;
-            a list of SymPy expressions for exact input (sympy.nan where out of
-            reach); or a :class:`ParallelIK` with ``passive``
+        rho : ndarray, shape (m,) or (N, m)
+            Leg lengths (m) or crank angles (rad), NaN rows where out of reach or
+            outside ``leg_limits``; a list of SymPy expressions for an exact pose
+            (sympy.nan where out of reach).
+        ParallelIK
+            Instead, with ``passive``.
         """
         signs = self._mode(mode)
         T, batched = self._pose(T)
@@ -344,20 +420,39 @@ class ParallelManipulator:
         return ParallelIK(rho, joints, reachable, reasons, mode or self.default_mode)
 
     def ik_all(self, T):
-        """Every working mode: a dict {label: rho}, each as ``ik(T, mode=label)``
-        gives."""
+        """The actuated joint values in every working mode.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4) or (N, 4, 4), or a SymPy 4 x 4
+
+        Returns
+        -------
+        dict of str to ndarray, shape (m,) or (N, m)
+            ``{label: pm.ik(T, mode=label)}`` for every label of ``working_modes``.
+        """
         return {mode: self.ik(T, mode=mode) for mode in self.working_modes}
 
     # ---- Jacobian and wrenches ------------------------------------------------------
 
     def jacobian(self, T, mode=None):
-        """J with rho' = J V, V = [w; v] the platform's space twist: (m, 6) or (N, m,
-        6).
+        """The Jacobian J with rho' = J V, V = [w; v] the platform's space twist.
 
         Row i is the actuation wrench of leg i, (f; m) swapped to [m; f], scaled so that
         its power on V is the actuator's rate: [A_i x n_i, n_i] for a leg of unit
-        direction n_i. NaN rows where the pose is out of reach; exact (SymPy) for exact
-        input.
+        direction n_i.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4) or (N, 4, 4), or a SymPy 4 x 4
+        mode : str, optional
+            The working mode (default ``default_mode``).
+
+        Returns
+        -------
+        ndarray, shape (m, 6) or (N, m, 6)
+            NaN rows where the pose is out of reach (units: m or rad per unit of the
+            twist's rad/s and m/s); a SymPy matrix for an exact pose.
         """
         signs = self._mode(mode)
         T, batched = self._pose(T)
@@ -401,10 +496,23 @@ class ParallelManipulator:
         return rho, ok
 
     def limbs(self, T=None, mode=None):
-        """The limbs' joint screws at the pose T (home by default), in the mobility
-        paper's zeroth-step format (a list per limb of (s, r, h) triples), and the
-        actuated joint's index in each: ``sk.mobility(pm.limbs(T)[0])`` analyses the
-        mechanism there."""
+        """The limbs' joint screws at the pose T, in the mobility paper's format.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4), optional
+            One pose (default: home, exactly); exact input gives exact screws.
+        mode : str, optional
+            The working mode (default ``default_mode``).
+
+        Returns
+        -------
+        limbs : list of list of (s, r, h)
+            Per limb, its joints' axis direction s (3,), point r (3,) in m and pitch h
+            (0 or sympy.oo): ``sk.mobility(limbs)`` analyses the mechanism at T.
+        actuated : list of int
+            The actuated joint's index in each limb.
+        """
         T = self.home_exact() if T is None else T
         signs = self._mode(mode)
         C, legs = self._exact_attachments(T)
@@ -424,12 +532,27 @@ class ParallelManipulator:
         ], self._legs_float
 
     def wrenches(self, T, mode=None):
-        """(actuation, constraint): the actuation wrenches (one per leg: a line along
-        the leg, or the distal link, through the platform point) and the constraint
-        wrenches (every wrench reciprocal to all joint twists of a limb, over the limbs)
-        as ScrewSystems of Wrenches; exact for exact input. Together they span the
-        platform's wrench space except at a direct singularity (Joshi & Tsai's 6 x 6
-        form)."""
+        """The actuation and constraint wrenches at T (Joshi & Tsai's 6 x 6 form).
+
+        The actuation wrenches: one per leg, a line along the leg (or the distal link)
+        through the platform point. The constraint wrenches: every wrench reciprocal to
+        all joint twists of a limb, over the limbs. Together they span the platform's
+        wrench space except at a direct singularity.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4), or a SymPy 4 x 4
+            One pose; exact input gives exact wrenches.
+        mode : str, optional
+            The working mode (default ``default_mode``).
+
+        Returns
+        -------
+        actuation : ScrewSystem
+            m Wrenches (unit lines for a float pose).
+        constraint : ScrewSystem
+            The limbs' constraint Wrenches.
+        """
         limbs, _ = self.limbs(T, mode)
         C, legs = self._exact_attachments(T)
         signs = self._mode(mode)
@@ -444,16 +567,27 @@ class ParallelManipulator:
         return ScrewSystem(actuation, kind=Wrench), ScrewSystem(constraint, kind=Wrench)
 
     def singularities(self, T, mode=None):
-        """The singularity types present at T: a subset of {'inverse', 'direct',
-        'constraint'}.
+        """The singularity types present at T.
 
         'inverse' (type I, Gosselin & Angeles): a limb's joint twists lose rank (the
         limb is at its boundary and an actuator can move with the platform held);
         'direct' (type II): the actuation and constraint wrenches together span less
         than the six wrenches (the platform gains a freedom with the actuators locked);
         'constraint': the constraint wrenches lose rank (the mechanism's mobility
-        changes; Zlatanov et al. 1995). Exact ranks for exact input, SVD ranks (relative
-        tolerance 1e-9) for floats.
+        changes; Zlatanov et al. 1995). Exact ranks for exact input, SVD ranks (the
+        relative tolerance of :class:`~screwkit.ScrewSystem`) for floats.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4), or a SymPy 4 x 4
+            One pose.
+        mode : str, optional
+            The working mode (default ``default_mode``).
+
+        Returns
+        -------
+        set of str
+            A subset of {'inverse', 'direct', 'constraint'}; empty at a regular pose.
         """
         limbs, _ = self.limbs(T, mode)
         found = set()
@@ -468,20 +602,26 @@ class ParallelManipulator:
 
     # ---- forward kinematics ---------------------------------------------------------
 
-    def fk(self, rho, guess=None, tol=1e-12, max_iterations=50):
+    def fk(self, rho, guess=None, tol=None, max_iterations=50):
         """The pose with actuated values rho, by Newton-Raphson on the loop closure.
 
         Parameters
         ----------
-        rho : (m,) or (N, m) actuated joint values
-        guess : (4, 4) or (N, 4, 4) starting pose(s) (default: home); the assembly
-            mode found is the one Newton reaches from it
-        tol : residual (m) below which a pose is accepted
+        rho : array-like, shape (m,) or (N, m)
+            Actuated joint values (m or rad).
+        guess : array-like, shape (4, 4) or (N, 4, 4), optional
+            Starting pose(s) (default: home); the assembly mode found is the one
+            Newton reaches from it.
+        tol : float, optional
+            Residual (m) below which a pose is accepted; default
+            ``PARALLEL_FK_TOL`` times ``scale``.
+        max_iterations : int
 
         Returns
         -------
         ParallelFK
-            ``T`` (NaN where not converged), ``success``, ``iterations``, ``error``
+            ``T`` (4, 4) or (N, 4, 4), NaN where not converged, with ``success``,
+            ``iterations`` and ``error``.
         """
         values = self._rho(rho)
         batched = values.ndim == 2
@@ -493,6 +633,7 @@ class ParallelManipulator:
                 f"guess must be one pose or {len(values)} poses (one per row of "
                 f"rho), got {len(T0)}"
             )
+        tol = PARALLEL_FK_TOL * self.scale if tol is None else tol
         T, success, iterations, error = self._newton(values, T0, tol, max_iterations)
         if not batched:
             return ParallelFK(
@@ -509,19 +650,33 @@ class ParallelManipulator:
             T0,
             tol,
             max_iterations,
+            self.scale,
         )
 
     def fk_all(self, rho, starts=None, seed=0):
-        """Every real assembly mode with actuated values rho (m,): a list of (4, 4)
-        poses.
+        """Every real assembly mode with actuated values rho.
 
-        The 3-RPR solves its univariate sextic (Gosselin, Sefrioui & Richard 1992):
-        complete, up to six modes. Other mechanisms run a multi-start Newton search
-        (:func:`screwkit._parallel_search.multistart`, ``starts`` random poses around
-        the home pose plus their mirror images through the base plane, seeded): every
-        pose it returns satisfies the legs, but it may miss a mode no start leads to;
-        the general Stewart-Gough platform has up to 40 (Dietmaier 1998 found 40 real
-        ones).
+        The 3-RPR solves its univariate sextic (:func:`~screwkit.parallel.rpr_sextic`;
+        Gosselin, Sefrioui & Richard 1992): complete, up to six modes. Other mechanisms
+        run a multi-start Newton search (:func:`screwkit.parallel.search.multistart`,
+        ``starts`` random poses around the home pose plus their mirror images through
+        the base plane, seeded): every pose it returns satisfies the legs, but it may
+        miss a mode no start leads to; the general Stewart-Gough platform has up to 40
+        (Dietmaier 1998 found 40 real ones).
+
+        Parameters
+        ----------
+        rho : array-like, shape (m,)
+            One input (m or rad).
+        starts : int, optional
+            Random starting poses of the search (default 400).
+        seed : int
+            The search's seed.
+
+        Returns
+        -------
+        list of ndarray, shape (4, 4)
+            The assembly modes found.
         """
         values = self._rho(rho)
         if values.ndim != 1:
@@ -530,19 +685,36 @@ class ParallelManipulator:
                 f"got shape {values.shape}"
             )
         if isinstance(self._legs, Prismatic) and self.planar:
-            return _parallel_search.rpr_sextic(self, values)
+            return _search.rpr_sextic(self, values)
         starts = 400 if starts is None else check_integer(starts, "starts", minimum=1)
         seed = check_integer(seed, "seed", minimum=0)
-        return _parallel_search.multistart(self, values, starts, seed)
+        return _search.multistart(self, values, starts, seed)
 
     # ---- workspace ------------------------------------------------------------------
 
     def workspace(self, x, y, z=0.0, rotation=None, mode=None, chunk=20_000):
-        """The constant-orientation workspace on the grid x (nx,) by y (ny,) at height z
-        (and the platform's rotation, default the home one): :class:`Workspace` with the
-        reachable points within ``leg_limits`` and det of J's free columns (its zero
-        level is the direct-singularity locus). Computed in chunks of ``chunk``
-        poses."""
+        """The constant-orientation workspace on a grid.
+
+        Parameters
+        ----------
+        x : array-like, shape (nx,)
+        y : array-like, shape (ny,)
+            The grid (m, base frame).
+        z : float
+            The platform's height (m).
+        rotation : array-like, shape (3, 3), optional
+            The platform's rotation (default: the home one).
+        mode : str, optional
+            The working mode (default ``default_mode``).
+        chunk : int
+            Poses computed at once (memory).
+
+        Returns
+        -------
+        Workspace
+            The reachable points within ``leg_limits`` and det of J's free columns
+            (its zero level is the direct-singularity locus).
+        """
         x, y = as_float_array(x, "x").ravel(), as_float_array(y, "y").ravel()
         z = float(as_float_array(z, "z"))
         rotation = (
@@ -590,69 +762,3 @@ def _outside(legs, rho, limits):
         f"leg(s) {legs} outside their limits "
         f"(leg {i}: {rho[i]:.4g} not in [{limits[i, 0]:g}, {limits[i, 1]:g}])"
     )
-
-
-# ---- the catalogue -----------------------------------------------------------------
-# The geometry (defaults, checks, legs) is in screwkit._parallel_catalogue; each builder
-# here is the public name with its documentation.
-
-
-def stewart_gough(base=None, platform=None, height=1, leg_limits=((0.9, 1.6),) * 6):
-    """The 6-UPS Stewart-Gough platform: base (6, 3) and platform (6, 3) points (m).
-
-    Default: :data:`STEWART_BASE`, :data:`STEWART_PLATFORM` (exact; base points on a
-    circle of 1 m at 120 k -/+ 15 degrees, platform points on a circle of 0.5 m at
-    120 k -/+ 45 degrees, leg i from base point i to platform point i), home ``height``
-    (m) above the base, leg lengths within ``leg_limits`` (m; None for no limits).
-    """
-    return ParallelManipulator(
-        **_catalogue.stewart_gough(base, platform, height, leg_limits)
-    )
-
-
-def planar_3rpr(base=None, platform=None, home=None, leg_limits=None):
-    """The planar 3-RPR: base (3, 2) points A_i, platform (3, 2) points b_i (m),
-    actuated prismatic legs. Poses are planar 4 x 4 (rotation about z, translation in
-    xy). Default: :data:`RPR_BASE`, :data:`RPR_PLATFORM`, which have six real assembly
-    modes at the leg lengths :data:`RPR_SIX_MODES_RHO`."""
-    return ParallelManipulator(
-        **_catalogue.planar_3rpr(base, platform, home, leg_limits)
-    )
-
-
-def planar_3rrr(
-    base_radius=1, platform_radius=Rational(1, 4), l1=Rational(3, 5), l2=Rational(1, 2)
-):
-    """The planar 3-RRR: actuated cranks of length l1 at base points on a circle (120
-    degrees apart), distal links l2 to platform points on a circle of
-    ``platform_radius`` (m). Eight working modes '+++' ... '---' (the sign of each
-    elbow). Also ``sk.robots.parallel_3rrr`` (``sk.robots.planar_3rrr`` is the
-    mobility chapter's symbolic limbs)."""
-    return ParallelManipulator(
-        **_catalogue.planar_3rrr(base_radius, platform_radius, l1, l2)
-    )
-
-
-def delta(
-    base_radius=Rational(1, 5),
-    platform_radius=Rational(1, 20),
-    l1=Rational(1, 5),
-    l2=Rational(9, 20),
-    height=Rational(-7, 20),
-):
-    """Clavel's delta as its kinematic equivalent 3-RUU (3T): crank i of length l1 turns
-    about the tangent u_i at A_i (base circle, 120 degrees apart; theta > 0 lowers it),
-    and a link of length l2 (a U-U pair in place of the spatial parallelogram) reaches
-    the platform point b_i. The platform only translates: a tilted pose is refused.
-    Default working mode '---' (every knee out)."""
-    return ParallelManipulator(
-        **_catalogue.delta(base_radius, platform_radius, l1, l2, height)
-    )
-
-
-def tripteron(a=Rational(9, 20), b=Rational(9, 20), L=1):
-    """The 3-PRRR Tripteron of the mobility chapter: carriage i slides along the axis
-    e_i (x, y, z; rho_i its position, m), then three revolutes along e_i with links a, b
-    reach the platform point b_i. A decoupled translational mechanism:
-    rho_i = e_i . (p + b_i) - const."""
-    return ParallelManipulator(**_catalogue.tripteron(a, b, L))

@@ -1,16 +1,17 @@
 """Drawings of parallel manipulators at a pose (matplotlib): planar ones in the plane,
 spatial ones in 3D, and constant-orientation workspaces with their singular curves.
 
-Display layer: used by the chapter "Parallel manipulators in motion" directly
-(``from screwkit._parallel_plot import draw_planar``) or through ``sk.plotting``.
+Display layer (it imports matplotlib): not loaded by ``import screwkit``; the chapter
+"Parallel manipulators in motion" imports it as
+``from screwkit.parallel.plotting import draw_planar_platform``.
 """
 
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .parallel import ParallelManipulator
+from .model import ParallelManipulator
 
-__all__ = ["draw_planar", "draw_spatial", "draw_workspace"]
+__all__ = ["draw_planar_platform", "draw_spatial", "draw_workspace"]
 
 
 def _check(pm, T):
@@ -29,14 +30,38 @@ def _closed(points):
     return np.vstack([points, points[:1]])
 
 
-def draw_planar(
+def draw_planar_platform(
     pm, T=None, ax=None, mode=None, color="tab:blue", label=None, lines=False, alpha=1.0
 ):
     """Draw a planar parallel manipulator (3-RPR, 3-RRR) at the pose T in the xy-plane.
 
     The base triangle (grey), the platform triangle (``color``), the legs (for cranks:
     crank then distal link, the elbow marked) and, with ``lines``, each leg's line
-    extended across the figure (the actuation wrenches' lines). Returns the axes.
+    extended across the figure (the actuation wrenches' lines).
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+        A planar one (e.g. ``sk.parallel.planar_3rpr()``).
+    T : array-like, shape (4, 4), optional
+        The platform pose (m, base frame); default the home pose.
+    ax : matplotlib Axes, optional
+        Where to draw; default a new 4.5 x 4.5 inch figure.
+    mode : str, optional
+        The working mode whose elbows are drawn (e.g. '+-+' for the 3-RRR).
+    color : matplotlib color
+        The platform's and legs' color.
+    label : str, optional
+        The platform outline's legend label.
+    lines : bool
+        Also draw each leg's line, extended 3 m either way from its base point.
+    alpha : float
+        Opacity of the platform and legs, in [0, 1].
+
+    Returns
+    -------
+    matplotlib Axes
+        The axes drawn on, x and y in m, equal aspect.
     """
     T = _check(pm, T)
     if ax is None:
@@ -82,7 +107,25 @@ def draw_planar(
 
 def draw_spatial(pm, T=None, ax=None, color="tab:blue", label=None):
     """Draw a spatial parallel manipulator (the Stewart-Gough platform) at T in 3D:
-    base and platform polygons and the legs as straight lines. Returns the 3D axes."""
+    base and platform polygons and the legs as straight lines.
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+    T : array-like, shape (4, 4), optional
+        The platform pose (m, base frame); default the home pose.
+    ax : matplotlib 3D Axes, optional
+        Where to draw; default a new 5 x 4.5 inch figure.
+    color : matplotlib color
+        The platform's and legs' color.
+    label : str, optional
+        The platform outline's legend label.
+
+    Returns
+    -------
+    matplotlib 3D Axes
+        The axes drawn on, x, y and z in m.
+    """
     T = _check(pm, T)
     if ax is None:
         fig = plt.figure(figsize=(5, 4.5))
@@ -101,7 +144,23 @@ def draw_spatial(pm, T=None, ax=None, color="tab:blue", label=None):
 
 def draw_workspace(workspace, ax=None, color="tab:green"):
     """Draw a :class:`~screwkit.parallel.Workspace`: the reachable region (shaded) and
-    the direct-singularity curves, where det J changes sign inside it (black)."""
+    the direct-singularity curves, where det J changes sign inside it (black).
+
+    Parameters
+    ----------
+    workspace : Workspace
+        What ``pm.workspace(x, y)`` returns: grids x (nx,), y (ny,) in m, ``inside``
+        and ``det`` of shape (ny, nx).
+    ax : matplotlib Axes, optional
+        Where to draw; default a new 4.5 x 4.5 inch figure.
+    color : matplotlib color
+        The reachable region's color.
+
+    Returns
+    -------
+    matplotlib Axes
+        The axes drawn on, x and y in m, equal aspect.
+    """
     if ax is None:
         _, ax = plt.subplots(figsize=(4.5, 4.5))
     X, Y = np.meshgrid(workspace.x, workspace.y)
