@@ -206,7 +206,9 @@ def problems(value):
         errors = [(code, text) for code, text in errors if code not in ("PR01", "PR02")]
     if inspect.isclass(value) and dataclasses.is_dataclass(value) and doc.raw_doc:
         named = set(doc.doc_all_parameters) | {
-            name for name, _, _ in doc.doc["Attributes"]
+            part.strip()
+            for names, _, _ in doc.doc["Attributes"]
+            for part in names.split(",")
         }
         fields = {field.name for field in dataclasses.fields(value) if field.init}
         errors = [(code, text) for code, text in errors if code != "PR01"]
