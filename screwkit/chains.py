@@ -195,13 +195,28 @@ class Chain(ChainType):
     def from_table(
         cls, table, joints=None, convention=Convention.STANDARD, qlim=None, **options
     ):
-        """A chain from a DH table of shape (n, 4), columns (theta, d, a, alpha) in m
-        and rad.
+        """A chain from a DH table.
 
         For a revolute joint, theta is the joint offset (theta = q + offset); for a
-        prismatic one, d is (d = q + offset). ``joints`` is a sequence of Joint, or a
-        string such as 'RRP' (default all revolute); ``qlim`` an (n, 2) array
-        (+-inf: no limit) or None.
+        prismatic one, d is (d = q + offset).
+
+        Parameters
+        ----------
+        table : array-like, shape (n, 4)
+            Columns (theta, d, a, alpha), in rad and m.
+        joints : sequence of Joint, or str, optional
+            A string such as 'RRP'; all revolute by default.
+        convention : Convention, optional
+            ``Convention.STANDARD`` (default) or ``Convention.MODIFIED``.
+        qlim : array-like, shape (n, 2), or None, optional
+            Joint limits (rad or m; +-inf: no limit).
+        **options
+            ``base``, ``tool``, ``name``, ``configurations``, as for :class:`Chain`.
+
+        Returns
+        -------
+        Chain
+            The chain.
         """
         rows = as_float_array(table, "table")
         if rows.ndim != 2 or rows.shape[1] != 4 or rows.shape[0] < 1:
@@ -261,12 +276,26 @@ class Chain(ChainType):
 
         Parameters
         ----------
-        axes : list of n Twist objects or 6-vectors [omega; v] (or an (n, 6) array):
-            unit screw axes, |omega| = 1 for a revolute (pitch 0) or helical
-            (pitch omega . v) joint, omega = 0 and |v| = 1 for a prismatic one
-        home : (4, 4) rigid transform M, the end-effector pose at q = 0 (m)
-        frame : 'space' or 'body'
-        qlim : (n, 2) joint limits (rad, or m for prismatic joints; +-inf: none) or None
+        axes : list of n Twist objects or 6-vectors [omega; v], or an (n, 6) array
+            Unit screw axes, ``|omega| = 1`` for a revolute (pitch 0) or helical
+            (pitch omega . v) joint, omega = 0 and ``|v| = 1`` for a prismatic one.
+        home : array-like, shape (4, 4)
+            The rigid transform M, the end-effector pose at q = 0 (m).
+        frame : {'space', 'body'}, optional
+            Where the axes are written.
+        qlim : array-like, shape (n, 2), or None, optional
+            Joint limits (rad, or m for prismatic joints; +-inf: none).
+        base, tool : array-like, shape (4, 4), optional
+            Rigid transforms (default identity).
+        name : str, optional
+            Used in messages and titles.
+        configurations : dict, optional
+            {name: joint vector (n,)}, named configurations.
+
+        Returns
+        -------
+        Chain
+            The chain.
         """
         if frame not in ("space", "body"):
             raise ValueError(f"frame must be 'space' or 'body', got {frame!r}")
@@ -292,13 +321,27 @@ class Chain(ChainType):
 
     @classmethod
     def from_urdf(cls, source, base_link=None, tip_link=None):
-        """A chain from a URDF file or text: the joints from ``base_link`` (default: the
-        root) to ``tip_link`` (required when the tree branches), as joint screws in the
-        base link's frame, exact where the file's numbers are (:mod:`screwkit.urdf`).
+        """A chain from a URDF file or text.
 
+        The joints from ``base_link`` to ``tip_link`` become joint screws in the base
+        link's frame, exact where the file's numbers are (:mod:`screwkit.urdf`).
         Revolute, continuous and prismatic joints; fixed joints folded into their
         neighbours; limits into ``qlim``; ``chain.joint_names`` lists the URDF joint
         names.
+
+        Parameters
+        ----------
+        source : str or os.PathLike
+            URDF text (starting with '<') or a URDF file's path.
+        base_link : str or None, optional
+            The link whose frame is the base frame (default: the root).
+        tip_link : str or None, optional
+            The end-effector link (required when the tree branches).
+
+        Returns
+        -------
+        Chain
+            A chain from screws, named after the robot.
         """
         urdf = read_urdf(source, base_link, tip_link)
         chain = cls.from_screws(
@@ -332,11 +375,33 @@ class Chain(ChainType):
         return chain
 
     def with_tool(self, tool):
-        """The same chain with another tool transform (4, 4)."""
+        """The same chain with another tool transform.
+
+        Parameters
+        ----------
+        tool : array-like, shape (4, 4)
+            The rigid transform of the tool in the last frame (m).
+
+        Returns
+        -------
+        Chain
+            A new chain (chains are immutable).
+        """
         return self._copy(tool=tool)
 
     def with_base(self, base):
-        """The same chain on another base transform (4, 4)."""
+        """The same chain on another base transform.
+
+        Parameters
+        ----------
+        base : array-like, shape (4, 4)
+            The rigid transform of the chain's base in the world frame (m).
+
+        Returns
+        -------
+        Chain
+            A new chain (chains are immutable).
+        """
         return self._copy(base=base)
 
     # ---- description -----------------------------------------------------------------
@@ -366,9 +431,14 @@ class Chain(ChainType):
         return f"Chain({self.name!r}, {self.n} joints {kinds}, {form})"
 
     def table(self):
-        """The chain's parameters as rows of strings, with a header: the DH table
-        (theta, d, a, alpha; the joint variable marked q_i) or the joint screws
-        (omega, v, pitch), and limits."""
+        """The chain's parameters as rows of strings, with a header.
+
+        Returns
+        -------
+        list of list of str
+            The DH table (theta, d, a, alpha; the joint variable marked q_i) or the
+            joint screws (omega, v, pitch), and limits; the header first.
+        """
 
         def number(value, scale=1.0):
             value = float(value) * scale
@@ -455,7 +525,20 @@ class Chain(ChainType):
     # ---- input checks ----------------------------------------------------------------
 
     def check_q(self, q, name="q"):
-        """``q`` as float64, shape (n,) or (N, n); a clear error otherwise."""
+        """``q`` checked and converted; a clear error otherwise.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        name : str, optional
+            The argument's name in the error message.
+
+        Returns
+        -------
+        ndarray, shape (n,) or (N, n)
+            ``q`` as float64.
+        """
         q = as_float_array(q, name)
         if q.ndim not in (1, 2) or q.shape[-1] != self.n:
             raise ValueError(
@@ -465,8 +548,20 @@ class Chain(ChainType):
         return q
 
     def check_one(self, q, name="q"):
-        """``q`` as float64 of shape (n,): one configuration
-        (a batch is refused, clearly)."""
+        """``q`` checked as one configuration (a batch is refused, clearly).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,)
+            Joint values (rad or m).
+        name : str, optional
+            The argument's name in the error message.
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            ``q`` as float64.
+        """
         q = self.check_q(q, name)
         if q.ndim != 1:
             raise ValueError(
@@ -476,7 +571,18 @@ class Chain(ChainType):
         return q
 
     def within_limits(self, q):
-        """True where every joint of q (shape (n,) or (N, n)) lies within its limits."""
+        """Whether every joint of q lies within its limits.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        bool or ndarray of bool, shape (N,)
+            True where every joint is within its limits.
+        """
         q = self.check_q(q)
         return np.all((q >= self._qlim[:, 0]) & (q <= self._qlim[:, 1]), axis=-1)
 
@@ -512,15 +618,30 @@ class Chain(ChainType):
         ]
 
     def link_transforms(self, q=None):
-        """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint
-        symbols."""
+        """The n exact link transforms A_i(q_i) of a DH chain.
+
+        Parameters
+        ----------
+        q : sequence of n numbers or SymPy expressions, optional
+            Joint values; the joint symbols q1..qn by default.
+
+        Returns
+        -------
+        list of sympy.Matrix (4, 4)
+            A_1, ..., A_n.
+        """
         self._require_dh("link_transforms")
         q = self._exact_q(q)
         return [link.transform(qi, self.convention) for link, qi in zip(self.links, q)]
 
     def length_symbols(self):
-        """Symbols a_i, d_i for every non-zero link length of a DH chain:
-        {symbol: value} (m)."""
+        """Symbols a_i, d_i for every non-zero link length of a DH chain.
+
+        Returns
+        -------
+        dict
+            {symbol: value (m)}.
+        """
         self._require_dh("length_symbols")
         table = {}
         for i, link in enumerate(self.links, start=1):
@@ -561,14 +682,22 @@ class Chain(ChainType):
         return links
 
     def fk_symbolic(self, simplify=True, symbolic_lengths=False, upto=None):
-        """The exact end-effector pose, a 4x4 SymPy matrix in the joint symbols q1..qn.
+        """The exact end-effector pose in the joint symbols q1..qn.
 
-        simplify : combine sums of angles
-            (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3)) after each factor, as
-            textbooks write c23
-        symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for
-            lengths
-        upto : (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool
+        Parameters
+        ----------
+        simplify : bool, optional
+            Combine sums of angles (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3))
+            after each factor, as textbooks write c23.
+        symbolic_lengths : bool, optional
+            (DH) use the symbols a_i, d_i of :meth:`length_symbols` for lengths.
+        upto : int or None, optional
+            (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool.
+
+        Returns
+        -------
+        sympy.Matrix (4, 4)
+            The pose.
         """
         simplify = check_flag(simplify, "simplify")
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -606,8 +735,18 @@ class Chain(ChainType):
         return T
 
     def frames_symbolic(self, symbolic_lengths=False):
-        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain:
-        n + 1 SymPy matrices."""
+        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain.
+
+        Parameters
+        ----------
+        symbolic_lengths : bool, optional
+            Use the symbols a_i, d_i for lengths.
+
+        Returns
+        -------
+        list of sympy.Matrix (4, 4)
+            n + 1 frames, the base first.
+        """
         self._require_dh("frames_symbolic")
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
         base = exact_matrix(self.base)
@@ -624,6 +763,16 @@ class Chain(ChainType):
 
         Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame
         i.
+
+        Parameters
+        ----------
+        frames : list of n + 1 4x4 matrices
+            As :meth:`frames_symbolic` returns them.
+
+        Returns
+        -------
+        list of 4x4 matrices
+            The n joint frames.
         """
         self._require_dh("joint_frames")
         if not isinstance(frames, (list, tuple)) or len(frames) != self.n + 1:
@@ -634,14 +783,25 @@ class Chain(ChainType):
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
 
     def twists_symbolic(self, q=None, symbolic_lengths=False, rational=False):
-        """The joint twists [omega; v] in the base frame, exactly: a list of n SymPy
-        6-vectors.
+        """The joint twists [omega; v] in the base frame, exactly.
 
-        ``q`` is a joint vector of exact values or symbols (default the joint symbols
-        q1..qn). These are the columns of the space Jacobian. With ``rational``, every
-        decimal number of the model (lengths, pitches, base, tool, home) is read as the
-        exact decimal it prints as (0.4318 -> 2159/5000) before any product, so no
-        round-off term can appear.
+        These are the columns of the space Jacobian.
+
+        Parameters
+        ----------
+        q : sequence of n exact values or symbols, optional
+            The joint vector (default the joint symbols q1..qn).
+        symbolic_lengths : bool, optional
+            (DH) use the symbols a_i, d_i for lengths.
+        rational : bool, optional
+            Read every decimal number of the model (lengths, pitches, base, tool,
+            home) as the exact decimal it prints as (0.4318 -> 2159/5000) before any
+            product, so no round-off term can appear.
+
+        Returns
+        -------
+        list of sympy.Matrix (6, 1)
+            The n twists.
         """
         q = self._exact_q(q)
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -695,6 +855,16 @@ class Chain(ChainType):
         (1e-9 relative, :mod:`screwkit.systems`), as :func:`screwkit.mobility` does. A
         batch (N, n): the (N, n, 6) array of the space Jacobians' columns
         (``space_jacobian(q).T`` is one configuration's (n, 6) array).
+
+        Parameters
+        ----------
+        q : sequence of n exact values or symbols, array-like (n,), or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ScrewSystem or ndarray, shape (N, n, 6)
+            The twists of one configuration, or the batch's array.
         """
         if is_symbolic(q):
             return ScrewSystem(
@@ -761,6 +931,18 @@ class Chain(ChainType):
         (the Jacobians, 6 x n) or 'axes' (each joint's twist and a point, then the
         pose). What :meth:`fk` and the Jacobians run, as text to read.
 
+        Parameters
+        ----------
+        outputs : {'pose', 'frames', 'space', 'geometric', 'axes'}, optional
+            What the generated function returns.
+
+        Returns
+        -------
+        str
+            The function's source.
+
+        Examples
+        --------
         >>> arm = Chain([Link.revolute(a=1.0)])
         >>> print(arm.source())  # doctest: +NORMALIZE_WHITESPACE
         def kinematics(t, c, s):
