@@ -967,8 +967,18 @@ class Chain(ChainType):
         return _compiled.evaluate_batch(function, q + offsets, out, rows)
 
     def fk(self, q):
-        """The end-effector pose: q (n,) -> (4, 4); a batch Q (N, n) -> (N, 4, 4)
-        (m)."""
+        """The end-effector pose.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (4, 4) or (N, 4, 4)
+            The pose(s) in the base's world frame (m).
+        """
         q = self.check_q(q)
         if q.ndim == 1:
             T = np.eye(4)
@@ -982,13 +992,22 @@ class Chain(ChainType):
         )  # a view: each entry was computed as one contiguous row
 
     def frames(self, q):
-        """The base frame and every link frame: q (n,) -> (n + 1, 4, 4),
-        (N, n) -> (N, n + 1, 4, 4).
+        """The base frame and every link frame.
 
         DH chain: frame k is base @ A_1 ... A_k; the last frame also carries the tool.
         Chain from screws: frame k < n sits on the axis of joint k + 1
         (a point of it, moved by joints 1..k), frame 0 has the base's orientation, and
         the last frame is the end effector.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (n + 1, 4, 4) or (N, n + 1, 4, 4)
+            The frames (m).
         """
         q = self.check_q(q)
         count = self.n + 1
@@ -1022,12 +1041,21 @@ class Chain(ChainType):
         )
 
     def joint_axes(self, q):
-        """Direction z_i and a point o_i of every joint axis in the base frame, each
-        (n, 3) or (N, n, 3).
+        """Direction z_i and a point o_i of every joint axis in the base frame.
 
         DH: joint i moves about z of frame i-1 (standard) or of frame i (modified),
         through its origin. A prismatic joint's direction is its translation; its point
         is for drawing.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        z, o : ndarray, shape (n, 3) or (N, n, 3)
+            Unit directions and points (m).
         """
         q = self.check_q(q)
         omega, v, point, _ = self._twists_and_pose(q)
@@ -1057,32 +1085,59 @@ class Chain(ChainType):
         return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
     def space_jacobian(self, q):
-        """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns
-        [omega; v].
+        """The space Jacobian, columns [omega; v].
 
         Column i is the twist of joint i in the base frame, Ad(G_i) X_i:
         (z_i; o_i x z_i) for a revolute joint about z_i through o_i
         (v is the velocity of the body point at the base origin), (0; z_i) for a
         prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n)
+            The Jacobian(s).
         """
         return self._generated_jacobian(q, "space")
 
     def geometric_jacobian(self, q):
-        """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows
-        [v; omega].
+        """The geometric Jacobian, rows [v; omega].
 
         Column i is the space twist moved to the end-effector point p:
         (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint
         and (z_i; 0) for a prismatic one.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n)
+            The Jacobian(s), base frame, end-effector point.
         """
         return self._generated_jacobian(q, "geometric")
 
     def body_jacobian(self, q):
-        """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns
-        [omega; v].
+        """The body Jacobian, columns [omega; v].
 
         Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
         (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n)
+            The Jacobian(s).
         """
 
         def columns(q_part):
@@ -1100,10 +1155,21 @@ class Chain(ChainType):
         return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, self.n)))
 
     def jacobian_rows(self, q, rows="all"):
-        """The rows ``rows`` (a key of :data:`ROWS`) of the geometric Jacobian: (m, n)
-        or (N, m, n).
+        """Some rows of the geometric Jacobian.
 
         'planar' reads v_x, v_y in the chain's base frame.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            A key of :data:`ROWS`.
+
+        Returns
+        -------
+        ndarray, shape (m, n) or (N, m, n)
+            The m rows (6, 3, 3 or 2).
         """
         selected = check_rows(rows)
         J = self.geometric_jacobian(q)
@@ -1113,8 +1179,20 @@ class Chain(ChainType):
         return J[..., selected, :]
 
     def singular_values(self, q, rows="all"):
-        """Singular values of the geometric Jacobian's rows, largest first: (k,) or
-        (N, k)."""
+        """Singular values of the geometric Jacobian's rows, largest first.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows of J used.
+
+        Returns
+        -------
+        ndarray, shape (k,) or (N, k)
+            k = min(rows, n) singular values.
+        """
         check_rows(rows)
         q = self.check_q(q)
 
@@ -1124,8 +1202,21 @@ class Chain(ChainType):
         return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
 
     def lost_rank(self, sigma, rows="all"):
-        """True where the Jacobian rows with singular values ``sigma`` (..., k) have
-        lost rank: NumPy's rank rule on the smallest singular value."""
+        """Whether Jacobian rows have lost rank, by NumPy's rule on the smallest
+        singular value.
+
+        Parameters
+        ----------
+        sigma : ndarray, shape (..., k)
+            Singular values, largest first, as :meth:`singular_values` returns them.
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows they are of.
+
+        Returns
+        -------
+        bool or ndarray of bool, shape (...)
+            True where the rank is below k.
+        """
         return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), self.n)
 
     def manipulability(self, q, rows="all"):
@@ -1135,42 +1226,93 @@ class Chain(ChainType):
         (sqrt(det(J^T J)) otherwise). Exactly 0.0 where J has lost rank
         (by NumPy's rank tolerance), so a singular configuration is an answer, not
         noise. With rows='all' the product mixes metres and radians; 'position' gives
-        the volume factor of the velocity ellipsoid in m/s. rows: 'all', 'position'
-        (the rows v), 'orientation' (the rows omega) or 'planar'
-        (v_x, v_y in the chain's base frame).
+        the volume factor of the velocity ellipsoid in m/s.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            'position' (the rows v), 'orientation' (the rows omega) or 'planar'
+            (v_x, v_y in the chain's base frame).
+
+        Returns
+        -------
+        float or ndarray, shape (N,)
+            The manipulability.
         """
         sigma = self.singular_values(q, rows)
         return np.where(self.lost_rank(sigma, rows), 0.0, np.prod(sigma, axis=-1))[()]
 
     def numeric_ik(self, T, q0, **options):
         """Numerical inverse kinematics of this chain: see
-        :func:`screwkit.ik.numeric_ik`."""
+        :func:`screwkit.ik.numeric_ik`.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4)
+            The target pose (m).
+        q0 : array-like, shape (n,)
+            The initial guess (rad or m).
+        **options
+            Tolerances and limits, as :func:`screwkit.ik.numeric_ik` takes them.
+
+        Returns
+        -------
+        NumericIKResult
+            With ``q``, ``success``, ``iterations`` and ``error``.
+        """
         return _newton.numeric_ik(self, T, q0, **options)
 
     # ---- product of exponentials -----------------------------------------------------
 
     def home(self):
-        """The end-effector pose at q = 0, M (4, 4): the home pose of the product of
-        exponentials."""
+        """The end-effector pose at q = 0: the home pose of the product of
+        exponentials.
+
+        Returns
+        -------
+        ndarray, shape (4, 4)
+            M (m).
+        """
         return self.fk(np.zeros(self.n))
 
     def screw_axes(self):
-        """The joint screws at q = 0 in the base frame, (n, 6) rows [omega; v]: the
-        columns of the space Jacobian at q = 0. Revolute: (z, p x z) for the axis z
-        through p; prismatic: (0, z).
+        """The joint screws at q = 0 in the base frame.
+
+        Revolute: (z, p x z) for the axis z through p; prismatic: (0, z).
+
+        Returns
+        -------
+        ndarray, shape (n, 6)
+            Rows [omega; v]: the columns of the space Jacobian at q = 0.
         """
         return self.space_jacobian(np.zeros(self.n)).T
 
     def body_screw_axes(self):
-        """The joint screws at q = 0 in the end-effector frame, (n, 6) rows
-        [omega; v]."""
+        """The joint screws at q = 0 in the end-effector frame.
+
+        Returns
+        -------
+        ndarray, shape (n, 6)
+            Rows [omega; v].
+        """
         return self.body_jacobian(np.zeros(self.n)).T
 
     def fk_poe(self, q):
-        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M, q
-        (n,) -> (4, 4).
+        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M.
 
         An independent route to :meth:`fk` (a loop of 4x4 exponentials), for checking.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (4, 4)
+            The pose (m).
         """
         q = self.check_one(q)
         T = np.eye(4)
