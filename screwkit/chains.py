@@ -66,8 +66,9 @@ from .urdf import read_urdf
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
 
-#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the
-#: 2 x n Jacobian of an arm that moves in its base's x-y plane.
+#: Rows of the geometric Jacobian, by name.
+#: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n Jacobian of an arm that
+#: moves in its base's x-y plane.
 ROWS = {
     "all": slice(0, 6),
     "position": slice(0, 3),

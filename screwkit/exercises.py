@@ -357,7 +357,7 @@ def answer_key(chapter, number):
 class Verdict:
     """The result of :func:`check`: ``correct`` and a ``message`` saying why.
 
-    Attributes
+    Parameters
     ----------
     correct : bool
         Whether the answer is right.

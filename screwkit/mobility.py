@@ -76,7 +76,7 @@ class Mobility:
     """The result of :func:`mobility`: the number, type and directions of the platform's
     motions.
 
-    Attributes
+    Parameters
     ----------
     number : int
         The platform's number of freedoms.

@@ -52,13 +52,13 @@ __all__ = [
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
-#: Pixels per inch of the course's figures: a figure shows at its natural size in the
-#: book, where 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's
+#: Pixels per inch of the course's figures.
+#: A figure shows at its natural size in the book, where 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's
 #: 1.33 px per pt.
 DPI = 100
-#: The widest figure, in inches: 660 px at ``DPI``, plus the 0.1 in margin IPython adds
-#: on each side when it trims a figure (savefig.pad_inches): 680 px, within the 688 px
-#: column.
+#: The widest figure, in inches.
+#: 660 px at ``DPI``, plus the 0.1 in margin IPython adds on each side when it trims a
+#: figure (savefig.pad_inches): 680 px, within the 688 px column.
 COLUMN_WIDTH = 6.6
 #: The course's matplotlib style. Constrained layout keeps titles, labels and legends
 #: inside the figure, so a saved figure is never wider than its figsize and IPython's

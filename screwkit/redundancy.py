@@ -60,7 +60,7 @@ class Path:
     The samples are uniform in time (Euler steps of one dt), at least two, and the
     arrays are copied, so changing the caller's arrays later does not change the path.
 
-    Attributes
+    Parameters
     ----------
     t : ndarray, shape (steps,)
         The sample times (s).
@@ -483,7 +483,7 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
 class Resolution:
     """The result of :func:`resolve`; row i belongs to the path's sample i.
 
-    Attributes
+    Parameters
     ----------
     t : ndarray, shape (steps,)
         Times (s).

@@ -108,12 +108,12 @@ class Screw:
     # --- geometry ----------------------------------------------------------------
     @property
     def primary(self):
-        """The first (angular) 3-vector: s for a twist's w, f for a wrench."""
+        """The first (angular) 3-vector s (a twist's w, a wrench's f)."""
         return self.vector[:3, 0]
 
     @property
     def secondary(self):
-        """The second (linear) 3-vector: r x s + h s."""
+        """The second (linear) 3-vector, r x s + h s."""
         return self.vector[3:, 0]
 
     def _check_not_zero(self, quantity):
@@ -139,7 +139,7 @@ class Screw:
 
     @property
     def direction(self):
-        """The direction of the axis (not normalised): s, or s0 for an infinite pitch.
+        """The direction of the axis (not normalised), s, or s0 for an infinite pitch.
 
         The zero screw has no direction: ``ValueError``.
         """

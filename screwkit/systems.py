@@ -98,7 +98,7 @@ class ScrewSystem:
 
     @property
     def noun(self):
-        """The kind of screw as a word: 'twist', 'wrench' or 'screw'."""
+        """The kind of screw as a word ('twist', 'wrench' or 'screw')."""
         return self.kind.noun
 
     def _as_screw(self, item, index):
@@ -146,8 +146,11 @@ class ScrewSystem:
 
     @property
     def rank(self):
-        """The order of the system: the number of independent screws, for generic symbol
-        values (exact), or by SVD with the tolerance ``tol`` (floats)."""
+        """The order of the system, the number of independent screws.
+
+        For generic symbol values (exact), or by SVD with the tolerance ``tol``
+        (floats).
+        """
         if self._rank is None:
             if self.numeric:
                 self._rank = _numeric.rank(self._array, self.tol) if self.screws else 0

@@ -47,7 +47,7 @@ REFUSED = ("floating", "planar")
 class URDFDescription:
     """The serial chain of a URDF from ``base_link`` to ``tip_link`` at q = 0.
 
-    Attributes
+    Parameters
     ----------
     axes : tuple of sympy.Matrix (6, 1)
         The n exact joint screws [omega; v] in the base link's frame.

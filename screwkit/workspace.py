@@ -50,7 +50,7 @@ MAX_RESULT_BYTES = 1_000_000_000
 class Sweep:
     """The result of :func:`sweep`.
 
-    Attributes
+    Parameters
     ----------
     chain : Chain
         The swept chain.
@@ -72,7 +72,7 @@ class Sweep:
 
     @property
     def shape(self):
-        """The grid's shape: one axis per swept joint."""
+        """The grid's shape, one axis per swept joint."""
         return self.points.shape[:-1]
 
     @property
@@ -110,8 +110,10 @@ class Sweep:
 
     @property
     def q(self):
-        """Every configuration, shape grid + (n,) (built on demand: 8 bytes x n per
-        point)."""
+        """Every configuration, shape grid + (n,).
+
+        Built on demand (8 bytes x n per point).
+        """
         _check_result_size(
             self.size * self.chain.n * 8,
             "Sweep.q",
