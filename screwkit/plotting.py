@@ -53,8 +53,8 @@ __all__ = [
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
 #: Pixels per inch of the course's figures.
-#: A figure shows at its natural size in the book, where 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's
-#: 1.33 px per pt.
+#: A figure shows at its natural size in the book, where 1 pt of text is 100 / 72 =
+#: 1.39 px, at least as large as a browser's 1.33 px per pt.
 DPI = 100
 #: The widest figure, in inches.
 #: 660 px at ``DPI``, plus the 0.1 in margin IPython adds on each side when it trims a
