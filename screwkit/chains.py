@@ -432,13 +432,15 @@ class Chain(ChainType):
         return f"Chain({self.name!r}, {self.n} joints {kinds}, {form})"
 
     def table(self):
-        """The chain's parameters as rows of strings, with a header.
+        """The chain's parameters as rows of strings, and a header.
 
         Returns
         -------
-        list of list of str
-            The DH table (theta, d, a, alpha; the joint variable marked q_i) or the
-            joint screws (omega, v, pitch), and limits; the header first.
+        header : list of str
+            The columns' titles, with units.
+        rows : list of list of str
+            One row per joint: the DH table (theta, d, a, alpha; the joint variable
+            marked q_i) or the joint screws (omega, v, pitch), and limits.
         """
 
         def number(value, scale=1.0):
