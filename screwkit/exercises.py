@@ -229,7 +229,12 @@ def parse_answer(text):
     Numbers are separated by commas, semicolons or whitespace (``"[0.5 -1.2 0.]"``, as
     NumPy prints an array; ``"1 - 2"`` with spaces on both sides is a subtraction).
     A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"2 pi"`` two
-    numbers.
+    numbers. Nothing is evaluated as Python.
+
+    Parameters
+    ----------
+    text : str
+        The answer as typed.
 
     Returns
     -------
@@ -239,9 +244,13 @@ def parse_answer(text):
         Per number, the quantity its unit names (``"angle"``, ``"length"``...), or
         None where no unit was written.
 
-    Raises ValueError with a sentence saying what could not be read. Nothing is
-    evaluated as Python.
+    Raises
+    ------
+    ValueError
+        With a sentence saying what could not be read.
 
+    Examples
+    --------
     >>> parse_answer("pi/2, 90 deg")[0]
     [1.5707963267948966, 1.5707963267948966]
     """
@@ -293,9 +302,19 @@ def _numbers(answer):
 def answer_key(chapter, number):
     """The checked answer of an exercise, as a dict of floats, ready for the page.
 
-    Keys: ``values`` (list of float, row-major), ``shape``, ``exact`` (the key's
-    expression text), ``unit``, ``tolerance``, ``rtol``, ``hint``, ``forms`` and
-    ``alternatives`` (lists of float lists).
+    Parameters
+    ----------
+    chapter : str
+        The chapter's notebook name, e.g. ``"puma_ik"``.
+    number : int
+        The exercise's number in the chapter.
+
+    Returns
+    -------
+    dict
+        Keys: ``values`` (list of float, row-major), ``shape``, ``exact`` (the key's
+        expression text), ``unit``, ``tolerance``, ``rtol``, ``hint``, ``forms`` and
+        ``alternatives`` (lists of float lists).
     """
     exercises = _key_file(chapter)
     if isinstance(number, bool) or not isinstance(number, (int, np.integer)):
@@ -336,7 +355,19 @@ def answer_key(chapter, number):
 
 @dataclass(frozen=True)
 class Verdict:
-    """The result of :func:`check`: ``correct`` and a ``message`` saying why."""
+    """The result of :func:`check`: ``correct`` and a ``message`` saying why.
+
+    Parameters
+    ----------
+    correct : bool
+        Whether the answer is right.
+    message : str
+        Why, in a sentence.
+    chapter : str
+        The chapter's notebook name.
+    number : int
+        The exercise's number.
+    """
 
     correct: bool
     message: str
@@ -549,6 +580,13 @@ class AnswerBox:
 
     The script is inlined into the first box of a kernel session (one page) and
     defines ``window.screwkitExercises``; every box mounts itself with it.
+
+    Parameters
+    ----------
+    key : dict
+        The exercise's key, as :func:`answer_key` returns it.
+    script : str
+        The JavaScript of ``exercises.js``.
     """
 
     def __init__(self, key, script):

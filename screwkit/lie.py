@@ -46,8 +46,18 @@ SMALL_ANGLE = 1e-4
 
 
 def vee(W):
-    """The 3-vector w of a skew-symmetric matrix W = [w] (the inverse of ``skew``):
-    (..., 3)."""
+    """The 3-vector w of a skew-symmetric matrix W = [w] (the inverse of ``skew``).
+
+    Parameters
+    ----------
+    W : array-like, shape (3, 3) or (..., 3, 3), or a SymPy 3x3 matrix
+        Skew-symmetric matrices.
+
+    Returns
+    -------
+    ndarray, shape (3,) or (..., 3), or sympy.Matrix (3, 1)
+        w = (W[2, 1], W[0, 2], W[1, 0]).
+    """
     if is_symbolic(W):
         W = as_sympy_matrix(W, "W", (3, 3))
         return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
@@ -97,7 +107,15 @@ def ad(twist):
     Parameters
     ----------
     twist : array-like, shape (6,) or (N, 6), or a SymPy 6-vector
+        The twist(s) V = (w; v) (rad/s, m/s).
 
+    Returns
+    -------
+    ndarray, shape (6, 6) or (N, 6, 6), or sympy.Matrix (6, 6)
+        [ad_V].
+
+    Examples
+    --------
     >>> ad([1, 2, 3, 4, 5, 6])[3:, :3]
     array([[ 0., -6.,  5.],
            [ 6.,  0., -4.],

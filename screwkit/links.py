@@ -79,6 +79,23 @@ class Link:
     (+-inf in either place is no limit there). Numbers may be floats or exact SymPy
     values (``sympy.pi / 2``); symbols are allowed for the exact path (``fk_symbolic``)
     but the numeric path needs numbers.
+
+    Parameters
+    ----------
+    joint : Joint
+        ``Joint.REVOLUTE`` or ``Joint.PRISMATIC``.
+    d : number or SymPy expression, optional
+        Offset along the previous z (m).
+    a : number or SymPy expression, optional
+        Length along the common normal x (m).
+    alpha : number or SymPy expression, optional
+        Twist about x (rad).
+    theta : number or SymPy expression, optional
+        Angle about the previous z (rad).
+    offset : number or SymPy expression, optional
+        Added to the joint variable q (rad or m).
+    qlim : (float, float) or None, optional
+        (min, max) of q, or None for no limit.
     """
 
     joint: Joint
@@ -101,19 +118,68 @@ class Link:
 
     @classmethod
     def revolute(cls, d=0, a=0, alpha=0, offset=0, qlim=None):
-        """A revolute link: theta = q + offset."""
+        """A revolute link: theta = q + offset.
+
+        Parameters
+        ----------
+        d, a : number or SymPy expression, optional
+            The DH lengths (m).
+        alpha : number or SymPy expression, optional
+            The DH twist (rad).
+        offset : number or SymPy expression, optional
+            Added to q (rad).
+        qlim : (float, float) or None, optional
+            (min, max) of q (rad), or None for no limit.
+
+        Returns
+        -------
+        Link
+            The link, ``joint=Joint.REVOLUTE``.
+        """
         return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=qlim)
 
     @classmethod
     def prismatic(cls, theta=0, a=0, alpha=0, offset=0, qlim=None):
-        """A prismatic link: d = q + offset."""
+        """A prismatic link: d = q + offset.
+
+        Parameters
+        ----------
+        theta : number or SymPy expression, optional
+            The DH angle (rad).
+        a : number or SymPy expression, optional
+            The DH length (m).
+        alpha : number or SymPy expression, optional
+            The DH twist (rad).
+        offset : number or SymPy expression, optional
+            Added to q (m).
+        qlim : (float, float) or None, optional
+            (min, max) of q (m), or None for no limit.
+
+        Returns
+        -------
+        Link
+            The link, ``joint=Joint.PRISMATIC``.
+        """
         return cls(
             Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim
         )
 
     def transform(self, q, convention=Convention.STANDARD):
-        """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or
-        symbol q."""
+        """The exact link transform A(q).
+
+        Parameters
+        ----------
+        q : number, SymPy symbol or expression
+            The joint value (rad or m).
+        convention : Convention, optional
+            ``Convention.STANDARD`` (Rz Tz Tx Rx, the default) or
+            ``Convention.MODIFIED`` (Craig: Rx Tx Rz Tz).
+
+        Returns
+        -------
+        sympy.Matrix (4, 4)
+            The homogeneous transform of the link.
+        """
         check_convention(convention)
         theta, d = (
             (q + self.offset, self.d)

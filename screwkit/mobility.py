@@ -42,11 +42,23 @@ _AXES = "xyz"
 
 
 def grubler_kutzbach(links, joints, freedoms, order=6):
-    """The Grübler–Kutzbach count M = order (links - joints - 1) + sum of joint
-    freedoms.
+    """The Grübler–Kutzbach count M = order (links - joints - 1) + sum of freedoms.
 
-    ``links`` includes the base and the platform; ``order`` is 6 in space, 3 in the
-    plane.
+    Parameters
+    ----------
+    links : int
+        The number of links, the base and the platform included.
+    joints : int
+        The number of joints.
+    freedoms : int
+        The sum of the joints' freedoms.
+    order : int, optional
+        6 in space, 3 in the plane.
+
+    Returns
+    -------
+    int
+        The count M.
     """
     for name, value in (
         ("links", links),
@@ -62,7 +74,33 @@ def grubler_kutzbach(links, joints, freedoms, order=6):
 @dataclass
 class Mobility:
     """The result of :func:`mobility`: the number, type and directions of the platform's
-    motions."""
+    motions.
+
+    Parameters
+    ----------
+    number : int
+        The platform's number of freedoms.
+    type : str
+        E.g. '3T1R' (translations T, rotations R), '0' for none.
+    directions : list of str
+        E.g. ['Tx', 'Ty', 'Tz', 'Rz'].
+    limb_twist_systems, limb_wrench_systems : list of ScrewSystem
+        Per limb, its twist system and the reciprocal wrench system.
+    platform_wrench_system, platform_twist_system : ScrewSystem
+        The union of the limbs' wrenches, and its reciprocal: the platform's twists.
+    joints_per_limb : list of int
+        The number of 1-freedom joints of each limb.
+    limb_twist_ranks : list of int
+        The rank of each limb's twist system.
+    grubler_kutzbach : int
+        The Grübler–Kutzbach count, for comparison.
+    redundant_constraints : int
+        The sum of the limbs' wrench ranks minus the platform's.
+    idle_mobility : int
+        The sum over limbs of joints minus twist rank.
+    notes : list of str
+        At a particular configuration (``at``): how it compares with the general answer.
+    """
 
     number: int
     type: str
@@ -79,7 +117,13 @@ class Mobility:
     notes: list = field(default_factory=list)
 
     def summary(self):
-        """The four systems and the counts as plain text, one screw per line."""
+        """The four systems and the counts as plain text.
+
+        Returns
+        -------
+        str
+            One screw per line.
+        """
 
         def block(title, systems):
             lines = [title]
@@ -158,8 +202,13 @@ class Mobility:
         )
 
     def as_dict(self):
-        """The paper's mobility dictionary:
-        {'Number': ..., 'Type': ..., 'Direction': [...]}."""
+        """The paper's mobility dictionary.
+
+        Returns
+        -------
+        dict
+            {'Number': ..., 'Type': ..., 'Direction': [...]}.
+        """
         return {
             "Number": self.number,
             "Type": self.type,

@@ -236,7 +236,17 @@ def rpy_from_rotation(R):
     """(roll, pitch, yaw) of a rotation, inverse of :func:`rotation_from_rpy`.
 
     Pitch in [-pi/2, pi/2]; at pitch = +-pi/2 (gimbal lock) yaw = 0 and roll carries
-    the turn. Returns a SymPy (3, 1) column or an array of shape (3,) or (N, 3).
+    the turn.
+
+    Parameters
+    ----------
+    R : array-like, shape (3, 3) or (N, 3, 3), or a SymPy 3x3 matrix
+        Rotation matrices.
+
+    Returns
+    -------
+    ndarray, shape (3,) or (N, 3), or sympy.Matrix (3, 1)
+        (roll, pitch, yaw) (rad).
     """
     angles = euler_from_rotation(R, "ZYX")
     if isinstance(angles, sp.MatrixBase):

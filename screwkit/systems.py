@@ -40,12 +40,14 @@ class ScrewSystem:
 
     Parameters
     ----------
-    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples
-        as in the mobility paper's zeroth step (s, r in m, h in m/rad or sympy.oo)
-    kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for
-        vectors)
-    tol : relative tolerance of the rank when the screws hold floats (SVD; default
-        1e-9); exact screws ignore it
+    screws : list of Screw, of 6-vectors [angular; linear], or of (s, r, h) triples
+        The screws spanning the system; triples as in the mobility paper's zeroth step
+        (s, r in m, h in m/rad or sympy.oo).
+    kind : {Twist, Wrench, Screw}, optional
+        By default the kind of the screws given (Twist for vectors).
+    tol : float, optional
+        Relative tolerance of the rank when the screws hold floats (SVD; default
+        1e-9); exact screws ignore it.
     """
 
     def __init__(self, screws, kind=None, tol=None):
@@ -96,7 +98,7 @@ class ScrewSystem:
 
     @property
     def noun(self):
-        """The kind of screw as a word: 'twist', 'wrench' or 'screw'."""
+        """The kind of screw as a word ('twist', 'wrench' or 'screw')."""
         return self.kind.noun
 
     def _as_screw(self, item, index):
@@ -144,8 +146,11 @@ class ScrewSystem:
 
     @property
     def rank(self):
-        """The order of the system: the number of independent screws, for generic symbol
-        values (exact), or by SVD with the tolerance ``tol`` (floats)."""
+        """The order of the system, the number of independent screws.
+
+        For generic symbol values (exact), or by SVD with the tolerance ``tol``
+        (floats).
+        """
         if self._rank is None:
             if self.numeric:
                 self._rank = _numeric.rank(self._array, self.tol) if self.screws else 0
@@ -156,8 +161,13 @@ class ScrewSystem:
     order = rank
 
     def basis(self):
-        """A canonical basis (list of screws), reduced so that each ends in 1 at its own
-        pivot."""
+        """A canonical basis, reduced so that each screw ends in 1 at its own pivot.
+
+        Returns
+        -------
+        list of Screw
+            ``rank`` screws of the system's kind.
+        """
         if self._basis is None:
             if not self.screws:
                 self._basis = []
@@ -174,14 +184,25 @@ class ScrewSystem:
         return list(self._basis)
 
     def reduced(self):
-        """The same span with its canonical basis as its screws (rank and basis known):
-        what a system is printed as, and the cheaper one to take further."""
+        """The same span with its canonical basis as its screws.
+
+        Returns
+        -------
+        ScrewSystem
+            The system with rank and basis known: what a system is printed as, and the
+            cheaper one to take further.
+        """
         field = None if self.numeric else self.field
         return ScrewSystem._of_basis(self.basis(), self.kind, self.tol, field)
 
     def reciprocal(self):
-        """The system of every screw reciprocal to all of these (twists -> wrenches and
-        back)."""
+        """The system of every screw reciprocal to all of these.
+
+        Returns
+        -------
+        ScrewSystem
+            Of order 6 - rank; wrenches for twists and twists for wrenches.
+        """
         other = _OTHER[self.kind]
         if not self.screws:
             return ScrewSystem([other(v) for v in sp.eye(6).columnspace()], kind=other)
@@ -208,7 +229,18 @@ class ScrewSystem:
         )
 
     def union(self, other):
-        """The span of both systems (same kind)."""
+        """The span of both systems.
+
+        Parameters
+        ----------
+        other : ScrewSystem
+            A system of the same kind.
+
+        Returns
+        -------
+        ScrewSystem
+            The span of the screws of both.
+        """
         self._check_kind(other, "union")
         return ScrewSystem(
             self.screws + other.screws, kind=self.kind, tol=min(self.tol, other.tol)
@@ -216,12 +248,34 @@ class ScrewSystem:
 
     def intersection(self, other):
         """The screws common to both spans: the reciprocal of the union of the
-        reciprocals."""
+        reciprocals.
+
+        Parameters
+        ----------
+        other : ScrewSystem
+            A system of the same kind.
+
+        Returns
+        -------
+        ScrewSystem
+            The intersection of the two spans.
+        """
         self._check_kind(other, "intersection")
         return self.reciprocal().union(other.reciprocal()).reciprocal()
 
     def contains(self, screw):
-        """True if ``screw`` lies in the span (generically)."""
+        """Whether ``screw`` lies in the span (generically).
+
+        Parameters
+        ----------
+        screw : Screw or 6-vector
+            The screw to test.
+
+        Returns
+        -------
+        bool
+            True if adding it does not raise the rank.
+        """
         return (
             ScrewSystem(self.screws + [screw], kind=self.kind, tol=self.tol).rank
             == self.rank
@@ -246,8 +300,13 @@ class ScrewSystem:
         return f"ScrewSystem({len(self.screws)} {self.noun}s, rank {self.rank})"
 
     def summary(self):
-        """The system as plain text: its order and its canonical basis, one screw a
-        line."""
+        """The system as plain text.
+
+        Returns
+        -------
+        str
+            Its order and its canonical basis, one screw a line.
+        """
         rows = [str(list(s.vector)) for s in self.basis()] or ["(none)"]
         return "\n".join([f"{self.noun} {self.rank}-system"] + ["  " + r for r in rows])
 

@@ -107,6 +107,11 @@ def library_script():
     tiny-inflate (vendored too) inflates it synchronously and the text runs as a script
     element, so that ``window.THREE`` exists before the next script of the page runs.
     Then it mounts every viewer that was waiting for it.
+
+    Returns
+    -------
+    str
+        The script's JavaScript text.
     """
     if _library["script"] is None:
         text = _classic_three().encode("utf-8")
@@ -143,9 +148,14 @@ _WAITING = (
 
 
 class Viewer:
-    """A figure for the page: ``model`` (JSON-ready dict) drawn by ``viewer.js``.
+    """A figure for the page, drawn by ``viewer.js``.
 
-    ``summary`` is its plain-text form (what a terminal or a text-only output shows).
+    Parameters
+    ----------
+    model : dict
+        The figure's parameters, JSON-ready.
+    summary : str
+        Its plain-text form (what a terminal or a text-only output shows).
     """
 
     def __init__(self, model, summary):
@@ -161,7 +171,7 @@ class Viewer:
         return self.summary
 
     def html(self, library=None):
-        """The figure's HTML; ``library`` True/False includes three.js or not.
+        """The figure's HTML.
 
         three.js and ``viewer.js`` come together. By default (None) they come with every
         3D figure until one has been displayed on its own (``_repr_mimebundle_``, what
@@ -171,6 +181,16 @@ class Viewer:
         rendered. A figure shown as the page fallback of a live widget (``_repr_html_``)
         carries them while none has been displayed, since Lab may draw the widget
         instead. Stepped figures need no three.js and always carry ``viewer.js``.
+
+        Parameters
+        ----------
+        library : bool or None, optional
+            True/False: include three.js and ``viewer.js`` or not; None: as above.
+
+        Returns
+        -------
+        str
+            The HTML.
         """
         if library is not None:
             library = check_flag(library, "library")
@@ -211,7 +231,18 @@ class Viewer:
 
     def page(self, title=None):
         """A whole HTML page holding this figure and three.js (for a file or a
-        browser)."""
+        browser).
+
+        Parameters
+        ----------
+        title : str or None, optional
+            The page's title; by default the model's name, else "screwkit viewer".
+
+        Returns
+        -------
+        str
+            The page's HTML.
+        """
         if title is not None and not isinstance(title, str):
             raise TypeError(f"title must be a str or None, got {describe(title)}")
         title = html.escape(title or self.model.get("name") or "screwkit viewer")
@@ -256,8 +287,9 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
         The first pose (rad for revolute, m for prismatic joints); default zeros.
     ellipsoid : bool
         Draw the translational manipulability ellipsoid (rows v of the geometric
-        Jacobian), its radii scaled by ``ellipsoid_scale`` (m per m/s), and print its
-        radii and w.
+        Jacobian), and print its radii and w.
+    ellipsoid_scale : float, optional
+        The scale of the ellipsoid's radii on the drawing (m per m/s).
     size : (width, height) of the drawing in pixels
 
     Returns
@@ -357,6 +389,7 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
     start : array-like, shape (4, 4), the frame before the motion (default identity)
     theta : float, the slider's first value: deg, default 90 (or m for a translation,
         default 0.5)
+    size : (width, height) of the drawing in pixels
 
     Returns
     -------
@@ -756,6 +789,30 @@ def stepped_figure(
     (default: the first). ``alt`` is each image's text alternative: a str, or a function
     of the value returning one (default: the label and the value the figure was computed
     for).
+
+    Parameters
+    ----------
+    draw : callable
+        ``draw(v)`` returns a matplotlib Figure or a str.
+    label : str
+        The slider's or drop-down's label.
+    unit : str or None, optional
+        The unit of ``values`` (shown by the slider).
+    values : list of float, optional
+        A grid from :func:`grid`: a slider.
+    choices : list of str, optional
+        Names: a drop-down.
+    value : float or str, optional
+        The first value shown (default: the first).
+    dpi : float or None, optional
+        Resolution of the PNGs (default ``plotting.DPI``).
+    alt : str or callable, optional
+        Each image's text alternative, or a function of the value returning one.
+
+    Returns
+    -------
+    Viewer
+        The figures and their control, displayed as HTML.
     """
     if (values is None) == (choices is None):
         raise ValueError(
@@ -842,7 +899,20 @@ def stepped_figure(
 
 def grid(low, high, step):
     """Slider values low, low + step, ..., high: a grid anchored at 0 for
-    ``stepped_figure``."""
+    ``stepped_figure``.
+
+    Parameters
+    ----------
+    low, high : float
+        The ends; low must be a multiple of step, so that 0 is on the grid.
+    step : float
+        The spacing, positive.
+
+    Returns
+    -------
+    list of float
+        The values.
+    """
     values = _sliders.grid_values(low, high, step)
     if not _sliders.on_grid(values[0], values[1] - values[0]):
         raise ValueError(

@@ -80,20 +80,15 @@ def test_the_modules_are_found_on_disk():
     assert names == on_disk
 
 
-def test_docstring_text_is_made_valid_restructured_text():
+def test_norms_in_docstrings_are_escaped_and_code_and_tables_kept():
     lines = [
         "lambda = |V|^2 / 2, ``a | b`` stays",
-        "point : the point",
-        "    more words",
-        "upto : k",
+        "| a table | row |",
     ]
-    api_reference.plain_text(None, "function", "f", None, {}, lines)
+    api_reference.escape_norms(None, "function", "f", None, {}, lines)
     assert lines == [
         "lambda = \\|V\\|^2 / 2, ``a | b`` stays",
-        "point : the point",
-        "    more words",
-        "",
-        "upto : k",
+        "| a table | row |",
     ]
 
 

@@ -1,7 +1,7 @@
 """screwkit's layers: every import points down the one order below, and none closes a
 circle.
 
-``ORDER`` is the one table of the package's layers, bottom up (design.md, "Layers"). A
+``ORDER`` is the one table of the package's layers, bottom up (CONTRIBUTING.md). A
 module may import the modules listed before it (the layers below, and the modules before
 it in its own layer), never one listed after it or itself: so no circle can form.
 Imports are read from the source with ``ast``, at the top of a file and inside functions

@@ -21,16 +21,16 @@ object (```sk.ik.analytic_ik```, ```sk.Chain.from_screws(axes, M)```,
 ```screwkit.mobility```) becomes a link to its entry, so no chapter needs an edit when a
 function gains an entry.
 
-Four helpers keep the build strict (``-W -n``) without hiding a broken reference:
+The docstrings are numpydoc (``make lint`` checks them: .ci/check_docstrings.py). Four
+helpers keep the build strict (``-W -n``) without hiding a broken reference:
 
-* the docstrings are written as plain text in places: ``|u|`` (a norm) is escaped so
-  that reStructuredText does not read a substitution, and a list of ``name : text``
-  lines (a definition list) gets the blank lines reStructuredText needs between its
-  items;
-* numpy-style docstrings go through napoleon, except those of attributes and properties,
-  whose first line napoleon would split at its first colon into a "type" and a
-  description ("The first (angular) 3-vector: s for ..." made "The first (angular)
-  3-vector" a class);
+* ``|u|`` (a norm) outside code is escaped so that reStructuredText does not read a
+  substitution (the IK family writes norms so: ``screwkit.ik``'s Newton and
+  subproblems);
+* numpy-style docstrings go through napoleon, except those of attributes, properties
+  and data, whose first line napoleon would split at its first colon into a "type" and
+  a description (the IK family's ``STRUCTURES``, ``CONFIGURATIONS`` and
+  ``StanfordArm.revolute`` have such a colon; the flat modules' have none);
 * a reference to an object of screwkit that exists but is not public (a private module,
   a helper outside ``__all__``) is printed as code, not linked, and not reported; a
   reference to anything that does not exist still fails the build;
@@ -247,28 +247,16 @@ class ScrewkitAPI(SphinxDirective):
 
 
 CODE = re.compile(r"(``.*?``)")
-DEFINITION = re.compile(r"^[A-Za-z_][\w, ]* : ")
 
 
-def plain_text(app, what, name, obj, options, lines):
-    """Escape the bars of norms and separate the items of definition lists (see
-    above)."""
-    fixed = []
-    for line in lines:
-        if not line.lstrip().startswith(("|", "+")):
-            line = "".join(
+def escape_norms(app, what, name, obj, options, lines):
+    """Escape the bars of norms written as plain text (see above)."""
+    for i, line in enumerate(lines):
+        if not line.lstrip().startswith(("|", "+")):  # a table's rows keep theirs
+            lines[i] = "".join(
                 part if part.startswith("``") else part.replace("|", "\\|")
                 for part in CODE.split(line)
             )
-        if (
-            DEFINITION.match(line)
-            and fixed
-            and fixed[-1].startswith(" ")
-            and fixed[-1].strip()
-        ):
-            fixed.append("")
-        fixed.append(line)
-    lines[:] = fixed
 
 
 def napoleon_except_attributes(napoleon):
@@ -336,7 +324,7 @@ def setup(app):
                 napoleon_except_attributes(listener.handler),
                 priority=listener.priority,
             )
-    app.connect("autodoc-process-docstring", plain_text, priority=400)
+    app.connect("autodoc-process-docstring", escape_norms, priority=400)
     app.connect("missing-reference", private_reference)
     app.connect("config-inited", ignore_library_types)
     app.connect("doctree-read", link_first_uses)
