@@ -766,12 +766,12 @@ class AnswerBox:
                 "alternatives",
             )
         }
-        payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
         unit = html.escape(self.key["unit"]) or "no unit"
         bounds = ""
         if self.key["range"] is not None:
             key["range"] = self.key["range"]  # only where set: other boxes unchanged
             bounds = ", " + html.escape(self.key["range"]["text"])
+        payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
         ident = self.id
         script = f"<script>\n{exercises_script()}</script>\n" if self.script else ""
         return (
