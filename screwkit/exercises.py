@@ -436,13 +436,17 @@ def _range(bounds, key_unit, where):
         raise ValueError(f"range of {where} must be two bounds, got {bounds!r}")
     limits = []
     for bound in bounds:
-        values, units = _parse(str(bound))
-        factor = 1.0 if units[0] is None else _convert(units[0], key_unit)
-        if len(values) != 1 or factor is None:
+        try:
+            values, units = _parse(str(bound))
+        except ValueError:
+            values, units = [], []
+        if len(values) != 1 or units[0] and _convert(units[0], key_unit) is None:
             raise ValueError(
                 f"range of {where} must be two numbers in its unit, got {bounds!r}"
             )
-        limits.append(values[0] / units[0].factor * factor if units[0] else values[0])
+        if units[0] is not None:  # "-180 deg" for a key in rad
+            values[0] *= _convert(units[0], key_unit) / units[0].factor
+        limits.append(values[0])
     if not limits[0] < limits[1]:
         raise ValueError(f"range of {where} must be low < high, got {bounds!r}")
     return {

@@ -653,6 +653,8 @@ def test_a_unit_power_must_be_an_integer(text, reason):
         ({"unit": "2 m"}, "unit of fake exercise 1 must be a unit"),
         ({"range": ["0"]}, "range of fake exercise 1 must be two bounds"),
         ({"range": ["1 N", "2"]}, "two numbers in its unit"),
+        ({"range": ["abc", "2"]}, "two numbers in its unit"),
+        ({"range": ["1, 2", "3"]}, "two numbers in its unit"),
         ({"range": ["0", "-1"]}, "low < high"),
     ],
 )
