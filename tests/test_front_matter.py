@@ -96,9 +96,13 @@ def weeks():
     return out
 
 
+WEEKS = sorted(weeks())
+
+
 def test_there_are_chapters_weeks_and_exercises_to_check():
     assert len(chapters()) >= 10
-    assert sorted(weeks()) == list(range(1, 15))
+    assert sorted(weeks()) == list(range(1, len(weeks()) + 1))
+    assert len(weeks()) >= 10
     assert all(len(exercises(c)) >= 8 for c in chapters())
 
 
@@ -131,13 +135,13 @@ def read_in(reading):
 def test_every_week_reads_chapters_in_the_order_of_the_toc():
     order = chapters()
     read = [read_in(reading) for reading, _, _ in weeks().values()]
-    assert all(read[:13]), "every week but the project reads a chapter"
+    assert all(read[:-1]), "every week but the last (the project) reads a chapter"
     indices = [order.index(c) for c in read if c is not None]
     assert indices == sorted(indices)
     assert set(order) <= set(read)
 
 
-@pytest.mark.parametrize("week", range(1, 15))
+@pytest.mark.parametrize("week", WEEKS)
 def test_sections_a_week_names_are_sections_of_its_chapters(week):
     # "*The logarithm*" names the section "The logarithm: from a pose back to a twist"
     reading = weeks()[week][0]
@@ -188,7 +192,7 @@ def lab_problems(lab):
     return problems
 
 
-@pytest.mark.parametrize("week", range(1, 15))
+@pytest.mark.parametrize("week", WEEKS)
 def test_a_lab_cites_exercises_that_ask_for_what_it_writes(week):
     assert lab_problems(weeks()[week][2]) == []
 
