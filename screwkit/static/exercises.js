@@ -395,7 +395,8 @@
     const run = () => {
       const result = verdict(input.value, key);
       out.textContent = (result.correct ? "✓ Right: " : "✗ Not yet: ") + result.message;
-      out.style.color = result.correct ? "#1a7f37" : "#b35900";
+      out.classList.toggle("sk-right", result.correct);
+      out.classList.toggle("sk-wrong", !result.correct);
       input.setAttribute("aria-invalid", result.correct ? "false" : "true");
     };
     button.addEventListener("click", run);
@@ -406,6 +407,20 @@
 
   function mountAll() {
     document.querySelectorAll(".sk-answer-box").forEach(mount);
+  }
+
+  // The verdict's colours, light and dark (the book's dark theme, JupyterLab's): each
+  // has a contrast of at least 4.5:1 with its theme's background
+  const COLOURS = `
+.sk-verdict.sk-right { color: #1a7f37; } .sk-verdict.sk-wrong { color: #b35900; }
+html[data-theme="dark"] .sk-verdict.sk-right,
+body[data-jp-theme-light="false"] .sk-verdict.sk-right { color: #56d364; }
+html[data-theme="dark"] .sk-verdict.sk-wrong,
+body[data-jp-theme-light="false"] .sk-verdict.sk-wrong { color: #f0883e; }`;
+  if (document.head) {
+    const style = document.createElement("style");
+    style.textContent = COLOURS;
+    document.head.appendChild(style);
   }
 
   window.screwkitExercises = { parse, verdict, mount, mountAll };
