@@ -36,44 +36,6 @@ PACKAGE = "screwkit"
 
 CHECKS = {"GL06", "GL07", "GL08", "PR01", "PR02", "RT01"}
 
-# Families whose helpers convert their docstrings while moving them into folders
-# (issue 32). The lead empties this list once those branches are merged.
-NOT_YET_CHECKED = [
-    "screwkit.ik",
-    "screwkit.subproblems",
-    "screwkit.spherical_wrist",
-    "screwkit.ur_ik",
-    "screwkit.stanford_ik",
-    "screwkit._closed_form",
-    "screwkit._newton",
-    "screwkit.parallel",
-    "screwkit._parallel_catalogue",
-    "screwkit._parallel_legs",
-    "screwkit._parallel_numeric",
-    "screwkit._parallel_plot",
-    "screwkit._parallel_search",
-]
-
-
-def not_yet_checked(module_name):
-    """Whether a module is in (or under a package of) ``NOT_YET_CHECKED``.
-
-    Parameters
-    ----------
-    module_name : str
-        A dotted module name, e.g. ``"screwkit.ik.engines"``.
-
-    Returns
-    -------
-    bool
-        True for a module of a family that converts its docstrings later.
-    """
-    return any(
-        module_name == name or module_name.startswith(name + ".")
-        for name in NOT_YET_CHECKED
-    )
-
-
 def public_modules(package):
     """The public modules of a package and of its public subpackages, imported.
 
@@ -172,7 +134,7 @@ def objects(package):
             if not (inspect.isfunction(value) or inspect.isclass(value)):
                 continue
             home = getattr(value, "__module__", "") or ""
-            if not home.startswith(PACKAGE) or not_yet_checked(home):
+            if not home.startswith(PACKAGE):
                 continue
             full = f"{home}.{value.__qualname__}"
             add(full, value)

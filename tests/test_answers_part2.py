@@ -95,8 +95,11 @@ def _():
 
 def test_jacobians_4_the_other_root_is_singular_too():
     # folded, the wrist centre is also near the shoulder plane (a2 = d4): det J touches
-    # zero there without changing sign, so test the smallest singular value instead
-    folded = float(sp.sympify(key("jacobians", 4)["alternatives"][0]))
+    # zero there without changing sign, so test the smallest singular value instead.
+    # It is the root the key's range (-180 deg to 0) leaves out: atan2(d4, -a3)
+    folded = math.atan2(0.4318, -0.0203)
+    bounds = sk.exercises.answer_key("jacobians", 4)["range"]
+    assert not bounds["low"] <= folded <= bounds["high"]
     J = puma().geometric_jacobian(np.array([0.3, 0.5, folded, 0.2, 0.9, 0]))
     assert np.linalg.svd(J, compute_uv=False)[-1] < 1e-12
 

@@ -7,8 +7,10 @@ the checking rules (forms, units, signs, text input) and the page's JavaScript,
 which must give the same verdict as ``sk.exercises.check`` on the same text.
 """
 
+import html
 import json
 import math
+import re
 import shutil
 import subprocess
 import tomllib
@@ -359,7 +361,7 @@ def test_every_key_has_an_independent_reference():
 def test_key_agrees_with_its_reference(chapter, number):
     key = exercises.answer_key(chapter, number)
     expected = np.ravel(np.asarray(REFERENCES[chapter, number](), dtype=float))
-    assert key["unit"] in ("", "rad", "deg", "m", "mm", "m/s", "rad/s")
+    assert key["unit"] in UNITS_OF_KEYS
     assert key["hint"], "every exercise needs a hint shown when the answer is wrong"
     assert len(expected) == len(key["values"])
     np.testing.assert_allclose(
@@ -408,6 +410,23 @@ FAKE = {
     },
     "7": {"answer": "12", "unit": "mm", "tolerance": 0.01, "rtol": 0.01, "hint": "h7"},
     "9": {"answer": "0", "unit": "rad", "tolerance": 1e-3, "hint": "h9"},
+    # units of mechanics, combinations and ranges (issue 30, item 5)
+    "10": {"answer": "-5", "unit": "N m", "tolerance": 1e-3, "hint": "h10"},
+    "11": {"answer": "4.05", "unit": "N", "tolerance": 1e-2, "hint": "h11"},
+    "12": {"answer": "10", "unit": "W", "tolerance": 1e-3, "hint": "h12"},
+    "13": {"answer": "0.5", "unit": "m/rad", "tolerance": 1e-3, "hint": "h13"},
+    "14": {
+        "answer": "atan2(-0.4318, 0.0203)",
+        "unit": "rad",
+        "tolerance": 1e-3,
+        "range": ["-180 deg", "0"],
+        "hint": "h14",
+    },
+    "15": {"answer": "200", "unit": "1/s", "tolerance": 0.5, "hint": "h15"},
+    "16": {"answer": "sqrt(3)", "unit": "m^2", "tolerance": 1e-3, "hint": "h16"},
+    "17": {"answer": "0.25", "unit": "m/s", "tolerance": 1e-3, "hint": "h17"},
+    "18": {"answer": "2", "unit": "rad/s", "tolerance": 1e-3, "hint": "h18"},
+    "19": {"answer": ["0.1", "0.2"], "unit": "m", "tolerance": 1e-3, "hint": "h19"},
     "8": {
         "answer": [["1", "2"], ["3", "4"]],
         "unit": "",
@@ -437,7 +456,7 @@ CASES = [
     (1, "-pi/3", False, "sign is flipped"),
     (1, "pi/4", False, "h1"),
     (1, "pi/3, 0", False, "expected one number, got 2"),
-    (1, "12 mm", False, "units typed are length"),
+    (1, "12 mm", False, "expected an angle (rad), found a length (mm)"),
     (2, 60, True, ""),
     (2, "pi/3 rad", True, ""),
     (2, math.pi / 3, False, "looks like radians, degrees expected"),
@@ -476,6 +495,79 @@ CASES = [
     (1, "2 pi/6", False, "expected one number, got 2"),
     (5, "-pi/2", True, ""),
     (5, "- pi/2", True, ""),
+    # a torque in every spelling, converted; a unit of another dimension named as such
+    (10, "-5", True, "within ±0.001 N m"),
+    (10, "-5 N m", True, ""),
+    (10, "-5 Nm", True, ""),
+    (10, "-5 N*m", True, ""),
+    (10, "-5 N·m", True, ""),
+    (10, "-5 N⋅m", True, ""),
+    (10, "-5000 N mm", True, ""),
+    (10, "-500 N cm", True, ""),
+    (10, "-5 N", False, "expected a torque (N m), found a force (N)"),
+    (10, "-5 W", False, "expected a torque (N m), found a power (W)"),
+    (10, "-5 m", False, "expected a torque (N m), found a length (m)"),
+    (10, "5 N m", False, "sign is flipped"),
+    (10, "-5,0 N m", False, "use a decimal point: -5.0 N m"),
+    (11, "4.05 N", True, ""),
+    (11, "4.05", True, ""),
+    (11, "4,05", False, "expected one number, got 2. use a decimal point: 4.05."),
+    (11, "4,05 N", False, "use a decimal point: 4.05 N"),
+    (11, "4.05 kg m/s^2", True, ""),
+    (11, "4.05 N m", False, "expected a force (N), found a torque (N m)"),
+    (11, "4.05 kg", False, "expected a force (N), found a mass (kg)"),
+    (12, "10 W", True, ""),
+    (12, "10 N m/s", True, ""),
+    (12, "10 N m rad/s", True, ""),  # torque times angular speed: the radian is 1
+    (12, "10 N m", False, "expected a power (W), found a torque (N m)"),
+    (12, "10 N/s", False, "expected a power (W), found a quantity (N/s)"),
+    (13, "0.5 m/rad", True, "within ±0.001 m/rad"),
+    (13, "0.5", True, ""),
+    (13, "500 mm/rad", True, ""),
+    (13, "0.5 m", True, ""),  # a pitch in m per radian or in m: the radian is 1
+    (13, "0.5 rad", False, "expected a pitch (m/rad), found an angle (rad)"),
+    (13, "0.5 m/s", False, "expected a pitch (m/rad), found a speed (m/s)"),
+    # a range: the other root, 180 degrees away, is refused and the range named
+    (14, "-87.31 deg", True, ""),
+    (14, "atan2(-0.4318, 0.0203)", True, ""),
+    (14, "92.69 deg", False, "outside the range asked for, between -180 deg and 0"),
+    (14, "272.69 deg", False, "outside the range asked for"),
+    (14, "-87.31", False, "looks like degrees, radians expected"),
+    (14, "87.31 deg", False, "sign is flipped"),
+    (14, "-1 rad", False, "not within ±0.001 rad"),
+    (15, "200", True, "within ±0.5 1/s"),
+    (15, "200/s", True, ""),
+    (15, "200 1/s", False, "expected one number, got 2"),
+    (15, "200 s^-1", True, ""),
+    (15, "200 rad/s", True, ""),
+    (15, "200 s", False, "expected a rate (1/s), found a time (s)"),
+    (15, "200 deg", False, "expected a rate (1/s), found an angle (deg)"),
+    (16, "sqrt(3) m^2", True, ""),
+    (16, "sqrt(3) m²", True, ""),
+    (16, "sqrt(3) m**2", True, ""),
+    (16, "17320.5 cm^2", True, ""),
+    (16, "sqrt(3) m", False, "expected an area (m^2), found a length (m)"),
+    (17, "0.25 m/s", True, ""),
+    (17, "250 mm/s", True, ""),
+    (17, "25 cm/s", True, ""),
+    (17, "0.25 m/s^2", False, "expected a speed (m/s), found an acceleration (m/s^2)"),
+    (17, "0.25 rad/s", False, "expected a speed (m/s), found an angular speed (rad/s)"),
+    (18, "2 rad/s", True, ""),
+    (18, "114.592 deg/s", True, ""),
+    (18, "2 m/s", False, "expected an angular speed (rad/s), found a speed (m/s)"),
+    (18, "2 rad", False, "expected an angular speed (rad/s), found an angle (rad)"),
+    (19, "0.1 m, 20 cm", True, ""),
+    (19, "100 mm 0.2", True, ""),
+    (19, "0.1 m, 0.2 s", False, "expected a length (m), found a time (s)"),
+    (
+        19,
+        "0,1, 0,2",
+        False,
+        "expected 2 numbers, got 4. use a decimal point: 0.1, 0.2.",
+    ),
+    (4, "1 N, 0, 0", False, "expected a pure number (no unit), found a force (N)"),
+    (2, "60 N m", False, "expected an angle (deg), found a torque (N m)"),
+    (1, "60 rad/s", False, "expected an angle (rad), found an angular speed (rad/s)"),
 ]
 
 
@@ -532,6 +624,86 @@ def test_odd_python_values_never_crash(fake, answer):
     assert verdict.correct is False and "Could not read" in verdict.message
 
 
+UNITS_OF_KEYS = ("", "rad", "deg", "m", "mm", "m/s", "rad/s", "N", "N m", "W")
+UNITS_OF_KEYS += ("m/rad", "m^2", "1/s")
+
+
+def test_parser_reads_units_and_their_combinations():
+    values, units = exercises.parse_answer("-5 N m, 4.05 N, 10 W, 0.5 m/rad, 2 rad/s")
+    np.testing.assert_allclose(values, [-5, 4.05, 10, 0.5, 2])
+    assert units == ["torque", "force", "power", "pitch", "angular speed"]
+    values, units = exercises.parse_answer("5 N mm, 30 cm/s, 3 m^2, 200/s, 90 deg/s")
+    np.testing.assert_allclose(values, [5e-3, 0.3, 3, 200, math.pi / 2])
+    assert units == ["torque", "speed", "area", "rate", "angular speed"]
+
+
+@pytest.mark.parametrize(
+    "text, reason",
+    [("1 m^x", "power must be an integer"), ("1 m^1.5", "power must be an integer")],
+)
+def test_a_unit_power_must_be_an_integer(text, reason):
+    with pytest.raises(ValueError, match=reason):
+        exercises.parse_answer(text)
+
+
+@pytest.mark.parametrize(
+    "entry, reason",
+    [
+        ({"unit": "furlong"}, "unit of fake exercise 1 must be a unit"),
+        ({"unit": "2 m"}, "unit of fake exercise 1 must be a unit"),
+        ({"range": ["0"]}, "range of fake exercise 1 must be two bounds"),
+        ({"range": ["1 N", "2"]}, "two numbers in its unit"),
+        ({"range": ["abc", "2"]}, "two numbers in its unit"),
+        ({"range": ["1, 2", "3"]}, "two numbers in its unit"),
+        ({"range": ["0", "-1"]}, "low < high"),
+    ],
+)
+def test_a_bad_key_is_refused_with_a_sentence(monkeypatch, entry, reason):
+    bad = {"1": {"answer": "1", "unit": "rad", "tolerance": 0.1, "hint": "h"} | entry}
+    monkeypatch.setattr(exercises, "_key_file", lambda chapter: bad)
+    with pytest.raises(ValueError, match=reason):
+        exercises.answer_key("fake", 1)
+
+
+def test_keys_with_a_quantity_state_their_unit_and_range():
+    # torque, force and power boxes say their unit; the roots asked "between -180 deg
+    # and 0" (or in the swept range) are boxes with that range, and only that root
+    stated = {
+        ("jacobians", 5): "N m",
+        ("jacobians", 6): "N",
+        ("screws", 4): "m/rad",
+        ("screws", 6): "W",
+        ("redundancy", 5): "m^2",
+        ("redundancy", 7): "1/s",
+    }
+    for (chapter, number), unit in stated.items():
+        assert exercises.answer_key(chapter, number)["unit"] == unit
+        label = exercises.answer_box(chapter, number, script=False)._repr_html_()
+        assert f"your answer ({html.escape(unit)}):" in label
+        assert "no unit" not in label
+    ranged = {
+        ("jacobians", 4): (-math.pi, 0),
+        ("kawasaki_workspace", 3): (math.pi / 6, math.pi),
+        ("kawasaki_workspace", 5): (-math.pi, 0),
+        ("kawasaki_workspace", 8): (-math.pi, 0),
+    }
+    for (chapter, number), (low, high) in ranged.items():
+        key = exercises.answer_key(chapter, number)
+        assert key["range"]["low"] == pytest.approx(low)
+        assert key["range"]["high"] == pytest.approx(high)
+        label = exercises.answer_box(chapter, number, script=False)._repr_html_()
+        assert f"(rad, {key['range']['text']})" in label
+        # the other root of each equation is 180 degrees from the key's (jacobians 4,
+        # kawasaki 5 and 8) or outside the swept range (kawasaki 3: 240.4 deg)
+        other = key["values"][0] + math.pi
+        verdict = exercises.check(chapter, number, other)
+        assert not verdict and "outside the range" in verdict.message
+    assert not exercises.check("jacobians", 4, "92.69 deg")
+    assert exercises.check("jacobians", 4, "-87.31 deg")
+    assert not exercises.check("kawasaki_workspace", 3, "240.4 deg")
+    assert exercises.check("kawasaki_workspace", 3, "42.34 deg")
+
+
 def test_parser_reads_the_usual_forms():
     values, units = exercises.parse_answer("2pi/3, sqrt(2)/2, 90 deg, -1.5e-3, 2^3")
     np.testing.assert_allclose(
@@ -580,13 +752,20 @@ def python_verdicts(inputs):
     return out
 
 
+def box_key(chapter, number):
+    """The key as the page gets it: the JSON in the answer box's HTML."""
+    page = exercises.answer_box(chapter, number, script=False)._repr_html_()
+    payload = re.search(r'<script type="application/json">(.*?)</script>', page)
+    return json.loads(payload.group(1).replace("<\\/", "</"))
+
+
 def fake_keys():
     keys = {}
     original = exercises._key_file
     exercises._key_file = lambda c: FAKE if c == "fake" else original(c)
     try:
         for number in FAKE:
-            keys[number] = exercises.answer_key("fake", int(number))
+            keys[number] = box_key("fake", int(number))
     finally:
         exercises._key_file = original
     return keys
@@ -617,6 +796,67 @@ def test_javascript_verdicts_equal_python_ones(fake):
     for (n, text), got, want in zip(inputs, page, python):
         if not want[1].startswith("Could not read"):  # parse errors are worded apart
             assert got[1] == want[1], (n, text)
+
+
+NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
+
+
+def stored_boxes():
+    """(chapter, number, key) of every answer box stored in a chapter notebook."""
+    found = []
+    for path in sorted(NOTEBOOKS.glob("*.ipynb")):
+        for cell in json.loads(path.read_text(encoding="utf-8"))["cells"]:
+            for out in cell.get("outputs", []):
+                page = "".join(out.get("data", {}).get("text/html", ""))
+                box = re.search(r'id="sk-exercise-([a-z0-9_]+)-(\d+)-', page)
+                if box:
+                    payload = re.search(
+                        r'<script type="application/json">(.*?)</script>', page
+                    )
+                    key = json.loads(payload.group(1).replace("<\\/", "</"))
+                    found.append((box.group(1), int(box.group(2)), key))
+    return found
+
+
+def test_stored_boxes_carry_the_current_keys():
+    # a key changed without re-running its chapter would leave the page checking the
+    # old one
+    boxes = stored_boxes()
+    assert len(boxes) >= 30
+    for chapter, number, key in boxes:
+        assert key == box_key(chapter, number), (chapter, number)
+
+
+# typed answers of every kind, for every stored box: the page and Python must agree
+BOX_TEXTS = ["92.69 deg", "-87.31 deg", "-5 N m", "-5 Nm", "4.05 N", "4,05", "10 W"]
+BOX_TEXTS += ["0.5 m/rad", "200/s", "sqrt(3) m^2", "42.34 deg", "-75.85 deg", "-5 N"]
+BOX_TEXTS += ["1, 2, 3", "0.1 m, 0.2 m, 0.3 m", "2 rad/s", "1,5", "2", "1 m"]
+
+
+@pytest.mark.skipif(NODE is None, reason="needs Node.js")
+def test_stored_boxes_answer_in_node_as_in_python():
+    boxes = stored_boxes()
+    program = (
+        "global.window = {}; global.document = {querySelectorAll: () => []};\n"
+        + exercises.exercises_script()
+        + f"\nconst boxes = {json.dumps(boxes)};\n"
+        f"const texts = {json.dumps(BOX_TEXTS)};\n"
+        "const out = [];\n"
+        "for (const [c, n, key] of boxes) for (const t of texts) {\n"
+        "  const v = window.screwkitExercises.verdict(t, key);\n"
+        "  out.push([v.correct, v.message]); }\n"
+        "console.log(JSON.stringify(out));\n"
+    )
+    result = subprocess.run(
+        [NODE, "-e", program], capture_output=True, text=True, timeout=60, check=True
+    )
+    page = iter(json.loads(result.stdout))
+    for chapter, number, _ in boxes:
+        for text in BOX_TEXTS:
+            correct, message = next(page)
+            want = exercises.check(chapter, number, text)
+            assert correct is want.correct, (chapter, number, text)
+            assert message == want.message, (chapter, number, text)
 
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
