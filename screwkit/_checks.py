@@ -24,8 +24,10 @@ import numbers
 import numpy as np
 import sympy as sp
 
-#: Tolerance for numeric orthonormality checks of rotation matrices.
-ORTHONORMAL_TOL = 1e-6
+from .tolerances import ROTATION_TOL, ZERO_TOL
+
+#: The old name of :data:`screwkit.tolerances.ROTATION_TOL` (R^T R against I).
+ORTHONORMAL_TOL = ROTATION_TOL
 
 _INFINITE = {sp.nan, sp.zoo, sp.oo, -sp.oo}
 
@@ -448,7 +450,7 @@ def _check_rotation_numeric(R, name):
         return
     gram = np.swapaxes(R, -1, -2) @ R
     deviation = np.max(np.abs(gram - np.eye(3)))
-    if not deviation <= ORTHONORMAL_TOL:
+    if not deviation <= ROTATION_TOL:
         raise ValueError(
             f"{name} must be a rotation matrix (orthonormal columns), "
             f"but R^T R differs from the identity by {deviation:.3g}"
@@ -473,10 +475,10 @@ def check_transform(transform, name="T"):
         check_rotation(T[:3, :3], f"the rotation block of {name}")
         return T
     T = check_shape(as_float_array(transform, name), name, (4, 4))
-    if not np.allclose(T[..., 3, :], [0.0, 0.0, 0.0, 1.0], atol=1e-12):
+    if not np.allclose(T[..., 3, :], [0.0, 0.0, 0.0, 1.0], atol=ZERO_TOL):
         bad = T[..., 3, :].reshape(-1, 4)
         first = bad[
-            ~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=1e-12), axis=-1)
+            ~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=ZERO_TOL), axis=-1)
         ][0]
         raise ValueError(
             f"{name} must have last row [0, 0, 0, 1], got {first.tolist()}"

@@ -13,8 +13,11 @@ within ``tol`` of an integer set to that integer.
 import numpy as np
 import sympy as sp
 
-#: The default relative tolerance of float ranks.
-TOL = 1e-9
+from .tolerances import RANK_TOL
+
+#: The default relative tolerance of float ranks (the old name of
+#: :data:`screwkit.tolerances.RANK_TOL`).
+TOL = RANK_TOL
 
 
 def has_floats(exprs):

@@ -31,6 +31,7 @@ from ._checks import (
     describe,
     is_symbolic,
 )
+from .tolerances import ZERO_TOL
 
 __all__ = [
     "skew",
@@ -259,8 +260,9 @@ def _exact_angle(theta, name):
     return as_sympy_scalar(theta, name)
 
 
-#: A numeric axis shorter than this (m, or unitless) is taken as zero and refused.
-ZERO_AXIS = 1e-12
+#: A numeric axis shorter than this (unitless) is taken as zero and refused: the old
+#: name of :data:`screwkit.tolerances.ZERO_TOL`.
+ZERO_AXIS = ZERO_TOL
 
 
 def _unit_vector(value, name):

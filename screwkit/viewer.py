@@ -37,6 +37,7 @@ from ._checks import (
     check_transform,
     describe,
 )
+from .tolerances import LENGTH_TOL, PARALLEL_TOL, ZERO_TOL, length_scale
 
 __all__ = [
     "robot_viewer",
@@ -318,7 +319,7 @@ def _approach(home, last_point):
     tool sits on the last joint's axis point (the PUMA's wrist centre).
     """
     offset = home[:3, :3].T @ (home[:3, 3] - np.asarray(last_point, dtype=float))
-    if np.linalg.norm(offset) < 1e-9:
+    if np.linalg.norm(offset) < LENGTH_TOL * length_scale(home[:3, 3], last_point):
         return [2, 1]
     axis = int(np.argmax(np.abs(offset)))
     return [axis, 1 if offset[axis] > 0 else -1]
@@ -370,7 +371,7 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
             f"s and r must be single 3-vectors, got shapes {s.shape} and {r.shape}"
         )
     norm = float(np.linalg.norm(s))
-    if norm < 1e-12:
+    if norm < ZERO_TOL:
         raise ValueError(f"s must be a nonzero direction, got {s.tolist()}")
     translation = _is_infinite(h)
     if not translation:
@@ -587,13 +588,16 @@ def _parallelograms(limb):
     i = 0
     while i + 3 < len(limb):
         (k0, s0, a1), (k1, s1, a2), (k2, s2, b1), (k3, s3, b2) = limb[i : i + 4]
-        parallel = all(abs(abs(float(np.dot(s0, s))) - 1) < 1e-9 for s in (s1, s2, s3))
+        parallel = all(
+            abs(abs(float(np.dot(s0, s))) - 1) < PARALLEL_TOL for s in (s1, s2, s3)
+        )
+        tol = LENGTH_TOL * length_scale(a1, a2, b1, b2)
         if (
             {k0, k1, k2, k3} == {"revolute"}
             and parallel
-            and np.allclose(b1 - a1, b2 - a2, atol=1e-9)
-            and np.linalg.norm(a2 - a1) > 1e-9
-            and np.linalg.norm(b1 - a1) > 1e-9
+            and np.allclose(b1 - a1, b2 - a2, atol=tol)
+            and np.linalg.norm(a2 - a1) > tol
+            and np.linalg.norm(b1 - a1) > tol
         ):
             found.append(i)
             i += 4
@@ -649,7 +653,7 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     joints = evaluate(limbs, values)
     points = np.array([p for limb in joints for _, _, p in limb])
     extent = float(np.ptp(points, axis=0).max())
-    extent = extent if extent > 1e-9 else 2.0
+    extent = extent if extent > LENGTH_TOL * length_scale(points) else 2.0
     length = extent / 5
     base = [limb[0][2] for limb in joints]
     platform = [limb[-1][2] for limb in joints]
