@@ -17,7 +17,7 @@ from ._checks import describe, real_number
 from .limbs import check_limbs
 from .screws import Screw, Wrench
 from .tolerances import LENGTH_TOL, ZERO_TOL, length_scale
-from .transforms import _is_infinite_pitch
+from .transforms import _cross, _is_infinite_pitch
 
 __all__ = ["draw_mechanism"]
 
@@ -204,7 +204,7 @@ def twist_arrows(twists, centre):
         v = np.array([float(e) for e in twist.secondary])
         if np.linalg.norm(w) > ZERO_TOL:
             direction = w / np.linalg.norm(w)
-            start = np.cross(w, v) / w.dot(w)
+            start = _cross(w, v) / w.dot(w)
             start = start + direction.dot(centre - start) * direction
             arrows.append(("rotation", start, direction))
         else:

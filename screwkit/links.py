@@ -17,9 +17,10 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from ._checks import as_float_array, check_transform, describe, real_number
+from ._checks import as_float_array, check_poses, describe, real_number
 from .screws import Screw
 from .tolerances import QUARTER_TURN_TOL, UNIT_SCREW_TOL, ZERO_TOL
+from .transforms import _cross
 
 __all__ = ["Joint", "Convention", "Link"]
 
@@ -244,12 +245,7 @@ def rigid(value, name):
                 if not value.free_symbols
                 else value
             )
-        T = check_transform(as_float_array(value, name), name)
-        if T.shape != (4, 4):
-            raise ValueError(
-                f"{name} must be one transform of shape (4, 4), got shape {T.shape}"
-            )
-        T = T.copy()
+        T = check_poses(value, name, single_only=True).copy()
     T.setflags(write=False)
     return T
 
@@ -381,7 +377,7 @@ def axis_points(screws, start):
         w, v = screw[:3], screw[3:]
         if np.any(w):
             h = np.dot(w, v)
-            nearest_origin = np.cross(w, v - h * w)  # the axis point nearest the origin
+            nearest_origin = _cross(w, v - h * w)  # the axis point nearest the origin
             previous = nearest_origin + np.dot(previous - nearest_origin, w) * w
         points.append(previous.copy())
     return np.array(points)

@@ -38,6 +38,7 @@ from ._checks import (
     describe,
 )
 from .tolerances import LENGTH_TOL, PARALLEL_TOL, ZERO_TOL, length_scale
+from .transforms import _is_infinite_pitch, _pitch
 
 __all__ = [
     "robot_viewer",
@@ -353,8 +354,9 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
     ----------
     s : array-like, shape (3,), the axis direction (normalised here)
     r : array-like, shape (3,), a point of the axis (m)
-    h : float, the pitch (m/rad); ``math.inf`` or ``sympy.oo`` for a pure translation
-        along s
+    h : float, the pitch (m/rad); ``math.inf`` (``np.inf``) or ``sympy.oo`` for a pure
+        translation along s, the one test of :func:`screwkit.screw_motion` (a string
+        such as "inf" is refused, as everywhere in screwkit)
     start : array-like, shape (4, 4), the frame before the motion (default identity)
     theta : float, the slider's first value: deg, default 90 (or m for a translation,
         default 0.5)
@@ -373,13 +375,9 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
     norm = float(np.linalg.norm(s))
     if norm < ZERO_TOL:
         raise ValueError(f"s must be a nonzero direction, got {s.tolist()}")
-    translation = _is_infinite(h)
+    translation = _is_infinite_pitch(h)
     if not translation:
-        h = as_float_array(h, "h")
-        if h.ndim:
-            raise ValueError(
-                f"h must be one number (m/rad) or infinity, got shape {h.shape}"
-            )
+        h = _pitch(h, exact=False)
     start = np.eye(4) if start is None else check_transform(start, "start")
     if start.ndim != 2:
         raise ValueError(
@@ -727,13 +725,6 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
         ),
     }
     return Viewer(model, caption)
-
-
-def _is_infinite(h):
-    try:
-        return math.isinf(float(h))
-    except (TypeError, ValueError):
-        raise TypeError(f"h must be a number (m/rad) or infinity, got {h!r}") from None
 
 
 def _check_size(size):

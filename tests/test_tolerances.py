@@ -17,7 +17,7 @@ import pytest
 
 import screwkit as sk
 from screwkit import links, tolerances
-from screwkit.tolerances import LENGTH_TOL, length_scale
+from screwkit.tolerances import length_scale
 
 PACKAGE = Path(sk.__file__).resolve().parent
 

@@ -252,7 +252,7 @@ def test_a_chain_with_no_links_is_refused():
         (
             lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], "x"),
             TypeError,
-            "h must be a number",
+            "h must be a pitch",
         ),
         (
             lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0, theta=400),
