@@ -541,7 +541,7 @@ def test_a_parallelogram_is_drawn_as_its_closed_loop():
     # Pa with corners A1 = (0,0,0), A2 = (1,0,0), B1 = (0,0,1), B2 = (1,0,1), axes
     # along y, after a prismatic joint: the loop A1-A2-B2-B1 (joints 1-2-4-3), not the
     # zigzag 2-3.
-    limb = [([0, 0, 1], [0, 0, -1], sp.oo)] + sk.joints.parallelogram(
+    limb = [([0, 0, 1], [0, 0, -1], sp.oo)] + sk.limbs.parallelogram(
         [0, 1, 0], [0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1]
     )
     model = model_of(viewer.show_mechanism([limb, limb], {}))
