@@ -74,15 +74,10 @@ _DEPRECATED_MODULES = {"joints": "limbs", "mobility": "mobility_analysis"}
 
 
 def __getattr__(name):
-    if name in _LAZY_SUBMODULES:
+    # sk.joints loads the deprecated alias, which warns on import and on every name
+    # read from it
+    if name in _LAZY_SUBMODULES or name == "joints":
         return importlib.import_module(f".{name}", __name__)
-    if name == "joints":
-        _warn_moved("joints", stacklevel=3)
-        with warnings.catch_warnings():  # warned once, here, with the caller's line
-            warnings.simplefilter("ignore", DeprecationWarning)
-            module = importlib.import_module(".joints", __name__)
-        globals().pop("joints", None)  # the next sk.joints warns again
-        return module
     raise AttributeError(f"module 'screwkit' has no attribute {name!r}")
 
 

@@ -228,6 +228,6 @@ def test_the_old_module_path_of_the_limb_builders_still_works_and_warns():
     from screwkit import limbs
 
     with pytest.deprecated_call(match="use screwkit.limbs"):
-        joints = sk.joints
-    assert joints.revolute is limbs.revolute and joints.spherical is limbs.spherical
-    assert sorted(joints.__all__) == sorted(limbs.__all__)
+        revolute, spherical = sk.joints.revolute, sk.joints.spherical
+        assert sorted(sk.joints.__all__) == sorted(limbs.__all__)
+    assert revolute is limbs.revolute and spherical is limbs.spherical

@@ -73,11 +73,13 @@ def test_the_old_module_path_of_mobility_works_and_warns():
     assert sk.mobility is sk.mobility_analysis.mobility
 
 
-def test_sk_joints_warns_every_time_and_is_the_limb_builders():
+def test_every_name_read_from_sk_joints_warns_and_is_the_limb_builder():
     for _ in range(2):
         with pytest.deprecated_call(match="use screwkit.limbs"):
-            joints = sk.joints
-    assert joints.prismatic is sk.limbs.prismatic
+            prismatic = sk.joints.prismatic
+        assert prismatic is sk.limbs.prismatic
+    with pytest.raises(AttributeError, match="no attribute 'nothing'"):
+        sk.joints.nothing  # noqa: B018 (the read is the test)
 
 
 def test_importing_the_joints_module_warns():
@@ -88,6 +90,10 @@ def test_importing_the_joints_module_warns():
         "    import screwkit.joints\n"
         "assert any(issubclass(w.category, DeprecationWarning) "
         "and 'screwkit.limbs' in str(w.message) for w in caught), caught\n"
+        "with warnings.catch_warnings(record=True) as caught:\n"
+        "    warnings.simplefilter('always')\n"
+        "    screwkit.joints.revolute\n"
+        "assert [w.category for w in caught] == [DeprecationWarning], caught\n"
     )
     subprocess.run([sys.executable, "-c", code], check=True)
 
