@@ -62,6 +62,7 @@ from .links import (
 )
 from .screws import Twist
 from .systems import ScrewSystem
+from .tolerances import length_scale
 from .transforms import _cross, axis_coordinates, exp_twist
 from .urdf import read_urdf
 
@@ -304,6 +305,7 @@ class Chain(ChainType):
         screws, exact = check_screws(axes)
         n = screws.shape[0]
         limits = [None] * n if qlim is None else limits_table(qlim, n)
+        scale = length_scale(screws[:, 3:])
         chain = cls.__new__(cls)
         chain._setup(
             links=None,
@@ -317,7 +319,7 @@ class Chain(ChainType):
             name=name,
             configurations=configurations,
             qlim=limits,
-            joints=tuple(joint_kind(s) for s in screws),
+            joints=tuple(joint_kind(s, scale) for s in screws),
         )
         return chain
 

@@ -35,6 +35,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import describe
+from .tolerances import ZERO_TOL
 
 __all__ = ["Verdict", "AnswerBox", "check", "answer_box", "answer_key", "parse_answer"]
 
@@ -589,7 +590,9 @@ def _close(x, a, key):
     if "modulo 2pi" in key["forms"]:
         period = 360.0 if key["unit"] == "deg" else 2 * math.pi
         d = (d + period / 2) % period - period / 2
-    return bool(np.all(np.abs(d) <= key["tolerance"] + key["rtol"] * np.abs(a) + 1e-12))
+    return bool(
+        np.all(np.abs(d) <= key["tolerance"] + key["rtol"] * np.abs(a) + ZERO_TOL)
+    )
 
 
 def _wrapped_sorted(values, key):

@@ -30,6 +30,7 @@ from ._compiled import in_chunks
 # ROWS re-exported: sk.jacobians.ROWS
 from .chains import ROWS, check_rows  # noqa: F401
 from .links import Joint
+from .tolerances import FD_STEP
 
 __all__ = [
     "joint_axes",
@@ -131,7 +132,7 @@ def body_jacobian(chain, q):
     return check_chain(chain).body_jacobian(q)
 
 
-def numerical_jacobian(chain, q, h=1e-6):
+def numerical_jacobian(chain, q, h=FD_STEP):
     """The geometric Jacobian of one configuration by central differences of FK.
 
     Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the

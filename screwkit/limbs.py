@@ -19,6 +19,7 @@ import sympy as sp
 
 from ._checks import as_sympy_matrix, as_sympy_scalar, check_rotation, describe
 from .screws import Screw, Wrench
+from .tolerances import SAMPLE_ZERO_TOL, ZERO_TOL
 from .transforms import _is_infinite_pitch
 
 __all__ = [
@@ -47,17 +48,18 @@ def _direction(v, name):
 
 def _is_zero(expr):
     """True if ``expr`` is zero for every value of its symbols: exactly after expansion,
-    or, when trigonometric identities are needed, at three random points (to 1e-9)."""
+    or, when trigonometric identities are needed, at three random points (to
+    ``SAMPLE_ZERO_TOL``)."""
     expr = sp.expand(expr)
     if expr == 0:
         return True
     symbols = sorted(expr.free_symbols, key=str)
     if not symbols:
-        return abs(complex(expr.evalf())) < 1e-12
+        return abs(complex(expr.evalf())) < ZERO_TOL
     rng = random.Random(7)
     for _ in range(3):
         point = {x: sp.Float(rng.uniform(0.3, 1.7)) for x in symbols}
-        if abs(complex(expr.evalf(subs=point))) > 1e-9:
+        if abs(complex(expr.evalf(subs=point))) > SAMPLE_ZERO_TOL:
             return False
     return True
 

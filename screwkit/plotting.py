@@ -33,6 +33,7 @@ from ._checks import (
 
 # re-exported: sk.plotting.draw_mechanism
 from ._mechanism_plot import draw_mechanism  # noqa: F401
+from .tolerances import DRAWING_TOL, ZERO_TOL, length_scale
 
 __all__ = [
     "COLUMN_WIDTH",
@@ -270,7 +271,7 @@ def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
     _check_axes(ax)
     s, r = _vector(s, "s"), _vector(r, "r")
     length = check_positive(length, "length")
-    if np.linalg.norm(s) < 1e-12:
+    if np.linalg.norm(s) < ZERO_TOL:
         raise ValueError(f"s must be a non-zero 3-vector, got {s.tolist()}")
     u = s / np.linalg.norm(s)
     ends = np.stack([r - 0.5 * length * u, r + 0.5 * length * u])
@@ -376,9 +377,10 @@ def draw_chain(
     return T
 
 
-def _shared_origin_labels(origins, tolerance=1e-6):
+def _shared_origin_labels(origins):
     """{index of the last frame at a point: "0, 1"} for frame origins (m) that
-    coincide."""
+    coincide (to ``DRAWING_TOL`` times the frames' size)."""
+    tolerance = DRAWING_TOL * length_scale(origins)
     groups = []
     for k, origin in enumerate(origins):
         for group in groups:

@@ -35,6 +35,13 @@ from ._checks import (
     describe,
 )
 from .chains import Joint
+from .tolerances import (
+    DIVISION_FLOOR,
+    LIMIT_MARGIN,
+    POSITION_TOL,
+    STEP_TOL,
+    length_scale,
+)
 
 __all__ = [
     "Path",
@@ -90,7 +97,7 @@ class Path:
             raise ValueError(
                 f"t must increase: the time step dt must be positive, got dt = {dt!r} s"
             )
-        if not np.allclose(steps, dt, rtol=1e-9, atol=0):
+        if not np.allclose(steps, dt, rtol=STEP_TOL, atol=0):
             worst = int(np.argmax(np.abs(steps - dt)))
             raise ValueError(
                 f"t must be uniform (one time step dt = {dt:.6g} s), but the step "
@@ -135,7 +142,7 @@ def timing(t, duration, kind="smooth"):
     kind = check_option(kind, "kind", ("smooth", "constant"))
     duration = check_positive(duration, "duration")
     t = as_float_array(t, "t")
-    if t.size and (t.min() < 0 or t.max() > duration * (1 + 1e-9)):
+    if t.size and (t.min() < 0 or t.max() > duration * (1 + STEP_TOL)):
         raise ValueError(
             f"t must lie in [0, duration] = [0, {duration:g}] s, "
             f"got values from {t.min():g} to {t.max():g} s"
@@ -162,7 +169,7 @@ def _samples(duration, dt):
             f"{duration / dt:.3g} (duration={duration} s, dt={dt} s); use a larger dt"
         )
     steps = int(round(duration / dt))
-    if steps < 1 or not np.isclose(steps * dt, duration, rtol=1e-9, atol=0):
+    if steps < 1 or not np.isclose(steps * dt, duration, rtol=STEP_TOL, atol=0):
         raise ValueError(
             f"duration must be a whole number of steps dt, got duration={duration} and "
             f"dt={dt}"
@@ -425,7 +432,7 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
         if sigma_min2 < singular_region**2:
             A = A + damping**2 * (1 - sigma_min2 / singular_region**2) * np.eye(2)
     det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
-    if det <= 1e-300:
+    if det <= DIVISION_FLOOR:
         return np.linalg.pinv(J)
     inverse = np.array([[A[1, 1], -A[0, 1]], [-A[1, 0], A[0, 0]]]) / det
     return J.T @ inverse
@@ -434,7 +441,7 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
 # ---- resolution ----------------------------------------------------------------------
 
 
-def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
+def start_configuration(arm, point, q_guess, tol=None, max_iterations=100):
     """Joint angles that put the end effector at ``point``.
 
     Newton steps with the pseudo-inverse from ``q_guess``: the nearest solution to the
@@ -450,7 +457,8 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
     q_guess : array-like, shape (n,)
         The first guess (rad).
     tol : float, optional
-        The distance accepted (m).
+        The distance accepted (m); by default ``POSITION_TOL`` times the longest
+        link.
     max_iterations : int, optional
         The Newton steps allowed (>= 1).
 
@@ -462,6 +470,8 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
     lengths = _lengths(arm)
     q = np.array(arm.check_one(q_guess, "q_guess"))  # a copy: the caller's array stays
     point = _point(point, "point")
+    if tol is None:
+        tol = POSITION_TOL * length_scale(lengths)
     tol = check_positive(tol, "tol")
     max_iterations = check_integer(max_iterations, "max_iterations", minimum=1)
     R, origin = _base_2d(arm)
@@ -657,7 +667,7 @@ def _limit_gradient(q, low, high, finite):
     """grad H of H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)) over joints with
     finite limits."""
     low, high = np.where(finite, low, -1.0), np.where(finite, high, 1.0)
-    inside = np.clip(q, low + 1e-9, high - 1e-9)
+    inside = np.clip(q, low + LIMIT_MARGIN, high - LIMIT_MARGIN)
     gradient = (
         (high - low) ** 2
         * (2 * inside - high - low)

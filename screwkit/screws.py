@@ -26,7 +26,7 @@ from ._checks import (
     is_symbolic,
 )
 from .lie import adjoint
-from .transforms import _is_infinite_pitch, axis_coordinates, exp_twist
+from .transforms import _is_infinite_pitch, _pitch, axis_coordinates, exp_twist
 
 __all__ = ["Screw", "Twist", "Wrench", "axis_coordinates"]
 
@@ -73,12 +73,7 @@ class Screw:
             raise ValueError(f"s must be a non-zero direction, got {list(s)}")
         if _is_infinite_pitch(h):
             return cls._checked(axis_coordinates(s, None, sp.oo))
-        if isinstance(h, str) or h is None:
-            raise TypeError(
-                "h must be a pitch (a number, a SymPy expression or sympy.oo), got "
-                f"{describe(h)}"
-            )
-        h = as_sympy_scalar(h, "h")
+        h = _pitch(h, exact=True)
         return cls._checked(axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), h))
 
     @classmethod

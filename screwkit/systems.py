@@ -6,9 +6,10 @@ exactly by :mod:`._exact`: the rank is the generic rank in the symbols, over the
 the entries really generate (cos(2a) and 2 cos(a)^2 - 1 are one number at a = 1/3 or
 pi/7 as for a symbol a); what cannot be decided exactly is refused with the reason.
 Screws given with floats (and no symbols) are computed by SVD: the rank counts the
-singular values above ``tol * max(1, the largest)``, ``tol = 1e-9`` by default
-(:mod:`._numeric`), so two axes that differ by round-off count as one. Floats mixed with
-symbols are refused with a message saying how to write them exactly.
+singular values above ``tol * max(1, the largest)``, ``tol = RANK_TOL`` (1e-9) by
+default (:mod:`screwkit.tolerances`), so two axes that differ by round-off count as
+one. Floats mixed with symbols are refused with a message saying how to write them
+exactly.
 
 >>> import sympy as sp
 >>> x, y, origin = [1, 0, 0], [0, 1, 0], [0, 0, 0]
@@ -47,7 +48,8 @@ class ScrewSystem:
         By default the kind of the screws given (Twist for vectors).
     tol : float, optional
         Relative tolerance of the rank when the screws hold floats (SVD; default
-        1e-9); exact screws ignore it.
+        ``RANK_TOL``, 1e-9, of :mod:`screwkit.tolerances`); exact screws ignore
+        it.
     """
 
     def __init__(self, screws, kind=None, tol=None):

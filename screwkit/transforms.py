@@ -31,6 +31,7 @@ from ._checks import (
     describe,
     is_symbolic,
 )
+from .tolerances import ZERO_TOL
 
 __all__ = [
     "skew",
@@ -80,8 +81,9 @@ def _skew_exact(v):
 
 
 def _cross(a, b):
-    """a x b along axis 0, for arrays laid out (3, ...): cheaper than np.cross on
-    strided data."""
+    """a x b along axis 0, for arrays laid out (3, ...) and single 3-vectors (3,): the
+    one cross product of screwkit's kernels, cheaper than np.cross on strided data and
+    on single vectors. Arrays laid out (..., 3) use np.cross. No checks."""
     return np.stack(
         [
             a[1] * b[2] - a[2] * b[1],
@@ -293,8 +295,9 @@ def _exact_angle(theta, name):
     return as_sympy_scalar(theta, name)
 
 
-#: A numeric axis shorter than this (m, or unitless) is taken as zero and refused.
-ZERO_AXIS = 1e-12
+#: A numeric axis shorter than this (unitless) is taken as zero and refused: the old
+#: name of :data:`screwkit.tolerances.ZERO_TOL`.
+ZERO_AXIS = ZERO_TOL
 
 
 def _unit_vector(value, name):
@@ -510,18 +513,21 @@ def twist_from_axis(s, r, h):
 
 
 _PITCH = (
-    "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
+    "h must be a pitch: a finite real number or SymPy expression (m/rad), or sympy.oo "
+    "(or the float inf) for a translation"
 )
 
 
 def _pitch(h, exact):
-    """A finite pitch (m/rad): a SymPy expression if ``exact``, else a float."""
+    """A finite pitch (m/rad): a SymPy expression if ``exact``, else a float; the one
+    check of a pitch after :func:`_is_infinite_pitch` (strings such as "inf" refused).
+    """
     try:
         return as_sympy_scalar(h, "h") if exact else as_real_scalar(h, "h")
     except TypeError:
         raise TypeError(f"{_PITCH}, got {describe(h)}") from None
     except ValueError:
-        raise ValueError(f"{_PITCH}, got {h!r}") from None
+        raise ValueError(f"{_PITCH}; h must be finite, got {h!r}") from None
 
 
 def exp_twist(twist, theta):

@@ -35,6 +35,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import describe
+from .transforms import axis_coordinates
 
 __all__ = ["URDFDescription", "read_urdf", "data_file"]
 
@@ -318,10 +319,8 @@ def read_urdf(source, base_link=None, tip_link=None):
         if joint.kind == "fixed":
             continue
         w = G[:3, :3] * _unit(joint.axis, where)
-        if joint.kind == "prismatic":
-            screw = sp.Matrix.vstack(sp.zeros(3, 1), w)
-        else:
-            screw = sp.Matrix.vstack(w, G[:3, 3].cross(w))  # v = -w x p
+        pitch = sp.oo if joint.kind == "prismatic" else 0
+        screw = axis_coordinates(w, G[:3, 3], pitch)  # (w; p x w), or (0; w)
         axes.append(screw.applyfunc(sp.expand))
         limits.append(joint.limit)
         names.append(joint.name)

@@ -37,6 +37,8 @@ from ._checks import (
     check_transform,
     describe,
 )
+from .tolerances import LENGTH_TOL, PARALLEL_TOL, ZERO_TOL, length_scale
+from .transforms import _is_infinite_pitch, _pitch
 
 __all__ = [
     "robot_viewer",
@@ -350,7 +352,7 @@ def _approach(home, last_point):
     tool sits on the last joint's axis point (the PUMA's wrist centre).
     """
     offset = home[:3, :3].T @ (home[:3, 3] - np.asarray(last_point, dtype=float))
-    if np.linalg.norm(offset) < 1e-9:
+    if np.linalg.norm(offset) < LENGTH_TOL * length_scale(home[:3, 3], last_point):
         return [2, 1]
     axis = int(np.argmax(np.abs(offset)))
     return [axis, 1 if offset[axis] > 0 else -1]
@@ -384,8 +386,9 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
     ----------
     s : array-like, shape (3,), the axis direction (normalised here)
     r : array-like, shape (3,), a point of the axis (m)
-    h : float, the pitch (m/rad); ``math.inf`` or ``sympy.oo`` for a pure translation
-        along s
+    h : float, the pitch (m/rad); ``math.inf`` (``np.inf``) or ``sympy.oo`` for a pure
+        translation along s, the one test of :func:`screwkit.screw_motion` (a string
+        such as "inf" is refused, as everywhere in screwkit)
     start : array-like, shape (4, 4), the frame before the motion (default identity)
     theta : float, the slider's first value: deg, default 90 (or m for a translation,
         default 0.5)
@@ -403,15 +406,11 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
             f"s and r must be single 3-vectors, got shapes {s.shape} and {r.shape}"
         )
     norm = float(np.linalg.norm(s))
-    if norm < 1e-12:
+    if norm < ZERO_TOL:
         raise ValueError(f"s must be a nonzero direction, got {s.tolist()}")
-    translation = _is_infinite(h)
+    translation = _is_infinite_pitch(h)
     if not translation:
-        h = as_float_array(h, "h")
-        if h.ndim:
-            raise ValueError(
-                f"h must be one number (m/rad) or infinity, got shape {h.shape}"
-            )
+        h = _pitch(h, exact=False)
     start = np.eye(4) if start is None else check_transform(start, "start")
     if start.ndim != 2:
         raise ValueError(
@@ -620,13 +619,16 @@ def _parallelograms(limb):
     i = 0
     while i + 3 < len(limb):
         (k0, s0, a1), (k1, s1, a2), (k2, s2, b1), (k3, s3, b2) = limb[i : i + 4]
-        parallel = all(abs(abs(float(np.dot(s0, s))) - 1) < 1e-9 for s in (s1, s2, s3))
+        parallel = all(
+            abs(abs(float(np.dot(s0, s))) - 1) < PARALLEL_TOL for s in (s1, s2, s3)
+        )
+        tol = LENGTH_TOL * length_scale(a1, a2, b1, b2)
         if (
             {k0, k1, k2, k3} == {"revolute"}
             and parallel
-            and np.allclose(b1 - a1, b2 - a2, atol=1e-9)
-            and np.linalg.norm(a2 - a1) > 1e-9
-            and np.linalg.norm(b1 - a1) > 1e-9
+            and np.allclose(b1 - a1, b2 - a2, atol=tol)
+            and np.linalg.norm(a2 - a1) > tol
+            and np.linalg.norm(b1 - a1) > tol
         ):
             found.append(i)
             i += 4
@@ -682,7 +684,7 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     joints = evaluate(limbs, values)
     points = np.array([p for limb in joints for _, _, p in limb])
     extent = float(np.ptp(points, axis=0).max())
-    extent = extent if extent > 1e-9 else 2.0
+    extent = extent if extent > LENGTH_TOL * length_scale(points) else 2.0
     length = extent / 5
     base = [limb[0][2] for limb in joints]
     platform = [limb[-1][2] for limb in joints]
@@ -756,13 +758,6 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
         ),
     }
     return Viewer(model, caption)
-
-
-def _is_infinite(h):
-    try:
-        return math.isinf(float(h))
-    except (TypeError, ValueError):
-        raise TypeError(f"h must be a number (m/rad) or infinity, got {h!r}") from None
 
 
 def _check_size(size):

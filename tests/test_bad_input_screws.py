@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 
 import screwkit as sk
-from screwkit import joints
+from screwkit import limbs
 from screwkit.screws import Twist, Wrench
 from screwkit.systems import ScrewSystem
 
@@ -234,34 +234,34 @@ MOBILITY_CASES = [
 ]
 
 JOINT_CASES = [
-    (lambda: joints.revolute(O, O), ValueError, "s must be a non-zero direction"),
-    (lambda: joints.revolute(Z, [0, 0]), ValueError, "r must have shape"),
-    (lambda: joints.revolute("z", O), TypeError, "s must be a matrix of shape"),
-    (lambda: joints.prismatic(O), ValueError, "s must be a non-zero direction"),
-    (lambda: joints.prismatic([0, np.nan, 1]), ValueError, "s must be finite"),
-    (lambda: joints.helical(Z, O, "h"), TypeError, "h must be a finite pitch"),
-    (lambda: joints.helical(Z, O, sp.oo), TypeError, "h must be a finite pitch"),
-    (lambda: joints.helical(Z, O, sp.nan), ValueError, "h must be finite"),
-    (lambda: joints.cylindrical(O, O), ValueError, "s must be a non-zero direction"),
+    (lambda: limbs.revolute(O, O), ValueError, "s must be a non-zero direction"),
+    (lambda: limbs.revolute(Z, [0, 0]), ValueError, "r must have shape"),
+    (lambda: limbs.revolute("z", O), TypeError, "s must be a matrix of shape"),
+    (lambda: limbs.prismatic(O), ValueError, "s must be a non-zero direction"),
+    (lambda: limbs.prismatic([0, np.nan, 1]), ValueError, "s must be finite"),
+    (lambda: limbs.helical(Z, O, "h"), TypeError, "h must be a finite pitch"),
+    (lambda: limbs.helical(Z, O, sp.oo), TypeError, "h must be a finite pitch"),
+    (lambda: limbs.helical(Z, O, sp.nan), ValueError, "h must be finite"),
+    (lambda: limbs.cylindrical(O, O), ValueError, "s must be a non-zero direction"),
     (
-        lambda: joints.universal(Z, Z, O),
+        lambda: limbs.universal(Z, Z, O),
         ValueError,
         "s1 and s2 of a universal joint must not be parallel",
     ),
     (
-        lambda: joints.universal(Z, [0, 0, -2], O),
+        lambda: limbs.universal(Z, [0, 0, -2], O),
         ValueError,
         "s1 and s2 of a universal joint must not be parallel",
     ),
     (
-        lambda: joints.universal(
+        lambda: limbs.universal(
             [sp.cos(theta), sp.sin(theta), 0], [-sp.sin(theta), sp.cos(theta), 0], O
         ),
         None,
         None,
     ),  # a valid U, perpendicular for every theta (a control row: no error)
     (
-        lambda: joints.universal(
+        lambda: limbs.universal(
             [sp.cos(theta), sp.sin(theta), 0],
             [2 * sp.cos(theta), 2 * sp.sin(theta), 0],
             O,
@@ -270,74 +270,74 @@ JOINT_CASES = [
         "must not be parallel",
     ),
     (
-        lambda: joints.spherical(O, axes=(X, Y)),
+        lambda: limbs.spherical(O, axes=(X, Y)),
         ValueError,
         "axes of a spherical joint must be three",
     ),
     (
-        lambda: joints.spherical(O, axes=(X, Y, Z, X)),
+        lambda: limbs.spherical(O, axes=(X, Y, Z, X)),
         ValueError,
         "axes of a spherical joint must be three",
     ),
     (
-        lambda: joints.spherical(O, axes=(X, Y, [1, 1, 0])),
+        lambda: limbs.spherical(O, axes=(X, Y, [1, 1, 0])),
         ValueError,
         "axes of a spherical joint must be independent",
     ),
     (
-        lambda: joints.spherical(O, axes=(X, Y, O)),
+        lambda: limbs.spherical(O, axes=(X, Y, O)),
         ValueError,
         r"axes\[2\] must be a non-zero direction",
     ),
     (
-        lambda: joints.spherical(O, axes="xyz"),
+        lambda: limbs.spherical(O, axes="xyz"),
         ValueError,
         "axes of a spherical joint must be three",
     ),
     (
-        lambda: joints.parallelogram(Z, O, X, [0, 1, 0], [1, 2, 0]),
+        lambda: limbs.parallelogram(Z, O, X, [0, 1, 0], [1, 2, 0]),
         ValueError,
         "corners of a parallelogram",
     ),
     (
-        lambda: joints.parallelogram(Z, O, O, Y, Y),
+        lambda: limbs.parallelogram(Z, O, O, Y, Y),
         ValueError,
         "a1 and a2 of a parallelogram must be different",
     ),
     (
-        lambda: joints.parallelogram(Z, O, X, O, X),
+        lambda: limbs.parallelogram(Z, O, X, O, X),
         ValueError,
         "a1 and b1 of a parallelogram must be different",
     ),
     (
-        lambda: joints.parallelogram(Z, O, X, [0, 1], [1, 1, 0]),
+        lambda: limbs.parallelogram(Z, O, X, [0, 1], [1, 1, 0]),
         ValueError,
         "b1 must have shape",
     ),
     (
-        lambda: joints.rotate_limb(joints.revolute(Z, X), 2 * sp.eye(3)),
+        lambda: limbs.rotate_limb(limbs.revolute(Z, X), 2 * sp.eye(3)),
         ValueError,
         "R must be a rotation matrix",
     ),
     (
-        lambda: joints.rotate_limb(joints.revolute(Z, X), np.diag([1.0, 1.0, -1.0])),
+        lambda: limbs.rotate_limb(limbs.revolute(Z, X), np.diag([1.0, 1.0, -1.0])),
         ValueError,
         "R must be a rotation matrix with determinant",
     ),
     (
-        lambda: joints.rotate_limb(
-            joints.revolute(Z, X), sp.diag(1, -1, -1) * sp.diag(1, 1, -1)
+        lambda: limbs.rotate_limb(
+            limbs.revolute(Z, X), sp.diag(1, -1, -1) * sp.diag(1, 1, -1)
         ),
         ValueError,
         "R must be a rotation matrix with determinant",
     ),
     (
-        lambda: joints.rotate_limb(joints.revolute(Z, X), np.eye(2)),
+        lambda: limbs.rotate_limb(limbs.revolute(Z, X), np.eye(2)),
         ValueError,
         "R must have shape",
     ),
     (
-        lambda: joints.translate_limb(joints.revolute(Z, X), [1, 2]),
+        lambda: limbs.translate_limb(limbs.revolute(Z, X), [1, 2]),
         ValueError,
         "p must have shape",
     ),

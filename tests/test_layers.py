@@ -66,7 +66,7 @@ ORDER = [
             "ik.dispatch",
             "workspace",
             "redundancy",
-            "mobility",
+            "mobility_analysis",
         ],
     ),
     (
@@ -326,11 +326,11 @@ def test_the_checker_lets_a_downward_import_of_a_folder_pass(module, source):
     assert not upward(module, imports(module, source))
 
 
-def test_the_old_module_path_of_the_limb_builders_still_works():
+def test_the_old_module_path_of_the_limb_builders_still_works_and_warns():
     import screwkit as sk
-    from screwkit import joints, limbs
+    from screwkit import limbs
 
-    assert (
-        joints.revolute is limbs.revolute and sk.joints.spherical is sk.limbs.spherical
-    )
-    assert sorted(joints.__all__) == sorted(limbs.__all__)
+    with pytest.deprecated_call(match="use screwkit.limbs"):
+        revolute, spherical = sk.joints.revolute, sk.joints.spherical
+        assert sorted(sk.joints.__all__) == sorted(limbs.__all__)
+    assert revolute is limbs.revolute and spherical is limbs.spherical

@@ -143,5 +143,5 @@ def test_limits_and_rigid_transforms():
         links.limits_table([[-1, 1]], 3)
     T = links.rigid(np.eye(4), "base")
     assert not T.flags.writeable
-    with pytest.raises(ValueError, match="base must be one transform"):
+    with pytest.raises(ValueError, match="base must be one pose"):
         links.rigid(np.stack([np.eye(4)] * 2), "base")

@@ -276,7 +276,7 @@ def mobility(limbs, at=None, tol=None):
         are read as the exact rationals they store (the geometry stays exact; only the
         values are particular).
     tol : relative tolerance of the ranks when the limbs are given with floats
-        (default 1e-9).
+        (default ``RANK_TOL``, 1e-9, of :mod:`screwkit.tolerances`).
 
     Returns
     -------
