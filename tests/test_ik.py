@@ -7,9 +7,11 @@ import functools
 import numpy as np
 import pytest
 import sympy as sp
+from builders import kawasaki, planar, puma
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
+from references import A2, A3, D4
 
 import screwkit as sk
 from screwkit.ik import (
@@ -21,19 +23,6 @@ from screwkit.ik import (
     puma560_ik,
     puma560_ik_all,
 )
-
-
-@functools.cache
-def puma():
-    return sk.robots.puma560()
-
-
-A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
-
-
-@functools.cache
-def kawasaki():
-    return sk.robots.kawasaki_cx210l()
 
 
 def puma_with(d1=0.0, d6=0.0):
@@ -331,9 +320,8 @@ def test_batch_answers_and_chunks():
 # ---- numeric -------------------------------------------------------------------------
 
 
-@functools.cache
 def planar_2r():
-    return sk.robots.planar([1.0, 1.0])
+    return planar(1.0, 1.0)
 
 
 def body_jacobian_2r(theta2):
