@@ -1,5 +1,5 @@
-"""Bad input to screws, screw systems, mobility and joints: each case raises the
-documented error, and its message names the argument at fault."""
+"""Bad input to screws, screw systems, mobility and the limb builders: rows in the
+format of rows.py (the phrase each message must contain is kept as ``match``)."""
 
 import functools
 
@@ -8,7 +8,7 @@ import sympy as sp
 from rows import row
 
 import screwkit as sk
-from screwkit import joints
+from screwkit import limbs
 from screwkit.screws import Twist, Wrench
 from screwkit.systems import ScrewSystem
 
@@ -406,84 +406,84 @@ MOBILITY = [
 JOINT = [
     row(
         "revolute-1",
-        lambda: joints.revolute(O, O),
+        lambda: limbs.revolute(O, O),
         ValueError,
         "s",
         match="s must be a non-zero direction",
     ),
     row(
         "revolute-2",
-        lambda: joints.revolute(Z, [0, 0]),
+        lambda: limbs.revolute(Z, [0, 0]),
         ValueError,
         "r",
         match="r must have shape",
     ),
     row(
         "revolute-3",
-        lambda: joints.revolute("z", O),
+        lambda: limbs.revolute("z", O),
         TypeError,
         "s",
         match="s must be a matrix of shape",
     ),
     row(
         "prismatic-1",
-        lambda: joints.prismatic(O),
+        lambda: limbs.prismatic(O),
         ValueError,
         "s",
         match="s must be a non-zero direction",
     ),
     row(
         "prismatic-2",
-        lambda: joints.prismatic([0, np.nan, 1]),
+        lambda: limbs.prismatic([0, np.nan, 1]),
         ValueError,
         "s",
         match="s must be finite",
     ),
     row(
         "helical-1",
-        lambda: joints.helical(Z, O, "h"),
+        lambda: limbs.helical(Z, O, "h"),
         TypeError,
         "h",
         match="h must be a finite pitch",
     ),
     row(
         "helical-2",
-        lambda: joints.helical(Z, O, sp.oo),
+        lambda: limbs.helical(Z, O, sp.oo),
         TypeError,
         "h",
         match="h must be a finite pitch",
     ),
     row(
         "helical-3",
-        lambda: joints.helical(Z, O, sp.nan),
+        lambda: limbs.helical(Z, O, sp.nan),
         ValueError,
         "h",
         match="h must be finite",
     ),
     row(
         "cylindrical-1",
-        lambda: joints.cylindrical(O, O),
+        lambda: limbs.cylindrical(O, O),
         ValueError,
         "s",
         match="s must be a non-zero direction",
     ),
     row(
         "universal-1",
-        lambda: joints.universal(Z, Z, O),
+        lambda: limbs.universal(Z, Z, O),
         ValueError,
         "s1",
         match="s1 and s2 of a universal joint must not be parallel",
     ),
     row(
         "universal-2",
-        lambda: joints.universal(Z, [0, 0, -2], O),
+        lambda: limbs.universal(Z, [0, 0, -2], O),
         ValueError,
         "s1",
         match="s1 and s2 of a universal joint must not be parallel",
     ),
     row(
         "universal-3",
-        lambda: joints.universal(
+        lambda: limbs.universal(
             [sp.cos(theta), sp.sin(theta), 0],
             [2 * sp.cos(theta), 2 * sp.sin(theta), 0],
             O,
@@ -494,85 +494,85 @@ JOINT = [
     ),
     row(
         "spherical-1",
-        lambda: joints.spherical(O, axes=(X, Y)),
+        lambda: limbs.spherical(O, axes=(X, Y)),
         ValueError,
         "axes",
         match="axes of a spherical joint must be three",
     ),
     row(
         "spherical-2",
-        lambda: joints.spherical(O, axes=(X, Y, Z, X)),
+        lambda: limbs.spherical(O, axes=(X, Y, Z, X)),
         ValueError,
         "axes",
         match="axes of a spherical joint must be three",
     ),
     row(
         "spherical-3",
-        lambda: joints.spherical(O, axes=(X, Y, [1, 1, 0])),
+        lambda: limbs.spherical(O, axes=(X, Y, [1, 1, 0])),
         ValueError,
         "axes",
         match="axes of a spherical joint must be independent",
     ),
     row(
         "spherical-4",
-        lambda: joints.spherical(O, axes=(X, Y, O)),
+        lambda: limbs.spherical(O, axes=(X, Y, O)),
         ValueError,
         "axes",
         match=r"axes\[2\] must be a non-zero direction",
     ),
     row(
         "spherical-5",
-        lambda: joints.spherical(O, axes="xyz"),
+        lambda: limbs.spherical(O, axes="xyz"),
         ValueError,
         "axes",
         match="axes of a spherical joint must be three",
     ),
     row(
         "parallelogram-1",
-        lambda: joints.parallelogram(Z, O, X, [0, 1, 0], [1, 2, 0]),
+        lambda: limbs.parallelogram(Z, O, X, [0, 1, 0], [1, 2, 0]),
         ValueError,
         "corners",
         match="corners of a parallelogram",
     ),
     row(
         "parallelogram-2",
-        lambda: joints.parallelogram(Z, O, O, Y, Y),
+        lambda: limbs.parallelogram(Z, O, O, Y, Y),
         ValueError,
         "a1",
         match="a1 and a2 of a parallelogram must be different",
     ),
     row(
         "parallelogram-3",
-        lambda: joints.parallelogram(Z, O, X, O, X),
+        lambda: limbs.parallelogram(Z, O, X, O, X),
         ValueError,
         "a1",
         match="a1 and b1 of a parallelogram must be different",
     ),
     row(
         "parallelogram-4",
-        lambda: joints.parallelogram(Z, O, X, [0, 1], [1, 1, 0]),
+        lambda: limbs.parallelogram(Z, O, X, [0, 1], [1, 1, 0]),
         ValueError,
         "b1",
         match="b1 must have shape",
     ),
     row(
         "rotate_limb-1",
-        lambda: joints.rotate_limb(joints.revolute(Z, X), 2 * sp.eye(3)),
+        lambda: limbs.rotate_limb(limbs.revolute(Z, X), 2 * sp.eye(3)),
         ValueError,
         "R",
         match="R must be a rotation matrix",
     ),
     row(
         "rotate_limb-2",
-        lambda: joints.rotate_limb(joints.revolute(Z, X), np.diag([1.0, 1.0, -1.0])),
+        lambda: limbs.rotate_limb(limbs.revolute(Z, X), np.diag([1.0, 1.0, -1.0])),
         ValueError,
         "R",
         match="R must be a rotation matrix with determinant",
     ),
     row(
         "rotate_limb-3",
-        lambda: joints.rotate_limb(
-            joints.revolute(Z, X), sp.diag(1, -1, -1) * sp.diag(1, 1, -1)
+        lambda: limbs.rotate_limb(
+            limbs.revolute(Z, X), sp.diag(1, -1, -1) * sp.diag(1, 1, -1)
         ),
         ValueError,
         "R",
@@ -580,14 +580,14 @@ JOINT = [
     ),
     row(
         "rotate_limb-4",
-        lambda: joints.rotate_limb(joints.revolute(Z, X), np.eye(2)),
+        lambda: limbs.rotate_limb(limbs.revolute(Z, X), np.eye(2)),
         ValueError,
         "R",
         match="R must have shape",
     ),
     row(
         "translate_limb-1",
-        lambda: joints.translate_limb(joints.revolute(Z, X), [1, 2]),
+        lambda: limbs.translate_limb(limbs.revolute(Z, X), [1, 2]),
         ValueError,
         "p",
         match="p must have shape",
