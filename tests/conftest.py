@@ -2,8 +2,9 @@
 
 Robots and figures are fixtures, built on first use (once per session for the immutable
 chains, by tests/builders.py, which test files may also call), never at the import of a
-test file. Hand-written references are in tests/references.py; the course's own tests
-(chapters, book, answer keys) are in tests/course/.
+test file. Hand-written references are in tests/references.py; the bad-input contract
+(its tables and their one driver) in tests/bad_input/; the course's own tests
+(chapters, book, answer keys) in tests/course/.
 
 ``ci`` (the default, so CI and ``make test`` use it whether or not ``CI`` is set) is
 derandomized: every run draws the same examples, so a failure in CI reproduces on any

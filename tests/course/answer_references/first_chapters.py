@@ -5,6 +5,7 @@ screwkit on the problem as stated."""
 import math
 
 import numpy as np
+from builders import puma
 from references import A2, A3, D3, D4, PUMA_TABLE, dh_fk, rot
 
 import screwkit as sk
@@ -184,7 +185,7 @@ def _():
 @reference("puma_fk", 9)
 def _():
     # the distance between the elbow and forearm-roll axes, from screwkit's joint screws
-    axes = sk.robots.puma560().screw_axes()
+    axes = puma().screw_axes()
     z, points = axes[:, :3], np.cross(axes[:, :3], axes[:, 3:])
     n = np.cross(z[2], z[3])
     return abs((points[3] - points[2]) @ n) / np.linalg.norm(n) * 1000
