@@ -25,19 +25,16 @@ HERE = Path(__file__).resolve().parent
 SUPPORTED = ["3.11", "3.12", "3.13"]
 LOWEST, HIGHEST = SUPPORTED[0], SUPPORTED[-1]
 
-# Tests of the course rather than of screwkit: other Pythons and the network.
-COURSE_ONLY_TESTS = [
-    "tests/test_binder.py",
-    # reads the chapters (notebooks/), not in the snapshot
-    "tests/test_course_content.py",
-]
+# The course's tests (chapters, book, Binder), not screwkit's: not in the snapshot.
+COURSE_ONLY_TESTS = ["tests/course"]
 
 # Prints each test file (argv) that imports a module this environment lacks: a test of
 # the course (nbformat, jupytext, ...), not of screwkit, when screwkit is installed
 # alone.
 _NEEDS_MISSING_MODULE = """
-import ast, importlib.util, sys
+import ast, importlib.util, os, sys
 for path in sys.argv[1:]:
+    sys.path[:0] = ["tests", os.path.dirname(path)]  # the tests' own shared modules
     tree = ast.parse(open(path, encoding="utf-8").read())
     roots = {alias.name.split(".")[0] for node in tree.body
              if isinstance(node, ast.Import) for alias in node.names}
@@ -109,7 +106,10 @@ def course(session):
     """The course's pinned environment (requirements.txt) and `make test`, here."""
     # Binder's resolution does not depend on this session's Python: `make test` checks
     # it once
-    binder = "tests/test_binder.py::test_binder_requirements_resolve_for_binders_python"
+    binder = (
+        "tests/course/test_binder.py"
+        "::test_binder_requirements_resolve_for_binders_python"
+    )
     with _Timer(session):
         session.run(
             "make",
@@ -159,7 +159,8 @@ def unit_lowest(session):
         )
         session.chdir(snapshot)
         tests = sorted(
-            str(path.relative_to(snapshot)) for path in snapshot.glob("tests/test_*.py")
+            str(path.relative_to(snapshot))
+            for path in snapshot.glob("tests/**/test_*.py")
         )
         report = session.run("python", "-c", _NEEDS_MISSING_MODULE, *tests, silent=True)
         course_only = COURSE_ONLY_TESTS + [

@@ -12,9 +12,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
+from builders import kawasaki, planar, puma
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
+from references import A2, A3, D4
 
 import screwkit as sk
 from screwkit.ik import (
@@ -26,19 +28,6 @@ from screwkit.ik import (
     puma560_ik,
     puma560_ik_all,
 )
-
-
-@functools.cache
-def puma():
-    return sk.robots.puma560()
-
-
-A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
-
-
-@functools.cache
-def kawasaki():
-    return sk.robots.kawasaki_cx210l()
 
 
 def puma_with(d1=0.0, d6=0.0):
@@ -336,9 +325,8 @@ def test_batch_answers_and_chunks():
 # ---- numeric -------------------------------------------------------------------------
 
 
-@functools.cache
 def planar_2r():
-    return sk.robots.planar([1.0, 1.0])
+    return planar(1.0, 1.0)
 
 
 def body_jacobian_2r(theta2):

@@ -7,11 +7,12 @@ by a dense scan of the platform angle, singular poses from their geometry (concu
 leg lines, Fichter's 90 degree turn, a stretched limb, vertical forearms).
 """
 
-import functools
-
 import numpy as np
 import pytest
 import sympy as sp
+from builders import delta as delta_robot
+from builders import rpr, rrr, stewart
+from builders import tripteron as tripteron_robot
 
 import screwkit as sk
 from screwkit import parallel
@@ -80,31 +81,6 @@ def random_planar_pose(scale=0.1, centre=(0, 0), angle=0.0):
             0,
         ],
     )
-
-
-@functools.cache
-def stewart():
-    return parallel.stewart_gough()
-
-
-@functools.cache
-def rpr():
-    return parallel.planar_3rpr()
-
-
-@functools.cache
-def rrr():
-    return parallel.planar_3rrr()
-
-
-@functools.cache
-def delta_robot():
-    return parallel.delta()
-
-
-@functools.cache
-def tripteron_robot():
-    return parallel.tripteron()
 
 
 def test_default_stewart_geometry_is_the_documented_one():

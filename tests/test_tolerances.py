@@ -21,6 +21,7 @@ from screwkit.tolerances import length_scale
 
 PACKAGE = Path(sk.__file__).resolve().parent
 
+
 def bare_tolerances(source):
     """(line, value) of every float literal 0 < |x| < 1e-3 outside tuple/list
     displays."""

@@ -9,7 +9,8 @@ Display layer (it imports matplotlib): not loaded by ``import screwkit``; the ch
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .model import ParallelManipulator
+from .._checks import check_poses, describe
+from .model import ParallelManipulator, Workspace
 
 __all__ = ["draw_planar_platform", "draw_spatial", "draw_workspace"]
 
@@ -20,10 +21,7 @@ def _check(pm, T):
             f"pm must be a ParallelManipulator (e.g. sk.parallel.planar_3rpr()), got "
             f"{type(pm).__name__}"
         )
-    T = np.asarray(pm.home() if T is None else T, dtype=float)
-    if T.shape != (4, 4):
-        raise ValueError(f"T must be one pose of shape (4, 4), got shape {T.shape}")
-    return T
+    return pm.home() if T is None else check_poses(T, "T", single_only=True)
 
 
 def _closed(points):
@@ -161,6 +159,11 @@ def draw_workspace(workspace, ax=None, color="tab:green"):
     matplotlib Axes
         The axes drawn on, x and y in m, equal aspect.
     """
+    if not isinstance(workspace, Workspace):
+        raise TypeError(
+            "workspace must be a Workspace (what pm.workspace(x, y) returns), got "
+            f"{describe(workspace)}"
+        )
     if ax is None:
         _, ax = plt.subplots(figsize=(4.5, 4.5))
     X, Y = np.meshgrid(workspace.x, workspace.y)

@@ -8,7 +8,7 @@ import pathlib
 import pytest
 from pybtex.database import parse_string
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def load(path, name):

@@ -13,7 +13,7 @@ import sympy as sp
 
 from screwkit import exercises
 
-NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
+NOTEBOOKS = Path(__file__).resolve().parents[2] / "notebooks"
 CHAPTERS = ["rigid_motions", "screws", "poe", "puma_fk", "puma_ik"]
 
 

@@ -11,7 +11,7 @@ import tomllib
 import pytest
 from pybtex.database import parse_file
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 CHAPTERS = ["jacobians", "kawasaki_workspace", "redundancy", "mobility"]
 
 

@@ -8,7 +8,7 @@ import jupytext
 import nbformat
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 _spec = importlib.util.spec_from_file_location(
     "check_sources", ROOT / ".ci" / "check_sources.py"
 )

@@ -3,49 +3,19 @@ recomputed independently: a screwkit computation that does not read the key's fo
 (a root found by bisection, a maximum found where a derivative changes sign, a mobility
 analysis) or a formula written here.
 
-Each computation is registered, as the engine's own tests register theirs, so that
-``tests/test_exercises.py`` (every key has a reference; the rules of checking) covers
-these keys too when the two files run together, as in ``make test``.
+Each computation is registered in .registry; tests/course/test_answer_keys.py checks
+every key against it.
 """
 
-import functools
 import math
-import tomllib
-from importlib import resources
 
 import numpy as np
-import pytest
 import sympy as sp
+from builders import kawasaki, planar, puma
 
 import screwkit as sk
 
-try:  # the engine's registry of references, when its tests are collected with these
-    from test_exercises import REFERENCES as ENGINE_REFERENCES
-except ImportError:  # pragma: no cover - run alone from elsewhere
-    ENGINE_REFERENCES = {}
-
-REFERENCES = {}
-
-
-def reference(chapter, number):
-    """Register the independent computation of one exercise's answer."""
-
-    def register(function):
-        REFERENCES[chapter, number] = function
-        ENGINE_REFERENCES[chapter, number] = function
-        return function
-
-    return register
-
-
-def key(chapter, number):
-    path = resources.files("screwkit") / "answers" / f"{chapter}.toml"
-    return tomllib.loads(path.read_text(encoding="utf-8"))["exercise"][str(number)]
-
-
-def value(chapter, number):
-    """The key's answer as a float, in the key's unit."""
-    return float(sp.sympify(key(chapter, number)["answer"]))
+from .registry import reference
 
 
 def bisect(f, low, high, steps=80):
@@ -77,11 +47,6 @@ def _():
     )
 
 
-@functools.cache
-def puma():
-    return sk.robots.puma560()
-
-
 def _puma_det(q3, q2=0.5):
     return np.linalg.det(
         puma().geometric_jacobian(np.array([0.3, q2, q3, 0.2, 0.9, 0]))
@@ -93,25 +58,9 @@ def _():
     return bisect(_puma_det, -1.6, -1.45)
 
 
-def test_jacobians_4_the_other_root_is_singular_too():
-    # folded, the wrist centre is also near the shoulder plane (a2 = d4): det J touches
-    # zero there without changing sign, so test the smallest singular value instead.
-    # It is the root the key's range (-180 deg to 0) leaves out: atan2(d4, -a3)
-    folded = math.atan2(0.4318, -0.0203)
-    bounds = sk.exercises.answer_key("jacobians", 4)["range"]
-    assert not bounds["low"] <= folded <= bounds["high"]
-    J = puma().geometric_jacobian(np.array([0.3, 0.5, folded, 0.2, 0.9, 0]))
-    assert np.linalg.svd(J, compute_uv=False)[-1] < 1e-12
-
-
-@functools.cache
-def two_link():
-    return sk.robots.planar([0.5, 0.3])
-
-
-@functools.cache
 def j_two_link():
-    return two_link().geometric_jacobian(np.array([0, np.pi / 2]))[:2]
+    """The 2R arm's planar Jacobian at q = (0, 90 deg)."""
+    return planar(0.5, 0.3).geometric_jacobian(np.array([0, np.pi / 2]))[:2]
 
 
 @reference("jacobians", 5)
@@ -128,11 +77,6 @@ def _():
 
 
 # --- kawasaki_workspace ---
-
-
-@functools.cache
-def kawasaki():
-    return sk.robots.kawasaki_cx210l()
 
 
 SHOULDER = np.array([0.3, 0, 0.55])  # the axis of joint 2 at theta1 = 0
@@ -193,22 +137,17 @@ def _():
     return rates[0]
 
 
-@functools.cache
-def three_link():
-    return sk.robots.planar([1, 1, 1])
-
-
 Q_THREE = np.radians([0, 90, -90])
 
 
 @reference("redundancy", 5)
 def _():
-    return three_link().manipulability(Q_THREE, rows="planar")
+    return planar(1, 1, 1).manipulability(Q_THREE, rows="planar")
 
 
 @reference("redundancy", 6)
 def _():
-    J = three_link().geometric_jacobian(Q_THREE)[:2]
+    J = planar(1, 1, 1).geometric_jacobian(Q_THREE)[:2]
     null = np.linalg.svd(J)[2][
         -1
     ]  # the right singular vector of the zero singular value
@@ -256,29 +195,3 @@ def _():
     ranks = {s.rank for s in sk.mobility(sk.robots.pm_3prrr()).limb_wrench_systems}
     assert len(ranks) == 1
     return ranks.pop()
-
-
-CHAPTERS = ["jacobians", "kawasaki_workspace", "redundancy", "mobility"]
-
-
-def keys_of(chapter):
-    path = resources.files("screwkit") / "answers" / f"{chapter}.toml"
-    return {int(n) for n in tomllib.loads(path.read_text(encoding="utf-8"))["exercise"]}
-
-
-@pytest.mark.parametrize("chapter", CHAPTERS)
-def test_every_key_of_these_chapters_has_a_reference_here(chapter):
-    assert keys_of(chapter) == {n for c, n in REFERENCES if c == chapter}
-
-
-@pytest.mark.parametrize("chapter, number", sorted(REFERENCES))
-def test_key_agrees_with_its_reference(chapter, number):
-    expected = float(REFERENCES[chapter, number]())
-    entry = key(chapter, number)
-    assert abs(value(chapter, number) - expected) <= entry["tolerance"] / 100, (
-        f"{chapter} exercise {number}: key {value(chapter, number)}, "
-        f"computed {expected}"
-    )
-    assert sk.exercises.check(chapter, number, f"{expected:.6f}").correct
-    wrong = expected + 10 * entry["tolerance"] + 1
-    assert not sk.exercises.check(chapter, number, repr(wrong)).correct

@@ -21,7 +21,7 @@ from matplotlib import animation  # noqa: E402
 
 import screwkit as sk  # noqa: E402
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 def load(path, name):
