@@ -7,6 +7,7 @@ the checking rules (forms, units, signs, text input) and the page's JavaScript,
 which must give the same verdict as ``sk.exercises.check`` on the same text.
 """
 
+import importlib.util
 import json
 import math
 import shutil
@@ -619,22 +620,19 @@ def test_javascript_verdicts_equal_python_ones(fake):
             assert got[1] == want[1], (n, text)
 
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-FLAGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-    "--disable-quic",
-    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
-]
+# The project's one way to start a browser (.ci/harness.py): the system Chromium, fenced
+# off the network
+_spec = importlib.util.spec_from_file_location(
+    "harness", Path(__file__).resolve().parent.parent / ".ci" / "harness.py"
+)
+harness = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(harness)
+CHROMIUM = harness.CHROMIUM
 
 
 @pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
 def test_answer_boxes_answer_in_the_browser(fake):
-    sync_api = pytest.importorskip("playwright.sync_api")
+    pytest.importorskip("playwright.sync_api")
     boxes = [
         exercises.answer_box("fake", 1, script=True),
         exercises.answer_box("fake", 4, script=False),
@@ -651,30 +649,26 @@ def test_answer_boxes_answer_in_the_browser(fake):
         (2, "120 deg", True),
         (2, "2pi", False),
     ]
-    with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        try:
-            page = browser.new_page()
-            errors = []
-            page.on("pageerror", lambda error: errors.append(str(error)))
-            page.set_content(content)
-            for index, text, correct in trials:
-                box = f"#{boxes[index].id}"
-                page.fill(f"{box} input", text)
-                page.click(f"{box} button")
-                shown = page.inner_text(f"{box} .sk-verdict")
-                assert shown.startswith("✓ Right" if correct else "✗ Not yet"), shown
-                expected = exercises.check(
-                    "fake" if index < 2 else "rigid_motions", [1, 4, 5][index], text
-                ).message
-                if not expected.startswith("Could not read"):
-                    assert expected in shown
-            page.fill(f"#{boxes[0].id} input", "60 deg")
-            page.press(f"#{boxes[0].id} input", "Enter")
-            assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
-            assert errors == []
-        finally:
-            browser.close()
+    with harness.launch() as browser:
+        page = browser.new_page()
+        errors = []
+        page.on("pageerror", lambda error: errors.append(str(error)))
+        page.set_content(content)
+        for index, text, correct in trials:
+            box = f"#{boxes[index].id}"
+            page.fill(f"{box} input", text)
+            page.click(f"{box} button")
+            shown = page.inner_text(f"{box} .sk-verdict")
+            assert shown.startswith("✓ Right" if correct else "✗ Not yet"), shown
+            expected = exercises.check(
+                "fake" if index < 2 else "rigid_motions", [1, 4, 5][index], text
+            ).message
+            if not expected.startswith("Could not read"):
+                assert expected in shown
+        page.fill(f"#{boxes[0].id} input", "60 deg")
+        page.press(f"#{boxes[0].id} input", "Enter")
+        assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
+        assert errors == []
 
 
 @pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
@@ -682,7 +676,7 @@ def test_answer_boxes_answer_in_the_browser(fake):
 def test_stored_chapter_boxes_answer_in_the_page(chapter):
     # the chapter's stored HTML outputs, in order, as the book shows them: the script is
     # inlined once, in the first box, and every box answers without a kernel
-    sync_api = pytest.importorskip("playwright.sync_api")
+    pytest.importorskip("playwright.sync_api")
     path = Path(__file__).resolve().parent.parent / "notebooks" / f"{chapter}.ipynb"
     cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
     boxes = [
@@ -693,24 +687,20 @@ def test_stored_chapter_boxes_answer_in_the_page(chapter):
     ]
     assert len(boxes) >= 2
     assert sum("window.screwkitExercises = {" in b for b in boxes) == 1
-    with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        try:
-            page = browser.new_page()
-            errors = []
-            page.on("pageerror", lambda error: errors.append(str(error)))
-            page.set_content("<html><body>" + "".join(boxes) + "</body></html>")
-            ids = page.eval_on_selector_all(".sk-answer-box", "d => d.map(e => e.id)")
-            assert len(ids) == len(boxes)
-            for box in ids:
-                number = int(box.split("-")[-2])
-                key = exercises.answer_key(chapter, number)
-                right = ", ".join(repr(v) for v in key["values"])
-                for text, correct in ((right, True), ("1e6", False)):
-                    page.fill(f"[id='{box}'] input", text)
-                    page.click(f"[id='{box}'] button")
-                    shown = page.inner_text(f"[id='{box}'] .sk-verdict")
-                    assert shown.startswith("✓" if correct else "✗"), (box, shown)
-            assert errors == []
-        finally:
-            browser.close()
+    with harness.launch() as browser:
+        page = browser.new_page()
+        errors = []
+        page.on("pageerror", lambda error: errors.append(str(error)))
+        page.set_content("<html><body>" + "".join(boxes) + "</body></html>")
+        ids = page.eval_on_selector_all(".sk-answer-box", "d => d.map(e => e.id)")
+        assert len(ids) == len(boxes)
+        for box in ids:
+            number = int(box.split("-")[-2])
+            key = exercises.answer_key(chapter, number)
+            right = ", ".join(repr(v) for v in key["values"])
+            for text, correct in ((right, True), ("1e6", False)):
+                page.fill(f"[id='{box}'] input", text)
+                page.click(f"[id='{box}'] button")
+                shown = page.inner_text(f"[id='{box}'] .sk-verdict")
+                assert shown.startswith("✓" if correct else "✗"), (box, shown)
+        assert errors == []
