@@ -30,10 +30,11 @@ fetches once for the whole book and caches. A page's second copy of the same scr
 stepped figure and a 3D viewer both carry ``viewer.js``) is dropped: the first copy has
 defined ``window.screwkit``, and every figure mounts itself with the call that follows
 it. The notebooks' ipywidgets state (a live widget's model, 118 kB on the mobility page)
-is left out of the pages too: the book loads no widget script that would read it.
+is left out of the pages too (taken out of the page's scripts in Sphinx's
+``html-page-context``): the book loads no widget script that would read it.
 
-The figures (PNG files of ``_images/``) are written with a palette when they have at most
-256 colours (lossless), and otherwise quantised to 256 colours (median cut, no
+The figures (PNG files of ``_images/``) are written with a palette when they have at
+most 256 colours (lossless), and otherwise quantised to 256 colours (median cut, no
 dithering, as the stepped figures already are) when that changes no pixel by more than
 ``MAX_MEAN_ERROR`` on average; matplotlib's RGBA output of a white figure is three to
 four times larger. A figure with transparency, or one that would not shrink, is kept.
@@ -58,13 +59,15 @@ from docutils import nodes
 from fontTools import subset
 from fontTools.ttLib import TTFont
 
+# The theme's templates write these tags themselves (the macro head_js_preload, the
+# block extrahead of its layout.html), not through Sphinx's script_files: no Sphinx
+# event sees them, so they are taken out of the written pages.
 SCRIPT_TAG = re.compile(
     r'\s*<script defer src="[^"]*_static/scripts/fontawesome\.js[^"]*"></script>'
 )
 # pydata-sphinx-theme loads Sphinx's search on every page for its search-as-you-type,
-# which
-# is off unless the theme option search_as_you_type is set: then only search.html needs
-# it.
+# which is off unless the theme option search_as_you_type is set: then only search.html
+# needs it.
 SEARCH_TAGS = re.compile(
     r'\s*<script src="[^"]*(?:_static/searchtools\.js|_static/language_data\.js'
     r'|searchindex\.js)"></script>'
@@ -81,21 +84,30 @@ FONT_FACE = re.compile(
     r' format\("(woff2|truetype)"\)'
 )
 
-
 # myst-nb's script of a notebook's ipywidgets state (read only by the widget scripts)
-WIDGET_STATE = re.compile(
-    r'\s*<script type="application/vnd\.jupyter\.widget-state\+json">.*?</script>',
-    re.S,
-)
+WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
 
 
-def drop_script(outdir, search_everywhere=False, widget_state=True):
+def no_widget_state(app, pagename, templatename, context, doctree):
+    """Leave the notebook's ipywidgets state out of the page's scripts when the book
+    loads no widget script (``nb_ipywidgets_js`` empty): myst-nb adds it to
+    ``script_files`` in its own ``html-page-context`` handler, which runs first."""
+    scripts = context.get("script_files")
+    if scripts and not getattr(app.config, "nb_ipywidgets_js", None):
+        scripts[:] = [
+            script
+            for script in scripts
+            if (getattr(script, "attributes", None) or {}).get("type") != WIDGET_STATE
+        ]
+
+
+def drop_script(outdir, search_everywhere=False):
+    """Take the theme's Font Awesome script (and, unless search_everywhere, Sphinx's
+    search scripts but on search.html) out of every written page; delete the script."""
     for page in glob.glob(os.path.join(outdir, "**", "*.html"), recursive=True):
         with open(page, encoding="utf-8") as f:
             html = f.read()
         lighter = SCRIPT_TAG.sub("", html)
-        if not widget_state:
-            lighter = WIDGET_STATE.sub("", lighter)
         if not search_everywhere and os.path.basename(page) != "search.html":
             lighter = SEARCH_TAGS.sub("", lighter)
         if lighter != html:
@@ -191,15 +203,14 @@ def describe_html_images(app, doctree, docname):
         if not alt:
             continue
         text = html.escape(" ".join(alt.split()), quote=True)
+
+        def described(m, text=text):
+            if m.group(2):
+                return f"alt={m.group(1)}{text}{m.group(1)}"
+            return f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"
+
         for raw in list(cell.findall(nodes.raw)):
-            new = BLAND_ALT.sub(
-                lambda m: (
-                    f"alt={m.group(1)}{text}{m.group(1)}"
-                    if m.group(2)
-                    else f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"
-                ),
-                raw.astext(),
-            )
+            new = BLAND_ALT.sub(described, raw.astext())
             if new != raw.astext():
                 replace_raw(raw, new)
 
@@ -314,9 +325,7 @@ def lighten(app, exception):
     if exception is None and app.builder.format == "html":
         options = app.config.html_theme_options or {}
         drop_script(
-            app.outdir,
-            search_everywhere=bool(options.get("search_as_you_type")),
-            widget_state=bool(getattr(app.config, "nb_ipywidgets_js", None)),
+            app.outdir, search_everywhere=bool(options.get("search_as_you_type"))
         )
         subset_fonts(app.outdir)
         shrink_images(app.outdir)
@@ -326,5 +335,6 @@ def setup(app):
     app.connect("doctree-resolved", describe_html_images)
     app.connect("doctree-resolved", images_to_files)
     app.connect("doctree-resolved", scripts_to_files)
+    app.connect("html-page-context", no_widget_state, priority=900)
     app.connect("build-finished", lighten)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
