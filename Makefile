@@ -82,9 +82,9 @@ clean:
 notebooks: $(STAMP)
 	$(BIN)/python tools/execute_notebooks.py
 
-## make lint: ruff (pinned in .ci/lint-requirements.txt) checks and format-checks screwkit, tests
-## and .ci, with the rules of pyproject.toml [tool.ruff]
-LINTED := screwkit tests .ci
+## make lint: ruff (pinned in .ci/lint-requirements.txt) checks and format-checks screwkit, tests,
+## .ci and the viewer's book and screenshot tools, with the rules of pyproject.toml [tool.ruff]
+LINTED := screwkit tests .ci book/_ext/light_pages.py tools/viewer_screenshots.py
 lint: $(STAMP)
 	$(BIN)/python -m pip install --quiet --requirement .ci/lint-requirements.txt
 	$(BIN)/ruff check $(LINTED)
