@@ -22,16 +22,17 @@ browser fetches only when the frame is shown, and caches. The redundancy chapter
 animation was 1.7 MB of HTML.
 
 screwkit's own scripts travel inside the HTML outputs of a notebook, so that a notebook
-needs no file and no network: three.js (deflated, 230 kB) and ``viewer.js`` (50 kB) with
-the first viewer of a page, the answer boxes' script (12 kB) with the first box. In the
-book each becomes a file of ``_static/screwkit/`` named by its hash, loaded by a
-``<script src>`` at the same place (so it runs in the same order), which the browser
-fetches once for the whole book and caches. A page's second copy of the same script (a
-stepped figure and a 3D viewer both carry ``viewer.js``) is dropped: the first copy has
-defined ``window.screwkit``, and every figure mounts itself with the call that follows
-it. The notebooks' ipywidgets state (a live widget's model, 118 kB on the mobility page)
-is left out of the pages too (taken out of the page's scripts in Sphinx's
-``html-page-context``): the book loads no widget script that would read it.
+needs no file and no network: three.js (deflated, 230 kB) and the viewers' script (the
+files of ``screwkit/static/viewer/`` joined, 50 kB) with the first viewer of a page, the
+answer boxes' script (12 kB) with the first box. In the book each becomes a file of
+``_static/screwkit/`` named by its hash, loaded by a ``<script src>`` at the same place
+(so it runs in the same order), which the browser fetches once for the whole book and
+caches. A page's second copy of the same script (a stepped figure and a 3D viewer both
+carry the viewers' script) is dropped: the first copy has defined ``window.screwkit``,
+and every figure mounts itself with the call that follows it. The notebooks' ipywidgets
+state (a live widget's model, 118 kB on the mobility page) is left out of the pages too
+(taken out of the page's scripts in Sphinx's ``html-page-context``): the book loads no
+widget script that would read it.
 
 The figures (PNG files of ``_images/``) are written with a palette when they have at
 most 256 colours (lossless), and otherwise quantised to 256 colours (median cut, no
@@ -240,7 +241,8 @@ def images_to_files(app, doctree, docname):
 
 
 # screwkit's scripts inside HTML outputs, each as screwkit writes it: three.js
-# (viewer.library_script), viewer.js (viewer.viewer_script), exercises.js
+# (viewer.library_script), the viewers' script (viewer.viewer_script, which begins with
+# header.js's comment), exercises.js
 SCREWKIT_SCRIPT = re.compile(
     r"<script>\n((?:if\(!window\.THREE\)\{\(function\(\)\{var module="
     r"|/\* screwkit viewer: |// screwkit's self-checking answer boxes).*?)</script>\n?",
