@@ -36,6 +36,7 @@ PACKAGE = "screwkit"
 
 CHECKS = {"GL06", "GL07", "GL08", "PR01", "PR02", "RT01"}
 
+
 def public_modules(package):
     """The public modules of a package and of its public subpackages, imported.
 

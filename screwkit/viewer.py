@@ -3,9 +3,10 @@ CDN.
 
 Each function returns a figure object that Jupyter (Lab, Notebook 7, VS Code, Colab) and
 the built book display as HTML: a ``<div>`` holding the figure's parameters as JSON and
-an inline ``<script>``, the package's ``static/viewer.js``, that computes the kinematics
-in the browser and draws it in 3D with three.js (drag to orbit; Ctrl+wheel, pinch or the
-buttons to zoom; arrow keys and +/- when focused; double-click to reset). three.js is
+an inline ``<script>`` (the files of ``static/viewer/`` joined, see ``VIEWER_PARTS``)
+that computes the kinematics in the browser and draws it in 3D with three.js (drag to
+orbit; Ctrl+wheel, pinch or the buttons to zoom; arrow keys and +/- when focused;
+double-click to reset). three.js is
 vendored from npm (``static/vendor/``, see ``tools/vendor_js.py``), deflated, and
 shipped once: with the first 3D viewer shown in a kernel session (so once per page of
 the book); later viewers use it from the page. Python hands the page only parameters: a
@@ -56,12 +57,32 @@ _ids = itertools.count(1)
 _library = {"shipped": False, "script": None}
 
 
+#: The parts of the viewers' one script (package data ``screwkit/static/viewer/``), in
+#: the order they are joined: together they are the body of one function, written once
+#: per page. Each file is one concern; the join adds nothing between them.
+VIEWER_PARTS = (
+    "header.js",  # what the script is; the function's start; run once per page
+    "kinematics.js",  # exp of a twist, a chain's FK, Jacobian, ellipsoid, platform legs
+    "style.js",  # the viewers' stylesheet and a DOM element helper
+    "scene.js",  # the three.js stage: renderer, camera, meshes, framing, labels
+    "controls.js",  # the stage's pointer, wheel, keyboard and resize handlers
+    "figures.js",  # robot, screw motion, platform and mechanism drawn on a stage
+    "page.js",  # sliders, readouts, aria-live captions, mounting, window.screwkit
+)
+
+
 def viewer_script():
-    """The JavaScript of every viewer (package data ``screwkit/static/viewer.js``)."""
-    return (
-        resources.files("screwkit")
-        .joinpath("static/viewer.js")
-        .read_text(encoding="utf-8")
+    """The JavaScript of every viewer: the files of ``VIEWER_PARTS`` joined in order.
+
+    Returns
+    -------
+    str
+        One classic script that defines ``window.screwkit`` and mounts the page's
+        viewers.
+    """
+    folder = resources.files("screwkit").joinpath("static/viewer")
+    return "".join(
+        folder.joinpath(part).read_text(encoding="utf-8") for part in VIEWER_PARTS
     )
 
 

@@ -10,10 +10,11 @@ import re
 import shutil
 import subprocess
 
+import browser as harness
 import numpy as np
 import pytest
 import sympy as sp
-from browser import CHROMIUM, FLAGS
+from browser import CHROMIUM
 
 from screwkit import exercises
 
@@ -436,7 +437,7 @@ def test_javascript_verdicts_equal_python_ones(fake):
 
 @pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
 def test_answer_boxes_answer_in_the_browser(fake):
-    sync_api = pytest.importorskip("playwright.sync_api")
+    pytest.importorskip("playwright.sync_api")
     boxes = [
         exercises.answer_box("fake", 1, script=True),
         exercises.answer_box("fake", 4, script=False),
@@ -453,27 +454,23 @@ def test_answer_boxes_answer_in_the_browser(fake):
         (2, "120 deg", True),
         (2, "2pi", False),
     ]
-    with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
-        try:
-            page = browser.new_page()
-            errors = []
-            page.on("pageerror", lambda error: errors.append(str(error)))
-            page.set_content(content)
-            for index, text, correct in trials:
-                box = f"#{boxes[index].id}"
-                page.fill(f"{box} input", text)
-                page.click(f"{box} button")
-                shown = page.inner_text(f"{box} .sk-verdict")
-                assert shown.startswith("✓ Right" if correct else "✗ Not yet"), shown
-                expected = exercises.check(
-                    "fake" if index < 2 else "rigid_motions", [1, 4, 5][index], text
-                ).message
-                if not expected.startswith("Could not read"):
-                    assert expected in shown
-            page.fill(f"#{boxes[0].id} input", "60 deg")
-            page.press(f"#{boxes[0].id} input", "Enter")
-            assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
-            assert errors == []
-        finally:
-            browser.close()
+    with harness.launch() as browser:
+        page = browser.new_page()
+        errors = []
+        page.on("pageerror", lambda error: errors.append(str(error)))
+        page.set_content(content)
+        for index, text, correct in trials:
+            box = f"#{boxes[index].id}"
+            page.fill(f"{box} input", text)
+            page.click(f"{box} button")
+            shown = page.inner_text(f"{box} .sk-verdict")
+            assert shown.startswith("✓ Right" if correct else "✗ Not yet"), shown
+            expected = exercises.check(
+                "fake" if index < 2 else "rigid_motions", [1, 4, 5][index], text
+            ).message
+            if not expected.startswith("Could not read"):
+                assert expected in shown
+        page.fill(f"#{boxes[0].id} input", "60 deg")
+        page.press(f"#{boxes[0].id} input", "Enter")
+        assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
+        assert errors == []

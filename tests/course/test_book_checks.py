@@ -21,40 +21,48 @@ def load(path, name):
 site_check = load(".ci/site_check.py", "site_check")
 bibliography_style = load("book/_ext/bibliography_style.py", "bibliography_style")
 
+
+def chapter_shape(name, html):
+    """The site check's rule on a chapter's shape, for the page ``name`` built as
+    ``html``."""
+    return site_check.chapter_has_its_shape(None, site_check.built_page(name, html))
+
+
 CHAPTER = """<h1>A chapter</h1>
 <div class="admonition tip"><p class="admonition-title">What you will learn</p></div>
 <h2>Summary<a class="headerlink" href="#summary">#</a></h2>"""
 
 
 def test_a_chapter_with_both_blocks_passes():
-    assert site_check.check_chapter_shape("notebooks/a.html", CHAPTER) == []
+    assert chapter_shape("notebooks/a.html", CHAPTER) == []
 
 
 def test_a_chapter_without_summary_fails():
     html = CHAPTER.replace("<h2>Summary", "<h2>Speed")
-    assert site_check.check_chapter_shape("notebooks/a.html", html) == [
+    assert chapter_shape("notebooks/a.html", html) == [
         'notebooks/a.html: a chapter without "Summary"'
     ]
 
 
 def test_the_word_summary_in_prose_is_not_a_summary():
     html = CHAPTER.replace("<h2>Summary", "<h2>Speed") + "<p>In Summary, nothing.</p>"
-    assert len(site_check.check_chapter_shape("notebooks/a.html", html)) == 1
+    assert len(chapter_shape("notebooks/a.html", html)) == 1
 
 
 def test_a_chapter_without_outcomes_fails_and_front_matter_is_exempt():
     html = CHAPTER.replace("What you will learn", "Overview")
-    assert len(site_check.check_chapter_shape("notebooks/a.html", html)) == 1
-    assert site_check.check_chapter_shape("book/intro.html", html) == []
+    assert len(chapter_shape("notebooks/a.html", html)) == 1
+    assert chapter_shape("book/intro.html", html) == []
 
 
 def test_placeholder_launch_url_fails():
-    parser = site_check.parse(
+    page = site_check.built_page(
+        "notebooks/a.html",
         '<a href="https://hub.example.edu/hub/user-redirect/git-pull?repo=x">'
         "JupyterHub</a>"
-        '<a href="https://mybinder.org/v2/gh/screwkit/x/main">Binder</a>'
+        '<a href="https://mybinder.org/v2/gh/screwkit/x/main">Binder</a>',
     )
-    problems = site_check.check_placeholder_links("notebooks/a.html", parser)
+    problems = site_check.no_placeholder_links(None, page)
     assert len(problems) == 1 and "hub.example.edu" in problems[0]
 
 
@@ -146,6 +154,14 @@ def test_no_stored_figure_is_a_thumbnail():
     assert small == []
 
 
+def mechanism_problems(root, name, figures):
+    """The site check's rule on a mobility chapter's drawings, for the page ``name`` of
+    a build at ``root`` showing ``figures``."""
+    site = site_check.Site(root=str(root), origin="", pages=[name], tmp="")
+    page = site_check.built_page(name, "", figures)
+    return site_check.mechanisms_are_drawn(site, page)
+
+
 def test_a_mobility_chapter_must_draw_every_mechanism(tmp_path):
     source = tmp_path / "_sources" / "notebooks" / "m.ipynb"
     source.parent.mkdir(parents=True)
@@ -157,14 +173,9 @@ def test_a_mobility_chapter_must_draw_every_mechanism(tmp_path):
     one, two = ["_images/a.png"], ["_images/a.png", "_images/b.png"]
     assert (
         "2 mechanisms analysed"
-        in site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", one)[
-            0
-        ]
+        in (mechanism_problems(tmp_path, "notebooks/m.html", one)[0])
     )
-    assert (
-        site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", two)
-        == []
-    )
+    assert mechanism_problems(tmp_path, "notebooks/m.html", two) == []
     # a chapter that builds mechanisms without analysing their mobility is not of that
     # kind
     source.write_text(
@@ -172,6 +183,4 @@ def test_a_mobility_chapter_must_draw_every_mechanism(tmp_path):
             {"cells": [{"cell_type": "code", "source": ["sk.robots.pm_3prrr()"]}]}
         )
     )
-    assert (
-        site_check.check_mechanism_drawings(str(tmp_path), "notebooks/m.html", []) == []
-    )
+    assert mechanism_problems(tmp_path, "notebooks/m.html", []) == []

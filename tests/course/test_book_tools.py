@@ -207,18 +207,25 @@ def test_screwkit_scripts_become_one_file_each_loaded_in_place(tmp_path):
     assert src(files[sk.exercises.exercises_script()]) in pages[2]
 
 
-def test_the_widget_state_is_left_out_when_the_book_loads_no_widget_script(tmp_path):
-    page = tmp_path / "a.html"
-    kept = '<script type="application/json">{"kind": "robot"}</script>'
-    state = (
-        '\n<script type="application/vnd.jupyter.widget-state+json">'
-        '{"state": {"m": {}}}</script>'
+def test_the_widget_state_is_left_out_when_the_book_loads_no_widget_script():
+    from sphinx.builders.html._assets import _JavaScript
+
+    # as myst-nb adds them to the page's scripts (app.add_js_file in html-page-context)
+    state = _JavaScript(
+        None, type="application/vnd.jupyter.widget-state+json", body='{"state": {}}'
     )
-    page.write_text(f"<html><head>{state}</head><body>{kept}</body></html>")
-    light_pages.drop_script(str(tmp_path), widget_state=True)
-    assert "widget-state" in page.read_text()
-    light_pages.drop_script(str(tmp_path), widget_state=False)
-    assert page.read_text() == f"<html><head></head><body>{kept}</body></html>"
+    script = _JavaScript("_static/book.js", defer="defer")
+    for widget_scripts, kept in (({"w.js": {}}, [script, state]), ({}, [script])):
+        config = types.SimpleNamespace(nb_ipywidgets_js=widget_scripts)
+        context = {"script_files": [script, state]}
+        light_pages.no_widget_state(
+            types.SimpleNamespace(config=config),
+            "notebooks/a",
+            "page.html",
+            context,
+            None,
+        )
+        assert context["script_files"] == kept
 
 
 def test_figures_are_written_with_a_palette_only_when_that_keeps_them(tmp_path):
@@ -275,15 +282,25 @@ def test_figures_are_written_with_a_palette_only_when_that_keeps_them(tmp_path):
 )
 def test_an_alt_text_that_says_nothing_fails(alt):
     attribute = "" if alt is None else f' alt="{alt}"'
-    parser = site_check.parse(f'<img src="../_images/a.png"{attribute}>')
-    assert len(site_check.check_alt_texts("notebooks/a.html", parser)) == 1
+    page = site_check.built_page(
+        "notebooks/a.html", f'<img src="../_images/a.png"{attribute}>'
+    )
+    assert len(site_check.alt_texts_say_what_they_show(None, page)) == 1
 
 
 def test_an_alt_text_that_describes_passes():
-    parser = site_check.parse(
-        '<img src="../_images/a.png" alt="The PUMA 560 at q = 0.">'
+    page = site_check.built_page(
+        "notebooks/a.html", '<img src="../_images/a.png" alt="The PUMA 560 at q = 0.">'
     )
-    assert site_check.check_alt_texts("notebooks/a.html", parser) == []
+    assert site_check.alt_texts_say_what_they_show(None, page) == []
+
+
+def first_cell_problems(root, name):
+    """The site check's rule on the first cell, for the page ``name`` of a build at
+    ``root``."""
+    site = site_check.Site(root=str(root), origin="", pages=[name], tmp="")
+    page = site_check.built_page(name, "")
+    return site_check.first_cell_installs_screwkit(site, page)
 
 
 def write_notebook(root, page, first_source):
@@ -305,10 +322,10 @@ def test_a_chapter_whose_first_cell_installs_screwkit_passes(tmp_path):
             '    %pip install --quiet "git+https://github.com/screwkit/x"',
         ],
     )
-    assert site_check.check_first_cell(str(tmp_path), "notebooks/a.html") == []
+    assert first_cell_problems(tmp_path, "notebooks/a.html") == []
 
 
 def test_a_chapter_without_the_install_cell_fails(tmp_path):
     write_notebook(tmp_path, "notebooks/a.html", ["import screwkit as sk"])
-    assert len(site_check.check_first_cell(str(tmp_path), "notebooks/a.html")) == 1
-    assert site_check.check_first_cell(str(tmp_path), "book/intro.html") == []
+    assert len(first_cell_problems(tmp_path, "notebooks/a.html")) == 1
+    assert first_cell_problems(tmp_path, "book/intro.html") == []
