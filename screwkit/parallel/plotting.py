@@ -9,7 +9,7 @@ Display layer (it imports matplotlib): not loaded by ``import screwkit``; the ch
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .._checks import check_poses, describe
+from .._checks import check_transform, describe
 from .model import ParallelManipulator, Workspace
 
 __all__ = ["draw_planar_platform", "draw_spatial", "draw_workspace"]
@@ -21,7 +21,7 @@ def _check(pm, T):
             f"pm must be a ParallelManipulator (e.g. sk.parallel.planar_3rpr()), got "
             f"{type(pm).__name__}"
         )
-    return pm.home() if T is None else check_poses(T, "T", single_only=True)
+    return pm.home() if T is None else check_transform(T, "T")
 
 
 def _closed(points):
