@@ -6,7 +6,19 @@ gives float64 arrays, vectorised over a leading batch axis). SI units:
 metres and radians. Screws and twists are ordered [angular; linear].
 """
 
-from . import ik, jacobians, joints, limbs, redundancy, robots, urdf, workspace
+from . import (
+    acceleration,
+    differential_ik,
+    ik,
+    jacobians,
+    joints,
+    limbs,
+    redundancy,
+    robots,
+    trajectory,
+    urdf,
+    workspace,
+)
 from .chains import Chain, Convention, Joint, Link, textbook
 from .lie import ad, adjoint, log_rotation, log_transform, vee
 from .mobility import Mobility, grubler_kutzbach, mobility
@@ -55,6 +67,9 @@ def __getattr__(name):
 
 
 __all__ = [
+    "acceleration",
+    "differential_ik",
+    "trajectory",
     "Chain",
     "ad",
     "adjoint",

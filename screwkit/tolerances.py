@@ -21,3 +21,26 @@ in the section of the family that uses it, with its reason.
 # ---- ik: subproblems, closed-form engines, Newton -----------------------------------
 
 # ---- parallel: model, legs, numerics, search ----------------------------------------
+
+# ---- motion: second-order kinematics, trajectories, differential IK ------------------
+
+#: Below this angle (rad) slerp and the SE(2) logarithm take the straight line /
+#: the translation: sin(W) / W is 1 there to within W^2 / 6 < 1e-17, below round-off;
+#: also how far a quaternion's norm may be from 1 (relative) before it is refused.
+SLERP_LINEAR_BELOW = 1e-9
+
+#: Below this angle (rad) a - sin(a) is taken from its series to the a^7 term (the next
+#: term, a^9 / 362880, is below 3e-24 there; the subtraction would lose every digit).
+SERIES_BELOW = 1e-2
+
+#: A sample of a path is near a singularity when its Jacobian's condition number
+#: exceeds 1 / NEAR_SINGULAR: the joint rates are then more than 1000 times the tool's
+#: speed in the worst direction (rows [v; omega] mix m and rad: an arm about 1 m
+#: across).
+NEAR_SINGULAR = 1e-3
+
+#: A differential-IK step tracks the asked twist when the residual |J dq - V| is below
+#: this fraction of |V| (plus this much absolutely): above round-off of a 6 x n
+#: solve (about 1e-15 relative, times a condition number up to 1e3 and margin).
+TRACKING_RTOL = 1e-9
+

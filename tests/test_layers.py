@@ -23,7 +23,7 @@ ORDER = [
     ("checks and engines", ["tolerances", "_checks", "_numeric", "_exact", "_notation"]),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
-    ("Lie algebra", ["lie", "subproblems"]),
+    ("Lie algebra", ["lie", "subproblems", "_second_order"]),
     ("screws", ["screws", "systems"]),
     # _newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls it;
     # urdf is read by Chain.from_urdf
@@ -50,6 +50,9 @@ ORDER = [
             "ur_ik",
             "stanford_ik",
             "ik",
+            "acceleration",
+            "trajectory",
+            "differential_ik",
             "workspace",
             "redundancy",
             "mobility",
