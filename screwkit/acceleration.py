@@ -24,6 +24,7 @@ array([-2.,  0.])
 
 import numpy as np
 import sympy as sp
+from sympy.simplify.fu import TR10i
 
 from . import _second_order
 from ._checks import (
@@ -76,20 +77,29 @@ def _exact_vector(chain, value, name):
 
 
 def _exact_parts(chain, q):
-    """The exact space Jacobian (6, n) and pose (4, 4) at exact q."""
-    q = _exact_vector(chain, q, "q")
-    Js = sp.Matrix.hstack(*chain.twists_symbolic(q, rational=True))
-    T = decimal(chain.fk_symbolic(simplify=False)).as_mutable()
-    T = T.subs(dict(zip(chain.q_symbols, q)))
-    return Js, T
+    """The exact space Jacobian (6, n) and pose (4, 4) in the chain's joint symbols,
+    and the substitution {symbol: value} of the exact q.
+
+    The brackets are taken in the symbols and q put in last: SymPy multiplies
+    expressions in symbols fast, but products of numbers like cos(1/3) slowly (it asks
+    each whether it is zero)."""
+    values = dict(zip(chain.q_symbols, _exact_vector(chain, q, "q")))
+    Js = sp.Matrix.hstack(*chain.twists_symbolic(rational=True))
+    T = decimal(chain.fk_symbolic()).as_mutable()
+    return Js, T, values
+
+
+def _at(result, values):
+    """An exact result (a matrix or a list of them) with the joint values put in."""
+    if isinstance(result, list):
+        return [block.xreplace(values) for block in result]
+    return result.xreplace(values)
 
 
 def _body_exact(Js, T):
-    return adjoint(inv(T)) * Js
-
-
-def _tidy(M):
-    return M
+    """J_b = Ad(T^-1) J_s, in the joint symbols, expanded and with sums of angles
+    combined (the products of rotations cancel there)."""
+    return (adjoint(inv(T)) * Js).applyfunc(lambda e: TR10i(sp.expand(e)))
 
 
 def _float_rates(chain, q, dq, ddq=None):
@@ -120,9 +130,9 @@ def space_jacobian_dot(chain, q, dq):
     """
     check_chain(chain)
     if _exact(q, dq):
-        Js, _ = _exact_parts(chain, q)
+        Js, _, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
-        return _tidy(_second_order.space_dot(Js, dq))
+        return _at(_second_order.space_dot(Js, dq), values)
     return chain.space_jacobian_dot(q, dq)
 
 
@@ -143,9 +153,9 @@ def body_jacobian_dot(chain, q, dq):
     """
     check_chain(chain)
     if _exact(q, dq):
-        Js, T = _exact_parts(chain, q)
+        Js, T, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
-        return _tidy(_second_order.body_dot(_body_exact(Js, T), dq))
+        return _at(_second_order.body_dot(_body_exact(Js, T), dq), values)
     return chain.body_jacobian_dot(q, dq)
 
 
@@ -166,15 +176,10 @@ def geometric_jacobian_dot(chain, q, dq):
     """
     check_chain(chain)
     if _exact(q, dq):
-        Js, T = _exact_parts(chain, q)
+        Js, T, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
-        return _tidy(_second_order.geometric_dot(Js, dq, T[:3, 3]))
+        return _at(_second_order.geometric_dot(Js, dq, T[:3, 3]), values)
     return chain.geometric_jacobian_dot(q, dq)
-
-
-def _stack_exact(blocks):
-    """n exact (6, n) blocks H[j] as a list (SymPy has no 3-index matrix)."""
-    return [_tidy(block) for block in blocks]
 
 
 def space_hessian(chain, q):
@@ -192,7 +197,8 @@ def space_hessian(chain, q):
     """
     check_chain(chain)
     if _exact(q):
-        return _stack_exact(_second_order.space_hessian(_exact_parts(chain, q)[0]))
+        Js, _, values = _exact_parts(chain, q)
+        return _at(_second_order.space_hessian(Js), values)
     return chain.space_hessian(q)
 
 
@@ -212,8 +218,8 @@ def body_hessian(chain, q):
     """
     check_chain(chain)
     if _exact(q):
-        Js, T = _exact_parts(chain, q)
-        return _stack_exact(_second_order.body_hessian(_body_exact(Js, T)))
+        Js, T, values = _exact_parts(chain, q)
+        return _at(_second_order.body_hessian(_body_exact(Js, T)), values)
     return chain.body_hessian(q)
 
 
@@ -233,21 +239,39 @@ def geometric_hessian(chain, q):
     """
     check_chain(chain)
     if _exact(q):
-        Js, T = _exact_parts(chain, q)
-        return _stack_exact(_second_order.geometric_hessian(Js, T[:3, 3]))
+        Js, T, values = _exact_parts(chain, q)
+        return _at(_second_order.geometric_hessian(Js, T[:3, 3]), values)
     return chain.geometric_hessian(q)
 
 
 def _acceleration(chain, q, dq, ddq, jacobian, jacobian_dot):
-    if _exact(q, dq, ddq):
-        ddq = sp.Matrix(_exact_vector(chain, ddq, "ddq"))
-        J = jacobian(q)
-        return _tidy(J * ddq + jacobian_dot(q, dq) * sp.Matrix(dq))
     q, dq, ddq = _float_rates(chain, q, dq, ddq)
     product = "...ij,...j->...i"
     return np.einsum(product, jacobian(q), ddq) + np.einsum(
         product, jacobian_dot(q, dq), dq
     )
+
+
+def _exact_acceleration(chain, q, dq, ddq, form):
+    """J ddq + dJ dq exactly, in the joint symbols, q put in last."""
+    Js, T, values = _exact_parts(chain, q)
+    dq = _exact_vector(chain, dq, "dq")
+    ddq = sp.Matrix(_exact_vector(chain, ddq, "ddq"))
+    if form == "space":
+        J, dJ = Js, _second_order.space_dot(Js, dq)
+    elif form == "body":
+        J = _body_exact(Js, T)
+        dJ = _second_order.body_dot(J, dq)
+    else:
+        p = T[:3, 3]
+        J = sp.Matrix.hstack(
+            *[
+                sp.Matrix.vstack(Js[3:, i] + Js[:3, i].cross(p), Js[:3, i])
+                for i in range(chain.n)
+            ]
+        )
+        dJ = _second_order.geometric_dot(Js, dq, p)
+    return _at(J * ddq + dJ * sp.Matrix(dq), values)
 
 
 def space_acceleration(chain, q, dq, ddq):
@@ -265,14 +289,7 @@ def space_acceleration(chain, q, dq, ddq):
     """
     check_chain(chain)
     if _exact(q, dq, ddq):
-        return _acceleration(
-            chain,
-            q,
-            _exact_vector(chain, dq, "dq"),
-            ddq,
-            lambda q: _exact_parts(chain, q)[0],
-            lambda q, dq: space_jacobian_dot(chain, q, dq),
-        )
+        return _exact_acceleration(chain, q, dq, ddq, "space")
     return _acceleration(
         chain, q, dq, ddq, chain.space_jacobian, chain.space_jacobian_dot
     )
@@ -293,14 +310,7 @@ def body_acceleration(chain, q, dq, ddq):
     """
     check_chain(chain)
     if _exact(q, dq, ddq):
-        return _acceleration(
-            chain,
-            q,
-            _exact_vector(chain, dq, "dq"),
-            ddq,
-            lambda q: _body_exact(*_exact_parts(chain, q)),
-            lambda q, dq: body_jacobian_dot(chain, q, dq),
-        )
+        return _exact_acceleration(chain, q, dq, ddq, "body")
     return _acceleration(chain, q, dq, ddq, chain.body_jacobian, chain.body_jacobian_dot)
 
 
@@ -324,25 +334,7 @@ def geometric_acceleration(chain, q, dq, ddq):
     """
     check_chain(chain)
     if _exact(q, dq, ddq):
-
-        def jacobian(q):
-            Js, T = _exact_parts(chain, q)
-            p = T[:3, 3]
-            return sp.Matrix.hstack(
-                *[
-                    sp.Matrix.vstack(Js[3:, i] + Js[:3, i].cross(p), Js[:3, i])
-                    for i in range(chain.n)
-                ]
-            )
-
-        return _acceleration(
-            chain,
-            q,
-            _exact_vector(chain, dq, "dq"),
-            ddq,
-            jacobian,
-            lambda q, dq: geometric_jacobian_dot(chain, q, dq),
-        )
+        return _exact_acceleration(chain, q, dq, ddq, "geometric")
     return _acceleration(
         chain, q, dq, ddq, chain.geometric_jacobian, chain.geometric_jacobian_dot
     )
