@@ -36,9 +36,7 @@ def bracket(a, b):
             ]
         )
     wa, va, wb, vb = a[..., :3, :], a[..., 3:, :], b[..., :3, :], b[..., 3:, :]
-    return np.concatenate(
-        [_cross(wa, wb), _cross(wa, vb) + _cross(va, wb)], axis=-2
-    )
+    return np.concatenate([_cross(wa, wb), _cross(wa, vb) + _cross(va, wb)], axis=-2)
 
 
 def _cross(a, b):

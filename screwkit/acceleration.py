@@ -64,16 +64,12 @@ def _exact_vector(chain, value, name):
             f"expressions, got {describe(value)}"
         )
     entries = list(value) if not isinstance(value, np.ndarray) else value.tolist()
-    if len(entries) != chain.n or any(
-        isinstance(e, (list, tuple)) for e in entries
-    ):
+    if len(entries) != chain.n or any(isinstance(e, (list, tuple)) for e in entries):
         raise ValueError(
             f"{name} must have {chain.n} entries for this chain (one configuration "
             f"for exact input), got {describe(value)}"
         )
-    return [
-        decimal(as_sympy_scalar(e, f"{name}[{i}]")) for i, e in enumerate(entries)
-    ]
+    return [decimal(as_sympy_scalar(e, f"{name}[{i}]")) for i, e in enumerate(entries)]
 
 
 def _exact_parts(chain, q):
@@ -311,7 +307,9 @@ def body_acceleration(chain, q, dq, ddq):
     check_chain(chain)
     if _exact(q, dq, ddq):
         return _exact_acceleration(chain, q, dq, ddq, "body")
-    return _acceleration(chain, q, dq, ddq, chain.body_jacobian, chain.body_jacobian_dot)
+    return _acceleration(
+        chain, q, dq, ddq, chain.body_jacobian, chain.body_jacobian_dot
+    )
 
 
 def geometric_acceleration(chain, q, dq, ddq):

@@ -30,7 +30,7 @@ import daqp
 import numpy as np
 
 from ._checks import as_float_array, check_chain, check_positive, describe
-from .tolerances import TRACKING_RTOL
+from .tolerances import PROXIMAL_STOP, PROXIMAL_WEIGHT, TRACKING_RTOL
 
 __all__ = ["Step", "pseudo_inverse_step", "qp_step"]
 
@@ -152,15 +152,13 @@ def pseudo_inverse_step(chain, q, twist, dt, rows="all", damping=0.0, v_max=None
         )
         for k in np.flatnonzero(broken)
     )
-    reason = (
-        "the step breaks the limits of " + ", ".join(limited) if limited else None
-    )
+    reason = "the step breaks the limits of " + ", ".join(limited) if limited else None
     if not tracked and reason is None:
         reason = f"J dq misses the twist by {error:.3g} (a singular or damped J)"
     return Step(dq, not limited, tracked, error, limited, reason, "pseudo-inverse")
 
 
-def qp_step(chain, q, twist, dt, rows="all", damping=1e-3, v_max=None, exact=False):
+def qp_step(chain, q, twist, dt, rows="all", damping=0.0, v_max=None, exact=False):
     """The least-squares rates within the position and rate limits, as a QP (DAQP).
 
     Parameters
@@ -170,8 +168,9 @@ def qp_step(chain, q, twist, dt, rows="all", damping=1e-3, v_max=None, exact=Fal
     twist : array-like, the wanted twist in the rows ``rows`` (m/s, rad/s)
     dt : float, the step's duration (s): q + dq dt must stay within the limits
     rows : 'all', 'position', 'orientation' or 'planar'
-    damping : float >= 0, lambda; > 0 keeps the QP strictly convex for a redundant
-        arm (the answer is then the damped least squares)
+    damping : float >= 0, lambda: > 0 gives the damped least squares (robust near a
+        singularity); 0 (default) the least squares itself, solved by DAQP's
+        proximal iterations when J^T J is singular (a redundant arm)
     v_max : optional, one number or (n,), joint rate limits (rad/s), positive
     exact : bool, require J dq = V as a constraint (infeasible if the limits forbid)
 
@@ -217,7 +216,10 @@ def qp_step(chain, q, twist, dt, rows="all", damping=1e-3, v_max=None, exact=Fal
         np.clip(upper_all, -big, big),
         np.clip(lower_all, -big, big),
         sense.astype(np.int32),
-        eps_prox=0.0 if damping > 0 or n <= J.shape[0] else -1.0,
+        # without damping H may be singular (a redundant arm): proximal iterations,
+        # each a strictly convex QP, converge to an optimum of the original one
+        eps_prox=0.0 if damping > 0 else PROXIMAL_WEIGHT,
+        eta_prox=PROXIMAL_STOP,
     )
     if flag != 1:
         why = (
@@ -232,9 +234,8 @@ def qp_step(chain, q, twist, dt, rows="all", damping=1e-3, v_max=None, exact=Fal
     limited = _named(dq, v, lower, upper)
     reason = None
     if not tracked:
-        reason = (
-            f"J dq misses the twist by {error:.3g}: the step meets "
-            + (", ".join(limited) if limited else "no limit (a singular or damped J)")
+        reason = f"J dq misses the twist by {error:.3g}: the step meets " + (
+            ", ".join(limited) if limited else "no limit (a singular or damped J)"
         )
     return Step(dq, True, tracked, error, limited, reason, "qp")
 

@@ -44,3 +44,11 @@ NEAR_SINGULAR = 1e-3
 #: solve (about 1e-15 relative, times a condition number up to 1e3 and margin).
 TRACKING_RTOL = 1e-9
 
+#: DAQP's proximal-point weight for an undamped (only convex) differential-IK QP:
+#: each iteration adds PROXIMAL_WEIGHT |dq - dq_previous|^2; 1e-2 against J^T J of
+#: entries about 1 (m^2) converges in a few iterations.
+PROXIMAL_WEIGHT = 1e-2
+
+#: DAQP stops its proximal iterations when the iterate moves less than this (rad/s):
+#: J dq then meets V to round-off (about 1e-15 on the chapter's arms).
+PROXIMAL_STOP = 1e-12

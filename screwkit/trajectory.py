@@ -461,9 +461,7 @@ def _screw_poses(T_start, twist, s):
     # a - sin(a) loses every digit to cancellation for small a: its series there
     small = np.abs(a) < SERIES_BELOW
     a_minus_sine = np.where(small, a**3 / 6 - a**5 / 120 + a**7 / 5040, a - sine)
-    poses[:, :3, :3] = (
-        R0 + sine[:, None, None] * R0W + one_minus[:, None, None] * R0W2
-    )
+    poses[:, :3, :3] = R0 + sine[:, None, None] * R0W + one_minus[:, None, None] * R0W2
     poses[:, :3, 3] = (
         p0
         + a[:, None] * (R0 @ v)
@@ -611,10 +609,7 @@ class ViaPoints:
             + (3 * u**2 - 2 * u) * m1
         ) / h
         ddq = (
-            (12 * u - 6) * p0
-            + (6 * u - 4) * m0
-            + (-12 * u + 6) * p1
-            + (6 * u - 2) * m1
+            (12 * u - 6) * p0 + (6 * u - 4) * m0 + (-12 * u + 6) * p1 + (6 * u - 2) * m1
         ) / h**2
         return q, dq, ddq
 

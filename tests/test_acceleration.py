@@ -28,8 +28,12 @@ def body_arm():
     """A chain from body screws (RRPR), with a tool."""
     M = sk.transl(0.2, 0.1, 0.5)
     return sk.Chain.from_screws(
-        [[0, 0, 1, 0.1, -0.2, 0], [1, 0, 0, 0, 0.3, 0.1], [0, 0, 0, 0, 0, 1],
-         [0, 1, 0, -0.2, 0, 0.05]],
+        [
+            [0, 0, 1, 0.1, -0.2, 0],
+            [1, 0, 0, 0, 0.3, 0.1],
+            [0, 0, 0, 0, 0, 1],
+            [0, 1, 0, -0.2, 0, 0.05],
+        ],
         M,
         frame="body",
     ).with_tool(sk.transl(0, 0, 0.1) @ sk.homogeneous(sk.rotz(0.3)))
@@ -78,7 +82,9 @@ def test_jacobian_dot_equals_central_differences_along_dq(chain, form):
 def test_hessian_equals_central_differences_of_the_jacobian(chain, form):
     q, _ = sample(chain, 1)
     J = getattr(chain, f"{form}_jacobian")
-    expected = np.array([(J(q + H * e) - J(q - H * e)) / (2 * H) for e in np.eye(chain.n)])
+    expected = np.array(
+        [(J(q + H * e) - J(q - H * e)) / (2 * H) for e in np.eye(chain.n)]
+    )
     got = getattr(chain, f"{form}_hessian")(q)
     assert got.shape == (chain.n, 6, chain.n)
     np.testing.assert_allclose(got, expected, atol=DIFF_TOL)
@@ -166,11 +172,13 @@ def test_space_and_body_accelerations_are_the_twists_derivatives(chain):
 
     (s1, b1), (s0, b0) = twists(H), twists(-H)
     np.testing.assert_allclose(
-        acceleration.space_acceleration(chain, q, dq, ddq), (s1 - s0) / (2 * H),
+        acceleration.space_acceleration(chain, q, dq, ddq),
+        (s1 - s0) / (2 * H),
         atol=DIFF_TOL,
     )
     np.testing.assert_allclose(
-        acceleration.body_acceleration(chain, q, dq, ddq), (b1 - b0) / (2 * H),
+        acceleration.body_acceleration(chain, q, dq, ddq),
+        (b1 - b0) / (2 * H),
         atol=DIFF_TOL,
     )
 

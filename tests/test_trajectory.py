@@ -43,7 +43,9 @@ def test_derivatives_equal_differences(scaling):
     h = 1e-6
     t = np.linspace(0.01, scaling.duration - 0.01, 37)
     s, ds, dds = scaling.evaluate(t)
-    np.testing.assert_allclose(ds, (scaling(t + h) - scaling(t - h)) / (2 * h), atol=1e-8)
+    np.testing.assert_allclose(
+        ds, (scaling(t + h) - scaling(t - h)) / (2 * h), atol=1e-8
+    )
     # a trapezoid's acceleration jumps: compare away from its two switches
     ramp = scaling.peak_velocity / scaling.peak_acceleration
     away = (np.abs(t - ramp) > 1e-3) & (np.abs(t - (scaling.duration - ramp)) > 1e-3)
@@ -148,8 +150,10 @@ def test_se2_paths_equal_the_se3_paths_of_the_same_planar_poses(angles):
         planar_path = path(P0, P1, s)
         spatial = path(embed(P0), embed(P1), s)
         np.testing.assert_allclose(
-            planar_path, np.array([[[*T[0, [0, 1, 3]]], [*T[1, [0, 1, 3]]],
-                                    [0, 0, 1]] for T in spatial]),
+            planar_path,
+            np.array(
+                [[[*T[0, [0, 1, 3]]], [*T[1, [0, 1, 3]]], [0, 0, 1]] for T in spatial]
+            ),
             atol=1e-13,
         )
 
@@ -181,9 +185,9 @@ def test_via_points_pass_through_and_keep_velocity_continuous():
 
 
 def test_a_line_through_the_pumas_wrist_singularity_is_named():
-    """The PUMA at q5 = 0 has joints 4 and 6 aligned: a straight line of the tool through
-    that pose meets the wrist singularity; the IK path says where and stays on its
-    branch."""
+    """The PUMA at q5 = 0 has joints 4 and 6 aligned: a straight line of the tool
+    through that pose meets the wrist singularity; the IK path says where and stays on
+    its branch."""
     puma = sk.robots.puma560()
     qa = np.array([0.2, -0.6, 0.3, 0.4, 0.3, -0.2])
     qb = np.array([0.2, -0.6, 0.3, 0.4, -0.3, -0.2])
