@@ -85,6 +85,18 @@ def _exact_parts(chain, q):
     return Js, T, values
 
 
+def _geometric_exact(Js, T):
+    """The geometric Jacobian from the space one: column (v + w x p; w), p T's
+    origin."""
+    p = T[:3, 3]
+    return sp.Matrix.hstack(
+        *[
+            sp.Matrix.vstack(Js[3:, i] + Js[:3, i].cross(p), Js[:3, i])
+            for i in range(Js.shape[1])
+        ]
+    )
+
+
 def _at(result, values):
     """An exact result (a matrix or a list of them) with the joint values put in."""
     if isinstance(result, list):
@@ -174,7 +186,7 @@ def geometric_jacobian_dot(chain, q, dq):
     if _exact(q, dq):
         Js, T, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
-        return _at(_second_order.geometric_dot(Js, dq, T[:3, 3]), values)
+        return _at(_second_order.geometric_dot(_geometric_exact(Js, T), dq), values)
     return chain.geometric_jacobian_dot(q, dq)
 
 
@@ -236,7 +248,7 @@ def geometric_hessian(chain, q):
     check_chain(chain)
     if _exact(q):
         Js, T, values = _exact_parts(chain, q)
-        return _at(_second_order.geometric_hessian(Js, T[:3, 3]), values)
+        return _at(_second_order.geometric_hessian(_geometric_exact(Js, T)), values)
     return chain.geometric_hessian(q)
 
 
@@ -259,14 +271,8 @@ def _exact_acceleration(chain, q, dq, ddq, form):
         J = _body_exact(Js, T)
         dJ = _second_order.body_dot(J, dq)
     else:
-        p = T[:3, 3]
-        J = sp.Matrix.hstack(
-            *[
-                sp.Matrix.vstack(Js[3:, i] + Js[:3, i].cross(p), Js[:3, i])
-                for i in range(chain.n)
-            ]
-        )
-        dJ = _second_order.geometric_dot(Js, dq, p)
+        J = _geometric_exact(Js, T)
+        dJ = _second_order.geometric_dot(J, dq)
     return _at(J * ddq + dJ * sp.Matrix(dq), values)
 
 

@@ -1045,8 +1045,9 @@ class Chain(ChainType):
     def geometric_jacobian_dot(self, q, dq):
         """The time derivative of the geometric Jacobian at joint rates dq.
 
-        From the space one: column i is (v_i + w_i x p; w_i), so its derivative is
-        (dv_i + dw_i x p + w_i x dp/dt; dw_i) with p the end-effector point.
+        Column i, (u_i; w_i), changes by (W_i x u_i + w_i x S_i; W_i x w_i), with W_i
+        the sum of w_j dq_j over the joints j < i and S_i that of u_j dq_j over
+        j >= i (the brackets of the space form moved to the end point).
 
         Parameters
         ----------
@@ -1058,8 +1059,7 @@ class Chain(ChainType):
         ndarray, shape (6, n) or (N, 6, n), rows [v; omega] per second
         """
         q, dq = self._rates(q, dq)
-        p = self.fk(q)[..., :3, 3]
-        return _second_order.geometric_dot(self.space_jacobian(q), dq, p)
+        return _second_order.geometric_dot(self.geometric_jacobian(q), dq)
 
     def space_hessian(self, q):
         """The kinematic Hessian of the space Jacobian, H[j, :, i] = dJ_i/dq_j.
@@ -1105,6 +1105,4 @@ class Chain(ChainType):
         -------
         ndarray, shape (n, 6, n) or (N, n, 6, n)
         """
-        q = self.check_q(q)
-        p = self.fk(q)[..., :3, 3]
-        return _second_order.geometric_hessian(self.space_jacobian(q), p)
+        return _second_order.geometric_hessian(self.geometric_jacobian(self.check_q(q)))

@@ -141,6 +141,7 @@ def test_jacobian_dot_and_hessian_equal_the_robotics_toolboxs():
         "(pip install -r benchmarks/requirements.txt)",
     )
     robot = rtb.models.DH.Puma560()
+    robot.links[0].d = 0.0  # screwkit's PUMA has its base frame at the shoulder
     puma = sk.robots.puma560()
     rng = np.random.default_rng(12)
     for q, dq in zip(rng.uniform(-2, 2, (10, 6)), rng.uniform(-1, 1, (10, 6))):
