@@ -57,7 +57,7 @@ def _rates(dq):
     return np.ascontiguousarray(np.moveaxis(dq, -1, 0))
 
 
-def _batch_first(C):
+def batch_first(C):
     """(6, n, ...) -> (..., 6, n): a view (as the chain's fk returns its batch)."""
     return np.moveaxis(C, (0, 1), (-2, -1))
 
@@ -107,13 +107,17 @@ def space_dot(Js, dq):
             columns.append(bracket(W, Js[:, i]))
             W = W + V[i]
         return sp.Matrix.hstack(*columns)
-    C, rates = _components(Js), _rates(dq)
+    return batch_first(space_dot_rows(_components(Js), _rates(dq)))
+
+
+def space_dot_rows(C, rates):
+    """:func:`space_dot` laid out batch last: C (6, n, ...), rates (n, ...)."""
     W = _before(C, rates)
     out = np.empty_like(C)
     _cross_into(out[:3], W[:3], C[:3])
     _cross_into(out[3:], W[:3], C[3:])
     _cross_into(out[3:], W[3:], C[:3], add=True)
-    return _batch_first(out)
+    return out
 
 
 def body_dot(Jb, dq):
@@ -130,7 +134,7 @@ def body_dot(Jb, dq):
     _cross_into(out[:3], C[:3], W[:3])
     _cross_into(out[3:], C[:3], W[3:])
     _cross_into(out[3:], C[3:], W[:3], add=True)
-    return _batch_first(out)
+    return batch_first(out)
 
 
 def geometric_dot(Jg, dq):
@@ -147,13 +151,17 @@ def geometric_dot(Jg, dq):
             u, w = Jg[:3, i], Jg[3:, i]
             columns.append(sp.Matrix.vstack(W.cross(u) + w.cross(S), W.cross(w)))
         return sp.Matrix.hstack(*columns)
-    C, rates = _components(Jg), _rates(dq)
+    return batch_first(geometric_dot_rows(_components(Jg), _rates(dq)))
+
+
+def geometric_dot_rows(C, rates):
+    """:func:`geometric_dot` laid out batch last: C (6, n, ...), rates (n, ...)."""
     W, S = _before(C[3:], rates), _from(C[:3], rates)
     out = np.empty_like(C)
     _cross_into(out[:3], W, C[:3])
     _cross_into(out[:3], C[3:], S, add=True)
     _cross_into(out[3:], W, C[3:])
-    return _batch_first(out)
+    return out
 
 
 def space_hessian(Js):

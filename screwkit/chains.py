@@ -1007,6 +1007,14 @@ class Chain(ChainType):
             )
         return q, dq
 
+    def _jacobian_rows_batch_last(self, outputs, q):
+        """The generated Jacobian 'space' or 'geometric' of a batch q (N, n), laid
+        out (6, n, N) as computed: each entry contiguous over the batch (no
+        transpose, no copy)."""
+        values = np.empty((6 * self.n, q.shape[0]))
+        self._run(outputs, q, range(6 * self.n), values)
+        return values.reshape(6, self.n, -1)
+
     def space_jacobian_dot(self, q, dq):
         """The time derivative of the space Jacobian at joint rates dq (rad/s, m/s).
 
@@ -1023,7 +1031,12 @@ class Chain(ChainType):
         ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second
         """
         q, dq = self._rates(q, dq)
-        return _second_order.space_dot(self.space_jacobian(q), dq)
+        if q.ndim == 1:
+            return _second_order.space_dot(self.space_jacobian(q), dq)
+        rows = self._jacobian_rows_batch_last("space", q)
+        return _second_order.batch_first(
+            _second_order.space_dot_rows(rows, np.ascontiguousarray(dq.T))
+        )
 
     def body_jacobian_dot(self, q, dq):
         """The time derivative of the body Jacobian at joint rates dq.
@@ -1059,7 +1072,12 @@ class Chain(ChainType):
         ndarray, shape (6, n) or (N, 6, n), rows [v; omega] per second
         """
         q, dq = self._rates(q, dq)
-        return _second_order.geometric_dot(self.geometric_jacobian(q), dq)
+        if q.ndim == 1:
+            return _second_order.geometric_dot(self.geometric_jacobian(q), dq)
+        rows = self._jacobian_rows_batch_last("geometric", q)
+        return _second_order.batch_first(
+            _second_order.geometric_dot_rows(rows, np.ascontiguousarray(dq.T))
+        )
 
     def space_hessian(self, q):
         """The kinematic Hessian of the space Jacobian, H[j, :, i] = dJ_i/dq_j.
