@@ -84,9 +84,9 @@ def test_key_agrees_with_its_reference(number):
 
 
 def test_the_chapters_problem_set_is_complete():
-    """The course's rule for a problem set (tests/test_course_content.py): at least eight
-    exercises numbered in order, one hidden solution each, two by hand, two to implement,
-    two answer boxes with keys."""
+    """The course's rule for a problem set (tests/test_course_content.py): eight or
+    more exercises numbered in order, one hidden solution each, two by hand, two to
+    implement, two answer boxes with keys."""
     from test_course_content import test_problem_set_is_complete
 
     test_problem_set_is_complete(CHAPTER)
