@@ -90,4 +90,3 @@ def test_the_chapters_problem_set_is_complete():
     from test_course_content import test_problem_set_is_complete
 
     test_problem_set_is_complete(CHAPTER)
-
