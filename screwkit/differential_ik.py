@@ -7,7 +7,7 @@ Two answers side by side (Tedrake, *Robotic Manipulation*, ch. 3):
   would drive past theirs (it never clips them silently);
 * :func:`qp_step`: the same least squares as a quadratic programme,
 
-      minimise |J dq - V|^2 + lambda^2 |dq|^2
+      minimise norm(J dq - V)^2 + lambda^2 norm(dq)^2
       subject to  max(-v_max, (q_min - q) / dt) <= dq <= min(v_max, (q_max - q) / dt),
 
   solved exactly by DAQP (a dual active-set solver); with ``exact=True`` the twist
@@ -40,18 +40,16 @@ _INEQUALITY, _EQUALITY = 0, 5
 
 @dataclass(frozen=True)
 class Step:
-    """One differential-IK step.
+    """One differential-IK step. Its fields:
 
-    Attributes
-    ----------
-    dq : ndarray, shape (n,), the joint rates (rad/s, m/s); NaN when infeasible
-    feasible : bool, the rates respect every limit (and, with ``exact``, give V)
-    tracked : bool, J dq equals the wanted twist (to TRACKING_RTOL)
-    tracking_error : float, |J dq - V| (m/s and rad/s mixed as the rows are)
-    limited : tuple of str, the limits the step meets or would break
-        ('joint 3 upper position', 'joint 1 velocity', ...)
-    reason : str or None, why the step is infeasible or not tracked
-    method : str, 'pseudo-inverse' or 'qp'
+    - ``dq`` (n,): the joint rates (rad/s, m/s); NaN when infeasible;
+    - ``feasible``: the rates respect every limit (and, with ``exact``, give V);
+    - ``tracked``: J dq equals the wanted twist (to TRACKING_RTOL);
+    - ``tracking_error``: the norm of J dq - V (m/s and rad/s mixed as the rows are);
+    - ``limited``: the limits the step meets or would break, a tuple of str
+      ('joint 3 upper position', 'joint 1 velocity', ...);
+    - ``reason``: why the step is infeasible or not tracked, or None;
+    - ``method``: 'pseudo-inverse' or 'qp'.
     """
 
     dq: np.ndarray

@@ -75,7 +75,7 @@ def _limit(value, name):
     return float(number)
 
 
-#: Peak ds/dt times T and peak |d2s/dt2| times T^2 of each polynomial scaling:
+#: Peak ds/dt times T and peak abs(d2s/dt2) times T^2 of each polynomial scaling:
 #: cubic 3/2 and 6; quintic 15/8 and 10/sqrt(3) (at tau = 1/2 -+ sqrt(3)/6).
 PEAKS = {"cubic": (1.5, 6.0), "quintic": (15 / 8, 10 / np.sqrt(3))}
 
@@ -84,14 +84,10 @@ PEAKS = {"cubic": (1.5, 6.0), "quintic": (15 / 8, 10 / np.sqrt(3))}
 class TimeScaling:
     """A time scaling s(t) from s(0) = 0 to s(duration) = 1, at rest at both ends.
 
-    Build one with :func:`cubic`, :func:`quintic` or :func:`trapezoidal`.
-
-    Attributes
-    ----------
-    kind : str, 'cubic', 'quintic' or 'trapezoidal'
-    duration : float, s
-    peak_velocity : float, the largest ds/dt (1/s)
-    peak_acceleration : float, the largest |d2s/dt2| (1/s^2)
+    Build one with :func:`cubic`, :func:`quintic` or :func:`trapezoidal`. Its fields:
+    ``kind`` ('cubic', 'quintic' or 'trapezoidal'), ``duration`` (s),
+    ``peak_velocity`` (the largest ds/dt, 1/s) and ``peak_acceleration`` (the largest
+    magnitude of d2s/dt2, 1/s^2).
     """
 
     kind: str
@@ -195,7 +191,8 @@ def cubic(duration=None, *, v_max=None, a_max=None):
     ----------
     duration : float, s; None for the shortest that the limits allow
     v_max : float, optional, the largest ds/dt allowed (1/s)
-    a_max : float, optional, the largest |d2s/dt2| allowed (1/s^2)
+    a_max : float, optional, the largest magnitude of d2s/dt2 allowed
+        (1/s^2)
 
     Returns
     -------
@@ -212,7 +209,8 @@ def quintic(duration=None, *, v_max=None, a_max=None):
     ----------
     duration : float, s; None for the shortest that the limits allow
     v_max : float, optional, the largest ds/dt allowed (1/s)
-    a_max : float, optional, the largest |d2s/dt2| allowed (1/s^2)
+    a_max : float, optional, the largest magnitude of d2s/dt2 allowed
+        (1/s^2)
 
     Returns
     -------
@@ -271,8 +269,8 @@ def trapezoidal(duration=None, *, v_max=None, a_max=None):
 
 def fastest_joint_scaling(profile, q_start, q_end, v_max, a_max):
     """The shortest scaling of the straight joint path q_start -> q_end under joint
-    limits: joint i moves by d_i, so it asks ds/dt <= v_i / |d_i| and
-    |d2s/dt2| <= a_i / |d_i|; the smallest of those bound s.
+    limits: joint i moves by d_i, so it asks ds/dt <= v_i / abs(d_i) and
+    abs(d2s/dt2) <= a_i / abs(d_i); the smallest of those bound s.
 
     Parameters
     ----------
@@ -512,7 +510,7 @@ def cartesian_path(T_start, T_end, s):
 def slerp(q_start, q_end, s):
     """Spherical linear interpolation of unit quaternions (w, x, y, z), the shorter way.
 
-    q(s) = sin((1 - s) W) / sin W q0 + sin(s W) / sin W q1 with cos W = |q0 . q1|
+    q(s) = sin((1 - s) W) / sin W q0 + sin(s W) / sin W q1 with cos W = abs(q0 . q1)
     (q1 negated if q0 . q1 < 0: q and -q are one rotation); below a tiny angle the
     normalised straight line, which equals it there to round-off.
 
@@ -561,13 +559,8 @@ def _unit_quaternion(q, name):
 @dataclass(frozen=True)
 class ViaPoints:
     """Cubic pieces through points at times, velocity continuous (see
-    :func:`via_points`).
-
-    Attributes
-    ----------
-    times : ndarray, shape (M,), increasing (s)
-    points : ndarray, shape (M, n)
-    velocities : ndarray, shape (M, n), the velocity at each point
+    :func:`via_points`). Its fields: ``times`` (M,) increasing (s), ``points`` (M, n)
+    and ``velocities`` (M, n), the velocity at each point.
     """
 
     times: np.ndarray
@@ -664,18 +657,15 @@ def via_points(times, points, velocities=None):
 
 @dataclass(frozen=True)
 class PathIK:
-    """The joint path of a path of poses (see :func:`follow_path`).
+    """The joint path of a path of poses (see :func:`follow_path`). Its fields:
 
-    Attributes
-    ----------
-    q : ndarray, shape (K, n), joint values, continuous (no jump of a whole turn)
-    reached : ndarray of bool, shape (K,), the IK found the pose
-    singular : ndarray of bool, shape (K,), the Jacobian's smallest singular value is
-        below NEAR_SINGULAR times its largest (or the closed form flags a
-        singularity)
-    condition : ndarray, shape (K,), the Jacobian's condition number
-    config : list of str, the closed-form branch of each sample ('' for numeric IK)
-    reason : str or None, why some pose was not reached
+    - ``q`` (K, n): joint values, continuous (no jump of a whole turn);
+    - ``reached`` (K,) bool: the IK found the pose;
+    - ``singular`` (K,) bool: the Jacobian's smallest singular value is below
+      NEAR_SINGULAR times its largest, or the closed form flags a singularity;
+    - ``condition`` (K,): the Jacobian's condition number;
+    - ``config``: the closed-form branch of each sample ('' for numeric IK);
+    - ``reason``: why some pose was not reached, or None.
     """
 
     q: np.ndarray
