@@ -12,7 +12,9 @@ import types
 import warnings
 
 from . import (
+    acceleration,
     chains,
+    differential_ik,
     ik,
     jacobians,
     lie,
@@ -26,6 +28,7 @@ from . import (
     screws,
     systems,
     tolerances,
+    trajectory,
     transforms,
     urdf,
     workspace,
@@ -112,7 +115,9 @@ sys.modules[f"{__name__}.mobility"] = _MovedModule("mobility", mobility_analysis
 
 __all__ = [
     # submodules (plotting, viewer, widgets and exercises load on first use)
+    "acceleration",
     "chains",
+    "differential_ik",
     "exercises",
     "ik",
     "jacobians",
@@ -128,6 +133,7 @@ __all__ = [
     "screws",
     "systems",
     "tolerances",
+    "trajectory",
     "transforms",
     "urdf",
     "viewer",

@@ -31,7 +31,7 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _compiled, _numeric
+from . import _compiled, _numeric, _second_order
 from ._checks import (
     ChainType,
     as_float_array,
@@ -1325,3 +1325,132 @@ class Chain(ChainType):
         for S, qi in zip(self.screw_axes(), q):
             T = T @ exp_twist(S, qi)
         return T @ self.home()
+
+    # ---- second order: Jacobians in time (issue 33; see screwkit.acceleration) -------
+
+    def _rates(self, q, dq):
+        """q and the joint rates dq as float64 of one shape, (n,) or (N, n)."""
+        q, dq = self.check_q(q), self.check_q(dq, "dq")
+        if dq.shape != q.shape:
+            raise ValueError(
+                f"dq must have the shape of q, {q.shape}, got shape {dq.shape}"
+            )
+        return q, dq
+
+    def _jacobian_rows_batch_last(self, outputs, q):
+        """The generated Jacobian 'space' or 'geometric' of a batch q (N, n), laid
+        out (6, n, N) as computed: each entry contiguous over the batch (no
+        transpose, no copy)."""
+        values = np.empty((6 * self.n, q.shape[0]))
+        self._run(outputs, q, range(6 * self.n), values)
+        return values.reshape(6, self.n, -1)
+
+    def space_jacobian_dot(self, q, dq):
+        """The time derivative of the space Jacobian at joint rates dq (rad/s, m/s).
+
+        Column i is the bracket [W_i, J_i] of joint i's twist with W_i, the sum of
+        J_j dq_j over the joints j < i before it (the twist of link i - 1).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n), joint values (rad, m)
+        dq : array-like, the shape of q, joint rates
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second
+        """
+        q, dq = self._rates(q, dq)
+        if q.ndim == 1:
+            return _second_order.space_dot(self.space_jacobian(q), dq)
+        rows = self._jacobian_rows_batch_last("space", q)
+        return _second_order.batch_first(
+            _second_order.space_dot_rows(rows, np.ascontiguousarray(dq.T))
+        )
+
+    def body_jacobian_dot(self, q, dq):
+        """The time derivative of the body Jacobian at joint rates dq.
+
+        Column i is [Jb_i, Wb_i], Wb_i the sum of Jb_j dq_j over the joints j > i.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n), joint values (rad, m)
+        dq : array-like, the shape of q, joint rates
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second
+        """
+        q, dq = self._rates(q, dq)
+        return _second_order.body_dot(self.body_jacobian(q), dq)
+
+    def geometric_jacobian_dot(self, q, dq):
+        """The time derivative of the geometric Jacobian at joint rates dq.
+
+        Column i, (u_i; w_i), changes by (W_i x u_i + w_i x S_i; W_i x w_i), with W_i
+        the sum of w_j dq_j over the joints j < i and S_i that of u_j dq_j over
+        j >= i (the brackets of the space form moved to the end point).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n), joint values (rad, m)
+        dq : array-like, the shape of q, joint rates
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n), rows [v; omega] per second
+        """
+        q, dq = self._rates(q, dq)
+        if q.ndim == 1:
+            return _second_order.geometric_dot(self.geometric_jacobian(q), dq)
+        rows = self._jacobian_rows_batch_last("geometric", q)
+        return _second_order.batch_first(
+            _second_order.geometric_dot_rows(rows, np.ascontiguousarray(dq.T))
+        )
+
+    def space_hessian(self, q):
+        """The kinematic Hessian of the space Jacobian, H[j, :, i] = dJ_i/dq_j.
+
+        dJ_i/dq_j = [J_j, J_i] for j < i and 0 otherwise; dJ/dt = sum_j H[j] dq_j.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n), joint values (rad, m)
+
+        Returns
+        -------
+        ndarray, shape (n, 6, n) or (N, n, 6, n)
+        """
+        return _second_order.space_hessian(self.space_jacobian(self.check_q(q)))
+
+    def body_hessian(self, q):
+        """The kinematic Hessian of the body Jacobian, H[j, :, i] = dJb_i/dq_j.
+
+        dJb_i/dq_j = [Jb_i, Jb_j] for j > i and 0 otherwise.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n), joint values (rad, m)
+
+        Returns
+        -------
+        ndarray, shape (n, 6, n) or (N, n, 6, n)
+        """
+        return _second_order.body_hessian(self.body_jacobian(self.check_q(q)))
+
+    def geometric_hessian(self, q):
+        """The kinematic Hessian of the geometric Jacobian, H[j, :, i] = dJ_i/dq_j.
+
+        Rows [v; omega], as the Robotics Toolbox's ``hessian0``; its rows v are
+        symmetric in i and j (they are the second derivatives of the end point).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n), joint values (rad, m)
+
+        Returns
+        -------
+        ndarray, shape (n, 6, n) or (N, n, 6, n)
+        """
+        return _second_order.geometric_hessian(self.geometric_jacobian(self.check_q(q)))

@@ -34,7 +34,7 @@ ORDER = [
     ),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
-    ("Lie algebra", ["lie", "ik.subproblems"]),
+    ("Lie algebra", ["lie", "ik.subproblems", "_second_order"]),
     ("screws", ["screws", "systems"]),
     # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
     # it; the entry point of screwkit.ik loads only it and the subproblems at the top
@@ -64,6 +64,9 @@ ORDER = [
             "ik.ur",
             "ik.stanford",
             "ik.dispatch",
+            "acceleration",
+            "trajectory",
+            "differential_ik",
             "workspace",
             "redundancy",
             "mobility_analysis",

@@ -12,7 +12,13 @@ import pytest
 from pybtex.database import parse_file
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-CHAPTERS = ["jacobians", "kawasaki_workspace", "redundancy", "mobility"]
+CHAPTERS = [
+    "jacobians",
+    "kawasaki_workspace",
+    "redundancy",
+    "motion_in_time",
+    "mobility",
+]
 
 
 def source(name):

@@ -1,0 +1,344 @@
+"""Second-order kinematics in screw form: Jacobians in time, Hessians, accelerations.
+
+Joint i's twist in the base frame, the column J_i of the space Jacobian, is moved only
+by the joints before it; each moves it by a Lie bracket (Lynch and Park, ch. 5):
+
+    dJ_i/dq_j = [J_j, J_i] = ad(J_j) J_i    for j < i, and 0 for j >= i,
+    dJ_i/dt   = [W_i, J_i],                  W_i = J_1 dq_1 + ... + J_{i-1} dq_{i-1}.
+
+The body Jacobian is moved by the joints after a column, dJb_i/dq_j = [Jb_i, Jb_j] for
+j > i; the geometric Jacobian (rows [v; omega] of the end point) follows from the
+space one. The end-effector acceleration is J ddq + dJ dq in each form.
+
+Every function takes the chain first, like :mod:`screwkit.jacobians`: float joint
+values (n,) or a batch (N, n) give float64 arrays with that leading axis; SymPy input
+(numbers or symbols, one configuration) gives exact SymPy matrices, with the model's
+decimals read as the exact decimals they print as.
+
+>>> import numpy as np, screwkit as sk
+>>> arm = sk.robots.planar([1.0, 1.0])
+>>> a = geometric_acceleration(arm, [0.0, 0.0], [1.0, 0.0], [0.0, 0.0])
+>>> np.round(a[:2], 12)   # the tip turning at 1 rad/s on a 2 m circle: 2 m/s^2 inward
+array([-2.,  0.])
+"""
+
+import numpy as np
+import sympy as sp
+from sympy.simplify.fu import TR10i
+
+from . import _second_order
+from ._checks import (
+    as_sympy_scalar,
+    check_chain,
+    describe,
+    is_symbolic,
+)
+from .lie import adjoint
+from .links import decimal
+from .transforms import inv
+
+__all__ = [
+    "space_jacobian_dot",
+    "body_jacobian_dot",
+    "geometric_jacobian_dot",
+    "space_hessian",
+    "body_hessian",
+    "geometric_hessian",
+    "space_acceleration",
+    "body_acceleration",
+    "geometric_acceleration",
+]
+
+
+def _exact(*values):
+    return any(is_symbolic(v) for v in values)
+
+
+def _exact_vector(chain, value, name):
+    """One joint vector as n exact SymPy entries (floats read as printed decimals)."""
+    if isinstance(value, (str, bytes)) or not isinstance(
+        value, (list, tuple, np.ndarray, sp.MatrixBase)
+    ):
+        raise TypeError(
+            f"{name} must be a joint vector of {chain.n} numbers or SymPy "
+            f"expressions, got {describe(value)}"
+        )
+    entries = list(value) if not isinstance(value, np.ndarray) else value.tolist()
+    if len(entries) != chain.n or any(isinstance(e, (list, tuple)) for e in entries):
+        raise ValueError(
+            f"{name} must have {chain.n} entries for this chain (one configuration "
+            f"for exact input), got {describe(value)}"
+        )
+    return [decimal(as_sympy_scalar(e, f"{name}[{i}]")) for i, e in enumerate(entries)]
+
+
+def _exact_parts(chain, q):
+    """The exact space Jacobian (6, n) and pose (4, 4) in the chain's joint symbols,
+    and the substitution {symbol: value} of the exact q.
+
+    The brackets are taken in the symbols and q put in last: SymPy multiplies
+    expressions in symbols fast, but products of numbers like cos(1/3) slowly (it asks
+    each whether it is zero)."""
+    values = dict(zip(chain.q_symbols, _exact_vector(chain, q, "q")))
+    Js = sp.Matrix.hstack(*chain.twists_symbolic(rational=True))
+    T = decimal(chain.fk_symbolic()).as_mutable()
+    return Js, T, values
+
+
+def _geometric_exact(Js, T):
+    """The geometric Jacobian from the space one: column (v + w x p; w), p T's
+    origin."""
+    p = T[:3, 3]
+    return sp.Matrix.hstack(
+        *[
+            sp.Matrix.vstack(Js[3:, i] + Js[:3, i].cross(p), Js[:3, i])
+            for i in range(Js.shape[1])
+        ]
+    )
+
+
+def _at(result, values):
+    """An exact result (a matrix or a list of them) with the joint values put in."""
+    if isinstance(result, list):
+        return [block.xreplace(values) for block in result]
+    return result.xreplace(values)
+
+
+def _body_exact(Js, T):
+    """J_b = Ad(T^-1) J_s, in the joint symbols, expanded and with sums of angles
+    combined (the products of rotations cancel there)."""
+    return (adjoint(inv(T)) * Js).applyfunc(lambda e: TR10i(sp.expand(e)))
+
+
+def _float_rates(chain, q, dq, ddq=None):
+    q, dq = chain._rates(q, dq)
+    if ddq is None:
+        return q, dq
+    ddq = chain.check_q(ddq, "ddq")
+    if ddq.shape != q.shape:
+        raise ValueError(
+            f"ddq must have the shape of q, {q.shape}, got shape {ddq.shape}"
+        )
+    return q, dq, ddq
+
+
+def space_jacobian_dot(chain, q, dq):
+    """The time derivative of the space Jacobian, column i = [W_i, J_i].
+
+    Parameters
+    ----------
+    chain : Chain
+    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
+    dq : array-like, the shape of q, joint rates (rad/s, m/s); or n SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second;
+    sympy.Matrix (6, n) for exact input
+    """
+    check_chain(chain)
+    if _exact(q, dq):
+        Js, _, values = _exact_parts(chain, q)
+        dq = _exact_vector(chain, dq, "dq")
+        return _at(_second_order.space_dot(Js, dq), values)
+    return chain.space_jacobian_dot(q, dq)
+
+
+def body_jacobian_dot(chain, q, dq):
+    """The time derivative of the body Jacobian, column i = [Jb_i, Wb_i], Wb_i the
+    sum of Jb_j dq_j over j > i.
+
+    Parameters
+    ----------
+    chain : Chain
+    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
+    dq : array-like, the shape of q, joint rates (rad/s, m/s); or n SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second;
+    sympy.Matrix (6, n) for exact input
+    """
+    check_chain(chain)
+    if _exact(q, dq):
+        Js, T, values = _exact_parts(chain, q)
+        dq = _exact_vector(chain, dq, "dq")
+        return _at(_second_order.body_dot(_body_exact(Js, T), dq), values)
+    return chain.body_jacobian_dot(q, dq)
+
+
+def geometric_jacobian_dot(chain, q, dq):
+    """The time derivative of the geometric Jacobian (rows [v; omega] of the end
+    point), as the Robotics Toolbox's ``jacob0_dot``.
+
+    Parameters
+    ----------
+    chain : Chain
+    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
+    dq : array-like, the shape of q, joint rates (rad/s, m/s); or n SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n), rows [v; omega] per second;
+    sympy.Matrix (6, n) for exact input
+    """
+    check_chain(chain)
+    if _exact(q, dq):
+        Js, T, values = _exact_parts(chain, q)
+        dq = _exact_vector(chain, dq, "dq")
+        return _at(_second_order.geometric_dot(_geometric_exact(Js, T), dq), values)
+    return chain.geometric_jacobian_dot(q, dq)
+
+
+def space_hessian(chain, q):
+    """The Hessian of the space Jacobian, H[j, :, i] = dJ_i/dq_j = [J_j, J_i] (j < i).
+
+    Parameters
+    ----------
+    chain : Chain
+    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (n, 6, n) or (N, n, 6, n); for exact input a list of n SymPy
+    (6, n) matrices H[j]
+    """
+    check_chain(chain)
+    if _exact(q):
+        Js, _, values = _exact_parts(chain, q)
+        return _at(_second_order.space_hessian(Js), values)
+    return chain.space_hessian(q)
+
+
+def body_hessian(chain, q):
+    """The Hessian of the body Jacobian, H[j, :, i] = dJb_i/dq_j = [Jb_i, Jb_j]
+    (j > i).
+
+    Parameters
+    ----------
+    chain : Chain
+    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (n, 6, n) or (N, n, 6, n); for exact input a list of n SymPy
+    (6, n) matrices H[j]
+    """
+    check_chain(chain)
+    if _exact(q):
+        Js, T, values = _exact_parts(chain, q)
+        return _at(_second_order.body_hessian(_body_exact(Js, T)), values)
+    return chain.body_hessian(q)
+
+
+def geometric_hessian(chain, q):
+    """The Hessian of the geometric Jacobian, H[j, :, i] = dJ_i/dq_j, rows [v; omega]
+    (the Robotics Toolbox's ``hessian0``).
+
+    Parameters
+    ----------
+    chain : Chain
+    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (n, 6, n) or (N, n, 6, n); for exact input a list of n SymPy
+    (6, n) matrices H[j]
+    """
+    check_chain(chain)
+    if _exact(q):
+        Js, T, values = _exact_parts(chain, q)
+        return _at(_second_order.geometric_hessian(_geometric_exact(Js, T)), values)
+    return chain.geometric_hessian(q)
+
+
+def _acceleration(chain, q, dq, ddq, jacobian, jacobian_dot):
+    q, dq, ddq = _float_rates(chain, q, dq, ddq)
+    product = "...ij,...j->...i"
+    return np.einsum(product, jacobian(q), ddq) + np.einsum(
+        product, jacobian_dot(q, dq), dq
+    )
+
+
+def _exact_acceleration(chain, q, dq, ddq, form):
+    """J ddq + dJ dq exactly, in the joint symbols, q put in last."""
+    Js, T, values = _exact_parts(chain, q)
+    dq = _exact_vector(chain, dq, "dq")
+    ddq = sp.Matrix(_exact_vector(chain, ddq, "ddq"))
+    if form == "space":
+        J, dJ = Js, _second_order.space_dot(Js, dq)
+    elif form == "body":
+        J = _body_exact(Js, T)
+        dJ = _second_order.body_dot(J, dq)
+    else:
+        J = _geometric_exact(Js, T)
+        dJ = _second_order.geometric_dot(J, dq)
+    return _at(J * ddq + dJ * sp.Matrix(dq), values)
+
+
+def space_acceleration(chain, q, dq, ddq):
+    """The derivative of the end effector's space twist, dV_s/dt = J_s ddq + dJ_s dq.
+
+    Parameters
+    ----------
+    chain : Chain
+    q, dq, ddq : array-like, shape (n,) or (N, n) each: joint values, rates and
+        accelerations (rad, rad/s, rad/s^2; m for prismatic joints); or SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (6,) or (N, 6), [d omega/dt; dv/dt]; sympy.Matrix (6, 1) exact
+    """
+    check_chain(chain)
+    if _exact(q, dq, ddq):
+        return _exact_acceleration(chain, q, dq, ddq, "space")
+    return _acceleration(
+        chain, q, dq, ddq, chain.space_jacobian, chain.space_jacobian_dot
+    )
+
+
+def body_acceleration(chain, q, dq, ddq):
+    """The derivative of the end effector's body twist, dV_b/dt = J_b ddq + dJ_b dq.
+
+    Parameters
+    ----------
+    chain : Chain
+    q, dq, ddq : array-like, shape (n,) or (N, n) each: joint values, rates and
+        accelerations (rad, rad/s, rad/s^2; m for prismatic joints); or SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (6,) or (N, 6), [d omega_b/dt; dv_b/dt]; sympy.Matrix (6, 1) exact
+    """
+    check_chain(chain)
+    if _exact(q, dq, ddq):
+        return _exact_acceleration(chain, q, dq, ddq, "body")
+    return _acceleration(
+        chain, q, dq, ddq, chain.body_jacobian, chain.body_jacobian_dot
+    )
+
+
+def geometric_acceleration(chain, q, dq, ddq):
+    """The end point's linear acceleration and the angular acceleration, in the base
+    frame: [a; alpha] = J ddq + dJ dq with the geometric Jacobian (rows [v; omega]).
+
+    ``a`` is the second derivative of the end point's position (centripetal and
+    Coriolis terms included), which the space twist's derivative is not.
+
+    Parameters
+    ----------
+    chain : Chain
+    q, dq, ddq : array-like, shape (n,) or (N, n) each: joint values, rates and
+        accelerations (rad, rad/s, rad/s^2; m for prismatic joints); or SymPy entries
+
+    Returns
+    -------
+    ndarray, shape (6,) or (N, 6), [a (m/s^2); alpha (rad/s^2)]; sympy.Matrix (6, 1)
+    for exact input
+    """
+    check_chain(chain)
+    if _exact(q, dq, ddq):
+        return _exact_acceleration(chain, q, dq, ddq, "geometric")
+    return _acceleration(
+        chain, q, dq, ddq, chain.geometric_jacobian, chain.geometric_jacobian_dot
+    )
