@@ -20,7 +20,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "screwkit"
 
 #: The layers, bottom up; within a layer, a module may import those listed before it.
 ORDER = [
-    ("checks and engines", ["tolerances", "_checks", "_numeric", "_exact", "_notation"]),
+    ("checks and engines", ["tolerances", "_checks", "_numeric", "_exact", "_certificates", "_notation"]),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
     ("Lie algebra", ["lie", "subproblems"]),
