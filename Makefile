@@ -82,13 +82,16 @@ clean:
 notebooks: $(STAMP)
 	$(BIN)/python tools/execute_notebooks.py
 
-## make lint: ruff (pinned in .ci/lint-requirements.txt) checks and format-checks screwkit, tests
-## and .ci, with the rules of pyproject.toml [tool.ruff]
-LINTED := screwkit tests .ci
+## make lint: ruff (pinned in .ci/lint-requirements.txt) checks and format-checks every Python
+## file of the repository, with the rules of pyproject.toml [tool.ruff]; then every public
+## function, class and method of screwkit must have a numpydoc docstring (.ci/check_docstrings.py,
+## numpydoc's validator, pinned there too; its own test first)
 lint: $(STAMP)
 	$(BIN)/python -m pip install --quiet --requirement .ci/lint-requirements.txt
-	$(BIN)/ruff check $(LINTED)
-	$(BIN)/ruff format --check $(LINTED)
+	$(BIN)/ruff check .
+	$(BIN)/ruff format --check .
+	$(BIN)/python -m pytest -q -p no:cacheprovider .ci/test_check_docstrings.py
+	$(BIN)/python .ci/check_docstrings.py
 
 ## make check-sources: every .ipynb's inputs equal its .md source; code lines at most 88 chars
 check-sources: $(STAMP)

@@ -1,14 +1,16 @@
-"""The Python versions the course claims, each tested in a fresh virtual environment (nox).
+"""The Python versions the course claims, each tested in a fresh virtual environment.
 
     nox -s course-3.11 course-3.13   the course's pinned environment and `make test`
-    nox -s unit_lowest               screwkit alone (`pip install .`) at the lowest versions
-                                     its dependency bounds admit, with its unit tests and doctests
-    nox -l                           every session (`course` runs on each supported version)
+    nox -s unit_lowest               screwkit alone (`pip install .`) at the lowest
+                                     versions its dependency bounds admit, with its unit
+                                     tests and doctests
+    nox -l                           every session (`course` runs on each supported
+                                     version)
 
 Install nox with `python3 -m pip install -r .ci/nox-requirements.txt` (nox and uv), in a
-virtual environment of its own. The supported range is `requires-python` in pyproject.toml;
-keep `SUPPORTED` here, the Makefile, the classifiers and the README in step with it.
-Each session prints how long it took.
+virtual environment of its own. The supported range is `requires-python` in
+pyproject.toml; keep `SUPPORTED` here, the Makefile, the classifiers and the README in
+step with it. Each session prints how long it took.
 """
 
 import os
@@ -23,20 +25,19 @@ HERE = Path(__file__).resolve().parent
 SUPPORTED = ["3.11", "3.12", "3.13"]
 LOWEST, HIGHEST = SUPPORTED[0], SUPPORTED[-1]
 
-# Tests of the course rather than of screwkit: other Pythons and the network.
-COURSE_ONLY_TESTS = [
-    "tests/test_binder.py",
-    "tests/test_course_content.py",  # reads the chapters (notebooks/), not in the snapshot
-]
+# The course's tests (chapters, book, Binder), not screwkit's: not in the snapshot.
+COURSE_ONLY_TESTS = ["tests/course"]
 
-# Prints each test file (argv) that imports a module this environment lacks: a test of the
-# course (nbformat, jupytext, ...), not of screwkit, when screwkit is installed alone.
+# Prints each test file (argv) that imports a module this environment lacks: a test of
+# the course (nbformat, jupytext, ...), not of screwkit, when screwkit is installed
+# alone.
 _NEEDS_MISSING_MODULE = """
-import ast, importlib.util, sys
+import ast, importlib.util, os, sys
 for path in sys.argv[1:]:
+    sys.path[:0] = ["tests", os.path.dirname(path)]  # the tests' own shared modules
     tree = ast.parse(open(path, encoding="utf-8").read())
-    roots = {alias.name.split(".")[0] for node in tree.body if isinstance(node, ast.Import)
-             for alias in node.names}
+    roots = {alias.name.split(".")[0] for node in tree.body
+             if isinstance(node, ast.Import) for alias in node.names}
     roots |= {node.module.split(".")[0] for node in tree.body
               if isinstance(node, ast.ImportFrom) and node.module and not node.level}
     missing = sorted(name for name in roots if importlib.util.find_spec(name) is None)
@@ -53,8 +54,8 @@ def _use_pyenv_interpreters():
     """Put each supported pyenv interpreter on PATH ahead of pyenv's shims.
 
     A pyenv shim such as `python3.12` is found on PATH even when it is not pyenv's
-    active version, and then fails when run; nox would pick it and stop. Links to the real
-    interpreters in .nox/pythons come first instead. Without pyenv nothing changes.
+    active version, and then fails when run; nox would pick it and stop. Links to the
+    real interpreters in .nox/pythons come first instead. Without pyenv nothing changes.
     """
     versions = Path(os.environ.get("PYENV_ROOT", Path.home() / ".pyenv")) / "versions"
     links = HERE / ".nox" / "pythons"
@@ -102,9 +103,13 @@ class _Timer:
 
 @nox.session(python=SUPPORTED, venv_backend="venv")
 def course(session):
-    """The course's pinned environment (requirements.txt) and `make test`, in this venv."""
-    # Binder's resolution does not depend on this session's Python: `make test` checks it once
-    binder = "tests/test_binder.py::test_binder_requirements_resolve_for_binders_python"
+    """The course's pinned environment (requirements.txt) and `make test`, here."""
+    # Binder's resolution does not depend on this session's Python: `make test` checks
+    # it once
+    binder = (
+        "tests/course/test_binder.py"
+        "::test_binder_requirements_resolve_for_binders_python"
+    )
     with _Timer(session):
         session.run(
             "make",
@@ -118,11 +123,12 @@ def course(session):
 
 @nox.session(python=LOWEST, venv_backend="uv")
 def unit_lowest(session):
-    """screwkit alone, resolved at the lower bounds of its dependencies (uv lowest-direct).
+    """screwkit alone, at the lower bounds of its dependencies (uv lowest-direct).
 
-    Only screwkit's own dependencies are resolved to their lowest versions; the test tools
-    are the course's pins. It runs in a snapshot of pyproject.toml, screwkit/ and tests/
-    (no build files in the working tree), and the tests import the installed screwkit.
+    Only screwkit's own dependencies are resolved to their lowest versions; the test
+    tools are the course's pins. It runs in a snapshot of pyproject.toml, screwkit/ and
+    tests/ (no build files in the working tree), and the tests import the installed
+    screwkit.
     """
     with _Timer(session):
         snapshot = Path(session.create_tmp()).resolve() / "snapshot"
@@ -153,7 +159,8 @@ def unit_lowest(session):
         )
         session.chdir(snapshot)
         tests = sorted(
-            str(path.relative_to(snapshot)) for path in snapshot.glob("tests/test_*.py")
+            str(path.relative_to(snapshot))
+            for path in snapshot.glob("tests/**/test_*.py")
         )
         report = session.run("python", "-c", _NEEDS_MISSING_MODULE, *tests, silent=True)
         course_only = COURSE_ONLY_TESTS + [
@@ -164,6 +171,7 @@ def unit_lowest(session):
             + "; ".join(report.splitlines())
         )
         ignores = [f"--ignore={path}" for path in course_only]
-        # `pytest`, not `python -m pytest`, so that the tests import the installed screwkit
+        # `pytest`, not `python -m pytest`, so that the tests import the installed
+        # screwkit
         session.run("pytest", "tests", *ignores, "-q", *session.posargs)
         session.run("pytest", "--pyargs", "screwkit", "--doctest-modules", "-q")

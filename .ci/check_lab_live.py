@@ -36,12 +36,12 @@ import urllib.request
 from contextlib import contextmanager
 from pathlib import Path
 
+import harness
 import nbformat
 
 try:
     from playwright.sync_api import Error as PlaywrightError
     from playwright.sync_api import TimeoutError as PlaywrightTimeout
-    from playwright.sync_api import sync_playwright
 except ImportError:
     sys.exit(
         "check_lab_live: FAILED: Playwright is not installed in this Python: "
@@ -50,17 +50,6 @@ except ImportError:
 
 ROOT = Path(__file__).resolve().parent.parent
 BIN = Path(sys.executable).parent
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-FLAGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-    "--disable-quic",
-    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
-]
 TOTAL = float(
     os.environ.get("LAB_LIVE_TOTAL", 420)
 )  # s: the watchdog ends the check after it
@@ -445,39 +434,33 @@ def keep_screenshot(page):
 def check_in_browser(lab, notebooks):
     """Each notebook in Lab: run all, move its sliders; then no error in the console."""
     console = []
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+    with harness.launch() as browser:
+        page = browser.new_page(viewport={"width": 1280, "height": 1600})
+        page.on("pageerror", lambda error: console.append(f"page error: {error}"))
+        page.on("console", lambda m: m.type == "error" and console.append(m.text))
         try:
-            page = browser.new_page(viewport={"width": 1280, "height": 1600})
-            page.on("pageerror", lambda error: console.append(f"page error: {error}"))
-            page.on("console", lambda m: m.type == "error" and console.append(m.text))
-            try:
-                for name, count in notebooks.items():
-                    with timed(f"{name}: open in Lab, kernel idle"):
-                        open_notebook(page, lab, name)
-                    with timed(
-                        f"{name}: run its {count} code cells on the live kernel"
-                    ):
-                        run_all_cells(page, count)
-                    with timed(
-                        f"{name}: move an ipywidgets slider, new figure from kernel"
-                    ):
-                        if name == NOTEBOOK:
-                            move_widget_slider(page, handles_expected=6, handle=1)
-                        else:
-                            move_widget_slider(page)
+            for name, count in notebooks.items():
+                with timed(f"{name}: open in Lab, kernel idle"):
+                    open_notebook(page, lab, name)
+                with timed(f"{name}: run its {count} code cells on the live kernel"):
+                    run_all_cells(page, count)
+                with timed(
+                    f"{name}: move an ipywidgets slider, new figure from kernel"
+                ):
                     if name == NOTEBOOK:
-                        with timed(f"{name}: move the in-page viewer's slider"):
-                            move_page_viewer(page)
-                    close_notebook(lab, name)
-            except PlaywrightError as error:
-                raise CheckFailed(
-                    f"the browser step failed: {error}{keep_screenshot(page)}"
-                ) from None
-            except CheckFailed as failure:
-                raise CheckFailed(f"{failure}{keep_screenshot(page)}") from None
-        finally:
-            browser.close()
+                        move_widget_slider(page, handles_expected=6, handle=1)
+                    else:
+                        move_widget_slider(page)
+                if name == NOTEBOOK:
+                    with timed(f"{name}: move the in-page viewer's slider"):
+                        move_page_viewer(page)
+                close_notebook(lab, name)
+        except PlaywrightError as error:
+            raise CheckFailed(
+                f"the browser step failed: {error}{keep_screenshot(page)}"
+            ) from None
+        except CheckFailed as failure:
+            raise CheckFailed(f"{failure}{keep_screenshot(page)}") from None
     if console:
         raise CheckFailed("the browser console logged errors:\n" + "\n".join(console))
 
@@ -511,7 +494,7 @@ def watchdog(lab, seconds):
 
 
 def main():
-    if CHROMIUM is None:
+    if harness.CHROMIUM is None:
         log("FAILED: no Chromium on PATH (apt-get install chromium)")
         return 1
     start, failures = time.monotonic(), []

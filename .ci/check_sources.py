@@ -13,6 +13,9 @@ Fails unless:
     missing (`if importlib.util.find_spec("screwkit") is None: %pip install ...`);
   - no printed output line of a stored notebook (streams, plain text shown as text) is
     longer than 88 characters, the page column's width in code characters;
+  - no chapter's code (its code cells and the code blocks of its prose, such as the
+    solutions) imports or uses a private name of screwkit: `screwkit._x`, `sk._x`, or
+    `m._x` for a module m imported from screwkit (`parallel._parallel_search`);
 and, with --built DIR (the HTML book, e.g. _build/html), unless:
   - no page contains the text "NBVAL";
   - no code line of a code cell (its <pre> block) is longer than 88 characters.
@@ -21,8 +24,10 @@ Usage: python .ci/check_sources.py [--notebooks notebooks] [--built _build/html]
 """
 
 import argparse
+import ast
 import glob
 import os
+import re
 import sys
 from html.parser import HTMLParser
 
@@ -129,6 +134,75 @@ def _output_lines(notebook_path):
     return problems
 
 
+_FENCED = re.compile(r"^```[^\n]*\n(.*?)^```", re.DOTALL | re.MULTILINE)
+
+
+def _code_blocks(source_path):
+    """The code of a chapter: its code cells and the fenced blocks of its prose."""
+    blocks = []
+    for cell in jupytext.read(source_path).cells:
+        if cell.cell_type == "code":
+            blocks.append(cell.source)
+        else:
+            blocks += _FENCED.findall(cell.source)
+    return blocks
+
+
+def _private(name):
+    """Whether an identifier is private (_x), not a dunder (__version__)."""
+    return name.startswith("_") and not name.startswith("__")
+
+
+def _private_uses(source_path):
+    """Problems where a chapter's code imports or uses a private name of screwkit."""
+    text_lines = open(source_path, encoding="utf-8").read().splitlines()
+    trees = []
+    for block in _code_blocks(source_path):
+        lines = block.splitlines()
+        python = "\n".join("" if ln.lstrip()[:1] in "%!" else ln for ln in lines)
+        try:
+            trees.append((ast.parse(python), lines))
+        except SyntaxError:  # an example that is not Python: nothing to check
+            continue
+    screwkit = {"screwkit", "sk"}  # names that hold screwkit or one of its modules
+    found = []
+    for tree, lines in trees:
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                for alias in node.names:
+                    if alias.name.split(".")[0] == "screwkit":
+                        screwkit.add(alias.asname or "screwkit")
+                        found += [(node, lines, alias.name)] * any(
+                            _private(p) for p in alias.name.split(".")
+                        )
+            elif isinstance(node, ast.ImportFrom) and not node.level:
+                module = node.module or ""
+                if module.split(".")[0] != "screwkit":
+                    continue
+                if any(_private(p) for p in module.split(".")):
+                    found.append((node, lines, module))
+                for alias in node.names:
+                    screwkit.add(alias.asname or alias.name)
+                    if _private(alias.name):
+                        found.append((node, lines, f"{module}.{alias.name}"))
+    for tree, lines in trees:
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Attribute) and _private(node.attr):
+                root = node.value
+                while isinstance(root, ast.Attribute):
+                    root = root.value
+                if isinstance(root, ast.Name) and root.id in screwkit:
+                    found.append((node, lines, ast.unparse(node)))
+    problems = []
+    for node, lines, name in found:
+        line = lines[node.lineno - 1]
+        problems.append(
+            f"{source_path}:{_line_number(text_lines, line)}: uses the private "
+            f"`{name}`; a chapter imports and uses only screwkit's public names"
+        )
+    return problems
+
+
 def _line_number(text_lines, line):
     """The 1-based number of `line` in the file (its first occurrence), or '?'."""
     for number, text in enumerate(text_lines, start=1):
@@ -157,6 +231,7 @@ def check_notebooks(folder):
             problems += _output_lines(name + ".ipynb")
         problems += _code_lines(name + ".md")
         problems += _installs_screwkit(name + ".md")
+        problems += _private_uses(name + ".md")
     return problems
 
 

@@ -40,11 +40,18 @@ unresolvable). Fails unless:
   - the whole book stays under 20 MB.
 Keeps a screenshot of the first chapter in _build/.
 
+Each check is a rule: a function named for what must hold, whose docstring says what it
+checks, registered in ``RULES`` (run in its order, which is the report's). A "book"
+rule runs once, a "page" rule on every page (the built HTML, the DOM after its scripts
+ran, the requests it made). The JavaScript the rules run in the page is in
+``.ci/site_check_js/``; every browser starts through ``.ci/harness.py``.
+
 Usage: python .ci/site_check.py _build/html
 """
 
 import functools
 import http.server
+import itertools
 import json
 import os
 import re
@@ -53,20 +60,24 @@ import subprocess
 import sys
 import tempfile
 import threading
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from html.parser import HTMLParser
+from pathlib import Path
 from urllib.parse import unquote, urljoin, urlsplit
 
-CHROMIUM_FLAGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-    "--disable-quic",
-    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
-]
+HERE = Path(__file__).resolve().parent
+if str(HERE) not in sys.path:  # loaded from elsewhere (the tests of its rules)
+    sys.path.insert(0, str(HERE))
+import harness  # noqa: E402 (.ci/harness.py: the fenced system Chromium)
+
+SCRIPTS = HERE / "site_check_js"
+
+
+def script(name):
+    """The JavaScript function ``site_check_js/NAME.js`` (its text), for
+    ``page.evaluate``."""
+    return (SCRIPTS / f"{name}.js").read_text(encoding="utf-8")
 
 
 class PageParser(HTMLParser):
@@ -103,13 +114,6 @@ def parse(html):
     return parser
 
 
-def find_chromium():
-    for name in ("chromium", "chromium-browser", "google-chrome"):
-        if shutil.which(name):
-            return shutil.which(name)
-    sys.exit("site check: no Chromium found (apt-get install chromium)")
-
-
 def serve(root):
     handler = functools.partial(QuietHandler, directory=root)
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
@@ -131,15 +135,11 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
         super().send_error(code, message, explain)
 
 
-def chromium(browser, url, profile, *extra):
-    command = [
-        browser,
-        *CHROMIUM_FLAGS,
-        f"--user-data-dir={profile}",
-        "--virtual-time-budget=20000",
-        *extra,
-        url,
-    ]
+def dump_dom(url, profile, *extra):
+    """Chromium (headless, fenced) on ``url`` without Playwright; its stdout."""
+    command = harness.command(
+        f"--user-data-dir={profile}", "--virtual-time-budget=20000", *extra, url
+    )
     result = subprocess.run(command, capture_output=True, text=True, timeout=180)
     if result.returncode != 0:
         raise RuntimeError(f"chromium failed on {url}: {result.stderr[-2000:]}")
@@ -184,28 +184,57 @@ def outside_requests(netlog_path, origin):
     return urls
 
 
-def check_links(root, page, parser, cache):
-    problems = []
-    base = "/" + page
-    for href in parser.links + parser.images:
-        parts = urlsplit(href)
-        if parts.scheme or href.startswith("//") or href.startswith("mailto:"):
-            continue
-        target = urlsplit(urljoin(base, href))
-        path = unquote(target.path).lstrip("/") or "index.html"
-        file = os.path.join(root, path)
-        if os.path.isdir(file):
-            file = os.path.join(file, "index.html")
-        if not os.path.isfile(file):
-            problems.append(f"{page}: broken link {href}")
-            continue
-        if target.fragment and file.endswith(".html"):
-            if file not in cache:
-                with open(file, encoding="utf-8") as f:
-                    cache[file] = parse(f.read()).ids
-            if unquote(target.fragment) not in cache[file]:
-                problems.append(f"{page}: link {href} points to a missing anchor")
-    return problems
+@dataclass
+class Site:
+    """What every rule may read of the book being checked."""
+
+    root: str  # the HTML build, absolute
+    origin: str  # where it is served: http://127.0.0.1:PORT/
+    pages: list  # every page under book/ and notebooks/ (paths from root)
+    tmp: str  # a scratch folder (Chromium's profile and net log)
+    anchors: dict = field(default_factory=dict)  # file -> its ids, read once
+
+
+@dataclass
+class Page:
+    """One page as the page rules see it."""
+
+    name: str  # its path from the build's root (notebooks/puma_fk.html)
+    html: str  # as built
+    static: PageParser  # of the built HTML
+    dom: PageParser  # of the DOM once its scripts ran (Chromium's --dump-dom)
+    leaks: set  # URLs off this machine that the page asked for
+    figures: list  # the sources of its images of _images/ (cell outputs)
+
+
+def built_page(name, html, figures=()):
+    """The page ``name`` as built, without a browser (its DOM is its HTML, it asked for
+    nothing): what the rules that read only the build see."""
+    static = parse(html)
+    return Page(name, html, static, static, set(), list(figures))
+
+
+def load_page(site, name):
+    """The page ``name`` built, and loaded in a fenced Chromium with its net log."""
+    with open(os.path.join(site.root, name), encoding="utf-8") as f:
+        html = f.read()
+    netlog = os.path.join(site.tmp, "netlog.json")
+    dom = parse(
+        dump_dom(
+            site.origin + name,
+            os.path.join(site.tmp, "profile"),
+            "--dump-dom",
+            f"--log-net-log={netlog}",
+        )
+    )
+    return Page(
+        name=name,
+        html=html,
+        static=parse(html),
+        dom=dom,
+        leaks=outside_requests(netlog, site.origin),
+        figures=[src for src in dom.images if "_images/" in src],
+    )
 
 
 BOOK_LIMIT_MB = 20
@@ -219,15 +248,61 @@ CHAPTER_SHAPE = {
 PLACEHOLDER_HOSTS = ("example.",)  # example.com, hub.example.edu, ...
 
 
-def check_chapter_shape(page, html):
-    """A chapter page must say what the student will learn and end with a summary."""
-    if not page.startswith("notebooks/"):
+# ---- Rules on the book as built: its files, links, sources and what the pages say.
+
+
+def toc_is_built(site, toc="_toc.yml"):
+    """Every file of the table of contents is a page of the build
+    (none left out of the checks)."""
+    toc = os.path.join(os.path.dirname(os.path.dirname(site.root)), toc)
+    if not os.path.exists(toc):
         return []
+    with open(toc, encoding="utf-8") as f:
+        files = re.findall(r"^\s*-?\s*(?:file|root):\s*(\S+)", f.read(), re.M)
     return [
-        f'{page}: a chapter without "{words}"'
-        for words, pattern in CHAPTER_SHAPE.items()
-        if not pattern.search(html)
+        f"{name}: in _toc.yml but not built ({name}.html missing)"
+        for name in files
+        if not os.path.exists(os.path.join(site.root, name + ".html"))
     ]
+
+
+def links_resolve(site, page):
+    """Every link and image of the page points to a file of the build, and every
+    link's anchor to an id of its page."""
+    problems = []
+    base = "/" + page.name
+    for href in page.static.links + page.static.images:
+        parts = urlsplit(href)
+        if parts.scheme or href.startswith("//") or href.startswith("mailto:"):
+            continue
+        target = urlsplit(urljoin(base, href))
+        path = unquote(target.path).lstrip("/") or "index.html"
+        file = os.path.join(site.root, path)
+        if os.path.isdir(file):
+            file = os.path.join(file, "index.html")
+        if not os.path.isfile(file):
+            problems.append(f"{page.name}: broken link {href}")
+            continue
+        if target.fragment and file.endswith(".html"):
+            if file not in site.anchors:
+                with open(file, encoding="utf-8") as f:
+                    site.anchors[file] = parse(f.read()).ids
+            if unquote(target.fragment) not in site.anchors[file]:
+                problems.append(f"{page.name}: link {href} points to a missing anchor")
+    return problems
+
+
+def no_placeholder_links(site, page):
+    """Links (launch buttons among them) must not point to a placeholder such as
+    hub.example.edu."""
+    problems = []
+    for href in page.static.links:
+        host = urlsplit(href).hostname or ""
+        if any(marker in host for marker in PLACEHOLDER_HOSTS):
+            problems.append(
+                f"{page.name}: a link to the placeholder {host}: {href[:120]}"
+            )
+    return problems
 
 
 # An alt text that names a file, or says nothing of what the image shows.
@@ -237,18 +312,31 @@ PATH_LIKE = re.compile(
 PLACEHOLDER_ALTS = {"", "image", "figure", "precomputed figure", "png", "output"}
 
 
-def check_alt_texts(page, parser):
+def alt_texts_say_what_they_show(site, page):
     """Every image of a page says what it shows: an alt text that is not its file's
     path, nor a placeholder (decorations, such as a launch button's logo, name what they
     are)."""
     problems = []
-    for src, alt in parser.alts:
+    for src, alt in page.static.alts:
         text = (alt or "").strip()
         if alt is None or text.lower() in PLACEHOLDER_ALTS or PATH_LIKE.search(text):
             problems.append(
-                f"{page}: image {src[:60]} has the alt text {alt!r}, not what it shows"
+                f"{page.name}: image {src[:60]} has the alt text {alt!r}, "
+                "not what it shows"
             )
     return problems
+
+
+def chapter_code(site, page):
+    """The code cells of a chapter page (from the build's .ipynb source), or None."""
+    source = os.path.join(
+        site.root, "_sources", os.path.splitext(page.name)[0] + ".ipynb"
+    )
+    if not page.name.startswith("notebooks/") or not os.path.exists(source):
+        return None
+    with open(source, encoding="utf-8") as f:
+        cells = json.load(f)["cells"]
+    return ["".join(c["source"]) for c in cells if c["cell_type"] == "code"]
 
 
 # The first code cell of every chapter installs screwkit where it is missing
@@ -256,36 +344,56 @@ def check_alt_texts(page, parser):
 INSTALLS_SCREWKIT = re.compile(r'find_spec\(\s*"screwkit"\s*\)[\s\S]*pip install')
 
 
-def check_first_cell(root, page):
+def first_cell_installs_screwkit(site, page):
     """A chapter's first code cell installs screwkit where it is missing."""
-    source = os.path.join(root, "_sources", os.path.splitext(page)[0] + ".ipynb")
-    if not page.startswith("notebooks/"):
+    if not page.name.startswith("notebooks/"):
         return []
-    if not os.path.exists(source):
-        return [f"{page}: no notebook source in the build (_sources)"]
-    with open(source, encoding="utf-8") as f:
-        cells = [c for c in json.load(f)["cells"] if c["cell_type"] == "code"]
-    if not cells or not INSTALLS_SCREWKIT.search("".join(cells[0]["source"])):
+    cells = chapter_code(site, page)
+    if cells is None:
+        return [f"{page.name}: no notebook source in the build (_sources)"]
+    if not cells or not INSTALLS_SCREWKIT.search(cells[0]):
         return [
-            f"{page}: the first code cell does not install screwkit where it is "
+            f"{page.name}: the first code cell does not install screwkit where it is "
             "missing (copy the first code cell of another chapter)"
         ]
     return []
 
 
-def check_toc_built(root, toc="_toc.yml"):
-    """Every file of the table of contents is a page of the build
-    (none left out of the checks)."""
-    toc = os.path.join(os.path.dirname(os.path.dirname(root)), toc)
-    if not os.path.exists(toc):
+def chapter_has_its_shape(site, page):
+    """A chapter page must say what the student will learn and end with a summary."""
+    if not page.name.startswith("notebooks/"):
         return []
-    with open(toc, encoding="utf-8") as f:
-        files = re.findall(r"^\s*-?\s*(?:file|root):\s*(\S+)", f.read(), re.M)
     return [
-        f"{name}: in _toc.yml but not built ({name}.html missing)"
-        for name in files
-        if not os.path.exists(os.path.join(root, name + ".html"))
+        f'{page.name}: a chapter without "{words}"'
+        for words, pattern in CHAPTER_SHAPE.items()
+        if not pattern.search(page.html)
     ]
+
+
+def nothing_leaves_the_machine(site, page):
+    """The page asked for nothing off this machine (Chromium's net log lists every
+    request)."""
+    return [
+        f"{page.name}: request left the machine: {url}" for url in sorted(page.leaks)
+    ]
+
+
+def math_is_typeset(site, page):
+    """A page with math has it typeset by the bundled MathJax, without MathJax
+    errors."""
+    problems = []
+    if page.static.math_sources and not page.dom.math_containers:
+        problems.append(f"{page.name}: has math but MathJax typeset none of it")
+    if page.dom.math_errors:
+        problems.append(f"{page.name}: MathJax reported {page.dom.math_errors} errors")
+    return problems
+
+
+def chapter_shows_a_figure(site, page):
+    """Every chapter page shows at least one figure whose file is in the build."""
+    if page.name.startswith("notebooks/") and not page.figures:
+        return [f"{page.name}: a chapter page without a figure (no cell output image)"]
+    return []
 
 
 # The parallel mechanisms of the catalogue (screwkit.robots): a chapter that analyses
@@ -293,64 +401,131 @@ def check_toc_built(root, toc="_toc.yml"):
 MECHANISM_BUILDER = re.compile(r"robots\.(pm_\w+|planar_3rrr|spherical_3rrr)\b")
 
 
-def check_mechanism_drawings(root, page, figures):
+def mechanisms_are_drawn(site, page):
     """A chapter of the mobility kind (its code calls sk.mobility) must show at least as
     many figures as the catalogue mechanisms its code builds
     (read from the page's .ipynb source)."""
-    source = os.path.join(root, "_sources", os.path.splitext(page)[0] + ".ipynb")
-    if not page.startswith("notebooks/") or not os.path.exists(source):
+    cells = chapter_code(site, page)
+    if cells is None:
         return []
-    with open(source, encoding="utf-8") as f:
-        cells = json.load(f)["cells"]
-    code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    code = "\n".join(cells)
     if "sk.mobility(" not in code:
         return []
     mechanisms = sorted(set(MECHANISM_BUILDER.findall(code)))
-    if len(figures) < len(mechanisms):
+    if len(page.figures) < len(mechanisms):
         return [
-            f"{page}: {len(mechanisms)} mechanisms analysed "
-            f"({', '.join(mechanisms)}) but only {len(figures)} figures: "
+            f"{page.name}: {len(mechanisms)} mechanisms analysed "
+            f"({', '.join(mechanisms)}) but only {len(page.figures)} figures: "
             "draw each one (sk.plotting.draw_mechanism)"
         ]
     return []
 
 
-def check_placeholder_links(page, parser):
-    """Links (launch buttons among them) must not point to a placeholder such as
-    hub.example.edu."""
+def first_chapter_screenshot(site):
+    """Keeps a screenshot of the first chapter in _build/ for review (fails only if
+    Chromium cannot draw it)."""
+    shot_page = next(
+        (p for p in site.pages if p.startswith("notebooks/")), site.pages[0]
+    )
+    shot = os.path.join(os.path.dirname(site.root), "screenshot.png")
+    dump_dom(
+        site.origin + shot_page,
+        os.path.join(site.tmp, "profile"),
+        f"--screenshot={shot}",
+        "--window-size=1280,1600",
+        "--hide-scrollbars",
+    )
+    print(f"screenshot of {shot_page}: {shot}")
+    return []
+
+
+# ---- Rules on the in-page figures: every control of every figure, moved.
+
+MOVE_CONTROL = script("move_control")
+
+
+def interactive_figures_respond(site):
+    """Every slider or drop-down of every in-page figure (screwkit.viewer), when moved,
+    changes the drawing; no page logs a JavaScript error or holds a widget placeholder
+    (blank in the book). Prints each page's redraw times (goal: under 50 ms)."""
     problems = []
-    for href in parser.links:
-        host = urlsplit(href).hostname or ""
-        if any(marker in host for marker in PLACEHOLDER_HOSTS):
-            problems.append(f"{page}: a link to the placeholder {host}: {href[:120]}")
+    with harness.launch() as chromium:
+        for page_name in site.pages:
+            page = chromium.new_page()
+            errors = harness.collect_errors(
+                page, ignore=lambda url: url.endswith("/favicon.ico")
+            )
+            page.goto(site.origin + page_name, wait_until="load")
+            problems += no_widget_placeholders(page, page_name)
+            found, times, figures = figures_respond(page, page_name)
+            problems += found
+            problems += [f"{page_name}: JavaScript error: {e}" for e in errors]
+            if times:
+                print(
+                    f"{page_name}: {len(figures)} interactive figures, "
+                    f"{len(times)} controls moved, "
+                    f"redraw median {sorted(times)[len(times) // 2]:.1f} ms, "
+                    f"max {max(times):.1f} ms (goal {REDRAW_GOAL_MS} ms)"
+                )
+            page.close()
     return problems
 
 
-# ---- The book as a reader sees it: navigation, weight, accessibility and layout, at
-# the widths of a phone (390 px), a tablet (800 px) and a laptop (1280 px), on every
-# page (by rule: every page of the build under book/ and notebooks/, so a new chapter
-# cannot slip by).
+def no_widget_placeholders(page, page_name):
+    """No widget view without a fallback (blank in the book)."""
+    placeholders = page.locator(
+        "script[type='application/vnd.jupyter.widget-view+json']"
+    ).count()
+    if placeholders:
+        return [f"{page_name}: {placeholders} widget placeholders (blank in the book)"]
+    return []
+
+
+def figures_respond(page, page_name):
+    """Every figure was drawn, and each of its controls, moved, changes the drawing.
+
+    Returns the problems, the redraw times (ms) and the figures' ids."""
+    problems = []
+    figures = page.eval_on_selector_all("div.screwkit-viewer", "d => d.map(e => e.id)")
+    times = []
+    for figure in figures:
+        if not page.evaluate(
+            "id => document.getElementById(id).dataset.mounted", figure
+        ):
+            problems.append(f"{page_name}: figure {figure} was never drawn")
+            continue
+        count = page.locator(
+            f"[id='{figure}'] input[type=range], [id='{figure}'] select"
+        ).count()
+        for k in range(count):
+            changed, elapsed, label = page.evaluate(MOVE_CONTROL, [figure, k])
+            times.append(elapsed)
+            if not changed:
+                problems.append(
+                    f"{page_name}: moving {label} of {figure} changed nothing"
+                )
+    return problems, times, figures
+
+
+# ---- Rules on the book as a reader sees it: navigation, weight, accessibility and
+# layout, at the widths of a phone (390 px), a tablet (800 px) and a laptop (1280 px),
+# on every page.
 
 WIDTHS = (390, 800, 1280)
 PAGE_LIMIT_MB = 2.5  # a page, cold (empty cache): the HTML and everything it loads
 AXE_VERSION = "4.14.1"  # axe-core from the npm registry, fetched at check time
 AXE_FAILING = ("critical", "serious")
-
-# In the page: which search controls, sidebar buttons and sidebars a reader can see.
-VISIBLE = """(selector) => [...document.querySelectorAll(selector)].filter(e => {
-    const r = e.getBoundingClientRect(), s = getComputedStyle(e);
-    return r.width > 0 && r.height > 0 && s.visibility !== "hidden" && r.right > 0
-        && r.left < innerWidth && e.closest("[inert]") === null;
-}).length"""
-DIALOG_OPEN = (
-    "(id) => { const d = document.getElementById(id); return !!(d && d.open); }"
-)
-TOOLTIPS = "() => [...document.querySelectorAll('.tooltip.show')].length"
+VISIBLE = script("visible")
+DIALOG_OPEN = script("dialog_open")
+TOOLTIPS = script("tooltips")
+MEASURE_LAYOUT = script("measure_layout")
+AXE_RUN = script("axe_run")
+MATHJAX_DONE = script("mathjax_done")
 
 
-def check_navigation(page, page_name, width):
-    """One search; the table-of-contents and page-outline buttons open their
-    sidebars."""
+def navigation_works(page, page_name, width):
+    """One search control in sight; the table-of-contents and page-outline buttons open
+    their sidebars (Escape closes them), with no tooltip left on screen after."""
     problems = []
     where = f"{page_name} at {width} px"
     press = (
@@ -419,69 +594,7 @@ def check_navigation(page, page_name, width):
     return problems
 
 
-# In the page (by rule, every element of the article): the content column; elements that
-# stick out of it (not inside a box that clips or scrolls them); boxes that scroll
-# sideways, by kind; images meant to be shown wider than the column; and whether the
-# page itself scrolls sideways.
-MEASURE_LAYOUT = """() => {
-    const article = document.querySelector("article.bd-article") || document.querySelector("main");
-    const style = getComputedStyle(article), box = article.getBoundingClientRect();
-    const left = box.left + parseFloat(style.paddingLeft);
-    const right = box.right - parseFloat(style.paddingRight);
-    const clips = e => getComputedStyle(e).overflowX !== "visible";
-    const inside = e => { for (let a = e.parentElement; a && a !== article; a = a.parentElement)
-                              if (clips(a)) return true;
-                          return false; };
-    const name = e => {
-        const text = (e.innerText || e.getAttribute("alt") || e.getAttribute("src") || "")
-            .trim().split("\\n")[0].slice(0, 50);
-        return `${e.tagName.toLowerCase()}${e.className && typeof e.className === "string"
-            ? "." + e.className.trim().split(/\\s+/)[0] : ""} ${JSON.stringify(text)}`;
-    };
-    const kind = e => e.closest(".cell_input") ? "code"
-        : e.closest("mjx-container, div.math, span.math") ? "equation"
-        : e.closest("table, .pst-scrollable-table-container") || e.querySelector("table") ? "table"
-        : e.closest(".cell_output") ? "output"
-        : e.closest("div.highlight") ? "code block" : "other";
-    const out = [], scrolling = [];
-    for (const e of article.querySelectorAll("*")) {
-        const r = e.getBoundingClientRect(), s = getComputedStyle(e);
-        if (r.width === 0 || r.height === 0 || s.position === "fixed") continue;
-        if ((r.right > right + 1 || r.left < left - 1) && !inside(e)) {
-            const p = e.parentElement.getBoundingClientRect();
-            if (!(p.right > right + 1 || p.left < left - 1))
-                out.push([kind(e), name(e), Math.round(r.width)]);
-        }
-        // A box (not an inline element, whose clientWidth is 0) with more inside than it shows:
-        // scrolled sideways, or clipped. What is inside is measured by its elements' boxes,
-        // leaving out MathJax's copy for screen readers (mjx-assistive-mml), which is clipped
-        // on purpose and would count in scrollWidth.
-        if (s.display === "inline" || !clips(e) || e.scrollWidth <= e.clientWidth + 1
-            || e.closest("mjx-assistive-mml")) continue;
-        const edge = e.getBoundingClientRect().left + e.clientLeft + e.clientWidth - e.scrollLeft;
-        let widest = edge;
-        for (const d of e.querySelectorAll("*")) {
-            if (d.closest("mjx-assistive-mml")) continue;
-            const dr = d.getBoundingClientRect();
-            if (dr.width > 0) widest = Math.max(widest, dr.right);
-        }
-        const hidden = Math.round(widest - edge);
-        if (hidden <= 3) continue;  // an italic letter's overhang
-        if (s.overflowX === "hidden") out.push([kind(e), `clipped (${hidden} px) ${name(e)}`,
-                                                Math.round(r.width) + hidden]);
-        else scrolling.push([kind(e), name(e), e.clientWidth + hidden, e.clientWidth]);
-    }
-    const images = [...article.querySelectorAll("img")].map(img => {
-        const intended = img.getAttribute("width") ? parseFloat(img.getAttribute("width"))
-                                                  : img.naturalWidth;
-        return [img.getAttribute("src"), intended];
-    }).filter(([src, width]) => width > right - left + 1);
-    const page = document.documentElement.scrollWidth > innerWidth + 1;
-    return {column: Math.round(right - left), out, scrolling, images, page};
-}"""  # noqa: E501 (JavaScript: its lines are the string's text)
-
-
-def check_layout(page, page_name, width):
+def layout_fits(page, page_name, width):
     """At 1280 px nothing wider than the column, and no code cell, output or table that
     scrolls sideways (an equation too long for any column, or a code block of the prose,
     may: they are listed); at every width the page itself never scrolls sideways, and
@@ -544,14 +657,8 @@ def axe_source(cache):
     return script
 
 
-AXE_RUN = """async () => {
-    const result = await axe.run(document, {resultTypes: ["violations"]});
-    return result.violations.map(v => [v.id, v.impact, v.nodes.length,
-        v.nodes.slice(0, 2).map(n => n.target.join(" ")).join(", ")]);
-}"""
-
-
-def check_accessibility(page, page_name, axe):
+def no_serious_accessibility_violations(page, page_name, axe):
+    """axe-core finds no critical or serious violation on the page."""
     page.add_script_tag(path=axe)
     violations = page.evaluate(AXE_RUN)
     counts = {}
@@ -565,7 +672,7 @@ def check_accessibility(page, page_name, axe):
     return problems, counts
 
 
-def check_search(chromium, url, word="screw"):
+def search_finds_pages(chromium, url, word="screw"):
     """The search button opens the search box, and a search finds pages
     (on search.html)."""
     page = chromium.new_page(viewport={"width": 1280, "height": 900})
@@ -582,14 +689,6 @@ def check_search(chromium, url, word="screw"):
         found = 0
     page.close()
     return [] if found else [f"searching for {word!r} from {url} found nothing"]
-
-
-# In the page: resolves when MathJax (if the page loads it) has typeset the page. Its
-# loader fetches its components only after the page's own scripts have run (a viewer's
-# three.js, say), which can come after a quiet half second: "networkidle" alone may miss
-# them.
-MATHJAX_DONE = """() => window.MathJax && MathJax.startup && MathJax.startup.promise
-    ? MathJax.startup.promise.then(() => true) : false"""
 
 
 def settle(page, pending, quiet_ms=700, limit_ms=30000):
@@ -634,16 +733,15 @@ def cold_weight(chromium, url):
     return size
 
 
-def check_reader(browser, origin, pages, cache):
-    """Every page at every width: navigation, layout and (at 1280 px) axe; and its cold
-    weight."""
-    from playwright.sync_api import sync_playwright
-
+def reader_sees_a_working_book(site):
+    """Every page at every width: navigation and layout (see navigation_works,
+    layout_fits), and at 1280 px axe-core; every page's cold weight at most
+    PAGE_LIMIT_MB; a search finds pages. Prints the boxes that scroll sideways, the axe
+    counts and each page's weight."""
+    cache = os.path.join(os.path.dirname(site.root), ".site-check")
     axe = axe_source(cache)
     problems, notes, layout_counts, axe_counts, weights = [], [], {}, {}, {}
-    flags = [f for f in CHROMIUM_FLAGS if f != "--headless"]
-    with sync_playwright() as p:
-        chromium = p.chromium.launch(executable_path=browser, args=flags)
+    with harness.launch() as chromium:
         for width in WIDTHS:
             phone = width < 600
             context = chromium.new_context(
@@ -651,30 +749,31 @@ def check_reader(browser, origin, pages, cache):
                 has_touch=phone,
                 is_mobile=phone,
             )
-            for page_name in pages:
+            for page_name in site.pages:
                 page = context.new_page()
-                page.goto(origin + page_name, wait_until="load")
+                page.goto(site.origin + page_name, wait_until="load")
                 page.wait_for_timeout(500)  # MathJax typesets after load
-                found, counts, noted = check_layout(page, page_name, width)
+                found, counts, noted = layout_fits(page, page_name, width)
                 problems += found
                 notes += noted
                 for kind, count in counts.items():
                     layout_counts[(width, kind)] = (
                         layout_counts.get((width, kind), 0) + count
                     )
-                problems += check_navigation(page, page_name, width)
+                problems += navigation_works(page, page_name, width)
                 if width == 1280:
                     page.reload(wait_until="load")
                     page.wait_for_timeout(500)
-                    found, counts = check_accessibility(page, page_name, axe)
+                    found, counts = no_serious_accessibility_violations(
+                        page, page_name, axe
+                    )
                     problems += found
                     axe_counts[page_name] = counts
                 page.close()
             context.close()
-        for page_name in pages:
-            weights[page_name] = cold_weight(chromium, origin + page_name)
-        problems += check_search(chromium, origin + pages[0])
-        chromium.close()
+        for page_name in site.pages:
+            weights[page_name] = cold_weight(chromium, site.origin + page_name)
+        problems += search_finds_pages(chromium, site.origin + site.pages[0])
     for width in WIDTHS:
         kinds = {
             kind: n for (w, kind), n in sorted(layout_counts.items()) if w == width
@@ -687,7 +786,7 @@ def check_reader(browser, origin, pages, cache):
         AXE_VERSION,
         "violations (elements) by impact, and cold page weight:",
     )
-    for page_name in pages:
+    for page_name in site.pages:
         counts = ", ".join(
             f"{k} {v}" for k, v in sorted(axe_counts.get(page_name, {}).items())
         )
@@ -702,91 +801,78 @@ def check_reader(browser, origin, pages, cache):
     return problems
 
 
-# In the page: move control k of figure `id` to another value of its grid, return
-# [changed?, milliseconds, label]. A figure's drawing is its canvas pixels or its
-# frame's HTML.
-MOVE_CONTROL = """([id, k]) => {
-    const root = document.getElementById(id);
-    const drawing = () => [...root.querySelectorAll("canvas")].map(c => c.toDataURL()).join()
-        + [...root.querySelectorAll(".screwkit-frame")].map(f => f.innerHTML).join();
-    const control = root.querySelectorAll("input[type=range], select")[k];
-    const before = drawing();
-    let label = control.getAttribute("aria-label");
-    if (control.tagName === "SELECT") {
-        control.selectedIndex = (control.selectedIndex + 1) % control.options.length;
-    } else {
-        const [low, high, step] = [+control.min, +control.max, +control.step];
-        const count = Math.round((high - low) / step);
-        const here = Math.round((+control.value - low) / step);
-        control.value = String(low + step * ((here + Math.max(1, Math.round(count / 3))) % (count + 1)));
-    }
-    const start = performance.now();
-    control.dispatchEvent(new Event(control.tagName === "SELECT" ? "change" : "input"));
-    const elapsed = performance.now() - start;
-    return [drawing() !== before, elapsed, label];
-}"""  # noqa: E501 (JavaScript: its lines are the string's text)
+# ---- Rules on the whole, once every page was loaded.
 
 
-def check_interactive(browser, origin, pages):
-    """Move every control of every in-page figure; the drawing must change, without JS
-    errors."""
-    from playwright.sync_api import sync_playwright
+def server_had_every_file(site):
+    """Every file a page asked the server for exists (MathJax fonts and extensions
+    included)."""
+    return [
+        f"the server had no answer for {request}"
+        for request in sorted(QuietHandler.missing)
+    ]
 
+
+def book_within_its_limit(site):
+    """The whole book stays under BOOK_LIMIT_MB; prints its size."""
+    size = sum(
+        os.path.getsize(os.path.join(d, f))
+        for d, _, fs in os.walk(site.root)
+        for f in fs
+    )
+    print(f"book size: {size / 1e6:.1f} MB (limit {BOOK_LIMIT_MB} MB)")
+    if size > BOOK_LIMIT_MB * 1e6:
+        return [f"the book is {size / 1e6:.1f} MB, over the {BOOK_LIMIT_MB} MB limit"]
+    return []
+
+
+@dataclass(frozen=True)
+class Rule:
+    """A check: ``scope`` "book" runs ``check(site)`` once, "page" runs
+    ``check(site, page)`` on every page; each returns a list of problems (str)."""
+
+    scope: str
+    check: Callable
+
+
+#: Every rule of the site check, in the order they run and report.
+RULES = [
+    Rule("book", toc_is_built),
+    Rule("page", links_resolve),
+    Rule("page", no_placeholder_links),
+    Rule("page", alt_texts_say_what_they_show),
+    Rule("page", first_cell_installs_screwkit),
+    Rule("page", chapter_has_its_shape),
+    Rule("page", nothing_leaves_the_machine),
+    Rule("page", math_is_typeset),
+    Rule("page", chapter_shows_a_figure),
+    Rule("page", mechanisms_are_drawn),
+    Rule("book", first_chapter_screenshot),
+    Rule("book", interactive_figures_respond),
+    Rule("book", reader_sees_a_working_book),
+    Rule("book", server_had_every_file),
+    Rule("book", book_within_its_limit),
+]
+
+
+def run(site, rules):
+    """Every rule in order (a run of page rules on each page in turn); the problems."""
     problems = []
-    flags = [f for f in CHROMIUM_FLAGS if f != "--headless"]
-    with sync_playwright() as p:
-        chromium = p.chromium.launch(executable_path=browser, args=flags)
-        for page_name in pages:
-            page = chromium.new_page()
-            errors = []
-            page.on("pageerror", lambda error: errors.append(str(error)))
-            page.on(
-                "console",
-                lambda m: (
-                    m.type == "error"
-                    and not m.location.get("url", "").endswith("/favicon.ico")
-                    and errors.append(m.text)
-                ),
+    for scope, group in itertools.groupby(rules, key=lambda rule: rule.scope):
+        group = list(group)
+        if scope == "book":
+            for rule in group:
+                problems += rule.check(site)
+            continue
+        for name in site.pages:
+            page = load_page(site, name)
+            for rule in group:
+                problems += rule.check(site, page)
+            print(
+                f"{name}: {page.dom.math_containers} math, {len(page.figures)} "
+                f"figures, {len(page.static.links)} links, "
+                f"{len(page.leaks)} outside requests"
             )
-            page.goto(origin + page_name, wait_until="load")
-            placeholders = page.locator(
-                "script[type='application/vnd.jupyter.widget-view+json']"
-            ).count()
-            if placeholders:
-                problems.append(
-                    f"{page_name}: {placeholders} widget placeholders "
-                    "(blank in the book)"
-                )
-            figures = page.eval_on_selector_all(
-                "div.screwkit-viewer", "d => d.map(e => e.id)"
-            )
-            times = []
-            for figure in figures:
-                if not page.evaluate(
-                    "id => document.getElementById(id).dataset.mounted", figure
-                ):
-                    problems.append(f"{page_name}: figure {figure} was never drawn")
-                    continue
-                count = page.locator(
-                    f"[id='{figure}'] input[type=range], [id='{figure}'] select"
-                ).count()
-                for k in range(count):
-                    changed, elapsed, label = page.evaluate(MOVE_CONTROL, [figure, k])
-                    times.append(elapsed)
-                    if not changed:
-                        problems.append(
-                            f"{page_name}: moving {label} of {figure} changed nothing"
-                        )
-            problems += [f"{page_name}: JavaScript error: {e}" for e in errors]
-            if times:
-                print(
-                    f"{page_name}: {len(figures)} interactive figures, "
-                    f"{len(times)} controls moved, "
-                    f"redraw median {sorted(times)[len(times) // 2]:.1f} ms, "
-                    f"max {max(times):.1f} ms (goal {REDRAW_GOAL_MS} ms)"
-                )
-            page.close()
-        chromium.close()
     return problems
 
 
@@ -798,76 +884,13 @@ def main(root):
             f"site check: no pages under {root}/book or {root}/notebooks; "
             "build the book first"
         )
-    browser = find_chromium()
+    if harness.CHROMIUM is None:
+        sys.exit("site check: no Chromium found (apt-get install chromium)")
     server = serve(root)
     origin = f"http://127.0.0.1:{server.server_address[1]}/"
-    problems, anchors = check_toc_built(root), {}
     with tempfile.TemporaryDirectory() as tmp:
-        netlog = os.path.join(tmp, "netlog.json")
-        for page in pages:
-            with open(os.path.join(root, page), encoding="utf-8") as f:
-                static = parse(f.read())
-            problems += check_links(root, page, static, anchors)
-            problems += check_placeholder_links(page, static)
-            problems += check_alt_texts(page, static)
-            problems += check_first_cell(root, page)
-            with open(os.path.join(root, page), encoding="utf-8") as f:
-                problems += check_chapter_shape(page, f.read())
-            dom = parse(
-                chromium(
-                    browser,
-                    origin + page,
-                    os.path.join(tmp, "profile"),
-                    "--dump-dom",
-                    f"--log-net-log={netlog}",
-                )
-            )
-            leaks = outside_requests(netlog, origin)
-            problems += [
-                f"{page}: request left the machine: {url}" for url in sorted(leaks)
-            ]
-            if static.math_sources and not dom.math_containers:
-                problems.append(f"{page}: has math but MathJax typeset none of it")
-            if dom.math_errors:
-                problems.append(f"{page}: MathJax reported {dom.math_errors} errors")
-            figures = [src for src in dom.images if "_images/" in src]
-            if page.startswith("notebooks/") and not figures:
-                problems.append(
-                    f"{page}: a chapter page without a figure (no cell output image)"
-                )
-            problems += check_mechanism_drawings(root, page, figures)
-            print(
-                f"{page}: {dom.math_containers} math, {len(figures)} figures, "
-                f"{len(static.links)} links, {len(leaks)} outside requests"
-            )
-        shot_page = next((p for p in pages if p.startswith("notebooks/")), pages[0])
-        shot = os.path.join(os.path.dirname(root), "screenshot.png")
-        chromium(
-            browser,
-            origin + shot_page,
-            os.path.join(tmp, "profile"),
-            f"--screenshot={shot}",
-            "--window-size=1280,1600",
-            "--hide-scrollbars",
-        )
-        print(f"screenshot of {shot_page}: {shot}")
-        problems += check_interactive(browser, origin, pages)
-        problems += check_reader(
-            browser, origin, pages, os.path.join(os.path.dirname(root), ".site-check")
-        )
+        problems = run(Site(root=root, origin=origin, pages=pages, tmp=tmp), RULES)
     server.shutdown()
-    problems += [
-        f"the server had no answer for {request}"
-        for request in sorted(QuietHandler.missing)
-    ]
-    size = sum(
-        os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(root) for f in fs
-    )
-    print(f"book size: {size / 1e6:.1f} MB (limit {BOOK_LIMIT_MB} MB)")
-    if size > BOOK_LIMIT_MB * 1e6:
-        problems.append(
-            f"the book is {size / 1e6:.1f} MB, over the {BOOK_LIMIT_MB} MB limit"
-        )
     if problems:
         print("\nsite check FAILED:")
         for problem in problems:

@@ -1,4 +1,4 @@
-"""The in-page viewers computed by screwkit/static/viewer.js agree with screwkit, in
+"""The in-page viewers computed by screwkit/static/viewer/ agree with screwkit, in
 Chromium.
 
 Each figure is rendered into a page of headless Chromium (system Chromium driven by
@@ -11,42 +11,26 @@ Chromium.
 """
 
 import math
-import shutil
 
+import harness
 import numpy as np
 import pytest
 
 import screwkit as sk
 from screwkit import viewer
 
-playwright = pytest.importorskip("playwright.sync_api")
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-FLAGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-    "--disable-quic",
-    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
-]
+pytest.importorskip("playwright.sync_api")
 pytestmark = pytest.mark.skipif(
-    CHROMIUM is None, reason="needs Chromium (apt-get install chromium)"
+    harness.CHROMIUM is None, reason="needs Chromium (apt-get install chromium)"
 )
 
 
 @pytest.fixture(scope="module")
 def page():
-    with playwright.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+    with harness.launch() as browser:
         page = browser.new_page()
-        errors = []
-        page.on("pageerror", lambda error: errors.append(str(error)))
-        page.on("console", lambda m: m.type == "error" and errors.append(m.text))
-        page.errors = errors
+        harness.collect_errors(page)
         yield page
-        browser.close()
 
 
 def show(page, figure, width=760):

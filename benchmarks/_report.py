@@ -1,4 +1,5 @@
-"""Shared by the benchmark scripts: best-of timing and the table against the Robotics Toolbox."""
+"""Shared by the benchmark scripts: best-of timing, the table against the RTB."""
+
 import timeit
 
 
@@ -13,8 +14,14 @@ def ms(seconds):
 
 def print_table(rows, width=27):
     """rows: (task, screwkit s, RTB s or None, RTB path, goal s or None)."""
-    print(f"{'task':<{width}}{'screwkit':>13}{'RTB':>13}{'speed-up':>9}  {'RTB path':<21}{'goal':>13}  met")
+    print(
+        f"{'task':<{width}}{'screwkit':>13}{'RTB':>13}{'speed-up':>9}  "
+        f"{'RTB path':<21}{'goal':>13}  met"
+    )
     for task, t_ours, t_theirs, path, goal in rows:
         ratio = f"{t_theirs / t_ours:>8.1f}x" if t_theirs else f"{'-':>9}"
         met = "" if goal is None else ("yes" if t_ours < goal else "NO")
-        print(f"{task:<{width}}{ms(t_ours)}{ms(t_theirs)}{ratio}  {path:<21}{ms(goal)}  {met}")
+        print(
+            f"{task:<{width}}{ms(t_ours)}{ms(t_theirs)}{ratio}  "
+            f"{path:<21}{ms(goal)}  {met}"
+        )

@@ -1,17 +1,20 @@
-"""Peak memory of screwkit's batch paths for 10^6 configurations of the PUMA 560 (goal: < 1 GB).
+"""Peak memory of screwkit's batch paths for 10^6 configurations of the PUMA 560
+(goal: < 1 GB).
 
 Each task runs in a fresh subprocess, so that one task's memory does not hide another's.
-Per task the child builds its input (random joint vectors, seeded; poses for the IK), warms the
-compiled functions up on ten configurations, then runs the call twice:
+Per task the child builds its input (random joint vectors, seeded; poses for the IK),
+warms the compiled functions up on ten configurations, then runs the call twice:
 
-* once plainly, for the time and the process's peak resident set (``ru_maxrss``: the whole
-  interpreter, NumPy, SymPy, the input and the result: what the operating system sees);
-* once under ``tracemalloc``, for the peak of the memory the call itself allocated on top of its
-  input (NumPy reports its buffers to tracemalloc), its result included.
+* once plainly, for the time and the process's peak resident set (``ru_maxrss``: the
+  whole interpreter, NumPy, SymPy, the input and the result: what the operating system
+  sees);
+* once under ``tracemalloc``, for the peak of the memory the call itself allocated on
+  top of its input (NumPy reports its buffers to tracemalloc), its result included.
 
 The goal is met when the process peak stays under 1 GB. Printed, never asserted.
 Usage (from the top level): .venv/bin/python benchmarks/bench_memory.py [task ...]
 """
+
 import json
 import subprocess
 import sys
@@ -24,10 +27,16 @@ TASKS = {
     "geometric_jacobian": "puma.geometric_jacobian(Q)",
     "manipulability": "puma.manipulability(Q)",
     "puma560_ik_all": "sk.ik.puma560_ik_all(T)",
-    "sweep 215^3 (q1, q2, q3)": "sk.workspace.sweep(puma, {1: (-3, 3), 2: (-3, 3), 3: (-3, 3)}, num=215)",
-    "sweep 100^3 + singular()": "sk.workspace.sweep(puma, {1: (-3, 3), 2: (-3, 3), 3: (-3, 3)}, "
-                                "num=100).singular()",
-    "sweep 301^3 (refused)": "refuse(lambda: sk.workspace.sweep(puma, {1: (0, 1), 2: (0, 1), 3: (0, 1)}))",
+    "sweep 215^3 (q1, q2, q3)": (
+        "sk.workspace.sweep(puma, {1: (-3, 3), 2: (-3, 3), 3: (-3, 3)}, num=215)"
+    ),
+    "sweep 100^3 + singular()": (
+        "sk.workspace.sweep(puma, {1: (-3, 3), 2: (-3, 3), 3: (-3, 3)}, "
+        "num=100).singular()"
+    ),
+    "sweep 301^3 (refused)": (
+        "refuse(lambda: sk.workspace.sweep(puma, {1: (0, 1), 2: (0, 1), 3: (0, 1)}))"
+    ),
 }
 
 CHILD = r"""
@@ -59,7 +68,8 @@ tracemalloc.start()
 result = {expression}
 traced = tracemalloc.get_traced_memory()[1] / 1e6
 tracemalloc.stop()
-print(json.dumps(dict(seconds=seconds, inputs=inputs, result=size, traced=traced, rss=rss)))
+print(json.dumps(dict(seconds=seconds, inputs=inputs, result=size, traced=traced,
+                      rss=rss)))
 """
 
 
@@ -72,16 +82,24 @@ def measure(task):
 
 
 def main(tasks):
-    print(f"peak memory for N = {N:,} PUMA 560 configurations (MB; goal: process peak < {GOAL_MB:.0f} MB)")
-    print(f"{'task':<28}{'time (s)':>9}{'input':>9}{'result':>9}{'call peak':>11}{'process peak':>14}  met")
+    print(
+        f"peak memory for N = {N:,} PUMA 560 configurations "
+        f"(MB; goal: process peak < {GOAL_MB:.0f} MB)"
+    )
+    print(
+        f"{'task':<28}{'time (s)':>9}{'input':>9}{'result':>9}{'call peak':>11}"
+        f"{'process peak':>14}  met"
+    )
     for task in tasks:
         m = measure(task)
         if "error" in m:
             print(f"{task:<28}  failed: {m['error']}")
             continue
         met = "yes" if m["rss"] < GOAL_MB else "NO"
-        print(f"{task:<28}{m['seconds']:>9.2f}{m['inputs']:>9.0f}{m['result']:>9.0f}{m['traced']:>11.0f}"
-              f"{m['rss']:>14.0f}  {met}")
+        print(
+            f"{task:<28}{m['seconds']:>9.2f}{m['inputs']:>9.0f}{m['result']:>9.0f}{m['traced']:>11.0f}"
+            f"{m['rss']:>14.0f}  {met}"
+        )
 
 
 if __name__ == "__main__":

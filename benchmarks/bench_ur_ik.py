@@ -1,4 +1,4 @@
-"""Closed-form IK of a UR-type arm (screwkit.ur_ik): all eight solutions of 10,000 UR5e
+"""Closed-form IK of a UR-type arm (screwkit.ik.ur): all eight solutions of 10,000 UR5e
 poses in one call, against the same poses solved one call at a time (the ratio base:
 no UR closed-form peer is installable from PyPI here), and against the spherical-wrist
 solver on the PUMA 560 for scale. First call (the arm's geometry is found) and steady

@@ -24,8 +24,10 @@ import numbers
 import numpy as np
 import sympy as sp
 
-#: Tolerance for numeric orthonormality checks of rotation matrices.
-ORTHONORMAL_TOL = 1e-6
+from .tolerances import ROTATION_TOL, ZERO_TOL
+
+#: The old name of :data:`screwkit.tolerances.ROTATION_TOL` (R^T R against I).
+ORTHONORMAL_TOL = ROTATION_TOL
 
 _INFINITE = {sp.nan, sp.zoo, sp.oo, -sp.oo}
 
@@ -448,7 +450,7 @@ def _check_rotation_numeric(R, name):
         return
     gram = np.swapaxes(R, -1, -2) @ R
     deviation = np.max(np.abs(gram - np.eye(3)))
-    if not deviation <= ORTHONORMAL_TOL:
+    if not deviation <= ROTATION_TOL:
         raise ValueError(
             f"{name} must be a rotation matrix (orthonormal columns), "
             f"but R^T R differs from the identity by {deviation:.3g}"
@@ -473,10 +475,10 @@ def check_transform(transform, name="T"):
         check_rotation(T[:3, :3], f"the rotation block of {name}")
         return T
     T = check_shape(as_float_array(transform, name), name, (4, 4))
-    if not np.allclose(T[..., 3, :], [0.0, 0.0, 0.0, 1.0], atol=1e-12):
+    if not np.allclose(T[..., 3, :], [0.0, 0.0, 0.0, 1.0], atol=ZERO_TOL):
         bad = T[..., 3, :].reshape(-1, 4)
         first = bad[
-            ~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=1e-12), axis=-1)
+            ~np.all(np.isclose(bad, [0.0, 0.0, 0.0, 1.0], atol=ZERO_TOL), axis=-1)
         ][0]
         raise ValueError(
             f"{name} must have last row [0, 0, 0, 1], got {first.tolist()}"
@@ -486,12 +488,28 @@ def check_transform(transform, name="T"):
 
 
 def check_poses(T, name="T", single_only=False):
-    """``T`` as float64 (4, 4) or (N, 4, 4) rigid transforms
-    (one pose if ``single_only``)."""
+    """The one pose check: ``T`` as float64 rigid transforms.
+
+    A float batch (N, 4, 4) is first checked in one fast pass over cache-sized blocks
+    (the largest |R^T R - I|, the smallest det R, the last rows); the full check, and
+    its message, runs only when that pass finds something wrong.
+
+    Parameters
+    ----------
+    T : array-like, shape (4, 4) or (N, 4, 4), rigid transforms (m)
+    name : str, the argument's name in messages
+    single_only : bool, refuse a batch (one pose of shape (4, 4) expected)
+
+    Returns
+    -------
+    ndarray, shape (4, 4) or (N, 4, 4), float64 (the caller's array if it already is)
+    """
     if isinstance(T, (str, bytes)) or T is None:
         raise TypeError(
             f"{name} must be a 4x4 pose or an (N, 4, 4) batch, got {describe(T)}"
         )
+    if not single_only and _is_pose_batch(T):
+        return T
     T = as_float_array(T, name)
     if T.ndim not in (2, 3):
         raise ValueError(
@@ -503,3 +521,52 @@ def check_poses(T, name="T", single_only=False):
             f"{name} must be one pose of shape (4, 4), got shape {T.shape}"
         )
     return T
+
+
+#: Where R_ij sits in a flattened 4 x 4 pose, for i, j = 0, 1, 2.
+_ROTATION = [0, 1, 2, 4, 5, 6, 8, 9, 10]
+
+
+def _is_pose_batch(T):
+    """True if T is a float64 (N, 4, 4) array of rigid transforms (the fast pass)."""
+    if not (
+        isinstance(T, np.ndarray)
+        and T.dtype == np.float64
+        and T.ndim == 3
+        and T.shape[1:] == (4, 4)
+    ):
+        return False
+    flat = T.reshape(-1, 16)
+    worst, det = 0.0, 1.0
+    for start in range(0, len(flat), 8192):  # blocks that stay in the cache
+        block_worst, block_det = _gram_and_det(flat[start : start + 8192].T[_ROTATION])
+        worst, det = max(worst, block_worst), min(det, block_det)
+    last = np.max(np.abs(T[:, 3, :] - [0.0, 0.0, 0.0, 1.0]), initial=0.0)
+    return bool(
+        worst <= ROTATION_TOL and last <= ZERO_TOL and det > 0 and np.isfinite(T).all()
+    )
+
+
+def _gram_and_det(r):
+    """max |R^T R - I| and min det R over rotations given as rows r[3 i + j] = R_ij."""
+    col = [(r[j], r[3 + j], r[6 + j]) for j in range(3)]
+    dot, term = np.empty(r.shape[1]), np.empty(r.shape[1])  # in place: no temporaries
+    worst = 0.0
+    for i in range(3):
+        for j in range(i, 3):
+            np.multiply(col[i][0], col[j][0], out=dot)
+            for k in (1, 2):
+                dot += np.multiply(col[i][k], col[j][k], out=term)
+            target = float(i == j)
+            worst = max(worst, dot.max() - target, target - dot.min())
+    # det R = c0 . (c1 x c2) > 0 (a reflection passes the Gram test)
+    np.multiply(col[1][1], col[2][2], out=dot)
+    dot -= np.multiply(col[1][2], col[2][1], out=term)
+    det = dot * col[0][0]
+    np.multiply(col[1][2], col[2][0], out=dot)
+    dot -= np.multiply(col[1][0], col[2][2], out=term)
+    det += np.multiply(dot, col[0][1], out=term)
+    np.multiply(col[1][0], col[2][1], out=dot)
+    dot -= np.multiply(col[1][1], col[2][0], out=term)
+    det += np.multiply(dot, col[0][2], out=term)
+    return worst, det.min(initial=1.0)

@@ -34,10 +34,12 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .tolerances import SNAP_TOL
 from .transforms import _skew
 
-#: Coefficients this close to 0 or +-1 are taken as exact (cos(pi/2) computes as 6e-17).
-SNAP = 1e-14
+#: Coefficients this close to 0 or +-1 are taken as exact (cos(pi/2) computes as 6e-17):
+#: :data:`screwkit.tolerances.SNAP_TOL`.
+SNAP = SNAP_TOL
 
 #: Configurations per chunk of a batch: the one chunk size of screwkit
 #: (the generated code, the Jacobians and their measures, the closed-form IK, the

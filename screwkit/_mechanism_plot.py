@@ -16,7 +16,8 @@ import sympy as sp
 from ._checks import describe, real_number
 from .limbs import check_limbs
 from .screws import Screw, Wrench
-from .transforms import _is_infinite_pitch
+from .tolerances import LENGTH_TOL, ZERO_TOL, length_scale
+from .transforms import _cross, _is_infinite_pitch
 
 __all__ = ["draw_mechanism"]
 
@@ -88,7 +89,7 @@ def evaluate(limbs, values):
         for j, (s, r, h) in enumerate(limb):
             axis = _numeric(s, numbers, f"limb {i}, joint {j}: s")
             norm = np.linalg.norm(axis)
-            if norm < 1e-12:
+            if norm < ZERO_TOL:
                 raise ValueError(f"limb {i}, joint {j}: s is zero at these values")
             joints.append(
                 (_kind(h), axis / norm, _numeric(r, numbers, f"limb {i}, joint {j}: r"))
@@ -146,7 +147,7 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
     points = np.array([p for limb in joints for _, _, p in limb])
     size = float(np.ptp(points, axis=0).max())
     size = (
-        size if size > 1e-9 else 2.0
+        size if size > LENGTH_TOL * length_scale(points) else 2.0
     )  # every joint at one point (a spherical mechanism)
     length = size / 5 if axis_length is None else float(axis_length)
 
@@ -201,9 +202,9 @@ def twist_arrows(twists, centre):
             )
         w = np.array([float(e) for e in twist.primary])
         v = np.array([float(e) for e in twist.secondary])
-        if np.linalg.norm(w) > 1e-12:
+        if np.linalg.norm(w) > ZERO_TOL:
             direction = w / np.linalg.norm(w)
-            start = np.cross(w, v) / w.dot(w)
+            start = _cross(w, v) / w.dot(w)
             start = start + direction.dot(centre - start) * direction
             arrows.append(("rotation", start, direction))
         else:

@@ -12,8 +12,20 @@ __all__ = ["textbook"]
 def textbook(expr, q_symbols=None, collect=True):
     """``expr`` in textbook notation: cos(q1) -> c1, sin(q2 + q3) -> s23.
 
-    With ``collect``, sums are grouped by c1/s1 first, then by the next angles, which
-    gives nested forms like c1 (c23 (...) - s23 (...)) - s1 (...).
+    Parameters
+    ----------
+    expr : SymPy expression or matrix
+        E.g. ``chain.fk_symbolic()``; a matrix is converted entry by entry.
+    q_symbols : list of sympy.Symbol, optional
+        The joint symbols; by default the free symbols whose names start with "q".
+    collect : bool, optional
+        Group sums by c1/s1 first, then by the next angles, which gives nested forms
+        like c1 (c23 (...) - s23 (...)) - s1 (...).
+
+    Returns
+    -------
+    SymPy expression or matrix
+        ``expr`` with c1, s23, ... symbols in place of the cosines and sines.
     """
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: textbook(e, q_symbols, collect))

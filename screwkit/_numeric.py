@@ -4,17 +4,20 @@ Exact input (integers, rationals, symbols, pi, square roots) is handled by
 :mod:`._exact`. Floats are measurements or the result of float arithmetic
 (a frame tilted with NumPy): two axes meant to be parallel differ in their last bits,
 and an exact rank would count them as independent. Here a matrix's rank is the number of
-its singular values above ``tol * max(1, largest singular value)``, with ``tol = 1e-9``
-unless the caller says otherwise, and bases are reduced as in the exact layer
-(each row ends in a 1 at its own pivot column, found from the right), with entries
-within ``tol`` of an integer set to that integer.
+its singular values above ``tol * max(1, largest singular value)``, with ``tol =
+RANK_TOL`` (1e-9, :mod:`screwkit.tolerances`) unless the caller says otherwise, and
+bases are reduced as in the exact layer (each row ends in a 1 at its own pivot column,
+found from the right), with entries within ``tol`` of an integer set to that integer.
 """
 
 import numpy as np
 import sympy as sp
 
-#: The default relative tolerance of float ranks.
-TOL = 1e-9
+from .tolerances import RANK_TOL
+
+#: The default relative tolerance of float ranks (the old name of
+#: :data:`screwkit.tolerances.RANK_TOL`).
+TOL = RANK_TOL
 
 
 def has_floats(exprs):

@@ -15,11 +15,12 @@ import numpy as np
 
 from ._checks import as_float_array
 from .links import Joint
+from .tolerances import STEP_TOL
 
 #: Candidate steps, coarsest first: the first on which the default lies is used.
 ANGLE_STEPS = (1.0, 0.5, 0.1, 0.05, 0.01)
 LENGTH_STEPS = (0.01, 0.005, 0.001, 0.0001)
-_TOL = 1e-9
+_TOL = STEP_TOL
 
 
 @dataclass(frozen=True)
@@ -165,7 +166,7 @@ def grid_values(low, high, step, name="values"):
     if step <= 0:
         raise ValueError(f"step must be a positive number, got step={step:g}")
     count = (high - low) / step
-    if high <= low or abs(count - round(count)) > 1e-9:
+    if high <= low or abs(count - round(count)) > STEP_TOL:
         raise ValueError(
             f"{name} must be a grid low < high with (high - low) a whole number of "
             f"steps > 0, got low={low:g}, high={high:g}, step={step:g}"

@@ -31,7 +31,7 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _compiled, _newton, _numeric
+from . import _compiled, _numeric
 from ._checks import (
     ChainType,
     as_float_array,
@@ -43,6 +43,7 @@ from ._checks import (
     is_symbolic,
 )
 from ._notation import textbook
+from .ik import newton as _newton
 from .lie import adjoint
 from .links import (
     Convention,
@@ -61,13 +62,15 @@ from .links import (
 )
 from .screws import Twist
 from .systems import ScrewSystem
+from .tolerances import length_scale
 from .transforms import _cross, axis_coordinates, exp_twist
 from .urdf import read_urdf
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
 
-#: Rows of the geometric Jacobian: 'planar' is (v_x, v_y) in the chain's base frame, the
-#: 2 x n Jacobian of an arm that moves in its base's x-y plane.
+#: Rows of the geometric Jacobian, by name.
+#: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n Jacobian of an arm that
+#: moves in its base's x-y plane.
 ROWS = {
     "all": slice(0, 6),
     "position": slice(0, 3),
@@ -195,13 +198,28 @@ class Chain(ChainType):
     def from_table(
         cls, table, joints=None, convention=Convention.STANDARD, qlim=None, **options
     ):
-        """A chain from a DH table of shape (n, 4), columns (theta, d, a, alpha) in m
-        and rad.
+        """A chain from a DH table.
 
         For a revolute joint, theta is the joint offset (theta = q + offset); for a
-        prismatic one, d is (d = q + offset). ``joints`` is a sequence of Joint, or a
-        string such as 'RRP' (default all revolute); ``qlim`` an (n, 2) array
-        (+-inf: no limit) or None.
+        prismatic one, d is (d = q + offset).
+
+        Parameters
+        ----------
+        table : array-like, shape (n, 4)
+            Columns (theta, d, a, alpha), in rad and m.
+        joints : sequence of Joint, or str, optional
+            A string such as 'RRP'; all revolute by default.
+        convention : Convention, optional
+            ``Convention.STANDARD`` (default) or ``Convention.MODIFIED``.
+        qlim : array-like, shape (n, 2), or None, optional
+            Joint limits (rad or m; +-inf: no limit).
+        **options
+            ``base``, ``tool``, ``name``, ``configurations``, as for :class:`Chain`.
+
+        Returns
+        -------
+        Chain
+            The chain.
         """
         rows = as_float_array(table, "table")
         if rows.ndim != 2 or rows.shape[1] != 4 or rows.shape[0] < 1:
@@ -261,18 +279,33 @@ class Chain(ChainType):
 
         Parameters
         ----------
-        axes : list of n Twist objects or 6-vectors [omega; v] (or an (n, 6) array):
-            unit screw axes, |omega| = 1 for a revolute (pitch 0) or helical
-            (pitch omega . v) joint, omega = 0 and |v| = 1 for a prismatic one
-        home : (4, 4) rigid transform M, the end-effector pose at q = 0 (m)
-        frame : 'space' or 'body'
-        qlim : (n, 2) joint limits (rad, or m for prismatic joints; +-inf: none) or None
+        axes : list of n Twist objects or 6-vectors [omega; v], or an (n, 6) array
+            Unit screw axes, ``|omega| = 1`` for a revolute (pitch 0) or helical
+            (pitch omega . v) joint, omega = 0 and ``|v| = 1`` for a prismatic one.
+        home : array-like, shape (4, 4)
+            The rigid transform M, the end-effector pose at q = 0 (m).
+        frame : {'space', 'body'}, optional
+            Where the axes are written.
+        qlim : array-like, shape (n, 2), or None, optional
+            Joint limits (rad, or m for prismatic joints; +-inf: none).
+        base, tool : array-like, shape (4, 4), optional
+            Rigid transforms (default identity).
+        name : str, optional
+            Used in messages and titles.
+        configurations : dict, optional
+            {name: joint vector (n,)}, named configurations.
+
+        Returns
+        -------
+        Chain
+            The chain.
         """
         if frame not in ("space", "body"):
             raise ValueError(f"frame must be 'space' or 'body', got {frame!r}")
         screws, exact = check_screws(axes)
         n = screws.shape[0]
         limits = [None] * n if qlim is None else limits_table(qlim, n)
+        scale = length_scale(screws[:, 3:])
         chain = cls.__new__(cls)
         chain._setup(
             links=None,
@@ -286,19 +319,33 @@ class Chain(ChainType):
             name=name,
             configurations=configurations,
             qlim=limits,
-            joints=tuple(joint_kind(s) for s in screws),
+            joints=tuple(joint_kind(s, scale) for s in screws),
         )
         return chain
 
     @classmethod
     def from_urdf(cls, source, base_link=None, tip_link=None):
-        """A chain from a URDF file or text: the joints from ``base_link`` (default: the
-        root) to ``tip_link`` (required when the tree branches), as joint screws in the
-        base link's frame, exact where the file's numbers are (:mod:`screwkit.urdf`).
+        """A chain from a URDF file or text.
 
+        The joints from ``base_link`` to ``tip_link`` become joint screws in the base
+        link's frame, exact where the file's numbers are (:mod:`screwkit.urdf`).
         Revolute, continuous and prismatic joints; fixed joints folded into their
         neighbours; limits into ``qlim``; ``chain.joint_names`` lists the URDF joint
         names.
+
+        Parameters
+        ----------
+        source : str or os.PathLike
+            URDF text (starting with '<') or a URDF file's path.
+        base_link : str or None, optional
+            The link whose frame is the base frame (default: the root).
+        tip_link : str or None, optional
+            The end-effector link (required when the tree branches).
+
+        Returns
+        -------
+        Chain
+            A chain from screws, named after the robot.
         """
         urdf = read_urdf(source, base_link, tip_link)
         chain = cls.from_screws(
@@ -332,11 +379,33 @@ class Chain(ChainType):
         return chain
 
     def with_tool(self, tool):
-        """The same chain with another tool transform (4, 4)."""
+        """The same chain with another tool transform.
+
+        Parameters
+        ----------
+        tool : array-like, shape (4, 4)
+            The rigid transform of the tool in the last frame (m).
+
+        Returns
+        -------
+        Chain
+            A new chain (chains are immutable).
+        """
         return self._copy(tool=tool)
 
     def with_base(self, base):
-        """The same chain on another base transform (4, 4)."""
+        """The same chain on another base transform.
+
+        Parameters
+        ----------
+        base : array-like, shape (4, 4)
+            The rigid transform of the chain's base in the world frame (m).
+
+        Returns
+        -------
+        Chain
+            A new chain (chains are immutable).
+        """
         return self._copy(base=base)
 
     # ---- description -----------------------------------------------------------------
@@ -366,9 +435,16 @@ class Chain(ChainType):
         return f"Chain({self.name!r}, {self.n} joints {kinds}, {form})"
 
     def table(self):
-        """The chain's parameters as rows of strings, with a header: the DH table
-        (theta, d, a, alpha; the joint variable marked q_i) or the joint screws
-        (omega, v, pitch), and limits."""
+        """The chain's parameters as rows of strings, and a header.
+
+        Returns
+        -------
+        header : list of str
+            The columns' titles, with units.
+        rows : list of list of str
+            One row per joint: the DH table (theta, d, a, alpha; the joint variable
+            marked q_i) or the joint screws (omega, v, pitch), and limits.
+        """
 
         def number(value, scale=1.0):
             value = float(value) * scale
@@ -455,7 +531,20 @@ class Chain(ChainType):
     # ---- input checks ----------------------------------------------------------------
 
     def check_q(self, q, name="q"):
-        """``q`` as float64, shape (n,) or (N, n); a clear error otherwise."""
+        """``q`` checked and converted; a clear error otherwise.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        name : str, optional
+            The argument's name in the error message.
+
+        Returns
+        -------
+        ndarray, shape (n,) or (N, n)
+            ``q`` as float64.
+        """
         q = as_float_array(q, name)
         if q.ndim not in (1, 2) or q.shape[-1] != self.n:
             raise ValueError(
@@ -465,8 +554,20 @@ class Chain(ChainType):
         return q
 
     def check_one(self, q, name="q"):
-        """``q`` as float64 of shape (n,): one configuration
-        (a batch is refused, clearly)."""
+        """``q`` checked as one configuration (a batch is refused, clearly).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,)
+            Joint values (rad or m).
+        name : str, optional
+            The argument's name in the error message.
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            ``q`` as float64.
+        """
         q = self.check_q(q, name)
         if q.ndim != 1:
             raise ValueError(
@@ -476,7 +577,18 @@ class Chain(ChainType):
         return q
 
     def within_limits(self, q):
-        """True where every joint of q (shape (n,) or (N, n)) lies within its limits."""
+        """Whether every joint of q lies within its limits.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        bool or ndarray of bool, shape (N,)
+            True where every joint is within its limits.
+        """
         q = self.check_q(q)
         return np.all((q >= self._qlim[:, 0]) & (q <= self._qlim[:, 1]), axis=-1)
 
@@ -512,15 +624,30 @@ class Chain(ChainType):
         ]
 
     def link_transforms(self, q=None):
-        """The n exact link transforms A_i(q_i) of a DH chain; q defaults to the joint
-        symbols."""
+        """The n exact link transforms A_i(q_i) of a DH chain.
+
+        Parameters
+        ----------
+        q : sequence of n numbers or SymPy expressions, optional
+            Joint values; the joint symbols q1..qn by default.
+
+        Returns
+        -------
+        list of sympy.Matrix (4, 4)
+            A_1, ..., A_n.
+        """
         self._require_dh("link_transforms")
         q = self._exact_q(q)
         return [link.transform(qi, self.convention) for link, qi in zip(self.links, q)]
 
     def length_symbols(self):
-        """Symbols a_i, d_i for every non-zero link length of a DH chain:
-        {symbol: value} (m)."""
+        """Symbols a_i, d_i for every non-zero link length of a DH chain.
+
+        Returns
+        -------
+        dict
+            {symbol: value (m)}.
+        """
         self._require_dh("length_symbols")
         table = {}
         for i, link in enumerate(self.links, start=1):
@@ -561,14 +688,22 @@ class Chain(ChainType):
         return links
 
     def fk_symbolic(self, simplify=True, symbolic_lengths=False, upto=None):
-        """The exact end-effector pose, a 4x4 SymPy matrix in the joint symbols q1..qn.
+        """The exact end-effector pose in the joint symbols q1..qn.
 
-        simplify : combine sums of angles
-            (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3)) after each factor, as
-            textbooks write c23
-        symbolic_lengths : (DH) use the symbols a_i, d_i of :meth:`length_symbols` for
-            lengths
-        upto : (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool
+        Parameters
+        ----------
+        simplify : bool, optional
+            Combine sums of angles (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3))
+            after each factor, as textbooks write c23.
+        symbolic_lengths : bool, optional
+            (DH) use the symbols a_i, d_i of :meth:`length_symbols` for lengths.
+        upto : int or None, optional
+            (DH) k in 0..n gives the pose of frame k, 0T_k, without base or tool.
+
+        Returns
+        -------
+        sympy.Matrix (4, 4)
+            The pose.
         """
         simplify = check_flag(simplify, "simplify")
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -606,8 +741,18 @@ class Chain(ChainType):
         return T
 
     def frames_symbolic(self, symbolic_lengths=False):
-        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain:
-        n + 1 SymPy matrices."""
+        """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain.
+
+        Parameters
+        ----------
+        symbolic_lengths : bool, optional
+            Use the symbols a_i, d_i for lengths.
+
+        Returns
+        -------
+        list of sympy.Matrix (4, 4)
+            n + 1 frames, the base first.
+        """
         self._require_dh("frames_symbolic")
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
         base = exact_matrix(self.base)
@@ -624,6 +769,16 @@ class Chain(ChainType):
 
         Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame
         i.
+
+        Parameters
+        ----------
+        frames : list of n + 1 4x4 matrices
+            As :meth:`frames_symbolic` returns them.
+
+        Returns
+        -------
+        list of 4x4 matrices
+            The n joint frames.
         """
         self._require_dh("joint_frames")
         if not isinstance(frames, (list, tuple)) or len(frames) != self.n + 1:
@@ -634,14 +789,25 @@ class Chain(ChainType):
         return frames[:-1] if self.convention is Convention.STANDARD else frames[1:]
 
     def twists_symbolic(self, q=None, symbolic_lengths=False, rational=False):
-        """The joint twists [omega; v] in the base frame, exactly: a list of n SymPy
-        6-vectors.
+        """The joint twists [omega; v] in the base frame, exactly.
 
-        ``q`` is a joint vector of exact values or symbols (default the joint symbols
-        q1..qn). These are the columns of the space Jacobian. With ``rational``, every
-        decimal number of the model (lengths, pitches, base, tool, home) is read as the
-        exact decimal it prints as (0.4318 -> 2159/5000) before any product, so no
-        round-off term can appear.
+        These are the columns of the space Jacobian.
+
+        Parameters
+        ----------
+        q : sequence of n exact values or symbols, optional
+            The joint vector (default the joint symbols q1..qn).
+        symbolic_lengths : bool, optional
+            (DH) use the symbols a_i, d_i for lengths.
+        rational : bool, optional
+            Read every decimal number of the model (lengths, pitches, base, tool,
+            home) as the exact decimal it prints as (0.4318 -> 2159/5000) before any
+            product, so no round-off term can appear.
+
+        Returns
+        -------
+        list of sympy.Matrix (6, 1)
+            The n twists.
         """
         q = self._exact_q(q)
         symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -695,6 +861,16 @@ class Chain(ChainType):
         (1e-9 relative, :mod:`screwkit.systems`), as :func:`screwkit.mobility` does. A
         batch (N, n): the (N, n, 6) array of the space Jacobians' columns
         (``space_jacobian(q).T`` is one configuration's (n, 6) array).
+
+        Parameters
+        ----------
+        q : sequence of n exact values or symbols, array-like (n,), or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ScrewSystem or ndarray, shape (N, n, 6)
+            The twists of one configuration, or the batch's array.
         """
         if is_symbolic(q):
             return ScrewSystem(
@@ -761,6 +937,18 @@ class Chain(ChainType):
         (the Jacobians, 6 x n) or 'axes' (each joint's twist and a point, then the
         pose). What :meth:`fk` and the Jacobians run, as text to read.
 
+        Parameters
+        ----------
+        outputs : {'pose', 'frames', 'space', 'geometric', 'axes'}, optional
+            What the generated function returns.
+
+        Returns
+        -------
+        str
+            The function's source.
+
+        Examples
+        --------
         >>> arm = Chain([Link.revolute(a=1.0)])
         >>> print(arm.source())  # doctest: +NORMALIZE_WHITESPACE
         def kinematics(t, c, s):
@@ -785,8 +973,18 @@ class Chain(ChainType):
         return _compiled.evaluate_batch(function, q + offsets, out, rows)
 
     def fk(self, q):
-        """The end-effector pose: q (n,) -> (4, 4); a batch Q (N, n) -> (N, 4, 4)
-        (m)."""
+        """The end-effector pose.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (4, 4) or (N, 4, 4)
+            The pose(s) in the base's world frame (m).
+        """
         q = self.check_q(q)
         if q.ndim == 1:
             T = np.eye(4)
@@ -800,13 +998,22 @@ class Chain(ChainType):
         )  # a view: each entry was computed as one contiguous row
 
     def frames(self, q):
-        """The base frame and every link frame: q (n,) -> (n + 1, 4, 4),
-        (N, n) -> (N, n + 1, 4, 4).
+        """The base frame and every link frame.
 
         DH chain: frame k is base @ A_1 ... A_k; the last frame also carries the tool.
         Chain from screws: frame k < n sits on the axis of joint k + 1
         (a point of it, moved by joints 1..k), frame 0 has the base's orientation, and
         the last frame is the end effector.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (n + 1, 4, 4) or (N, n + 1, 4, 4)
+            The frames (m).
         """
         q = self.check_q(q)
         count = self.n + 1
@@ -840,12 +1047,21 @@ class Chain(ChainType):
         )
 
     def joint_axes(self, q):
-        """Direction z_i and a point o_i of every joint axis in the base frame, each
-        (n, 3) or (N, n, 3).
+        """Direction z_i and a point o_i of every joint axis in the base frame.
 
         DH: joint i moves about z of frame i-1 (standard) or of frame i (modified),
         through its origin. A prismatic joint's direction is its translation; its point
         is for drawing.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        z, o : ndarray, shape (n, 3) or (N, n, 3)
+            Unit directions and points (m).
         """
         q = self.check_q(q)
         omega, v, point, _ = self._twists_and_pose(q)
@@ -875,32 +1091,59 @@ class Chain(ChainType):
         return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
     def space_jacobian(self, q):
-        """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns
-        [omega; v].
+        """The space Jacobian, columns [omega; v].
 
         Column i is the twist of joint i in the base frame, Ad(G_i) X_i:
         (z_i; o_i x z_i) for a revolute joint about z_i through o_i
         (v is the velocity of the body point at the base origin), (0; z_i) for a
         prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n)
+            The Jacobian(s).
         """
         return self._generated_jacobian(q, "space")
 
     def geometric_jacobian(self, q):
-        """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows
-        [v; omega].
+        """The geometric Jacobian, rows [v; omega].
 
         Column i is the space twist moved to the end-effector point p:
         (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint
         and (z_i; 0) for a prismatic one.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n)
+            The Jacobian(s), base frame, end-effector point.
         """
         return self._generated_jacobian(q, "geometric")
 
     def body_jacobian(self, q):
-        """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns
-        [omega; v].
+        """The body Jacobian, columns [omega; v].
 
         Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
         (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (N, 6, n)
+            The Jacobian(s).
         """
 
         def columns(q_part):
@@ -918,10 +1161,21 @@ class Chain(ChainType):
         return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, self.n)))
 
     def jacobian_rows(self, q, rows="all"):
-        """The rows ``rows`` (a key of :data:`ROWS`) of the geometric Jacobian: (m, n)
-        or (N, m, n).
+        """Some rows of the geometric Jacobian.
 
         'planar' reads v_x, v_y in the chain's base frame.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            A key of :data:`ROWS`.
+
+        Returns
+        -------
+        ndarray, shape (m, n) or (N, m, n)
+            The m rows (6, 3, 3 or 2).
         """
         selected = check_rows(rows)
         J = self.geometric_jacobian(q)
@@ -931,8 +1185,20 @@ class Chain(ChainType):
         return J[..., selected, :]
 
     def singular_values(self, q, rows="all"):
-        """Singular values of the geometric Jacobian's rows, largest first: (k,) or
-        (N, k)."""
+        """Singular values of the geometric Jacobian's rows, largest first.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows of J used.
+
+        Returns
+        -------
+        ndarray, shape (k,) or (N, k)
+            k = min(rows, n) singular values.
+        """
         check_rows(rows)
         q = self.check_q(q)
 
@@ -942,8 +1208,21 @@ class Chain(ChainType):
         return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
 
     def lost_rank(self, sigma, rows="all"):
-        """True where the Jacobian rows with singular values ``sigma`` (..., k) have
-        lost rank: NumPy's rank rule on the smallest singular value."""
+        """Whether Jacobian rows have lost rank, by NumPy's rule on the smallest
+        singular value.
+
+        Parameters
+        ----------
+        sigma : ndarray, shape (..., k)
+            Singular values, largest first, as :meth:`singular_values` returns them.
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows they are of.
+
+        Returns
+        -------
+        bool or ndarray of bool, shape (...)
+            True where the rank is below k.
+        """
         return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), self.n)
 
     def manipulability(self, q, rows="all"):
@@ -953,42 +1232,93 @@ class Chain(ChainType):
         (sqrt(det(J^T J)) otherwise). Exactly 0.0 where J has lost rank
         (by NumPy's rank tolerance), so a singular configuration is an answer, not
         noise. With rows='all' the product mixes metres and radians; 'position' gives
-        the volume factor of the velocity ellipsoid in m/s. rows: 'all', 'position'
-        (the rows v), 'orientation' (the rows omega) or 'planar'
-        (v_x, v_y in the chain's base frame).
+        the volume factor of the velocity ellipsoid in m/s.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (N, n)
+            Joint values (rad or m).
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            'position' (the rows v), 'orientation' (the rows omega) or 'planar'
+            (v_x, v_y in the chain's base frame).
+
+        Returns
+        -------
+        float or ndarray, shape (N,)
+            The manipulability.
         """
         sigma = self.singular_values(q, rows)
         return np.where(self.lost_rank(sigma, rows), 0.0, np.prod(sigma, axis=-1))[()]
 
     def numeric_ik(self, T, q0, **options):
         """Numerical inverse kinematics of this chain: see
-        :func:`screwkit.ik.numeric_ik`."""
+        :func:`screwkit.ik.numeric_ik`.
+
+        Parameters
+        ----------
+        T : array-like, shape (4, 4)
+            The target pose (m).
+        q0 : array-like, shape (n,)
+            The initial guess (rad or m).
+        **options
+            Tolerances and limits, as :func:`screwkit.ik.numeric_ik` takes them.
+
+        Returns
+        -------
+        NumericIKResult
+            With ``q``, ``success``, ``iterations`` and ``error``.
+        """
         return _newton.numeric_ik(self, T, q0, **options)
 
     # ---- product of exponentials -----------------------------------------------------
 
     def home(self):
-        """The end-effector pose at q = 0, M (4, 4): the home pose of the product of
-        exponentials."""
+        """The end-effector pose at q = 0: the home pose of the product of
+        exponentials.
+
+        Returns
+        -------
+        ndarray, shape (4, 4)
+            M (m).
+        """
         return self.fk(np.zeros(self.n))
 
     def screw_axes(self):
-        """The joint screws at q = 0 in the base frame, (n, 6) rows [omega; v]: the
-        columns of the space Jacobian at q = 0. Revolute: (z, p x z) for the axis z
-        through p; prismatic: (0, z).
+        """The joint screws at q = 0 in the base frame.
+
+        Revolute: (z, p x z) for the axis z through p; prismatic: (0, z).
+
+        Returns
+        -------
+        ndarray, shape (n, 6)
+            Rows [omega; v]: the columns of the space Jacobian at q = 0.
         """
         return self.space_jacobian(np.zeros(self.n)).T
 
     def body_screw_axes(self):
-        """The joint screws at q = 0 in the end-effector frame, (n, 6) rows
-        [omega; v]."""
+        """The joint screws at q = 0 in the end-effector frame.
+
+        Returns
+        -------
+        ndarray, shape (n, 6)
+            Rows [omega; v].
+        """
         return self.body_jacobian(np.zeros(self.n)).T
 
     def fk_poe(self, q):
-        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M, q
-        (n,) -> (4, 4).
+        """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M.
 
         An independent route to :meth:`fk` (a loop of 4x4 exponentials), for checking.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,)
+            Joint values (rad or m).
+
+        Returns
+        -------
+        ndarray, shape (4, 4)
+            The pose (m).
         """
         q = self.check_one(q)
         T = np.eye(4)

@@ -35,25 +35,54 @@ import numpy as np
 import sympy as sp
 
 from ._checks import describe
+from .tolerances import ZERO_TOL
 
 __all__ = ["Verdict", "AnswerBox", "check", "answer_box", "answer_key", "parse_answer"]
 
 FORMS = ("modulo 2pi", "either sign", "any order")
 
-# factor to the base unit (radian, metre, metre per second) and the quantity
+# Units: a factor to SI and a dimension, the exponents of (kg, m, s, rad). The radian
+# is kept as a dimension of its own, so that an angle is told from a pure number and a
+# missing "rad" or "deg" is caught; see _convert for where SI's radian = 1 is used.
 _UNITS = {
-    "rad": (1.0, "angle"),
-    "deg": (math.pi / 180, "angle"),
-    "°": (math.pi / 180, "angle"),
-    "m": (1.0, "length"),
-    "cm": (1e-2, "length"),
-    "mm": (1e-3, "length"),
-    "m/s": (1.0, "speed"),
-    "mm/s": (1e-3, "speed"),
-    "rad/s": (1.0, "angular speed"),
-    "deg/s": (math.pi / 180, "angular speed"),
+    "rad": (1.0, (0, 0, 0, 1)),
+    "deg": (math.pi / 180, (0, 0, 0, 1)),
+    "°": (math.pi / 180, (0, 0, 0, 1)),
+    "m": (1.0, (0, 1, 0, 0)),
+    "cm": (1e-2, (0, 1, 0, 0)),
+    "mm": (1e-3, (0, 1, 0, 0)),
+    "s": (1.0, (0, 0, 1, 0)),
+    "kg": (1.0, (1, 0, 0, 0)),
+    "N": (1.0, (1, 1, -2, 0)),
+    "Nm": (1.0, (1, 2, -2, 0)),
+    "W": (1.0, (1, 2, -3, 0)),
 }
 _UNIT_NAMES = {"degree": "deg", "degrees": "deg", "radian": "rad", "radians": "rad"}
+# what a dimension is called in a message ("expected a torque (N m), found a force (N)")
+_QUANTITIES = {
+    (0, 0, 0, 0): "pure number",
+    (0, 0, 0, 1): "angle",
+    (0, 1, 0, 0): "length",
+    (0, 2, 0, 0): "area",
+    (0, 0, 1, 0): "time",
+    (1, 0, 0, 0): "mass",
+    (0, 1, -1, 0): "speed",
+    (0, 0, -1, 1): "angular speed",
+    (0, 0, -1, 0): "rate",
+    (0, 1, -2, 0): "acceleration",
+    (0, 0, -2, 1): "angular acceleration",
+    (1, 1, -2, 0): "force",
+    (1, 2, -2, 0): "torque",
+    (1, 2, -3, 0): "power",
+    (0, 1, 0, -1): "pitch",
+}
+# The slips a wrong answer is tested for: (key's unit, factor, message).
+_SLIPS = (
+    ("rad", math.pi / 180, "looks like degrees, radians expected"),
+    ("deg", 180 / math.pi, "looks like radians, degrees expected"),
+    ("m", 1e-3, "looks like millimetres, metres expected"),
+    ("mm", 1e3, "looks like metres, millimetres expected"),
+)
 
 _FUNCTIONS = {
     "sqrt": math.sqrt,
@@ -73,10 +102,44 @@ _CONSTANTS = {"pi": math.pi, "π": math.pi, "e": math.e}
 
 _TOKEN = re.compile(
     r"\s*(?:(?P<number>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)"
-    r"|(?P<unit>m/s|mm/s|rad/s|deg/s|°)"
-    r"|(?P<name>[A-Za-zπ_][A-Za-z0-9_]*)"
+    r"|(?P<name>[A-Za-zπ°_][A-Za-z0-9_]*)"
     r"|(?P<op>\*\*|[-+*/^(),;\[\]]))"
 )
+
+
+@dataclass(frozen=True)
+class _Unit:
+    """A unit as written: its factor to SI, its dimension and its text."""
+
+    factor: float
+    dimension: tuple
+    text: str
+
+
+def _is_unit(word):
+    return _UNIT_NAMES.get(word, word) in _UNITS
+
+
+def _article(name):
+    return ("an " if name[0] in "aeiou" else "a ") + name
+
+
+def _quantity(dimension):
+    """What a dimension is called, with its article: "a torque", "an angle"."""
+    return _article(_QUANTITIES.get(dimension, "quantity"))
+
+
+def _convert(unit, key_unit):
+    """The factor that takes a value in ``unit`` to ``key_unit``, or None if the two
+    measure different things. Dimensions that differ only in the radian (a pitch in m
+    or m/rad, a rate in 1/s or rad/s) convert, the radian being 1 in SI, except an
+    angle against a pure number (a missing angle unit must be caught)."""
+    if unit.dimension == key_unit.dimension:
+        return unit.factor / key_unit.factor
+    rest, key_rest = unit.dimension[:3], key_unit.dimension[:3]
+    if rest == key_rest and any(rest):
+        return unit.factor / key_unit.factor
+    return None
 
 
 # ---- reading an answer -------------------------------------------------------------
@@ -87,7 +150,8 @@ class _Parser:
 
     def __init__(self, text):
         text = text.replace("−", "-").replace("×", "*").replace("·", "*")
-        text = text.replace("√", "sqrt")
+        text = text.replace("⋅", "*").replace("√", "sqrt")
+        text = text.replace("²", "^2").replace("³", "^3")
         self.tokens, self.spaced = [], []
         position = 0
         while position < len(text):
@@ -146,15 +210,57 @@ class _Parser:
         return [value * self.unit()]
 
     def unit(self):
+        """The unit written after a value (``N m``, ``N*m``, ``m/s^2``, ``/s``), as a
+        :class:`_Unit`, or None where none is written."""
+        if not (self.unit_next() or self.peek()[1] == "/" and self.unit_after()):
+            self.units.append(None)
+            return 1.0
+        factor, dimension, text = 1.0, (0, 0, 0, 0), ""
+        if self.peek()[1] == "/":
+            text = "1"
+        while True:
+            sign = 1
+            if self.peek()[1] in ("*", "/") and self.unit_after():
+                operator = self.take()[1]
+                sign = -1 if operator == "/" else 1
+                text += "/" if operator == "/" else " "
+            elif text and not (self.space_before() and self.unit_next()):
+                break
+            elif text:
+                text += " "
+            word = self.take()[1]
+            f, d = _UNITS[_UNIT_NAMES.get(word, word)]
+            text += word
+            power = 1
+            if self.peek()[1] in ("^", "**"):
+                self.take()
+                negative = self.peek()[1] == "-"
+                if negative:
+                    self.take()
+                kind, digits = self.take()
+                if kind != "number" or not digits.isdigit():
+                    raise ValueError(
+                        f"a unit's power must be an integer, got {digits!r}"
+                    )
+                power = -int(digits) if negative else int(digits)
+                text += f"^{power}"
+            factor *= f ** (sign * power)
+            dimension = tuple(a + sign * power * b for a, b in zip(dimension, d))
+        self.units.append(_Unit(factor, dimension, text))
+        return factor
+
+    def unit_next(self):
         kind, word = self.peek()
-        word = _UNIT_NAMES.get(word, word)
-        if kind in ("unit", "name") and word in _UNITS:
-            self.take()
-            factor, quantity = _UNITS[word]
-            self.units.append(quantity)
-            return factor
-        self.units.append(None)
-        return 1.0
+        return kind == "name" and _is_unit(word)
+
+    def unit_after(self):
+        """A unit word right after the operator at the current token (``/s``)."""
+        after = self.at + 1
+        return (
+            after < len(self.tokens)
+            and self.tokens[after][0] == "name"
+            and _is_unit(self.tokens[after][1])
+        )
 
     def expression(self):
         value = self.term()
@@ -167,6 +273,8 @@ class _Parser:
         value = self.signed()
         while True:
             kind, token = self.peek()
+            if token in ("*", "/") and self.unit_after():
+                return value  # a unit follows: "10 N*m", "200/s"
             if token in ("*", "/"):
                 self.take()
                 right = self.signed()
@@ -174,7 +282,7 @@ class _Parser:
             elif not self.space_before() and (
                 kind == "number"
                 or token == "("
-                or (kind == "name" and _UNIT_NAMES.get(token, token) not in _UNITS)
+                or (kind == "name" and not _is_unit(token))
             ):
                 value = value * self.power()  # implicit product, written glued: 2pi
             else:
@@ -223,28 +331,8 @@ class _Parser:
         raise ValueError(f"expected a number, found {found}")
 
 
-def parse_answer(text):
-    """Read a typed answer: ``"pi/3"``, ``"60 deg"``, ``"0.1, -0.2, 0.3"``, ``"12 mm"``.
-
-    Numbers are separated by commas, semicolons or whitespace (``"[0.5 -1.2 0.]"``, as
-    NumPy prints an array; ``"1 - 2"`` with spaces on both sides is a subtraction).
-    A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"2 pi"`` two
-    numbers.
-
-    Returns
-    -------
-    values : list of float
-        The numbers, with units converted to the base unit (rad, m, m/s).
-    units : list of str or None
-        Per number, the quantity its unit names (``"angle"``, ``"length"``...), or
-        None where no unit was written.
-
-    Raises ValueError with a sentence saying what could not be read. Nothing is
-    evaluated as Python.
-
-    >>> parse_answer("pi/2, 90 deg")[0]
-    [1.5707963267948966, 1.5707963267948966]
-    """
+def _parse(text):
+    """Values (in SI units where a unit is written) and per value its _Unit or None."""
     if not isinstance(text, str):
         raise TypeError(f"the answer text must be a string, got {describe(text)}")
     parser = _Parser(text)
@@ -262,6 +350,63 @@ def parse_answer(text):
     if any(isinstance(v, complex) or not math.isfinite(v) for v in values):
         raise ValueError("it is not a finite real number")
     return [float(v) for v in values], parser.units
+
+
+def parse_answer(text):
+    """Read a typed answer: ``"pi/3"``, ``"60 deg"``, ``"0.1, -0.2"``, ``"-5 N m"``.
+
+    Numbers are separated by commas, semicolons or whitespace (``"[0.5 -1.2 0.]"``, as
+    NumPy prints an array; ``"1 - 2"`` with spaces on both sides is a subtraction).
+    A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"2 pi"`` two
+    numbers. A unit follows its number: rad, deg (or °), m, cm, mm, s, kg, N, W and
+    their products, quotients and integer powers (``N m``, ``N*m``, ``Nm``, ``N·m``,
+    ``m/s``, ``rad/s``, ``m/rad``, ``m^2``, ``200/s``).
+
+    Parameters
+    ----------
+    text : str
+        The answer as typed.
+
+    Returns
+    -------
+    values : list of float
+        The numbers, with units converted to SI (rad, m, s, kg, N, W).
+    units : list of str or None
+        Per number, the quantity its unit measures (``"angle"``, ``"length"``,
+        ``"torque"``...; ``"quantity"`` for one without a name), or None where no
+        unit was written.
+
+    Raises
+    ------
+    ValueError
+        With a sentence saying what could not be read. Nothing is evaluated as
+        Python.
+
+    Examples
+    --------
+    >>> parse_answer("pi/2, 90 deg")[0]
+    [1.5707963267948966, 1.5707963267948966]
+    >>> parse_answer("-5 N m")
+    ([-5.0], ['torque'])
+    """
+    values, units = _parse(text)
+    names = [
+        None if u is None else _QUANTITIES.get(u.dimension, "quantity") for u in units
+    ]
+    return values, names
+
+
+def _unit_of_key(text, where):
+    """The _Unit of a key's unit text ("N m", "1/s", "" for a pure number)."""
+    if text == "":
+        return _Unit(1.0, (0, 0, 0, 0), "")
+    try:
+        values, units = _parse("1 " + text if not text.startswith("1/") else text)
+    except ValueError:
+        values, units = [], []
+    if len(units) != 1 or units[0] is None or values != [units[0].factor]:
+        raise ValueError(f"unit of {where} must be a unit such as 'N m', got {text!r}")
+    return units[0]
 
 
 # ---- answer keys -------------------------------------------------------------------
@@ -290,12 +435,51 @@ def _numbers(answer):
     return values, list(array.shape)
 
 
+def _range(bounds, key_unit, where):
+    """A key's ``range = ["-180 deg", "0"]``: the bounds in the key's unit and the text
+    the box shows ("between -180 deg and 0")."""
+    if not (isinstance(bounds, list) and len(bounds) == 2):
+        raise ValueError(f"range of {where} must be two bounds, got {bounds!r}")
+    limits = []
+    for bound in bounds:
+        try:
+            values, units = _parse(str(bound))
+        except ValueError:
+            values, units = [], []
+        if len(values) != 1 or units[0] and _convert(units[0], key_unit) is None:
+            raise ValueError(
+                f"range of {where} must be two numbers in its unit, got {bounds!r}"
+            )
+        if units[0] is not None:  # "-180 deg" for a key in rad
+            values[0] *= _convert(units[0], key_unit) / units[0].factor
+        limits.append(values[0])
+    if not limits[0] < limits[1]:
+        raise ValueError(f"range of {where} must be low < high, got {bounds!r}")
+    return {
+        "low": limits[0],
+        "high": limits[1],
+        "text": f"between {bounds[0]} and {bounds[1]}",
+    }
+
+
 def answer_key(chapter, number):
     """The checked answer of an exercise, as a dict of floats, ready for the page.
 
-    Keys: ``values`` (list of float, row-major), ``shape``, ``exact`` (the key's
-    expression text), ``unit``, ``tolerance``, ``rtol``, ``hint``, ``forms`` and
-    ``alternatives`` (lists of float lists).
+    Parameters
+    ----------
+    chapter : str
+        The chapter's notebook name, e.g. ``"puma_ik"``.
+    number : int
+        The exercise number in that chapter.
+
+    Returns
+    -------
+    dict
+        ``values`` (list of float, row-major, in ``unit``), ``shape``, ``exact`` (the
+        key's expression text), ``unit`` (its text: ``"rad"``, ``"N m"``, ``"1/s"``;
+        ``""`` for a pure number or a vector of mixed units), ``tolerance``, ``rtol``,
+        ``hint``, ``forms``, ``alternatives`` (lists of float lists) and ``range``
+        (None, or ``low``, ``high`` in ``unit`` and the ``text`` the box shows).
     """
     exercises = _key_file(chapter)
     if isinstance(number, bool) or not isinstance(number, (int, np.integer)):
@@ -308,14 +492,15 @@ def answer_key(chapter, number):
             f"(one of {sorted(int(k) for k in exercises)}), got {number}"
         )
     entry = exercises[str(number)]
+    where = f"{chapter} exercise {number}"
     values, shape = _numbers(entry["answer"])
     forms = list(entry.get("forms", []))
     unknown = [form for form in forms if form not in FORMS]
     if unknown:
-        raise ValueError(
-            f"forms of {chapter} exercise {number} must be among {FORMS}, got {unknown}"
-        )
+        raise ValueError(f"forms of {where} must be among {FORMS}, got {unknown}")
     unit = entry.get("unit", "")
+    key_unit = _unit_of_key(unit, where)
+    bounds = entry.get("range")
     return {
         "chapter": chapter,
         "number": int(number),
@@ -328,6 +513,7 @@ def answer_key(chapter, number):
         "hint": entry.get("hint", ""),
         "forms": forms,
         "alternatives": [_numbers(a)[0] for a in entry.get("alternatives", [])],
+        "range": None if bounds is None else _range(bounds, key_unit, where),
     }
 
 
@@ -361,9 +547,10 @@ class Verdict:
 
 
 def _as_values(answer):
-    """Floats from whatever a student passes; ValueError/TypeError with a reason."""
+    """Floats from whatever a student passes, and per float its _Unit or None;
+    ValueError/TypeError with a reason."""
     if isinstance(answer, str):
-        return parse_answer(answer)
+        return _parse(answer)
     if isinstance(answer, sp.MatrixBase):
         answer = np.array(answer.tolist(), dtype=object)
     if isinstance(answer, (list, tuple, np.ndarray)):
@@ -397,17 +584,15 @@ def _unit_text(key):
     return f" {key['unit']}" if key["unit"] else ""
 
 
-def _base_factor(unit):
-    return _UNITS.get(unit, (1.0, None))
-
-
 def _close(x, a, key):
     x, a = np.asarray(x, float), np.asarray(a, float)
     d = x - a
     if "modulo 2pi" in key["forms"]:
         period = 360.0 if key["unit"] == "deg" else 2 * math.pi
         d = (d + period / 2) % period - period / 2
-    return bool(np.all(np.abs(d) <= key["tolerance"] + key["rtol"] * np.abs(a) + 1e-12))
+    return bool(
+        np.all(np.abs(d) <= key["tolerance"] + key["rtol"] * np.abs(a) + ZERO_TOL)
+    )
 
 
 def _wrapped_sorted(values, key):
@@ -438,18 +623,9 @@ def _matches(x, key):
 def _diagnose(x, key):
     """Why ``x`` is wrong, where a common slip explains it."""
     unit, n = key["unit"], len(key["values"])
-    if len(x) != n:
-        what = "one number" if n == 1 else f"{n} numbers"
-        return f"expected {what}, got {len(x)}."
-    slips = [
-        ("rad", math.pi / 180, "looks like degrees, radians expected"),
-        ("deg", 180 / math.pi, "looks like radians, degrees expected"),
-        ("m", 1e-3, "looks like millimetres, metres expected"),
-        ("mm", 1e3, "looks like metres, millimetres expected"),
-    ]
     # a unit slip only explains an answer that is not zero (where any small number fits)
     nonzero = any(abs(v) > key["tolerance"] for v in key["values"])
-    for slip_unit, factor, text in slips:
+    for slip_unit, factor, text in _SLIPS:
         if nonzero and unit == slip_unit and _matches([v * factor for v in x], key):
             return text + "."
     if _matches([-v for v in x], key):
@@ -462,6 +638,8 @@ def _diagnose(x, key):
         and _close(sorted(x), sorted(key["values"]), key)
     ):
         return "the right numbers in the wrong order."
+    if not _in_range(x, key):
+        return f"the answer is outside the range asked for, {key['range']['text']}."
     return None
 
 
@@ -469,30 +647,53 @@ def _matches_abs(x, key):
     return _close(np.abs(x), np.abs(key["values"]), key)
 
 
-def _verdict(x, units, key):
+def _in_range(x, key):
+    """Every value within the key's range, if it has one (the tolerance is slack)."""
+    bounds, slack = key["range"], key["tolerance"]
+    return bounds is None or all(
+        bounds["low"] - slack <= v <= bounds["high"] + slack for v in x
+    )
+
+
+def _to_key_unit(x, units, key):
+    """The values in the key's unit, or the sentence saying which unit does not fit."""
+    key_unit = _unit_of_key(key["unit"], f"{key['chapter']} exercise {key['number']}")
+    converted = []
+    for value, unit in zip(x, units):
+        if unit is None:
+            converted.append(value)
+            continue
+        factor = _convert(unit, key_unit)
+        if factor is None:
+            expected = _quantity(key_unit.dimension)
+            expected += f" ({key['unit']})" if key["unit"] else " (no unit)"
+            found = f"{_quantity(unit.dimension)} ({unit.text})"
+            return f"Expected {expected}, found {found}."
+        converted.append(value / unit.factor * factor)
+    return converted
+
+
+def _decimal_comma(text):
+    """A hint for "4,05" (read as two numbers), else ""."""
+    if not isinstance(text, str) or not re.search(r"\d,\d", text):
+        return ""
+    return " Use a decimal point: " + re.sub(r"(\d),(\d)", r"\1.\2", text) + "."
+
+
+def _verdict(x, units, key, text=None):
     chapter, number = key["chapter"], key["number"]
-    factor, quantity = _base_factor(key["unit"])
-    given = {u for u in units if u is not None}
-    if given:
-        if quantity is None or given != {quantity}:
-            expected = f"in {key['unit']}" if key["unit"] else "a pure number"
-            return Verdict(
-                False,
-                f"The answer is {expected}, but the units typed are "
-                f"{' and '.join(sorted(given))}.",
-                chapter,
-                number,
-            )
-        x = [v / factor if u is not None else v for v, u in zip(x, units)]
-    within = f"within ±{key['tolerance']:g}{_unit_text(key)}"
-    if _matches(x, key):
-        return Verdict(
-            True,
-            f"Within ±{key['tolerance']:g}{_unit_text(key)} of the answer.",
-            chapter,
-            number,
-        )
-    reason = _diagnose(x, key) or f"not {within} of the answer."
+    x = _to_key_unit(x, units, key)
+    if isinstance(x, str):
+        return Verdict(False, x, chapter, number)
+    tolerance = f"±{key['tolerance']:g}{_unit_text(key)}"
+    n = len(key["values"])
+    if len(x) == n and _in_range(x, key) and _matches(x, key):
+        return Verdict(True, f"Within {tolerance} of the answer.", chapter, number)
+    if len(x) != n:
+        what = "one number" if n == 1 else f"{n} numbers"
+        reason = f"expected {what}, got {len(x)}." + _decimal_comma(text)
+    else:
+        reason = _diagnose(x, key) or f"not within {tolerance} of the answer."
     hint = f" Hint: {key['hint']}" if key["hint"] else ""
     return Verdict(False, reason[0].upper() + reason[1:] + hint, chapter, number)
 
@@ -526,7 +727,7 @@ def check(chapter, number, answer):
         values, units = _as_values(answer)
     except (TypeError, ValueError) as error:
         return Verdict(False, f"Could not read the answer: {error}", chapter, number)
-    return _verdict(values, units, key)
+    return _verdict(values, units, key, answer)
 
 
 # ---- the box in the page -----------------------------------------------------------
@@ -577,8 +778,12 @@ class AnswerBox:
                 "alternatives",
             )
         }
-        payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
         unit = html.escape(self.key["unit"]) or "no unit"
+        bounds = ""
+        if self.key["range"] is not None:
+            key["range"] = self.key["range"]  # only where set: other boxes unchanged
+            bounds = ", " + html.escape(self.key["range"]["text"])
+        payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
         ident = self.id
         script = f"<script>\n{exercises_script()}</script>\n" if self.script else ""
         return (
@@ -586,7 +791,7 @@ class AnswerBox:
             f'margin:0.5em 0">\n'
             f'<script type="application/json">{payload}</script>\n'
             f'<label for="{ident}-input">Exercise {self.key["number"]}, your answer '
-            f"({unit}): </label>\n"
+            f"({unit}{bounds}): </label>\n"
             f'<input id="{ident}-input" type="text" size="28" autocomplete="off" '
             f'spellcheck="false">\n'
             f'<button type="button">Check</button>\n'

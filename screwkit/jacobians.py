@@ -30,6 +30,7 @@ from ._compiled import in_chunks
 # ROWS re-exported: sk.jacobians.ROWS
 from .chains import ROWS, check_rows  # noqa: F401
 from .links import Joint
+from .tolerances import FD_STEP
 
 __all__ = [
     "joint_axes",
@@ -48,47 +49,109 @@ __all__ = [
 
 
 def joint_axes(chain, q):
-    """Direction z_i and a point o_i of every joint axis in the base frame, each (n, 3)
-    or (N, n, 3)."""
+    """Direction z_i and a point o_i of every joint axis in the base frame.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+
+    Returns
+    -------
+    z, o : ndarray, shape (n, 3) or (N, n, 3)
+        Unit directions and points (m) of the axes.
+    """
     return check_chain(chain).joint_axes(q)
 
 
 def space_jacobian(chain, q):
-    """The space Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
+    """The space Jacobian, columns [omega; v].
 
     Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i)
     for a revolute joint about z_i through o_i (v is the velocity of the body point at
     the base origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a
     helical one of pitch h.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n)
+        The Jacobian(s).
     """
     return check_chain(chain).space_jacobian(q)
 
 
 def geometric_jacobian(chain, q):
-    """The geometric Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); rows [v; omega].
+    """The geometric Jacobian, rows [v; omega].
 
     Column i is the space twist moved to the end-effector point p:
     (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint and
     (z_i; 0) for a prismatic one.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n)
+        The Jacobian(s), base frame, end-effector point.
     """
     return check_chain(chain).geometric_jacobian(q)
 
 
 def body_jacobian(chain, q):
-    """The body Jacobian: q (n,) -> (6, n), Q (N, n) -> (N, 6, n); columns [omega; v].
+    """The body Jacobian, columns [omega; v].
 
     Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n)
+        The Jacobian(s).
     """
     return check_chain(chain).body_jacobian(q)
 
 
-def numerical_jacobian(chain, q, h=1e-6):
-    """The geometric Jacobian (6, n) of one configuration by central differences of FK.
+def numerical_jacobian(chain, q, h=FD_STEP):
+    """The geometric Jacobian of one configuration by central differences of FK.
 
     Column i is ((p(q + h e_i) - p(q - h e_i)) / 2h; omega_i), omega_i read from the
     skew matrix dR/dq_i R^T. An independent check of :func:`geometric_jacobian`
     (error O(h^2)).
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,)
+        One configuration (rad or m).
+    h : float, optional
+        The step (rad or m), positive.
+
+    Returns
+    -------
+    ndarray, shape (6, n)
+        Rows [v; omega].
     """
     q = check_chain(chain).check_one(q)
     if (
@@ -138,16 +201,26 @@ def _symbolic_point(chain, point, end, frames):
 
 
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
-    """The exact geometric Jacobian (6, n), a SymPy matrix in the joint symbols q1..qn.
-
-    point : the reference point whose velocity the rows v give: None for the
-        end-effector point, an integer k for the origin of frame k of a DH chain
-        (e.g. a wrist centre), or a 3-vector of expressions in the base frame.
-    symbolic_lengths : (DH) lengths as the symbols a_i, d_i
-        (see ``Chain.length_symbols``).
+    """The exact geometric Jacobian, in the joint symbols q1..qn.
 
     Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the
     point: (v_i + omega_i x p; omega_i).
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    point : None, int or 3-vector of SymPy expressions, optional
+        The reference point whose velocity the rows v give: None for the end-effector
+        point, an integer k for the origin of frame k of a DH chain (e.g. a wrist
+        centre), or a point in the base frame (m).
+    symbolic_lengths : bool, optional
+        (DH) lengths as the symbols a_i, d_i (see ``Chain.length_symbols``).
+
+    Returns
+    -------
+    sympy.Matrix (6, n)
+        Rows [v; omega].
     """
     check_chain(chain)
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -182,6 +255,20 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
     and det J = det A det D. A DH chain's lengths are factored as symbols and only then
     replaced by their numbers, so the factors are exact (no round-off terms from decimal
     lengths).
+
+    Parameters
+    ----------
+    chain : Chain
+        A chain of six joints.
+    point : None, int or 3-vector, optional
+        The reference point, as for :func:`geometric_jacobian_symbolic`.
+    symbolic_lengths : bool, optional
+        Keep the DH lengths as the symbols a_i, d_i.
+
+    Returns
+    -------
+    SymPy expression
+        det J, factorised, in q1..q6.
     """
     if check_chain(chain).n != 6:
         raise ValueError(
@@ -203,8 +290,22 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
 
 
 def singular_values(chain, q, rows="all"):
-    """Singular values of the geometric Jacobian's rows, largest first: (k,) or
-    (N, k)."""
+    """Singular values of the geometric Jacobian's rows, largest first.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        The rows of J used (see the module's docstring).
+
+    Returns
+    -------
+    ndarray, shape (k,) or (N, k)
+        k = min(rows, n) singular values.
+    """
     return check_chain(chain).singular_values(q, rows)
 
 
@@ -216,13 +317,41 @@ def manipulability(chain, q, rows="all"):
     (by NumPy's rank tolerance), so a singular configuration is an answer, not noise.
     With rows='all' the product mixes metres and radians; 'position' gives the volume
     factor of the velocity ellipsoid in m/s.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        The rows of J used.
+
+    Returns
+    -------
+    float or ndarray, shape (N,)
+        The manipulability.
     """
     return check_chain(chain).manipulability(q, rows)
 
 
 def condition_number(chain, q, rows="all"):
-    """sigma_max / sigma_min of the Jacobian's rows (1 is isotropic); inf where
-    singular."""
+    """The condition number sigma_max / sigma_min of the Jacobian's rows.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        The rows of J used.
+
+    Returns
+    -------
+    float or ndarray, shape (N,)
+        1 where isotropic, inf where singular.
+    """
     sigma = singular_values(chain, q, rows)
     singular = check_chain(chain).lost_rank(sigma, rows)
     with np.errstate(divide="ignore"):
@@ -230,7 +359,22 @@ def condition_number(chain, q, rows="all"):
 
 
 def rank(chain, q, rows="all"):
-    """The rank of the Jacobian's rows (NumPy's tolerance): an int, or (N,) ints."""
+    """The rank of the Jacobian's rows (NumPy's tolerance).
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        The rows of J used.
+
+    Returns
+    -------
+    int or ndarray of int, shape (N,)
+        The rank.
+    """
     check_rows(rows)
     q = check_chain(chain).check_q(q)
 
@@ -243,10 +387,26 @@ def rank(chain, q, rows="all"):
 def ellipsoid(chain, q, rows="position"):
     """The manipulability ellipsoid {J qdot : |qdot| <= 1} of one configuration q (n,).
 
-    Returns (center, radii, axes): the end-effector point (3,), the semi-axes (3,) in
-    m/s (position) or rad/s (orientation) per unit joint-rate norm, and their directions
-    as the columns of axes (3, 3). A zero radius is a direction the end effector cannot
-    move in.
+    A zero radius is a direction the end effector cannot move in.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,)
+        One configuration (rad or m).
+    rows : {'position', 'orientation'}, optional
+        Which ellipsoid: of the point's velocity or of the angular velocity.
+
+    Returns
+    -------
+    center : ndarray, shape (3,)
+        The end-effector point (m).
+    radii : ndarray, shape (3,)
+        The semi-axes, in m/s (position) or rad/s (orientation) per unit joint-rate
+        norm.
+    axes : ndarray, shape (3, 3)
+        Their directions, as columns.
     """
     q = check_chain(chain).check_one(q)
     if rows not in ("position", "orientation"):

@@ -36,18 +36,25 @@ from ._checks import (
     check_transform,
     is_symbolic,
 )
+from .tolerances import DIVISION_FLOOR, SMALL_ANGLE, ZERO_TOL
 from .transforms import _skew, _skew_exact
 
 __all__ = ["adjoint", "ad", "log_rotation", "log_transform", "vee"]
 
-#: Below this angle (rad) the series of theta / sin(theta) and of the translation factor
-#: is used.
-SMALL_ANGLE = 1e-4
-
 
 def vee(W):
-    """The 3-vector w of a skew-symmetric matrix W = [w] (the inverse of ``skew``):
-    (..., 3)."""
+    """The 3-vector w of a skew-symmetric matrix W = [w] (the inverse of ``skew``).
+
+    Parameters
+    ----------
+    W : array-like, shape (3, 3) or (..., 3, 3), or a SymPy 3x3 matrix
+        Skew-symmetric matrices.
+
+    Returns
+    -------
+    ndarray, shape (3,) or (..., 3), or sympy.Matrix (3, 1)
+        w = (W[2, 1], W[0, 2], W[1, 0]).
+    """
     if is_symbolic(W):
         W = as_sympy_matrix(W, "W", (3, 3))
         return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
@@ -97,7 +104,15 @@ def ad(twist):
     Parameters
     ----------
     twist : array-like, shape (6,) or (N, 6), or a SymPy 6-vector
+        The twist(s) V = (w; v) (rad/s, m/s).
 
+    Returns
+    -------
+    ndarray, shape (6, 6) or (N, 6, 6), or sympy.Matrix (6, 6)
+        [ad_V].
+
+    Examples
+    --------
     >>> ad([1, 2, 3, 4, 5, 6])[3:, :3]
     array([[ 0., -6.,  5.],
            [ 6.,  0., -4.],
@@ -175,14 +190,16 @@ def _axis_near_pi(R, skew_part, cos_theta):
     )  # omega omega^T (used where c < -0.5)
     column = np.argmax(np.diagonal(outer, axis1=-2, axis2=-1), axis=-1)
     axis = np.take_along_axis(outer, column[..., None, None], axis=-1)[..., 0]
-    axis = axis / np.maximum(np.linalg.norm(axis, axis=-1, keepdims=True), 1e-300)
+    axis = axis / np.maximum(
+        np.linalg.norm(axis, axis=-1, keepdims=True), DIVISION_FLOOR
+    )
     # the sign: along omega sin(theta) when that is informative, else largest component
     # positive
     dot = np.sum(axis * skew_part, axis=-1)
     largest = np.take_along_axis(
         axis, np.argmax(np.abs(axis), axis=-1)[..., None], axis=-1
     )[..., 0]
-    sign = np.where(np.abs(dot) > 1e-12, np.sign(dot), np.sign(largest))
+    sign = np.where(np.abs(dot) > ZERO_TOL, np.sign(dot), np.sign(largest))
     return axis * sign[..., None]
 
 

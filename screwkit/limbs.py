@@ -19,6 +19,7 @@ import sympy as sp
 
 from ._checks import as_sympy_matrix, as_sympy_scalar, check_rotation, describe
 from .screws import Screw, Wrench
+from .tolerances import SAMPLE_ZERO_TOL, ZERO_TOL
 from .transforms import _is_infinite_pitch
 
 __all__ = [
@@ -47,17 +48,18 @@ def _direction(v, name):
 
 def _is_zero(expr):
     """True if ``expr`` is zero for every value of its symbols: exactly after expansion,
-    or, when trigonometric identities are needed, at three random points (to 1e-9)."""
+    or, when trigonometric identities are needed, at three random points (to
+    ``SAMPLE_ZERO_TOL``)."""
     expr = sp.expand(expr)
     if expr == 0:
         return True
     symbols = sorted(expr.free_symbols, key=str)
     if not symbols:
-        return abs(complex(expr.evalf())) < 1e-12
+        return abs(complex(expr.evalf())) < ZERO_TOL
     rng = random.Random(7)
     for _ in range(3):
         point = {x: sp.Float(rng.uniform(0.3, 1.7)) for x in symbols}
-        if abs(complex(expr.evalf(subs=point))) > 1e-9:
+        if abs(complex(expr.evalf(subs=point))) > SAMPLE_ZERO_TOL:
             return False
     return True
 
@@ -67,19 +69,58 @@ def _parallel(u, v):
 
 
 def revolute(s, r):
-    """R: rotation about the axis ``s`` through the point ``r``."""
+    """R: rotation about the axis ``s`` through the point ``r``.
+
+    Parameters
+    ----------
+    s : 3-sequence of numbers or SymPy expressions, non-zero
+        The axis direction.
+    r : 3-sequence of numbers or SymPy expressions
+        A point of the axis (m).
+
+    Returns
+    -------
+    list of (sympy.Matrix, sympy.Matrix, int)
+        One (s, r, h) triple, h = 0.
+    """
     return [(_direction(s, "s"), _vec(r, "r"), 0)]
 
 
 def prismatic(s, r=(0, 0, 0)):
-    """P: translation along ``s`` (r only for drawing: a prismatic twist has no
-    position)."""
+    """P: translation along ``s``.
+
+    Parameters
+    ----------
+    s : 3-sequence of numbers or SymPy expressions, non-zero
+        The direction of travel.
+    r : 3-sequence, optional
+        A point (m), only for drawing: a prismatic twist has no position.
+
+    Returns
+    -------
+    list of (sympy.Matrix, sympy.Matrix, sympy.oo)
+        One (s, r, h) triple, h = oo.
+    """
     return [(_direction(s, "s"), _vec(r, "r"), sp.oo)]
 
 
 def helical(s, r, h):
-    """H: rotation about (s, r) with translation h per radian along it
-    (h in m/rad, finite)."""
+    """H: rotation about (s, r) with translation h per radian along it.
+
+    Parameters
+    ----------
+    s : 3-sequence of numbers or SymPy expressions, non-zero
+        The axis direction.
+    r : 3-sequence of numbers or SymPy expressions
+        A point of the axis (m).
+    h : number or SymPy expression
+        The pitch (m/rad), finite.
+
+    Returns
+    -------
+    list of (sympy.Matrix, sympy.Matrix, sympy.Expr)
+        One (s, r, h) triple.
+    """
     if isinstance(h, (str, bytes)) or h is None or _is_infinite_pitch(h):
         raise TypeError(
             "h must be a finite pitch (m/rad): a number or a SymPy expression, got "
@@ -89,12 +130,38 @@ def helical(s, r, h):
 
 
 def cylindrical(s, r):
-    """C: rotation about and translation along the same axis."""
+    """C: rotation about and translation along the same axis.
+
+    Parameters
+    ----------
+    s : 3-sequence of numbers or SymPy expressions, non-zero
+        The axis direction.
+    r : 3-sequence of numbers or SymPy expressions
+        A point of the axis (m).
+
+    Returns
+    -------
+    list of (s, r, h) triples
+        R then P on the axis (h = 0, then h = oo).
+    """
     return revolute(s, r) + prismatic(s, r)
 
 
 def universal(s1, s2, r):
-    """U: two revolute axes s1, s2 crossing at r (they must not be parallel)."""
+    """U: two revolute axes s1, s2 crossing at r.
+
+    Parameters
+    ----------
+    s1, s2 : 3-sequences of numbers or SymPy expressions
+        The two axis directions; they must not be parallel.
+    r : 3-sequence of numbers or SymPy expressions
+        The point where they cross (m).
+
+    Returns
+    -------
+    list of (s, r, h) triples
+        Two revolute joints (h = 0).
+    """
     first, second = revolute(_vec(s1, "s1"), r), revolute(_vec(s2, "s2"), r)
     if _parallel(first[0][0], second[0][0]):
         raise ValueError(
@@ -106,7 +173,20 @@ def universal(s1, s2, r):
 
 
 def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
-    """S: three independent revolute axes through the centre r."""
+    """S: three independent revolute axes through the centre r.
+
+    Parameters
+    ----------
+    r : 3-sequence of numbers or SymPy expressions
+        The centre (m).
+    axes : three 3-sequences, optional
+        Independent (not coplanar) axis directions; x, y and z by default.
+
+    Returns
+    -------
+    list of (s, r, h) triples
+        Three revolute joints (h = 0).
+    """
     if isinstance(axes, (str, bytes)) or not hasattr(axes, "__len__") or len(axes) != 3:
         raise ValueError(
             f"axes of a spherical joint must be three directions, got {describe(axes)}"
@@ -131,6 +211,20 @@ def parallelogram(s, a1, a2, b1, b2):
 
     The corners must make a parallelogram: B1 - A1 = B2 - A2
     (equal, parallel long sides), with A1 != A2 and B1 != A1.
+
+    Parameters
+    ----------
+    s : 3-sequence of numbers or SymPy expressions, non-zero
+        The common direction of the four axes.
+    a1, a2 : 3-sequences of numbers or SymPy expressions
+        The base-side corners A1, A2 (m).
+    b1, b2 : 3-sequences of numbers or SymPy expressions
+        The other corners B1, B2 (m).
+
+    Returns
+    -------
+    list of (s, r, h) triples
+        Four revolute joints (h = 0), one at each corner.
     """
     corners = [
         _vec(c, name) for c, name in ((a1, "a1"), (a2, "a2"), (b1, "b1"), (b2, "b2"))
@@ -170,6 +264,18 @@ def rotate_limb(limb, R):
 
     R must be a rotation (orthonormal, determinant +1): a scaling or a reflection is
     refused.
+
+    Parameters
+    ----------
+    limb : list of (s, r, h) triples
+        A limb, as the builders here return.
+    R : array-like or SymPy matrix, shape (3, 3)
+        The rotation.
+
+    Returns
+    -------
+    list of (s, r, h) triples
+        (R s, R r, h) for each joint.
     """
     _check_limb(limb)
     if not (isinstance(R, sp.MatrixBase) and _exact_rotation(R)):
@@ -208,7 +314,20 @@ _EXACT_ROTATIONS = {}
 
 
 def translate_limb(limb, p):
-    """The limb moved by the vector p."""
+    """The limb moved by the vector p.
+
+    Parameters
+    ----------
+    limb : list of (s, r, h) triples
+        A limb, as the builders here return.
+    p : 3-sequence of numbers or SymPy expressions
+        The translation (m).
+
+    Returns
+    -------
+    list of (s, r, h) triples
+        (s, r + p, h) for each joint.
+    """
     _check_limb(limb)
     p = _vec(p, "p")
     return [(_vec(s, "s"), _vec(r, "r") + p, h) for s, r, h in limb]

@@ -17,14 +17,16 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from ._checks import as_float_array, check_transform, describe, real_number
+from ._checks import as_float_array, check_poses, describe, real_number
 from .screws import Screw
+from .tolerances import QUARTER_TURN_TOL, UNIT_SCREW_TOL, ZERO_TOL
+from .transforms import _cross
 
 __all__ = ["Joint", "Convention", "Link"]
 
 #: How far from 1 the norm of a joint screw's omega (or of v, for a prismatic joint) may
-#: be.
-UNIT_TOL = 1e-9
+#: be: the old name of :data:`screwkit.tolerances.UNIT_SCREW_TOL`.
+UNIT_TOL = UNIT_SCREW_TOL
 
 
 class Joint(enum.Enum):
@@ -79,6 +81,23 @@ class Link:
     (+-inf in either place is no limit there). Numbers may be floats or exact SymPy
     values (``sympy.pi / 2``); symbols are allowed for the exact path (``fk_symbolic``)
     but the numeric path needs numbers.
+
+    Parameters
+    ----------
+    joint : Joint
+        ``Joint.REVOLUTE`` or ``Joint.PRISMATIC``.
+    d : number or SymPy expression, optional
+        Offset along the previous z (m).
+    a : number or SymPy expression, optional
+        Length along the common normal x (m).
+    alpha : number or SymPy expression, optional
+        Twist about x (rad).
+    theta : number or SymPy expression, optional
+        Angle about the previous z (rad).
+    offset : number or SymPy expression, optional
+        Added to the joint variable q (rad or m).
+    qlim : (float, float) or None, optional
+        (min, max) of q, or None for no limit.
     """
 
     joint: Joint
@@ -101,19 +120,68 @@ class Link:
 
     @classmethod
     def revolute(cls, d=0, a=0, alpha=0, offset=0, qlim=None):
-        """A revolute link: theta = q + offset."""
+        """A revolute link: theta = q + offset.
+
+        Parameters
+        ----------
+        d, a : number or SymPy expression, optional
+            The DH lengths (m).
+        alpha : number or SymPy expression, optional
+            The DH twist (rad).
+        offset : number or SymPy expression, optional
+            Added to q (rad).
+        qlim : (float, float) or None, optional
+            (min, max) of q (rad), or None for no limit.
+
+        Returns
+        -------
+        Link
+            The link, ``joint=Joint.REVOLUTE``.
+        """
         return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=qlim)
 
     @classmethod
     def prismatic(cls, theta=0, a=0, alpha=0, offset=0, qlim=None):
-        """A prismatic link: d = q + offset."""
+        """A prismatic link: d = q + offset.
+
+        Parameters
+        ----------
+        theta : number or SymPy expression, optional
+            The DH angle (rad).
+        a : number or SymPy expression, optional
+            The DH length (m).
+        alpha : number or SymPy expression, optional
+            The DH twist (rad).
+        offset : number or SymPy expression, optional
+            Added to q (m).
+        qlim : (float, float) or None, optional
+            (min, max) of q (m), or None for no limit.
+
+        Returns
+        -------
+        Link
+            The link, ``joint=Joint.PRISMATIC``.
+        """
         return cls(
             Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim
         )
 
     def transform(self, q, convention=Convention.STANDARD):
-        """The exact 4x4 link transform A(q) (a SymPy matrix) for a joint value or
-        symbol q."""
+        """The exact link transform A(q).
+
+        Parameters
+        ----------
+        q : number, SymPy symbol or expression
+            The joint value (rad or m).
+        convention : Convention, optional
+            ``Convention.STANDARD`` (Rz Tz Tx Rx, the default) or
+            ``Convention.MODIFIED`` (Craig: Rx Tx Rz Tz).
+
+        Returns
+        -------
+        sympy.Matrix (4, 4)
+            The homogeneous transform of the link.
+        """
         check_convention(convention)
         theta, d = (
             (q + self.offset, self.d)
@@ -161,7 +229,7 @@ class Link:
             )
         quarter_turns = round(alpha / (np.pi / 2))
         if (
-            abs(alpha / (np.pi / 2) - quarter_turns) < 1e-15
+            abs(alpha / (np.pi / 2) - quarter_turns) < QUARTER_TURN_TOL
         ):  # as _exact: a float multiple of pi/2
             cos_sin = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][
                 quarter_turns % 4
@@ -204,7 +272,7 @@ def _exact(value):
     value = sp.sympify(value)
     if isinstance(value, sp.Float):
         quarter_turns = float(value) / (np.pi / 2)
-        if abs(quarter_turns - round(quarter_turns)) < 1e-15:
+        if abs(quarter_turns - round(quarter_turns)) < QUARTER_TURN_TOL:
             return sp.pi / 2 * round(quarter_turns)
     return value
 
@@ -243,12 +311,7 @@ def rigid(value, name):
                 if not value.free_symbols
                 else value
             )
-        T = check_transform(as_float_array(value, name), name)
-        if T.shape != (4, 4):
-            raise ValueError(
-                f"{name} must be one transform of shape (4, 4), got shape {T.shape}"
-            )
-        T = T.copy()
+        T = check_poses(value, name, single_only=True).copy()
     T.setflags(write=False)
     return T
 
@@ -332,13 +395,13 @@ def check_screws(axes):
         w, v = np.linalg.norm(values[:3]), np.linalg.norm(values[3:])
         if w == 0 and v == 0:
             raise ValueError(f"{name} must be a unit screw axis, got the zero twist")
-        if w != 0 and abs(w - 1) > UNIT_TOL:
+        if w != 0 and abs(w - 1) > UNIT_SCREW_TOL:
             raise ValueError(
                 f"{name} must be a unit screw axis: |omega| = 1 for a revolute or "
                 "helical joint (or omega = 0 and |v| = 1 for a prismatic one), got "
                 f"|omega| = {w:.6g}"
             )
-        if w == 0 and abs(v - 1) > UNIT_TOL:
+        if w == 0 and abs(v - 1) > UNIT_SCREW_TOL:
             raise ValueError(
                 f"{name} is prismatic (omega = 0) and must have |v| = 1, got |v| = "
                 f"{v:.6g}"
@@ -349,12 +412,23 @@ def check_screws(axes):
     return np.array(numbers), exact
 
 
-def joint_kind(screw):
+def joint_kind(screw, scale=1.0):
+    """The kind of a unit joint screw (omega; v): prismatic if omega = 0, else helical
+    if its pitch omega . v is a length above ``ZERO_TOL * scale``, else revolute.
+
+    Parameters
+    ----------
+    screw : ndarray, shape (6,), a unit screw [omega; v] (v in m)
+    scale : float, the chain's size (m, :func:`screwkit.tolerances.length_scale`)
+
+    Returns
+    -------
+    Joint
+    """
     if not np.any(screw[:3]):
         return Joint.PRISMATIC
-    return (
-        Joint.HELICAL if abs(np.dot(screw[:3], screw[3:])) > 1e-12 else Joint.REVOLUTE
-    )
+    pitch = abs(np.dot(screw[:3], screw[3:]))
+    return Joint.HELICAL if pitch > ZERO_TOL * scale else Joint.REVOLUTE
 
 
 def axis_points(screws, start):
@@ -369,7 +443,7 @@ def axis_points(screws, start):
         w, v = screw[:3], screw[3:]
         if np.any(w):
             h = np.dot(w, v)
-            nearest_origin = np.cross(w, v - h * w)  # the axis point nearest the origin
+            nearest_origin = _cross(w, v - h * w)  # the axis point nearest the origin
             previous = nearest_origin + np.dot(previous - nearest_origin, w) * w
         points.append(previous.copy())
     return np.array(points)

@@ -41,6 +41,7 @@ from ._checks import (
     check_shape,
     is_symbolic,
 )
+from .tolerances import LOCK_TOL, ROTATION_TOL, ZERO_TOL
 from .transforms import rotx, roty, rotz, skew
 
 __all__ = [
@@ -57,11 +58,9 @@ __all__ = [
 
 CONVENTIONS = ("ZYZ", "ZYX")
 
-#: |sin| of the middle angle below which a float rotation is treated as gimbal-locked
-LOCK_TOL = 1e-9
-
-#: allowed deviation of |q| from 1 for float quaternions
-UNIT_TOL = 1e-6
+#: allowed deviation of |q| from 1 for float quaternions: the old name of
+#: :data:`screwkit.tolerances.ROTATION_TOL` (LOCK_TOL is imported from there too)
+UNIT_TOL = ROTATION_TOL
 
 
 def _triple(value, name):
@@ -236,7 +235,17 @@ def rpy_from_rotation(R):
     """(roll, pitch, yaw) of a rotation, inverse of :func:`rotation_from_rpy`.
 
     Pitch in [-pi/2, pi/2]; at pitch = +-pi/2 (gimbal lock) yaw = 0 and roll carries
-    the turn. Returns a SymPy (3, 1) column or an array of shape (3,) or (N, 3).
+    the turn.
+
+    Parameters
+    ----------
+    R : array-like, shape (3, 3) or (N, 3, 3), or a SymPy 3x3 matrix
+        Rotation matrices.
+
+    Returns
+    -------
+    ndarray, shape (3,) or (N, 3), or sympy.Matrix (3, 1)
+        (roll, pitch, yaw) (rad).
     """
     angles = euler_from_rotation(R, "ZYX")
     if isinstance(angles, sp.MatrixBase):
@@ -256,7 +265,7 @@ def _quaternion(value):
         return q
     q = check_shape(as_float_array(value, "q"), "q", (4,))
     norm = np.linalg.norm(q, axis=-1)
-    if q.size and not np.all(np.abs(norm - 1) <= UNIT_TOL):
+    if q.size and not np.all(np.abs(norm - 1) <= ROTATION_TOL):
         worst = norm.ravel()[np.argmax(np.abs(norm - 1).ravel())]
         raise ValueError(
             f"q must be a unit quaternion (w, x, y, z), got one of norm {worst:.6g}"
@@ -344,7 +353,7 @@ def quaternion_from_rotation(R):
 
 def _canonical(q):
     """Choose the sign of q: w > 0, or for w = 0 the first non-zero entry > 0."""
-    tol = 1e-12
+    tol = ZERO_TOL
     lead = np.where(np.abs(q[..., 0]) > tol, q[..., 0], 0.0)
     for k in (1, 2, 3):
         lead = np.where(

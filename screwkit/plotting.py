@@ -33,6 +33,7 @@ from ._checks import (
 
 # re-exported: sk.plotting.draw_mechanism
 from ._mechanism_plot import draw_mechanism  # noqa: F401
+from .tolerances import DRAWING_TOL, ZERO_TOL, length_scale
 
 __all__ = [
     "COLUMN_WIDTH",
@@ -52,13 +53,13 @@ __all__ = [
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z
 
-#: Pixels per inch of the course's figures: a figure shows at its natural size in the
-#: book, where 1 pt of text is 100 / 72 = 1.39 px, at least as large as a browser's
-#: 1.33 px per pt.
+#: Pixels per inch of the course's figures.
+#: A figure shows at its natural size in the book, where 1 pt of text is 100 / 72 =
+#: 1.39 px, at least as large as a browser's 1.33 px per pt.
 DPI = 100
-#: The widest figure, in inches: 660 px at ``DPI``, plus the 0.1 in margin IPython adds
-#: on each side when it trims a figure (savefig.pad_inches): 680 px, within the 688 px
-#: column.
+#: The widest figure, in inches.
+#: 660 px at ``DPI``, plus the 0.1 in margin IPython adds on each side when it trims a
+#: figure (savefig.pad_inches): 680 px, within the 688 px column.
 COLUMN_WIDTH = 6.6
 #: The course's matplotlib style. Constrained layout keeps titles, labels and legends
 #: inside the figure, so a saved figure is never wider than its figsize and IPython's
@@ -162,8 +163,17 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
 
     Parameters
     ----------
-    limits : ((xmin, xmax), (ymin, ymax), (zmin, zmax)) in metres
-    ax : an existing 3D axes to set up, or None to create a figure
+    limits : ((xmin, xmax), (ymin, ymax), (zmin, zmax)), optional
+        The axes' limits (m).
+    ax : mpl_toolkits.mplot3d.Axes3D or None, optional
+        An existing 3D axes to set up, or None to create a figure.
+    figsize : (float, float), optional
+        The new figure's (width, height) in inches.
+
+    Returns
+    -------
+    mpl_toolkits.mplot3d.Axes3D
+        The axes.
     """
     limits = as_float_array(limits, "limits")
     if limits.shape != (3, 2):
@@ -196,8 +206,21 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
 
 
 def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
-    """Draw the frame of a 4x4 transform ``T``: x red, y green, z blue, ``length`` in
-    m."""
+    """Draw the frame of a transform: x red, y green, z blue.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+        Where to draw.
+    T : array-like, shape (4, 4)
+        The frame's pose (m).
+    label : str or None, optional
+        Written at the origin.
+    length : float, optional
+        The length of the axes drawn (m).
+    alpha : float, optional
+        Opacity.
+    """
     _check_axes(ax)
     T = check_transform(_numeric(T, "T"), "T")
     if T.ndim != 2:
@@ -228,12 +251,27 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
 
 
 def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
-    """Draw the screw axis through point ``r`` with direction ``s`` as a dash-dot
-    line."""
+    """Draw the screw axis through point ``r`` with direction ``s`` as a dash-dot line.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+        Where to draw.
+    s : array-like, shape (3,)
+        The direction.
+    r : array-like, shape (3,)
+        A point of the axis (m).
+    length : float, optional
+        The length drawn, centred on r (m).
+    label : str or None, optional
+        The legend's label.
+    color : str, optional
+        A matplotlib colour.
+    """
     _check_axes(ax)
     s, r = _vector(s, "s"), _vector(r, "r")
     length = check_positive(length, "length")
-    if np.linalg.norm(s) < 1e-12:
+    if np.linalg.norm(s) < ZERO_TOL:
         raise ValueError(f"s must be a non-zero 3-vector, got {s.tolist()}")
     u = s / np.linalg.norm(s)
     ends = np.stack([r - 0.5 * length * u, r + 0.5 * length * u])
@@ -244,8 +282,19 @@ def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
 
 
 def draw_screw_motion(ax, Ts, every=1, length=0.2):
-    """Draw the path of the origin over a batch of transforms ``Ts`` (N, 4, 4), and
-    every k-th frame."""
+    """Draw the path of the origin over a batch of transforms, and every k-th frame.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+        Where to draw.
+    Ts : array-like, shape (N, 4, 4)
+        The transforms (m).
+    every : int, optional
+        k: draw the frame of every k-th transform.
+    length : float, optional
+        The length of the frames' axes (m).
+    """
     _check_axes(ax)
     Ts = check_transform(as_float_array(Ts, "Ts"), "Ts")
     if Ts.ndim != 3 or len(Ts) < 1:
@@ -275,7 +324,31 @@ def draw_chain(
     Links join the frame origins; each joint axis is a short black segment; the tool
     frame is drawn, and with ``frames`` every link frame too, labelled once per point:
     frames that share an origin (the PUMA's {0} and {1}, or {4}, {5} and {6} at its
-    wrist) get one label "{0, 1}". Returns the (n + 1, 4, 4) frames.
+    wrist) get one label "{0, 1}".
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+        Where to draw.
+    chain : Chain
+        The chain.
+    q : array-like, shape (n,)
+        Joint values (rad or m).
+    color : str, optional
+        The links' colour.
+    frames : bool, optional
+        Draw every link frame too.
+    label : str or None, optional
+        The legend's label.
+    alpha : float, optional
+        Opacity.
+    frame_length : float, optional
+        The length of the frames' axes (m).
+
+    Returns
+    -------
+    ndarray, shape (n + 1, 4, 4)
+        The frames, as ``chain.frames(q)``.
     """
     _check_axes(ax)
     chain = check_chain(chain)
@@ -304,9 +377,10 @@ def draw_chain(
     return T
 
 
-def _shared_origin_labels(origins, tolerance=1e-6):
+def _shared_origin_labels(origins):
     """{index of the last frame at a point: "0, 1"} for frame origins (m) that
-    coincide."""
+    coincide (to ``DRAWING_TOL`` times the frames' size)."""
+    tolerance = DRAWING_TOL * length_scale(origins)
     groups = []
     for k, origin in enumerate(origins):
         for group in groups:
@@ -322,7 +396,27 @@ def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha
     """Draw the ellipsoid centre + axes @ diag(radii) u over unit vectors u
     (see jacobians.ellipsoid).
 
-    ``scale`` converts the radii to metres on the drawing (e.g. 0.2 m per m/s).
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+        Where to draw.
+    centre : array-like, shape (3,)
+        The centre (m).
+    radii : array-like, shape (3,)
+        The semi-axes (m/s or rad/s, as jacobians.ellipsoid gives them).
+    axes : array-like, shape (3, 3)
+        Their directions, as columns.
+    scale : float, optional
+        Converts the radii to metres on the drawing (e.g. 0.2 m per m/s).
+    color : str, optional
+        A matplotlib colour.
+    alpha : float, optional
+        Opacity.
+
+    Returns
+    -------
+    mpl_toolkits.mplot3d.art3d.Poly3DCollection
+        The surface.
     """
     _check_axes(ax)
     centre, radii = _vector(centre, "centre"), _vector(radii, "radii")
@@ -343,8 +437,30 @@ def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha
 
 
 def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0, 0.0)):
-    """Draw a planar arm (x-y plane) at q (n,) as a 2D stick figure; returns the
-    line."""
+    """Draw a planar arm (x-y plane) as a 2D stick figure.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw.
+    chain : Chain
+        A planar arm (:func:`screwkit.robots.planar`).
+    q : array-like, shape (n,)
+        Joint angles (rad).
+    color : str, optional
+        A matplotlib colour.
+    alpha : float, optional
+        Opacity.
+    label : str or None, optional
+        The legend's label.
+    base : (float, float), optional
+        Where the arm's base is drawn (m).
+
+    Returns
+    -------
+    matplotlib.lines.Line2D
+        The line.
+    """
     _check_axes(ax, three_d=False)
     chain = check_chain(chain)
     q = _one_q(chain, q)
@@ -436,11 +552,24 @@ def animation_html(animation, alt=None, label="Frame of the animation"):
 
     The frames are rendered by matplotlib (as ``animation.to_jshtml()`` does) and
     embedded as PNG data; the page shows one at a time, with a play/pause button and a
-    slider. ``alt`` is the image's text for readers who do not see it
-    (default: a sentence built from the axes' titles, labels and legends; the book
-    replaces it by the cell's ``mystnb.image.alt``); ``label`` names the slider. The
-    output depends only on the frames, so it is the same at every run. Display it with
-    ``IPython.display.HTML``.
+    slider. The output depends only on the frames, so it is the same at every run.
+    Display it with ``IPython.display.HTML``.
+
+    Parameters
+    ----------
+    animation : matplotlib.animation.Animation
+        The animation.
+    alt : str or None, optional
+        The image's text for readers who do not see it (default: a sentence built
+        from the axes' titles, labels and legends; the book replaces it by the cell's
+        ``mystnb.image.alt``).
+    label : str, optional
+        Names the slider.
+
+    Returns
+    -------
+    str
+        The HTML.
     """
     from matplotlib.animation import Animation
 

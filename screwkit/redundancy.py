@@ -35,6 +35,13 @@ from ._checks import (
     describe,
 )
 from .chains import Joint
+from .tolerances import (
+    DIVISION_FLOOR,
+    LIMIT_MARGIN,
+    POSITION_TOL,
+    STEP_TOL,
+    length_scale,
+)
 
 __all__ = [
     "Path",
@@ -55,11 +62,21 @@ __all__ = [
 
 @dataclass(frozen=True)
 class Path:
-    """A sampled path of the end effector: t (steps,) s, position and velocity
-    (steps, 2) in m, m/s.
+    """A sampled path of the end effector.
 
     The samples are uniform in time (Euler steps of one dt), at least two, and the
     arrays are copied, so changing the caller's arrays later does not change the path.
+
+    Parameters
+    ----------
+    t : ndarray, shape (steps,)
+        The sample times (s).
+    position : ndarray, shape (steps, 2)
+        The points (m).
+    velocity : ndarray, shape (steps, 2)
+        Their velocities (m/s).
+    name : str
+        Used in titles.
     """
 
     t: np.ndarray
@@ -80,7 +97,7 @@ class Path:
             raise ValueError(
                 f"t must increase: the time step dt must be positive, got dt = {dt!r} s"
             )
-        if not np.allclose(steps, dt, rtol=1e-9, atol=0):
+        if not np.allclose(steps, dt, rtol=STEP_TOL, atol=0):
             worst = int(np.argmax(np.abs(steps - dt)))
             raise ValueError(
                 f"t must be uniform (one time step dt = {dt:.6g} s), but the step "
@@ -107,14 +124,25 @@ class Path:
 def timing(t, duration, kind="smooth"):
     """The path parameter s(t) in [0, 1] and its rate ds/dt.
 
-    'smooth': the quintic s = 10 u^3 - 15 u^4 + 6 u^5 (u = t / duration), which starts
-    and ends at rest with zero acceleration; 'constant': s = u. ``t`` (s) must lie in
-    [0, duration].
+    Parameters
+    ----------
+    t : float or array-like
+        Times (s) in [0, duration].
+    duration : float
+        The path's duration (s), positive.
+    kind : {'smooth', 'constant'}, optional
+        'smooth': the quintic s = 10 u^3 - 15 u^4 + 6 u^5 (u = t / duration), which
+        starts and ends at rest with zero acceleration; 'constant': s = u.
+
+    Returns
+    -------
+    s, ds_dt : ndarray, shaped like t
+        The parameter (no unit) and its rate (1/s).
     """
     kind = check_option(kind, "kind", ("smooth", "constant"))
     duration = check_positive(duration, "duration")
     t = as_float_array(t, "t")
-    if t.size and (t.min() < 0 or t.max() > duration * (1 + 1e-9)):
+    if t.size and (t.min() < 0 or t.max() > duration * (1 + STEP_TOL)):
         raise ValueError(
             f"t must lie in [0, duration] = [0, {duration:g}] s, "
             f"got values from {t.min():g} to {t.max():g} s"
@@ -141,7 +169,7 @@ def _samples(duration, dt):
             f"{duration / dt:.3g} (duration={duration} s, dt={dt} s); use a larger dt"
         )
     steps = int(round(duration / dt))
-    if steps < 1 or not np.isclose(steps * dt, duration, rtol=1e-9, atol=0):
+    if steps < 1 or not np.isclose(steps * dt, duration, rtol=STEP_TOL, atol=0):
         raise ValueError(
             f"duration must be a whole number of steps dt, got duration={duration} and "
             f"dt={dt}"
@@ -150,8 +178,26 @@ def _samples(duration, dt):
 
 
 def circle(center, radius, duration, dt, timing_kind="smooth"):
-    """A circle once counter-clockwise, from center + (radius, 0), over ``duration``
-    seconds."""
+    """A circle once counter-clockwise, from center + (radius, 0).
+
+    Parameters
+    ----------
+    center : array-like, shape (2,)
+        The centre (m).
+    radius : float
+        The radius (m), positive.
+    duration : float
+        The time to go round (s).
+    dt : float
+        The time step (s).
+    timing_kind : {'smooth', 'constant'}, optional
+        The timing along the circle (see :func:`timing`).
+
+    Returns
+    -------
+    Path
+        The sampled circle.
+    """
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     center = _point(center, "center")
     radius = check_positive(radius, "radius")
@@ -169,8 +215,24 @@ def circle(center, radius, duration, dt, timing_kind="smooth"):
 
 
 def line(start, end, duration, dt, timing_kind="smooth"):
-    """A straight line from ``start`` to ``end`` (points (2,), m) over ``duration``
-    seconds."""
+    """A straight line from ``start`` to ``end``.
+
+    Parameters
+    ----------
+    start, end : array-like, shape (2,)
+        The end points (m).
+    duration : float
+        The time to go (s).
+    dt : float
+        The time step (s).
+    timing_kind : {'smooth', 'constant'}, optional
+        The timing along the line (see :func:`timing`).
+
+    Returns
+    -------
+    Path
+        The sampled line.
+    """
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     start, end = _point(start, "start"), _point(end, "end")
     if np.allclose(start, end):
@@ -232,9 +294,21 @@ def planar_kinematics(lengths, q):
     """Joint positions and the end-effector Jacobian of a planar arm in its own base
     frame.
 
-    q (n,) -> points (n + 1, 2) (the base, each joint, the end effector) and J (2, n);
-    a batch (N, n) -> (N, n + 1, 2) and (N, 2, n). Column i of J is z x (p - o_i).
-    ``lengths`` (n,) in m, q in rad.
+    Column i of J is z x (p - o_i).
+
+    Parameters
+    ----------
+    lengths : array-like, shape (n,)
+        The link lengths (m).
+    q : array-like, shape (n,) or (N, n)
+        Joint angles (rad).
+
+    Returns
+    -------
+    points : ndarray, shape (n + 1, 2) or (N, n + 1, 2)
+        The base, each joint and the end effector (m).
+    J : ndarray, shape (2, n) or (N, 2, n)
+        The planar Jacobian (m/rad).
     """
     lengths, q = _lengths_and_q(lengths, q)
     angles = np.cumsum(q, axis=-1)
@@ -248,13 +322,26 @@ def planar_kinematics(lengths, q):
 
 
 def manipulability_gradient(lengths, q):
-    """w = sqrt(det(J J^T)) and its exact gradient dw/dq: q (n,) -> (), (n,);
-    (N, n) -> (N,), (N, n).
+    """w = sqrt(det(J J^T)) of a planar arm and its exact gradient dw/dq.
 
     By Cauchy-Binet, w^2 = sum over i < j of m_ij^2 with m_ij = r_i x r_j, r_i the
     vector from joint i to the end effector. Turning joint k rotates r_i by
     z x r_max(i,k), so dm_ij/dq_k = r_i . r_max(j,k) - r_max(i,k) . r_j, and
     dw/dq_k = sum_ij m_ij dm_ij/dq_k / (2 w). Where w = 0 the gradient is returned as 0.
+
+    Parameters
+    ----------
+    lengths : array-like, shape (n,)
+        The link lengths (m).
+    q : array-like, shape (n,) or (N, n)
+        Joint angles (rad).
+
+    Returns
+    -------
+    w : float or ndarray, shape (N,)
+        The manipulability.
+    gradient : ndarray, shape (n,) or (N, n)
+        dw/dq.
     """
     return _gradient(planar_kinematics(lengths, q)[0])
 
@@ -313,6 +400,20 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
     ``damping`` > 0, then lambda^2 = damping^2 (1 - (sigma_min / singular_region)^2)
     inside the singular region sigma_min < singular_region (m): damped least squares
     that fades in near a singularity.
+
+    Parameters
+    ----------
+    J : array-like, shape (2, n)
+        A planar Jacobian.
+    damping : float, optional
+        The damping (m), >= 0.
+    singular_region : float, optional
+        The smallest singular value (m) below which damping fades in.
+
+    Returns
+    -------
+    ndarray, shape (n, 2)
+        J+.
     """
     J = as_float_array(J, "J")
     if J.ndim != 2 or J.shape[0] != 2 or J.shape[1] < 1:
@@ -331,7 +432,7 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
         if sigma_min2 < singular_region**2:
             A = A + damping**2 * (1 - sigma_min2 / singular_region**2) * np.eye(2)
     det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
-    if det <= 1e-300:
+    if det <= DIVISION_FLOOR:
         return np.linalg.pinv(J)
     inverse = np.array([[A[1, 1], -A[0, 1]], [-A[1, 0], A[0, 0]]]) / det
     return J.T @ inverse
@@ -340,18 +441,37 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
 # ---- resolution ----------------------------------------------------------------------
 
 
-def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
-    """Joint angles that put the end effector at ``point`` (2,), by Newton steps with
-    the pseudo-inverse from ``q_guess`` (n,); the nearest solution to the guess,
-    roughly.
+def start_configuration(arm, point, q_guess, tol=None, max_iterations=100):
+    """Joint angles that put the end effector at ``point``.
 
-    ``tol`` (m) is the distance accepted, ``max_iterations`` (>= 1) the Newton steps
-    allowed; a point out of reach, or one not reached in time, is a ValueError with the
-    residual.
+    Newton steps with the pseudo-inverse from ``q_guess``: the nearest solution to the
+    guess, roughly. A point out of reach, or one not reached in time, is a ValueError
+    with the residual.
+
+    Parameters
+    ----------
+    arm : Chain
+        A planar arm (:func:`screwkit.robots.planar`).
+    point : array-like, shape (2,)
+        The target (m).
+    q_guess : array-like, shape (n,)
+        The first guess (rad).
+    tol : float, optional
+        The distance accepted (m); by default ``POSITION_TOL`` times the longest
+        link.
+    max_iterations : int, optional
+        The Newton steps allowed (>= 1).
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        The joint angles (rad).
     """
     lengths = _lengths(arm)
     q = np.array(arm.check_one(q_guess, "q_guess"))  # a copy: the caller's array stays
     point = _point(point, "point")
+    if tol is None:
+        tol = POSITION_TOL * length_scale(lengths)
     tol = check_positive(tol, "tol")
     max_iterations = check_integer(max_iterations, "max_iterations", minimum=1)
     R, origin = _base_2d(arm)
@@ -373,10 +493,22 @@ def start_configuration(arm, point, q_guess, tol=1e-10, max_iterations=100):
 class Resolution:
     """The result of :func:`resolve`; row i belongs to the path's sample i.
 
-    t (steps,) s; q (steps, n) rad; position (steps, 2) m, the end effector in the world
-    frame; error (steps,) m, its distance from the path; manipulability (steps,),
-    sqrt(det(J J^T)) at q; limited (steps,) bool, True where a joint limit clamped the
-    step that led to row i.
+    Parameters
+    ----------
+    t : ndarray, shape (steps,)
+        Times (s).
+    q : ndarray, shape (steps, n)
+        Joint angles (rad).
+    position : ndarray, shape (steps, 2)
+        The end effector in the world frame (m).
+    error : ndarray, shape (steps,)
+        Its distance from the path (m).
+    manipulability : ndarray, shape (steps,)
+        sqrt(det(J J^T)) at q.
+    limited : ndarray of bool, shape (steps,)
+        True where a joint limit clamped the step that led to row i.
+    path : Path
+        The path followed.
     """
 
     t: np.ndarray
@@ -407,19 +539,42 @@ def resolve(
     phi = ``null_space_gain`` * grad w (thesis eqs. 2.37-2.38). ``damping`` > 0 uses
     damped least squares near singularities (see :func:`pseudo_inverse`).
 
-    joint_limits : None (ignored), 'clamp'
-        (the arm's qlim cut the step: the end effector then leaves the path), or 'avoid'
-        (clamp, and subtract limit_gain * grad H from phi, with
-        H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)), which is 1 per joint at
-        mid-range and grows without bound at a limit: the null space pushes joints away
-        from their limits; the push's length is capped at ``max_rate`` rad/s).
-
     A path that leaves the reachable annulus, a q0 of the wrong length, or a q0 whose
     end effector is more than ``start_tolerance`` (m) from the path's start is refused
     with a ValueError; so is a q0 outside the arm's joint limits when ``joint_limits``
-    is 'clamp' or 'avoid'. Gains are finite real numbers: ``null_space_gain`` of either
-    sign (negative lowers w), the others >= 0; ``max_rate`` and ``start_tolerance``
-    positive.
+    is 'clamp' or 'avoid'.
+
+    Parameters
+    ----------
+    arm : Chain
+        A planar arm (:func:`screwkit.robots.planar`).
+    path : Path
+        The path to follow.
+    q0 : array-like, shape (n,)
+        The start (rad).
+    null_space_gain : float, optional
+        Of either sign (negative lowers w).
+    feedback_gain : float, optional
+        K (1/s), >= 0.
+    damping : float, optional
+        >= 0 (m); see :func:`pseudo_inverse`.
+    joint_limits : {None, 'clamp', 'avoid'}, optional
+        None: ignored; 'clamp': the arm's qlim cut the step (the end effector then
+        leaves the path); 'avoid': clamp, and subtract limit_gain * grad H from phi,
+        with H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)), which is 1 per
+        joint at mid-range and grows without bound at a limit: the null space pushes
+        joints away from their limits.
+    limit_gain : float, optional
+        The gain of grad H, >= 0.
+    max_rate : float, optional
+        The cap on the length of the limits' push (rad/s), positive.
+    start_tolerance : float, optional
+        The distance (m) allowed between q0's end effector and the path's start.
+
+    Returns
+    -------
+    Resolution
+        The joint path and its errors, one row per sample of the path.
     """
     lengths = _lengths(arm)
     if not isinstance(path, Path):
@@ -512,7 +667,7 @@ def _limit_gradient(q, low, high, finite):
     """grad H of H = sum (q_max - q_min)^2 / (4 (q_max - q)(q - q_min)) over joints with
     finite limits."""
     low, high = np.where(finite, low, -1.0), np.where(finite, high, 1.0)
-    inside = np.clip(q, low + 1e-9, high - 1e-9)
+    inside = np.clip(q, low + LIMIT_MARGIN, high - LIMIT_MARGIN)
     gradient = (
         (high - low) ** 2
         * (2 * inside - high - low)

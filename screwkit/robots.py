@@ -127,7 +127,14 @@ def _symbols(names, limbs, first, last):
 
 
 def pm_3prrr():
-    """Tripteron, 3-PRRR: limb i has four parallel axes along X, Y, Z (paper §3.2.1)."""
+    """Tripteron, 3-PRRR: limb i has four parallel axes along X, Y, Z (paper §3.2.1).
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+    """
     a, b, Ly, Lz = sp.symbols("a b L_y L_z")
     d = sp.symbols("d_1:4")
     theta = _symbols("theta", 3, 2, 3)
@@ -158,6 +165,12 @@ def pm_3prpar():
     (§3.2.2).
 
     Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
     """
     L, b = sp.symbols("L b")
     d = sp.symbols("d_1:4")
@@ -208,6 +221,12 @@ def pm_4prru():
     90-degree steps about Z. The paper's code places C with the rotation N applied twice
     and never uses theta_i3; here B and C follow theta_i2 and theta_i3 about the tilted
     axis.
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
     """
     R, a, b, alpha = sp.symbols("R a b alpha")
     d = sp.symbols("d_1:5")
@@ -236,7 +255,14 @@ def pm_4prru():
 
 def pm_6ups():
     """6-UPS (Gough–Stewart type): U at A, P along the leg, S at B; limbs turned by 60
-    degrees (§3.2.4)."""
+    degrees (§3.2.4).
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+    """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:7")
     theta = _symbols("theta", 6, 1, 2)
@@ -258,7 +284,14 @@ def pm_6ups():
 
 def planar_3rrr():
     """Planar 3-RRR: three RRR limbs with all axes along Z
-    (3 motions in the plane: 2T1R)."""
+    (3 motions in the plane: 2T1R).
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+    """
     a, b = sp.symbols("a b")
     theta = _symbols("theta", 3, 1, 2)
     limbs = []
@@ -273,7 +306,14 @@ def planar_3rrr():
 
 def pm_3rps():
     """3-RPS: R tangent to the base circle, P along the leg, S on the platform
-    (1T2R)."""
+    (1T2R).
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+    """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:4")
     theta = [sp.Symbol(f"theta_{i}") for i in range(1, 4)]
@@ -294,6 +334,12 @@ def pm_3ruu():
     Limb 1: R about u = Y at A = (R, 0, 0); a U at B (axes u, then v = rotation of Z
     about u by theta_12); a U at C (axes v, then u). Each limb then constrains the one
     couple along u x v. Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
     """
     R, a, b = sp.symbols("R a b")
     limbs = []
@@ -310,7 +356,14 @@ def pm_3ruu():
 
 def spherical_3rrr():
     """Spherical 3-RRR (agile eye type): every joint axis passes through the origin
-    (3R)."""
+    (3R).
+
+    Returns
+    -------
+    list of limbs
+        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
+        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+    """
     theta = _symbols("theta", 3, 1, 2)
     limbs = []
     for i in range(3):
@@ -332,6 +385,11 @@ def puma560():
     (Robotics Toolbox, from Wang & Chen 1991): q2 in [-45, 225] deg and q3 in [-225, 45]
     deg. Named configurations: 'zero', 'ready', 'stretch', 'nominal'
     (the paper's eqs. 32-35).
+
+    Returns
+    -------
+    Chain
+        The arm, with its named configurations.
     """
     deg = np.pi / 180
     links = [
@@ -366,6 +424,11 @@ def kawasaki_cx210l():
     paper. No joint limits are set: the paper quotes only the maker's q3 >= -75 deg.
     Named configurations: 'table2_1', 'table2_2', 'table2_3'
     (q2 = 30, q3 = -90, -80, -70 deg).
+
+    Returns
+    -------
+    Chain
+        The arm, with its named configurations.
     """
     deg = sp.pi / 180
     links = [
@@ -389,8 +452,19 @@ def planar(lengths, qlim=None):
 
     Standard DH with a_i = lengths[i] and every other parameter zero, so the end
     effector moves in the x-y plane; the rows 'position' of its geometric Jacobian hold
-    the 2 x n planar Jacobian in their first two rows. ``qlim`` is (n, 2) in rad, or
-    None.
+    the 2 x n planar Jacobian in their first two rows.
+
+    Parameters
+    ----------
+    lengths : sequence of n >= 2 positive floats
+        The link lengths (m).
+    qlim : array-like, shape (n, 2), or None, optional
+        Joint limits (rad).
+
+    Returns
+    -------
+    Chain
+        The arm, named "planar nR".
     """
     if lengths is None or isinstance(lengths, (str, bytes)):
         raise TypeError(
@@ -417,7 +491,22 @@ def planar(lengths, qlim=None):
 def two_arm_planar(lengths=(0.3, 0.25, 0.2, 0.15, 0.1), separation=0.4, qlim=None):
     """A two-arm planar robot: two copies of ``planar(lengths)``
     (links l0..l4 as in the thesis) with their bases on the x axis at x = -separation/2
-    (left) and +separation/2 (right), in m. Returns (left, right)."""
+    (left) and +separation/2 (right), in m.
+
+    Parameters
+    ----------
+    lengths : sequence of positive floats, optional
+        The link lengths of each arm (m).
+    separation : float, optional
+        The distance between the two bases (m).
+    qlim : array-like, shape (n, 2), or None, optional
+        Joint limits of each arm (rad).
+
+    Returns
+    -------
+    left, right : Chain
+        The two arms.
+    """
     half = as_real_scalar(separation, "separation") / 2
     arms = []
     for name, x in (("left", -half), ("right", half)):
@@ -441,6 +530,11 @@ def ur5e():
     Frame 6 is the tool flange. Joint limits +-360 deg (the UR5e data sheet). Joints
     2, 3 and 4 are parallel: a UR-type arm, solved in closed form by
     :mod:`screwkit.ur_ik`.
+
+    Returns
+    -------
+    Chain
+        The arm.
     """
     turn = (-2 * np.pi, 2 * np.pi)
     links = [
@@ -469,6 +563,11 @@ def panda():
     (the tool transform). Joint limits from the same page (rad). The link frames are
     those of Franka's URDF: frames 1..6 are panda_link1..6 and the last frame, which
     carries the flange, is panda_link8.
+
+    Returns
+    -------
+    Chain
+        The arm.
     """
     h = sp.pi / 2
     rows = [
@@ -502,6 +601,11 @@ def stanford():
     pi/2, joint 3 prismatic with theta3 = -pi/2 and d3 = q3 in [12, 48] inches,
     alpha4 = -pi/2, alpha5 = pi/2, d6 = 0.263 m; every a_i = 0. Revolute joints have
     no limits here.
+
+    Returns
+    -------
+    Chain
+        The arm.
     """
     h = sp.pi / 2
     links = [
@@ -529,6 +633,11 @@ def iiwa14():
     with global configuration control, joint limit and singularity avoidance", Mech.
     Mach. Theory 121 (2018): d = (0.36, 0, 0.42, 0, 0.4, 0, 0.126) m, alpha =
     (-pi/2, pi/2, pi/2, -pi/2, -pi/2, pi/2, 0), every a_i = 0.
+
+    Returns
+    -------
+    Chain
+        The arm.
     """
     h, deg = sp.pi / 2, np.pi / 180
     rows = [

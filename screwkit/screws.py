@@ -26,14 +26,21 @@ from ._checks import (
     is_symbolic,
 )
 from .lie import adjoint
-from .transforms import _is_infinite_pitch, axis_coordinates, exp_twist
+from .transforms import _is_infinite_pitch, _pitch, axis_coordinates, exp_twist
 
 __all__ = ["Screw", "Twist", "Wrench", "axis_coordinates"]
 
 
 class Screw:
-    """A screw as an exact 6-vector [angular; linear]; see Twist and Wrench for the
-    typed kinds."""
+    """A screw as an exact 6-vector [angular; linear].
+
+    See Twist and Wrench for the typed kinds.
+
+    Parameters
+    ----------
+    vector : array-like of 6 numbers or SymPy expressions, or a SymPy 6x1 matrix
+        The coordinates [angular; linear], kept exact (``self.vector``).
+    """
 
     #: the kind of screw as a word, for messages and captions
     noun = "screw"
@@ -51,20 +58,22 @@ class Screw:
 
         Parameters
         ----------
-        s, r : 3-sequences of numbers or SymPy expressions (r is ignored when h = oo)
-        h : 0 (revolute), a finite pitch (helical, m/rad), or ``sympy.oo`` (prismatic)
+        s, r : 3-sequences of numbers or SymPy expressions
+            The axis direction and a point of the axis (m); r is ignored when h = oo.
+        h : number, SymPy expression or ``sympy.oo``
+            0 (revolute), a finite pitch (helical, m/rad), or ``sympy.oo`` (prismatic).
+
+        Returns
+        -------
+        Screw
+            A screw of this class (Screw, Twist or Wrench).
         """
         s = as_sympy_matrix(s, "s", (3, 1))
         if all(e == 0 for e in s):
             raise ValueError(f"s must be a non-zero direction, got {list(s)}")
         if _is_infinite_pitch(h):
             return cls._checked(axis_coordinates(s, None, sp.oo))
-        if isinstance(h, str) or h is None:
-            raise TypeError(
-                "h must be a pitch (a number, a SymPy expression or sympy.oo), got "
-                f"{describe(h)}"
-            )
-        h = as_sympy_scalar(h, "h")
+        h = _pitch(h, exact=True)
         return cls._checked(axis_coordinates(s, as_sympy_matrix(r, "r", (3, 1)), h))
 
     @classmethod
@@ -77,18 +86,29 @@ class Screw:
 
     @classmethod
     def from_vector(cls, vector):
-        """The screw with the given 6 coordinates [angular; linear]."""
+        """The screw with the given 6 coordinates [angular; linear].
+
+        Parameters
+        ----------
+        vector : array-like of 6 numbers or SymPy expressions
+            The coordinates [angular; linear].
+
+        Returns
+        -------
+        Screw
+            A screw of this class (Screw, Twist or Wrench).
+        """
         return cls(vector)
 
     # --- geometry ----------------------------------------------------------------
     @property
     def primary(self):
-        """The first (angular) 3-vector: s for a twist's w, f for a wrench."""
+        """The first (angular) 3-vector s (a twist's w, a wrench's f)."""
         return self.vector[:3, 0]
 
     @property
     def secondary(self):
-        """The second (linear) 3-vector: r x s + h s."""
+        """The second (linear) 3-vector, r x s + h s."""
         return self.vector[3:, 0]
 
     def _check_not_zero(self, quantity):
@@ -114,7 +134,7 @@ class Screw:
 
     @property
     def direction(self):
-        """The direction of the axis (not normalised): s, or s0 for an infinite pitch.
+        """The direction of the axis (not normalised), s, or s0 for an infinite pitch.
 
         The zero screw has no direction: ``ValueError``.
         """
@@ -201,13 +221,22 @@ class Screw:
         )
 
     def transform(self, T):
-        """This screw written in another frame: Ad(T) $ for the pose T (4, 4) of its
-        frame there.
+        """This screw written in another frame: Ad(T) $.
 
         A twist (w; v) becomes (R w; R v + p x R w); a wrench (f; m), in the same
         [angular; linear] order, changes the same way (Modern Robotics, ordering (m; f),
-        writes this as the transposed adjoint: F_b = Ad(T_ab)^T F_a). Exact for a SymPy
-        T; a float T gives Float coordinates.
+        writes this as the transposed adjoint: F_b = Ad(T_ab)^T F_a).
+
+        Parameters
+        ----------
+        T : array-like or SymPy matrix, shape (4, 4)
+            The pose (R, p) of this screw's frame in the other frame (m).
+
+        Returns
+        -------
+        Screw
+            A screw of the same class: exact for a SymPy T; a float T gives Float
+            coordinates.
         """
         T = check_transform(
             T if isinstance(T, sp.MatrixBase) else as_float_array(T, "T"), "T"
@@ -234,18 +263,35 @@ class Screw:
 
 
 class Twist(Screw):
-    """A twist (w; v): a joint's motion, or a platform's instantaneous motion."""
+    """A twist (w; v): a joint's motion, or a platform's instantaneous motion.
+
+    Parameters
+    ----------
+    vector : array-like of 6 numbers or SymPy expressions
+        The coordinates (w; v) (rad/s, m/s, or per unit joint rate).
+    """
 
     #: the kind of screw as a word, for messages and captions
     noun = "twist"
 
     def exp(self, theta):
-        """The rigid motion exp([V] theta) (4, 4) of moving ``theta`` along this twist.
+        """The rigid motion exp([V] theta) of moving ``theta`` along this twist.
 
-        Exact (a SymPy matrix) when theta or the twist holds SymPy symbols or theta is a
-        SymPy number; float64 for a numeric theta, (N,) angles giving (N, 4, 4). See
-        :func:`screwkit.transforms.exp_twist`.
+        See :func:`screwkit.transforms.exp_twist`.
 
+        Parameters
+        ----------
+        theta : float, array-like of shape (N,), or a SymPy expression
+            The distance moved along the twist (rad, or m for a pure translation).
+
+        Returns
+        -------
+        sympy.Matrix (4, 4) or ndarray, shape (4, 4) or (N, 4, 4)
+            Exact (a SymPy matrix) when theta or the twist holds SymPy symbols or theta
+            is a SymPy number; float64 for a numeric theta.
+
+        Examples
+        --------
         >>> np.round(Twist.from_axis([0, 0, 1], [1, 0, 0], 0).exp(np.pi)[:3, 3], 12)
         array([2., 0., 0.])
         """
@@ -255,7 +301,13 @@ class Twist(Screw):
 
 
 class Wrench(Screw):
-    """A wrench (f; m): a force and moment, or a constraint a limb applies."""
+    """A wrench (f; m): a force and moment, or a constraint a limb applies.
+
+    Parameters
+    ----------
+    vector : array-like of 6 numbers or SymPy expressions
+        The coordinates (f; m) (N, N m).
+    """
 
     #: the kind of screw as a word, for messages and captions
     noun = "wrench"

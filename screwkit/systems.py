@@ -6,9 +6,10 @@ exactly by :mod:`._exact`: the rank is the generic rank in the symbols, over the
 the entries really generate (cos(2a) and 2 cos(a)^2 - 1 are one number at a = 1/3 or
 pi/7 as for a symbol a); what cannot be decided exactly is refused with the reason.
 Screws given with floats (and no symbols) are computed by SVD: the rank counts the
-singular values above ``tol * max(1, the largest)``, ``tol = 1e-9`` by default
-(:mod:`._numeric`), so two axes that differ by round-off count as one. Floats mixed with
-symbols are refused with a message saying how to write them exactly.
+singular values above ``tol * max(1, the largest)``, ``tol = RANK_TOL`` (1e-9) by
+default (:mod:`screwkit.tolerances`), so two axes that differ by round-off count as
+one. Floats mixed with symbols are refused with a message saying how to write them
+exactly.
 
 >>> import sympy as sp
 >>> x, y, origin = [1, 0, 0], [0, 1, 0], [0, 0, 0]
@@ -40,12 +41,15 @@ class ScrewSystem:
 
     Parameters
     ----------
-    screws : list of Screw objects, 6-vectors [angular; linear], or (s, r, h) triples
-        as in the mobility paper's zeroth step (s, r in m, h in m/rad or sympy.oo)
-    kind : Twist, Wrench or Screw; by default the kind of the screws given (Twist for
-        vectors)
-    tol : relative tolerance of the rank when the screws hold floats (SVD; default
-        1e-9); exact screws ignore it
+    screws : list of Screw, of 6-vectors [angular; linear], or of (s, r, h) triples
+        The screws spanning the system; triples as in the mobility paper's zeroth step
+        (s, r in m, h in m/rad or sympy.oo).
+    kind : {Twist, Wrench, Screw}, optional
+        By default the kind of the screws given (Twist for vectors).
+    tol : float, optional
+        Relative tolerance of the rank when the screws hold floats (SVD; default
+        ``RANK_TOL``, 1e-9, of :mod:`screwkit.tolerances`); exact screws ignore
+        it.
     """
 
     def __init__(self, screws, kind=None, tol=None):
@@ -96,7 +100,7 @@ class ScrewSystem:
 
     @property
     def noun(self):
-        """The kind of screw as a word: 'twist', 'wrench' or 'screw'."""
+        """The kind of screw as a word ('twist', 'wrench' or 'screw')."""
         return self.kind.noun
 
     def _as_screw(self, item, index):
@@ -144,8 +148,11 @@ class ScrewSystem:
 
     @property
     def rank(self):
-        """The order of the system: the number of independent screws, for generic symbol
-        values (exact), or by SVD with the tolerance ``tol`` (floats)."""
+        """The order of the system, the number of independent screws.
+
+        For generic symbol values (exact), or by SVD with the tolerance ``tol``
+        (floats).
+        """
         if self._rank is None:
             if self.numeric:
                 self._rank = _numeric.rank(self._array, self.tol) if self.screws else 0
@@ -156,8 +163,13 @@ class ScrewSystem:
     order = rank
 
     def basis(self):
-        """A canonical basis (list of screws), reduced so that each ends in 1 at its own
-        pivot."""
+        """A canonical basis, reduced so that each screw ends in 1 at its own pivot.
+
+        Returns
+        -------
+        list of Screw
+            ``rank`` screws of the system's kind.
+        """
         if self._basis is None:
             if not self.screws:
                 self._basis = []
@@ -174,14 +186,25 @@ class ScrewSystem:
         return list(self._basis)
 
     def reduced(self):
-        """The same span with its canonical basis as its screws (rank and basis known):
-        what a system is printed as, and the cheaper one to take further."""
+        """The same span with its canonical basis as its screws.
+
+        Returns
+        -------
+        ScrewSystem
+            The system with rank and basis known: what a system is printed as, and the
+            cheaper one to take further.
+        """
         field = None if self.numeric else self.field
         return ScrewSystem._of_basis(self.basis(), self.kind, self.tol, field)
 
     def reciprocal(self):
-        """The system of every screw reciprocal to all of these (twists -> wrenches and
-        back)."""
+        """The system of every screw reciprocal to all of these.
+
+        Returns
+        -------
+        ScrewSystem
+            Of order 6 - rank; wrenches for twists and twists for wrenches.
+        """
         other = _OTHER[self.kind]
         if not self.screws:
             return ScrewSystem([other(v) for v in sp.eye(6).columnspace()], kind=other)
@@ -270,7 +293,18 @@ class ScrewSystem:
         )
 
     def union(self, other):
-        """The span of both systems (same kind)."""
+        """The span of both systems.
+
+        Parameters
+        ----------
+        other : ScrewSystem
+            A system of the same kind.
+
+        Returns
+        -------
+        ScrewSystem
+            The span of the screws of both.
+        """
         self._check_kind(other, "union")
         return ScrewSystem(
             self.screws + other.screws, kind=self.kind, tol=min(self.tol, other.tol)
@@ -278,12 +312,34 @@ class ScrewSystem:
 
     def intersection(self, other):
         """The screws common to both spans: the reciprocal of the union of the
-        reciprocals."""
+        reciprocals.
+
+        Parameters
+        ----------
+        other : ScrewSystem
+            A system of the same kind.
+
+        Returns
+        -------
+        ScrewSystem
+            The intersection of the two spans.
+        """
         self._check_kind(other, "intersection")
         return self.reciprocal().union(other.reciprocal()).reciprocal()
 
     def contains(self, screw):
-        """True if ``screw`` lies in the span (generically)."""
+        """Whether ``screw`` lies in the span (generically).
+
+        Parameters
+        ----------
+        screw : Screw or 6-vector
+            The screw to test.
+
+        Returns
+        -------
+        bool
+            True if adding it does not raise the rank.
+        """
         return (
             ScrewSystem(self.screws + [screw], kind=self.kind, tol=self.tol).rank
             == self.rank
@@ -308,8 +364,13 @@ class ScrewSystem:
         return f"ScrewSystem({len(self.screws)} {self.noun}s, rank {self.rank})"
 
     def summary(self):
-        """The system as plain text: its order and its canonical basis, one screw a
-        line."""
+        """The system as plain text.
+
+        Returns
+        -------
+        str
+            Its order and its canonical basis, one screw a line.
+        """
         rows = [str(list(s.vector)) for s in self.basis()] or ["(none)"]
         return "\n".join([f"{self.noun} {self.rank}-system"] + ["  " + r for r in rows])
 

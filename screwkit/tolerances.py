@@ -16,8 +16,230 @@ Nothing else in screwkit writes a bare tolerance literal: a new one is added her
 in the section of the family that uses it, with its reason.
 """
 
+import numpy as np
+
 # ---- core: checks, rigid motions, screws, chains ------------------------------------
+
+#: Relative. A float matrix's rank counts its singular values above
+#: ``RANK_TOL * max(1, largest singular value)`` (screw systems, mobility): float
+#: screws built from measured or computed frames differ from exact ones in their last
+#: bits (about 1e-16 relative), and a genuine independent direction is many orders
+#: larger; 1e-9 sits between with room on both sides.
+RANK_TOL = 1e-9
+
+#: Relative. How far a float rotation given as INPUT may be from an exact one: the
+#: largest entry of R^T R - I for a rotation matrix, | |q| - 1 | for a quaternion.
+#: Tables and printouts give rotations to 6 or 7 significant digits, so the check is
+#: loose enough for those and still refuses a matrix that is not a rotation.
+ROTATION_TOL = 1e-6
+
+#: Relative. How far from 1 the norm of a joint screw's omega (or of v, for a
+#: prismatic joint) may be. Joint screws come from frames, URDF files or exact
+#: numbers, so they are unit to round-off; a looser check would accept an axis whose
+#: length silently rescales the joint variable (it is then normalised to the last bit).
+UNIT_SCREW_TOL = 1e-9
+
+#: Unitless. A float quantity of order one (a direction's norm, a quaternion's entry,
+#: an entry of a pose's last row, the cosine between two unit vectors) this close to 0
+#: is 0: thousands of units in the last place of 1, above the round-off of the few
+#: operations that produce it and far below any value a user means. For a length it is
+#: used as ``ZERO_TOL * scale`` (:func:`length_scale`).
+ZERO_TOL = 1e-12
+
+#: Unitless. |sin| (ZYZ) or |cos| (ZYX) of the middle Euler angle below which a float
+#: rotation is gimbal-locked: the two outer angles are then computed from a sum of
+#: products of about that size and lose all meaning; looser than ZERO_TOL because the
+#: angles themselves, not only a test, are computed from that small number.
+LOCK_TOL = 1e-9
+
+#: Unitless. Two unit directions are parallel when | |s1 . s2| - 1 | is below this
+#: (a parallelogram's four axes), a quarter of the round-off of computing s1 . s2 from
+#: axes typed to 9 digits.
+PARALLEL_TOL = 1e-9
+
+#: Length (m for an instance 1 m across; times :func:`length_scale`). Two points closer
+#: than ``LENGTH_TOL * scale`` are one point (a mechanism of no extent, a tool on its
+#: last joint's axis, a parallelogram's equal sides): a nanometre on a metre.
+LENGTH_TOL = 1e-9
+
+#: Length (m, times :func:`length_scale`). Frame origins closer than this are labelled
+#: together on a drawing: a micrometre on a metre, invisible at any figure size.
+DRAWING_TOL = 1e-6
+
+#: Length (m, times :func:`length_scale`). The distance to the target at which the
+#: start configuration's Newton iteration stops (quadratic convergence gets there in a
+#: step or two beyond 1e-6).
+POSITION_TOL = 1e-10
+
+#: Relative. A float is on a grid of steps (a slider's values, a path's time samples)
+#: when value / step is this close to a whole number, relative to the number of steps.
+STEP_TOL = 1e-9
+
+#: Unitless. Float coefficients of a compiled program (cos and sin of a DH alpha) this
+#: close to 0 or +-1 are taken as exact: cos(pi/2) computes as 6e-17, and a DH table's
+#: genuine angles are far from a right angle at this level.
+SNAP_TOL = 1e-14
+
+#: Relative. A float angle whose number of quarter turns alpha / (pi/2) is this close to
+#: a whole number is that multiple of pi/2 exactly: np.pi / 2 is within one unit in the
+#: last place (1.1e-16 relative) of pi/2.
+QUARTER_TURN_TOL = 1e-15
+
+#: Unitless. An expression of order one evaluated at a random point (floats with 15
+#: digits) is 0 below this: the test of an identity (cos^2 + sin^2 - 1) at sample
+#: points.
+SAMPLE_ZERO_TOL = 1e-9
+
+#: Angle (rad). Below it the series of theta / sin(theta) and of the logarithm's
+#: translation factor replace the closed forms, which cancel there; the series' next
+#: term is then below 1e-17.
+SMALL_ANGLE = 1e-4
+
+#: The smallest positive divisor used where a norm or determinant may be exactly 0
+#: (np.maximum(norm, DIVISION_FLOOR)): a guard against division by zero, not a test.
+DIVISION_FLOOR = 1e-300
+
+#: Angle (rad). Joint angles are clipped this far inside their limits before the
+#: limit gradient divides by the distance to a limit.
+LIMIT_MARGIN = 1e-9
+
+#: Angle (rad) or length (m). The step of central finite differences: near the cube
+#: root of the float64 epsilon (6e-6), where truncation and round-off errors balance.
+FD_STEP = 1e-6
+
+
+def length_scale(*lengths):
+    """The size of an instance, for length tolerances used as ``LENGTH_TOL * scale``.
+
+    Parameters
+    ----------
+    *lengths : array-like of float (m)
+        The instance's lengths or points: link lengths, joint points, screw moments.
+
+    Returns
+    -------
+    float
+        The largest absolute entry (m), or 1.0 for an instance of no size (every
+        entry 0, where there is nothing to scale).
+
+    >>> length_scale([0.0, 2.0], [[-3.0, 1.0]])
+    3.0
+    >>> length_scale([0, 0])
+    1.0
+    """
+    largest = max((float(np.max(np.abs(v), initial=0.0)) for v in lengths), default=0.0)
+    return largest if largest > 0 else 1.0
+
 
 # ---- ik: subproblems, closed-form engines, Newton -----------------------------------
 
+#: The subproblems' consistency conditions on float input (a unit axis, pitch 0,
+#: p and q in one plane across the axis, a residual that decides 0, 1 or 2 solutions):
+#: relative to the size of the points involved (1 + their distances from the axis),
+#: so round-off of a few 1e-16 per metre is never taken for a real miss.
+SUBPROBLEM_TOL = 1e-9
+
+#: A closed-form engine's structure checks (:mod:`screwkit.ik`): the sine between two
+#: axes that must be parallel (or must not be), a joint's pitch, and, times the arm's
+#: size (:func:`screwkit.ik._closed_form.arm_scale`, m), the distance by which axes
+#: that must meet miss. An arm read from a URDF or a DH table of decimals is exact to
+#: about 1e-15 relative, far inside it; a real offset of a millimetre far outside.
+IK_STRUCTURE_TOL = 1e-9
+
+#: Round-off that pushes a square-root or arccos argument of the closed forms just
+#: outside its range (a negative discriminant, a cosine beyond +-1) by less than this
+#: (relative; times the arm's size squared for an area) is clipped: a pose on a
+#: singularity is solved, not dropped. The same number decides when a point counts as
+#: on an axis (its angle free) and a direction as along one.
+IK_CLIP_TOL = 1e-10
+
+#: The tie-break of the configuration labels (l/r, u/d, n/f), the same for the three
+#: closed-form engines: a signed measure within it of 0 counts as the singular side
+#: ('r', 'd', 'f'). Used as is for a unit-free measure (a sine), times the arm's size
+#: for a length and times its square for an area, so that the labels and the closed
+#: form agree on poses solved at a singularity and every label round-trips.
+IK_LABEL_TOL = 1e-10
+
+#: A closed-form solution is flagged singular (shoulder, elbow, wrist) when its measure
+#: is below this: the squared distance of the wrist centre from the plane of axis 1
+#: (times the arm's size squared), 1 - |cos| of the elbow, the sine between axes 4 and
+#: 6. Looser than the clipping above: it reports the poses near a singularity, where
+#: the solutions come close together, not only those on it.
+IK_SINGULAR_TOL = 1e-9
+
+#: How far (rad) an angle moved by whole turns may lie outside a joint limit and still
+#: count as inside: the round-off of adding 2 pi k to an angle of (-pi, pi].
+IK_JOINT_LIMIT_SLACK = 1e-12
+
+#: Newton's default success test (:func:`screwkit.ik.numeric_ik`): the norm of the
+#: error twist [omega; v] theta, rad and m. Near the round-off of a chain's forward
+#: kinematics (about 1e-15 per metre) times the few hundred flops of a step, and far
+#: below anything a drawing or a machine could see.
+NEWTON_TOL = 1e-10
+
+#: The floor of Newton's adaptive damping lambda = |V|^2 / 2 + NEWTON_DAMPING: keeps
+#: J^T J + lambda I invertible at a singular configuration once the error is tiny.
+NEWTON_DAMPING = 1e-9
+
 # ---- parallel: model, legs, numerics, search ----------------------------------------
+# A length below is written for a mechanism about 1 m across and used times the
+# mechanism's own size (ParallelManipulator.scale, the farthest attachment point from
+# its frame's origin; a leg's l1 + l2 in the legs' kernels), so that the same mechanism
+# in millimetres gets the same answers, scaled.
+
+#: A platform pose of a planar or translational mechanism must keep its motion: the
+#: rotation block may differ from the allowed one (and a planar pose's z-translation,
+#: divided by the scale, from 0) by this much. Relative: rotation entries are numbers.
+PARALLEL_MOTION_TOL = 1e-9
+
+#: Forward kinematics stops when every loop-closure residual is below this length
+#: (times the scale): the residuals are lengths, reached by Newton to round-off.
+PARALLEL_FK_TOL = 1e-12
+
+#: A converged pose is accepted (success) when its residuals are below
+#: max(tol, this length times the scale): a looser floor than PARALLEL_FK_TOL, so that
+#: a pose Newton polished to round-off is not refused for its last bits.
+PARALLEL_FK_ACCEPT_TOL = 1e-10
+
+#: Newton's largest step in any component of the platform twist: 0.5 rad in angle,
+#: 0.5 times the scale in length. Damping keeps a far start from jumping across
+#: assembly modes; near the solution the step is far smaller and Newton is undamped.
+PARALLEL_NEWTON_MAX_STEP = 0.5
+
+#: A crank leg (3-RRR, delta) cannot be solved when the platform point lies on the
+#: crank's axis: the distance to the axis is compared with this length times l1 + l2.
+PARALLEL_AXIS_TOL = 1e-12
+
+#: A leg reaches its platform point when the law of cosines' ratio is within 1 + this
+#: (relative), or the point's distance within l1 + l2 and |l1 - l2| -/+ this length
+#: times l1 + l2: round-off at a leg stretched straight is not "out of reach".
+PARALLEL_REACH_TOL = 1e-12
+
+#: The 3-RPR's polynomial: a leading coefficient (or a remainder of the division by
+#: 1 + t^2) below this fraction of the largest coefficient counts as zero (relative).
+PARALLEL_POLY_ZERO_TOL = 1e-9
+
+#: A root t of the 3-RPR's sextic is real when |Im t| is below this fraction of
+#: 1 + |t| (relative): a double real root splits into a complex pair about sqrt(eps).
+PARALLEL_REAL_ROOT_TOL = 1e-6
+
+#: Cramer's rule for the 3-RPR's platform point fails where its determinant is below
+#: this fraction of its largest coefficient (or 1) (relative).
+PARALLEL_CRAMER_TOL = 1e-12
+
+#: Newton polishing a candidate assembly mode stops at this residual (times the
+#: scale), tighter than PARALLEL_FK_TOL: the modes are reported to round-off.
+PARALLEL_POLISH_TOL = 1e-13
+
+#: Two assembly modes are the same pose when no rotation entry differs by more than
+#: this (and no translation by more than this times the scale).
+PARALLEL_SAME_POSE_TOL = 1e-6
+
+#: Base and platform points lie in the base plane (the mirror image of a Stewart
+#: platform's pose is then an assembly mode too) when their z is below this length
+#: times the scale (NumPy's allclose default, which it replaces).
+PARALLEL_FLAT_TOL = 1e-8
+
+#: fk_all lists a spatial mechanism's modes by height, platform above the base first;
+#: heights that agree to this many decimals (of the scale) count as equal.
+PARALLEL_HEIGHT_DECIMALS = 9

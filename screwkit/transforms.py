@@ -31,6 +31,7 @@ from ._checks import (
     describe,
     is_symbolic,
 )
+from .tolerances import ZERO_TOL
 
 __all__ = [
     "skew",
@@ -80,8 +81,9 @@ def _skew_exact(v):
 
 
 def _cross(a, b):
-    """a x b along axis 0, for arrays laid out (3, ...): cheaper than np.cross on
-    strided data."""
+    """a x b along axis 0, for arrays laid out (3, ...) and single 3-vectors (3,): the
+    one cross product of screwkit's kernels, cheaper than np.cross on strided data and
+    on single vectors. Arrays laid out (..., 3) use np.cross. No checks."""
     return np.stack(
         [
             a[1] * b[2] - a[2] * b[1],
@@ -197,8 +199,20 @@ def _elementary_rotation(theta, axis):
 
 
 def rotx(theta):
-    """Rotation by ``theta`` (rad) about x: shape (3, 3), or (N, 3, 3) for N angles.
+    """Rotation by ``theta`` about the x axis.
 
+    Parameters
+    ----------
+    theta : float, array-like of shape (N,), or a SymPy expression
+        The angle (rad); N angles give a batch.
+
+    Returns
+    -------
+    ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
+        The rotation matrix (exact when ``theta`` is symbolic).
+
+    Examples
+    --------
     >>> rotx(0.5)[1:, 1:].round(4)
     array([[ 0.8776, -0.4794],
            [ 0.4794,  0.8776]])
@@ -207,12 +221,34 @@ def rotx(theta):
 
 
 def roty(theta):
-    """Rotation by ``theta`` (rad) about y: shape (3, 3), or (N, 3, 3) for N angles."""
+    """Rotation by ``theta`` about the y axis.
+
+    Parameters
+    ----------
+    theta : float, array-like of shape (N,), or a SymPy expression
+        The angle (rad); N angles give a batch.
+
+    Returns
+    -------
+    ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
+        The rotation matrix (exact when ``theta`` is symbolic).
+    """
     return _elementary_rotation(theta, 1)
 
 
 def rotz(theta):
-    """Rotation by ``theta`` (rad) about z: shape (3, 3), or (N, 3, 3) for N angles."""
+    """Rotation by ``theta`` about the z axis.
+
+    Parameters
+    ----------
+    theta : float, array-like of shape (N,), or a SymPy expression
+        The angle (rad); N angles give a batch.
+
+    Returns
+    -------
+    ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
+        The rotation matrix (exact when ``theta`` is symbolic).
+    """
     return _elementary_rotation(theta, 2)
 
 
@@ -259,8 +295,9 @@ def _exact_angle(theta, name):
     return as_sympy_scalar(theta, name)
 
 
-#: A numeric axis shorter than this (m, or unitless) is taken as zero and refused.
-ZERO_AXIS = 1e-12
+#: A numeric axis shorter than this (unitless) is taken as zero and refused: the old
+#: name of :data:`screwkit.tolerances.ZERO_TOL`.
+ZERO_AXIS = ZERO_TOL
 
 
 def _unit_vector(value, name):
@@ -292,10 +329,23 @@ def _norm(v):
 
 
 def transl(*p):
-    """The pure translation by p = (x, y, z): a 4x4 homogeneous transform.
+    """The pure translation by p = (x, y, z).
 
     Call as ``transl(x, y, z)`` or ``transl(p)`` with p of shape (3,) or (N, 3).
 
+    Parameters
+    ----------
+    *p : three numbers x, y, z (m), or one array-like of shape (3,) or (N, 3)
+        The translation; x, y and z may also be batches of one length N, or SymPy
+        expressions.
+
+    Returns
+    -------
+    ndarray, shape (4, 4) or (N, 4, 4), or sympy.Matrix (4, 4)
+        The homogeneous transform [[I, p], [0, 1]].
+
+    Examples
+    --------
     >>> transl(1, 2, 3)[:3, 3]
     array([1., 2., 3.])
     """
@@ -367,8 +417,20 @@ def _assemble(R, p):
 def inv(T):
     """The inverse of a homogeneous transform, [[R^T, -R^T p], [0, 1]].
 
-    Exact and cheaper than a general matrix inverse; ``T`` of shape (4, 4) or (N, 4, 4).
+    Exact and cheaper than a general matrix inverse.
 
+    Parameters
+    ----------
+    T : array-like, shape (4, 4) or (N, 4, 4), or a SymPy 4x4 matrix
+        Homogeneous transform(s) (lengths in m).
+
+    Returns
+    -------
+    ndarray, shape (4, 4) or (N, 4, 4), or sympy.Matrix (4, 4)
+        The inverse transform(s).
+
+    Examples
+    --------
     >>> T = transl(1, 2, 3) @ homogeneous(rotz(0.3))
     >>> np.allclose(inv(T) @ T, np.eye(4))
     True
@@ -382,8 +444,20 @@ def inv(T):
 
 
 def wrap_angle(angle):
-    """Angles (rad) wrapped into (-pi, pi]: a float, or an array of any shape.
+    """Wrap angles into (-pi, pi].
 
+    Parameters
+    ----------
+    angle : float or array-like of any shape
+        Angles (rad).
+
+    Returns
+    -------
+    float or ndarray of the same shape
+        The angles plus a multiple of 2 pi, in (-pi, pi].
+
+    Examples
+    --------
     >>> float(wrap_angle(3 * np.pi / 2)), float(wrap_angle(-np.pi))
     (-1.5707963267948966, 3.141592653589793)
     """
@@ -402,8 +476,22 @@ def twist_from_axis(s, r, h):
     (metres per radian) has twist (s; r x s + h s); a pure translation along
     ``s`` (``h = sympy.oo``) has twist (0; s). ``s`` is normalised.
 
-    Returns a SymPy 6x1 matrix if any input is symbolic, else an ndarray (6,).
+    Parameters
+    ----------
+    s : array-like, shape (3,), non-zero
+        Direction of the axis (normalised here).
+    r : array-like, shape (3,)
+        A point of the axis (m).
+    h : float, a SymPy expression or ``sympy.oo``
+        Pitch (m/rad); 0 for a revolute joint, ``sympy.oo`` for a prismatic one.
 
+    Returns
+    -------
+    ndarray, shape (6,), or sympy.Matrix (6, 1)
+        The twist [omega; v]: a SymPy matrix if any input is symbolic.
+
+    Examples
+    --------
     >>> twist_from_axis([0, 0, 1], [1, 0, 0], 0)
     array([ 0.,  0.,  1.,  0., -1.,  0.])
     """
@@ -425,18 +513,21 @@ def twist_from_axis(s, r, h):
 
 
 _PITCH = (
-    "h must be a pitch: a finite real number, or sympy.oo (or inf) for a translation"
+    "h must be a pitch: a finite real number or SymPy expression (m/rad), or sympy.oo "
+    "(or the float inf) for a translation"
 )
 
 
 def _pitch(h, exact):
-    """A finite pitch (m/rad): a SymPy expression if ``exact``, else a float."""
+    """A finite pitch (m/rad): a SymPy expression if ``exact``, else a float; the one
+    check of a pitch after :func:`_is_infinite_pitch` (strings such as "inf" refused).
+    """
     try:
         return as_sympy_scalar(h, "h") if exact else as_real_scalar(h, "h")
     except TypeError:
         raise TypeError(f"{_PITCH}, got {describe(h)}") from None
     except ValueError:
-        raise ValueError(f"{_PITCH}, got {h!r}") from None
+        raise ValueError(f"{_PITCH}; h must be finite, got {h!r}") from None
 
 
 def exp_twist(twist, theta):
@@ -526,12 +617,29 @@ def _exp_twist_symbolic(xi, theta):
 
 
 def screw_motion(s, r, h, theta):
-    """The motion along a screw axis: rotate ``theta`` about the line (s, r), advance
-    h*theta.
+    """The motion along a screw axis: rotate by theta about (s, r), advance h theta.
 
     With ``h = sympy.oo`` the motion is a translation by ``theta`` metres along ``s``.
     Equivalent to ``exp_twist(twist_from_axis(s, r, h), theta)``.
 
+    Parameters
+    ----------
+    s : array-like, shape (3,), non-zero
+        Direction of the axis (normalised here).
+    r : array-like, shape (3,)
+        A point of the axis (m).
+    h : float, a SymPy expression or ``sympy.oo``
+        Pitch (m/rad).
+    theta : float, array-like of shape (N,), or a SymPy expression
+        The screw's magnitude: rad, or m for ``h = sympy.oo``.
+
+    Returns
+    -------
+    ndarray, shape (4, 4) or (N, 4, 4), or sympy.Matrix (4, 4)
+        The homogeneous transform (exact if any input is symbolic).
+
+    Examples
+    --------
     >>> screw_motion([0, 0, 1], [1, 0, 0], 0, np.pi)[:3, 3].round(12)
     array([2., 0., 0.])
     """

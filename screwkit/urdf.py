@@ -35,6 +35,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import describe
+from .transforms import axis_coordinates
 
 __all__ = ["URDFDescription", "read_urdf", "data_file"]
 
@@ -47,10 +48,22 @@ REFUSED = ("floating", "planar")
 class URDFDescription:
     """The serial chain of a URDF from ``base_link`` to ``tip_link`` at q = 0.
 
-    ``axes``: n exact SymPy 6x1 joint screws [omega; v] in the base link's frame;
-    ``home``: the exact 4x4 pose M of the tip link (m); ``qlim``: n pairs (min, max) or
-    None (rad, or m for a prismatic joint); ``joint_names``: the n URDF joint names;
-    ``name``: the robot's name.
+    Parameters
+    ----------
+    axes : tuple of sympy.Matrix (6, 1)
+        The n exact joint screws [omega; v] in the base link's frame.
+    home : sympy.Matrix (4, 4)
+        The exact pose M of the tip link at q = 0 (m).
+    qlim : tuple of (float, float) or None
+        n pairs (min, max) (rad, or m for a prismatic joint), or None.
+    joint_names : tuple of str
+        The n URDF joint names, base to tip.
+    name : str
+        The robot's name.
+    base_link : str
+        The link whose frame is the base frame.
+    tip_link : str
+        The end-effector link.
     """
 
     axes: tuple
@@ -265,14 +278,20 @@ def _unit(axis, where):
 def read_urdf(source, base_link=None, tip_link=None):
     """The serial chain of a URDF from ``base_link`` to ``tip_link``.
 
-    Returns a :class:`URDFDescription`.
-
     Parameters
     ----------
-    source : str or os.PathLike, URDF text (starting with '<') or a URDF file's path
-    base_link : str or None, the link whose frame is the base frame (default: the root)
-    tip_link : str or None, the end-effector link; required when the tree branches below
-        ``base_link`` (the error lists the leaves)
+    source : str or os.PathLike
+        URDF text (starting with '<') or a URDF file's path.
+    base_link : str or None
+        The link whose frame is the base frame (default: the root).
+    tip_link : str or None
+        The end-effector link; required when the tree branches below ``base_link``
+        (the error lists the leaves).
+
+    Returns
+    -------
+    URDFDescription
+        The chain's joint screws, home pose, limits and names.
     """
     for name, value in (("base_link", base_link), ("tip_link", tip_link)):
         if value is not None and not isinstance(value, str):
@@ -300,10 +319,8 @@ def read_urdf(source, base_link=None, tip_link=None):
         if joint.kind == "fixed":
             continue
         w = G[:3, :3] * _unit(joint.axis, where)
-        if joint.kind == "prismatic":
-            screw = sp.Matrix.vstack(sp.zeros(3, 1), w)
-        else:
-            screw = sp.Matrix.vstack(w, G[:3, 3].cross(w))  # v = -w x p
+        pitch = sp.oo if joint.kind == "prismatic" else 0
+        screw = axis_coordinates(w, G[:3, 3], pitch)  # (w; p x w), or (0; w)
         axes.append(screw.applyfunc(sp.expand))
         limits.append(joint.limit)
         names.append(joint.name)
@@ -321,8 +338,19 @@ def read_urdf(source, base_link=None, tip_link=None):
 
 
 def data_file(name):
-    """The path of a URDF shipped with screwkit (``'ur5e.urdf'``: the UR5e written from
-    Universal Robots' published DH parameters)."""
+    """The path of a URDF shipped with screwkit.
+
+    Parameters
+    ----------
+    name : str
+        The file's name: ``'ur5e.urdf'`` (the UR5e written from Universal Robots'
+        published DH parameters).
+
+    Returns
+    -------
+    str
+        The file's path.
+    """
     if not isinstance(name, str):
         raise TypeError(f"name must be a file name (str), got {describe(name)}")
     folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")

@@ -3,9 +3,10 @@ CDN.
 
 Each function returns a figure object that Jupyter (Lab, Notebook 7, VS Code, Colab) and
 the built book display as HTML: a ``<div>`` holding the figure's parameters as JSON and
-an inline ``<script>``, the package's ``static/viewer.js``, that computes the kinematics
-in the browser and draws it in 3D with three.js (drag to orbit; Ctrl+wheel, pinch or the
-buttons to zoom; arrow keys and +/- when focused; double-click to reset). three.js is
+an inline ``<script>`` (the files of ``static/viewer/`` joined, see ``VIEWER_PARTS``)
+that computes the kinematics in the browser and draws it in 3D with three.js (drag to
+orbit; Ctrl+wheel, pinch or the buttons to zoom; arrow keys and +/- when focused;
+double-click to reset). three.js is
 vendored from npm (``static/vendor/``, see ``tools/vendor_js.py``), deflated, and
 shipped once: with the first 3D viewer shown in a kernel session (so once per page of
 the book); later viewers use it from the page. Python hands the page only parameters: a
@@ -37,6 +38,8 @@ from ._checks import (
     check_transform,
     describe,
 )
+from .tolerances import LENGTH_TOL, PARALLEL_TOL, ZERO_TOL, length_scale
+from .transforms import _is_infinite_pitch, _pitch
 
 __all__ = [
     "robot_viewer",
@@ -54,12 +57,32 @@ _ids = itertools.count(1)
 _library = {"shipped": False, "script": None}
 
 
+#: The parts of the viewers' one script (package data ``screwkit/static/viewer/``), in
+#: the order they are joined: together they are the body of one function, written once
+#: per page. Each file is one concern; the join adds nothing between them.
+VIEWER_PARTS = (
+    "header.js",  # what the script is; the function's start; run once per page
+    "kinematics.js",  # exp of a twist, a chain's FK, Jacobian, ellipsoid, platform legs
+    "style.js",  # the viewers' stylesheet and a DOM element helper
+    "scene.js",  # the three.js stage: renderer, camera, meshes, framing, labels
+    "controls.js",  # the stage's pointer, wheel, keyboard and resize handlers
+    "figures.js",  # robot, screw motion, platform and mechanism drawn on a stage
+    "page.js",  # sliders, readouts, aria-live captions, mounting, window.screwkit
+)
+
+
 def viewer_script():
-    """The JavaScript of every viewer (package data ``screwkit/static/viewer.js``)."""
-    return (
-        resources.files("screwkit")
-        .joinpath("static/viewer.js")
-        .read_text(encoding="utf-8")
+    """The JavaScript of every viewer: the files of ``VIEWER_PARTS`` joined in order.
+
+    Returns
+    -------
+    str
+        One classic script that defines ``window.screwkit`` and mounts the page's
+        viewers.
+    """
+    folder = resources.files("screwkit").joinpath("static/viewer")
+    return "".join(
+        folder.joinpath(part).read_text(encoding="utf-8") for part in VIEWER_PARTS
     )
 
 
@@ -107,6 +130,11 @@ def library_script():
     tiny-inflate (vendored too) inflates it synchronously and the text runs as a script
     element, so that ``window.THREE`` exists before the next script of the page runs.
     Then it mounts every viewer that was waiting for it.
+
+    Returns
+    -------
+    str
+        The script's JavaScript text.
     """
     if _library["script"] is None:
         text = _classic_three().encode("utf-8")
@@ -143,9 +171,14 @@ _WAITING = (
 
 
 class Viewer:
-    """A figure for the page: ``model`` (JSON-ready dict) drawn by ``viewer.js``.
+    """A figure for the page, drawn by ``viewer.js``.
 
-    ``summary`` is its plain-text form (what a terminal or a text-only output shows).
+    Parameters
+    ----------
+    model : dict
+        The figure's parameters, JSON-ready.
+    summary : str
+        Its plain-text form (what a terminal or a text-only output shows).
     """
 
     def __init__(self, model, summary):
@@ -161,7 +194,7 @@ class Viewer:
         return self.summary
 
     def html(self, library=None):
-        """The figure's HTML; ``library`` True/False includes three.js or not.
+        """The figure's HTML.
 
         three.js and ``viewer.js`` come together. By default (None) they come with every
         3D figure until one has been displayed on its own (``_repr_mimebundle_``, what
@@ -171,6 +204,16 @@ class Viewer:
         rendered. A figure shown as the page fallback of a live widget (``_repr_html_``)
         carries them while none has been displayed, since Lab may draw the widget
         instead. Stepped figures need no three.js and always carry ``viewer.js``.
+
+        Parameters
+        ----------
+        library : bool or None, optional
+            True/False: include three.js and ``viewer.js`` or not; None: as above.
+
+        Returns
+        -------
+        str
+            The HTML.
         """
         if library is not None:
             library = check_flag(library, "library")
@@ -211,7 +254,18 @@ class Viewer:
 
     def page(self, title=None):
         """A whole HTML page holding this figure and three.js (for a file or a
-        browser)."""
+        browser).
+
+        Parameters
+        ----------
+        title : str or None, optional
+            The page's title; by default the model's name, else "screwkit viewer".
+
+        Returns
+        -------
+        str
+            The page's HTML.
+        """
         if title is not None and not isinstance(title, str):
             raise TypeError(f"title must be a str or None, got {describe(title)}")
         title = html.escape(title or self.model.get("name") or "screwkit viewer")
@@ -256,8 +310,9 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
         The first pose (rad for revolute, m for prismatic joints); default zeros.
     ellipsoid : bool
         Draw the translational manipulability ellipsoid (rows v of the geometric
-        Jacobian), its radii scaled by ``ellipsoid_scale`` (m per m/s), and print its
-        radii and w.
+        Jacobian), and print its radii and w.
+    ellipsoid_scale : float, optional
+        The scale of the ellipsoid's radii on the drawing (m per m/s).
     size : (width, height) of the drawing in pixels
 
     Returns
@@ -318,7 +373,7 @@ def _approach(home, last_point):
     tool sits on the last joint's axis point (the PUMA's wrist centre).
     """
     offset = home[:3, :3].T @ (home[:3, 3] - np.asarray(last_point, dtype=float))
-    if np.linalg.norm(offset) < 1e-9:
+    if np.linalg.norm(offset) < LENGTH_TOL * length_scale(home[:3, 3], last_point):
         return [2, 1]
     axis = int(np.argmax(np.abs(offset)))
     return [axis, 1 if offset[axis] > 0 else -1]
@@ -352,11 +407,13 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
     ----------
     s : array-like, shape (3,), the axis direction (normalised here)
     r : array-like, shape (3,), a point of the axis (m)
-    h : float, the pitch (m/rad); ``math.inf`` or ``sympy.oo`` for a pure translation
-        along s
+    h : float, the pitch (m/rad); ``math.inf`` (``np.inf``) or ``sympy.oo`` for a pure
+        translation along s, the one test of :func:`screwkit.screw_motion` (a string
+        such as "inf" is refused, as everywhere in screwkit)
     start : array-like, shape (4, 4), the frame before the motion (default identity)
     theta : float, the slider's first value: deg, default 90 (or m for a translation,
         default 0.5)
+    size : (width, height) of the drawing in pixels
 
     Returns
     -------
@@ -370,15 +427,11 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
             f"s and r must be single 3-vectors, got shapes {s.shape} and {r.shape}"
         )
     norm = float(np.linalg.norm(s))
-    if norm < 1e-12:
+    if norm < ZERO_TOL:
         raise ValueError(f"s must be a nonzero direction, got {s.tolist()}")
-    translation = _is_infinite(h)
+    translation = _is_infinite_pitch(h)
     if not translation:
-        h = as_float_array(h, "h")
-        if h.ndim:
-            raise ValueError(
-                f"h must be one number (m/rad) or infinity, got shape {h.shape}"
-            )
+        h = _pitch(h, exact=False)
     start = np.eye(4) if start is None else check_transform(start, "start")
     if start.ndim != 2:
         raise ValueError(
@@ -587,13 +640,16 @@ def _parallelograms(limb):
     i = 0
     while i + 3 < len(limb):
         (k0, s0, a1), (k1, s1, a2), (k2, s2, b1), (k3, s3, b2) = limb[i : i + 4]
-        parallel = all(abs(abs(float(np.dot(s0, s))) - 1) < 1e-9 for s in (s1, s2, s3))
+        parallel = all(
+            abs(abs(float(np.dot(s0, s))) - 1) < PARALLEL_TOL for s in (s1, s2, s3)
+        )
+        tol = LENGTH_TOL * length_scale(a1, a2, b1, b2)
         if (
             {k0, k1, k2, k3} == {"revolute"}
             and parallel
-            and np.allclose(b1 - a1, b2 - a2, atol=1e-9)
-            and np.linalg.norm(a2 - a1) > 1e-9
-            and np.linalg.norm(b1 - a1) > 1e-9
+            and np.allclose(b1 - a1, b2 - a2, atol=tol)
+            and np.linalg.norm(a2 - a1) > tol
+            and np.linalg.norm(b1 - a1) > tol
         ):
             found.append(i)
             i += 4
@@ -649,7 +705,7 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     joints = evaluate(limbs, values)
     points = np.array([p for limb in joints for _, _, p in limb])
     extent = float(np.ptp(points, axis=0).max())
-    extent = extent if extent > 1e-9 else 2.0
+    extent = extent if extent > LENGTH_TOL * length_scale(points) else 2.0
     length = extent / 5
     base = [limb[0][2] for limb in joints]
     platform = [limb[-1][2] for limb in joints]
@@ -725,13 +781,6 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     return Viewer(model, caption)
 
 
-def _is_infinite(h):
-    try:
-        return math.isinf(float(h))
-    except (TypeError, ValueError):
-        raise TypeError(f"h must be a number (m/rad) or infinity, got {h!r}") from None
-
-
 def _check_size(size):
     values = as_float_array(size, "size")
     if values.shape != (2,) or np.any(values < 100) or np.any(values > 2000):
@@ -756,6 +805,30 @@ def stepped_figure(
     (default: the first). ``alt`` is each image's text alternative: a str, or a function
     of the value returning one (default: the label and the value the figure was computed
     for).
+
+    Parameters
+    ----------
+    draw : callable
+        ``draw(v)`` returns a matplotlib Figure or a str.
+    label : str
+        The slider's or drop-down's label.
+    unit : str or None, optional
+        The unit of ``values`` (shown by the slider).
+    values : list of float, optional
+        A grid from :func:`grid`: a slider.
+    choices : list of str, optional
+        Names: a drop-down.
+    value : float or str, optional
+        The first value shown (default: the first).
+    dpi : float or None, optional
+        Resolution of the PNGs (default ``plotting.DPI``).
+    alt : str or callable, optional
+        Each image's text alternative, or a function of the value returning one.
+
+    Returns
+    -------
+    Viewer
+        The figures and their control, displayed as HTML.
     """
     if (values is None) == (choices is None):
         raise ValueError(
@@ -842,7 +915,20 @@ def stepped_figure(
 
 def grid(low, high, step):
     """Slider values low, low + step, ..., high: a grid anchored at 0 for
-    ``stepped_figure``."""
+    ``stepped_figure``.
+
+    Parameters
+    ----------
+    low, high : float
+        The ends; low must be a multiple of step, so that 0 is on the grid.
+    step : float
+        The spacing, positive.
+
+    Returns
+    -------
+    list of float
+        The values.
+    """
     values = _sliders.grid_values(low, high, step)
     if not _sliders.on_grid(values[0], values[1] - values[0]):
         raise ValueError(

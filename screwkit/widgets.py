@@ -21,10 +21,14 @@ __all__ = ["LiveFigure", "screw_motion_slider", "joint_sliders", "figure_slider"
 
 
 class LiveFigure:
-    """An ipywidget for live kernels plus ``fallback`` (an object with ``_repr_html_``)
-    for pages.
+    """An ipywidget for live kernels plus a fallback for pages.
 
-    ``widget`` is the ipywidgets object (its ``.children`` hold the sliders).
+    Parameters
+    ----------
+    widget : ipywidgets.Widget
+        The ipywidgets object (its ``.children`` hold the sliders).
+    fallback : object with ``_repr_html_``
+        What a page without a kernel shows.
     """
 
     def __init__(self, widget, fallback):
@@ -63,7 +67,27 @@ def screw_motion_slider(
 
     The frame drawn is exp([xi] theta) @ start, with the twist xi of the axis through
     ``r`` along ``s`` with pitch ``h`` (m/rad). Without a kernel, the same motion is
-    computed in the page (``viewer.screw_motion_viewer``). Returns a LiveFigure.
+    computed in the page (``viewer.screw_motion_viewer``).
+
+    Parameters
+    ----------
+    s : array-like, shape (3,)
+        The axis direction.
+    r : array-like, shape (3,)
+        A point of the axis (m).
+    h : float
+        The pitch (m/rad).
+    start : array-like, shape (4, 4), optional
+        The frame before the motion (default identity).
+    limits : ((xmin, xmax), (ymin, ymax), (zmin, zmax)), optional
+        The axes' limits (m).
+    theta : float, optional
+        The slider's first value (deg).
+
+    Returns
+    -------
+    LiveFigure
+        The slider and its drawing.
     """
     start = (
         np.eye(4)
@@ -95,9 +119,24 @@ def joint_sliders(
     """One slider per joint (deg, or m for prismatic joints, within the limits) that
     redraws.
 
-    ``draw(ax, q)`` may add to each drawing (for example the pose's numbers). Without a
-    kernel, the chain is drawn and moved in the page (``viewer.robot_viewer``). Returns
-    a LiveFigure.
+    Without a kernel, the chain is drawn and moved in the page
+    (``viewer.robot_viewer``).
+
+    Parameters
+    ----------
+    chain : Chain
+        The chain.
+    q : array-like, shape (n,), optional
+        The first pose (rad or m); zeros by default.
+    limits : ((xmin, xmax), (ymin, ymax), (zmin, zmax)), optional
+        The axes' limits (m).
+    draw : callable, optional
+        ``draw(ax, q)`` may add to each drawing (for example the pose's numbers).
+
+    Returns
+    -------
+    LiveFigure
+        The sliders and their drawing.
     """
     specs = _sliders.slider_specs(check_chain(chain), q)
     fallback = viewer.robot_viewer(chain, q)
@@ -122,8 +161,27 @@ def figure_slider(draw, label, unit=None, values=None, choices=None, value=None)
 
     ``draw(v)`` returns a matplotlib Figure or a str. With a kernel, every grid value is
     computed when chosen; without one, the page steps through the figures computed now
-    for each value (``viewer.stepped_figure``). Give ``values`` from ``viewer.grid``
-    with its ``unit``. Returns a LiveFigure.
+    for each value (``viewer.stepped_figure``).
+
+    Parameters
+    ----------
+    draw : callable
+        ``draw(v)`` returns a matplotlib Figure or a str.
+    label : str
+        The slider's or drop-down's label.
+    unit : str or None, optional
+        The unit of ``values``.
+    values : list of float, optional
+        A grid from ``viewer.grid``: a slider.
+    choices : list of str, optional
+        Names: a drop-down.
+    value : float or str, optional
+        The first value shown (default: the first).
+
+    Returns
+    -------
+    LiveFigure
+        The control and its figure.
     """
     fallback = viewer.stepped_figure(
         draw, label, unit, values=values, choices=choices, value=value

@@ -50,11 +50,18 @@ MAX_RESULT_BYTES = 1_000_000_000
 class Sweep:
     """The result of :func:`sweep`.
 
-    chain : the swept chain
-    joints : the swept joint numbers (1..n), one grid axis each
-    values : the joint values of each grid axis (rad, or m for a prismatic joint)
-    fixed : the values of every joint off the grid, shape (n,)
-    points : the end-effector point of each configuration, shape grid + (3,) (m)
+    Parameters
+    ----------
+    chain : Chain
+        The swept chain.
+    joints : tuple of int
+        The swept joint numbers (1..n), one grid axis each.
+    values : tuple of ndarray
+        The joint values of each grid axis (rad, or m for a prismatic joint).
+    fixed : ndarray, shape (n,)
+        The values of every joint off the grid.
+    points : ndarray, shape grid + (3,)
+        The end-effector point of each configuration (m).
     """
 
     chain: object
@@ -65,7 +72,7 @@ class Sweep:
 
     @property
     def shape(self):
-        """The grid's shape: one axis per swept joint."""
+        """The grid's shape, one axis per swept joint."""
         return self.points.shape[:-1]
 
     @property
@@ -74,8 +81,20 @@ class Sweep:
         return math.prod(self.shape)
 
     def configurations(self, start=0, stop=None):
-        """The joint vectors of grid points start..stop-1 in C order: shape
-        (stop - start, n)."""
+        """The joint vectors of grid points start..stop-1, in C order.
+
+        Parameters
+        ----------
+        start : int, optional
+            The first grid point (flat index).
+        stop : int or None, optional
+            One past the last; the grid's size by default.
+
+        Returns
+        -------
+        ndarray, shape (stop - start, n)
+            The configurations (rad or m).
+        """
         start = check_integer(start, "start", minimum=0)
         stop = self.size if stop is None else check_integer(stop, "stop", minimum=start)
         if stop > self.size:
@@ -91,8 +110,10 @@ class Sweep:
 
     @property
     def q(self):
-        """Every configuration, shape grid + (n,) (built on demand: 8 bytes x n per
-        point)."""
+        """Every configuration, shape grid + (n,).
+
+        Built on demand (8 bytes x n per point).
+        """
         _check_result_size(
             self.size * self.chain.n * 8,
             "Sweep.q",
@@ -114,7 +135,13 @@ class Sweep:
         return out.reshape(self.shape)
 
     def extents(self):
-        """{'x': (min, max), 'y': ..., 'z': ...} of the swept points (m)."""
+        """The extent of the swept points along each axis.
+
+        Returns
+        -------
+        dict
+            {'x': (min, max), 'y': ..., 'z': ...} (m).
+        """
         flat = self.points.reshape(-1, 3)
         return {
             axis: (float(flat[:, k].min()), float(flat[:, k].max()))
@@ -122,8 +149,18 @@ class Sweep:
         }
 
     def reach(self, centre):
-        """(min, max) distance of the swept points from ``centre`` (3,), e.g. a shoulder
-        (m)."""
+        """The nearest and farthest distance of the swept points from a point.
+
+        Parameters
+        ----------
+        centre : array-like, shape (3,)
+            The point, e.g. a shoulder (m).
+
+        Returns
+        -------
+        (float, float)
+            (min, max) distance (m).
+        """
         centre = as_float_array(centre, "centre")
         if centre.shape != (3,):
             raise ValueError(
@@ -137,11 +174,24 @@ class Sweep:
         return float(low), float(high)
 
     def section(self, axis="y", value=0.0, tolerance=0.01):
-        """The swept points within ``tolerance`` (m) of the plane ``axis`` = ``value``:
-        (M, 3).
+        """The swept points near the plane ``axis`` = ``value``.
 
         For a sweep that includes joint 1 this cuts the solid workspace, e.g. axis 'y',
         value 0 gives the points in the x-z plane.
+
+        Parameters
+        ----------
+        axis : {'x', 'y', 'z'}, optional
+            The plane's normal.
+        value : float, optional
+            The plane's coordinate (m).
+        tolerance : float, optional
+            The distance from the plane accepted (m).
+
+        Returns
+        -------
+        ndarray, shape (M, 3)
+            The M points (m).
         """
         check_option(axis, "axis", ("x", "y", "z"))
         value = as_float_array(value, "value")
@@ -152,7 +202,18 @@ class Sweep:
         return flat[np.abs(flat[:, "xyz".index(axis)] - float(value)) <= tolerance]
 
     def jacobians(self, rows="all"):
-        """The geometric Jacobian's ``rows`` at every grid point: grid + (rows, n)."""
+        """The geometric Jacobian's ``rows`` at every grid point.
+
+        Parameters
+        ----------
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows of J.
+
+        Returns
+        -------
+        ndarray, shape grid + (m, n)
+            The Jacobians, m rows each.
+        """
         block = ROWS[check_option(rows, "rows", tuple(ROWS))]
         m = len(range(6)[block])
         _check_result_size(
@@ -166,10 +227,22 @@ class Sweep:
         return out.reshape(self.shape + (m, self.chain.n))
 
     def determinant(self, rows="all"):
-        """det J at every grid point, J the Jacobian's ``rows``
-        (square: as many rows as joints, e.g. rows='all' for six joints, 'planar' for a
-        two-link planar arm): shape grid. Its sign changes across a singular surface, so
-        ``contour(..., levels=[0])`` draws it."""
+        """det J at every grid point.
+
+        Its sign changes across a singular surface, so ``contour(..., levels=[0])``
+        draws it.
+
+        Parameters
+        ----------
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows of J; J must be square (as many rows as joints, e.g. rows='all'
+            for six joints, 'planar' for a two-link planar arm).
+
+        Returns
+        -------
+        ndarray, shape grid
+            det J.
+        """
         block = ROWS[check_option(rows, "rows", tuple(ROWS))]
         m = len(range(6)[block])
         if m != self.chain.n:
@@ -183,8 +256,18 @@ class Sweep:
         )
 
     def manipulability(self, rows="all"):
-        """Yoshikawa's manipulability of the Jacobian's ``rows`` at every grid point:
-        shape grid (0.0 where singular)."""
+        """Yoshikawa's manipulability of the Jacobian's ``rows`` at every grid point.
+
+        Parameters
+        ----------
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows of J.
+
+        Returns
+        -------
+        ndarray, shape grid
+            The manipulability (0.0 where singular).
+        """
         check_option(rows, "rows", tuple(ROWS))
         return self._per_point(lambda q: manipulability(self.chain, q, rows))
 
@@ -197,6 +280,16 @@ class Sweep:
         (a singular surface passes between them). ``rows`` as in
         :func:`screwkit.jacobians.manipulability`: use ``rows='planar'`` for a planar
         arm, whose six-row Jacobian never loses rank.
+
+        Parameters
+        ----------
+        rows : {'all', 'position', 'orientation', 'planar'}, optional
+            The rows of J.
+
+        Returns
+        -------
+        ndarray of bool, shape grid
+            True at singular configurations.
         """
         block = ROWS[check_option(rows, "rows", tuple(ROWS))]
         lost = self.manipulability(rows) == 0.0

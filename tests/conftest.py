@@ -1,7 +1,10 @@
 """Test configuration: the hypothesis profiles, and the fixtures the test files share.
 
 Robots and figures are fixtures, built on first use (once per session for the immutable
-chains), never at the import of a test file.
+chains, by tests/builders.py, which test files may also call), never at the import of a
+test file. Hand-written references are in tests/references.py; the bad-input contract
+(its tables and their one driver) in tests/bad_input/; the course's own tests
+(chapters, book, answer keys) in tests/course/.
 
 ``ci`` (the default, so CI and ``make test`` use it whether or not ``CI`` is set) is
 derandomized: every run draws the same examples, so a failure in CI reproduces on any
@@ -12,11 +15,10 @@ locally: ``HYPOTHESIS_PROFILE=explore pytest tests``.
 import os
 import sys
 
+import builders
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, settings
-
-import screwkit as sk
 
 settings.register_profile(
     "ci",
@@ -36,13 +38,13 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 @pytest.fixture(scope="session")
 def puma():
     """The PUMA 560 of the catalogue (Corke's standard DH model, SI units)."""
-    return sk.robots.puma560()
+    return builders.puma()
 
 
 @pytest.fixture(scope="session")
 def kawasaki():
     """The Kawasaki CX210L of the catalogue."""
-    return sk.robots.kawasaki_cx210l()
+    return builders.kawasaki()
 
 
 @pytest.fixture

@@ -7,11 +7,11 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
+from references import A2, A3, D3, D4, Rx, Ry, Rz, dh_standard
 
 import screwkit as sk
-from screwkit.transforms import rotx, roty, rotz, transl
+from screwkit.transforms import rotx, transl
 
-A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
 joint_vectors = arrays(float, 6, elements=st.floats(-np.pi, np.pi, allow_nan=False))
 
 
@@ -28,13 +28,13 @@ def puma_by_hand(q):
         height,
     ]
     R = (
-        rotz(q1)
-        @ rotx(np.pi / 2)
-        @ rotz(q2 + q3)
-        @ rotx(-np.pi / 2)
-        @ rotz(q4)
-        @ roty(-q5)
-        @ rotz(q6)
+        Rz(q1)
+        @ Rx(np.pi / 2)
+        @ Rz(q2 + q3)
+        @ Rx(-np.pi / 2)
+        @ Rz(q4)
+        @ Ry(-q5)
+        @ Rz(q6)
     )
     T = np.eye(4)
     T[:3, :3], T[:3, 3] = R, p
@@ -145,13 +145,7 @@ def dh_by_hand(links, q, base=None, tool=None):
             theta, d = qi + link.offset, link.d
         else:
             theta, d = link.theta, qi + link.offset
-        T = (
-            T
-            @ sk.homogeneous(rotz(theta))
-            @ transl(0, 0, d)
-            @ transl(link.a, 0, 0)
-            @ sk.homogeneous(rotx(link.alpha))
-        )
+        T = T @ dh_standard(float(theta), float(d), float(link.a), float(link.alpha))
     return T @ tool
 
 

@@ -2,14 +2,21 @@
 tool; the Kawasaki CX210L): round trips, labels, singular configurations, reach, limits;
 numeric IK."""
 
+import ast
 import functools
+import importlib
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
 import sympy as sp
+from builders import kawasaki, planar, puma
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
+from references import A2, A3, D4
 
 import screwkit as sk
 from screwkit.ik import (
@@ -21,19 +28,6 @@ from screwkit.ik import (
     puma560_ik,
     puma560_ik_all,
 )
-
-
-@functools.cache
-def puma():
-    return sk.robots.puma560()
-
-
-A2, A3, D3, D4 = 0.4318, 0.0203, 0.15005, 0.4318
-
-
-@functools.cache
-def kawasaki():
-    return sk.robots.kawasaki_cx210l()
 
 
 def puma_with(d1=0.0, d6=0.0):
@@ -331,9 +325,8 @@ def test_batch_answers_and_chunks():
 # ---- numeric -------------------------------------------------------------------------
 
 
-@functools.cache
 def planar_2r():
-    return sk.robots.planar([1.0, 1.0])
+    return planar(1.0, 1.0)
 
 
 def body_jacobian_2r(theta2):
@@ -443,3 +436,178 @@ def test_numeric_ik_takes_a_numpy_tolerance():
     result = sk.ik.numeric_ik(puma, puma.fk(q), q + 0.05, tol=np.float32(1e-6))
     assert result.success and result.error < 1e-6
     assert np.allclose(puma.fk(result.q), puma.fk(q), atol=1e-5)
+
+
+# ---- the family as a folder: old paths, names, kernels, tolerances -------------------
+
+
+@pytest.mark.parametrize(
+    "old, new",
+    [
+        ("subproblems", "subproblems"),
+        ("spherical_wrist", "spherical_wrist"),
+        ("ur_ik", "ur"),
+        ("stanford_ik", "stanford"),
+    ],
+)
+def test_each_old_module_path_warns_and_gives_the_same_objects(old, new):
+    sys.modules.pop(f"screwkit.{old}", None)  # imported afresh, so that it warns
+    with pytest.warns(
+        DeprecationWarning, match=rf"screwkit\.{old} .*screwkit\.ik\.{new}"
+    ):
+        alias = importlib.import_module(f"screwkit.{old}")
+    module = importlib.import_module(f"screwkit.ik.{new}")
+    assert alias.__all__ == module.__all__ and module.__all__
+    assert all(getattr(alias, name) is getattr(module, name) for name in module.__all__)
+
+
+def test_the_closed_form_loads_on_first_use():
+    """Importing screwkit (chains and Chain.numeric_ik included) loads the subproblems
+    and Newton, not the dispatcher; its names load when first asked for."""
+    code = (
+        "import sys, numpy as np, screwkit as sk\n"
+        "arm = sk.robots.planar([1.0, 0.5])\n"
+        "arm.numeric_ik(arm.fk(np.array([0.3, 0.4])), np.array([0.2, 0.5]))\n"
+        "print('screwkit.ik.dispatch' in sys.modules)\n"
+        "sk.ik.analytic_ik\n"
+        "print('screwkit.ik.dispatch' in sys.modules)\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout.split()
+    assert out == ["False", "True"]
+
+
+def test_every_name_of_sk_ik_is_there():
+    names = set(sk.ik.__all__)
+    assert {"analytic_ik", "analytic_ik_all", "numeric_ik", "CONFIGURATIONS"} <= names
+    assert set(sk.ik.subproblems.__all__) <= names
+    assert all(getattr(sk.ik, name) is not None for name in names)
+    assert names | {"dispatch", "ur", "stanford", "spherical_wrist"} <= set(dir(sk.ik))
+    assert sk.ik.analytic_ik is sk.ik.dispatch.analytic_ik
+    assert (
+        sk.ik.numeric_ik
+        is sk.ik.newton.numeric_ik
+        is sk.Chain.numeric_ik.__globals__["_newton"].numeric_ik
+    )
+    with pytest.raises(AttributeError, match="no_such_name"):
+        sk.ik.no_such_name  # noqa: B018
+
+
+def test_the_engines_share_one_kernel_for_each_idea():
+    from screwkit.ik import _closed_form, spherical_wrist, stanford, subproblems, ur
+
+    assert stanford.rotation_angles is ur.rotation_angles is subproblems.rotation_angles
+    assert stanford.meeting_points is subproblems.meeting_points
+    assert ur.sinusoid_angles is subproblems.sinusoid_angles
+    assert spherical_wrist.plane_angles is ur.plane_angles is subproblems.plane_angles
+    assert spherical_wrist.Turn is ur.Turn is _closed_form.Turn
+    assert spherical_wrist.branches is ur.branches is stanford.branches
+    assert spherical_wrist.flip_measure is stanford.flip_measure
+    assert spherical_wrist.arm_scale is ur.arm_scale is stanford.arm_scale
+    for engine in (spherical_wrist, ur, stanford):  # tolerances from one place
+        assert not {"CLIP_TOL", "SINGULAR_TOL"} & set(vars(engine))
+
+
+def test_no_bare_tolerance_in_the_family():
+    """Every small float of screwkit/ik is a named constant of screwkit.tolerances."""
+    folder = Path(sk.ik.__file__).parent
+    small = [
+        f"{path.name}:{node.lineno}: {node.value}"
+        for path in folder.glob("*.py")
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
+        if isinstance(node, ast.Constant)
+        and isinstance(node.value, float)
+        and 0 < abs(node.value) < 1e-3
+    ]
+    assert not small
+
+
+def rotation(w, theta):
+    """R(w, theta) by sk.rot_axis, independent of the kernels under test."""
+    return np.asarray(sk.rot_axis(w, theta), dtype=float)
+
+
+def unit(v):
+    return v / np.linalg.norm(v)
+
+
+def test_sinusoid_angles_solve_their_equation():
+    rng = np.random.default_rng(3)
+    A, B = rng.normal(size=(2, 50))
+    theta = rng.uniform(-np.pi, np.pi, 50)
+    C = A * np.cos(theta) + B * np.sin(theta)  # reachable by construction
+    phi, half, excess, radius2 = sk.ik.subproblems.sinusoid_angles(A, B, C)
+    assert np.all(excess >= -1e-12) and np.allclose(radius2, A**2 + B**2)
+    for angle in (phi - half, phi + half):
+        assert np.allclose(A * np.cos(angle) + B * np.sin(angle), C, atol=1e-12)
+    assert np.allclose(
+        np.minimum(*(np.abs(wrapped(a - theta)) for a in (phi - half, phi + half))),
+        0,
+        atol=1e-7,
+    )
+    _, _, excess, _ = sk.ik.subproblems.sinusoid_angles(3.0, 4.0, 5.5)  # |C| > 5
+    assert excess == 25.0 - 5.5**2
+
+
+def test_rotation_angles_recover_a_rotation():
+    rng = np.random.default_rng(4)
+    for _ in range(20):
+        w, a = unit(rng.normal(size=3)), rng.normal(size=3)
+        theta = rng.uniform(-3, 3)
+        b = 1.7 * rotation(w, theta) @ a + 0.4 * w  # scaled and moved along w
+        assert np.isclose(sk.ik.subproblems.rotation_angles(w, a, b), theta)
+
+
+def test_meeting_points_are_the_middle_point_of_two_rotations():
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        w1, w2, x = (
+            unit(rng.normal(size=3)),
+            unit(rng.normal(size=3)),
+            rng.normal(size=3),
+        )
+        theta1, theta2 = rng.uniform(-3, 3, 2)
+        middle = rotation(w2, theta2) @ x
+        y = rotation(w1, theta1) @ middle
+        z, gamma2 = sk.ik.subproblems.meeting_points(w1, w2, x, y)
+        assert gamma2 >= -1e-12 and z.shape == (2, 3)
+        assert min(np.linalg.norm(z - middle, axis=1)) < 1e-9
+        assert np.allclose(z @ w2, x @ w2) and np.allclose(z @ w1, y @ w1)
+
+
+def in_millimetres(chain):
+    """The same arm with every length times 1000: its screws' linear parts and its
+    home position."""
+    S = chain.screw_axes().copy()
+    S[:, 3:] *= 1000
+    M = chain.home().copy()
+    M[:3, 3] *= 1000
+    return sk.Chain.from_screws(S, M, qlim=chain.qlim)
+
+
+@pytest.mark.parametrize("name", ["puma", "kawasaki"])
+def test_an_arm_in_millimetres_gets_the_same_answers(name):
+    """The tolerances are relative to the arm's size: the same arm in mm gives the same
+    angles and labels, at generic poses and on the shoulder and wrist singularities."""
+    arm = ARMS[name]()
+    mm = in_millimetres(arm)
+    q = np.array(
+        [
+            [0.3, 0.5, -2.0, 0.4, 0.7, 0.2],
+            [-1.0, 0.9, 0.5, -0.3, 1.2, 2.0],
+            [0.2, 0.4, -1.1, 0.7, 0.0, 0.3],  # the wrist singular: q5 = 0
+            [0.3, np.pi / 2, np.arctan2(A3, D4) - np.pi / 2, 0.4, 0.5, 0.6],  # PUMA:
+        ]  # the shoulder singular (test_shoulder_singularity_issue_16)
+    )
+    T = arm.fk(q)
+    T_mm = T.copy()
+    T_mm[:, :3, 3] *= 1000
+    assert np.allclose(mm.fk(q)[:, :3, 3], T_mm[:, :3, 3], atol=1e-9)
+    assert np.allclose(
+        analytic_ik_all(arm, T), analytic_ik_all(mm, T_mm), atol=1e-9, equal_nan=True
+    )
+    assert configuration(arm, q) == configuration(mm, q)
+    for m, millimetres in zip(analytic_ik(arm, T), analytic_ik(mm, T_mm)):
+        assert [s.config for s in m] == [s.config for s in millimetres]
+        assert [s.singular for s in m] == [s.singular for s in millimetres]

@@ -1,7 +1,7 @@
 """screwkit's layers: every import points down the one order below, and none closes a
 circle.
 
-``ORDER`` is the one table of the package's layers, bottom up (design.md, "Layers"). A
+``ORDER`` is the one table of the package's layers, bottom up (CONTRIBUTING.md). A
 module may import the modules listed before it (the layers below, and the modules before
 it in its own layer), never one listed after it or itself: so no circle can form.
 Imports are read from the source with ``ast``, at the top of a file and inside functions
@@ -9,7 +9,15 @@ alike. Only the display layer may import inside a function (matplotlib, ipywidge
 PIL, whose import time a student should not pay before the first figure, and screwkit
 modules below it); elsewhere every import is at the top of the file. To add a module,
 add it to its layer here: a screwkit module that is not listed fails the test, and a
-listed module that does not exist (yet) is skipped."""
+listed module that does not exist (yet) is skipped.
+
+A folder (a family, such as ``screwkit/ik/``) lists its modules as ``ik.<name>``, each
+at its own layer; the folder's entry point (its ``__init__``) is listed as ``ik``, at
+the layer of what it imports at the top. Python runs the entry point before any module
+of the folder, so importing ``ik.newton`` also imports what ``ik`` imports at the top:
+the checker counts both. What the entry point loads on first use (its ``LAZY`` table:
+module -> names) counts where it is loaded: ``from .ik import analytic_ik`` imports
+``ik.dispatch``."""
 
 import ast
 from pathlib import Path
@@ -20,23 +28,29 @@ PACKAGE = Path(__file__).resolve().parents[1] / "screwkit"
 
 #: The layers, bottom up; within a layer, a module may import those listed before it.
 ORDER = [
-    ("checks and engines", ["tolerances", "_checks", "_numeric", "_exact", "_certificates", "_notation"]),
+    (
+        "checks and engines",
+        ["tolerances", "_checks", "_numeric", "_exact", "_certificates", "_notation"],
+    ),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
-    ("Lie algebra", ["lie", "subproblems"]),
+    ("Lie algebra", ["lie", "ik.subproblems"]),
     ("screws", ["screws", "systems"]),
-    # _newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls it;
-    # urdf is read by Chain.from_urdf
-    ("chains", ["links", "urdf", "_newton", "chains"]),
+    # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
+    # it; the entry point of screwkit.ik loads only it and the subproblems at the top
+    # (the closed form on first use), so chains can import it; urdf is read by
+    # Chain.from_urdf
+    ("chains", ["links", "urdf", "ik.newton", "ik", "chains"]),
     (
         "catalogue",
         [
             "limbs",
             "joints",
-            "_parallel_legs",
-            "_parallel_numeric",
-            "_parallel_search",
-            "_parallel_catalogue",
+            "parallel.legs",
+            "parallel.numeric",
+            "parallel.search",
+            "parallel.model",
+            "parallel.catalogue",
             "parallel",
             "robots",
         ],
@@ -45,14 +59,14 @@ ORDER = [
         "algorithms",
         [
             "jacobians",
-            "_closed_form",
-            "spherical_wrist",
-            "ur_ik",
-            "stanford_ik",
-            "ik",
+            "ik._closed_form",
+            "ik.spherical_wrist",
+            "ik.ur",
+            "ik.stanford",
+            "ik.dispatch",
             "workspace",
             "redundancy",
-            "mobility",
+            "mobility_analysis",
         ],
     ),
     (
@@ -60,12 +74,17 @@ ORDER = [
         [
             "_sliders",
             "_mechanism_plot",
-            "_parallel_plot",
+            "parallel.plotting",
             "plotting",
             "viewer",
             "widgets",
             "exercises",
         ],
+    ),
+    # old module paths kept one release: each warns and re-exports its new module
+    (
+        "deprecated aliases",
+        ["subproblems", "spherical_wrist", "ur_ik", "stanford_ik"],
     ),
 ]
 
@@ -81,14 +100,66 @@ RANK = {
     for rank, module in enumerate(m for _, modules in ORDER for m in modules)
 }
 LAYER = {module: layer for layer, modules in ORDER for module in modules}
-MODULES = sorted(path.stem for path in PACKAGE.glob("*.py"))
+#: The folders of screwkit that are packages (a family each).
+FOLDERS = sorted(path.parent.name for path in PACKAGE.glob("*/__init__.py"))
+
+
+def path_of(module):
+    """The file of a module named as in ORDER: ``lie``, ``ik.newton``, ``ik`` (the
+    folder's ``__init__``)."""
+    parts = module.split(".")
+    if len(parts) == 1 and parts[0] in FOLDERS:
+        return PACKAGE / parts[0] / "__init__.py"
+    return PACKAGE.joinpath(*parts).with_suffix(".py")
+
+
+MODULES = sorted(
+    [path.stem for path in PACKAGE.glob("*.py")]
+    + [
+        f"{folder}.{path.stem}" if path.stem != "__init__" else folder
+        for folder in FOLDERS
+        for path in (PACKAGE / folder).glob("*.py")
+    ]
+)
+
+
+def lazy_table(folder):
+    """The ``LAZY`` table of a folder's entry point ({module: names}), or {}."""
+    tree = ast.parse(path_of(folder).read_text(encoding="utf-8"))
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and any(
+            isinstance(t, ast.Name) and t.id == "LAZY" for t in node.targets
+        ):
+            return ast.literal_eval(node.value)
+    return {}
+
+
+LAZY = {folder: lazy_table(folder) for folder in FOLDERS}
+
+
+def resolve(module, level, name, alias):
+    """The module of ORDER that ``from <level dots><name> import <alias>`` in
+    ``module`` imports (``alias`` itself when it is a module of a folder)."""
+    parts = module.split(".")
+    folder = parts if module in FOLDERS else parts[:-1]  # the importer's package
+    base = folder[: len(folder) - (level - 1)] if level else []
+    if level == 0:
+        name = name.removeprefix("screwkit").lstrip(".")
+    target = ".".join([*base, *([name] if name else [])])
+    if alias and f"{target}.{alias}".strip(".") in RANK:
+        return f"{target}.{alias}".strip(".")
+    for lazy, names in LAZY.get(target, {}).items():
+        if alias in names:  # a name the entry point loads on first use
+            return f"{target}.{lazy}"
+    return target or alias
 
 
 def imports(module, source=None):
     """(line, imported screwkit module or None, top-level name, inside a function) for
-    every import statement of ``module`` (its file, or ``source``)."""
+    every import statement of ``module`` (its file, or ``source``). A module of a
+    folder counts with the folder's entry point, which Python runs first."""
     if source is None:
-        source = (PACKAGE / f"{module}.py").read_text(encoding="utf-8")
+        source = path_of(module).read_text(encoding="utf-8")
     tree = ast.parse(source)
     found = []
 
@@ -100,7 +171,11 @@ def imports(module, source=None):
             if isinstance(child, ast.Import):
                 for alias in child.names:
                     name = alias.name
-                    local = name.split(".")[1] if name.startswith("screwkit.") else None
+                    local = (
+                        resolve(module, 0, name, None)
+                        if name.startswith("screwkit.")
+                        else None
+                    )
                     found.append((child.lineno, local, name.split(".")[0], in_function))
             elif isinstance(child, ast.ImportFrom):
                 if child.level == 0 and not (child.module or "").startswith("screwkit"):
@@ -108,25 +183,35 @@ def imports(module, source=None):
                         (child.lineno, None, child.module.split(".")[0], in_function)
                     )
                     continue
-                base = (child.module or "").removeprefix("screwkit").lstrip(".")
-                if base:  # from .x import y, from screwkit.x import y
-                    found.append(
-                        (child.lineno, base.split(".")[0], "screwkit", in_function)
-                    )
-                else:  # from . import x, y
-                    for alias in child.names:
-                        found.append(
-                            (child.lineno, alias.name, "screwkit", in_function)
-                        )
+                for alias in child.names:  # from .x import y, from . import x, ...
+                    target = resolve(module, child.level, child.module, alias.name)
+                    found.append((child.lineno, target, "screwkit", in_function))
             visit(child, nested)
 
     visit(tree, False)
+    # the entry point of a folder runs before any of its modules
+    entries = {
+        target.split(".")[0]
+        for _, target, _, _ in found
+        if target and "." in target and target.split(".")[0] != module.split(".")[0]
+    }
+    found += [(0, folder, "screwkit", False) for folder in sorted(entries)]
     return found
 
 
 def test_every_module_is_in_the_order():
     missing = [m for m in MODULES if m != TOP and m not in RANK]
     assert not missing, f"add these screwkit modules to a layer of ORDER: {missing}"
+
+
+def test_what_a_folder_loads_on_first_use_is_a_listed_module_of_it():
+    unlisted = [
+        f"{folder}.{module}"
+        for folder, table in LAZY.items()
+        for module in table
+        if f"{folder}.{module}" not in RANK
+    ]
+    assert not unlisted
 
 
 def test_the_order_lists_each_module_once():
@@ -199,6 +284,13 @@ def test_the_entry_point_imports_only_listed_modules():
         ("screws", "import screwkit.chains\n"),
         ("lie", "from . import lie\n"),  # itself
         ("chains", "from .nowhere import thing\n"),  # not in ORDER
+        # a folder: its modules, and the names its entry point loads on first use
+        ("chains", "from .ik.dispatch import analytic_ik\n"),
+        ("chains", "from .ik import analytic_ik\n"),
+        ("chains", "from .ik import dispatch\n"),
+        ("ik.newton", "from .dispatch import analytic_ik\n"),
+        ("ik.subproblems", "from .. import chains\n"),
+        ("lie", "from .ik.newton import numeric_ik\n"),  # and the entry point
     ],
 )
 def test_the_checker_sees_an_upward_import(module, source):
@@ -208,23 +300,37 @@ def test_the_checker_sees_an_upward_import(module, source):
 @pytest.mark.parametrize(
     "module, source, flagged",
     [
-        ("ik", "def f():\n    from .robots import puma560\n", True),
-        ("ik", "def f():\n    import re\n", True),
+        ("ik.dispatch", "def f():\n    from ..robots import puma560\n", True),
+        ("ik.dispatch", "def f():\n    import re\n", True),
         ("plotting", "def f():\n    import matplotlib.pyplot as plt\n", False),
         ("viewer", "def f():\n    from . import plotting\n", False),
         ("plotting", "def f():\n    import json\n", True),
-        ("ik", "from .robots import puma560\n", False),
+        ("ik.dispatch", "from ..robots import puma560\n", False),
     ],
 )
 def test_the_checker_sees_a_lazy_import(module, source, flagged):
     assert bool(lazy(module, imports(module, source))) is flagged
 
 
-def test_the_old_module_path_of_the_limb_builders_still_works():
-    import screwkit as sk
-    from screwkit import joints, limbs
+@pytest.mark.parametrize(
+    "module, source",
+    [
+        ("chains", "from .ik import newton\n"),
+        ("chains", "from .ik.newton import numeric_ik\n"),
+        ("ik.dispatch", "from .spherical_wrist import CONFIGURATIONS\n"),
+        ("ik.dispatch", "from ..robots import puma560\n"),
+        ("ik", "from .newton import numeric_ik\n"),
+    ],
+)
+def test_the_checker_lets_a_downward_import_of_a_folder_pass(module, source):
+    assert not upward(module, imports(module, source))
 
-    assert (
-        joints.revolute is limbs.revolute and sk.joints.spherical is sk.limbs.spherical
-    )
-    assert sorted(joints.__all__) == sorted(limbs.__all__)
+
+def test_the_old_module_path_of_the_limb_builders_still_works_and_warns():
+    import screwkit as sk
+    from screwkit import limbs
+
+    with pytest.deprecated_call(match="use screwkit.limbs"):
+        revolute, spherical = sk.joints.revolute, sk.joints.spherical
+        assert sorted(sk.joints.__all__) == sorted(limbs.__all__)
+    assert revolute is limbs.revolute and spherical is limbs.spherical

@@ -4,35 +4,10 @@ formula written out here."""
 import numpy as np
 import pytest
 import sympy as sp
+from references import dh_modified, dh_standard
 
 from screwkit import links
 from screwkit.links import Convention, Joint, Link
-
-
-def dh_standard(theta, d, a, alpha):
-    """Rz(theta) Tz(d) Tx(a) Rx(alpha), multiplied out by hand."""
-    ct, st, ca, sa = np.cos(theta), np.sin(theta), np.cos(alpha), np.sin(alpha)
-    return np.array(
-        [
-            [ct, -st * ca, st * sa, a * ct],
-            [st, ct * ca, -ct * sa, a * st],
-            [0, sa, ca, d],
-            [0, 0, 0, 1],
-        ]
-    )
-
-
-def dh_modified(theta, d, a, alpha):
-    """Rx(alpha) Tx(a) Rz(theta) Tz(d) (Craig), multiplied out by hand."""
-    ct, st, ca, sa = np.cos(theta), np.sin(theta), np.cos(alpha), np.sin(alpha)
-    return np.array(
-        [
-            [ct, -st, 0, a],
-            [st * ca, ct * ca, -sa, -sa * d],
-            [st * sa, ct * sa, ca, ca * d],
-            [0, 0, 0, 1],
-        ]
-    )
 
 
 @pytest.mark.parametrize(
@@ -143,5 +118,5 @@ def test_limits_and_rigid_transforms():
         links.limits_table([[-1, 1]], 3)
     T = links.rigid(np.eye(4), "base")
     assert not T.flags.writeable
-    with pytest.raises(ValueError, match="base must be one transform"):
+    with pytest.raises(ValueError, match="base must be one pose"):
         links.rigid(np.stack([np.eye(4)] * 2), "base")

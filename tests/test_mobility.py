@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 
 import screwkit as sk
-from screwkit.mobility import grubler_kutzbach, mobility
+from screwkit.mobility_analysis import grubler_kutzbach, mobility
 from screwkit.transforms import rot_axis
 
 # the paper's mobility dictionaries (its notebook's outputs, and Table/eqs. 4-6)
@@ -296,9 +296,9 @@ def test_exact_coordinates_with_pi_and_square_roots():
     # end in 1 at v_z is (0, 0, 1/h, 0, 0, 1) = (0, 0, 200 pi, 0, 0, 1).
     h = 1 / (200 * sp.pi)
     limb = (
-        sk.joints.prismatic([1, 0, 0])
-        + sk.joints.prismatic([0, 1, 0])
-        + sk.joints.helical([0, 0, 1], [0, 0, 0], h)
+        sk.limbs.prismatic([1, 0, 0])
+        + sk.limbs.prismatic([0, 1, 0])
+        + sk.limbs.helical([0, 0, 1], [0, 0, 0], h)
     )
     m = mobility([limb, limb, limb])
     assert (m.number, m.type) == (3, "2T1R")
@@ -308,7 +308,7 @@ def test_exact_coordinates_with_pi_and_square_roots():
         [0, 0, 200 * sp.pi, 0, 0, 1],
     ]
     # sqrt(2)/2 directions: a revolute about the diagonal of the x-y plane, three times
-    diagonal = sk.joints.revolute([sp.sqrt(2) / 2, sp.sqrt(2) / 2, 0], [0, 0, sp.pi])
+    diagonal = sk.limbs.revolute([sp.sqrt(2) / 2, sp.sqrt(2) / 2, 0], [0, 0, sp.pi])
     assert mobility([diagonal, diagonal]).type == "1R"
 
 
@@ -328,7 +328,7 @@ def test_typeset_results_keep_the_plain_text_for_terminals():
 def test_builders_write_the_limbs_their_rotation_matrices_give():
     """The builders write entries directly; the reference turns the paper's limbs with
     SymPy's matrix products (rotx, roty, rotz) and expands, as the paper's code does."""
-    from screwkit.joints import parallelogram, prismatic, revolute
+    from screwkit.limbs import parallelogram, prismatic, revolute
     from screwkit.transforms import rotx, roty, rotz
 
     X, Y, Z = sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0]), sp.Matrix([0, 0, 1])
@@ -385,7 +385,7 @@ def _as_lists(limbs):
 
 
 def test_rotate_limb_is_the_matrix_product():
-    from screwkit.joints import rotate_limb
+    from screwkit.limbs import rotate_limb
     from screwkit.transforms import rotz
 
     t, c = sp.symbols("t c")

@@ -11,23 +11,9 @@ import math
 import numpy as np
 import pytest
 import sympy as sp
+from references import Rx, Ry, Rz
 
 import screwkit as sk
-
-
-def Rx(t):
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
-
-
-def Ry(t):
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-
-
-def Rz(t):
-    c, s = math.cos(t), math.sin(t)
-    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
 def random_rotations(n, seed):

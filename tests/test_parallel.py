@@ -7,11 +7,12 @@ by a dense scan of the platform angle, singular poses from their geometry (concu
 leg lines, Fichter's 90 degree turn, a stretched limb, vertical forearms).
 """
 
-import functools
-
 import numpy as np
 import pytest
 import sympy as sp
+from builders import delta as delta_robot
+from builders import rpr, rrr, stewart
+from builders import tripteron as tripteron_robot
 
 import screwkit as sk
 from screwkit import parallel
@@ -80,31 +81,6 @@ def random_planar_pose(scale=0.1, centre=(0, 0), angle=0.0):
             0,
         ],
     )
-
-
-@functools.cache
-def stewart():
-    return parallel.stewart_gough()
-
-
-@functools.cache
-def rpr():
-    return parallel.planar_3rpr()
-
-
-@functools.cache
-def rrr():
-    return parallel.planar_3rrr()
-
-
-@functools.cache
-def delta_robot():
-    return parallel.delta()
-
-
-@functools.cache
-def tripteron_robot():
-    return parallel.tripteron()
 
 
 def test_default_stewart_geometry_is_the_documented_one():
@@ -691,3 +667,79 @@ def test_exact_out_of_reach_is_an_answer_or_a_clear_error():
     assert all(e is sp.nan for e in J)
     with pytest.raises(ValueError, match="out of reach of leg 0"):
         rrr().singularities(away)
+
+
+# ---- the package's public surface ---------------------------------------------------
+
+
+def test_the_package_states_its_public_names_and_sk_reaches_them():
+    assert "parallel" in sk.__all__ and sk.parallel is parallel
+    missing = [name for name in parallel.__all__ if not hasattr(parallel, name)]
+    assert not missing
+    assert parallel.rpr_sextic in vars(parallel).values()
+
+
+def test_rpr_sextic_is_a_sextic_whose_real_roots_are_the_scanned_modes():
+    rho = np.array(parallel.RPR_SIX_MODES_RHO)
+    poses, poly = parallel.rpr_sextic(rpr(), rho, with_polynomial=True)
+    roots = poly.roots()
+    real = np.abs(roots.imag) < 1e-6 * (1 + np.abs(roots))
+    a, b = rpr().base_points[:, :2], rpr().platform_points[:, :2]
+    assert poly.degree() == 6 and real.sum() == len(poses) == scan_modes(a, b, rho)
+    for T in poses:
+        lengths = leg_lengths(rpr().base_points, rpr().platform_points, T)
+        assert np.max(np.abs(lengths - rho)) < 1e-9
+
+
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (
+            lambda: parallel.rpr_sextic(stewart(), [1.0] * 6),
+            "pm must be a planar 3-RPR",
+        ),
+        (lambda: parallel.rpr_sextic(rrr(), [0.1] * 3), "pm must be a planar 3-RPR"),
+        (lambda: parallel.rpr_sextic(rpr(), [1.0, 1.0]), "rho must be 3 leg lengths"),
+    ],
+)
+def test_rpr_sextic_refuses_other_mechanisms_and_inputs(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()
+
+
+@pytest.mark.parametrize(
+    "spoil, match",
+    [
+        (lambda T: T[:3, 2].__imul__(-1), "determinant"),  # a reflection
+        (lambda T: T[0, :3].__imul__(1.01), "orthonormal"),
+        (lambda T: T[3].__setitem__(0, 0.5), "last row"),
+    ],
+)
+def test_one_bad_pose_in_a_large_batch_is_refused(spoil, match):
+    # the batch spans two of the pose check's blocks; the bad pose is in the second
+    T = np.repeat(stewart().home()[None], 10_000, axis=0)
+    spoil(T[9_000])
+    with pytest.raises(ValueError, match=match):
+        stewart().ik(T)
+
+
+def test_the_same_stewart_platform_in_millimetres_gives_the_same_answers_scaled():
+    metres = parallel.stewart_gough(leg_limits=None)
+    mm = parallel.stewart_gough(
+        1000 * metres.base_points,
+        1000 * metres.platform_points,
+        height=1000,
+        leg_limits=None,
+    )
+    T = random_stewart_pose()
+    T_mm = T.copy()
+    T_mm[:3, 3] *= 1000
+    assert np.allclose(mm.ik(T_mm), 1000 * metres.ik(T), rtol=1e-12)
+    guess_mm = mm.home()
+    result, result_mm = metres.fk(metres.ik(T)), mm.fk(mm.ik(T_mm), guess=guess_mm)
+    assert result.success and result_mm.success
+    assert result.iterations == result_mm.iterations
+    assert np.allclose(result_mm.T[:3, :3], result.T[:3, :3], atol=1e-9)
+    assert np.allclose(result_mm.T[:3, 3], 1000 * result.T[:3, 3], atol=1e-6)
+    modes, modes_mm = metres.fk_all(metres.ik(T)), mm.fk_all(mm.ik(T_mm))
+    assert len(modes) == len(modes_mm)

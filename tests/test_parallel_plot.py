@@ -1,4 +1,4 @@
-"""screwkit._parallel_plot: what the drawings put where, and bad input."""
+"""screwkit.parallel.plotting: what the drawings put where, and bad input."""
 
 import matplotlib
 
@@ -8,8 +8,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from screwkit import parallel  # noqa: E402
-from screwkit._parallel_plot import (  # noqa: E402
-    draw_planar,
+from screwkit.parallel.plotting import (  # noqa: E402
+    draw_planar_platform,
     draw_spatial,
     draw_workspace,
 )
@@ -18,7 +18,7 @@ from screwkit._parallel_plot import (  # noqa: E402
 def test_planar_drawing_puts_the_platform_at_its_attachment_points():
     pm = parallel.planar_3rpr()
     T = pm.home()
-    ax = draw_planar(pm, T)
+    ax = draw_planar_platform(pm, T)
     platform = ax.lines[2].get_xydata()[
         :3
     ]  # base outline, base markers, platform outline
@@ -32,7 +32,7 @@ def test_planar_drawing_puts_the_platform_at_its_attachment_points():
 
 def test_crank_legs_are_drawn_through_their_elbows():
     pm = parallel.planar_3rrr()
-    ax = draw_planar(pm, pm.home(), mode="+-+")
+    ax = draw_planar_platform(pm, pm.home(), mode="+-+")
     elbows = pm.ik(pm.home(), mode="+-+", passive=True).passive["elbow"][:, :2]
     for leg, elbow in zip(ax.lines[3:6], elbows):
         assert np.allclose(leg.get_xydata()[1], elbow)
@@ -51,6 +51,17 @@ def test_spatial_drawing_and_workspace():
 
 def test_bad_input():
     with pytest.raises(TypeError, match="pm must be a ParallelManipulator"):
-        draw_planar([[0, 0, 1]], np.eye(4))
+        draw_planar_platform([[0, 0, 1]], np.eye(4))
     with pytest.raises(ValueError, match=r"T must be one pose of shape \(4, 4\)"):
-        draw_planar(parallel.planar_3rpr(), np.eye(3))
+        draw_planar_platform(parallel.planar_3rpr(), np.eye(3))
+
+
+def test_the_drawings_are_reached_from_the_package_as_sk_parallel_plotting():
+    import screwkit as sk
+
+    assert sk.parallel.plotting.draw_planar_platform is draw_planar_platform
+    assert sk.parallel.plotting.__all__ == [
+        "draw_planar_platform",
+        "draw_spatial",
+        "draw_workspace",
+    ]

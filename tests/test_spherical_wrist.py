@@ -1,11 +1,12 @@
-"""screwkit.spherical_wrist: the geometry of a 6R arm with a spherical wrist, its labels
-and its closed form, step by step; the wrist singularity decided by one measure."""
+"""screwkit.ik.spherical_wrist: the geometry of a 6R arm with a spherical wrist, its
+labels and its closed form, step by step; the wrist singularity decided by one
+measure."""
 
 import numpy as np
 import pytest
 
 from screwkit import ik
-from screwkit.spherical_wrist import CONFIGURATIONS, SphericalWristArm
+from screwkit.ik.spherical_wrist import CONFIGURATIONS, SphericalWristArm
 
 
 @pytest.fixture(scope="module")

@@ -2,20 +2,13 @@
 configuration among the solutions, four within the boom's travel, a hand-derived boom
 length, singular and unreachable poses."""
 
-import functools
-
 import numpy as np
 import pytest
+from builders import stanford
 
 import screwkit as sk
 from screwkit import ik
-from screwkit.stanford_ik import STRUCTURE
-
-
-@functools.cache
-def stanford():
-    return sk.robots.stanford()
-
+from screwkit.ik.stanford import STRUCTURE
 
 ANGLES = [0, 1, 3, 4, 5]
 RNG = np.random.default_rng(1981)

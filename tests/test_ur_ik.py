@@ -2,20 +2,13 @@
 generating configuration among them, Hawkins's own formulas for q1 and q5, singular and
 unreachable poses, and arms this closed form refuses."""
 
-import functools
-
 import numpy as np
 import pytest
+from builders import ur5e
 
 import screwkit as sk
 from screwkit import ik
-from screwkit.ur_ik import STRUCTURE
-
-
-@functools.cache
-def ur5e():
-    return sk.robots.ur5e()
-
+from screwkit.ik.ur import STRUCTURE
 
 RNG = np.random.default_rng(2013)
 # a region of generic poses where all eight solutions exist (elbow bent, wrist forward)

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import screwkit as sk
-import screwkit.ur_ik  # noqa: F401  (sk.ur_ik)
+import screwkit.ik.ur  # noqa: F401  (sk.ik.ur)
 
 #: CI sets SCREWKIT_REFERENCES=required: there a missing reference fails, never skips.
 REQUIRED = os.environ.get("SCREWKIT_REFERENCES") == "required"
@@ -103,7 +103,7 @@ def test_fk_and_jacobian_agree_with_pinocchio(arm):
 )
 def test_vendor_urdfs_of_ur_type_arms_are_solved_in_closed_form(relative, tip):
     chain = sk.Chain.from_urdf(os.path.join(robots_folder(), relative), tip_link=tip)
-    assert sk.ik.structure(chain) == sk.ur_ik.STRUCTURE
+    assert sk.ik.structure(chain) == sk.ik.ur.STRUCTURE
     low, high = (
         np.maximum(chain.qlim[:, 0], -np.pi),
         np.minimum(chain.qlim[:, 1], np.pi),

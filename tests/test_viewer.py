@@ -252,7 +252,7 @@ def test_a_chain_with_no_links_is_refused():
         (
             lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], "x"),
             TypeError,
-            "h must be a number",
+            "h must be a pitch",
         ),
         (
             lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], 0, theta=400),
@@ -541,7 +541,7 @@ def test_a_parallelogram_is_drawn_as_its_closed_loop():
     # Pa with corners A1 = (0,0,0), A2 = (1,0,0), B1 = (0,0,1), B2 = (1,0,1), axes
     # along y, after a prismatic joint: the loop A1-A2-B2-B1 (joints 1-2-4-3), not the
     # zigzag 2-3.
-    limb = [([0, 0, 1], [0, 0, -1], sp.oo)] + sk.joints.parallelogram(
+    limb = [([0, 0, 1], [0, 0, -1], sp.oo)] + sk.limbs.parallelogram(
         [0, 1, 0], [0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1]
     )
     model = model_of(viewer.show_mechanism([limb, limb], {}))

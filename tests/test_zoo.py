@@ -8,6 +8,7 @@ import sys
 
 import numpy as np
 import pytest
+from references import dh_modified, dh_standard
 
 import screwkit as sk
 
@@ -18,32 +19,6 @@ except ImportError:  # a reference package (tests/reference-requirements.txt)
 
 REQUIRED = os.environ.get("SCREWKIT_REFERENCES") == "required"
 H = np.pi / 2
-
-
-def standard(theta, d, a, alpha):
-    """Rz(theta) Tz(d) Tx(a) Rx(alpha), written out."""
-    ct, st, ca, sa = np.cos(theta), np.sin(theta), np.cos(alpha), np.sin(alpha)
-    return np.array(
-        [
-            [ct, -st * ca, st * sa, a * ct],
-            [st, ct * ca, -ct * sa, a * st],
-            [0, sa, ca, d],
-            [0, 0, 0, 1.0],
-        ]
-    )
-
-
-def modified(a, alpha, theta, d):
-    """Rx(alpha) Tx(a) Rz(theta) Tz(d) (Craig), written out."""
-    ct, st, ca, sa = np.cos(theta), np.sin(theta), np.cos(alpha), np.sin(alpha)
-    return np.array(
-        [
-            [ct, -st, 0, a],
-            [st * ca, ct * ca, -sa, -sa * d],
-            [st * sa, ct * sa, ca, ca * d],
-            [0, 0, 0, 1.0],
-        ]
-    )
 
 
 # The published tables. UR5e: Universal Robots' DH page; (theta offset, d, a, alpha).
@@ -91,20 +66,20 @@ def table_fk(q, kind):
     T = np.eye(4)
     if kind == "ur5e":
         for qi, (offset, d, a, alpha) in zip(q, UR5E):
-            T = T @ standard(qi + offset, d, a, alpha)
+            T = T @ dh_standard(qi + offset, d, a, alpha)
     elif kind == "panda":
         for qi, (a, alpha, d) in zip(q, PANDA):
-            T = T @ modified(a, alpha, qi, d)
-        T = T @ modified(0, 0, 0, 0.107)
+            T = T @ dh_modified(qi, d, a, alpha)
+        T = T @ dh_modified(0, 0.107, 0, 0)
     elif kind == "iiwa14":
         for qi, (d, alpha) in zip(q, IIWA):
-            T = T @ standard(qi, d, 0, alpha)
+            T = T @ dh_standard(qi, d, 0, alpha)
     elif kind == "stanford":
         for qi, (theta, d, a, alpha) in zip(q, STANFORD):
             T = T @ (
-                standard(theta, qi, a, alpha)
+                dh_standard(theta, qi, a, alpha)
                 if d is None
-                else standard(theta + qi, d, a, alpha)
+                else dh_standard(theta + qi, d, a, alpha)
             )
     return T
 

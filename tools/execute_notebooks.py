@@ -1,14 +1,16 @@
-"""Rebuild each chapter notebook from its MyST Markdown source, execute it, store the outputs.
+"""Rebuild each chapter notebook from its MyST Markdown source, execute it, store its
+outputs.
 
-notebooks/NAME.md (jupytext's md:myst format) is what people edit; notebooks/NAME.ipynb is
-generated from it, with the outputs nbval compares and Colab and Binder open. For each chapter
-this script takes every cell (type, source, tags) from the .md, keeps the .ipynb's cell ids
-where a cell is unchanged (so the diff shows only real changes), clears every output, executes
-the notebook top to bottom and writes the .ipynb.
+notebooks/NAME.md (jupytext's md:myst format) is what people edit; notebooks/NAME.ipynb
+is generated from it, with the outputs nbval compares and Colab and Binder open. For
+each chapter this script takes every cell (type, source, tags) from the .md, keeps the
+.ipynb's cell ids where a cell is unchanged (so the diff shows only real changes),
+clears every output, executes the notebook top to bottom and writes the .ipynb.
 
-Usage: python tools/execute_notebooks.py [notebooks/NAME.md ...]   (default: all chapters)
+Usage: python tools/execute_notebooks.py [notebooks/NAME.md ...] (default: all chapters)
 Run it (or `make notebooks`) after changing a chapter or screwkit, then review the diff.
 """
+
 import glob
 import os
 import sys
@@ -20,11 +22,13 @@ from nbclient import NotebookClient
 
 
 def sync(source_path):
-    """The notebook of `source_path` (a .md): its cells, with the old .ipynb's cell ids."""
+    """The notebook of `source_path` (a .md): its cells, the old .ipynb's cell ids."""
     notebook = jupytext.read(source_path)
     notebook_path = os.path.splitext(source_path)[0] + ".ipynb"
     if os.path.exists(notebook_path):
-        notebook = combine_inputs_with_outputs(notebook, nbformat.read(notebook_path, 4))
+        notebook = combine_inputs_with_outputs(
+            notebook, nbformat.read(notebook_path, 4)
+        )
     for cell in notebook.cells:
         cell.metadata.pop("execution", None)
         if cell.cell_type == "code":
@@ -42,7 +46,8 @@ def execute(source_path):
         resources={"metadata": {"path": os.path.dirname(notebook_path)}},
     )
     client.execute()
-    # Widgets need a live kernel: the stored notebook keeps no widget state, the book shows figures.
+    # Widgets need a live kernel: the stored notebook keeps no widget state, the book
+    # shows figures.
     notebook.metadata.pop("widgets", None)
     jupytext.write(notebook, notebook_path, fmt="ipynb")
 

@@ -9,7 +9,6 @@ tools/viewer_screenshots.py``.
 """
 
 import pathlib
-import shutil
 import statistics
 import sys
 
@@ -19,17 +18,10 @@ import screwkit as sk
 from screwkit import parallel, viewer
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / ".ci"))
+import harness  # noqa: E402 (.ci/harness.py: the fenced system Chromium)
+
 OUT = ROOT / "screenshots" / "viewers"
-FLAGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-    "--disable-quic",
-    "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1",
-]
 COLUMN = 760  # px: about the book's text column at 1280 px
 
 
@@ -112,7 +104,8 @@ def figures():
 
 
 def stepped_mechanisms():
-    """The mobility chapter's drop-down of drawings (computed now, stepped in the page)."""
+    """The mobility chapter's drop-down of drawings (computed now, stepped in the
+    page)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -163,19 +156,13 @@ def small(png, path):
 
 
 def main():
-    from playwright.sync_api import sync_playwright
-
-    chromium = shutil.which("chromium") or "/usr/bin/chromium"
     OUT.mkdir(parents=True, exist_ok=True)
     problems = []
     print(f"{'viewer':32} {'width':>5} {'redraw ms (median, max)':>24}")
-    with sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=chromium, args=FLAGS)
+    with harness.launch() as browser:
         for width in (1280, 390):
             page = browser.new_page(viewport={"width": width, "height": 900})
-            errors = []
-            page.on("pageerror", lambda error: errors.append(str(error)))
-            page.on("console", lambda m: m.type == "error" and errors.append(m.text))
+            errors = harness.collect_errors(page)
             for stem, figure in figures():
                 page.set_content(
                     f"<!DOCTYPE html><html><head><meta name='viewport' content="
@@ -198,7 +185,6 @@ def main():
                 )
             problems += [f"at {width} px: JavaScript error: {e}" for e in errors]
             page.close()
-        browser.close()
     for problem in problems:
         print(problem)
     sys.exit(1 if problems else 0)

@@ -21,16 +21,16 @@ object (```sk.ik.analytic_ik```, ```sk.Chain.from_screws(axes, M)```,
 ```screwkit.mobility```) becomes a link to its entry, so no chapter needs an edit when a
 function gains an entry.
 
-Four helpers keep the build strict (``-W -n``) without hiding a broken reference:
+The docstrings are numpydoc (``make lint`` checks them: .ci/check_docstrings.py). Four
+helpers keep the build strict (``-W -n``) without hiding a broken reference:
 
-* the docstrings are written as plain text in places: ``|u|`` (a norm) is escaped so
-  that reStructuredText does not read a substitution, and a list of ``name : text``
-  lines (a definition list) gets the blank lines reStructuredText needs between its
-  items;
-* numpy-style docstrings go through napoleon, except those of attributes and properties,
-  whose first line napoleon would split at its first colon into a "type" and a
-  description ("The first (angular) 3-vector: s for ..." made "The first (angular)
-  3-vector" a class);
+* ``|u|`` (a norm) outside code is escaped so that reStructuredText does not read a
+  substitution (the IK family writes norms so: ``screwkit.ik``'s Newton and
+  subproblems);
+* numpy-style docstrings go through napoleon, except those of attributes, properties
+  and data, whose first line napoleon would split at its first colon into a "type" and
+  a description (the IK family's ``STRUCTURES``, ``CONFIGURATIONS`` and
+  ``StanfordArm.revolute`` have such a colon; the flat modules' have none);
 * a reference to an object of screwkit that exists but is not public (a private module,
   a helper outside ``__all__``) is printed as code, not linked, and not reported; a
   reference to anything that does not exist still fails the build;
@@ -38,7 +38,9 @@ Four helpers keep the build strict (``-W -n``) without hiding a broken reference
   are not documented here: ``nitpick_ignore_regex`` lets them stand unlinked.
 """
 
+import ast
 import importlib
+import importlib.util
 import inspect
 import pkgutil
 import re
@@ -54,13 +56,23 @@ PACKAGE = "screwkit"
 
 
 def public_modules(package):
-    """The public modules of the package, in alphabetical order (imported)."""
+    """The public modules of the package and of its folders (``screwkit.ik.ur``), in
+    alphabetical order (imported); a deprecated alias is left out."""
     names = sorted(
         info.name
-        for info in pkgutil.iter_modules(package.__path__)
-        if not info.name.startswith("_")
+        for info in pkgutil.walk_packages(package.__path__, f"{package.__name__}.")
+        if not any(part.startswith("_") for part in info.name.split("."))
+        and not deprecated_alias(importlib.util.find_spec(info.name).origin)
     )
-    return [importlib.import_module(f"{package.__name__}.{name}") for name in names]
+    return [importlib.import_module(name) for name in names]
+
+
+def deprecated_alias(path):
+    """Whether the module at ``path`` is a deprecated alias (its docstring says so),
+    read without importing it (importing one warns)."""
+    with open(path, encoding="utf-8") as source:
+        docstring = ast.get_docstring(ast.parse(source.read())) or ""
+    return docstring.startswith("Deprecated alias")
 
 
 def public_names(module):
@@ -235,28 +247,16 @@ class ScrewkitAPI(SphinxDirective):
 
 
 CODE = re.compile(r"(``.*?``)")
-DEFINITION = re.compile(r"^[A-Za-z_][\w, ]* : ")
 
 
-def plain_text(app, what, name, obj, options, lines):
-    """Escape the bars of norms and separate the items of definition lists (see
-    above)."""
-    fixed = []
-    for line in lines:
-        if not line.lstrip().startswith(("|", "+")):
-            line = "".join(
+def escape_norms(app, what, name, obj, options, lines):
+    """Escape the bars of norms written as plain text (see above)."""
+    for i, line in enumerate(lines):
+        if not line.lstrip().startswith(("|", "+")):  # a table's rows keep theirs
+            lines[i] = "".join(
                 part if part.startswith("``") else part.replace("|", "\\|")
                 for part in CODE.split(line)
             )
-        if (
-            DEFINITION.match(line)
-            and fixed
-            and fixed[-1].startswith(" ")
-            and fixed[-1].strip()
-        ):
-            fixed.append("")
-        fixed.append(line)
-    lines[:] = fixed
 
 
 def napoleon_except_attributes(napoleon):
@@ -324,7 +324,7 @@ def setup(app):
                 napoleon_except_attributes(listener.handler),
                 priority=listener.priority,
             )
-    app.connect("autodoc-process-docstring", plain_text, priority=400)
+    app.connect("autodoc-process-docstring", escape_norms, priority=400)
     app.connect("missing-reference", private_reference)
     app.connect("config-inited", ignore_library_types)
     app.connect("doctree-read", link_first_uses)

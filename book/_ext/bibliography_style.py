@@ -1,9 +1,12 @@
-"""Author-year labels for the bibliography: "Surriani et al. 2018", "Lynch and Park 2017".
+"""Author-year labels for the bibliography: "Surriani et al. 2018", "Lynch and Park
+2017".
 
-Registers with pybtex a label, a sorting (by label) and a formatting style, all named ``author_year_labels``
-(``bibtex_default_style`` in ``_config.yml``). An entry whose authors are unknown gives its
-label in a ``shorthand`` field ("CX210L study 2021") instead of inventing an author.
+Registers with pybtex a label, a sorting (by label) and a formatting style, all named
+``author_year_labels`` (``bibtex_default_style`` in ``_config.yml``). An entry whose
+authors are unknown gives its label in a ``shorthand`` field ("CX210L study 2021")
+instead of inventing an author.
 """
+
 import pybtex.plugin
 from pybtex.style.formatting.unsrt import Style as UnsrtStyle
 from pybtex.style.labels import BaseLabelStyle
@@ -13,7 +16,9 @@ NAME = "author_year_labels"
 
 
 def _surname(person):
-    return " ".join(person.prelast_names + person.last_names) or " ".join(person.first_names)
+    return " ".join(person.prelast_names + person.last_names) or " ".join(
+        person.first_names
+    )
 
 
 def author_year_label(entry):
@@ -23,7 +28,9 @@ def author_year_label(entry):
     persons = entry.persons.get("author") or entry.persons.get("editor") or []
     names = [_surname(p).replace("{", "").replace("}", "") for p in persons]
     if not names:
-        raise ValueError(f"bibliography entry {entry.key!r} has no author, editor or shorthand")
+        raise ValueError(
+            f"bibliography entry {entry.key!r} has no author, editor or shorthand"
+        )
     if len(names) == 1:
         who = names[0]
     elif len(names) == 2:

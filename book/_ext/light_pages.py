@@ -22,18 +22,20 @@ browser fetches only when the frame is shown, and caches. The redundancy chapter
 animation was 1.7 MB of HTML.
 
 screwkit's own scripts travel inside the HTML outputs of a notebook, so that a notebook
-needs no file and no network: three.js (deflated, 230 kB) and ``viewer.js`` (50 kB) with
-the first viewer of a page, the answer boxes' script (12 kB) with the first box. In the
-book each becomes a file of ``_static/screwkit/`` named by its hash, loaded by a
-``<script src>`` at the same place (so it runs in the same order), which the browser
-fetches once for the whole book and caches. A page's second copy of the same script (a
-stepped figure and a 3D viewer both carry ``viewer.js``) is dropped: the first copy has
-defined ``window.screwkit``, and every figure mounts itself with the call that follows
-it. The notebooks' ipywidgets state (a live widget's model, 118 kB on the mobility page)
-is left out of the pages too: the book loads no widget script that would read it.
+needs no file and no network: three.js (deflated, 230 kB) and the viewers' script (the
+files of ``screwkit/static/viewer/`` joined, 50 kB) with the first viewer of a page, the
+answer boxes' script (12 kB) with the first box. In the book each becomes a file of
+``_static/screwkit/`` named by its hash, loaded by a ``<script src>`` at the same place
+(so it runs in the same order), which the browser fetches once for the whole book and
+caches. A page's second copy of the same script (a stepped figure and a 3D viewer both
+carry the viewers' script) is dropped: the first copy has defined ``window.screwkit``,
+and every figure mounts itself with the call that follows it. The notebooks' ipywidgets
+state (a live widget's model, 118 kB on the mobility page) is left out of the pages too
+(taken out of the page's scripts in Sphinx's ``html-page-context``): the book loads no
+widget script that would read it.
 
-The figures (PNG files of ``_images/``) are written with a palette when they have at most
-256 colours (lossless), and otherwise quantised to 256 colours (median cut, no
+The figures (PNG files of ``_images/``) are written with a palette when they have at
+most 256 colours (lossless), and otherwise quantised to 256 colours (median cut, no
 dithering, as the stepped figures already are) when that changes no pixel by more than
 ``MAX_MEAN_ERROR`` on average; matplotlib's RGBA output of a white figure is three to
 four times larger. A figure with transparency, or one that would not shrink, is kept.
@@ -58,13 +60,15 @@ from docutils import nodes
 from fontTools import subset
 from fontTools.ttLib import TTFont
 
+# The theme's templates write these tags themselves (the macro head_js_preload, the
+# block extrahead of its layout.html), not through Sphinx's script_files: no Sphinx
+# event sees them, so they are taken out of the written pages.
 SCRIPT_TAG = re.compile(
     r'\s*<script defer src="[^"]*_static/scripts/fontawesome\.js[^"]*"></script>'
 )
 # pydata-sphinx-theme loads Sphinx's search on every page for its search-as-you-type,
-# which
-# is off unless the theme option search_as_you_type is set: then only search.html needs
-# it.
+# which is off unless the theme option search_as_you_type is set: then only search.html
+# needs it.
 SEARCH_TAGS = re.compile(
     r'\s*<script src="[^"]*(?:_static/searchtools\.js|_static/language_data\.js'
     r'|searchindex\.js)"></script>'
@@ -81,21 +85,30 @@ FONT_FACE = re.compile(
     r' format\("(woff2|truetype)"\)'
 )
 
-
 # myst-nb's script of a notebook's ipywidgets state (read only by the widget scripts)
-WIDGET_STATE = re.compile(
-    r'\s*<script type="application/vnd\.jupyter\.widget-state\+json">.*?</script>',
-    re.S,
-)
+WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
 
 
-def drop_script(outdir, search_everywhere=False, widget_state=True):
+def no_widget_state(app, pagename, templatename, context, doctree):
+    """Leave the notebook's ipywidgets state out of the page's scripts when the book
+    loads no widget script (``nb_ipywidgets_js`` empty): myst-nb adds it to
+    ``script_files`` in its own ``html-page-context`` handler, which runs first."""
+    scripts = context.get("script_files")
+    if scripts and not getattr(app.config, "nb_ipywidgets_js", None):
+        scripts[:] = [
+            script
+            for script in scripts
+            if (getattr(script, "attributes", None) or {}).get("type") != WIDGET_STATE
+        ]
+
+
+def drop_script(outdir, search_everywhere=False):
+    """Take the theme's Font Awesome script (and, unless search_everywhere, Sphinx's
+    search scripts but on search.html) out of every written page; delete the script."""
     for page in glob.glob(os.path.join(outdir, "**", "*.html"), recursive=True):
         with open(page, encoding="utf-8") as f:
             html = f.read()
         lighter = SCRIPT_TAG.sub("", html)
-        if not widget_state:
-            lighter = WIDGET_STATE.sub("", lighter)
         if not search_everywhere and os.path.basename(page) != "search.html":
             lighter = SEARCH_TAGS.sub("", lighter)
         if lighter != html:
@@ -191,15 +204,14 @@ def describe_html_images(app, doctree, docname):
         if not alt:
             continue
         text = html.escape(" ".join(alt.split()), quote=True)
+
+        def described(m, text=text):
+            if m.group(2):
+                return f"alt={m.group(1)}{text}{m.group(1)}"
+            return f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"
+
         for raw in list(cell.findall(nodes.raw)):
-            new = BLAND_ALT.sub(
-                lambda m: (
-                    f"alt={m.group(1)}{text}{m.group(1)}"
-                    if m.group(2)
-                    else f"alt={m.group(3)}{text}{m.group(3)}{m.group(5)}"
-                ),
-                raw.astext(),
-            )
+            new = BLAND_ALT.sub(described, raw.astext())
             if new != raw.astext():
                 replace_raw(raw, new)
 
@@ -229,7 +241,8 @@ def images_to_files(app, doctree, docname):
 
 
 # screwkit's scripts inside HTML outputs, each as screwkit writes it: three.js
-# (viewer.library_script), viewer.js (viewer.viewer_script), exercises.js
+# (viewer.library_script), the viewers' script (viewer.viewer_script, which begins with
+# header.js's comment), exercises.js
 SCREWKIT_SCRIPT = re.compile(
     r"<script>\n((?:if\(!window\.THREE\)\{\(function\(\)\{var module="
     r"|/\* screwkit viewer: |// screwkit's self-checking answer boxes).*?)</script>\n?",
@@ -314,9 +327,7 @@ def lighten(app, exception):
     if exception is None and app.builder.format == "html":
         options = app.config.html_theme_options or {}
         drop_script(
-            app.outdir,
-            search_everywhere=bool(options.get("search_as_you_type")),
-            widget_state=bool(getattr(app.config, "nb_ipywidgets_js", None)),
+            app.outdir, search_everywhere=bool(options.get("search_as_you_type"))
         )
         subset_fonts(app.outdir)
         shrink_images(app.outdir)
@@ -326,5 +337,6 @@ def setup(app):
     app.connect("doctree-resolved", describe_html_images)
     app.connect("doctree-resolved", images_to_files)
     app.connect("doctree-resolved", scripts_to_files)
+    app.connect("html-page-context", no_widget_state, priority=900)
     app.connect("build-finished", lighten)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

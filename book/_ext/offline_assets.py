@@ -9,9 +9,11 @@ and the assistive MathML that screen readers read), the CHTML fonts, and the TeX
 extensions its autoloader fetches when a page uses a macro outside the base set
 (``\\boldsymbol``, ``\\color``, ...). That is about 2 MB of the package's 24 MB; a page
 loads 0.76 MB of it, where the combined ``tex-chtml.js`` was 1.16 MB (it also carries
-the right-click menu, 0.43 MB, which the book does without). They are deliberately not in a top-level
-``_static/`` folder, whose every ``.js`` Jupyter Book would add to every page.
+the right-click menu, 0.43 MB, which the book does without). They are deliberately not
+in a top-level ``_static/`` folder, whose every ``.js`` Jupyter Book would add to every
+page.
 """
+
 import importlib.util
 import os
 import shutil
@@ -38,9 +40,13 @@ SHIPPED = (
 def mathjax_source():
     spec = importlib.util.find_spec(PACKAGE)
     if spec is None or not spec.submodule_search_locations:
-        raise ExtensionError(f"the package {PACKAGE} is missing: run `pip install -r requirements.txt`")
+        raise ExtensionError(
+            f"the package {PACKAGE} is missing: run `pip install -r requirements.txt`"
+        )
     folder = os.path.join(list(spec.submodule_search_locations)[0], "static", "mathjax")
-    missing = [path for path in SHIPPED if not os.path.exists(os.path.join(folder, path))]
+    missing = [
+        path for path in SHIPPED if not os.path.exists(os.path.join(folder, path))
+    ]
     if missing:
         raise ExtensionError(f"{PACKAGE} has no {', '.join(missing)} under {folder}")
     return folder
@@ -48,7 +54,10 @@ def mathjax_source():
 
 def copy_mathjax(app, exception):
     if exception is None and app.builder.format == "html":
-        source, target = mathjax_source(), os.path.join(app.outdir, "_static", "mathjax")
+        source, target = (
+            mathjax_source(),
+            os.path.join(app.outdir, "_static", "mathjax"),
+        )
         for path in SHIPPED:
             destination = os.path.join(target, path)
             if os.path.isdir(os.path.join(source, path)):
@@ -58,9 +67,10 @@ def copy_mathjax(app, exception):
 
 
 def drop_unloaded_files(app, exception):
-    """Remove from the build what no page loads: the themes' source maps (``*.map``, read only
-    by a browser's developer tools) and pydata-sphinx-theme's translation catalogues
-    (``_static/locales``, used when Sphinx writes the pages, never by the browser): 4 MB."""
+    """Remove from the build what no page loads: the themes' source maps (``*.map``,
+    read only by a browser's developer tools) and pydata-sphinx-theme's translation
+    catalogues (``_static/locales``, used when Sphinx writes the pages, never by the
+    browser): 4 MB."""
     if exception is not None or app.builder.format != "html":
         return
     static = os.path.join(app.outdir, "_static")
@@ -74,7 +84,8 @@ def drop_unloaded_files(app, exception):
 def check_config(app, config):
     if config.mathjax_path != "mathjax/startup.js":
         raise ExtensionError(
-            f"mathjax_path must be 'mathjax/startup.js' (the bundled copy), got {config.mathjax_path!r}"
+            "mathjax_path must be 'mathjax/startup.js' (the bundled copy), "
+            f"got {config.mathjax_path!r}"
         )
     mathjax = config.mathjax3_config if isinstance(config.mathjax3_config, dict) else {}
     config.mathjax3_config = mathjax

@@ -17,6 +17,7 @@
   not stay behind after a tap, code and equations that fit the column (see their
   comments).
 """
+
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))

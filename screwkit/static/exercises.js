@@ -8,13 +8,27 @@
   if (window.screwkitExercises) return;
 
   const DEG = Math.PI / 180;
+  // A factor to SI and a dimension, the exponents of (kg, m, s, rad), as in exercises.py
   const UNITS = {
-    rad: [1, "angle"], deg: [DEG, "angle"], "°": [DEG, "angle"],
-    m: [1, "length"], cm: [1e-2, "length"], mm: [1e-3, "length"],
-    "m/s": [1, "speed"], "mm/s": [1e-3, "speed"],
-    "rad/s": [1, "angular speed"], "deg/s": [DEG, "angular speed"],
+    rad: [1, [0, 0, 0, 1]], deg: [DEG, [0, 0, 0, 1]], "°": [DEG, [0, 0, 0, 1]],
+    m: [1, [0, 1, 0, 0]], cm: [1e-2, [0, 1, 0, 0]], mm: [1e-3, [0, 1, 0, 0]],
+    s: [1, [0, 0, 1, 0]], kg: [1, [1, 0, 0, 0]], N: [1, [1, 1, -2, 0]],
+    Nm: [1, [1, 2, -2, 0]], W: [1, [1, 2, -3, 0]],
   };
   const UNIT_NAMES = { degree: "deg", degrees: "deg", radian: "rad", radians: "rad" };
+  const QUANTITIES = {
+    "0,0,0,0": "pure number", "0,0,0,1": "angle", "0,1,0,0": "length",
+    "0,2,0,0": "area", "0,0,1,0": "time", "1,0,0,0": "mass", "0,1,-1,0": "speed",
+    "0,0,-1,1": "angular speed", "0,0,-1,0": "rate", "0,1,-2,0": "acceleration",
+    "0,0,-2,1": "angular acceleration", "1,1,-2,0": "force", "1,2,-2,0": "torque",
+    "1,2,-3,0": "power", "0,1,0,-1": "pitch",
+  };
+  const SLIPS = [
+    ["rad", DEG, "looks like degrees, radians expected"],
+    ["deg", 1 / DEG, "looks like radians, degrees expected"],
+    ["m", 1e-3, "looks like millimetres, metres expected"],
+    ["mm", 1e3, "looks like metres, millimetres expected"],
+  ];
   const FUNCTIONS = {
     sqrt: Math.sqrt, sin: Math.sin, cos: Math.cos, tan: Math.tan, asin: Math.asin,
     acos: Math.acos, atan: Math.atan, atan2: Math.atan2, exp: Math.exp, ln: Math.log,
@@ -23,13 +37,21 @@
   const CONSTANTS = { pi: Math.PI, "π": Math.PI, e: Math.E };
   const TOKEN = new RegExp(
     "^\\s*(?:((?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][+-]?\\d+)?)" +
-    "|(m/s|mm/s|rad/s|deg/s|°)|([A-Za-zπ_][A-Za-z0-9_]*)|(\\*\\*|[-+*/^(),;\\[\\]]))");
-  const KINDS = ["number", "unit", "name", "op"];
+    "|([A-Za-zπ°_][A-Za-z0-9_]*)|(\\*\\*|[-+*/^(),;\\[\\]]))");
+  const KINDS = ["number", "name", "op"];
   const own = (table, key) => Object.prototype.hasOwnProperty.call(table, key);
   const unitName = (word) => (own(UNIT_NAMES, word) ? UNIT_NAMES[word] : word);
+  const isUnitWord = (word) => own(UNITS, unitName(word));
+  const article = (name) => ("aeiou".includes(name[0]) ? "an " : "a ") + name;
+  const quantity = (dimension) => {
+    const key = dimension.join(",");
+    return article(own(QUANTITIES, key) ? QUANTITIES[key] : "quantity");
+  };
+  const sameDimension = (a, b) => a.every((v, i) => v === b[i]);
 
   function tokenize(text) {
-    text = text.replace(/−/g, "-").replace(/[×·]/g, "*").replace(/√/g, "sqrt");
+    text = text.replace(/−/g, "-").replace(/[×·⋅]/g, "*").replace(/√/g, "sqrt");
+    text = text.replace(/²/g, "^2").replace(/³/g, "^3");
     const tokens = [];
     let rest = text;
     while (rest.trim() !== "") {
@@ -37,7 +59,7 @@
       if (!match || match[0].length === 0) {
         throw new Error("cannot read '" + rest.trim().slice(0, 12) + "'");
       }
-      const group = [1, 2, 3, 4].find((i) => match[i] !== undefined);
+      const group = [1, 2, 3].find((i) => match[i] !== undefined);
       // the third entry: whitespace before the token
       const spaced = match[0].length > match[group].length;
       tokens.push([KINDS[group - 1], match[group], spaced]);
@@ -61,8 +83,9 @@
       at += 1;
       return token;
     };
-    const isUnit = (token) =>
-      (token[0] === "unit" || token[0] === "name") && own(UNITS, unitName(token[1]));
+    const isUnit = (token) => token[0] === "name" && isUnitWord(token[1]);
+    // a unit word right after the operator at the current token ("/s")
+    const unitAfter = () => at + 1 < tokens.length && isUnit(tokens[at + 1]);
     const spaceBefore = () => at < tokens.length && tokens[at][2];
     const startsItem = () => {
       const [kind, token] = peek();
@@ -93,13 +116,46 @@
         return values;
       }
       const value = expression();
-      if (isUnit(peek())) {
-        const [factor, quantity] = UNITS[unitName(take()[1])];
-        units.push(quantity);
-        return [value * factor];
+      const u = unit();
+      units.push(u);
+      return [u === null ? value : value * u.factor];
+    }
+    // the unit written after a value ("N m", "N*m", "m/s^2", "/s"), or null
+    function unit() {
+      if (!(isUnit(peek()) || (peek()[1] === "/" && unitAfter()))) return null;
+      let factor = 1;
+      let dimension = [0, 0, 0, 0];
+      let text = peek()[1] === "/" ? "1" : "";
+      for (;;) {
+        let sign = 1;
+        if ((peek()[1] === "*" || peek()[1] === "/") && unitAfter()) {
+          const operator = take()[1];
+          sign = operator === "/" ? -1 : 1;
+          text += operator === "/" ? "/" : " ";
+        } else if (text && !(spaceBefore() && isUnit(peek()))) {
+          break;
+        } else if (text) {
+          text += " ";
+        }
+        const word = take()[1];
+        const [f, d] = UNITS[unitName(word)];
+        text += word;
+        let power = 1;
+        if (peek()[1] === "^" || peek()[1] === "**") {
+          take();
+          const negative = peek()[1] === "-";
+          if (negative) take();
+          const [kind, digits] = take();
+          if (kind !== "number" || !/^[0-9]+$/.test(digits)) {
+            throw new Error("a unit's power must be an integer, got '" + digits + "'");
+          }
+          power = negative ? -parseInt(digits, 10) : parseInt(digits, 10);
+          text += "^" + power;
+        }
+        factor *= Math.pow(f, sign * power);
+        dimension = dimension.map((a, i) => a + sign * power * d[i]);
       }
-      units.push(null);
-      return [value];
+      return { factor, dimension, text };
     }
     function expression() {
       let value = term();
@@ -114,6 +170,9 @@
       let value = signed();
       for (;;) {
         const token = peek();
+        if ((token[1] === "*" || token[1] === "/") && unitAfter()) {
+          return value; // a unit follows: "10 N*m", "200/s"
+        }
         if (token[1] === "*" || token[1] === "/") {
           take();
           const right = signed();
@@ -215,21 +274,17 @@
     });
   }
 
+  function inRange(x, key) {
+    const bounds = key.range;
+    return !bounds || x.every((v) => bounds.low - key.tolerance <= v &&
+                              v <= bounds.high + key.tolerance);
+  }
+
   function diagnose(x, key) {
     const n = key.values.length;
-    if (x.length !== n) {
-      const what = n === 1 ? "one number" : n + " numbers";
-      return "expected " + what + ", got " + x.length + ".";
-    }
-    const slips = [
-      ["rad", DEG, "looks like degrees, radians expected"],
-      ["deg", 1 / DEG, "looks like radians, degrees expected"],
-      ["m", 1e-3, "looks like millimetres, metres expected"],
-      ["mm", 1e3, "looks like metres, millimetres expected"],
-    ];
     // a unit slip only explains an answer that is not zero (any small number fits 0)
     const nonzero = key.values.some((v) => Math.abs(v) > key.tolerance);
-    for (const [unit, factor, text] of slips) {
+    for (const [unit, factor, text] of SLIPS) {
       if (nonzero && key.unit === unit && matches(x.map((v) => v * factor), key)) {
         return text + ".";
       }
@@ -242,7 +297,35 @@
         close(sorted(x), sorted(key.values), key)) {
       return "the right numbers in the wrong order.";
     }
+    if (!inRange(x, key)) {
+      return "the answer is outside the range asked for, " + key.range.text + ".";
+    }
     return null;
+  }
+
+  // the unit of a key ("N m", "1/s"; "" for a pure number)
+  function keyUnit(text) {
+    if (text === "") return { factor: 1, dimension: [0, 0, 0, 0], text: "" };
+    return parse(text.startsWith("1/") ? text : "1 " + text).units[0];
+  }
+
+  // the factor from a typed unit to the key's, or null where they measure different
+  // things; as _convert in exercises.py (the radian is 1 between other dimensions)
+  function convert(unit, target) {
+    if (sameDimension(unit.dimension, target.dimension)) {
+      return unit.factor / target.factor;
+    }
+    const rest = unit.dimension.slice(0, 3);
+    const keyRest = target.dimension.slice(0, 3);
+    if (sameDimension(rest, keyRest) && rest.some((v) => v !== 0)) {
+      return unit.factor / target.factor;
+    }
+    return null;
+  }
+
+  function decimalComma(text) {
+    if (!/\d,\d/.test(text)) return "";
+    return " Use a decimal point: " + text.replace(/(\d),(\d)/g, "$1.$2") + ".";
   }
 
   function formatG(v) {
@@ -265,24 +348,37 @@
     } catch (error) {
       return { correct: false, message: "Could not read the answer: " + error.message };
     }
-    let x = parsed.values;
-    const [factor, quantity] = own(UNITS, key.unit) ? UNITS[key.unit] : [1, null];
-    const given = Array.from(new Set(parsed.units.filter((u) => u !== null))).sort();
-    if (given.length > 0) {
-      if (quantity === null || given.length !== 1 || given[0] !== quantity) {
-        const expected = key.unit ? "in " + key.unit : "a pure number";
-        return { correct: false, message: "The answer is " + expected +
-                 ", but the units typed are " + given.join(" and ") + "." };
+    const target = keyUnit(key.unit);
+    const x = [];
+    for (let i = 0; i < parsed.values.length; i++) {
+      const unit = parsed.units[i];
+      if (unit === null) {
+        x.push(parsed.values[i]);
+        continue;
       }
-      x = x.map((v, i) => (parsed.units[i] !== null ? v / factor : v));
+      const factor = convert(unit, target);
+      if (factor === null) {
+        const expected = quantity(target.dimension) +
+          (key.unit ? " (" + key.unit + ")" : " (no unit)");
+        const found = quantity(unit.dimension) + " (" + unit.text + ")";
+        return { correct: false, message: "Expected " + expected + ", found " +
+                 found + "." };
+      }
+      x.push(parsed.values[i] / unit.factor * factor);
     }
     const unit = key.unit ? " " + key.unit : "";
-    const within = "within ±" + formatG(key.tolerance) + unit;
-    if (matches(x, key)) {
-      return { correct: true, message: "Within ±" + formatG(key.tolerance) + unit +
-               " of the answer." };
+    const tolerance = "±" + formatG(key.tolerance) + unit;
+    const n = key.values.length;
+    if (x.length === n && inRange(x, key) && matches(x, key)) {
+      return { correct: true, message: "Within " + tolerance + " of the answer." };
     }
-    const reason = diagnose(x, key) || "not " + within + " of the answer.";
+    let reason;
+    if (x.length !== n) {
+      const what = n === 1 ? "one number" : n + " numbers";
+      reason = "expected " + what + ", got " + x.length + "." + decimalComma(String(text));
+    } else {
+      reason = diagnose(x, key) || "not within " + tolerance + " of the answer.";
+    }
     const hint = key.hint ? " Hint: " + key.hint : "";
     const message = reason[0].toUpperCase() + reason.slice(1) + hint;
     return { correct: false, message };
@@ -299,7 +395,8 @@
     const run = () => {
       const result = verdict(input.value, key);
       out.textContent = (result.correct ? "✓ Right: " : "✗ Not yet: ") + result.message;
-      out.style.color = result.correct ? "#1a7f37" : "#b35900";
+      out.classList.toggle("sk-right", result.correct);
+      out.classList.toggle("sk-wrong", !result.correct);
       input.setAttribute("aria-invalid", result.correct ? "false" : "true");
     };
     button.addEventListener("click", run);
@@ -310,6 +407,20 @@
 
   function mountAll() {
     document.querySelectorAll(".sk-answer-box").forEach(mount);
+  }
+
+  // The verdict's colours, light and dark (the book's dark theme, JupyterLab's): each
+  // has a contrast of at least 4.5:1 with its theme's background
+  const COLOURS = `
+.sk-verdict.sk-right { color: #1a7f37; } .sk-verdict.sk-wrong { color: #b35900; }
+html[data-theme="dark"] .sk-verdict.sk-right,
+body[data-jp-theme-light="false"] .sk-verdict.sk-right { color: #56d364; }
+html[data-theme="dark"] .sk-verdict.sk-wrong,
+body[data-jp-theme-light="false"] .sk-verdict.sk-wrong { color: #f0883e; }`;
+  if (document.head) {
+    const style = document.createElement("style");
+    style.textContent = COLOURS;
+    document.head.appendChild(style);
   }
 
   window.screwkitExercises = { parse, verdict, mount, mountAll };

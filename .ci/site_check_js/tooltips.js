@@ -1,0 +1,2 @@
+// How many tooltips are on screen.
+() => [...document.querySelectorAll('.tooltip.show')].length

@@ -1,0 +1,73 @@
+"""Inverse kinematics: closed form for some 6-joint arms, numeric for any chain.
+
+The family, one idea a module:
+
+* :mod:`~screwkit.ik.subproblems`: the Paden–Kahan subproblems and their batched
+  kernels (``sk.ik.subproblem1`` ... ``subproblem4``, ``Solutions``);
+* :mod:`~screwkit.ik.newton`: numerical IK of any chain (``sk.ik.numeric_ik``,
+  ``pose_error``, ``NumericIKResult``);
+* :mod:`~screwkit.ik._closed_form`: what the closed-form engines share;
+* the engines, each a structure solved from the chain's screws:
+  :mod:`~screwkit.ik.spherical_wrist` (PUMA 560, Kawasaki CX210L),
+  :mod:`~screwkit.ik.ur` (Universal Robots), :mod:`~screwkit.ik.stanford`;
+* :mod:`~screwkit.ik.dispatch`: picks the engine and labels the solutions
+  (``sk.ik.analytic_ik``, ``analytic_ik_all``, ``configuration``, ``structure``,
+  ``CONFIGURATIONS``, ``puma560_ik`` ...).
+
+The subproblems and Newton load with the package: they sit below the chains
+(``Chain.numeric_ik`` is Newton). The closed form loads on first use of one of its
+names: its dispatcher takes the default PUMA from :mod:`screwkit.robots`, above the
+chains, so loading it here would close an import circle through ``Chain.numeric_ik``.
+"""
+
+import importlib
+
+from . import subproblems
+from .newton import NumericIKResult, numeric_ik, pose_error
+from .subproblems import *  # noqa: F403 (the Paden-Kahan subproblems, as sk.ik.*)
+
+#: What loads on first use: each module of the family that is not loaded above, with
+#: the names of ``sk.ik`` it defines (the closed form's are the dispatcher's).
+LAZY = {
+    "dispatch": (
+        "CONFIGURATIONS",
+        "IKSolution",
+        "IKSolutions",
+        "SINGULAR_TOL",
+        "STRUCTURES",
+        "analytic_ik",
+        "analytic_ik_all",
+        "configuration",
+        "puma560_config",
+        "puma560_ik",
+        "puma560_ik_all",
+        "structure",
+    ),
+    "_closed_form": (),
+    "spherical_wrist": (),
+    "ur": (),
+    "stanford": (),
+}
+
+__all__ = [
+    *LAZY["dispatch"],
+    "NumericIKResult",
+    "numeric_ik",
+    "pose_error",
+    *subproblems.__all__,
+]
+
+
+def __getattr__(name):
+    if name in LAZY:
+        return importlib.import_module(f".{name}", __name__)
+    for module, names in LAZY.items():
+        if name in names:
+            value = getattr(importlib.import_module(f".{module}", __name__), name)
+            globals()[name] = value  # found once, then an ordinary attribute
+            return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted({*globals(), *__all__, *LAZY})

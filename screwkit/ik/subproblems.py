@@ -1,0 +1,701 @@
+"""The Paden–Kahan subproblems: the geometric steps of closed-form inverse kinematics.
+
+Each subproblem asks for the joint angles that move a point somewhere, about zero-pitch
+twists xi = (w; v) with |w| = 1 (the axis through r = w x v):
+
+* :func:`subproblem1` -- the angle theta with exp(theta xi) p = q;
+* :func:`subproblem2` -- the pairs (theta1, theta2) with exp(theta1 xi1) exp(theta2 xi2)
+  p = q, for two axes that meet in a point;
+* :func:`subproblem3` -- the angles with |exp(theta xi) p - q| = delta;
+* :func:`subproblem4` -- the angles that bring p onto the plane n . x = d;
+* :func:`subproblem1_prismatic`, :func:`subproblem3_prismatic` -- the same questions for
+  a translation along a unit direction s (the twist (0; s)).
+
+Each returns a :class:`Solutions` list: SymPy expressions for SymPy input (the formula a
+student reads), floats otherwise. No solution is an empty list whose ``reason`` says
+why; when every angle solves the problem (the point is on the axis) the list holds the
+angle 0 and ``free`` is True. Formulas after Murray, Li and Sastry, *A Mathematical
+Introduction to Robotic Manipulation* (1994), sec. 3.3; subproblem 4 after Elias and
+Wen's IK-Geo (2022).
+
+>>> import numpy as np
+>>> z_axis = [0, 0, 1, 0, 0, 0]            # rotation about z through the origin
+>>> [round(t, 6) for t in subproblem1(z_axis, [1, 0, 0], [0, 1, 0])]
+[1.570796]
+>>> import sympy as sp
+>>> subproblem1(z_axis, [1, 0, 0], [sp.Rational(1, 2), sp.sqrt(3) / 2, 0])
+[pi/3]
+"""
+
+import numpy as np
+import sympy as sp
+
+from .._checks import (
+    as_float_array,
+    as_sympy_matrix,
+    as_sympy_scalar,
+    describe,
+    is_symbolic,
+)
+from ..tolerances import SUBPROBLEM_TOL as TOL
+from ..transforms import _cross
+
+__all__ = [
+    "Solutions",
+    "subproblem1",
+    "subproblem2",
+    "subproblem3",
+    "subproblem4",
+    "subproblem1_prismatic",
+    "subproblem3_prismatic",
+]
+
+
+class Solutions(list):
+    """The solutions of a subproblem: a list of angles (rad), pairs or distances (m).
+
+    Parameters
+    ----------
+    solutions : iterable
+        The solutions: floats, or SymPy expressions for SymPy input.
+    reason : str or None
+        Why the list is empty; None when it is not.
+    free : bool
+        True when every angle solves the problem (the list then holds the
+        representative 0).
+    """
+
+    def __init__(self, solutions=(), reason=None, free=False):
+        super().__init__(solutions)
+        self.reason = reason
+        self.free = free
+
+    def __repr__(self):
+        if not self:
+            return f"Solutions([], reason={self.reason!r})"
+        return super().__repr__() + (" (every angle: free)" if self.free else "")
+
+
+# ---- input ---------------------------------------------------------------------------
+
+
+def _symbolic(*values):
+    return any(is_symbolic(v) for v in values)
+
+
+def _twist(twist, name, exact):
+    """(w, r): the unit direction and the point w x v of a zero-pitch unit twist."""
+    if exact:
+        xi = as_sympy_matrix(twist, name, (6, 1))
+        w, v = xi[:3, 0], xi[3:, 0]
+        norm2, pitch = sp.simplify(w.dot(w)), sp.simplify(w.dot(v))
+        if norm2.is_number and norm2 != 1:
+            raise ValueError(
+                f"{name} must have a unit angular part (a revolute axis), "
+                f"got |w|^2 = {norm2}"
+            )
+        if pitch.is_number and pitch != 0:
+            raise ValueError(
+                f"{name} must have pitch 0 (w . v = 0), got w . v = {pitch}"
+            )
+        return w, w.cross(v)
+    xi = as_float_array(twist, name)
+    if xi.shape != (6,):
+        raise ValueError(
+            f"{name} must be a twist of shape (6,), ordered [w; v], "
+            f"got shape {xi.shape}"
+        )
+    w, v = xi[:3], xi[3:]
+    if abs(np.linalg.norm(w) - 1) > TOL:
+        raise ValueError(
+            f"{name} must have a unit angular part (a revolute axis), "
+            f"got |w| = {np.linalg.norm(w):.6g}"
+        )
+    if abs(w @ v) > TOL * (1 + np.linalg.norm(v)):
+        raise ValueError(
+            f"{name} must have pitch 0 (w . v = 0), got w . v = {w @ v:.6g}"
+        )
+    return w, _cross(w, v)
+
+
+def _direction(s, name, exact):
+    if exact:
+        s = as_sympy_matrix(s, name, (3, 1))
+        norm2 = sp.simplify(s.dot(s))
+        if norm2.is_number and norm2 != 1:
+            raise ValueError(
+                f"{name} must be a unit direction, got |{name}|^2 = {norm2}"
+            )
+        return s
+    s = _point(s, name, False)
+    if abs(np.linalg.norm(s) - 1) > TOL:
+        raise ValueError(
+            f"{name} must be a unit direction, got |{name}| = {np.linalg.norm(s):.6g}"
+        )
+    return s
+
+
+def _point(p, name, exact):
+    if exact:
+        return as_sympy_matrix(p, name, (3, 1))
+    p = as_float_array(p, name)
+    if p.shape != (3,):
+        raise ValueError(f"{name} must be a point of shape (3,), got {describe(p)}")
+    return p
+
+
+def _distance(delta, name, exact):
+    if exact:
+        delta = as_sympy_scalar(delta, name)
+        if delta.is_negative:
+            raise ValueError(f"{name} must be a distance >= 0, got {delta}")
+        return delta
+    if isinstance(delta, bool) or np.ndim(delta) != 0:
+        raise TypeError(
+            f"{name} must be one distance (a number, m), got {describe(delta)}"
+        )
+    delta = float(as_float_array(delta, name))
+    if delta < 0:
+        raise ValueError(f"{name} must be a distance >= 0, got {delta}")
+    return delta
+
+
+# ---- helpers for both layers ---------------------------------------------------------
+
+
+def _zero(value, scale, exact):
+    """Is a consistency residual zero? Exactly (or undecidable: assumed) or within
+    TOL * scale."""
+    if exact:
+        value = sp.simplify(value)
+        return not (value.is_number and value != 0)
+    return abs(value) <= TOL * scale
+
+
+def _sign(value, scale, exact):
+    """-1, 0 or 1; a symbolic value that cannot be decided counts as positive."""
+    if exact:
+        value = sp.simplify(value)
+        if value.is_number:
+            return int(sp.sign(value))
+        return 1
+    return 0 if abs(value) <= TOL * scale else int(np.sign(value))
+
+
+def _atan2(y, x, exact):
+    return sp.simplify(sp.atan2(y, x)) if exact else float(np.arctan2(y, x))
+
+
+def _project(w, u, exact):
+    """u without its component along w."""
+    return u - w * w.dot(u) if exact else u - w * (w @ u)
+
+
+def _dot(a, b, exact):
+    return sp.simplify(a.dot(b)) if exact else float(a @ b)
+
+
+def _norm(a, exact):
+    return sp.sqrt(_dot(a, a, exact)) if exact else float(np.linalg.norm(a))
+
+
+def _vector_cross(a, b, exact):
+    return a.cross(b) if exact else _cross(a, b)
+
+
+# ---- batch kernels: float arrays, no checks ------------------------------------------
+# The closed-form engines (:mod:`.spherical_wrist`, :mod:`.ur`, :mod:`.stanford`) run
+# their steps through these, over a whole batch of poses at once; the scalar
+# subproblems below run their numeric case through them too, so each formula is written
+# once. Each kernel says how its vectors are laid out: (3, ...) (components first, so
+# that products with a fixed axis are one matrix product) or (..., 3).
+
+
+def _dot_batch(w, v):
+    """w . v for a fixed w (3,) and vectors v (3, ...): one matrix product."""
+    return (w @ v.reshape(3, -1)).reshape(v.shape[1:])
+
+
+def sinusoid_angles(A, B, C):
+    """The angles theta with A cos(theta) + B sin(theta) = C, the equation every
+    closed-form step of one angle comes down to.
+
+    Parameters
+    ----------
+    A, B, C : array-like, broadcasting to shape (...), any one unit
+
+    Returns
+    -------
+    phi, half : arrays (...), rad: the angles are phi - half and phi + half, with
+        phi = atan2(B, A) and half = atan2(sqrt(A^2 + B^2 - C^2), C)
+    excess : array (...), A^2 + B^2 - C^2: negative where no angle solves it (``half``
+        is then that of excess 0)
+    radius2 : array (...), A^2 + B^2: 0 where every angle or none solves it
+    """
+    radius2 = A**2 + B**2
+    excess = radius2 - C**2
+    phi = np.arctan2(B, A)
+    half = np.arctan2(np.sqrt(np.maximum(excess, 0.0)), C)
+    return phi, half, excess, radius2
+
+
+def plane_angles(w, n, h, x):
+    """Subproblem 4 over a batch: the angles about the unit axis w through the origin
+    that bring the points x onto the plane n . y = h.
+
+    With A = n . x - (w . x)(w . n), B = (n x w) . x and C = h - (w . x)(n . w), the
+    angles solve A cos + B sin = C (:func:`sinusoid_angles`).
+
+    Parameters
+    ----------
+    w, n : array, shape (3,), unit axis direction and unit plane normal
+    h : float or array (...), the plane's offset (m)
+    x : array, shape (3, ...), points (m), laid out components first
+
+    Returns
+    -------
+    phi, half, excess, radius2 : arrays (...), as :func:`sinusoid_angles` returns them
+        (rad, rad, m^2, m^2): the angles are phi -+ half
+    """
+    along = _dot_batch(w, x)
+    A = _dot_batch(n, x) - along * (w @ n)
+    B = _dot_batch(_cross(n, w), x)
+    C = h - along * (n @ w)
+    return sinusoid_angles(A, B, C)
+
+
+def distance_angles(w, u, v, delta2):
+    """Subproblem 3 in the plane across the unit axis w.
+
+    Parameters
+    ----------
+    w : array, shape (3,), unit axis direction
+    u, v : array, shape (3,), vectors perpendicular to w (m)
+    delta2 : array (...), squared distances across the axis (m^2)
+
+    Returns
+    -------
+    theta0 : float, rad, the angle about w from u to v
+    cosine : array (...), (|u|^2 + |v|^2 - delta2) / (2 |u| |v|): the angles are
+        theta0 -+ arccos(cosine); a cosine beyond +-1 means no angle reaches delta
+    """
+    lu, lv = np.linalg.norm(u), np.linalg.norm(v)
+    cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
+    return np.arctan2(_cross(u, v) @ w, u @ v), cosine
+
+
+def rotation_angles(w, a, b):
+    """Subproblem 1 over a batch: the angle about the unit axis w (through the origin)
+    that turns a towards b, atan2(w . (a' x b'), a' . b') with a', b' their parts
+    across w.
+
+    Parameters
+    ----------
+    w : array, shape (3,), unit axis direction
+    a, b : arrays, shapes broadcasting to (..., 3), vectors laid out components last
+
+    Returns
+    -------
+    theta : array (...), rad in (-pi, pi]; 0 where a' or b' is 0 (every angle)
+    """
+    a_ = a - w * (a @ w)[..., None]
+    b_ = b - w * (b @ w)[..., None]
+    return np.arctan2(np.cross(a_, b_) @ w, np.sum(a_ * b_, axis=-1))
+
+
+def meeting_points(w1, w2, x, y):
+    """Subproblem 2 over a batch, for two axes through the origin: the points z with
+    z . w2 = x . w2, z . w1 = y . w1 and |z| = |x|, where the circle of x about w2
+    meets the circle of y about w1 (then exp(theta2 w2) x = z = exp(-theta1 w1) y).
+
+    z = alpha w1 + beta w2 + gamma (w1 x w2), with alpha, beta from the two planes and
+    gamma^2 = (|x|^2 - alpha^2 - beta^2 - 2 alpha beta w1 . w2) / |w1 x w2|^2.
+
+    Parameters
+    ----------
+    w1, w2 : array, shape (3,), unit directions of two axes that are not parallel
+    x, y : arrays, shapes broadcasting to (..., 3), vectors laid out components last
+
+    Returns
+    -------
+    z : array (..., 2, 3), the two points, gamma = -|gamma| first
+    gamma2 : array (...): negative where the circles do not meet (z then takes
+        gamma = 0)
+    """
+    c12 = w1 @ w2
+    n = np.cross(w1, w2)
+    xw2, yw1 = x @ w2, y @ w1
+    alpha = (c12 * xw2 - yw1) / (c12**2 - 1)
+    beta = (c12 * yw1 - xw2) / (c12**2 - 1)
+    gamma2 = (np.sum(x * x, -1) - alpha**2 - beta**2 - 2 * alpha * beta * c12) / (n @ n)
+    gamma = np.sqrt(np.maximum(gamma2, 0.0))[..., None] * np.array([-1.0, 1.0])
+    z = alpha[..., None, None] * w1 + beta[..., None, None] * w2 + gamma[..., None] * n
+    return z, gamma2
+
+
+# ---- the subproblems -----------------------------------------------------------------
+
+
+def subproblem1(twist, p, q):
+    """The angle theta of the rotation about ``twist`` that takes the point p to q.
+
+    With r on the axis, u = p - r and v = q - r, and u', v' their parts perpendicular to
+    w: theta = atan2(w . (u' x v'), u' . v'). Solvable when w . u = w . v
+    and |u'| = |v'|.
+
+    Parameters
+    ----------
+    twist : array-like, shape (6,)
+        A zero-pitch unit twist [w; v], |w| = 1, w . v = 0 (SymPy entries give SymPy
+        answers).
+    p, q : array-like, shape (3,)
+        Points (m).
+
+    Returns
+    -------
+    Solutions
+        [theta] (rad), or [] with ``reason``; ``free`` if p is on the axis.
+    """
+    exact = _symbolic(twist, p, q)
+    w, r = _twist(twist, "twist", exact)
+    p, q = _point(p, "p", exact), _point(q, "q", exact)
+    return _subproblem1(w, r, p, q, exact)
+
+
+def _subproblem1(w, r, p, q, exact):
+    u, v = p - r, q - r
+    scale = 1.0 if exact else 1.0 + float(np.linalg.norm(u) + np.linalg.norm(v))
+    if not _zero(_dot(w, u, exact) - _dot(w, v, exact), scale, exact):
+        return Solutions(
+            reason="p and q lie in different planes perpendicular to the axis "
+            "(w . (p - q) is not 0)"
+        )
+    u1, v1 = _project(w, u, exact), _project(w, v, exact)
+    if not _zero(_dot(u1, u1, exact) - _dot(v1, v1, exact), scale * scale, exact):
+        return Solutions(reason="p and q are at different distances from the axis")
+    if _sign(_dot(u1, u1, exact), scale * scale, exact) == 0:
+        return Solutions([sp.S.Zero if exact else 0.0], free=True)
+    if not exact:
+        return Solutions([float(rotation_angles(w, u, v))])
+    return Solutions(
+        [
+            _atan2(
+                _dot(w, _vector_cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact
+            )
+        ]
+    )
+
+
+def subproblem2(twist1, twist2, p, q):
+    """The angle pairs (theta1, theta2) with exp(theta1 xi1) exp(theta2 xi2) p = q.
+
+    The axes must meet in a point r. The middle point z = exp(theta2 xi2) p =
+    exp(-theta1 xi1) q lies on both circles: z = r + alpha w1 + beta w2 + gamma
+    (w1 x w2), with alpha, beta from w1 . (z - r) = w1 . (q - r) and
+    w2 . (z - r) = w2 . (p - r), and gamma^2 = (|u|^2 - alpha^2 - beta^2 - 2 alpha beta
+    w1 . w2) / |w1 x w2|^2 (u = p - r). Two pairs for gamma^2 > 0, one for gamma^2 = 0,
+    none for gamma^2 < 0.
+
+    Parameters
+    ----------
+    twist1, twist2 : array-like, shape (6,)
+        Zero-pitch unit twists [w; v] whose axes meet in one point (else a
+        ``ValueError``).
+    p, q : array-like, shape (3,)
+        Points (m).
+
+    Returns
+    -------
+    Solutions
+        A list of (theta1, theta2) pairs (rad), or [] with ``reason``.
+    """
+    exact = _symbolic(twist1, twist2, p, q)
+    w1, r1 = _twist(twist1, "twist1", exact)
+    w2, r2 = _twist(twist2, "twist2", exact)
+    p, q = _point(p, "p", exact), _point(q, "q", exact)
+    n = _vector_cross(w1, w2, exact)
+    n2 = _dot(n, n, exact)
+    if _sign(n2, 1.0, exact) == 0:
+        raise ValueError(
+            "twist1 and twist2 must have axes that meet in one point, got parallel axes"
+        )
+    gap = _dot(r2 - r1, n, exact)
+    if not _zero(gap, (1.0 if exact else 1.0 + float(np.linalg.norm(r2 - r1))), exact):
+        raise ValueError(
+            "twist1 and twist2 must have axes that meet in one point, got skew "
+            f"axes {float(abs(gap)) / float(sp.sqrt(n2)):.6g} m apart"
+        )
+    # the common point: r1 + t w1 on the second axis
+    c12 = _dot(w1, w2, exact)
+    d = r2 - r1
+    t = (_dot(d, w1, exact) - c12 * _dot(d, w2, exact)) / (1 - c12 * c12)
+    r = r1 + w1 * t
+    u, v = p - r, q - r
+    if exact:
+        denominator = c12 * c12 - 1
+        alpha = (c12 * _dot(w2, u, exact) - _dot(w1, v, exact)) / denominator
+        beta = (c12 * _dot(w1, v, exact) - _dot(w2, u, exact)) / denominator
+        gamma2 = (_dot(u, u, exact) - alpha**2 - beta**2 - 2 * alpha * beta * c12) / n2
+        gamma2 = sp.simplify(gamma2)
+        sign = _sign(gamma2, 1, exact)
+        middle = r + w1 * alpha + w2 * beta
+        roots = [sp.S.Zero] if sign == 0 else [sp.sqrt(gamma2), -sp.sqrt(gamma2)]
+        points = [middle + n * root for root in roots]
+    else:  # the batch kernel, on one pose: z - r for gamma = -|gamma|, +|gamma|
+        (below, above), gamma2 = meeting_points(w1, w2, u, v)
+        scale = 1.0 + float(np.linalg.norm(u) + np.linalg.norm(v))
+        sign = _sign(float(gamma2), scale * scale, exact)
+        points = [r + (below + above) / 2] if sign == 0 else [r + above, r + below]
+    if sign < 0:
+        return Solutions(
+            reason="the circles of p about axis 2 and of q about axis 1 do not "
+            "meet (gamma^2 < 0)"
+        )
+    pairs, free = [], False
+    for z in points:
+        theta2 = _subproblem1(w2, r, p, z, exact)
+        theta1 = _subproblem1(w1, r, z, q, exact)
+        if not theta1 or not theta2:
+            return Solutions(
+                reason="p and q are at different distances from the common point"
+            )
+        free = free or theta1.free or theta2.free
+        pairs.append((theta1[0], theta2[0]))
+    return Solutions(pairs, free=free)
+
+
+def subproblem3(twist, p, q, delta):
+    """The angles theta with |exp(theta xi) p - q| = delta.
+
+    In the plane perpendicular to w: delta'^2 = delta^2 - (w . (p - q))^2 and
+    theta = theta0 +- acos((|u'|^2 + |v'|^2 - delta'^2) / (2 |u'| |v'|)), theta0 being
+    the subproblem-1 angle from u' to v'. Two, one or no solutions.
+
+    Parameters
+    ----------
+    twist : array-like, shape (6,)
+        The rotation's axis, as for :func:`subproblem1`.
+    p : array-like, shape (3,)
+        The point turned about the axis (m).
+    q : array-like, shape (3,)
+        The point it must end at distance delta from (m).
+    delta : float
+        The distance, >= 0 (m).
+
+    Returns
+    -------
+    Solutions
+        Angles (rad), or [] with ``reason``; ``free`` if the distance does not depend
+        on the angle and equals delta.
+    """
+    exact = _symbolic(twist, p, q, delta)
+    w, r = _twist(twist, "twist", exact)
+    p, q = _point(p, "p", exact), _point(q, "q", exact)
+    delta = _distance(delta, "delta", exact)
+    u1, v1 = _project(w, p - r, exact), _project(w, q - r, exact)
+    height = _dot(w, p - q, exact)
+    delta2 = delta**2 - height**2
+    lu, lv = _norm(u1, exact), _norm(v1, exact)
+    scale = 1.0 if exact else 1.0 + lu + lv + abs(height) + delta
+    if (
+        _sign(lu * lv, scale * scale, exact) == 0
+    ):  # the distance does not depend on theta
+        constant = lu**2 + lv**2 + height**2 - delta**2
+        if _zero(constant, scale * scale, exact):
+            return Solutions([sp.S.Zero if exact else 0.0], free=True)
+        return Solutions(
+            reason="p or q is on the axis, so the distance stays "
+            f"{_fmt(sp.sqrt(lu**2 + lv**2 + height**2))} m"
+        )
+    if exact:
+        theta0 = _atan2(
+            _dot(w, _vector_cross(u1, v1, exact), exact), _dot(u1, v1, exact), exact
+        )
+        cosine = (lu**2 + lv**2 - delta2) / (2 * lu * lv)
+    else:
+        theta0, cosine = (float(x) for x in distance_angles(w, u1, v1, delta2))
+    if exact:
+        cosine = sp.simplify(cosine)
+        outside = cosine.is_number and abs(cosine) > 1
+        touching = cosine.is_number and abs(cosine) == 1
+    else:
+        outside = abs(cosine) > 1 + TOL
+        touching = abs(abs(cosine) - 1) <= TOL
+        cosine = min(1.0, max(-1.0, cosine))
+    if outside:
+        closest = sp.sqrt((lu - lv) ** 2 + height**2)
+        farthest = sp.sqrt((lu + lv) ** 2 + height**2)
+        return Solutions(
+            reason=f"delta = {_fmt(delta)} m is outside the distances the rotation "
+            f"reaches, {_fmt(closest)} to {_fmt(farthest)} m"
+        )
+    beta = sp.acos(cosine) if exact else float(np.arccos(cosine))
+    if touching:
+        return Solutions([sp.simplify(theta0 + beta) if exact else theta0 + beta])
+    both = [theta0 - beta, theta0 + beta]
+    return Solutions([sp.simplify(t) for t in both] if exact else both)
+
+
+def subproblem4(twist, p, normal, d):
+    """The angles theta that bring p onto the plane normal . x = d:
+    normal . exp(theta xi) p = d.
+
+    With u = p - r: normal . exp(theta xi) p = A cos(theta) + B sin(theta) + C, where
+    A = n . u', B = n . (w x u), C = n . r + (n . w)(w . u). So
+    theta = atan2(B, A) +- acos((d - C) / sqrt(A^2 + B^2)).
+
+    Parameters
+    ----------
+    twist : array-like, shape (6,)
+        The axis of the rotation (see :func:`subproblem1`).
+    p : array-like, shape (3,)
+        The point brought onto the plane (m).
+    normal : array-like, shape (3,)
+        The plane's unit normal.
+    d : float
+        The plane's offset along the normal (m).
+
+    Returns
+    -------
+    Solutions
+        Angles (rad), or [] with ``reason``; ``free`` if p's circle lies in the plane.
+    """
+    exact = _symbolic(twist, p, normal, d)
+    w, r = _twist(twist, "twist", exact)
+    p = _point(p, "p", exact)
+    n = _direction(normal, "normal", exact)
+    if exact:
+        d = as_sympy_scalar(d, "d")
+    elif isinstance(d, bool) or np.ndim(d) != 0:
+        raise TypeError(f"d must be one number (m), got {describe(d)}")
+    else:
+        d = float(as_float_array(d, "d"))
+    u = p - r
+    if not exact:
+        return _subproblem4_numeric(w, r, u, n, d)
+    A = _dot(n, _project(w, u, exact), exact)
+    B = _dot(n, _vector_cross(w, u, exact), exact)
+    C = _dot(n, r, exact) + _dot(n, w, exact) * _dot(w, u, exact)
+    radius2 = A**2 + B**2
+    scale = 1.0
+    if _sign(radius2, scale * scale, exact) == 0:
+        if _zero(d - C, scale, exact):
+            return Solutions([sp.S.Zero if exact else 0.0], free=True)
+        return Solutions(
+            reason=f"the circle of p stays at n . x = {_fmt(C)}, not {_fmt(d)}"
+        )
+    excess = radius2 - (d - C) ** 2
+    sign = _sign(excess, scale * scale, exact)
+    if sign < 0:
+        return Solutions(
+            reason=f"the circle of p spans n . x from {_fmt(C - sp.sqrt(radius2))} "
+            f"to {_fmt(C + sp.sqrt(radius2))}, not {_fmt(d)}"
+        )
+    phi = _atan2(B, A, exact)
+    half = sp.atan2(sp.sqrt(sp.simplify(excess)), d - C)
+    angles = [phi] if sign == 0 else [phi - half, phi + half]
+    return Solutions([sp.simplify(t) for t in angles])
+
+
+def _subproblem4_numeric(w, r, u, n, d):
+    """subproblem4 for floats, through the batch kernel :func:`plane_angles`."""
+    phi, half, excess, radius2 = (float(x) for x in plane_angles(w, n, d - n @ r, u))
+    C = float(
+        n @ r + (n @ w) * (w @ u)
+    )  # the height of the circle's centre, for the reasons
+    scale = 1.0 + float(np.linalg.norm(u)) + abs(d) + abs(C)
+    if _sign(radius2, scale * scale, False) == 0:
+        if _zero(d - C, scale, False):
+            return Solutions([0.0], free=True)
+        return Solutions(
+            reason=f"the circle of p stays at n . x = {_fmt(C)}, not {_fmt(d)}"
+        )
+    sign = _sign(excess, scale * scale, False)
+    if sign < 0:
+        radius = float(np.sqrt(radius2))
+        return Solutions(
+            reason=f"the circle of p spans n . x from {_fmt(C - radius)} "
+            f"to {_fmt(C + radius)}, not {_fmt(d)}"
+        )
+    return Solutions([phi + half] if sign == 0 else [phi - half, phi + half])
+
+
+def subproblem1_prismatic(s, p, q):
+    """The distance t of the translation along the unit direction s with p + t s = q.
+
+    t = s . (q - p), provided q - p is parallel to s.
+
+    Parameters
+    ----------
+    s : array-like, shape (3,)
+        A unit direction (the twist (0; s)).
+    p, q : array-like, shape (3,)
+        Points (m).
+
+    Returns
+    -------
+    Solutions
+        [t] (m), or [] with ``reason``.
+    """
+    exact = _symbolic(s, p, q)
+    s = _direction(s, "s", exact)
+    p, q = _point(p, "p", exact), _point(q, "q", exact)
+    t = _dot(s, q - p, exact)
+    off = q - p - s * t
+    scale = 1.0 if exact else 1.0 + float(np.linalg.norm(q - p))
+    if not _zero(_dot(off, off, exact), scale * scale, exact):
+        return Solutions(
+            reason=f"q is {_fmt(_norm(off, exact))} m off the line through p along s"
+        )
+    return Solutions([t])
+
+
+def subproblem3_prismatic(s, p, q, delta):
+    """The distances t with |p + t s - q| = delta (a line meets a sphere).
+
+    With u = p - q: t = -s . u +- sqrt((s . u)^2 - |u|^2 + delta^2).
+
+    Parameters
+    ----------
+    s : array-like, shape (3,)
+        A unit direction (the twist (0; s)).
+    p : array-like, shape (3,)
+        The point moved along s (m).
+    q : array-like, shape (3,)
+        The centre of the sphere (m).
+    delta : float
+        The sphere's radius, >= 0 (m).
+
+    Returns
+    -------
+    Solutions
+        Distances (m), or [] with ``reason``.
+    """
+    exact = _symbolic(s, p, q, delta)
+    s = _direction(s, "s", exact)
+    p, q = _point(p, "p", exact), _point(q, "q", exact)
+    delta = _distance(delta, "delta", exact)
+    u = p - q
+    along = _dot(s, u, exact)
+    discriminant = along**2 - _dot(u, u, exact) + delta**2
+    scale = 1.0 if exact else 1.0 + float(np.linalg.norm(u)) + delta
+    sign = _sign(discriminant, scale * scale, exact)
+    if sign < 0:
+        miss = sp.sqrt(_dot(u, u, exact) - along**2)
+        return Solutions(
+            reason=f"the line passes {_fmt(miss)} m from q, farther than "
+            f"delta = {_fmt(delta)} m"
+        )
+    if sign == 0:
+        return Solutions([-along])
+    root = sp.sqrt(discriminant) if exact else float(np.sqrt(discriminant))
+    both = [-along - root, -along + root]
+    return Solutions([sp.simplify(t) for t in both] if exact else both)
+
+
+def _fmt(value):
+    """A number for a message: 4 decimals, or the exact expression."""
+    try:
+        return f"{float(value):.4f}"
+    except TypeError:
+        return str(value)

@@ -1,0 +1,64 @@
+"""Parallel manipulators in motion: legs' inverse kinematics, forward kinematics by
+loop closure and every assembly mode, Jacobians from the legs' wrenches, singularity
+types and workspaces.
+
+The folder, one idea a module, bottom up:
+
+- :mod:`~screwkit.parallel.legs`: the legs' IK, loop closure and joint screws;
+- :mod:`~screwkit.parallel.numeric`: platform points of a batch, Newton on the closure;
+- :mod:`~screwkit.parallel.search`: every assembly mode (the 3-RPR's sextic, and a
+  multi-start search for the others);
+- :mod:`~screwkit.parallel.model`: :class:`ParallelManipulator` and its results;
+- :mod:`~screwkit.parallel.catalogue`: the builders and their default geometry;
+- :mod:`~screwkit.parallel.plotting`: drawings (matplotlib; loaded on first use, as
+  ``sk.parallel.plotting`` or ``from screwkit.parallel.plotting import ...``).
+"""
+
+import importlib
+
+from .catalogue import (
+    RPR_BASE,
+    RPR_PLATFORM,
+    RPR_SIX_MODES_RHO,
+    STEWART_BASE,
+    STEWART_PLATFORM,
+    delta,
+    planar_3rpr,
+    planar_3rrr,
+    stewart_gough,
+    tripteron,
+)
+from .model import (
+    MAX_WORKSPACE_POINTS,
+    ParallelFK,
+    ParallelIK,
+    ParallelManipulator,
+    Workspace,
+)
+from .search import rpr_sextic
+
+__all__ = [
+    "ParallelManipulator",
+    "ParallelIK",
+    "ParallelFK",
+    "Workspace",
+    "MAX_WORKSPACE_POINTS",
+    "stewart_gough",
+    "planar_3rpr",
+    "planar_3rrr",
+    "delta",
+    "tripteron",
+    "rpr_sextic",
+    "STEWART_BASE",
+    "STEWART_PLATFORM",
+    "RPR_BASE",
+    "RPR_PLATFORM",
+    "RPR_SIX_MODES_RHO",
+]
+
+
+def __getattr__(name):
+    # the drawings load matplotlib: imported on first use, as sk.plotting is
+    if name == "plotting":
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module 'screwkit.parallel' has no attribute {name!r}")

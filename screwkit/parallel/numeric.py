@@ -1,0 +1,149 @@
+"""The numeric kernels of :mod:`screwkit.parallel`: the platform points of a batch of
+poses, and Newton-Raphson on the loop closure, vectorised over a leading batch axis.
+
+Points are laid out component first, (3, N, m), as in :mod:`screwkit.parallel.legs`.
+"""
+
+import numpy as np
+
+from ..tolerances import PARALLEL_FK_ACCEPT_TOL, PARALLEL_NEWTON_MAX_STEP
+from ..transforms import _cross, _rodrigues, _skew
+
+__all__ = ["points", "solve", "newton"]
+
+
+def points(R, p, b):
+    """The platform points p + R b of every pose, component first.
+
+    Parameters
+    ----------
+    R : ndarray, shape (N, 3, 3)
+        The platforms' rotations (base frame).
+    p : ndarray, shape (N, 3)
+        The platforms' origins (m, base frame).
+    b : ndarray, shape (m, 3)
+        The attachment points in the platform frame (m).
+
+    Returns
+    -------
+    ndarray, shape (3, N, m)
+        Coordinate k of point i at pose n in ``[k, n, i]`` (m, base frame).
+    """
+    N, m = len(R), len(b)
+    M = np.empty((3, N, 4))  # row k of [R p] for every pose, then one product
+    M[:, :, :3], M[:, :, 3] = R.transpose(1, 0, 2), p.T
+    M = M.reshape(-1, 4)
+    B = np.vstack([b.T, np.ones(m)])  # homogeneous points as columns
+    out = np.empty((3 * N, m))
+    # products of 2048 rows stay on one BLAS thread (threads contend on a busy machine)
+    for start in range(0, 3 * N, 2048):
+        np.matmul(M[start : start + 2048], B, out=out[start : start + 2048])
+    return out.reshape(3, N, m)
+
+
+def _exp_rotation(w):
+    """exp([w]) for rotation vectors w (N, 3) (rad): transforms' Rodrigues kernel on
+    the unit axis w / |w|, with 1 - cos written 2 sin^2(theta / 2) (exact for small
+    steps)."""
+    theta = np.linalg.norm(w, axis=-1)
+    unit = w / np.where(theta > 0, theta, 1.0)[:, None]  # w = 0: no turn
+    half = np.sin(0.5 * theta)[:, None, None]
+    return _rodrigues(_skew(unit), np.sin(theta)[:, None, None], 2 * half * half)
+
+
+def solve(A, b):
+    """Batched linear solve, one system at a time where the batch has a singular one.
+
+    Parameters
+    ----------
+    A : ndarray, shape (N, k, k)
+    b : ndarray, shape (N, k)
+
+    Returns
+    -------
+    ndarray, shape (N, k)
+        x with A x = b; NaN rows where A is singular.
+    """
+    try:
+        return np.linalg.solve(A, b[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        out = np.full(b.shape, np.nan)
+        for n in range(len(A)):
+            try:
+                out[n] = np.linalg.solve(A[n], b[n])
+            except np.linalg.LinAlgError:
+                pass
+        return out
+
+
+def newton(legs, platform_points, freedoms, rho, T0, tol, max_iterations, scale=1.0):
+    """Newton-Raphson on the loop closure r(C, rho) = 0 over the free twist components.
+
+    Each step solves the rows [C x g, g] (the closure's derivative along the space
+    twist) for the twist that cancels the residual, damped so that no component exceeds
+    ``PARALLEL_NEWTON_MAX_STEP`` (rad, or times ``scale`` in m), and moves the pose by
+    R <- exp([w]) R, p <- p + v + w x p (the first order of exp([V]) T: Newton's
+    quadratic convergence is kept).
+
+    Parameters
+    ----------
+    legs : the legs' model (:mod:`screwkit.parallel.legs`), with ``closure``
+    platform_points : ndarray, shape (m, 3)
+        Attachment points b_i in the platform frame (m).
+    freedoms : list of int
+        The free components of the twist [wx, wy, wz, vx, vy, vz].
+    rho : ndarray, shape (N, m)
+        The actuated joint values (m or rad).
+    T0 : ndarray, shape (1, 4, 4) or (N, 4, 4)
+        Starting poses.
+    tol : float
+        Residual (m) below which a pose has converged.
+    max_iterations : int
+    scale : float
+        The mechanism's size (m), for the step's damping and the acceptance floor.
+
+    Returns
+    -------
+    T : ndarray, shape (N, 4, 4)
+        The poses, NaN where Newton did not converge.
+    success : ndarray of bool, shape (N,)
+    iterations : ndarray of int, shape (N,)
+    error : ndarray, shape (N,)
+        The largest loop-closure residual of each pose (m).
+    """
+    N = len(rho)
+    R = np.array(np.broadcast_to(T0[:, :3, :3], (N, 3, 3)))
+    p = np.array(np.broadcast_to(T0[:, :3, 3], (N, 3)))
+    free = freedoms
+    iterations = np.zeros(N, int)
+    done = np.zeros(N, bool)
+    # the step measured in rad for w and in mechanism sizes for v
+    units = np.array([1.0, 1.0, 1.0, scale, scale, scale])
+    for _ in range(max_iterations):
+        C = points(R, p, platform_points)
+        r, g, dr = legs.closure(C, rho)
+        error = np.max(np.abs(r), axis=1)
+        done = done | (error < tol)
+        if done.all():
+            break
+        rows = np.stack([*_cross(C, g), *g], axis=-1)
+        rows = rows if len(free) == 6 else rows[:, :, free]
+        step = np.zeros((N, 6))
+        with np.errstate(all="ignore"):
+            step[:, free] = solve(rows, -r)
+        step[done] = 0.0
+        size = np.max(np.abs(step) / units, axis=1, keepdims=True)
+        step = step * np.minimum(
+            1.0, PARALLEL_NEWTON_MAX_STEP / np.where(size > 0, size, 1.0)
+        )  # damped
+        iterations += ~done
+        w, v = step[:, :3], step[:, 3:]
+        R = _exp_rotation(w) @ R
+        p = p + v + np.cross(w, p)
+    C = points(R, p, platform_points)
+    error = np.max(np.abs(legs.closure(C, rho)[0]), axis=1)
+    success = np.isfinite(error) & (error < max(tol, PARALLEL_FK_ACCEPT_TOL * scale))
+    T = np.zeros((N, 4, 4))
+    T[:, :3, :3], T[:, :3, 3], T[:, 3, 3] = R, p, 1.0
+    T[~success] = np.nan
+    return T, success, iterations, error

@@ -1,0 +1,286 @@
+"""Bad input to the inverse kinematics: one row per case, the error type and the
+argument the message names."""
+
+import functools
+
+import numpy as np
+import sympy as sp
+from builders import planar, puma
+from rows import row
+
+import screwkit as sk
+from screwkit import ik
+
+
+@functools.cache
+def t0():
+    return puma().fk(np.zeros(6))
+
+
+SCALED = np.diag([1.0, 2.0, 1.0, 1.0])
+Z_AXIS = [0, 0, 1, 0, 0, 0]
+
+
+def planar_3r():
+    return planar(1.0, 1.0, 1.0)
+
+
+# a 6R chain whose wrist axes do not meet: the PUMA with a4 = 0.1
+@functools.cache
+def skew_wrist():
+    return sk.Chain(
+        list(puma().links[:3])
+        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
+        + list(puma().links[4:])
+    )
+
+
+# a 6R chain whose joints 2 and 3 are not parallel
+@functools.cache
+def twisted():
+    return sk.Chain(
+        [puma().links[0], sk.Link.revolute(a=0.4318, alpha=0.3)]
+        + list(puma().links[2:])
+    )
+
+
+@functools.cache
+def prismatic():
+    return sk.Chain([sk.Link.prismatic()] + list(puma().links[1:]))
+
+
+ROWS = [
+    row(
+        "T not rigid",
+        lambda: ik.puma560_ik(SCALED),
+        ValueError,
+        "T",
+        match=r"T must .*rotation",
+    ),
+    row(
+        "T with NaN",
+        lambda: ik.puma560_ik(np.full((4, 4), np.nan)),
+        ValueError,
+        "T",
+        match="T must be finite",
+    ),
+    row("T a string", lambda: ik.puma560_ik("pose"), TypeError, "T", match="T must be"),
+    row(
+        "T a batch",
+        lambda: ik.puma560_ik(np.stack([t0(), t0()])),
+        ValueError,
+        "T",
+        match=r"T must be one pose of shape \(4, 4\)",
+    ),
+    row(
+        "T wrong shape",
+        lambda: ik.analytic_ik_all(puma(), np.eye(3)),
+        ValueError,
+        "T",
+        match=r"T must have shape \(4 x 4\)",
+    ),
+    row(
+        "T wrong batch shape",
+        lambda: ik.analytic_ik_all(puma(), np.zeros((2, 3, 4, 4))),
+        ValueError,
+        "T",
+        match=r"T must have shape \(4, 4\) or \(N, 4, 4\)",
+    ),
+    row(
+        "last row",
+        lambda: ik.analytic_ik(puma(), np.vstack([t0()[:3], [0, 0, 1, 1]])),
+        ValueError,
+        "T",
+        match=r"T must have last row",
+    ),
+    row(
+        "label unknown",
+        lambda: ik.puma560_ik(t0()).by_config("xyz"),
+        ValueError,
+        "config",
+        match="config must be one of lun",
+    ),
+    row(
+        "near wrong length",
+        lambda: ik.puma560_ik(t0(), near=[0, 0]),
+        ValueError,
+        "near",
+        match="near must be a joint vector of 6 entries",
+    ),
+    row(
+        "within_limits not bool",
+        lambda: ik.puma560_ik(t0(), within_limits="yes"),
+        TypeError,
+        "within_limits",
+        match="within_limits must be True or False",
+    ),
+    row(
+        "robot not a chain",
+        lambda: ik.puma560_ik(t0(), robot="puma"),
+        TypeError,
+        "robot",
+        match=r"robot must be a screwkit Chain .*got 'puma'",
+    ),
+    row(
+        "chain of 3 joints",
+        lambda: ik.analytic_ik(planar_3r(), t0()),
+        ValueError,
+        "chain",
+        match="chain must have 6 joints for the closed form, got 3",
+    ),
+    row(
+        "prismatic joint",
+        lambda: ik.analytic_ik(prismatic(), t0()),
+        ValueError,
+        "chain",
+        match="chain must have revolute joints only",
+    ),
+    row(
+        "wrist axes miss",
+        lambda: ik.analytic_ik(skew_wrist(), t0()),
+        ValueError,
+        "chain",
+        match="chain must have a spherical wrist: "
+        "the axes of joints 4, 5 and 6 must meet",
+    ),
+    row(
+        "joints 2, 3 not parallel",
+        lambda: ik.analytic_ik(twisted(), t0()),
+        ValueError,
+        "chain",
+        match="chain must have parallel axes for joints 2 and 3",
+    ),
+    row(
+        "config q short",
+        lambda: ik.puma560_config(np.zeros(5)),
+        ValueError,
+        "q",
+        match="q must have 6 entries",
+    ),
+    row(
+        "config q batch",
+        lambda: ik.puma560_config(np.zeros((2, 6))),
+        ValueError,
+        "q",
+        match=r"q must be one configuration of shape \(6,\)",
+    ),
+    row(
+        "numeric q0 short",
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(4)),
+        ValueError,
+        "q0",
+        match="q0 must have 6 entries",
+    ),
+    row(
+        "numeric chain",
+        lambda: ik.numeric_ik("puma", t0(), np.zeros(6)),
+        TypeError,
+        "chain",
+        match="chain must be a screwkit Chain",
+    ),
+    row(
+        "numeric T batch",
+        lambda: ik.numeric_ik(puma(), np.stack([t0(), t0()]), np.zeros(6)),
+        ValueError,
+        "T",
+        match="T must be one pose",
+    ),
+    row(
+        "numeric frame",
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), frame="world"),
+        ValueError,
+        "frame",
+        match="frame must be 'body' or 'space'",
+    ),
+    row(
+        "numeric tol",
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), tol=-1),
+        ValueError,
+        "tol",
+        match="tol must be a positive number",
+    ),
+    row(
+        "numeric iterations",
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), max_iterations=0),
+        ValueError,
+        "max_iterations",
+        match="max_iterations must be a positive integer",
+    ),
+    row(
+        "numeric damping",
+        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), damping=-0.1),
+        ValueError,
+        "damping",
+        match="damping must be None or a number >= 0",
+    ),
+    row(
+        "subproblem twist shape",
+        lambda: ik.subproblem1([0, 0, 1], [1, 0, 0], [0, 1, 0]),
+        ValueError,
+        "twist",
+        match=r"twist must be a twist of shape \(6,\)",
+    ),
+    row(
+        "subproblem twist not unit",
+        lambda: ik.subproblem1([0, 0, 2, 0, 0, 0], [1, 0, 0], [0, 1, 0]),
+        ValueError,
+        "twist",
+        match="twist must have a unit angular part",
+    ),
+    row(
+        "subproblem helical",
+        lambda: ik.subproblem1([0, 0, 1, 0, 0, 0.1], [1, 0, 0], [0, 1, 0]),
+        ValueError,
+        "twist",
+        match="twist must have pitch 0",
+    ),
+    row(
+        "subproblem point",
+        lambda: ik.subproblem1(Z_AXIS, [1, 0], [0, 1, 0]),
+        ValueError,
+        "p",
+        match=r"p must be a point of shape \(3,\)",
+    ),
+    row(
+        "subproblem point text",
+        lambda: ik.subproblem1(Z_AXIS, "p", [0, 1, 0]),
+        TypeError,
+        "p",
+        match="p must be a number or an array",
+    ),
+    row(
+        "subproblem3 delta < 0",
+        lambda: ik.subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], -1.0),
+        ValueError,
+        "delta",
+        match="delta must be a distance >= 0",
+    ),
+    row(
+        "subproblem3 delta array",
+        lambda: ik.subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], [1, 2]),
+        TypeError,
+        "delta",
+        match="delta must be one distance",
+    ),
+    row(
+        "subproblem2 parallel",
+        lambda: ik.subproblem2(Z_AXIS, Z_AXIS, [1, 0, 0], [0, 1, 0]),
+        ValueError,
+        "twist1",
+        match="twist1 and twist2 must have axes that meet",
+    ),
+    row(
+        "subproblem4 normal",
+        lambda: ik.subproblem4(Z_AXIS, [1, 0, 0], [0, 2, 0], 0.5),
+        ValueError,
+        "normal",
+        match="normal must be a unit direction",
+    ),
+    row(
+        "prismatic direction",
+        lambda: ik.subproblem1_prismatic([1, 1, 0], [0, 0, 0], [1, 1, 0]),
+        ValueError,
+        "s",
+        match="s must be a unit direction",
+    ),
+]

@@ -1,0 +1,15 @@
+"""Independent recomputations of every exercise's answer key, one module per group of
+chapters; importing the package registers them all in ``REFERENCES``."""
+
+from . import first_chapters, later_chapters, parallel_kinematics
+from .registry import REFERENCES, all_keys, key, value
+
+__all__ = [
+    "REFERENCES",
+    "all_keys",
+    "first_chapters",
+    "key",
+    "later_chapters",
+    "parallel_kinematics",
+    "value",
+]
