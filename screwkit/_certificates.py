@@ -252,6 +252,18 @@ def _algebraic_atoms(e):
     return found
 
 
+def _cleared(field, fractions):
+    """Numerators of the fractions over their least common denominator: the same
+    vector times a nonzero polynomial."""
+    if field.R is None:  # rational numbers: nothing grows
+        return [n / d for n, d in fractions]
+    common = field.R.one
+    for _, d in fractions:
+        if d != common:
+            common = common.lcm(d)
+    return [n * common.exquo(d) if n else n for n, d in fractions]
+
+
 def _add(a, b):
     (n1, d1), (n2, d2) = a, b
     if not n1:
@@ -311,20 +323,26 @@ def certify(M, rows, cols, kernel, timeout=None):
     if not _nonzero_determinant(field, minor):
         return False, f"the minor on rows {list(rows)} and columns {list(cols)} is 0"
     free = [j for j in range(n) if j not in cols]
-    if not _nonzero_determinant(field, [[k[j] for j in free] for k in kernel_fractions]):
+    if not _nonzero_determinant(
+        field, [[k[j] for j in free] for k in kernel_fractions]
+    ):
         return False, "the kernel vectors are not independent on the free columns"
+    # M k = 0 is unchanged by scaling a row or a vector: clear their denominators, so
+    # that each product is a sum of polynomial products (no fractions grow)
+    rows_cleared = [_cleared(field, row) for row in matrix]
     for index, k in enumerate(kernel_fractions):
-        for i, row in enumerate(matrix):
+        k = _cleared(field, k)
+        for i, row in enumerate(rows_cleared):
             if timeout is not None and time.perf_counter() - start > timeout:
                 return None, (
                     f"the exact check took longer than {timeout} s (at kernel "
                     f"vector {index}, row {i})"
                 )
-            total = (field._zero(), field._one())
-            for (a, b), (c, d) in zip(row, k):
+            total = field._zero()
+            for a, c in zip(row, k):
                 if a and c:
-                    total = _add(total, (a * c, b * d))
-            if not field.is_zero(total[0]):
+                    total += a * c
+            if not field.is_zero(total):
                 return False, f"row {i} times kernel vector {index} is not 0"
     return True, (
         f"exact: the minor on rows {list(rows)} and columns {list(cols)} is nonzero "

@@ -950,7 +950,9 @@ def pivot_columns(field, M, rows):
     values: M[rows, pivots] is a nonzero minor."""
     if not rows:
         return []
-    return _pivot_columns(field, _polynomial_rows(field, M, rows), list(range(M.shape[1])))
+    return _pivot_columns(
+        field, _polynomial_rows(field, M, rows), list(range(M.shape[1]))
+    )
 
 
 def null_space(field, M, rows=None):

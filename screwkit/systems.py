@@ -225,7 +225,7 @@ class ScrewSystem:
         ]
         return ScrewSystem._of_basis(basis, other, self.tol)
 
-    def certificate(self, timeout=10.0):
+    def certificate(self, timeout=30.0):
         """A proof of the rank, checked exactly (exact screws only).
 
         With M the m x 6 matrix whose rows are the screws: M[rows, cols] is a nonzero
@@ -237,7 +237,7 @@ class ScrewSystem:
         Parameters
         ----------
         timeout : float, optional
-            Seconds the exact check may take (default 10); past it the certificate
+            Seconds the exact check may take (default 30); past it the certificate
             says it is not proven.
 
         Returns
