@@ -945,6 +945,16 @@ def reduced_basis(field, M, rows=None):
     return DomainMatrix(basis, (len(basis), cols), K)
 
 
+def pivot_columns(field, M, rows):
+    """The pivot columns (from the left) of the independent ``rows`` of M, for generic
+    values: M[rows, pivots] is a nonzero minor."""
+    if not rows:
+        return []
+    return _pivot_columns(
+        field, _polynomial_rows(field, M, rows), list(range(M.shape[1]))
+    )
+
+
 def null_space(field, M, rows=None):
     """A canonical basis of {x : M x = 0} for generic values, as DomainMatrix rows.
 

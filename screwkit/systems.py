@@ -22,7 +22,7 @@ exactly.
 
 import sympy as sp
 
-from . import _exact, _numeric
+from . import _certificates, _exact, _numeric
 from ._checks import describe
 from .screws import Screw, Twist, Wrench
 
@@ -224,6 +224,68 @@ class ScrewSystem:
             for row in kernel.to_list()
         ]
         return ScrewSystem._of_basis(basis, other, self.tol)
+
+    def certificate(self, timeout=30.0):
+        """A proof of the rank, checked exactly (exact screws only).
+
+        With M the m x 6 matrix whose rows are the screws: M[rows, cols] is a nonzero
+        r x r minor (rank >= r) and ``kernel`` holds 6 - r independent exact vectors
+        with M k = 0 identically (rank <= r). Both are checked without sampling, in
+        a field where every relation among the entries holds
+        (:mod:`screwkit._certificates`).
+
+        Parameters
+        ----------
+        timeout : float, optional
+            Seconds the exact check may take (default 30); past it the certificate
+            says it is not proven.
+
+        Returns
+        -------
+        RankCertificate
+            Unpacks as ``rows, cols, kernel``; ``proven`` and ``reason`` say what was
+            checked.
+
+        Raises
+        ------
+        TypeError
+            If the screws hold floats (their rank is decided with a tolerance).
+        ArithmeticError
+            If the exact check contradicts the sampled rank (a bug to report).
+        """
+        if isinstance(timeout, bool) or not isinstance(timeout, (int, float)):
+            raise TypeError(
+                f"timeout must be a positive number of seconds, got {describe(timeout)}"
+            )
+        if not timeout > 0:
+            raise ValueError(
+                f"timeout must be a positive number of seconds, got {timeout!r}"
+            )
+        if self.numeric:
+            raise TypeError(
+                "certificate() proves the rank of exact screws; these hold floats, "
+                f"whose rank is decided by SVD with tol={self.tol}: write them "
+                "exactly (integers, sympy.Rational, sympy.sqrt, symbols) for a proof"
+            )
+        M = [_exact.entries(s.vector) for s in self.screws]
+        if not self.screws:
+            kernel = [sp.eye(6)[:, j] for j in range(6)]
+            return _certificates.RankCertificate(
+                [], [], kernel, True, "no screw: rank 0, every vector in the kernel"
+            )
+        rows = self._independent_rows()
+        cols = _exact.pivot_columns(self.field, self._domain_matrix(), rows)
+        basis = _exact.null_space(self.field, self._domain_matrix(), rows)
+        kernel = [
+            sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])
+            for row in basis.to_list()
+        ]
+        verdict, reason = _certificates.certify(M, rows, cols, kernel, timeout)
+        if verdict is False:
+            raise ArithmeticError(
+                f"the exact check contradicts the sampled rank {len(rows)}: {reason}"
+            )
+        return _certificates.RankCertificate(rows, cols, kernel, bool(verdict), reason)
 
     def _from_field(self, row):
         return self.kind._checked(
