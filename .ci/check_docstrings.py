@@ -48,15 +48,20 @@ def public_modules(package):
     Returns
     -------
     list of module
-        Every module whose dotted name has no part starting with an underscore.
+        Every module whose dotted name has no part starting with an underscore,
+        except deprecated aliases (their docstring begins "Deprecated alias"; their
+        names are documented where they now live).
     """
     modules = []
     prefix = package.__name__ + "."
     with warnings.catch_warnings():  # deprecated aliases warn when imported
         warnings.simplefilter("ignore", DeprecationWarning)
         for info in pkgutil.walk_packages(package.__path__, prefix):
-            if not any(part.startswith("_") for part in info.name.split(".")):
-                modules.append(importlib.import_module(info.name))
+            if any(part.startswith("_") for part in info.name.split(".")):
+                continue
+            module = importlib.import_module(info.name)
+            if not (module.__doc__ or "").startswith("Deprecated alias"):
+                modules.append(module)
     return modules
 
 

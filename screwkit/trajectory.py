@@ -84,10 +84,18 @@ PEAKS = {"cubic": (1.5, 6.0), "quintic": (15 / 8, 10 / np.sqrt(3))}
 class TimeScaling:
     """A time scaling s(t) from s(0) = 0 to s(duration) = 1, at rest at both ends.
 
-    Build one with :func:`cubic`, :func:`quintic` or :func:`trapezoidal`. Its fields:
-    ``kind`` ('cubic', 'quintic' or 'trapezoidal'), ``duration`` (s),
-    ``peak_velocity`` (the largest ds/dt, 1/s) and ``peak_acceleration`` (the largest
-    magnitude of d2s/dt2, 1/s^2).
+    Build one with :func:`cubic`, :func:`quintic` or :func:`trapezoidal`.
+
+    Parameters
+    ----------
+    kind : {'cubic', 'quintic', 'trapezoidal'}
+        The profile.
+    duration : float
+        Its duration (s).
+    peak_velocity : float
+        The largest ds/dt (1/s).
+    peak_acceleration : float
+        The largest magnitude of d2s/dt2 (1/s^2).
     """
 
     kind: str
@@ -151,7 +159,18 @@ class TimeScaling:
         return self.evaluate(t)[0]
 
     def times(self, count):
-        """``count`` equally spaced times from 0 to the duration, (count,) s."""
+        """Equally spaced times from 0 to the duration.
+
+        Parameters
+        ----------
+        count : int
+            How many (at least 2).
+
+        Returns
+        -------
+        ndarray, shape (count,)
+            The times (s).
+        """
         if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
             raise TypeError(f"count must be an integer, got {describe(count)}")
         if count < 2:
@@ -559,8 +578,16 @@ def _unit_quaternion(q, name):
 @dataclass(frozen=True)
 class ViaPoints:
     """Cubic pieces through points at times, velocity continuous (see
-    :func:`via_points`). Its fields: ``times`` (M,) increasing (s), ``points`` (M, n)
-    and ``velocities`` (M, n), the velocity at each point.
+    :func:`via_points`).
+
+    Parameters
+    ----------
+    times : ndarray, shape (M,)
+        Increasing times (s).
+    points : ndarray, shape (M, n)
+        The points.
+    velocities : ndarray, shape (M, n)
+        The velocity at each point.
     """
 
     times: np.ndarray
@@ -657,15 +684,23 @@ def via_points(times, points, velocities=None):
 
 @dataclass(frozen=True)
 class PathIK:
-    """The joint path of a path of poses (see :func:`follow_path`). Its fields:
+    """The joint path of a path of poses (see :func:`follow_path`).
 
-    - ``q`` (K, n): joint values, continuous (no jump of a whole turn);
-    - ``reached`` (K,) bool: the IK found the pose;
-    - ``singular`` (K,) bool: the Jacobian's smallest singular value is below
-      NEAR_SINGULAR times its largest, or the closed form flags a singularity;
-    - ``condition`` (K,): the Jacobian's condition number;
-    - ``config``: the closed-form branch of each sample ('' for numeric IK);
-    - ``reason``: why some pose was not reached, or None.
+    Parameters
+    ----------
+    q : ndarray, shape (K, n)
+        Joint values, continuous (no jump of a whole turn).
+    reached : ndarray of bool, shape (K,)
+        The IK found the pose.
+    singular : ndarray of bool, shape (K,)
+        The Jacobian's smallest singular value is below NEAR_SINGULAR times its
+        largest, or the closed form flags a singularity.
+    condition : ndarray, shape (K,)
+        The Jacobian's condition number.
+    config : list of str
+        The closed-form branch of each sample ('' for numeric IK).
+    reason : str or None
+        Why some pose was not reached, or None.
     """
 
     q: np.ndarray
