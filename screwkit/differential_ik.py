@@ -40,16 +40,25 @@ _INEQUALITY, _EQUALITY = 0, 5
 
 @dataclass(frozen=True)
 class Step:
-    """One differential-IK step. Its fields:
+    """One differential-IK step.
 
-    - ``dq`` (n,): the joint rates (rad/s, m/s); NaN when infeasible;
-    - ``feasible``: the rates respect every limit (and, with ``exact``, give V);
-    - ``tracked``: J dq equals the wanted twist (to TRACKING_RTOL);
-    - ``tracking_error``: the norm of J dq - V (m/s and rad/s mixed as the rows are);
-    - ``limited``: the limits the step meets or would break, a tuple of str
-      ('joint 3 upper position', 'joint 1 velocity', ...);
-    - ``reason``: why the step is infeasible or not tracked, or None;
-    - ``method``: 'pseudo-inverse' or 'qp'.
+    Parameters
+    ----------
+    dq : ndarray, shape (n,)
+        The joint rates (rad/s, m/s); NaN when infeasible.
+    feasible : bool
+        The rates respect every limit (and, with ``exact``, give V).
+    tracked : bool
+        J dq equals the wanted twist (to TRACKING_RTOL).
+    tracking_error : float
+        The norm of J dq - V (m/s and rad/s mixed as the rows are).
+    limited : tuple of str
+        The limits the step meets or would break ('joint 3 upper position',
+        'joint 1 velocity', ...).
+    reason : str or None
+        Why the step is infeasible or not tracked, or None.
+    method : {'pseudo-inverse', 'qp'}
+        How the step was computed.
     """
 
     dq: np.ndarray
