@@ -119,6 +119,18 @@ SCREW = [
 
 SYSTEM = [
     row(
+        "certificate-timeout-str",
+        lambda: ScrewSystem([[1, 0, 0, 0, 0, 0]]).certificate(timeout="1"),
+        TypeError,
+        "timeout",
+    ),
+    row(
+        "certificate-timeout-negative",
+        lambda: ScrewSystem([[1, 0, 0, 0, 0, 0]]).certificate(timeout=-1),
+        ValueError,
+        "timeout",
+    ),
+    row(
         "ScrewSystem-1",
         lambda: ScrewSystem("twists"),
         TypeError,
