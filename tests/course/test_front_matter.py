@@ -26,7 +26,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 DOC = re.compile(r"\{doc\}`(?:[^`<]*<)?\.\./notebooks/([a-z0-9_]+)>?`")
 ITEM = r"\d+(?:\s*(?:to|-|–)\s*\d+)?"  # 7, or 1 to 10
 NUMBERS = ITEM + r"(?:(?:\s*,\s*|\s+and\s+|\s+or\s+)" + ITEM + ")*"
