@@ -522,7 +522,19 @@ def answer_key(chapter, number):
 
 @dataclass(frozen=True)
 class Verdict:
-    """The result of :func:`check`: ``correct`` and a ``message`` saying why."""
+    """The result of :func:`check`: ``correct`` and a ``message`` saying why.
+
+    Parameters
+    ----------
+    correct : bool
+        Whether the answer is right (also the Verdict's truth value).
+    message : str
+        Why, in a sentence for the student.
+    chapter : str, optional
+        The chapter's name (the exercise's key), for the printed verdict.
+    number : int, optional
+        The exercise's number in its chapter.
+    """
 
     correct: bool
     message: str
@@ -750,6 +762,14 @@ class AnswerBox:
 
     The script is inlined into the first box of a kernel session (one page) and
     defines ``window.screwkitExercises``; every box mounts itself with it.
+
+    Parameters
+    ----------
+    key : dict
+        The exercise's key, as the answer files store it (``chapter``, ``number``,
+        ``values``, ``shape``, ``unit``, ...).
+    script : str
+        The JavaScript of ``exercises.js``, inlined into the page.
     """
 
     def __init__(self, key, script):

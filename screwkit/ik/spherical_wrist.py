@@ -138,6 +138,14 @@ class SphericalWristArm(ClosedFormArm):
     """The geometry of a 6R arm with a spherical wrist, taken from its screws: the
     fields of :class:`~screwkit.ik._closed_form.ClosedFormArm` and ``c``, shape (3,),
     the wrist centre where axes 4, 5 and 6 meet (m). Build it with :meth:`from_chain`.
+
+    Parameters
+    ----------
+    w, p, home, scale
+        As in :class:`~screwkit.ik._closed_form.ClosedFormArm`: the axes' unit
+        directions and points, the home pose and the arm's size (m).
+    c : ndarray, shape (3,)
+        The wrist centre, where axes 4, 5 and 6 meet (m).
     """
 
     w: np.ndarray

@@ -48,6 +48,16 @@ class StanfordArm(ClosedFormArm):
     of :class:`~screwkit.ik._closed_form.ClosedFormArm` (w[2] is the boom's direction
     v, p[2] is 0), ``o``, shape (3,), where axes 1 and 2 meet, and ``c``, shape (3,),
     the wrist centre where axes 4, 5 and 6 meet (m). Build it with :meth:`from_chain`.
+
+    Parameters
+    ----------
+    w, p, home, scale
+        As in :class:`~screwkit.ik._closed_form.ClosedFormArm`: the axes' unit
+        directions and points, the home pose and the arm's size (m).
+    o : ndarray, shape (3,)
+        The point where axes 1 and 2 meet (m).
+    c : ndarray, shape (3,)
+        The wrist centre, where axes 4, 5 and 6 meet (m).
     """
 
     w: np.ndarray

@@ -64,6 +64,14 @@ class URArm(ClosedFormArm):
     """The geometry of a UR-type arm, from its screws: the fields of
     :class:`~screwkit.ik._closed_form.ClosedFormArm` and ``c``, shape (3,), the point
     where axes 5 and 6 meet (m). Build it with :meth:`from_chain`.
+
+    Parameters
+    ----------
+    w, p, home, scale
+        As in :class:`~screwkit.ik._closed_form.ClosedFormArm`: the axes' unit
+        directions and points, the home pose and the arm's size (m).
+    c : ndarray, shape (3,)
+        The point where axes 5 and 6 meet (m).
     """
 
     w: np.ndarray

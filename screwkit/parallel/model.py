@@ -61,7 +61,7 @@ _TYPES = {"spatial": "3T3R", "planar": "2T1R", "translational": "3T"}
 class ParallelIK:
     """Inverse kinematics in full: what ``pm.ik(T, passive=True)`` returns.
 
-    Attributes
+    Parameters
     ----------
     rho : ndarray, shape (m,) or (N, m)
         The actuated joint values (m or rad), NaN where out of reach (or a list of
@@ -70,6 +70,7 @@ class ParallelIK:
         The passive joints by name ('phi', 'u1', 'u2', 'elbow', 'theta2'), each with
         a leading batch axis for a batch of poses.
     reachable : bool or ndarray of bool, shape (N,)
+        Whether every leg reaches the pose within its limits.
     reason : str or list of str
         '' when reachable, else which legs cannot reach or leave their limits.
     mode : str
@@ -87,12 +88,14 @@ class ParallelIK:
 class ParallelFK:
     """Forward kinematics: what ``pm.fk(rho)`` returns.
 
-    Attributes
+    Parameters
     ----------
     T : ndarray, shape (4, 4) or (N, 4, 4)
         The platform pose(s), NaN where Newton did not converge.
     success : bool or ndarray of bool, shape (N,)
+        Whether Newton converged.
     iterations : int or ndarray of int, shape (N,)
+        The Newton steps taken.
     error : float or ndarray, shape (N,)
         The largest loop-closure residual of each pose (m).
     """
@@ -107,10 +110,9 @@ class ParallelFK:
 class Workspace:
     """A constant-orientation workspace on a grid: what ``pm.workspace(x, y)`` returns.
 
-    Attributes
+    Parameters
     ----------
-    x : ndarray, shape (nx,)
-    y : ndarray, shape (ny,)
+    x, y : ndarray, shapes (nx,) and (ny,)
         The grid (m, base frame).
     z : ndarray, shape ()
         Its height (m).
