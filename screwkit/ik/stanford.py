@@ -52,20 +52,15 @@ class StanfordArm(ClosedFormArm):
     Parameters
     ----------
     w, p, home, scale
-        As in :class:`~screwkit.ik._closed_form.ClosedFormArm`: the axes' unit
-        directions and points, the home pose and the arm's size (m).
+        The fields of :class:`~screwkit.ik._closed_form.ClosedFormArm`.
     o : ndarray, shape (3,)
         The point where axes 1 and 2 meet (m).
     c : ndarray, shape (3,)
         The wrist centre, where axes 4, 5 and 6 meet (m).
     """
 
-    w: np.ndarray
-    p: np.ndarray
     o: np.ndarray
     c: np.ndarray
-    home: np.ndarray
-    scale: float
 
     structure = STRUCTURE
     #: Which joints are angles (moved by whole turns into limits): all but the boom.

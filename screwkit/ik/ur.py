@@ -68,17 +68,12 @@ class URArm(ClosedFormArm):
     Parameters
     ----------
     w, p, home, scale
-        As in :class:`~screwkit.ik._closed_form.ClosedFormArm`: the axes' unit
-        directions and points, the home pose and the arm's size (m).
+        The fields of :class:`~screwkit.ik._closed_form.ClosedFormArm`.
     c : ndarray, shape (3,)
         The point where axes 5 and 6 meet (m).
     """
 
-    w: np.ndarray
-    p: np.ndarray
     c: np.ndarray
-    home: np.ndarray
-    scale: float
 
     structure = STRUCTURE
 
