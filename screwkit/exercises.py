@@ -467,10 +467,8 @@ def answer_key(chapter, number):
 
     Parameters
     ----------
-    chapter : str
-        The chapter's notebook name, e.g. ``"puma_ik"``.
-    number : int
-        The exercise number in that chapter.
+    chapter, number : str, int
+        The chapter's notebook name (e.g. ``"puma_ik"``) and the exercise's number.
 
     Returns
     -------
@@ -715,10 +713,8 @@ def check(chapter, number, answer):
 
     Parameters
     ----------
-    chapter : str
-        The chapter's notebook name, e.g. ``"puma_ik"``.
-    number : int
-        The exercise number in that chapter.
+    chapter, number : str, int
+        The chapter's notebook name (e.g. ``"puma_ik"``) and the exercise's number.
     answer : number, str, sequence or array
         A number, a SymPy expression, a text (``"pi/3"``, ``"60 deg"``,
         ``"0.1, 0.2"``), or a list or array (flattened row-major). Numbers without
