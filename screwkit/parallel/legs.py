@@ -80,13 +80,9 @@ class Legs:
     component first) and return arrays of shape (N, m); exact methods take one pose's
     points as a list of m SymPy 3 x 1 matrices. ``signs`` (m,) holds +1 or -1 per leg,
     the working mode (the sign of each elbow; ignored by legs with one mode).
-
-    Attributes
-    ----------
-    modes : tuple of str
-        Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
     """
 
+    #: Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
     modes = ("",)
 
     def ik(self, C, signs):

@@ -142,9 +142,15 @@ class ParallelManipulator:
     Built by the catalogue (``sk.parallel.stewart_gough()`` and the others); models are
     immutable.
 
+    Its attributes, besides the parameters: ``m`` (int), the number of legs;
+    ``base_points`` and ``platform_points`` (ndarray, shape (m, 3)), A_i and b_i as
+    floats (m); ``working_modes`` (list of str), the labels ``ik`` accepts as ``mode``;
+    and :attr:`scale`, its size (m).
+
     Parameters
     ----------
     name : str
+        The mechanism's name, for printing.
     legs : Prismatic, Revolute or Linear
         The legs' model (:mod:`screwkit.parallel.legs`): their IK and loop closure.
     base : array-like, shape (m, 3)
@@ -160,18 +166,6 @@ class ParallelManipulator:
         Limits of the actuated joints (m or rad); None for none.
     default_mode : str, optional
         The working mode ``ik`` uses when none is given.
-
-    Attributes
-    ----------
-    m : int
-        The number of legs.
-    base_points, platform_points : ndarray, shape (m, 3)
-        A_i and b_i as floats (m).
-    scale : float
-        The mechanism's size (m): its farthest attachment point from the origin of its
-        frame. Length tolerances are measured against it.
-    working_modes : list of str
-        The labels ``ik`` accepts as ``mode``.
     """
 
     def __init__(
