@@ -16,6 +16,11 @@ Each docstring goes through numpydoc's own validator (``numpydoc.validate``, pin
   documents its constructor's: a dataclass, its fields);
 * RT01: a function or method that returns something has a Returns section.
 
+A method that overrides a documented method of a base class and has no docstring of
+its own inherits the base's, as Python (``inspect.getdoc``) and the API page (autodoc)
+show it; that docstring is then checked against the override's own signature (the
+parallel legs implement :class:`~screwkit.parallel.legs.Legs` so).
+
 A property needs a summary only (numpydoc documents it as an attribute). The summary
 style checks (SS*), extended summaries, examples and "See Also" are not enforced.
 
@@ -23,6 +28,7 @@ Usage: python .ci/check_docstrings.py  (make lint); exits 1 listing each failure
 """
 
 import enum
+import functools
 import importlib
 import inspect
 import pkgutil
@@ -49,20 +55,18 @@ def public_modules(package):
     -------
     list of module
         Every module whose dotted name has no part starting with an underscore,
-        except deprecated aliases (their docstring begins "Deprecated alias"; their
-        names are documented where they now live).
+        except the deprecated aliases (their docstring starts "Deprecated alias"),
+        which the API page leaves out too.
     """
     modules = []
     prefix = package.__name__ + "."
     with warnings.catch_warnings():  # deprecated aliases warn when imported
         warnings.simplefilter("ignore", DeprecationWarning)
         for info in pkgutil.walk_packages(package.__path__, prefix):
-            if any(part.startswith("_") for part in info.name.split(".")):
-                continue
-            module = importlib.import_module(info.name)
-            if not (module.__doc__ or "").startswith("Deprecated alias"):
-                modules.append(module)
-    return modules
+            if not any(part.startswith("_") for part in info.name.split(".")):
+                modules.append(importlib.import_module(info.name))
+    # a deprecated alias documents nothing of its own (its names live elsewhere)
+    return [m for m in modules if not (m.__doc__ or "").startswith("Deprecated alias")]
 
 
 def public_names(module):
@@ -150,6 +154,24 @@ def objects(package):
     return found
 
 
+def inherited(function):
+    """A stand-in for an undocumented override, holding its base's docstring.
+
+    Parameters
+    ----------
+    function : function
+        A method without a docstring whose base class documents the same method.
+
+    Returns
+    -------
+    function
+        A function with ``function``'s name and signature and the inherited docstring.
+    """
+    stand_in = functools.update_wrapper(lambda *args, **kwargs: None, function)
+    stand_in.__doc__ = inspect.getdoc(function)
+    return stand_in
+
+
 def problems(value):
     """The failed checks of one object's docstring.
 
@@ -163,9 +185,12 @@ def problems(value):
     list of (str, str)
         (numpydoc check code, message) pairs, empty when the docstring passes.
     """
-    parsed = get_doc_object(value)
+    if inspect.isfunction(value) and value.__doc__ is None and inspect.getdoc(value):
+        value = inherited(value)
     errors = [
-        (code, text) for code, text in validate(parsed)["errors"] if code in CHECKS
+        (code, text)
+        for code, text in validate(get_doc_object(value))["errors"]
+        if code in CHECKS
     ]
     if inspect.isclass(value) and issubclass(value, enum.Enum):
         # an Enum's "parameters" are those of Enum's own constructor, not its members

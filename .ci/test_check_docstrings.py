@@ -148,6 +148,46 @@ class FieldsAsAttributes:
     success: bool
 
 
+class Base:
+    """A contract."""
+
+    def step(self, q):
+        """One step.
+
+        Parameters
+        ----------
+        q : float
+            The joint value (rad).
+
+        Returns
+        -------
+        float
+            The next value (rad).
+        """
+        raise NotImplementedError
+
+
+class Child(Base):
+    """An implementation."""
+
+    def step(self, q):
+        return q
+
+
+class Renamed(Base):
+    """An implementation whose argument differs from its documented contract."""
+
+    def step(self, theta):
+        return theta
+
+
+class Orphan:
+    """No base documents its method."""
+
+    def step(self, q):
+        return q
+
+
 def codes(value):
     return {code for code, _ in check.problems(value)}
 
@@ -182,3 +222,9 @@ def test_the_public_objects_include_methods_and_no_private_name():
         name.endswith(".analytic_ik") for name in names
     )
     assert not any(name.rsplit(".", 1)[1].startswith("_") for name in names)
+
+
+def test_an_override_inherits_its_base_docstring_checked_against_its_signature():
+    assert codes(Child.step) == set()
+    assert codes(Renamed.step) == {"PR01", "PR02"}
+    assert codes(Orphan.step) == {"GL08"}

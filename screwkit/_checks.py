@@ -511,16 +511,15 @@ def check_poses(T, name="T", single_only=False):
     if not single_only and _is_pose_batch(T):
         return T
     T = as_float_array(T, name)
+    if single_only and T.shape != (4, 4):
+        raise ValueError(
+            f"{name} must be one pose of shape (4, 4), got shape {T.shape}"
+        )
     if T.ndim not in (2, 3):
         raise ValueError(
             f"{name} must have shape (4, 4) or (N, 4, 4), got shape {T.shape}"
         )
-    T = check_transform(T, name)
-    if single_only and T.ndim != 2:
-        raise ValueError(
-            f"{name} must be one pose of shape (4, 4), got shape {T.shape}"
-        )
-    return T
+    return check_transform(T, name)
 
 
 #: Where R_ij sits in a flattened 4 x 4 pose, for i, j = 0, 1, 2.

@@ -467,10 +467,8 @@ def answer_key(chapter, number):
 
     Parameters
     ----------
-    chapter : str
-        The chapter's notebook name, e.g. ``"puma_ik"``.
-    number : int
-        The exercise number in that chapter.
+    chapter, number : str, int
+        The chapter's notebook name (e.g. ``"puma_ik"``) and the exercise's number.
 
     Returns
     -------
@@ -522,7 +520,19 @@ def answer_key(chapter, number):
 
 @dataclass(frozen=True)
 class Verdict:
-    """The result of :func:`check`: ``correct`` and a ``message`` saying why."""
+    """The result of :func:`check`: ``correct`` and a ``message`` saying why.
+
+    Parameters
+    ----------
+    correct : bool
+        Whether the answer is right (also the Verdict's truth value).
+    message : str
+        Why, in a sentence for the student.
+    chapter : str, optional
+        The chapter's name (the exercise's key), for the printed verdict.
+    number : int, optional
+        The exercise's number in its chapter.
+    """
 
     correct: bool
     message: str
@@ -703,10 +713,8 @@ def check(chapter, number, answer):
 
     Parameters
     ----------
-    chapter : str
-        The chapter's notebook name, e.g. ``"puma_ik"``.
-    number : int
-        The exercise number in that chapter.
+    chapter, number : str, int
+        The chapter's notebook name (e.g. ``"puma_ik"``) and the exercise's number.
     answer : number, str, sequence or array
         A number, a SymPy expression, a text (``"pi/3"``, ``"60 deg"``,
         ``"0.1, 0.2"``), or a list or array (flattened row-major). Numbers without
@@ -750,6 +758,14 @@ class AnswerBox:
 
     The script is inlined into the first box of a kernel session (one page) and
     defines ``window.screwkitExercises``; every box mounts itself with it.
+
+    Parameters
+    ----------
+    key : dict
+        The exercise's key, as the answer files store it (``chapter``, ``number``,
+        ``values``, ``shape``, ``unit``, ...).
+    script : str
+        The JavaScript of ``exercises.js``, inlined into the page.
     """
 
     def __init__(self, key, script):

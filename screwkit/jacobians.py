@@ -8,9 +8,15 @@ Two Jacobians, with names that say which:
   the velocity of the body point at the base origin (Lynch & Park's J_s).
 
 From the Jacobian: singular values, Yoshikawa's manipulability sqrt(det(J J^T)), the
-condition number, the rank, and the manipulability ellipsoid. ``rows`` selects the rows
-used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) or
-'planar' (v_x, v_y: the 2 x n Jacobian of an arm in the x-y plane).
+condition number, the rank, and the manipulability ellipsoid.
+
+The functions share their parameters, described here once:
+
+* ``chain`` (:class:`~screwkit.chains.Chain`): the serial chain;
+* ``q`` (array-like, shape (n,) or a batch (N, n)): its joint values (rad or m);
+* ``rows`` ({'all', 'position', 'orientation', 'planar'}, optional): the rows of J
+  used: 'all' (6), 'position' (v, m/s per unit joint rate), 'orientation' (omega) or
+  'planar' (v_x, v_y: the 2 x n Jacobian of an arm in the x-y plane).
 
 >>> import screwkit as sk, numpy as np
 >>> arm = sk.robots.planar([1.0, 1.0])
@@ -53,10 +59,8 @@ def joint_axes(chain, q):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
+    chain, q
+        The chain and its joint values (module docstring).
 
     Returns
     -------
@@ -76,10 +80,8 @@ def space_jacobian(chain, q):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
+    chain, q
+        The chain and its joint values (module docstring).
 
     Returns
     -------
@@ -98,10 +100,8 @@ def geometric_jacobian(chain, q):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
+    chain, q
+        The chain and its joint values (module docstring).
 
     Returns
     -------
@@ -119,10 +119,8 @@ def body_jacobian(chain, q):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
+    chain, q
+        The chain and its joint values (module docstring).
 
     Returns
     -------
@@ -294,10 +292,8 @@ def singular_values(chain, q, rows="all"):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
+    chain, q
+        The chain and its joint values (module docstring).
     rows : {'all', 'position', 'orientation', 'planar'}, optional
         The rows of J used (see the module's docstring).
 
@@ -320,12 +316,8 @@ def manipulability(chain, q, rows="all"):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
-    rows : {'all', 'position', 'orientation', 'planar'}, optional
-        The rows of J used.
+    chain, q, rows
+        The chain, its joint values and the rows of J (module docstring).
 
     Returns
     -------
@@ -340,12 +332,8 @@ def condition_number(chain, q, rows="all"):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
-    rows : {'all', 'position', 'orientation', 'planar'}, optional
-        The rows of J used.
+    chain, q, rows
+        The chain, its joint values and the rows of J (module docstring).
 
     Returns
     -------
@@ -363,12 +351,8 @@ def rank(chain, q, rows="all"):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,) or (N, n)
-        Joint values (rad or m).
-    rows : {'all', 'position', 'orientation', 'planar'}, optional
-        The rows of J used.
+    chain, q, rows
+        The chain, its joint values and the rows of J (module docstring).
 
     Returns
     -------

@@ -236,8 +236,8 @@ def log_transform(T):
 
     Parameters
     ----------
-    T : array-like, shape (4, 4) or (N, 4, 4), a rigid transform (m);
-        or a SymPy 4x4 matrix
+    T : array-like, shape (4, 4) or (N, 4, 4), or a SymPy 4x4 matrix
+        The rigid transform(s) (m).
 
     Returns
     -------

@@ -109,10 +109,8 @@ def helical(s, r, h):
 
     Parameters
     ----------
-    s : 3-sequence of numbers or SymPy expressions, non-zero
-        The axis direction.
-    r : 3-sequence of numbers or SymPy expressions
-        A point of the axis (m).
+    s, r : 3-sequences of numbers or SymPy expressions
+        The axis, as for :func:`revolute`.
     h : number or SymPy expression
         The pitch (m/rad), finite.
 
@@ -134,10 +132,8 @@ def cylindrical(s, r):
 
     Parameters
     ----------
-    s : 3-sequence of numbers or SymPy expressions, non-zero
-        The axis direction.
-    r : 3-sequence of numbers or SymPy expressions
-        A point of the axis (m).
+    s, r : 3-sequences of numbers or SymPy expressions
+        The axis, as for :func:`revolute`.
 
     Returns
     -------

@@ -3,7 +3,8 @@
 Parallel manipulators are returned in the mobility paper's zeroth-step format: a list of
 limbs, each a list of (s, r, h) joint screws in the fixed frame, with the paper's
 symbols for lengths (a, b, L, R, ...), actuated displacements d_i and joint angles
-theta_ij. Serial arms are :class:`~screwkit.chains.Chain` objects (SI units).
+theta_ij: each ``pm_*`` builder (and ``planar_3rrr``, ``spherical_3rrr``) returns its
+limbs so, exact. Serial arms are :class:`~screwkit.chains.Chain` objects (SI units).
 """
 
 import numpy as np
@@ -132,8 +133,7 @@ def pm_3prrr():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     a, b, Ly, Lz = sp.symbols("a b L_y L_z")
     d = sp.symbols("d_1:4")
@@ -169,8 +169,7 @@ def pm_3prpar():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     L, b = sp.symbols("L b")
     d = sp.symbols("d_1:4")
@@ -199,6 +198,12 @@ def pm_3prpar():
     return limbs
 
 
+def _around_z(limb_of, count):
+    """The limbs limb_of(0), ..., limb_of(count - 1), limb i turned about Z by
+    2 pi i / count (a mechanism with count-fold symmetry)."""
+    return [rotate_limb(limb_of(i), rotz(2 * sp.pi * i / count)) for i in range(count)]
+
+
 def _turn_about_z(angle):
     """v -> Rz(angle) v with expanded entries, written out (no matrix product): a limb
     turned about Z, as rotate_limb(limb, rotz(angle)) gives it."""
@@ -225,8 +230,7 @@ def pm_4prru():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     R, a, b, alpha = sp.symbols("R a b alpha")
     d = sp.symbols("d_1:5")
@@ -243,14 +247,13 @@ def pm_4prru():
             [sp.cos(angle), sp.sin(angle) * w[2], -sp.sin(angle) * w[1]]
         )
 
-    limbs = []
-    for i in range(4):
+    def limb(i):
         A = sp.Matrix([R, 0, d[i]])
         B = A + turned(a, theta[i][0])
         C = B + turned(b, theta[i][1])
-        limb = prismatic(Z, A) + revolute(w, A) + revolute(w, B) + universal(w, Z, C)
-        limbs.append(rotate_limb(limb, rotz(sp.pi * i / 2)))
-    return limbs
+        return prismatic(Z, A) + revolute(w, A) + revolute(w, B) + universal(w, Z, C)
+
+    return _around_z(limb, 4)
 
 
 def pm_6ups():
@@ -260,26 +263,25 @@ def pm_6ups():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:7")
     theta = _symbols("theta", 6, 1, 2)
-    limbs = []
-    for i in range(6):
+
+    def limb(i):
         t1, t2 = theta[i]
         frame = rotx(t1) * roty(t2)  # the leg's frame after the U joint
         A = sp.Matrix([R, 0, 0])
         leg = frame * Z
         B = A + d[i] * leg
-        limb = (
+        return (
             universal(X, rotx(t1) * Y, A)
             + prismatic(leg, A)
             + spherical(B, axes=[frame * X, frame * Y, frame * Z])
         )
-        limbs.append(rotate_limb(limb, rotz(sp.pi * i / 3)))
-    return limbs
+
+    return _around_z(limb, 6)
 
 
 def planar_3rrr():
@@ -289,19 +291,18 @@ def planar_3rrr():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     a, b = sp.symbols("a b")
     theta = _symbols("theta", 3, 1, 2)
-    limbs = []
-    for i in range(3):
+
+    def limb(i):
         A = sp.Matrix([1, 0, 0])
         B = A + rotz(theta[i][0]) * sp.Matrix([a, 0, 0])
         C = B + rotz(theta[i][1]) * sp.Matrix([b, 0, 0])
-        limb = revolute(Z, A) + revolute(Z, B) + revolute(Z, C)
-        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
-    return limbs
+        return revolute(Z, A) + revolute(Z, B) + revolute(Z, C)
+
+    return _around_z(limb, 3)
 
 
 def pm_3rps():
@@ -311,19 +312,18 @@ def pm_3rps():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:4")
     theta = [sp.Symbol(f"theta_{i}") for i in range(1, 4)]
-    limbs = []
-    for i in range(3):
+
+    def limb(i):
         A = sp.Matrix([R, 0, 0])
         leg = rotx(theta[i]) * Z
-        limb = revolute(X, A) + prismatic(leg, A) + spherical(A + d[i] * leg)
-        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
-    return limbs
+        return revolute(X, A) + prismatic(leg, A) + spherical(A + d[i] * leg)
+
+    return _around_z(limb, 3)
 
 
 def pm_3ruu():
@@ -338,20 +338,19 @@ def pm_3ruu():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     R, a, b = sp.symbols("R a b")
-    limbs = []
-    for i in range(3):
+
+    def limb(i):
         t1, t2, t3 = sp.symbols(f"theta_{i + 1}1:{i + 1}4")
         u, A = Y, sp.Matrix([R, 0, 0])
         B = A + rot_axis(u, t1) * (a * X)
         v = rot_axis(u, t2) * Z
         C = B + rot_axis(v, t3) * (b * u.cross(v))
-        limb = revolute(u, A) + universal(u, v, B) + universal(v, u, C)
-        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
-    return limbs
+        return revolute(u, A) + universal(u, v, B) + universal(v, u, C)
+
+    return _around_z(limb, 3)
 
 
 def spherical_3rrr():
@@ -361,19 +360,18 @@ def spherical_3rrr():
     Returns
     -------
     list of limbs
-        Each limb a list of exact (s, r, h) triples in the fixed frame, with the
-        joint variables (theta_ij, d_i) and the lengths as SymPy symbols.
+        In the zeroth-step format (module docstring).
     """
     theta = _symbols("theta", 3, 1, 2)
-    limbs = []
-    for i in range(3):
+
+    def limb(i):
         t1, t2 = theta[i]
         s1 = Z
         s2 = rotz(t1) * X
         s3 = rotz(t1) * rot_axis(X, t2) * Y
-        limb = revolute(s1, O) + revolute(s2, O) + revolute(s3, O)
-        limbs.append(rotate_limb(limb, rotz(2 * sp.pi * i / 3)))
-    return limbs
+        return revolute(s1, O) + revolute(s2, O) + revolute(s3, O)
+
+    return _around_z(limb, 3)
 
 
 def puma560():

@@ -165,23 +165,17 @@ def figure_slider(draw, label, unit=None, values=None, choices=None, value=None)
 
     Parameters
     ----------
-    draw : callable
-        ``draw(v)`` returns a matplotlib Figure or a str.
-    label : str
-        The slider's or drop-down's label.
-    unit : str or None, optional
-        The unit of ``values``.
-    values : list of float, optional
-        A grid from ``viewer.grid``: a slider.
-    choices : list of str, optional
-        Names: a drop-down.
-    value : float or str, optional
-        The first value shown (default: the first).
+    draw, label, unit, values, choices, value
+        As for :func:`screwkit.viewer.stepped_figure`, which makes the page's figures.
 
     Returns
     -------
     LiveFigure
         The control and its figure.
+
+    See Also
+    --------
+    screwkit.viewer.stepped_figure : the same figure without a kernel.
     """
     fallback = viewer.stepped_figure(
         draw, label, unit, values=values, choices=choices, value=value

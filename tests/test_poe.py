@@ -270,7 +270,7 @@ def test_planar_rows_use_the_plane_of_the_chain():
         (
             lambda: sk.Chain.from_screws([[0, 0, 1, 0, 0, 0]], np.eye(3)),
             ValueError,
-            "home must have shape",
+            r"home must be one pose of shape \(4, 4\), got shape \(3, 3\)",
         ),
         (
             lambda: sk.Chain.from_screws([[0, 0, 1, 0, 0, 0]], np.eye(4), frame="bdy"),

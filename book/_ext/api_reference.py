@@ -9,7 +9,8 @@ autodoc writes reStructuredText). It documents, with Sphinx's autodoc and napole
   tomorrow appears without an edit here), with its docstring and every name of its
   ``__all__`` (or, lacking one, every public function and class defined in it).
 
-An object is described once, in full, at its home: the public module that defines it,
+An object is described once, in full, at its home: the public module that defines it
+(its ``__module__``, or for data such as a dict the module whose source assigns it),
 else the first public module that lists it, else the top of the package. Every other
 name for it (``screwkit.NAME`` for what the package exports at the top, a module that
 re-exports it) gets a short entry pointing there, so ``{py:class}`screwkit.Chain``` and
@@ -88,6 +89,31 @@ def public_names(module):
     )
 
 
+def assigned_names(module):
+    """The names a module's source assigns at its top level (where its data is
+    defined: a dict has no ``__module__`` to say so)."""
+    with open(module.__file__, encoding="utf-8") as source:
+        tree = ast.parse(source.read())
+    names = set()
+    for node in tree.body:
+        if isinstance(node, ast.Assign):
+            targets = node.targets
+        elif isinstance(node, ast.AnnAssign):
+            targets = [node.target]
+        else:
+            continue
+        names.update(t.id for t in targets if isinstance(t, ast.Name))
+    return names
+
+
+def defines(module, name, value):
+    """Whether ``module`` is where ``value`` (its ``name``) is defined."""
+    home = getattr(value, "__module__", None)
+    if home is not None:
+        return home == module.__name__
+    return name in assigned_names(module)
+
+
 def kind(value):
     """The autodoc directive and the Python-domain directive for one object."""
     if inspect.isclass(value):
@@ -112,7 +138,7 @@ def plan(package):
     for module in modules:  # the module that defines it, first
         for name in public_names(module):
             value = getattr(module, name)
-            if homed(value) and getattr(value, "__module__", None) == module.__name__:
+            if homed(value) and defines(module, name, value):
                 home.setdefault(id(value), f"{module.__name__}.{name}")
     top = [
         name

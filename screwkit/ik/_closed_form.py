@@ -9,6 +9,8 @@ An engine defines ``_measures(q)``, ``_labels(q)`` (q: float array (..., 6)),
 test calls the public methods below, which check first.
 """
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from .._checks import as_float_array, check_chain, check_integer, check_poses
@@ -40,6 +42,7 @@ def _configurations(q):
     return q
 
 
+@dataclass(frozen=True)
 class ClosedFormArm:
     """The public, checked side of a closed-form engine (see the module docstring).
 
@@ -58,6 +61,11 @@ class ClosedFormArm:
         The arm's size (:func:`arm_scale`, m), the length its tolerances are measured
         against.
     """
+
+    w: np.ndarray
+    p: np.ndarray
+    home: np.ndarray
+    scale: float
 
     @classmethod
     def from_chain(cls, chain, name="chain"):

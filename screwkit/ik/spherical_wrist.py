@@ -135,16 +135,18 @@ def _polar(y, x):
 
 @dataclass(frozen=True)
 class SphericalWristArm(ClosedFormArm):
-    """The geometry of a 6R arm with a spherical wrist, taken from its screws: the
-    fields of :class:`~screwkit.ik._closed_form.ClosedFormArm` and ``c``, shape (3,),
-    the wrist centre where axes 4, 5 and 6 meet (m). Build it with :meth:`from_chain`.
+    """The geometry of a 6R arm with a spherical wrist, taken from its screws (build it
+    with :meth:`from_chain`).
+
+    Parameters
+    ----------
+    w, p, home, scale
+        The fields of :class:`~screwkit.ik._closed_form.ClosedFormArm`.
+    c : ndarray, shape (3,)
+        The wrist centre, where axes 4, 5 and 6 meet (m).
     """
 
-    w: np.ndarray
-    p: np.ndarray
     c: np.ndarray
-    home: np.ndarray
-    scale: float
 
     @classmethod
     def _from_chain(cls, chain, name):

@@ -44,18 +44,22 @@ STRUCTURE = "RRP arm with a spherical wrist (Stanford)"
 
 @dataclass(frozen=True)
 class StanfordArm(ClosedFormArm):
-    """The geometry of an RRP arm with a spherical wrist, from its screws: the fields
-    of :class:`~screwkit.ik._closed_form.ClosedFormArm` (w[2] is the boom's direction
-    v, p[2] is 0), ``o``, shape (3,), where axes 1 and 2 meet, and ``c``, shape (3,),
-    the wrist centre where axes 4, 5 and 6 meet (m). Build it with :meth:`from_chain`.
+    """The geometry of an RRP arm with a spherical wrist, from its screws. Build it
+    with :meth:`from_chain`.
+
+    Parameters
+    ----------
+    w, p, home, scale
+        The fields of :class:`~screwkit.ik._closed_form.ClosedFormArm`; w[2] is the
+        boom's direction v, p[2] is 0.
+    o : ndarray, shape (3,)
+        The point where axes 1 and 2 meet (m).
+    c : ndarray, shape (3,)
+        The wrist centre, where axes 4, 5 and 6 meet (m).
     """
 
-    w: np.ndarray
-    p: np.ndarray
     o: np.ndarray
     c: np.ndarray
-    home: np.ndarray
-    scale: float
 
     structure = STRUCTURE
     #: Which joints are angles (moved by whole turns into limits): all but the boom.

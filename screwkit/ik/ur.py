@@ -61,16 +61,17 @@ def _roots(A, B, C):
 
 @dataclass(frozen=True)
 class URArm(ClosedFormArm):
-    """The geometry of a UR-type arm, from its screws: the fields of
-    :class:`~screwkit.ik._closed_form.ClosedFormArm` and ``c``, shape (3,), the point
-    where axes 5 and 6 meet (m). Build it with :meth:`from_chain`.
+    """The geometry of a UR-type arm, from its screws; :meth:`from_chain` builds it.
+
+    Parameters
+    ----------
+    w, p, home, scale
+        The fields of :class:`~screwkit.ik._closed_form.ClosedFormArm`.
+    c : ndarray, shape (3,)
+        The point where axes 5 and 6 meet (m).
     """
 
-    w: np.ndarray
-    p: np.ndarray
     c: np.ndarray
-    home: np.ndarray
-    scale: float
 
     structure = STRUCTURE
 

@@ -80,13 +80,9 @@ class Legs:
     component first) and return arrays of shape (N, m); exact methods take one pose's
     points as a list of m SymPy 3 x 1 matrices. ``signs`` (m,) holds +1 or -1 per leg,
     the working mode (the sign of each elbow; ignored by legs with one mode).
-
-    Attributes
-    ----------
-    modes : tuple of str
-        Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
     """
 
+    #: Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
     modes = ("",)
 
     def ik(self, C, signs):
@@ -303,6 +299,11 @@ class Revolute(Legs):
         Lengths of the cranks and of the distal links (m).
     spatial : bool
         R-U-U legs (the delta) rather than planar R-R-R.
+
+    Notes
+    -----
+    The actuated values ``rho`` of the :class:`Legs` methods are the crank angles
+    theta (rad).
     """
 
     modes = ("+", "-")
@@ -332,23 +333,23 @@ class Revolute(Legs):
         theta = np.angle(np.exp(1j * theta))
         return np.where(ok, theta, np.nan), ok, None
 
-    def closure(self, C, theta):
-        B, dB = self._crank(theta)
+    def closure(self, C, rho):
+        B, dB = self._crank(rho)
         g = C - B
         r = 0.5 * (_dot(g, g) - self.l2**2) / self.l2
         return r, g / self.l2, -_dot(g, dB) / self.l2
 
-    def rate_rows(self, C, theta):
-        _, g, dr = self.closure(C, theta)
+    def rate_rows(self, C, rho):
+        _, g, dr = self.closure(C, rho)
         with np.errstate(divide="ignore", invalid="ignore"):
             return g / -dr
 
-    def passive(self, C, theta, signs):
-        B, _ = self._crank(theta)
+    def passive(self, C, rho, signs):
+        B, _ = self._crank(rho)
         out = {"elbow": B}
         if not self.spatial:
             w = C - B
-            out["theta2"] = np.angle(np.exp(1j * (np.arctan2(w[1], w[0]) - theta)))
+            out["theta2"] = np.angle(np.exp(1j * (np.arctan2(w[1], w[0]) - rho)))
         return out
 
     def _exact_geometry(self):

@@ -61,7 +61,7 @@ _TYPES = {"spatial": "3T3R", "planar": "2T1R", "translational": "3T"}
 class ParallelIK:
     """Inverse kinematics in full: what ``pm.ik(T, passive=True)`` returns.
 
-    Attributes
+    Parameters
     ----------
     rho : ndarray, shape (m,) or (N, m)
         The actuated joint values (m or rad), NaN where out of reach (or a list of
@@ -70,6 +70,7 @@ class ParallelIK:
         The passive joints by name ('phi', 'u1', 'u2', 'elbow', 'theta2'), each with
         a leading batch axis for a batch of poses.
     reachable : bool or ndarray of bool, shape (N,)
+        Whether every leg reaches the pose within its limits.
     reason : str or list of str
         '' when reachable, else which legs cannot reach or leave their limits.
     mode : str
@@ -87,12 +88,14 @@ class ParallelIK:
 class ParallelFK:
     """Forward kinematics: what ``pm.fk(rho)`` returns.
 
-    Attributes
+    Parameters
     ----------
     T : ndarray, shape (4, 4) or (N, 4, 4)
         The platform pose(s), NaN where Newton did not converge.
     success : bool or ndarray of bool, shape (N,)
+        Whether Newton converged.
     iterations : int or ndarray of int, shape (N,)
+        The Newton steps taken.
     error : float or ndarray, shape (N,)
         The largest loop-closure residual of each pose (m).
     """
@@ -107,10 +110,9 @@ class ParallelFK:
 class Workspace:
     """A constant-orientation workspace on a grid: what ``pm.workspace(x, y)`` returns.
 
-    Attributes
+    Parameters
     ----------
-    x : ndarray, shape (nx,)
-    y : ndarray, shape (ny,)
+    x, y : ndarray, shapes (nx,) and (ny,)
         The grid (m, base frame).
     z : ndarray, shape ()
         Its height (m).
@@ -140,9 +142,15 @@ class ParallelManipulator:
     Built by the catalogue (``sk.parallel.stewart_gough()`` and the others); models are
     immutable.
 
+    Its attributes, besides the parameters: ``m`` (int), the number of legs;
+    ``base_points`` and ``platform_points`` (ndarray, shape (m, 3)), A_i and b_i as
+    floats (m); ``working_modes`` (list of str), the labels ``ik`` accepts as ``mode``;
+    and :attr:`scale`, its size (m).
+
     Parameters
     ----------
     name : str
+        The mechanism's name, for printing.
     legs : Prismatic, Revolute or Linear
         The legs' model (:mod:`screwkit.parallel.legs`): their IK and loop closure.
     base : array-like, shape (m, 3)
@@ -158,18 +166,6 @@ class ParallelManipulator:
         Limits of the actuated joints (m or rad); None for none.
     default_mode : str, optional
         The working mode ``ik`` uses when none is given.
-
-    Attributes
-    ----------
-    m : int
-        The number of legs.
-    base_points, platform_points : ndarray, shape (m, 3)
-        A_i and b_i as floats (m).
-    scale : float
-        The mechanism's size (m): its farthest attachment point from the origin of its
-        frame. Length tolerances are measured against it.
-    working_modes : list of str
-        The labels ``ik`` accepts as ``mode``.
     """
 
     def __init__(
