@@ -19,6 +19,8 @@ dJb_i/dq_j = [Jb_i, Jb_j] for j > i.
 import numpy as np
 import sympy as sp
 
+from . import transforms
+
 __all__ = []
 
 
@@ -40,10 +42,10 @@ def bracket(a, b):
 
 
 def _cross(a, b):
-    """a x b along axis -2 (..., 3, k), written out (cheaper than np.cross there)."""
-    a0, a1, a2 = a[..., 0, :], a[..., 1, :], a[..., 2, :]
-    b0, b1, b2 = b[..., 0, :], b[..., 1, :], b[..., 2, :]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], -2)
+    """a x b along axis -2 (..., 3, k): screwkit's one cross product
+    (:func:`transforms._cross`, laid out (3, ...)) on that axis."""
+    product = transforms._cross(np.moveaxis(a, -2, 0), np.moveaxis(b, -2, 0))
+    return np.moveaxis(product, 0, -2)
 
 
 def _components(J):
