@@ -16,6 +16,8 @@ Fails unless:
   - no chapter's code (its code cells and the code blocks of its prose, such as the
     solutions) imports or uses a private name of screwkit: `screwkit._x`, `sk._x`, or
     `m._x` for a module m imported from screwkit (`parallel._parallel_search`);
+  - no chapter's source contains a symbol that book/notation.md's table "One symbol per
+    concept" lists as not used in this course (its last column);
 and, with --built DIR (the HTML book, e.g. _build/html), unless:
   - no page contains the text "NBVAL";
   - no code line of a code cell (its <pre> block) is longer than 88 characters.
@@ -211,6 +213,42 @@ def _line_number(text_lines, line):
     return "?"
 
 
+NOTATION_PAGE = os.path.join(os.path.dirname(__file__), "..", "book", "notation.md")
+
+
+def notation_alternatives(page=NOTATION_PAGE):
+    """The symbols the notation page lists as not used, as {symbol: concept}.
+
+    They are the code spans of the last column of the table that follows the heading
+    "## One symbol per concept": the page is the one place the list is kept.
+    """
+    with open(page, encoding="utf-8") as handle:
+        text = handle.read()
+    start = text.index("## One symbol per concept")
+    end = text.find("\n## ", start + 1)
+    alternatives = {}
+    for line in text[start : end if end > 0 else None].splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) < 4 or set(cells[0]) <= set("-") or cells[0] == "concept":
+            continue
+        for symbol in re.findall(r"`([^`]+)`", cells[-1]):
+            alternatives[symbol] = cells[0]
+    return alternatives
+
+
+def _notation_uses(source_path, alternatives):
+    """Problems where a chapter writes a symbol the notation page does not use."""
+    with open(source_path, encoding="utf-8") as handle:
+        text_lines = handle.read().splitlines()
+    return [
+        f"{source_path}:{number}: writes {symbol} for the {concept}; book/notation.md "
+        "uses one symbol per concept"
+        for number, line in enumerate(text_lines, 1)
+        for symbol, concept in alternatives.items()
+        if symbol in line
+    ]
+
+
 def check_notebooks(folder):
     """Problems of the chapter sources in `folder`, as sentences (empty: all good)."""
     sources = {os.path.splitext(p)[0] for p in glob.glob(os.path.join(folder, "*.md"))}
@@ -225,7 +263,9 @@ def check_notebooks(folder):
         f"{name}.md has no notebook {name}.ipynb (run `make notebooks`)"
         for name in sorted(sources - notebooks)
     ]
+    alternatives = notation_alternatives()
     for name in sorted(sources):
+        problems += _notation_uses(name + ".md", alternatives)
         if name in notebooks:
             problems += _compare(name + ".md", name + ".ipynb")
             problems += _output_lines(name + ".ipynb")

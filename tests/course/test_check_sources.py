@@ -298,3 +298,29 @@ def test_public_names_dunders_and_other_packages_privates_pass(chapter):
     )
     _write(chapter, SOURCE.replace("x = 1 + 1\n", code + "x = 1 + 1\n"))
     assert check_sources.check_notebooks(str(chapter)) == []
+
+
+def test_the_notation_page_lists_the_alternatives_it_does_not_use():
+    alternatives = check_sources.notation_alternatives()
+    # three ways of writing a joint screw, the DH link transform as A: issue 30's list
+    for symbol in (r"\xi", r"\$", r"{}^{i-1}A_i", r"\operatorname{Ad}"):
+        assert symbol in alternatives
+    assert alternatives[r"\xi"].startswith("screw")
+
+
+@pytest.mark.parametrize(
+    "line, symbol",
+    [
+        (r"The joint screw $\xi_1 = (\omega_1; v_1)$.", r"\xi"),
+        (r"$$ {}^{i-1}A_i = R_z(\theta_i) $$", r"{}^{i-1}A_i"),
+        (r"twists $\$_i$ of the joints", r"\$"),
+    ],
+)
+def test_a_chapter_writing_an_unused_symbol_is_named(chapter, line, symbol):
+    path = chapter / "chapter.md"
+    path.write_text(path.read_text().replace("Some prose.", line))
+    jupytext.write(jupytext.read(path), chapter / "chapter.ipynb")
+    problems = check_sources.check_notebooks(str(chapter))
+    assert len(problems) == 1, problems
+    assert f"chapter.md:15: writes {symbol} for the" in problems[0]
+    assert "book/notation.md" in problems[0]
