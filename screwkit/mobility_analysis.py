@@ -179,7 +179,7 @@ class Mobility:
         rows = []
         for title, prefix, systems in steps:
             tables = "".join(
-                '<td style="vertical-align:top">'
+                '<td style="vertical-align:top;padding-right:1.5em">'
                 + html_table(
                     s.basis(),
                     (f"{prefix} {i}: " if prefix else "") + f"{s.noun} {s.rank}-system",

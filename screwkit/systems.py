@@ -361,7 +361,8 @@ class ScrewSystem:
         return len(self.screws)
 
     def __repr__(self):
-        return f"ScrewSystem({len(self.screws)} {self.noun}s, rank {self.rank})"
+        plural = "es" if self.noun.endswith("ch") else "s"
+        return f"ScrewSystem({len(self.screws)} {self.noun}{plural}, rank {self.rank})"
 
     def summary(self):
         """The system as plain text.
@@ -399,18 +400,37 @@ def _cell(entry):
     return f"<math>{sp.mathml(entry, printer='presentation')}</math>"
 
 
+def _bracket_style(column, last, row):
+    """A cell's style: centred, spaced, with a matrix bracket on the outer columns."""
+    style = ["text-align:center", "padding:0.1em 0.7em"]
+    for side, outer in (("left", column == 0), ("right", column == last)):
+        if outer:
+            style.append(f"border-{side}:1.5px solid")
+            if row in (0, 5):
+                style.append(f"border-{'top' if row == 0 else 'bottom'}:1.5px solid")
+    return ";".join(style)
+
+
 def html_table(screws, caption):
     """The screws as an HTML table (one column per screw, MathML entries) under
-    ``caption``."""
-    head = f'<table class="screwkit-system"><caption>{caption}</caption>'
+    ``caption``, framed by the brackets of a matrix."""
+    head = (
+        '<table class="screwkit-system" style="border-collapse:separate;'
+        'border-spacing:0;margin:0.4em 0">'
+        f'<caption style="white-space:nowrap;text-align:left">{caption}</caption>'
+    )
     if not screws:
         return head + "<tr><td>(no screw: the zero system)</td></tr></table>"
     angular, linear = _HEADERS[type(screws[0])]
     rows = []
+    last = len(screws) - 1
     for k in range(6):
         label = f"{angular if k < 3 else linear}<sub>{'xyz'[k % 3]}</sub>"
         cells = "".join(
-            f'<td style="text-align:center">{_cell(s.vector[k])}</td>' for s in screws
+            f'<td style="{_bracket_style(j, last, k)}">{_cell(s.vector[k])}</td>'
+            for j, s in enumerate(screws)
         )
-        rows.append(f"<tr><th>{label}</th>{cells}</tr>")
+        rows.append(
+            f'<tr><th style="padding:0.1em 0.6em 0.1em 0">{label}</th>{cells}</tr>'
+        )
     return head + "".join(rows) + "</table>"

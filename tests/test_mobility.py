@@ -318,7 +318,7 @@ def test_typeset_results_keep_the_plain_text_for_terminals():
     assert repr(m) == "Mobility(3, '3T', ['Tx', 'Ty', 'Tz'])"
     html = m._repr_html_()
     assert (
-        html.count('<table class="screwkit-system">') == 3 + 3 + 2
+        html.count('<table class="screwkit-system"') == 3 + 3 + 2
         and "Mobility 3 (3T)" in html
     )
     latex = m._repr_latex_()
