@@ -166,45 +166,41 @@ def geometric_dot_rows(C, rates):
     return out
 
 
-def space_hessian(Js):
-    """H[j, :, i] = dJs_i/dq_j = [J_j, J_i] for j < i, else 0: (..., n, 6, n)."""
-    if isinstance(Js, sp.MatrixBase):
-        n = Js.shape[1]
+def _ordered_brackets(J, after):
+    """Blocks H[j] (6, n) whose column i is [J_min(i,j), J_max(i,j)], the bracket of
+    the earlier column with the later one, where column i comes after column j
+    (``after``, the space form) or before it (the body form), else 0: (..., n, 6, n),
+    or a list of n SymPy (6, n) matrices."""
+    if isinstance(J, sp.MatrixBase):
+        n = J.shape[1]
         return [
             sp.Matrix.hstack(
                 *[
-                    bracket(Js[:, j], Js[:, i]) if j < i else sp.zeros(6, 1)
+                    bracket(J[:, min(i, j)], J[:, max(i, j)])
+                    if (i > j if after else i < j)
+                    else sp.zeros(6, 1)
                     for i in range(n)
                 ]
             )
             for j in range(n)
         ]
-    n = Js.shape[-1]
-    shape = Js.shape[:-2] + (n, 6, n)
-    row_j = np.broadcast_to(Js.swapaxes(-1, -2)[..., :, :, None], shape)
-    column_i = np.broadcast_to(Js[..., None, :, :], shape)
-    H = bracket(row_j, column_i)
-    return H * np.triu(np.ones((n, n)), 1)[:, None, :]
+    n = J.shape[-1]
+    shape = J.shape[:-2] + (n, 6, n)
+    row_j = np.broadcast_to(J.swapaxes(-1, -2)[..., :, :, None], shape)
+    column_i = np.broadcast_to(J[..., None, :, :], shape)
+    if after:
+        return bracket(row_j, column_i) * np.triu(np.ones((n, n)), 1)[:, None, :]
+    return bracket(column_i, row_j) * np.tril(np.ones((n, n)), -1)[:, None, :]
+
+
+def space_hessian(Js):
+    """H[j, :, i] = dJs_i/dq_j = [J_j, J_i] for j < i, else 0: (..., n, 6, n)."""
+    return _ordered_brackets(Js, after=True)
 
 
 def body_hessian(Jb):
     """H[j, :, i] = dJb_i/dq_j = [Jb_i, Jb_j] for j > i, else 0: (..., n, 6, n)."""
-    if isinstance(Jb, sp.MatrixBase):
-        n = Jb.shape[1]
-        return [
-            sp.Matrix.hstack(
-                *[
-                    bracket(Jb[:, i], Jb[:, j]) if j > i else sp.zeros(6, 1)
-                    for i in range(n)
-                ]
-            )
-            for j in range(n)
-        ]
-    n = Jb.shape[-1]
-    shape = Jb.shape[:-2] + (n, 6, n)
-    row_j = np.broadcast_to(Jb.swapaxes(-1, -2)[..., :, :, None], shape)
-    column_i = np.broadcast_to(Jb[..., None, :, :], shape)
-    return bracket(column_i, row_j) * np.tril(np.ones((n, n)), -1)[:, None, :]
+    return _ordered_brackets(Jb, after=False)
 
 
 def geometric_hessian(Jg):

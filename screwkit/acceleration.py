@@ -33,6 +33,7 @@ from ._checks import (
     describe,
     is_symbolic,
 )
+from ._docstrings import fill
 from .lie import adjoint
 from .links import decimal
 from .transforms import inv
@@ -122,202 +123,184 @@ def _float_rates(chain, q, dq, ddq=None):
     return q, dq, ddq
 
 
+# The parameters and returns each family of functions shares, written once.
+_Q = "q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries"
+_DQ = "dq : array-like, the shape of q, joint rates (rad/s, m/s); or n SymPy entries"
+_Q_DQ_DDQ = (
+    "q, dq, ddq : array-like, shape (n,) or (N, n) each: joint values, rates and\n"
+    "    accelerations (rad, rad/s, rad/s^2; m for prismatic joints); or SymPy entries"
+)
+
+
+def _sections(parameters, returns):
+    """A Parameters section (the chain first) and a Returns section."""
+    return (
+        f"Parameters\n----------\nchain : Chain\n{parameters}\n\n"
+        f"Returns\n-------\n{returns}"
+    )
+
+
+def _dot_sections(layout):
+    """The sections of a Jacobian's time derivative, its columns laid out so."""
+    return _sections(
+        f"{_Q}\n{_DQ}",
+        f"ndarray, shape (6, n) or (N, 6, n), {layout} per second;\n"
+        "sympy.Matrix (6, n) for exact input",
+    )
+
+
+_HESSIAN_SECTIONS = _sections(
+    _Q,
+    "ndarray, shape (n, 6, n) or (N, n, 6, n); for exact input a list of n SymPy\n"
+    "(6, n) matrices H[j]",
+)
+
+
+def _acceleration_sections(entries):
+    """The sections of an end-effector acceleration, its six entries named so."""
+    return _sections(
+        _Q_DQ_DDQ,
+        f"ndarray, shape (6,) or (N, 6), {entries};\n"
+        "sympy.Matrix (6, 1) for exact input",
+    )
+
+
+def _exact_jacobian(Js, T, form):
+    """The exact Jacobian of a form, 'space', 'body' or 'geometric', from the space
+    one Js and the pose T."""
+    if form == "space":
+        return Js
+    if form == "body":
+        return _body_exact(Js, T)
+    return _geometric_exact(Js, T)
+
+
+#: The second-order kernels of each form: the time derivative and the Hessian.
+_DOT = {
+    "space": _second_order.space_dot,
+    "body": _second_order.body_dot,
+    "geometric": _second_order.geometric_dot,
+}
+_HESSIAN = {
+    "space": _second_order.space_hessian,
+    "body": _second_order.body_hessian,
+    "geometric": _second_order.geometric_hessian,
+}
+
+
+def _jacobian_dot(chain, form, q, dq):
+    """dJ/dt of a form, exact for SymPy input, else the chain's own (float) method."""
+    check_chain(chain)
+    if _exact(q, dq):
+        Js, T, values = _exact_parts(chain, q)
+        dq = _exact_vector(chain, dq, "dq")
+        return _at(_DOT[form](_exact_jacobian(Js, T, form), dq), values)
+    return getattr(chain, f"{form}_jacobian_dot")(q, dq)
+
+
+def _hessian(chain, form, q):
+    """The Hessian of a form, exact for SymPy input, else the chain's own method."""
+    check_chain(chain)
+    if _exact(q):
+        Js, T, values = _exact_parts(chain, q)
+        return _at(_HESSIAN[form](_exact_jacobian(Js, T, form)), values)
+    return getattr(chain, f"{form}_hessian")(q)
+
+
+def _end_acceleration(chain, form, q, dq, ddq):
+    """J ddq + dJ dq of a form: exactly, in the joint symbols with q put in last, for
+    SymPy input; else with the chain's float Jacobian and its derivative."""
+    check_chain(chain)
+    if _exact(q, dq, ddq):
+        Js, T, values = _exact_parts(chain, q)
+        dq = _exact_vector(chain, dq, "dq")
+        ddq = sp.Matrix(_exact_vector(chain, ddq, "ddq"))
+        J = _exact_jacobian(Js, T, form)
+        return _at(J * ddq + _DOT[form](J, dq) * sp.Matrix(dq), values)
+    q, dq, ddq = _float_rates(chain, q, dq, ddq)
+    J = getattr(chain, f"{form}_jacobian")(q)
+    dJ = getattr(chain, f"{form}_jacobian_dot")(q, dq)
+    product = "...ij,...j->...i"
+    return np.einsum(product, J, ddq) + np.einsum(product, dJ, dq)
+
+
+@fill(sections=_dot_sections("columns [omega; v]"))
 def space_jacobian_dot(chain, q, dq):
     """The time derivative of the space Jacobian, column i = [W_i, J_i].
 
-    Parameters
-    ----------
-    chain : Chain
-    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
-    dq : array-like, the shape of q, joint rates (rad/s, m/s); or n SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second;
-    sympy.Matrix (6, n) for exact input
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q, dq):
-        Js, _, values = _exact_parts(chain, q)
-        dq = _exact_vector(chain, dq, "dq")
-        return _at(_second_order.space_dot(Js, dq), values)
-    return chain.space_jacobian_dot(q, dq)
+    return _jacobian_dot(chain, "space", q, dq)
 
 
+@fill(sections=_dot_sections("columns [omega; v]"))
 def body_jacobian_dot(chain, q, dq):
     """The time derivative of the body Jacobian, column i = [Jb_i, Wb_i], Wb_i the
     sum of Jb_j dq_j over j > i.
 
-    Parameters
-    ----------
-    chain : Chain
-    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
-    dq : array-like, the shape of q, joint rates (rad/s, m/s); or n SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second;
-    sympy.Matrix (6, n) for exact input
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q, dq):
-        Js, T, values = _exact_parts(chain, q)
-        dq = _exact_vector(chain, dq, "dq")
-        return _at(_second_order.body_dot(_body_exact(Js, T), dq), values)
-    return chain.body_jacobian_dot(q, dq)
+    return _jacobian_dot(chain, "body", q, dq)
 
 
+@fill(sections=_dot_sections("rows [v; omega]"))
 def geometric_jacobian_dot(chain, q, dq):
     """The time derivative of the geometric Jacobian (rows [v; omega] of the end
     point), as the Robotics Toolbox's ``jacob0_dot``.
 
-    Parameters
-    ----------
-    chain : Chain
-    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
-    dq : array-like, the shape of q, joint rates (rad/s, m/s); or n SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n), rows [v; omega] per second;
-    sympy.Matrix (6, n) for exact input
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q, dq):
-        Js, T, values = _exact_parts(chain, q)
-        dq = _exact_vector(chain, dq, "dq")
-        return _at(_second_order.geometric_dot(_geometric_exact(Js, T), dq), values)
-    return chain.geometric_jacobian_dot(q, dq)
+    return _jacobian_dot(chain, "geometric", q, dq)
 
 
+@fill(sections=_HESSIAN_SECTIONS)
 def space_hessian(chain, q):
     """The Hessian of the space Jacobian, H[j, :, i] = dJ_i/dq_j = [J_j, J_i] (j < i).
 
-    Parameters
-    ----------
-    chain : Chain
-    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (n, 6, n) or (N, n, 6, n); for exact input a list of n SymPy
-    (6, n) matrices H[j]
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q):
-        Js, _, values = _exact_parts(chain, q)
-        return _at(_second_order.space_hessian(Js), values)
-    return chain.space_hessian(q)
+    return _hessian(chain, "space", q)
 
 
+@fill(sections=_HESSIAN_SECTIONS)
 def body_hessian(chain, q):
     """The Hessian of the body Jacobian, H[j, :, i] = dJb_i/dq_j = [Jb_i, Jb_j]
     (j > i).
 
-    Parameters
-    ----------
-    chain : Chain
-    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (n, 6, n) or (N, n, 6, n); for exact input a list of n SymPy
-    (6, n) matrices H[j]
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q):
-        Js, T, values = _exact_parts(chain, q)
-        return _at(_second_order.body_hessian(_body_exact(Js, T)), values)
-    return chain.body_hessian(q)
+    return _hessian(chain, "body", q)
 
 
+@fill(sections=_HESSIAN_SECTIONS)
 def geometric_hessian(chain, q):
     """The Hessian of the geometric Jacobian, H[j, :, i] = dJ_i/dq_j, rows [v; omega]
     (the Robotics Toolbox's ``hessian0``).
 
-    Parameters
-    ----------
-    chain : Chain
-    q : array-like, shape (n,) or (N, n), joint values (rad, m); or n SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (n, 6, n) or (N, n, 6, n); for exact input a list of n SymPy
-    (6, n) matrices H[j]
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q):
-        Js, T, values = _exact_parts(chain, q)
-        return _at(_second_order.geometric_hessian(_geometric_exact(Js, T)), values)
-    return chain.geometric_hessian(q)
+    return _hessian(chain, "geometric", q)
 
 
-def _acceleration(chain, q, dq, ddq, jacobian, jacobian_dot):
-    q, dq, ddq = _float_rates(chain, q, dq, ddq)
-    product = "...ij,...j->...i"
-    return np.einsum(product, jacobian(q), ddq) + np.einsum(
-        product, jacobian_dot(q, dq), dq
-    )
-
-
-def _exact_acceleration(chain, q, dq, ddq, form):
-    """J ddq + dJ dq exactly, in the joint symbols, q put in last."""
-    Js, T, values = _exact_parts(chain, q)
-    dq = _exact_vector(chain, dq, "dq")
-    ddq = sp.Matrix(_exact_vector(chain, ddq, "ddq"))
-    if form == "space":
-        J, dJ = Js, _second_order.space_dot(Js, dq)
-    elif form == "body":
-        J = _body_exact(Js, T)
-        dJ = _second_order.body_dot(J, dq)
-    else:
-        J = _geometric_exact(Js, T)
-        dJ = _second_order.geometric_dot(J, dq)
-    return _at(J * ddq + dJ * sp.Matrix(dq), values)
-
-
+@fill(sections=_acceleration_sections("[d omega/dt; dv/dt]"))
 def space_acceleration(chain, q, dq, ddq):
     """The derivative of the end effector's space twist, dV_s/dt = J_s ddq + dJ_s dq.
 
-    Parameters
-    ----------
-    chain : Chain
-    q, dq, ddq : array-like, shape (n,) or (N, n) each: joint values, rates and
-        accelerations (rad, rad/s, rad/s^2; m for prismatic joints); or SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (6,) or (N, 6), [d omega/dt; dv/dt]; sympy.Matrix (6, 1) exact
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q, dq, ddq):
-        return _exact_acceleration(chain, q, dq, ddq, "space")
-    return _acceleration(
-        chain, q, dq, ddq, chain.space_jacobian, chain.space_jacobian_dot
-    )
+    return _end_acceleration(chain, "space", q, dq, ddq)
 
 
+@fill(sections=_acceleration_sections("[d omega_b/dt; dv_b/dt]"))
 def body_acceleration(chain, q, dq, ddq):
     """The derivative of the end effector's body twist, dV_b/dt = J_b ddq + dJ_b dq.
 
-    Parameters
-    ----------
-    chain : Chain
-    q, dq, ddq : array-like, shape (n,) or (N, n) each: joint values, rates and
-        accelerations (rad, rad/s, rad/s^2; m for prismatic joints); or SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (6,) or (N, 6), [d omega_b/dt; dv_b/dt]; sympy.Matrix (6, 1) exact
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q, dq, ddq):
-        return _exact_acceleration(chain, q, dq, ddq, "body")
-    return _acceleration(
-        chain, q, dq, ddq, chain.body_jacobian, chain.body_jacobian_dot
-    )
+    return _end_acceleration(chain, "body", q, dq, ddq)
 
 
+@fill(sections=_acceleration_sections("[a (m/s^2); alpha (rad/s^2)]"))
 def geometric_acceleration(chain, q, dq, ddq):
     """The end point's linear acceleration and the angular acceleration, in the base
     frame: [a; alpha] = J ddq + dJ dq with the geometric Jacobian (rows [v; omega]).
@@ -325,20 +308,6 @@ def geometric_acceleration(chain, q, dq, ddq):
     ``a`` is the second derivative of the end point's position (centripetal and
     Coriolis terms included), which the space twist's derivative is not.
 
-    Parameters
-    ----------
-    chain : Chain
-    q, dq, ddq : array-like, shape (n,) or (N, n) each: joint values, rates and
-        accelerations (rad, rad/s, rad/s^2; m for prismatic joints); or SymPy entries
-
-    Returns
-    -------
-    ndarray, shape (6,) or (N, 6), [a (m/s^2); alpha (rad/s^2)]; sympy.Matrix (6, 1)
-    for exact input
+    {sections}
     """
-    check_chain(chain)
-    if _exact(q, dq, ddq):
-        return _exact_acceleration(chain, q, dq, ddq, "geometric")
-    return _acceleration(
-        chain, q, dq, ddq, chain.geometric_jacobian, chain.geometric_jacobian_dot
-    )
+    return _end_acceleration(chain, "geometric", q, dq, ddq)

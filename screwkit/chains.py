@@ -42,6 +42,7 @@ from ._checks import (
     describe,
     is_symbolic,
 )
+from ._docstrings import fill
 from ._notation import textbook
 from .ik import newton as _newton
 from .lie import adjoint
@@ -77,6 +78,29 @@ ROWS = {
     "orientation": slice(3, 6),
     "planar": slice(0, 2),
 }
+
+#: Docstring passages the methods share (filled in by :func:`_docstrings.fill`): the
+#: Parameters section of the methods taking joint values only, and the sections of the
+#: second-order methods.
+_Q_PARAMETERS = """Parameters
+----------
+q : array-like, shape (n,) or (N, n)
+    Joint values (rad or m)."""
+_DOT_SECTIONS = """Parameters
+----------
+q : array-like, shape (n,) or (N, n), joint values (rad, m)
+dq : array-like, the shape of q, joint rates
+
+Returns
+-------
+ndarray, shape (6, n) or (N, 6, n), {layout} per second"""
+_HESSIAN_SECTIONS = """Parameters
+----------
+q : array-like, shape (n,) or (N, n), joint values (rad, m)
+
+Returns
+-------
+ndarray, shape (n, 6, n) or (N, n, 6, n)"""
 
 
 def check_rows(rows):
@@ -576,13 +600,11 @@ class Chain(ChainType):
             )
         return q
 
+    @fill(parameters=_Q_PARAMETERS)
     def within_limits(self, q):
         """Whether every joint of q lies within its limits.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
+        {parameters}
 
         Returns
         -------
@@ -972,13 +994,11 @@ class Chain(ChainType):
             return _compiled.evaluate(function, q + offsets)
         return _compiled.evaluate_batch(function, q + offsets, out, rows)
 
+    @fill(parameters=_Q_PARAMETERS)
     def fk(self, q):
         """The end-effector pose.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
+        {parameters}
 
         Returns
         -------
@@ -997,6 +1017,7 @@ class Chain(ChainType):
             2, 0, 1
         )  # a view: each entry was computed as one contiguous row
 
+    @fill(parameters=_Q_PARAMETERS)
     def frames(self, q):
         """The base frame and every link frame.
 
@@ -1005,10 +1026,7 @@ class Chain(ChainType):
         (a point of it, moved by joints 1..k), frame 0 has the base's orientation, and
         the last frame is the end effector.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
+        {parameters}
 
         Returns
         -------
@@ -1046,6 +1064,7 @@ class Chain(ChainType):
             values[-12:].reshape((3, 4) + values.shape[1:]),
         )
 
+    @fill(parameters=_Q_PARAMETERS)
     def joint_axes(self, q):
         """Direction z_i and a point o_i of every joint axis in the base frame.
 
@@ -1053,10 +1072,7 @@ class Chain(ChainType):
         through its origin. A prismatic joint's direction is its translation; its point
         is for drawing.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
+        {parameters}
 
         Returns
         -------
@@ -1090,6 +1106,7 @@ class Chain(ChainType):
 
         return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
+    @fill(parameters=_Q_PARAMETERS)
     def space_jacobian(self, q):
         """The space Jacobian, columns [omega; v].
 
@@ -1098,10 +1115,7 @@ class Chain(ChainType):
         (v is the velocity of the body point at the base origin), (0; z_i) for a
         prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
+        {parameters}
 
         Returns
         -------
@@ -1110,6 +1124,7 @@ class Chain(ChainType):
         """
         return self._generated_jacobian(q, "space")
 
+    @fill(parameters=_Q_PARAMETERS)
     def geometric_jacobian(self, q):
         """The geometric Jacobian, rows [v; omega].
 
@@ -1117,10 +1132,7 @@ class Chain(ChainType):
         (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint
         and (z_i; 0) for a prismatic one.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
+        {parameters}
 
         Returns
         -------
@@ -1129,16 +1141,14 @@ class Chain(ChainType):
         """
         return self._generated_jacobian(q, "geometric")
 
+    @fill(parameters=_Q_PARAMETERS)
     def body_jacobian(self, q):
         """The body Jacobian, columns [omega; v].
 
         Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
         (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
+        {parameters}
 
         Returns
         -------
@@ -1337,54 +1347,44 @@ class Chain(ChainType):
             )
         return q, dq
 
-    def _jacobian_rows_batch_last(self, outputs, q):
-        """The generated Jacobian 'space' or 'geometric' of a batch q (N, n), laid
-        out (6, n, N) as computed: each entry contiguous over the batch (no
-        transpose, no copy)."""
+    def _generated_jacobian_dot(self, outputs, q, dq):
+        """dJ/dt of a generated Jacobian, 'space' or 'geometric', at rates dq.
+
+        A batch q (N, n) is worked on laid out (6, n, N) as the generated code computes
+        it, each entry contiguous over the batch (no transpose, no copy)."""
+        q, dq = self._rates(q, dq)
+        dot = getattr(_second_order, f"{outputs}_dot")  # space_dot, geometric_dot
+        dot_rows = getattr(_second_order, f"{outputs}_dot_rows")
+        if q.ndim == 1:
+            return dot(self._generated_jacobian(q, outputs), dq)
         values = np.empty((6 * self.n, q.shape[0]))
         self._run(outputs, q, range(6 * self.n), values)
-        return values.reshape(6, self.n, -1)
+        rows = values.reshape(6, self.n, -1)
+        return _second_order.batch_first(dot_rows(rows, np.ascontiguousarray(dq.T)))
 
+    @fill(sections=_DOT_SECTIONS.format(layout="columns [omega; v]"))
     def space_jacobian_dot(self, q, dq):
         """The time derivative of the space Jacobian at joint rates dq (rad/s, m/s).
 
         Column i is the bracket [W_i, J_i] of joint i's twist with W_i, the sum of
         J_j dq_j over the joints j < i before it (the twist of link i - 1).
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n), joint values (rad, m)
-        dq : array-like, the shape of q, joint rates
-
-        Returns
-        -------
-        ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second
+        {sections}
         """
-        q, dq = self._rates(q, dq)
-        if q.ndim == 1:
-            return _second_order.space_dot(self.space_jacobian(q), dq)
-        rows = self._jacobian_rows_batch_last("space", q)
-        return _second_order.batch_first(
-            _second_order.space_dot_rows(rows, np.ascontiguousarray(dq.T))
-        )
+        return self._generated_jacobian_dot("space", q, dq)
 
+    @fill(sections=_DOT_SECTIONS.format(layout="columns [omega; v]"))
     def body_jacobian_dot(self, q, dq):
         """The time derivative of the body Jacobian at joint rates dq.
 
         Column i is [Jb_i, Wb_i], Wb_i the sum of Jb_j dq_j over the joints j > i.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n), joint values (rad, m)
-        dq : array-like, the shape of q, joint rates
-
-        Returns
-        -------
-        ndarray, shape (6, n) or (N, 6, n), columns [omega; v] per second
+        {sections}
         """
         q, dq = self._rates(q, dq)
         return _second_order.body_dot(self.body_jacobian(q), dq)
 
+    @fill(sections=_DOT_SECTIONS.format(layout="rows [v; omega]"))
     def geometric_jacobian_dot(self, q, dq):
         """The time derivative of the geometric Jacobian at joint rates dq.
 
@@ -1392,65 +1392,37 @@ class Chain(ChainType):
         the sum of w_j dq_j over the joints j < i and S_i that of u_j dq_j over
         j >= i (the brackets of the space form moved to the end point).
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n), joint values (rad, m)
-        dq : array-like, the shape of q, joint rates
-
-        Returns
-        -------
-        ndarray, shape (6, n) or (N, 6, n), rows [v; omega] per second
+        {sections}
         """
-        q, dq = self._rates(q, dq)
-        if q.ndim == 1:
-            return _second_order.geometric_dot(self.geometric_jacobian(q), dq)
-        rows = self._jacobian_rows_batch_last("geometric", q)
-        return _second_order.batch_first(
-            _second_order.geometric_dot_rows(rows, np.ascontiguousarray(dq.T))
-        )
+        return self._generated_jacobian_dot("geometric", q, dq)
 
+    @fill(sections=_HESSIAN_SECTIONS)
     def space_hessian(self, q):
         """The kinematic Hessian of the space Jacobian, H[j, :, i] = dJ_i/dq_j.
 
         dJ_i/dq_j = [J_j, J_i] for j < i and 0 otherwise; dJ/dt = sum_j H[j] dq_j.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n), joint values (rad, m)
-
-        Returns
-        -------
-        ndarray, shape (n, 6, n) or (N, n, 6, n)
+        {sections}
         """
         return _second_order.space_hessian(self.space_jacobian(self.check_q(q)))
 
+    @fill(sections=_HESSIAN_SECTIONS)
     def body_hessian(self, q):
         """The kinematic Hessian of the body Jacobian, H[j, :, i] = dJb_i/dq_j.
 
         dJb_i/dq_j = [Jb_i, Jb_j] for j > i and 0 otherwise.
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n), joint values (rad, m)
-
-        Returns
-        -------
-        ndarray, shape (n, 6, n) or (N, n, 6, n)
+        {sections}
         """
         return _second_order.body_hessian(self.body_jacobian(self.check_q(q)))
 
+    @fill(sections=_HESSIAN_SECTIONS)
     def geometric_hessian(self, q):
         """The kinematic Hessian of the geometric Jacobian, H[j, :, i] = dJ_i/dq_j.
 
         Rows [v; omega], as the Robotics Toolbox's ``hessian0``; its rows v are
         symmetric in i and j (they are the second derivatives of the end point).
 
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n), joint values (rad, m)
-
-        Returns
-        -------
-        ndarray, shape (n, 6, n) or (N, n, 6, n)
+        {sections}
         """
         return _second_order.geometric_hessian(self.geometric_jacobian(self.check_q(q)))

@@ -32,6 +32,7 @@ import sympy as sp
 
 from ._checks import as_sympy_matrix, check_chain, check_flag, describe
 from ._compiled import in_chunks
+from ._docstrings import fill
 
 # ROWS re-exported: sk.jacobians.ROWS
 from .chains import ROWS, check_rows  # noqa: F401
@@ -53,14 +54,35 @@ __all__ = [
     "ellipsoid",
 ]
 
+#: Docstring passages the functions share (filled in by :func:`_docstrings.fill`).
+_CHAIN_Q = """Parameters
+----------
+chain, q
+    The chain and its joint values (module docstring)."""
+_CHAIN_Q_ROWS = """Parameters
+----------
+chain, q, rows
+    The chain, its joint values and the rows of J (module docstring)."""
+_CHAIN_ONE_Q = """chain : Chain
+    The serial chain.
+q : array-like, shape (n,)
+    One configuration (rad or m)."""
+_JACOBIAN_SECTIONS = f"""{_CHAIN_Q}
 
+Returns
+-------
+ndarray, shape (6, n) or (N, 6, n)
+    The Jacobian(s)."""
+_GEOMETRIC_SECTIONS = _JACOBIAN_SECTIONS.replace(
+    "Jacobian(s).", "Jacobian(s), base frame, end-effector point."
+)
+
+
+@fill(parameters=_CHAIN_Q)
 def joint_axes(chain, q):
     """Direction z_i and a point o_i of every joint axis in the base frame.
 
-    Parameters
-    ----------
-    chain, q
-        The chain and its joint values (module docstring).
+    {parameters}
 
     Returns
     -------
@@ -70,6 +92,7 @@ def joint_axes(chain, q):
     return check_chain(chain).joint_axes(q)
 
 
+@fill(sections=_JACOBIAN_SECTIONS)
 def space_jacobian(chain, q):
     """The space Jacobian, columns [omega; v].
 
@@ -78,19 +101,12 @@ def space_jacobian(chain, q):
     the base origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a
     helical one of pitch h.
 
-    Parameters
-    ----------
-    chain, q
-        The chain and its joint values (module docstring).
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s).
+    {sections}
     """
     return check_chain(chain).space_jacobian(q)
 
 
+@fill(sections=_GEOMETRIC_SECTIONS)
 def geometric_jacobian(chain, q):
     """The geometric Jacobian, rows [v; omega].
 
@@ -98,38 +114,24 @@ def geometric_jacobian(chain, q):
     (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint and
     (z_i; 0) for a prismatic one.
 
-    Parameters
-    ----------
-    chain, q
-        The chain and its joint values (module docstring).
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s), base frame, end-effector point.
+    {sections}
     """
     return check_chain(chain).geometric_jacobian(q)
 
 
+@fill(sections=_JACOBIAN_SECTIONS)
 def body_jacobian(chain, q):
     """The body Jacobian, columns [omega; v].
 
     Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
 
-    Parameters
-    ----------
-    chain, q
-        The chain and its joint values (module docstring).
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s).
+    {sections}
     """
     return check_chain(chain).body_jacobian(q)
 
 
+@fill(chain_q=_CHAIN_ONE_Q)
 def numerical_jacobian(chain, q, h=FD_STEP):
     """The geometric Jacobian of one configuration by central differences of FK.
 
@@ -139,10 +141,7 @@ def numerical_jacobian(chain, q, h=FD_STEP):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,)
-        One configuration (rad or m).
+    {chain_q}
     h : float, optional
         The step (rad or m), positive.
 
@@ -287,13 +286,11 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
 # ---- numbers from the Jacobian -------------------------------------------------------
 
 
+@fill(parameters=_CHAIN_Q)
 def singular_values(chain, q, rows="all"):
     """Singular values of the geometric Jacobian's rows, largest first.
 
-    Parameters
-    ----------
-    chain, q
-        The chain and its joint values (module docstring).
+    {parameters}
     rows : {'all', 'position', 'orientation', 'planar'}, optional
         The rows of J used (see the module's docstring).
 
@@ -305,6 +302,7 @@ def singular_values(chain, q, rows="all"):
     return check_chain(chain).singular_values(q, rows)
 
 
+@fill(parameters=_CHAIN_Q_ROWS)
 def manipulability(chain, q, rows="all"):
     """Yoshikawa's manipulability, the product of the singular values: () or (N,).
 
@@ -314,10 +312,7 @@ def manipulability(chain, q, rows="all"):
     With rows='all' the product mixes metres and radians; 'position' gives the volume
     factor of the velocity ellipsoid in m/s.
 
-    Parameters
-    ----------
-    chain, q, rows
-        The chain, its joint values and the rows of J (module docstring).
+    {parameters}
 
     Returns
     -------
@@ -327,13 +322,11 @@ def manipulability(chain, q, rows="all"):
     return check_chain(chain).manipulability(q, rows)
 
 
+@fill(parameters=_CHAIN_Q_ROWS)
 def condition_number(chain, q, rows="all"):
     """The condition number sigma_max / sigma_min of the Jacobian's rows.
 
-    Parameters
-    ----------
-    chain, q, rows
-        The chain, its joint values and the rows of J (module docstring).
+    {parameters}
 
     Returns
     -------
@@ -346,13 +339,11 @@ def condition_number(chain, q, rows="all"):
         return np.where(singular, np.inf, sigma[..., 0] / sigma[..., -1])[()]
 
 
+@fill(parameters=_CHAIN_Q_ROWS)
 def rank(chain, q, rows="all"):
     """The rank of the Jacobian's rows (NumPy's tolerance).
 
-    Parameters
-    ----------
-    chain, q, rows
-        The chain, its joint values and the rows of J (module docstring).
+    {parameters}
 
     Returns
     -------
@@ -368,6 +359,7 @@ def rank(chain, q, rows="all"):
     return part(q) if q.ndim == 1 else in_chunks(q, part)
 
 
+@fill(chain_q=_CHAIN_ONE_Q)
 def ellipsoid(chain, q, rows="position"):
     """The manipulability ellipsoid {J qdot : |qdot| <= 1} of one configuration q (n,).
 
@@ -375,10 +367,7 @@ def ellipsoid(chain, q, rows="position"):
 
     Parameters
     ----------
-    chain : Chain
-        The serial chain.
-    q : array-like, shape (n,)
-        One configuration (rad or m).
+    {chain_q}
     rows : {'position', 'orientation'}, optional
         Which ellipsoid: of the point's velocity or of the angular velocity.
 

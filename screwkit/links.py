@@ -18,6 +18,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import as_float_array, check_poses, describe, real_number
+from ._docstrings import fill
 from .screws import Screw
 from .tolerances import QUARTER_TURN_TOL, UNIT_SCREW_TOL, ZERO_TOL
 from .transforms import _cross
@@ -52,6 +53,22 @@ def check_convention(convention):
             f"{convention!r}"
         )
     return convention
+
+
+def _link_sections(joint, unit):
+    """The end of Link.revolute's and Link.prismatic's docstrings: the parameters they
+    share and the Returns section, for a joint variable q in ``unit``."""
+    return f"""alpha : number or SymPy expression, optional
+    The DH twist (rad).
+offset : number or SymPy expression, optional
+    Added to q ({unit}).
+qlim : (float, float) or None, optional
+    (min, max) of q ({unit}), or None for no limit.
+
+Returns
+-------
+Link
+    The link, ``joint=Joint.{joint}``."""
 
 
 def _check_parameter(value, name):
@@ -119,6 +136,7 @@ class Link:
         object.__setattr__(self, "qlim", _check_qlim(self.qlim))
 
     @classmethod
+    @fill(rest=_link_sections("REVOLUTE", "rad"))
     def revolute(cls, d=0, a=0, alpha=0, offset=0, qlim=None):
         """A revolute link: theta = q + offset.
 
@@ -126,21 +144,12 @@ class Link:
         ----------
         d, a : number or SymPy expression, optional
             The DH lengths (m).
-        alpha : number or SymPy expression, optional
-            The DH twist (rad).
-        offset : number or SymPy expression, optional
-            Added to q (rad).
-        qlim : (float, float) or None, optional
-            (min, max) of q (rad), or None for no limit.
-
-        Returns
-        -------
-        Link
-            The link, ``joint=Joint.REVOLUTE``.
+        {rest}
         """
         return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=qlim)
 
     @classmethod
+    @fill(rest=_link_sections("PRISMATIC", "m"))
     def prismatic(cls, theta=0, a=0, alpha=0, offset=0, qlim=None):
         """A prismatic link: d = q + offset.
 
@@ -150,17 +159,7 @@ class Link:
             The DH angle (rad).
         a : number or SymPy expression, optional
             The DH length (m).
-        alpha : number or SymPy expression, optional
-            The DH twist (rad).
-        offset : number or SymPy expression, optional
-            Added to q (m).
-        qlim : (float, float) or None, optional
-            (min, max) of q (m), or None for no limit.
-
-        Returns
-        -------
-        Link
-            The link, ``joint=Joint.PRISMATIC``.
+        {rest}
         """
         return cls(
             Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim

@@ -448,20 +448,17 @@ def _result(limbs, lts, lws, pws, pts, lts_ranks, rotations):
     directions = sorted(names, key=lambda n: (not n.startswith("T"), n))
     joints = [len(limb) for limb in limbs]
     links = sum(j - 1 for j in joints) + 2
-    gk = grubler_kutzbach(links, sum(joints), sum(joints))
-    redundant = sum(w.rank for w in lws) - pws.rank
-    idle = sum(j - r for j, r in zip(joints, lts_ranks))
     return Mobility(
         number=len(basis),
         type=kind,
         directions=directions,
+        joints_per_limb=joints,
+        grubler_kutzbach=grubler_kutzbach(links, sum(joints), sum(joints)),
         limb_twist_systems=lts,
         limb_wrench_systems=lws,
         platform_wrench_system=pws,
         platform_twist_system=pts,
-        joints_per_limb=joints,
         limb_twist_ranks=lts_ranks,
-        grubler_kutzbach=gk,
-        redundant_constraints=redundant,
-        idle_mobility=idle,
+        redundant_constraints=sum(w.rank for w in lws) - pws.rank,
+        idle_mobility=sum(j - r for j, r in zip(joints, lts_ranks)),
     )

@@ -158,6 +158,22 @@ def _one_q(chain, q):
     return q
 
 
+def _links(ax, origins, color, alpha, label, lw, ms):
+    """The links as one thick, round-capped line through the joint origins (K, 2) or
+    (K, 3), a dot at each; the Line2D."""
+    (line,) = ax.plot(
+        *origins.T,
+        "-o",
+        color=color,
+        lw=lw,
+        ms=ms,
+        alpha=alpha,
+        label=label,
+        solid_capstyle="round",
+    )
+    return line
+
+
 def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
     """A 3D axes with equal scale on x, y, z (m) and labelled axes.
 
@@ -356,16 +372,7 @@ def draw_chain(
     alpha, frame_length = _alpha(alpha), check_positive(frame_length, "frame_length")
     T = chain.frames(q)
     origins = T[:, :3, 3]
-    ax.plot(
-        *origins.T,
-        "-o",
-        color=color,
-        lw=4,
-        ms=5,
-        alpha=alpha,
-        label=label,
-        solid_capstyle="round",
-    )
+    _links(ax, origins, color, alpha, label, lw=4, ms=5)
     for z, o in zip(*chain.joint_axes(q)):
         ax.plot(
             *np.stack([o - 0.04 * z, o + 0.04 * z]).T, color="k", lw=2.5, alpha=alpha
@@ -466,17 +473,7 @@ def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0
     q = _one_q(chain, q)
     base, alpha = _vector(base, "base", size=2), _alpha(alpha)
     origins = chain.frames(q)[:, :2, 3] + base
-    (line,) = ax.plot(
-        *origins.T,
-        "-o",
-        color=color,
-        lw=3,
-        ms=4,
-        alpha=alpha,
-        label=label,
-        solid_capstyle="round",
-    )
-    return line
+    return _links(ax, origins, color, alpha, label, lw=3, ms=4)
 
 
 # The player of ``animation_html``: its frames are loaded one at a time, when shown

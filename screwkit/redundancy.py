@@ -34,6 +34,7 @@ from ._checks import (
     check_positive,
     describe,
 )
+from ._docstrings import fill
 from .chains import Joint
 from .tolerances import (
     DIVISION_FLOOR,
@@ -177,6 +178,22 @@ def _samples(duration, dt):
     return np.arange(steps + 1) * dt, duration
 
 
+def _path_sections(shape):
+    """The timing parameters and the Returns section of a path of this shape."""
+    return f"""duration : float
+    The time to go along the {shape} (s).
+dt : float
+    The time step (s).
+timing_kind : {{'smooth', 'constant'}}, optional
+    The timing along the {shape} (see :func:`timing`).
+
+Returns
+-------
+Path
+    The sampled {shape}."""
+
+
+@fill(sections=_path_sections("circle"))
 def circle(center, radius, duration, dt, timing_kind="smooth"):
     """A circle once counter-clockwise, from center + (radius, 0).
 
@@ -186,17 +203,7 @@ def circle(center, radius, duration, dt, timing_kind="smooth"):
         The centre (m).
     radius : float
         The radius (m), positive.
-    duration : float
-        The time to go round (s).
-    dt : float
-        The time step (s).
-    timing_kind : {'smooth', 'constant'}, optional
-        The timing along the circle (see :func:`timing`).
-
-    Returns
-    -------
-    Path
-        The sampled circle.
+    {sections}
     """
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     center = _point(center, "center")
@@ -214,6 +221,7 @@ def circle(center, radius, duration, dt, timing_kind="smooth"):
     )
 
 
+@fill(sections=_path_sections("line"))
 def line(start, end, duration, dt, timing_kind="smooth"):
     """A straight line from ``start`` to ``end``.
 
@@ -221,17 +229,7 @@ def line(start, end, duration, dt, timing_kind="smooth"):
     ----------
     start, end : array-like, shape (2,)
         The end points (m).
-    duration : float
-        The time to go (s).
-    dt : float
-        The time step (s).
-    timing_kind : {'smooth', 'constant'}, optional
-        The timing along the line (see :func:`timing`).
-
-    Returns
-    -------
-    Path
-        The sampled line.
+    {sections}
     """
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     start, end = _point(start, "start"), _point(end, "end")
@@ -290,6 +288,14 @@ def _base_2d(arm):
     return B[:2, :2], B[:2, 3]
 
 
+#: The parameters of a planar arm's kinematics (filled in by _docstrings.fill).
+_LENGTHS_Q = """lengths : array-like, shape (n,)
+    The link lengths (m).
+q : array-like, shape (n,) or (N, n)
+    Joint angles (rad)."""
+
+
+@fill(lengths_q=_LENGTHS_Q)
 def planar_kinematics(lengths, q):
     """Joint positions and the end-effector Jacobian of a planar arm in its own base
     frame.
@@ -298,10 +304,7 @@ def planar_kinematics(lengths, q):
 
     Parameters
     ----------
-    lengths : array-like, shape (n,)
-        The link lengths (m).
-    q : array-like, shape (n,) or (N, n)
-        Joint angles (rad).
+    {lengths_q}
 
     Returns
     -------
@@ -321,6 +324,7 @@ def planar_kinematics(lengths, q):
     return points, J
 
 
+@fill(lengths_q=_LENGTHS_Q)
 def manipulability_gradient(lengths, q):
     """w = sqrt(det(J J^T)) of a planar arm and its exact gradient dw/dq.
 
@@ -331,10 +335,7 @@ def manipulability_gradient(lengths, q):
 
     Parameters
     ----------
-    lengths : array-like, shape (n,)
-        The link lengths (m).
-    q : array-like, shape (n,) or (N, n)
-        Joint angles (rad).
+    {lengths_q}
 
     Returns
     -------

@@ -11,6 +11,7 @@ import numpy as np
 import sympy as sp
 
 from ._checks import as_float_array, as_real_scalar, describe
+from ._docstrings import fill
 from .chains import Chain, Convention, Link
 from .limbs import parallelogram, prismatic, revolute, rotate_limb, spherical, universal
 from .parallel import delta, planar_3rpr, stewart_gough, tripteron
@@ -119,6 +120,18 @@ DRAWING_VALUES = {
 }
 
 
+#: The Returns sections the mechanisms' limbs and the named arms share (filled in by
+#: :func:`_docstrings.fill`).
+_LIMBS_RETURNS = """Returns
+-------
+list of limbs
+    In the zeroth-step format (module docstring)."""
+_ARM_RETURNS = """Returns
+-------
+Chain
+    The arm, with its named configurations."""
+
+
 def _symbols(names, limbs, first, last):
     """theta_{i j} for limbs i = 1..limbs and joints j = first..last."""
     return [
@@ -127,13 +140,11 @@ def _symbols(names, limbs, first, last):
     ]
 
 
+@fill(returns=_LIMBS_RETURNS)
 def pm_3prrr():
     """Tripteron, 3-PRRR: limb i has four parallel axes along X, Y, Z (paper §3.2.1).
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     a, b, Ly, Lz = sp.symbols("a b L_y L_z")
     d = sp.symbols("d_1:4")
@@ -160,16 +171,14 @@ def pm_3prrr():
     return limbs
 
 
+@fill(returns=_LIMBS_RETURNS)
 def pm_3prpar():
     """STAR-like 3-PR(Pa)R: P and R along X, a parallelogram, and a last R along X
     (§3.2.2).
 
     Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     L, b = sp.symbols("L b")
     d = sp.symbols("d_1:4")
@@ -218,6 +227,7 @@ def _turn_about_z(angle):
     return turn
 
 
+@fill(returns=_LIMBS_RETURNS)
 def pm_4prru():
     """4-PRRU with Schönflies motion (§3.2.3, after Kong and Gosselin).
 
@@ -227,10 +237,7 @@ def pm_4prru():
     and never uses theta_i3; here B and C follow theta_i2 and theta_i3 about the tilted
     axis.
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     R, a, b, alpha = sp.symbols("R a b alpha")
     d = sp.symbols("d_1:5")
@@ -256,14 +263,12 @@ def pm_4prru():
     return _around_z(limb, 4)
 
 
+@fill(returns=_LIMBS_RETURNS)
 def pm_6ups():
     """6-UPS (Gough–Stewart type): U at A, P along the leg, S at B; limbs turned by 60
     degrees (§3.2.4).
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:7")
@@ -284,14 +289,12 @@ def pm_6ups():
     return _around_z(limb, 6)
 
 
+@fill(returns=_LIMBS_RETURNS)
 def planar_3rrr():
     """Planar 3-RRR: three RRR limbs with all axes along Z
     (3 motions in the plane: 2T1R).
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     a, b = sp.symbols("a b")
     theta = _symbols("theta", 3, 1, 2)
@@ -305,14 +308,12 @@ def planar_3rrr():
     return _around_z(limb, 3)
 
 
+@fill(returns=_LIMBS_RETURNS)
 def pm_3rps():
     """3-RPS: R tangent to the base circle, P along the leg, S on the platform
     (1T2R).
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:4")
@@ -326,6 +327,7 @@ def pm_3rps():
     return _around_z(limb, 3)
 
 
+@fill(returns=_LIMBS_RETURNS)
 def pm_3ruu():
     """Delta-type translational 3-RUU (3T): the kinematic equivalent of Clavel's Delta
     with a U-U link in place of each spatial parallelogram
@@ -335,10 +337,7 @@ def pm_3ruu():
     about u by theta_12); a U at C (axes v, then u). Each limb then constrains the one
     couple along u x v. Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     R, a, b = sp.symbols("R a b")
 
@@ -353,14 +352,12 @@ def pm_3ruu():
     return _around_z(limb, 3)
 
 
+@fill(returns=_LIMBS_RETURNS)
 def spherical_3rrr():
     """Spherical 3-RRR (agile eye type): every joint axis passes through the origin
     (3R).
 
-    Returns
-    -------
-    list of limbs
-        In the zeroth-step format (module docstring).
+    {returns}
     """
     theta = _symbols("theta", 3, 1, 2)
 
@@ -374,6 +371,7 @@ def spherical_3rrr():
     return _around_z(limb, 3)
 
 
+@fill(returns=_ARM_RETURNS)
 def puma560():
     """The PUMA 560 in standard DH, Corke's parameters (the PUMA paper's Table 2), in
     metres.
@@ -384,10 +382,7 @@ def puma560():
     deg. Named configurations: 'zero', 'ready', 'stretch', 'nominal'
     (the paper's eqs. 32-35).
 
-    Returns
-    -------
-    Chain
-        The arm, with its named configurations.
+    {returns}
     """
     deg = np.pi / 180
     links = [
@@ -409,6 +404,7 @@ def puma560():
     return Chain(links, name="PUMA 560", configurations=configurations)
 
 
+@fill(returns=_ARM_RETURNS)
 def kawasaki_cx210l():
     """The Kawasaki CX210L 6R arm in standard DH (m), reconstructed from the workspace
     paper.
@@ -423,10 +419,7 @@ def kawasaki_cx210l():
     Named configurations: 'table2_1', 'table2_2', 'table2_3'
     (q2 = 30, q3 = -90, -80, -70 deg).
 
-    Returns
-    -------
-    Chain
-        The arm, with its named configurations.
+    {returns}
     """
     deg = sp.pi / 180
     links = [

@@ -24,11 +24,18 @@ import sympy as sp
 
 from . import _certificates, _exact, _numeric
 from ._checks import describe
+from ._docstrings import fill
 from .screws import Screw, Twist, Wrench
 
 __all__ = ["ScrewSystem"]
 
 _OTHER = {Twist: Wrench, Wrench: Twist, Screw: Screw}
+
+#: The Parameters section of union and intersection (filled in by _docstrings.fill).
+_OTHER_PARAMETERS = """Parameters
+----------
+other : ScrewSystem
+    A system of the same kind."""
 
 
 def _swap(row):
@@ -292,13 +299,11 @@ class ScrewSystem:
             sp.Matrix(6, 1, [self.field.to_sympy(e) for e in row])
         )
 
+    @fill(parameters=_OTHER_PARAMETERS)
     def union(self, other):
         """The span of both systems.
 
-        Parameters
-        ----------
-        other : ScrewSystem
-            A system of the same kind.
+        {parameters}
 
         Returns
         -------
@@ -310,14 +315,12 @@ class ScrewSystem:
             self.screws + other.screws, kind=self.kind, tol=min(self.tol, other.tol)
         )
 
+    @fill(parameters=_OTHER_PARAMETERS)
     def intersection(self, other):
         """The screws common to both spans: the reciprocal of the union of the
         reciprocals.
 
-        Parameters
-        ----------
-        other : ScrewSystem
-            A system of the same kind.
+        {parameters}
 
         Returns
         -------

@@ -38,6 +38,7 @@ from ._checks import (
     check_rotation,
     describe,
 )
+from ._docstrings import fill
 from .lie import log_rotation, log_transform
 from .links import Joint
 from .tolerances import NEAR_SINGULAR, SERIES_BELOW, SLERP_LINEAR_BELOW
@@ -203,37 +204,34 @@ def _polynomial(kind, duration, v_max, a_max):
     return TimeScaling(kind, duration, peak_v / duration, peak_a / duration**2)
 
 
+#: The sections cubic and quintic share (filled in by :func:`_docstrings.fill`).
+_POLYNOMIAL_SECTIONS = """Parameters
+----------
+duration : float, s; None for the shortest that the limits allow
+v_max : float, optional, the largest ds/dt allowed (1/s)
+a_max : float, optional, the largest magnitude of d2s/dt2 allowed
+    (1/s^2)
+
+Returns
+-------
+TimeScaling"""
+
+
+@fill(sections=_POLYNOMIAL_SECTIONS)
 def cubic(duration=None, *, v_max=None, a_max=None):
     """The cubic time scaling s = 3 tau^2 - 2 tau^3, tau = t / duration.
 
-    Parameters
-    ----------
-    duration : float, s; None for the shortest that the limits allow
-    v_max : float, optional, the largest ds/dt allowed (1/s)
-    a_max : float, optional, the largest magnitude of d2s/dt2 allowed
-        (1/s^2)
-
-    Returns
-    -------
-    TimeScaling
+    {sections}
     """
     return _polynomial("cubic", duration, v_max, a_max)
 
 
+@fill(sections=_POLYNOMIAL_SECTIONS)
 def quintic(duration=None, *, v_max=None, a_max=None):
     """The quintic time scaling s = 10 tau^3 - 15 tau^4 + 6 tau^5 (zero velocity and
     acceleration at both ends).
 
-    Parameters
-    ----------
-    duration : float, s; None for the shortest that the limits allow
-    v_max : float, optional, the largest ds/dt allowed (1/s)
-    a_max : float, optional, the largest magnitude of d2s/dt2 allowed
-        (1/s^2)
-
-    Returns
-    -------
-    TimeScaling
+    {sections}
     """
     return _polynomial("quintic", duration, v_max, a_max)
 
@@ -418,6 +416,18 @@ def _planar_log(T):
     return theta, np.linalg.solve(V, p)
 
 
+#: The sections screw_path and cartesian_path share (filled in by fill).
+_PATH_SECTIONS = """Parameters
+----------
+T_start, T_end : array-like, shape (4, 4) (SE(3), m) or (3, 3) (SE(2), m)
+s : float or array-like, shape (K,), the path parameter (0 at T_start, 1 at T_end)
+
+Returns
+-------
+ndarray, shape (4, 4) or (K, 4, 4); (3, 3) or (K, 3, 3) for SE(2)"""
+
+
+@fill(sections=_PATH_SECTIONS)
 def screw_path(T_start, T_end, s):
     """The screw motion from T_start to T_end: T_start exp(log(T_start^-1 T_end) s).
 
@@ -425,14 +435,7 @@ def screw_path(T_start, T_end, s):
     straight line of SE(3). Modern Robotics' ``ScrewTrajectory`` with s from a time
     scaling.
 
-    Parameters
-    ----------
-    T_start, T_end : array-like, shape (4, 4) (SE(3), m) or (3, 3) (SE(2), m)
-    s : float or array-like, shape (K,), the path parameter (0 at T_start, 1 at T_end)
-
-    Returns
-    -------
-    ndarray, shape (4, 4) or (K, 4, 4); (3, 3) or (K, 3, 3) for SE(2)
+    {sections}
     """
     T_start, T_end = _pose_pair(T_start, T_end)
     s = _path_parameter(s)
@@ -488,6 +491,7 @@ def _screw_poses(T_start, twist, s):
     return poses
 
 
+@fill(sections=_PATH_SECTIONS)
 def cartesian_path(T_start, T_end, s):
     """The decoupled path: the position on the straight line, the rotation by slerp,
     p = p0 + s (p1 - p0), R = R0 exp(log(R0^T R1) s).
@@ -495,14 +499,7 @@ def cartesian_path(T_start, T_end, s):
     Modern Robotics' ``CartesianTrajectory``. The origin moves on a line while a screw
     motion's origin moves on a helix; the rotations are the same.
 
-    Parameters
-    ----------
-    T_start, T_end : array-like, shape (4, 4) (SE(3), m) or (3, 3) (SE(2), m)
-    s : float or array-like, shape (K,), the path parameter
-
-    Returns
-    -------
-    ndarray, shape (4, 4) or (K, 4, 4); (3, 3) or (K, 3, 3) for SE(2)
+    {sections}
     """
     T_start, T_end = _pose_pair(T_start, T_end)
     s = _path_parameter(s)

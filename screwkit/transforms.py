@@ -31,6 +31,7 @@ from ._checks import (
     describe,
     is_symbolic,
 )
+from ._docstrings import fill
 from .tolerances import ZERO_TOL
 
 __all__ = [
@@ -168,10 +169,12 @@ def skew(v):
     Parameters
     ----------
     v : array-like, shape (3,) or (N, 3), or a SymPy 3-vector
+        The vector(s).
 
     Returns
     -------
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
+        [v], exact for a SymPy vector.
 
     >>> skew([1, 2, 3]) @ [4, 5, 6]
     array([-3.,  6., -3.])
@@ -198,18 +201,23 @@ def _elementary_rotation(theta, axis):
     return R
 
 
+#: The sections rotx, roty and rotz share (filled in by :func:`_docstrings.fill`).
+_ELEMENTARY_SECTIONS = """Parameters
+----------
+theta : float, array-like of shape (N,), or a SymPy expression
+    The angle (rad); N angles give a batch.
+
+Returns
+-------
+ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
+    The rotation matrix (exact when ``theta`` is symbolic)."""
+
+
+@fill(sections=_ELEMENTARY_SECTIONS)
 def rotx(theta):
     """Rotation by ``theta`` about the x axis.
 
-    Parameters
-    ----------
-    theta : float, array-like of shape (N,), or a SymPy expression
-        The angle (rad); N angles give a batch.
-
-    Returns
-    -------
-    ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
-        The rotation matrix (exact when ``theta`` is symbolic).
+    {sections}
 
     Examples
     --------
@@ -220,34 +228,20 @@ def rotx(theta):
     return _elementary_rotation(theta, 0)
 
 
+@fill(sections=_ELEMENTARY_SECTIONS)
 def roty(theta):
     """Rotation by ``theta`` about the y axis.
 
-    Parameters
-    ----------
-    theta : float, array-like of shape (N,), or a SymPy expression
-        The angle (rad); N angles give a batch.
-
-    Returns
-    -------
-    ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
-        The rotation matrix (exact when ``theta`` is symbolic).
+    {sections}
     """
     return _elementary_rotation(theta, 1)
 
 
+@fill(sections=_ELEMENTARY_SECTIONS)
 def rotz(theta):
     """Rotation by ``theta`` about the z axis.
 
-    Parameters
-    ----------
-    theta : float, array-like of shape (N,), or a SymPy expression
-        The angle (rad); N angles give a batch.
-
-    Returns
-    -------
-    ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
-        The rotation matrix (exact when ``theta`` is symbolic).
+    {sections}
     """
     return _elementary_rotation(theta, 2)
 
@@ -469,6 +463,14 @@ def _wrap_angle(angle):
     return np.pi - np.mod(np.pi - angle, 2 * np.pi)
 
 
+#: The axis parameters of twist_from_axis and screw_motion (filled in by fill).
+_AXIS_PARAMETERS = """s : array-like, shape (3,), non-zero
+    Direction of the axis (normalised here).
+r : array-like, shape (3,)
+    A point of the axis (m)."""
+
+
+@fill(axis=_AXIS_PARAMETERS)
 def twist_from_axis(s, r, h):
     """The unit twist of a screw axis, ordered [angular; linear].
 
@@ -478,10 +480,7 @@ def twist_from_axis(s, r, h):
 
     Parameters
     ----------
-    s : array-like, shape (3,), non-zero
-        Direction of the axis (normalised here).
-    r : array-like, shape (3,)
-        A point of the axis (m).
+    {axis}
     h : float, a SymPy expression or ``sympy.oo``
         Pitch (m/rad); 0 for a revolute joint, ``sympy.oo`` for a prismatic one.
 
@@ -616,6 +615,7 @@ def _exp_twist_symbolic(xi, theta):
     return homogeneous(R.applyfunc(sp.simplify), (G * v).applyfunc(sp.simplify))
 
 
+@fill(axis=_AXIS_PARAMETERS)
 def screw_motion(s, r, h, theta):
     """The motion along a screw axis: rotate by theta about (s, r), advance h theta.
 
@@ -624,10 +624,7 @@ def screw_motion(s, r, h, theta):
 
     Parameters
     ----------
-    s : array-like, shape (3,), non-zero
-        Direction of the axis (normalised here).
-    r : array-like, shape (3,)
-        A point of the axis (m).
+    {axis}
     h : float, a SymPy expression or ``sympy.oo``
         Pitch (m/rad).
     theta : float, array-like of shape (N,), or a SymPy expression

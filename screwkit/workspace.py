@@ -31,7 +31,8 @@ from ._checks import (
 from ._compiled import (
     CHUNK,  # the one chunk size (a module global here: tests shrink it)
 )
-from .jacobians import ROWS, geometric_jacobian, manipulability
+from ._docstrings import fill
+from .jacobians import check_rows, geometric_jacobian, manipulability
 
 __all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]
 
@@ -44,6 +45,13 @@ MAX_CONFIGURATIONS = 10_000_000
 #: The largest result (bytes) that ``Sweep.q`` or ``Sweep.jacobians`` builds in one
 #: array.
 MAX_RESULT_BYTES = 1_000_000_000
+
+#: The Parameters section of the Sweep methods that take only the Jacobian's rows
+#: (filled in by :func:`_docstrings.fill`).
+_ROWS_PARAMETERS = """Parameters
+----------
+rows : {'all', 'position', 'orientation', 'planar'}, optional
+    The rows of J."""
 
 
 @dataclass(frozen=True)
@@ -201,20 +209,18 @@ class Sweep:
         flat = self.points.reshape(-1, 3)
         return flat[np.abs(flat[:, "xyz".index(axis)] - float(value)) <= tolerance]
 
+    @fill(parameters=_ROWS_PARAMETERS)
     def jacobians(self, rows="all"):
         """The geometric Jacobian's ``rows`` at every grid point.
 
-        Parameters
-        ----------
-        rows : {'all', 'position', 'orientation', 'planar'}, optional
-            The rows of J.
+        {parameters}
 
         Returns
         -------
         ndarray, shape grid + (m, n)
             The Jacobians, m rows each.
         """
-        block = ROWS[check_option(rows, "rows", tuple(ROWS))]
+        block = check_rows(rows)
         m = len(range(6)[block])
         _check_result_size(
             self.size * m * self.chain.n * 8,
@@ -243,7 +249,7 @@ class Sweep:
         ndarray, shape grid
             det J.
         """
-        block = ROWS[check_option(rows, "rows", tuple(ROWS))]
+        block = check_rows(rows)
         m = len(range(6)[block])
         if m != self.chain.n:
             raise ValueError(
@@ -255,22 +261,21 @@ class Sweep:
             lambda q: np.linalg.det(geometric_jacobian(self.chain, q)[:, block])
         )
 
+    @fill(parameters=_ROWS_PARAMETERS)
     def manipulability(self, rows="all"):
         """Yoshikawa's manipulability of the Jacobian's ``rows`` at every grid point.
 
-        Parameters
-        ----------
-        rows : {'all', 'position', 'orientation', 'planar'}, optional
-            The rows of J.
+        {parameters}
 
         Returns
         -------
         ndarray, shape grid
             The manipulability (0.0 where singular).
         """
-        check_option(rows, "rows", tuple(ROWS))
+        check_rows(rows)
         return self._per_point(lambda q: manipulability(self.chain, q, rows))
 
+    @fill(parameters=_ROWS_PARAMETERS)
     def singular(self, rows="all"):
         """A mask (shape grid) of the singular configurations of the Jacobian's
         ``rows``.
@@ -281,17 +286,14 @@ class Sweep:
         :func:`screwkit.jacobians.manipulability`: use ``rows='planar'`` for a planar
         arm, whose six-row Jacobian never loses rank.
 
-        Parameters
-        ----------
-        rows : {'all', 'position', 'orientation', 'planar'}, optional
-            The rows of J.
+        {parameters}
 
         Returns
         -------
         ndarray of bool, shape grid
             True at singular configurations.
         """
-        block = ROWS[check_option(rows, "rows", tuple(ROWS))]
+        block = check_rows(rows)
         lost = self.manipulability(rows) == 0.0
         if len(range(6)[block]) != self.chain.n:
             return lost

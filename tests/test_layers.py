@@ -30,7 +30,15 @@ PACKAGE = Path(__file__).resolve().parents[1] / "screwkit"
 ORDER = [
     (
         "checks and engines",
-        ["tolerances", "_checks", "_numeric", "_exact", "_certificates", "_notation"],
+        [
+            "tolerances",
+            "_docstrings",
+            "_checks",
+            "_numeric",
+            "_exact",
+            "_certificates",
+            "_notation",
+        ],
     ),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),

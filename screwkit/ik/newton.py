@@ -46,9 +46,9 @@ class NumericIKResult:
     """
 
     q: np.ndarray
-    success: np.ndarray
-    iterations: np.ndarray
-    error: np.ndarray
+    success: bool | np.ndarray
+    iterations: int | np.ndarray
+    error: float | np.ndarray
 
 
 def pose_error(T, T_target):
