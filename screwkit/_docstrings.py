@@ -41,6 +41,8 @@ def fill(**passages):
     """
 
     def decorate(function):
+        if function.__doc__ is None:  # python -OO strips docstrings
+            return function
         lines = []
         for line in function.__doc__.split("\n"):
             indent = line[: len(line) - len(line.lstrip())]
