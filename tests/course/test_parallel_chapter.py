@@ -5,6 +5,7 @@ Read from the chapter's source, notebooks/parallel_kinematics.md.
 """
 
 import re
+import tomllib
 from pathlib import Path
 
 SOURCE = Path(__file__).resolve().parents[2] / "notebooks" / "parallel_kinematics.md"
@@ -58,3 +59,20 @@ def test_inverse_kinematics_are_written_before_they_are_compared():
         ("def line_jacobian", "stewart.jacobian(T_tilted)"),
     ]:
         assert source.index(mine) < source.index(library), mine
+
+
+def test_each_answer_box_has_its_key_and_its_check():
+    path = SOURCE.parents[1] / "screwkit" / "answers" / "parallel_kinematics.toml"
+    keys = tomllib.loads(path.read_text(encoding="utf-8"))
+    bodies = exercises()
+    boxed = {
+        number
+        for number, body in bodies.items()
+        if 'sk.exercises.answer_box("parallel_kinematics"' in body
+    }
+    assert boxed == {int(n) for n in keys["exercise"]}
+    for number in boxed:
+        body = bodies[number]
+        assert f'sk.exercises.answer_box("parallel_kinematics", {number})' in body
+        assert f'sk.exercises.check("parallel_kinematics", {number},' in body
+        assert "self-checking)" in body.strip().split("\n", 1)[0]
