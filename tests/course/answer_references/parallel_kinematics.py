@@ -1,11 +1,23 @@
 """The answer keys of the parallel-kinematics chapter, recomputed from the geometry
-written out here (the default Stewart-Gough attachment angles of its docstring), not
-from the key's formula nor from screwkit's legs.
+written out here (the default attachment angles and lengths of the catalogue's
+docstrings), not from the key's formula nor from screwkit's legs.
 """
 
 import numpy as np
 
 from .registry import reference
+
+
+def circle(radius, degrees):
+    """Points on a circle in the xy-plane, (k, 3) (m)."""
+    angles = np.radians(degrees)
+    return radius * np.c_[np.cos(angles), np.sin(angles), np.zeros(len(angles))]
+
+
+# the default Stewart-Gough platform: base on 1 m at 120 k -/+ 15 deg, platform on
+# 0.5 m at 120 k -/+ 45 deg, leg i from base point i to platform point i
+STEWART_BASE = circle(1.0, [-15, 15, 105, 135, 225, 255])
+STEWART_PLATFORM = circle(0.5, [-45, 45, 75, 165, 195, 285])
 
 
 def leg_1_at_home():
@@ -14,6 +26,50 @@ def leg_1_at_home():
     base = np.array([np.cos(np.radians(-15)), np.sin(np.radians(-15)), 0.0])
     platform = 0.5 * np.array([np.cos(np.radians(-45)), np.sin(np.radians(-45)), 0.0])
     return platform + [0, 0, 1] - base
+
+
+def plucker_det(yaw):
+    """det of the six leg lines (a_i x n_i; n_i), the platform 1 m up turned by yaw
+    (rad) about z: zero where the lines are dependent."""
+    c, s = np.cos(yaw), np.sin(yaw)
+    R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+    legs = STEWART_PLATFORM @ R.T + [0, 0, 1] - STEWART_BASE
+    return np.linalg.det(np.c_[np.cross(STEWART_BASE, legs), legs])
+
+
+def bisect(f, low, high, steps=80):
+    """A root of f in [low, high], where f changes sign."""
+    f_low = f(low)
+    assert f_low * f(high) < 0, "the bracket must hold a sign change"
+    for _ in range(steps):
+        middle = (low + high) / 2
+        if f_low * f(middle) <= 0:
+            high = middle
+        else:
+            low, f_low = middle, f(middle)
+    return (low + high) / 2
+
+
+@reference("parallel_kinematics", 6)
+def _():
+    # the leg lines' determinant changes sign between 60 and 120 deg (unnormalised
+    # lines: the same zeros as the Jacobian's)
+    return np.degrees(bisect(plucker_det, np.radians(60), np.radians(120)))
+
+
+@reference("parallel_kinematics", 8)
+def _():
+    # the 3-RRR at home: crank 1 (0.6 m) about a1 = (1, 0), link (0.5 m) to c1 = (0.25,
+    # 0); the elbow is a point where the two circles cross (the radical line), mode '+'
+    # the one to the left of the ray from a1 to c1; the crank angle is its direction
+    a1, c1, l1, l2 = np.array([1.0, 0.0]), np.array([0.25, 0.0]), 0.6, 0.5
+    d = np.linalg.norm(c1 - a1)
+    along = (d**2 + l1**2 - l2**2) / (2 * d)  # from a1 to the radical line
+    half_chord = np.sqrt(l1**2 - along**2)
+    unit = (c1 - a1) / d
+    left = np.array([-unit[1], unit[0]])
+    elbow = a1 + along * unit + half_chord * left
+    return np.arctan2(elbow[1] - a1[1], elbow[0] - a1[0])
 
 
 @reference("parallel_kinematics", 10)
