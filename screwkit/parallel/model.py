@@ -40,13 +40,22 @@ from ..systems import ScrewSystem
 from ..tolerances import PARALLEL_FK_TOL, PARALLEL_MOTION_TOL
 from . import numeric as _numeric
 from . import search as _search
-from .legs import Linear, Prismatic, evaluated
+from .legs import Linear, Prismatic, Revolute, evaluated
+from .search import AssemblyModes
 
 #: Poses per block of the batched computations: a block's arrays stay in the cache.
 _BLOCK = 4096
 
 #: The largest workspace grid (points), as sk.workspace bounds its sweeps.
 MAX_WORKSPACE_POINTS = 10_000_000
+
+#: The most random starts fk_all's search takes: 100 000 starts hold about 30 MB of
+#: Newton's arrays for a Stewart platform (10^8 would need about 12 GB).
+MAX_FK_STARTS = 100_000
+
+#: Starts projected onto the solutions by least-squares Newton when the search found
+#: no mode (a continuum makes Newton's exact steps fail): a few dozen reach it.
+_CONTINUUM_STARTS = 32
 
 #: The free components of the platform twist [wx, wy, wz, vx, vy, vz] per motion type.
 _FREEDOMS = {
@@ -650,29 +659,42 @@ class ParallelManipulator:
         )
 
     def fk_all(self, rho, starts=None, seed=0):
-        """Every real assembly mode with actuated values rho.
+        """Every real assembly mode with actuated values rho, and how far to trust it.
 
-        The 3-RPR solves its univariate sextic (:func:`~screwkit.parallel.rpr_sextic`;
-        Gosselin, Sefrioui & Richard 1992): complete, up to six modes. Other mechanisms
-        run a multi-start Newton search (:func:`screwkit.parallel.search.multistart`,
+        The delta solves three spheres' intersection and the Tripteron a linear
+        system (closed forms: ``complete`` is True). The 3-RPR solves its univariate
+        sextic (:func:`~screwkit.parallel.rpr_sextic`; Gosselin, Sefrioui & Richard
+        1992), up to six modes, its roots found in floating point. Other mechanisms run
+        a multi-start Newton search (:func:`screwkit.parallel.search.multistart`,
         ``starts`` random poses around the home pose plus their mirror images through
         the base plane, seeded): every pose it returns satisfies the legs, but it may
         miss a mode no start leads to; the general Stewart-Gough platform has up to 40
-        (Dietmaier 1998 found 40 real ones).
+        (Dietmaier 1998 found 40 real ones). Where the closure's Jacobian loses rank at
+        a solution and the solutions continue along its kernel, the result says so
+        (``continuum``): a self-motion or a degenerate geometry.
 
         Parameters
         ----------
         rho : array-like, shape (m,)
             One input (m or rad).
         starts : int, optional
-            Random starting poses of the search (default 400).
+            Random starting poses of the search (default 400, at most
+            ``MAX_FK_STARTS``).
         seed : int
             The search's seed.
 
         Returns
         -------
-        list of ndarray, shape (4, 4)
-            The assembly modes found.
+        AssemblyModes
+            A list of the assembly modes found (poses (4, 4)), with ``complete`` (True
+            only when proven to hold every mode), ``method``, ``reason`` (why not
+            complete, or what the continuum is) and ``continuum``.
+
+        Raises
+        ------
+        ValueError
+            If ``starts`` exceeds ``MAX_FK_STARTS`` (memory), or ``rho`` is not one
+            input.
         """
         values = self._rho(rho)
         if values.ndim != 1:
@@ -680,11 +702,56 @@ class ParallelManipulator:
                 f"rho must be one input ({self.m},) for fk_all, "
                 f"got shape {values.shape}"
             )
-        if isinstance(self._legs, Prismatic) and self.planar:
-            return _search.rpr_sextic(self, values)
         starts = 400 if starts is None else check_integer(starts, "starts", minimum=1)
+        if starts > MAX_FK_STARTS:
+            raise ValueError(
+                f"starts must be at most {MAX_FK_STARTS} (Newton's arrays for "
+                f"{starts} starts would not fit in memory), got {starts}"
+            )
         seed = check_integer(seed, "seed", minimum=0)
-        return _search.multistart(self, values, starts, seed)
+        closed = None
+        if self.motion == "translational" and isinstance(self._legs, Revolute):
+            closed, method = _search.spheres, "closed form (three spheres)"
+        elif self.motion == "translational" and isinstance(self._legs, Linear):
+            closed, method = _search.rails, "closed form (linear)"
+        if closed is not None:
+            poses, continuum = closed(self, values)
+            return AssemblyModes(
+                _search.sort_modes(self, poses),
+                complete=continuum is None,
+                method=method,
+                reason=continuum,
+                continuum=continuum is not None,
+            )
+        if isinstance(self._legs, Prismatic) and self.planar:
+            poses, _, stuck = _search._sextic_modes(self, values)
+            method = "sextic (floating-point roots)"
+            reason = (
+                "the sextic's real roots are found in floating point (numpy's "
+                "companion matrix), not isolated with certainty"
+            )
+        else:
+            poses = _search.multistart(self, values, starts, seed)
+            method = "multistart search"
+            reason = (
+                f"a search from {starts} random starts (seed {seed}): it may miss "
+                f"modes no start leads to"
+            )
+            stuck = (
+                _search.random_starts(self, values, _CONTINUUM_STARTS, seed)
+                if not poses
+                else ()
+            )
+        isolated, on, continuum = _search.continuum(self, values, poses, stuck)
+        if on is not None:
+            poses, reason = _search.sort_modes(self, isolated) + [on], continuum
+        return AssemblyModes(
+            poses,
+            complete=False,
+            method=method,
+            reason=reason,
+            continuum=on is not None,
+        )
 
     # ---- workspace ------------------------------------------------------------------
 
