@@ -28,11 +28,14 @@ import sympy as sp
 
 from .._checks import (
     as_float_array,
+    check_flag,
     check_integer,
+    check_positive,
     check_option,
     check_poses,
     check_rotation,
     check_transform,
+    describe,
     is_symbolic,
 )
 from ..screws import Wrench
@@ -215,6 +218,8 @@ class ParallelManipulator:
         )
         self.default_mode = default_mode or self.working_modes[0]
         self.prismatic = isinstance(legs, (Prismatic, Linear))
+        if self._pose(self._home, "home")[1]:  # a rigid pose of this motion type
+            raise ValueError(f"home must be one pose (4, 4), got {describe(home)}")
 
     def _limits(self, leg_limits):
         limits = as_float_array(leg_limits, "leg_limits")
@@ -258,12 +263,20 @@ class ParallelManipulator:
         batched) or (SymPy matrix, False)."""
         # a float batch takes check_poses' fast pass; anything else (SymPy stays
         # exact) the full check
+        if isinstance(T, np.matrix):  # NumPy's matrix class indexes as 2-d only
+            T = np.asarray(T)
         T = (
             check_poses(T, name)
             if isinstance(T, np.ndarray) and T.ndim == 3
             else check_transform(T, name)
         )
         if isinstance(T, sp.MatrixBase):
+            if T.free_symbols:
+                names = ", ".join(sorted(str(x) for x in T.free_symbols))
+                raise TypeError(
+                    f"{name} must be a pose of numbers (exact or float), got one with "
+                    f"the free symbol(s) {names}: substitute values first"
+                )
             self._check_motion(np.array(T.evalf(), dtype=float)[None], name)
             return T, False
         batched = T.ndim == 3
@@ -373,6 +386,7 @@ class ParallelManipulator:
             Instead, with ``passive``.
         """
         signs = self._mode(mode)
+        passive = check_flag(passive, "passive")
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
             rho = self._legs.ik_exact(self.attachments(T), signs)
@@ -618,9 +632,10 @@ class ParallelManipulator:
             Starting pose(s) (default: home); the assembly mode found is the one
             Newton reaches from it.
         tol : float, optional
-            Residual (m) below which a pose is accepted; default
+            Residual (m, > 0) below which a pose is accepted; default
             ``PARALLEL_FK_TOL`` times ``scale``.
         max_iterations : int
+            At least 1.
 
         Returns
         -------
@@ -638,7 +653,10 @@ class ParallelManipulator:
                 f"guess must be one pose or {len(values)} poses (one per row of "
                 f"rho), got {len(T0)}"
             )
-        tol = PARALLEL_FK_TOL * self.scale if tol is None else tol
+        tol = (
+            PARALLEL_FK_TOL * self.scale if tol is None else check_positive(tol, "tol")
+        )
+        max_iterations = check_integer(max_iterations, "max_iterations", minimum=1)
         T, success, iterations, error = self._newton(values, T0, tol, max_iterations)
         if not batched:
             return ParallelFK(
