@@ -192,6 +192,7 @@ class ParallelManipulator:
         default_mode=None,
     ):
         self.name = name
+        self._unit_model = None  # the same in scales, built on first use
         self._legs = legs
         self._legs_float = evaluated(legs)
         self._base_exact = [sp.Matrix(3, 1, list(row)) for row in base]
@@ -594,7 +595,10 @@ class ParallelManipulator:
         than the six wrenches (the platform gains a freedom with the actuators locked);
         'constraint': the constraint wrenches lose rank (the mechanism's mobility
         changes; Zlatanov et al. 1995). Exact ranks for exact input, SVD ranks (the
-        relative tolerance of :class:`~screwkit.ScrewSystem`) for floats.
+        relative tolerance of :class:`~screwkit.ScrewSystem`) for floats, computed
+        with every length divided by the mechanism's :attr:`scale` so that the same
+        pose in millimetres gets the same answer; a float pose on a limb's boundary
+        (a leg stretched straight, to round-off) is on it.
 
         Parameters
         ----------
@@ -608,6 +612,35 @@ class ParallelManipulator:
         set of str
             A subset of {'inverse', 'direct', 'constraint'}; empty at a regular pose.
         """
+        if is_symbolic(T):
+            return self._singularities(T, mode)
+        T, batched = self._pose(T)
+        if batched:
+            raise ValueError(f"T must be one pose (4, 4) here, got {T.shape[0]} poses")
+        unit = self._unit()  # lengths in scales: the float ranks are unit-free
+        T_unit = T[0].copy()
+        T_unit[:3, 3] /= self.scale
+        return unit._singularities(T_unit, mode)
+
+    def _unit(self):
+        """This mechanism with every length divided by its scale (floats), cached."""
+        if self._unit_model is None:
+            k = 1.0 / self.scale
+            home = self.home()
+            home[:3, 3] *= k
+            self._unit_model = ParallelManipulator(
+                self.name,
+                self._legs.scaled(k),
+                k * self.base_points,
+                k * self.platform_points,
+                self.motion,
+                home,
+                None,
+                self.default_mode,
+            )
+        return self._unit_model
+
+    def _singularities(self, T, mode):
         limbs, _ = self.limbs(T, mode)
         found = set()
         if any(ScrewSystem(limb).rank < len(limb) for limb in limbs):
