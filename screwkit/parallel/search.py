@@ -81,14 +81,14 @@ class AssemblyModes(list):
     ([], False)
     """
 
-    def __init__(self, poses=(), complete=False, method="", reason=None,
-                 continuum=False):
+    def __init__(
+        self, poses=(), complete=False, method="", reason=None, continuum=False
+    ):
         super().__init__(poses)
         self.complete = bool(complete)
         self.method = method
         self.reason = reason
         self.continuum = bool(continuum)
-
 
 
 #: Newton iterations when polishing a candidate assembly mode (each starts close).
@@ -279,8 +279,11 @@ def spheres(pm, rho):
     if h2 < -PARALLEL_SPHERES_TOL * l2**2:
         return [], None
     h = np.sqrt(max(h2, 0.0))
-    points = [O] if h2 <= PARALLEL_SPHERES_TOL * l2**2 else [O + h * n / area,
-                                                              O - h * n / area]
+    points = (
+        [O]
+        if h2 <= PARALLEL_SPHERES_TOL * l2**2
+        else [O + h * n / area, O - h * n / area]
+    )
     return [_translation(R, p) for p in points], None
 
 
@@ -345,15 +348,20 @@ def rails(pm, rho):
     legs, R = pm._legs, pm.home()[:3, :3]
     E = legs.e[:, 0, :].T  # (3, 3): one rail a row
     A = legs.A[:, 0, :].T
-    rhs = np.asarray(rho, dtype=float) + np.einsum("ij,ij->i", E, A - pm.platform_points @ R.T)
+    rhs = np.asarray(rho, dtype=float) + np.einsum(
+        "ij,ij->i", E, A - pm.platform_points @ R.T
+    )
     singular = np.linalg.svd(E, compute_uv=False)
     if singular[-1] <= PARALLEL_RANK_TOL * singular[0]:
         p, *_ = np.linalg.lstsq(E, rhs, rcond=PARALLEL_RANK_TOL)
         if np.max(np.abs(E @ p - rhs)) > PARALLEL_FK_ACCEPT_TOL * pm.scale:
             return [], None
-        poses, reason = [_translation(R, p)], (
-            "the rails are not independent: the platform slides freely along their "
-            "common normal"
+        poses, reason = (
+            [_translation(R, p)],
+            (
+                "the rails are not independent: the platform slides freely along their "
+                "common normal"
+            ),
         )
     else:
         poses, reason = [_translation(R, np.linalg.solve(E, rhs))], None
@@ -417,7 +425,9 @@ def continuum(pm, rho, poses, starts=()):
         step = PARALLEL_CONTINUUM_STEP * vt[n, rank:] * units  # along the kernel
         moved = np.array([_moved(pm, pose, s) for s in np.vstack([step, -step])])
         back, ok = _project(pm, rho, moved)
-        if any(ok[i] and not _same_pose(back[i], pose, pm.scale) for i in range(len(back))):
+        if any(
+            ok[i] and not _same_pose(back[i], pose, pm.scale) for i in range(len(back))
+        ):
             if found is None:
                 found = pose
                 reason = (
@@ -459,8 +469,20 @@ def _project(pm, rho, T0):
 
 
 def sort_modes(pm, poses):
-    """Spatial and translational modes by height (platform above the base first), then
-    by distance from home; planar ones by the platform's angle."""
+    """Assembly modes in fk_all's order.
+
+    Spatial and translational modes by height (platform above the base first), then by
+    distance from home; planar ones by the platform's angle.
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+    poses : list of ndarray, shape (4, 4)
+
+    Returns
+    -------
+    list of ndarray, shape (4, 4)
+    """
     if pm.planar:
         return sorted(poses, key=lambda T: np.arctan2(T[1, 0], T[0, 0]))
     home = pm.home()
