@@ -224,7 +224,8 @@ PARALLEL_POLY_ZERO_TOL = 1e-9
 PARALLEL_REAL_ROOT_TOL = 1e-6
 
 #: Cramer's rule for the 3-RPR's platform point fails where its determinant is below
-#: this fraction of its largest coefficient (or 1) (relative).
+#: this fraction of its largest coefficient (relative: the coefficients are areas, so
+#: the test is the same in any unit).
 PARALLEL_CRAMER_TOL = 1e-12
 
 #: Newton polishing a candidate assembly mode stops at this residual (times the

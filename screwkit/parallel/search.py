@@ -205,7 +205,7 @@ def _sextic(a, b, rho, phi0):
 
     def solve_q(t):
         d = D(t)
-        if abs(d) < PARALLEL_CRAMER_TOL * max(1.0, np.max(np.abs(D.coef))):
+        if abs(d) <= PARALLEL_CRAMER_TOL * np.max(np.abs(D.coef)):  # relative
             return None
         return np.array([Nx(t), Ny(t)]) / d
 
