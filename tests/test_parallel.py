@@ -903,3 +903,29 @@ def test_a_numpy_matrix_pose_is_read_as_an_array():
     T = random_stewart_pose()
     assert np.array_equal(stewart().ik(np.matrix(T)), stewart().ik(T))
     assert np.array_equal(stewart().jacobian(np.matrix(T)), stewart().jacobian(T))
+
+
+def test_a_delta_whose_spheres_coincide_or_pair_up_reports_its_continuum():
+    # equal base and platform radii and cranks pointing down (theta = pi / 2): every
+    # sphere's centre B_i - b_i lies on the axis, 0.2 m below the base
+    pm = parallel.delta(base_radius=0.2, platform_radius=0.2)
+    radial = np.c_[
+        np.cos(np.radians([0, 120, 240])), np.sin(np.radians([0, 120, 240])), [0] * 3
+    ]
+
+    def closes(T, theta):
+        elbows = 0.2 * radial + 0.2 * (
+            np.cos(theta)[:, None] * radial - np.sin(theta)[:, None] * [0, 0, 1]
+        )
+        C = 0.2 * radial + T[:3, 3]
+        return np.max(np.abs(np.linalg.norm(C - elbows, axis=1) - 0.45)) < 1e-12
+
+    theta = np.full(3, np.pi / 2)
+    sphere = pm.fk_all(theta)
+    assert sphere.continuum and not sphere.complete and "sphere" in sphere.reason
+    assert len(sphere) == 1 and closes(sphere[0], theta)
+    theta = np.array([np.pi / 2, np.pi / 2, -np.pi / 2])  # centres at z = -0.2, +0.2
+    circle = pm.fk_all(theta)
+    assert circle.continuum and "circle" in circle.reason
+    assert len(circle) == 1 and closes(circle[0], theta)
+    assert abs(circle[0][2, 3]) < 1e-12  # the circle lies midway, in the base plane

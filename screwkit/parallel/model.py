@@ -761,9 +761,10 @@ class ParallelManipulator:
             )
         seed = check_integer(seed, "seed", minimum=0)
         closed = None
-        if self.motion == "translational" and isinstance(self._legs, Revolute):
+        three = self.motion == "translational" and self.m == 3
+        if three and isinstance(self._legs, Revolute):
             closed, method = _search.spheres, "closed form (three spheres)"
-        elif self.motion == "translational" and isinstance(self._legs, Linear):
+        elif three and isinstance(self._legs, Linear):
             closed, method = _search.rails, "closed form (linear)"
         if closed is not None:
             poses, continuum = closed(self, values)
@@ -794,8 +795,9 @@ class ParallelManipulator:
                 else ()
             )
         isolated, on, continuum = _search.continuum(self, values, poses, stuck)
-        if on is not None:
-            poses, reason = _search.sort_modes(self, isolated) + [on], continuum
+        poses = _search.sort_modes(self, isolated)
+        if on is not None:  # one pose of the continuum, after the isolated modes
+            poses, reason = poses + [on], continuum
         return AssemblyModes(
             poses,
             complete=False,

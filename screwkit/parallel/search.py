@@ -394,7 +394,8 @@ def continuum(pm, rho, poses, starts=()):
     Returns
     -------
     isolated : list of ndarray, shape (4, 4)
-        The poses that are not on a continuum.
+        The poses that are not on a continuum (with the distinct regular modes the
+        starts reached).
     on_continuum : ndarray, shape (4, 4), or None
         One pose of a continuum.
     reason : str or None
@@ -418,9 +419,11 @@ def continuum(pm, rho, poses, starts=()):
     for n, pose in enumerate(T):
         given = n < len(poses)
         rank = int(np.sum(sigma[n] > PARALLEL_RANK_TOL * sigma[n, 0]))
-        if rank == k:
-            if given:
+        if rank == k:  # a regular mode (one the starts reached is kept if new)
+            if given or not any(_same_pose(pose, P, pm.scale) for P in isolated):
                 isolated.append(pose)
+            continue
+        if found is not None and not given:
             continue
         step = PARALLEL_CONTINUUM_STEP * vt[n, rank:] * units  # along the kernel
         moved = np.array([_moved(pm, pose, s) for s in np.vstack([step, -step])])
