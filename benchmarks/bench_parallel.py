@@ -4,7 +4,10 @@ Stewart-platform scripts on GitHub compute), for what a user runs:
 - Stewart-Gough IK of 100,000 poses (one ``pm.ik`` call, input checks included);
 - its Jacobian for 100,000 poses (``pm.jacobian``);
 - batched FK of 10,000 poses (``pm.fk`` by Newton from the home pose);
-- every assembly mode of one 3-RPR input (``pm.fk_all``, the sextic).
+- every assembly mode of one 3-RPR input (``pm.fk_all``, the sextic);
+- the assembly modes of one Stewart-Gough input (``pm.fk_all``, the multistart
+  search from 400 starts, goal 50 ms; its reference is Newton from the same 400
+  starts one at a time, scaled from 40).
 
 The NumPy loops run on a slice (1,000 or 200 poses) and are scaled to the full count
 (per-pose cost is constant); the 3-RPR's reference is a scan of 100,001 platform angles
@@ -120,6 +123,10 @@ def main():
     six = np.array(parallel.RPR_SIX_MODES_RHO)
     assert len(rpr.fk_all(six)) == scan_rpr(rpr, six) == 6
 
+    tilted = T[7]
+    rho_all = stewart.ik(tilted)
+    starts = parallel.search.random_starts(stewart, rho_all, 400, 0)
+
     rows = [
         (
             "Stewart IK, 1e5 poses",
@@ -152,6 +159,14 @@ def main():
             lambda: scan_rpr(rpr, six),
             1,
             0.100,
+        ),
+        (
+            "Stewart fk_all, one input",
+            lambda: parallel.stewart_gough().fk_all(rho_all),
+            lambda: stewart.fk_all(rho_all),
+            lambda: [loop_fk(stewart, rho_all[None], T0) for T0 in starts[:40]],
+            10,
+            0.050,
         ),
     ]
     print(

@@ -430,7 +430,7 @@ def check_rotation(rotation, name="R"):
     """
     if is_symbolic(rotation):
         R = as_sympy_matrix(rotation, name, (3, 3))
-        _check_rotation_numeric(_sample_numeric(R), name)
+        _check_rotation_numeric(_sampled(R, name), name)
         return R
     R = check_shape(as_float_array(rotation, name), name, (3, 3))
     _check_rotation_numeric(R, name)
@@ -443,6 +443,20 @@ def _sample_numeric(matrix):
         return np.array(matrix.evalf(), dtype=float)
     samples = [0.3 + 0.7 * k for k in range(len(symbols))]
     return np.array(matrix.subs(dict(zip(symbols, samples))).evalf(), dtype=float)
+
+
+def _sampled(matrix, name):
+    """:func:`_sample_numeric`, with a ``TypeError`` naming ``name`` for an entry
+    SymPy cannot evaluate to a number (an undefined function such as f(t))."""
+    try:
+        return _sample_numeric(matrix)
+    except TypeError:
+        bad = [e for e in matrix if e.atoms(sp.core.function.AppliedUndef)]
+        raise TypeError(
+            f"{name} must hold numbers, symbols or functions SymPy can evaluate, got "
+            f"the entry {bad[0] if bad else matrix} (an undefined function has no "
+            f"value to check)"
+        ) from None
 
 
 def _check_rotation_numeric(R, name):

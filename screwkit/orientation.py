@@ -352,13 +352,19 @@ def quaternion_from_rotation(R):
 
 
 def _canonical(q):
-    """Choose the sign of q: w > 0, or for w = 0 the first non-zero entry > 0."""
+    """Choose the sign of q: w > 0, or for w = 0 the first non-zero entry > 0.
+
+    Entries before the first one above ZERO_TOL (round-off of a half turn's w, say
+    -6e-17) are set to exactly 0, so that the promise holds as written: w >= 0, and
+    where w == 0 the first non-zero entry is positive.
+    """
     tol = ZERO_TOL
-    lead = np.where(np.abs(q[..., 0]) > tol, q[..., 0], 0.0)
-    for k in (1, 2, 3):
-        lead = np.where(
-            np.abs(lead) > 0, lead, np.where(np.abs(q[..., k]) > tol, q[..., k], 0.0)
-        )
+    q = np.array(q, dtype=float)
+    big = np.abs(q) > tol
+    first = np.argmax(big, axis=-1)  # the first entry above round-off (0 if none)
+    before = np.arange(4) < first[..., None]
+    q[before] = 0.0
+    lead = np.take_along_axis(q, first[..., None], -1)[..., 0]
     return np.where((lead < 0)[..., None], -q, q)
 
 

@@ -224,7 +224,8 @@ PARALLEL_POLY_ZERO_TOL = 1e-9
 PARALLEL_REAL_ROOT_TOL = 1e-6
 
 #: Cramer's rule for the 3-RPR's platform point fails where its determinant is below
-#: this fraction of its largest coefficient (or 1) (relative).
+#: this fraction of its largest coefficient (relative: the coefficients are areas, so
+#: the test is the same in any unit).
 PARALLEL_CRAMER_TOL = 1e-12
 
 #: Newton polishing a candidate assembly mode stops at this residual (times the
@@ -243,6 +244,24 @@ PARALLEL_FLAT_TOL = 1e-8
 #: fk_all lists a spatial mechanism's modes by height, platform above the base first;
 #: heights that agree to this many decimals (of the scale) count as equal.
 PARALLEL_HEIGHT_DECIMALS = 9
+
+#: The loop closure's Jacobian at an assembly mode (its linear columns times the scale,
+#: so that every column is a length) loses rank when its smallest singular value is
+#: below this fraction of its largest (relative): a direct singularity, or a point of a
+#: continuum of solutions. As RANK_TOL.
+PARALLEL_RANK_TOL = 1e-9
+
+#: A continuum of assembly modes is probed by stepping this far from a singular mode
+#: along the Jacobian's kernel (rad, or times the scale in length) and projecting back
+#: onto the solutions by least-squares Newton: a continuum is reached again at about
+#: this distance, an isolated (double) mode is not. Far above round-off, far below the
+#: distance between distinct modes of a mechanism about 1 m across.
+PARALLEL_CONTINUUM_STEP = 1e-2
+
+#: The delta's closed form: three spheres of radius l2 meet in two points, one (they
+#: touch) or none, as h^2 = l2^2 - (circumradius of the centres)^2 is above, within or
+#: below this fraction of l2^2 (relative): round-off of h^2 is a few 1e-16 of l2^2.
+PARALLEL_SPHERES_TOL = 1e-12
 
 # ---- motion: second-order kinematics, trajectories, differential IK ------------------
 

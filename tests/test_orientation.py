@@ -171,6 +171,25 @@ def test_half_turns(axis):
     np.testing.assert_allclose(q, [0, *(u * np.sign(lead))], atol=1e-12)
 
 
+def test_half_turns_in_floats_keep_the_sign_promise_literally():
+    # a half turn of pi in floats: sin(-pi) = -1.2e-16 makes w = -6.1e-17 before the
+    # sign is chosen; the promise is w >= 0, and where w == 0 the first non-zero
+    # component positive (the rotations written out here, not screwkit's rotx)
+    c, s = math.cos(-math.pi), math.sin(-math.pi)
+    turns = [Rx(-math.pi), Ry(-math.pi), Rz(-math.pi)]
+    turns += [np.array([[1, 0, 0], [0, c, -s], [0, s, c]]) @ Rz(1e-3)]
+    rng = np.random.default_rng(11)
+    for axis in rng.normal(size=(200, 3)):
+        u = axis / np.linalg.norm(axis)
+        K = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
+        turns.append(np.eye(3) + math.sin(math.pi) * K + 2 * K @ K)  # Rodrigues
+    q = sk.quaternion_from_rotation(np.array(turns))
+    assert np.all(q[:, 0] >= 0)
+    for row in q[q[:, 0] == 0]:
+        assert row[np.flatnonzero(row)[0]] > 0
+    assert np.sum(q[:, 0] == 0) >= len(turns) - 1  # every exact half turn: w is 0
+
+
 def test_quaternion_exact():
     q = sk.quaternion_from_rotation(sk.rotz(sp.pi / 2))
     assert list(q) == [sp.sqrt(2) / 2, 0, 0, sp.sqrt(2) / 2]

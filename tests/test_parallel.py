@@ -743,3 +743,189 @@ def test_the_same_stewart_platform_in_millimetres_gives_the_same_answers_scaled(
     assert np.allclose(result_mm.T[:3, 3], 1000 * result.T[:3, 3], atol=1e-6)
     modes, modes_mm = metres.fk_all(metres.ik(T)), mm.fk_all(mm.ik(T_mm))
     assert len(modes) == len(modes_mm)
+
+
+# ---- how far fk_all's answer can be trusted (issue 31) ------------------------------
+
+
+def test_fk_all_says_whether_it_is_complete_and_how_it_found_the_modes():
+    T = random_stewart_pose()
+    searched = stewart().fk_all(stewart().ik(T))
+    assert isinstance(searched, parallel.AssemblyModes) and isinstance(searched, list)
+    assert searched.complete is False and searched.method == "multistart search"
+    assert "400 random starts" in searched.reason and not searched.continuum
+    sextic = rpr().fk_all(parallel.RPR_SIX_MODES_RHO)
+    assert (
+        len(sextic) == 6 and not sextic.complete and "floating point" in sextic.reason
+    )
+    theta = delta_robot().ik(delta_robot().home())
+    closed = delta_robot().fk_all(theta)
+    assert closed.complete and closed.reason is None
+    assert closed.method == "closed form (three spheres)"
+    tri = tripteron_robot()
+    rails = tri.fk_all(tri.ik(tri.home()))
+    assert rails.complete and rails.method == "closed form (linear)"
+    assert len(rails) == 1 and np.allclose(rails[0], tri.home(), atol=1e-12)
+
+
+def three_spheres(centres, radius):
+    """The points at ``radius`` from three centres, by elimination written out here:
+    subtracting the first sphere's equation from the others leaves two planes, whose
+    line p0 + s d meets the first sphere in a quadratic in s."""
+    c0, c1, c2 = centres
+    N = np.array([c1 - c0, c2 - c0])
+    rhs = 0.5 * np.array([c1 @ c1 - c0 @ c0, c2 @ c2 - c0 @ c0])
+    d = np.cross(N[0], N[1])
+    p0 = np.linalg.lstsq(N, rhs, rcond=None)[0]  # a point of both planes
+    a, b, c = d @ d, 2 * d @ (p0 - c0), (p0 - c0) @ (p0 - c0) - radius**2
+    disc = b * b - 4 * a * c
+    if disc < 0:
+        return []
+    return [p0 + (-b + s * np.sqrt(disc)) / (2 * a) * d for s in (1, -1)]
+
+
+def test_delta_closed_form_finds_both_modes_of_random_crank_angles():
+    counts = {0: 0, 2: 0}
+    for l2 in (0.45, 0.25):  # the catalogue's links, and short ones that miss
+        pm = parallel.delta(l2=l2)
+        for theta in RNG.uniform(-np.pi, np.pi, (40, 3)):
+            counts[len(delta_modes_checked(pm, theta, l2))] += 1
+    assert counts[0] > 0 and counts[2] > 0  # both cases drawn
+
+
+def delta_modes_checked(pm, theta, l2):
+    """pm.fk_all(theta) checked against the spheres written out; returns it."""
+    radial = np.c_[
+        np.cos(np.radians([0, 120, 240])), np.sin(np.radians([0, 120, 240])), [0] * 3
+    ]
+    elbows = 0.2 * radial + 0.2 * (
+        np.cos(theta)[:, None] * radial - np.sin(theta)[:, None] * [0, 0, 1]
+    )
+    expected = three_spheres(elbows - 0.05 * radial, l2)
+    modes = pm.fk_all(theta)
+    assert modes.complete and len(modes) == len(expected)
+    for p in expected:
+        assert min(np.max(np.abs(T[:3, 3] - p)) for T in modes) < 1e-12
+    for T in modes:
+        assert np.array_equal(T[:3, :3], np.eye(3))
+    return modes
+
+
+def test_delta_with_equal_cranks_returns_the_mirror_mode_above_the_base():
+    # issue 31: the search returned only the mode below; the mode above (the centres'
+    # mirror image) is an assembly mode too
+    modes = delta_robot().fk_all(np.full(3, -0.4))
+    assert len(modes) == 2
+    above, below = modes
+    assert above[2, 3] > 0 > below[2, 3]
+    crank_height = 0.2 * np.sin(0.4)  # the elbows' common height (theta > 0 lowers)
+    assert above[2, 3] + below[2, 3] == pytest.approx(2 * crank_height, abs=1e-12)
+
+
+def test_a_continuum_is_reported_not_an_empty_list():
+    # issue 31: all platform points at one place: every rotation about it solves
+    pm = parallel.stewart_gough(platform=np.zeros((6, 3)), leg_limits=None)
+    modes = pm.fk_all(np.full(6, 1.2))
+    assert modes.continuum and not modes.complete and "continuum" in modes.reason
+    assert len(modes) >= 1
+    height = np.sqrt(1.2**2 - 1.0)  # the base points lie on the unit circle
+    for T in modes:
+        assert abs(abs(T[2, 3]) - height) < 1e-9 and np.allclose(T[:2, 3], 0)
+        assert np.allclose(pm.ik(T), 1.2)
+
+
+def test_a_3rpr_self_motion_is_reported_with_its_isolated_modes():
+    # congruent base and platform, equal legs: the platform translates on a circle
+    # of radius 0.5 without turning (a parallelogram motion)
+    base = np.array(parallel.RPR_BASE, dtype=float)
+    pm = parallel.planar_3rpr(base, base)
+    modes = pm.fk_all([0.5, 0.5, 0.5])
+    assert modes.continuum and not modes.complete
+    on = [T for T in modes if np.allclose(T[:3, :3], np.eye(3), atol=1e-9)]
+    assert on and all(abs(np.linalg.norm(T[:2, 3]) - 0.5) < 1e-9 for T in on)
+    for T in modes:
+        lengths = leg_lengths(pm.base_points, pm.platform_points, T)
+        assert np.max(np.abs(lengths - 0.5)) < 1e-9
+    turned = [T for T in modes if not np.allclose(T[:3, :3], np.eye(3), atol=1e-9)]
+    assert turned  # the modes off the circle are kept too
+
+
+def test_a_generic_input_is_not_taken_for_a_continuum():
+    for T in (random_stewart_pose() for _ in range(3)):
+        assert not stewart().fk_all(stewart().ik(T)).continuum
+    for rho in ([0.92, 1.37, 0.9], [0.8, 1.1, 0.95]):
+        assert not rpr().fk_all(rho).continuum
+
+
+# ---- singularities robust to round-off and units (issue 31) -------------------------
+
+
+def test_a_stewart_leg_near_the_base_x_axis_is_classified_as_exactly_on_it():
+    T = stewart().home()
+    C0 = stewart().attachments(T)[0]
+    answers = []
+    for offset in (0.0, 1e-13, 1e-11, 1e-9, 1e-8):
+        n = np.array([1.0, offset, 0.0]) / np.hypot(1.0, offset)
+        base = stewart().base_points.copy()
+        base[0] = C0 - 1.2 * n  # leg 0 along x, `offset` off it
+        pm = parallel.stewart_gough(base=base, leg_limits=None)
+        answers.append(pm.singularities(T))
+    exact_base = sp.Matrix(parallel.STEWART_BASE)
+    C0_exact = stewart().attachments(stewart().home_exact())[0]
+    exact_base[0, :] = (C0_exact - sp.Matrix([sp.Rational(6, 5), 0, 0])).T
+    exact = parallel.stewart_gough(base=exact_base, leg_limits=None)
+    assert answers == [exact.singularities(exact.home_exact())] * 5
+
+
+def test_a_3rrr_pose_on_a_limbs_boundary_in_floats_is_an_inverse_singularity():
+    T = np.eye(4)
+    T[0, 3] = -0.35  # limb 0 stretched: C_0 at l1 + l2 = 1.1 m from its pivot
+    assert np.isfinite(rrr().ik(T)).all()
+    assert "inverse" in rrr().singularities(T)
+
+
+def test_float_poses_with_a_stretched_limb_are_inverse_singularities():
+    a0, b0 = rrr().base_points[0, :2], rrr().platform_points[0, :2]
+    found = 0
+    for _ in range(40):
+        phi = RNG.uniform(-0.2, 0.2)
+        R = rotation([0, 0, 1], phi)
+        angle = np.pi + RNG.uniform(-0.15, 0.15)  # limb 0 pointing inwards, straight
+        C0 = a0 + 1.1 * np.array([np.cos(angle), np.sin(angle)])
+        T = pose(R, [*(C0 - R[:2, :2] @ b0), 0.0])
+        assert np.isfinite(rrr().ik(T)).all()
+        found += "inverse" in rrr().singularities(T)
+    assert found == 40
+
+
+@pytest.mark.filterwarnings("ignore::PendingDeprecationWarning")  # np.matrix's own
+def test_a_numpy_matrix_pose_is_read_as_an_array():
+    T = random_stewart_pose()
+    assert np.array_equal(stewart().ik(np.matrix(T)), stewart().ik(T))
+    assert np.array_equal(stewart().jacobian(np.matrix(T)), stewart().jacobian(T))
+
+
+def test_a_delta_whose_spheres_coincide_or_pair_up_reports_its_continuum():
+    # equal base and platform radii and cranks pointing down (theta = pi / 2): every
+    # sphere's centre B_i - b_i lies on the axis, 0.2 m below the base
+    pm = parallel.delta(base_radius=0.2, platform_radius=0.2)
+    radial = np.c_[
+        np.cos(np.radians([0, 120, 240])), np.sin(np.radians([0, 120, 240])), [0] * 3
+    ]
+
+    def closes(T, theta):
+        elbows = 0.2 * radial + 0.2 * (
+            np.cos(theta)[:, None] * radial - np.sin(theta)[:, None] * [0, 0, 1]
+        )
+        C = 0.2 * radial + T[:3, 3]
+        return np.max(np.abs(np.linalg.norm(C - elbows, axis=1) - 0.45)) < 1e-12
+
+    theta = np.full(3, np.pi / 2)
+    sphere = pm.fk_all(theta)
+    assert sphere.continuum and not sphere.complete and "sphere" in sphere.reason
+    assert len(sphere) == 1 and closes(sphere[0], theta)
+    theta = np.array([np.pi / 2, np.pi / 2, -np.pi / 2])  # centres at z = -0.2, +0.2
+    circle = pm.fk_all(theta)
+    assert circle.continuum and "circle" in circle.reason
+    assert len(circle) == 1 and closes(circle[0], theta)
+    assert abs(circle[0][2, 3]) < 1e-12  # the circle lies midway, in the base plane

@@ -29,20 +29,23 @@ from .catalogue import (
     tripteron,
 )
 from .model import (
+    MAX_FK_STARTS,
     MAX_WORKSPACE_POINTS,
     ParallelFK,
     ParallelIK,
     ParallelManipulator,
     Workspace,
 )
-from .search import rpr_sextic
+from .search import AssemblyModes, rpr_sextic
 
 __all__ = [
     "ParallelManipulator",
     "ParallelIK",
     "ParallelFK",
     "Workspace",
+    "AssemblyModes",
     "MAX_WORKSPACE_POINTS",
+    "MAX_FK_STARTS",
     "stewart_gough",
     "planar_3rpr",
     "planar_3rrr",

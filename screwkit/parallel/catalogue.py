@@ -239,7 +239,9 @@ def delta(
     )
 
 
-def tripteron(a=Rational(9, 20), b=Rational(9, 20), L=1):
+def tripteron(
+    a=Rational(9, 20), b=Rational(9, 20), L=1, offset=Rational(1, 10), home=None
+):
     """The 3-PRRR Tripteron of the mobility chapter, a decoupled translational
     mechanism.
 
@@ -253,6 +255,11 @@ def tripteron(a=Rational(9, 20), b=Rational(9, 20), L=1):
         The lengths of the two links of each leg (m).
     L : number
         The carriages' rails' offset from the origin (m).
+    offset : number
+        How far each platform point b_i lies from the platform's origin, along the
+        next axis (m).
+    home : array-like, shape (4, 4), optional
+        The home pose (a translation). Default: at (0.35, 0.35, 0.35) m.
 
     Returns
     -------
@@ -261,12 +268,13 @@ def tripteron(a=Rational(9, 20), b=Rational(9, 20), L=1):
         (m).
     """
     a, b, L = _length(a, "a"), _length(b, "b"), _length(L, "L")
+    offset = _length(offset, "offset")
     carriages = [[0, L, 0], [0, 0, L], [0, 0, 0]]
     axes = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
-    tenth = sp.Rational(1, 10)
-    platform = [[0, tenth, 0], [0, 0, tenth], [tenth, 0, 0]]
-    home = sp.eye(4)
-    home[:3, 3] = sp.Matrix([sp.Rational(7, 20)] * 3)
+    platform = [[0, offset, 0], [0, 0, offset], [offset, 0, 0]]
+    if home is None:
+        home = sp.eye(4)
+        home[:3, 3] = sp.Matrix([sp.Rational(7, 20)] * 3)
     return ParallelManipulator(
         name="Tripteron 3-PRRR",
         legs=Linear(carriages, axes, a, b),

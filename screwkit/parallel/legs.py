@@ -52,6 +52,23 @@ def _floats(value):
     return sp.Float(float(value))
 
 
+def _across(n):
+    """The universal joint's first axis for a leg along n: the base x axis, unless the
+    leg runs closer to x than to y or z (the second axis n x x would then be short
+    and its rank a matter of round-off); then the axis among y, z the leg is farthest
+    from. Any axis not along n gives the leg its six freedoms."""
+    size = [abs(float(v)) for v in n]
+    if size[0] < max(size[1], size[2]):
+        return sp.Matrix([1, 0, 0])
+    return sp.Matrix([0, 1, 0]) if size[1] <= size[2] else sp.Matrix([0, 0, 1])
+
+
+def _is_float(expression):
+    """Whether a SymPy number came from floats (a float pose's layer), where a
+    comparison with 0 must allow round-off."""
+    return bool(expression.atoms(sp.Float))
+
+
 def evaluated(legs):
     """A copy of ``legs`` whose exact layer holds Floats (for a float pose's screws).
 
@@ -84,6 +101,19 @@ class Legs:
 
     #: Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
     modes = ("",)
+
+    def scaled(self, factor):
+        """The same legs with every length times ``factor``, as floats.
+
+        Parameters
+        ----------
+        factor : float
+
+        Returns
+        -------
+        Legs
+        """
+        raise NotImplementedError
 
     def ik(self, C, signs):
         """The actuated joint values that reach the points C.
@@ -219,6 +249,9 @@ class Prismatic(Legs):
         self.A_exact = base
         self.planar = planar
 
+    def scaled(self, factor):
+        return Prismatic((factor * self.A[:, 0, :].T).tolist(), self.planar)
+
     def ik(self, C, signs):
         rho = np.subtract(C[0], self.A[0])  # |C - A|, in place: no temporaries
         rho *= rho
@@ -270,11 +303,7 @@ class Prismatic(Legs):
                 limbs.append([(z, a, 0), (n, a, sp.oo), (z, c, 0)])
                 actuated.append(1)
             else:
-                x = (
-                    sp.Matrix([1, 0, 0])
-                    if (n[1] != 0 or n[2] != 0)
-                    else sp.Matrix([0, 1, 0])
-                )
+                x = _across(n)
                 second = n.cross(x)
                 limbs.append(
                     [(x, a, 0), (second, a, 0), (n, a, sp.oo)]
@@ -315,6 +344,11 @@ class Revolute(Legs):
         self.exact = (base, axis, e0, l1, l2)
         self.spatial = spatial
         self._axis_tol = PARALLEL_AXIS_TOL * (self.l1 + self.l2)
+
+    def scaled(self, factor):
+        rows = [v[:, 0, :].T.tolist() for v in (self.A, self.u, self.e0)]
+        rows[0] = (factor * self.A[:, 0, :].T).tolist()
+        return Revolute(*rows, factor * self.l1, factor * self.l2, self.spatial)
 
     def _crank(self, theta):
         c, s = np.cos(theta), np.sin(theta)
@@ -370,10 +404,21 @@ class Revolute(Legs):
             K, L = sp.expand(d.dot(e0)), sp.expand(d.dot(e1))
             M = sp.expand((d.dot(d) + l1**2 - l2**2) / (2 * l1))
             radius2 = sp.expand(K**2 + L**2)
-            if radius2 == 0 or sp.simplify(M**2 - radius2).is_positive:
+            excess = sp.expand(M**2 - radius2)
+            if _is_float(excess) and excess.is_number:  # a float pose: round-off
+                if float(radius2) <= (self._axis_tol) ** 2:
+                    out.append(None)
+                    continue
+                band = 2 * PARALLEL_REACH_TOL * float(radius2)
+                if float(excess) > band:
+                    out.append(None)
+                    continue
+                if float(excess) >= -band:  # stretched or folded to round-off (the
+                    excess = sp.Float(0)  # root would make it sqrt(eps) off the line)
+            elif radius2 == 0 or sp.simplify(excess).is_positive:
                 out.append(None)
                 continue
-            root = int(sign) * sp.sqrt(sp.expand(radius2 - M**2))
+            root = int(sign) * sp.sqrt(-excess)
             cos_t = sp.simplify((K * M - L * root) / radius2)
             sin_t = sp.simplify((L * M + K * root) / radius2)
             B = (a + l1 * (cos_t * e0 + sin_t * e1)).applyfunc(sp.simplify)
@@ -439,6 +484,11 @@ class Linear(Legs):
         self.l1, self.l2 = float(l1), float(l2)
         self.exact = (base, axis, l1, l2)
 
+    def scaled(self, factor):
+        base = (factor * self.A[:, 0, :].T).tolist()
+        axis = self.e[:, 0, :].T.tolist()
+        return Linear(base, axis, factor * self.l1, factor * self.l2)
+
     def ik(self, C, signs):
         d = C - self.A
         rho = _dot(d, self.e)
@@ -470,6 +520,9 @@ class Linear(Legs):
                     2 * dist2
                 )
                 h2 = sp.expand(sp.sympify(l1) ** 2 / dist2 - along**2)
+                if _is_float(h2) and h2.is_number:  # a float pose: round-off
+                    slack = 2 * PARALLEL_REACH_TOL * float(sp.sympify(l1) ** 2 / dist2)
+                    h2 = sp.Float(0) if abs(float(h2)) <= slack else h2
                 if h2.is_negative:
                     raise ValueError(
                         "T is out of reach of a Tripteron leg: no joint screws"

@@ -28,11 +28,14 @@ import sympy as sp
 
 from .._checks import (
     as_float_array,
+    check_flag,
     check_integer,
     check_option,
     check_poses,
+    check_positive,
     check_rotation,
     check_transform,
+    describe,
     is_symbolic,
 )
 from ..screws import Wrench
@@ -40,13 +43,22 @@ from ..systems import ScrewSystem
 from ..tolerances import PARALLEL_FK_TOL, PARALLEL_MOTION_TOL
 from . import numeric as _numeric
 from . import search as _search
-from .legs import Linear, Prismatic, evaluated
+from .legs import Linear, Prismatic, Revolute, evaluated
+from .search import AssemblyModes
 
 #: Poses per block of the batched computations: a block's arrays stay in the cache.
 _BLOCK = 4096
 
 #: The largest workspace grid (points), as sk.workspace bounds its sweeps.
 MAX_WORKSPACE_POINTS = 10_000_000
+
+#: The most random starts fk_all's search takes: 100 000 starts hold about 30 MB of
+#: Newton's arrays for a Stewart platform (10^8 would need about 12 GB).
+MAX_FK_STARTS = 100_000
+
+#: Starts projected onto the solutions by least-squares Newton when the search found
+#: no mode (a continuum makes Newton's exact steps fail): a few dozen reach it.
+_CONTINUUM_STARTS = 32
 
 #: The free components of the platform twist [wx, wy, wz, vx, vy, vz] per motion type.
 _FREEDOMS = {
@@ -180,6 +192,7 @@ class ParallelManipulator:
         default_mode=None,
     ):
         self.name = name
+        self._unit_model = None  # the same in scales, built on first use
         self._legs = legs
         self._legs_float = evaluated(legs)
         self._base_exact = [sp.Matrix(3, 1, list(row)) for row in base]
@@ -206,6 +219,8 @@ class ParallelManipulator:
         )
         self.default_mode = default_mode or self.working_modes[0]
         self.prismatic = isinstance(legs, (Prismatic, Linear))
+        if self._pose(self._home, "home")[1]:  # a rigid pose of this motion type
+            raise ValueError(f"home must be one pose (4, 4), got {describe(home)}")
 
     def _limits(self, leg_limits):
         limits = as_float_array(leg_limits, "leg_limits")
@@ -249,12 +264,20 @@ class ParallelManipulator:
         batched) or (SymPy matrix, False)."""
         # a float batch takes check_poses' fast pass; anything else (SymPy stays
         # exact) the full check
+        if isinstance(T, np.matrix):  # NumPy's matrix class indexes as 2-d only
+            T = np.asarray(T)
         T = (
             check_poses(T, name)
             if isinstance(T, np.ndarray) and T.ndim == 3
             else check_transform(T, name)
         )
         if isinstance(T, sp.MatrixBase):
+            if T.free_symbols:
+                names = ", ".join(sorted(str(x) for x in T.free_symbols))
+                raise TypeError(
+                    f"{name} must be a pose of numbers (exact or float), got one with "
+                    f"the free symbol(s) {names}: substitute values first"
+                )
             self._check_motion(np.array(T.evalf(), dtype=float)[None], name)
             return T, False
         batched = T.ndim == 3
@@ -364,6 +387,7 @@ class ParallelManipulator:
             Instead, with ``passive``.
         """
         signs = self._mode(mode)
+        passive = check_flag(passive, "passive")
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
             rho = self._legs.ik_exact(self.attachments(T), signs)
@@ -571,7 +595,10 @@ class ParallelManipulator:
         than the six wrenches (the platform gains a freedom with the actuators locked);
         'constraint': the constraint wrenches lose rank (the mechanism's mobility
         changes; Zlatanov et al. 1995). Exact ranks for exact input, SVD ranks (the
-        relative tolerance of :class:`~screwkit.ScrewSystem`) for floats.
+        relative tolerance of :class:`~screwkit.ScrewSystem`) for floats, computed
+        with every length divided by the mechanism's :attr:`scale` so that the same
+        pose in millimetres gets the same answer; a float pose on a limb's boundary
+        (a leg stretched straight, to round-off) is on it.
 
         Parameters
         ----------
@@ -585,6 +612,35 @@ class ParallelManipulator:
         set of str
             A subset of {'inverse', 'direct', 'constraint'}; empty at a regular pose.
         """
+        if is_symbolic(T):
+            return self._singularities(T, mode)
+        T, batched = self._pose(T)
+        if batched:
+            raise ValueError(f"T must be one pose (4, 4) here, got {T.shape[0]} poses")
+        unit = self._unit()  # lengths in scales: the float ranks are unit-free
+        T_unit = T[0].copy()
+        T_unit[:3, 3] /= self.scale
+        return unit._singularities(T_unit, mode)
+
+    def _unit(self):
+        """This mechanism with every length divided by its scale (floats), cached."""
+        if self._unit_model is None:
+            k = 1.0 / self.scale
+            home = self.home()
+            home[:3, 3] *= k
+            self._unit_model = ParallelManipulator(
+                self.name,
+                self._legs.scaled(k),
+                k * self.base_points,
+                k * self.platform_points,
+                self.motion,
+                home,
+                None,
+                self.default_mode,
+            )
+        return self._unit_model
+
+    def _singularities(self, T, mode):
         limbs, _ = self.limbs(T, mode)
         found = set()
         if any(ScrewSystem(limb).rank < len(limb) for limb in limbs):
@@ -609,9 +665,10 @@ class ParallelManipulator:
             Starting pose(s) (default: home); the assembly mode found is the one
             Newton reaches from it.
         tol : float, optional
-            Residual (m) below which a pose is accepted; default
+            Residual (m, > 0) below which a pose is accepted; default
             ``PARALLEL_FK_TOL`` times ``scale``.
         max_iterations : int
+            At least 1.
 
         Returns
         -------
@@ -629,7 +686,10 @@ class ParallelManipulator:
                 f"guess must be one pose or {len(values)} poses (one per row of "
                 f"rho), got {len(T0)}"
             )
-        tol = PARALLEL_FK_TOL * self.scale if tol is None else tol
+        tol = (
+            PARALLEL_FK_TOL * self.scale if tol is None else check_positive(tol, "tol")
+        )
+        max_iterations = check_integer(max_iterations, "max_iterations", minimum=1)
         T, success, iterations, error = self._newton(values, T0, tol, max_iterations)
         if not batched:
             return ParallelFK(
@@ -650,29 +710,42 @@ class ParallelManipulator:
         )
 
     def fk_all(self, rho, starts=None, seed=0):
-        """Every real assembly mode with actuated values rho.
+        """Every real assembly mode with actuated values rho, and how far to trust it.
 
-        The 3-RPR solves its univariate sextic (:func:`~screwkit.parallel.rpr_sextic`;
-        Gosselin, Sefrioui & Richard 1992): complete, up to six modes. Other mechanisms
-        run a multi-start Newton search (:func:`screwkit.parallel.search.multistart`,
+        The delta solves three spheres' intersection and the Tripteron a linear
+        system (closed forms: ``complete`` is True). The 3-RPR solves its univariate
+        sextic (:func:`~screwkit.parallel.rpr_sextic`; Gosselin, Sefrioui & Richard
+        1992), up to six modes, its roots found in floating point. Other mechanisms run
+        a multi-start Newton search (:func:`screwkit.parallel.search.multistart`,
         ``starts`` random poses around the home pose plus their mirror images through
         the base plane, seeded): every pose it returns satisfies the legs, but it may
         miss a mode no start leads to; the general Stewart-Gough platform has up to 40
-        (Dietmaier 1998 found 40 real ones).
+        (Dietmaier 1998 found 40 real ones). Where the closure's Jacobian loses rank at
+        a solution and the solutions continue along its kernel, the result says so
+        (``continuum``): a self-motion or a degenerate geometry.
 
         Parameters
         ----------
         rho : array-like, shape (m,)
             One input (m or rad).
         starts : int, optional
-            Random starting poses of the search (default 400).
+            Random starting poses of the search (default 400, at most
+            ``MAX_FK_STARTS``).
         seed : int
             The search's seed.
 
         Returns
         -------
-        list of ndarray, shape (4, 4)
-            The assembly modes found.
+        AssemblyModes
+            A list of the assembly modes found (poses (4, 4)), with ``complete`` (True
+            only when proven to hold every mode), ``method``, ``reason`` (why not
+            complete, or what the continuum is) and ``continuum``.
+
+        Raises
+        ------
+        ValueError
+            If ``starts`` exceeds ``MAX_FK_STARTS`` (memory), or ``rho`` is not one
+            input.
         """
         values = self._rho(rho)
         if values.ndim != 1:
@@ -680,11 +753,58 @@ class ParallelManipulator:
                 f"rho must be one input ({self.m},) for fk_all, "
                 f"got shape {values.shape}"
             )
-        if isinstance(self._legs, Prismatic) and self.planar:
-            return _search.rpr_sextic(self, values)
         starts = 400 if starts is None else check_integer(starts, "starts", minimum=1)
+        if starts > MAX_FK_STARTS:
+            raise ValueError(
+                f"starts must be at most {MAX_FK_STARTS} (Newton's arrays for "
+                f"{starts} starts would not fit in memory), got {starts}"
+            )
         seed = check_integer(seed, "seed", minimum=0)
-        return _search.multistart(self, values, starts, seed)
+        closed = None
+        three = self.motion == "translational" and self.m == 3
+        if three and isinstance(self._legs, Revolute):
+            closed, method = _search.spheres, "closed form (three spheres)"
+        elif three and isinstance(self._legs, Linear):
+            closed, method = _search.rails, "closed form (linear)"
+        if closed is not None:
+            poses, continuum = closed(self, values)
+            return AssemblyModes(
+                _search.sort_modes(self, poses),
+                complete=continuum is None,
+                method=method,
+                reason=continuum,
+                continuum=continuum is not None,
+            )
+        if isinstance(self._legs, Prismatic) and self.planar:
+            poses, _, stuck = _search._sextic_modes(self, values)
+            method = "sextic (floating-point roots)"
+            reason = (
+                "the sextic's real roots are found in floating point (numpy's "
+                "companion matrix), not isolated with certainty"
+            )
+        else:
+            poses = _search.multistart(self, values, starts, seed)
+            method = "multistart search"
+            reason = (
+                f"a search from {starts} random starts (seed {seed}): it may miss "
+                f"modes no start leads to"
+            )
+            stuck = (
+                _search.random_starts(self, values, _CONTINUUM_STARTS, seed)
+                if not poses
+                else ()
+            )
+        isolated, on, continuum = _search.continuum(self, values, poses, stuck)
+        poses = _search.sort_modes(self, isolated)
+        if on is not None:  # one pose of the continuum, after the isolated modes
+            poses, reason = poses + [on], continuum
+        return AssemblyModes(
+            poses,
+            complete=False,
+            method=method,
+            reason=reason,
+            continuum=on is not None,
+        )
 
     # ---- workspace ------------------------------------------------------------------
 

@@ -6,10 +6,14 @@ Points are laid out component first, (3, N, m), as in :mod:`screwkit.parallel.le
 
 import numpy as np
 
-from ..tolerances import PARALLEL_FK_ACCEPT_TOL, PARALLEL_NEWTON_MAX_STEP
+from ..tolerances import (
+    PARALLEL_FK_ACCEPT_TOL,
+    PARALLEL_NEWTON_MAX_STEP,
+    PARALLEL_RANK_TOL,
+)
 from ..transforms import _cross, _rodrigues, _skew
 
-__all__ = ["points", "solve", "newton"]
+__all__ = ["points", "solve", "solve_least_squares", "newton", "closure_rows"]
 
 
 def points(R, p, b):
@@ -76,7 +80,62 @@ def solve(A, b):
         return out
 
 
-def newton(legs, platform_points, freedoms, rho, T0, tol, max_iterations, scale=1.0):
+def solve_least_squares(A, b):
+    """Batched minimum-norm least-squares solve (singular values below
+    ``PARALLEL_RANK_TOL`` times the largest are dropped).
+
+    Parameters
+    ----------
+    A : ndarray, shape (N, k, k)
+    b : ndarray, shape (N, k)
+
+    Returns
+    -------
+    ndarray, shape (N, k)
+        The x of least norm that minimises |A x - b| (0 where A is 0).
+    """
+    with np.errstate(all="ignore"):
+        return (np.linalg.pinv(A, rcond=PARALLEL_RANK_TOL) @ b[..., None])[..., 0]
+
+
+def closure_rows(legs, platform_points, freedoms, T, rho, scale=1.0):
+    """The loop closure's residual and its derivative along the free twist components,
+    with the linear columns times ``scale`` (every column a length).
+
+    Parameters
+    ----------
+    legs : the legs' model
+    platform_points : ndarray, shape (m, 3)
+    freedoms : list of int
+    T : ndarray, shape (N, 4, 4)
+    rho : ndarray, shape (N, m)
+    scale : float
+        The mechanism's size (m).
+
+    Returns
+    -------
+    r : ndarray, shape (N, m)
+        The residual (m).
+    rows : ndarray, shape (N, m, len(freedoms))
+        dr/dV with V's linear components in units of ``scale`` (m).
+    """
+    C = points(T[:, :3, :3], T[:, :3, 3], platform_points)
+    r, g, _ = legs.closure(C, rho)
+    rows = np.stack([*_cross(C, g), *(scale * g)], axis=-1)
+    return r, rows[:, :, freedoms]
+
+
+def newton(
+    legs,
+    platform_points,
+    freedoms,
+    rho,
+    T0,
+    tol,
+    max_iterations,
+    scale=1.0,
+    least_squares=False,
+):
     """Newton-Raphson on the loop closure r(C, rho) = 0 over the free twist components.
 
     Each step solves the rows [C x g, g] (the closure's derivative along the space
@@ -101,6 +160,9 @@ def newton(legs, platform_points, freedoms, rho, T0, tol, max_iterations, scale=
     max_iterations : int
     scale : float
         The mechanism's size (m), for the step's damping and the acceptance floor.
+    least_squares : bool
+        Take the minimum-norm least-squares step (Gauss-Newton, for a Jacobian that
+        loses rank on a continuum of solutions) instead of the exact solve.
 
     Returns
     -------
@@ -129,8 +191,11 @@ def newton(legs, platform_points, freedoms, rho, T0, tol, max_iterations, scale=
         rows = np.stack([*_cross(C, g), *g], axis=-1)
         rows = rows if len(free) == 6 else rows[:, :, free]
         step = np.zeros((N, 6))
-        with np.errstate(all="ignore"):
-            step[:, free] = solve(rows, -r)
+        if least_squares:  # the columns made lengths, so the rank is unit-free
+            step[:, free] = solve_least_squares(rows * units[free], -r) * units[free]
+        else:
+            with np.errstate(all="ignore"):
+                step[:, free] = solve(rows, -r)
         step[done] = 0.0
         size = np.max(np.abs(step) / units, axis=1, keepdims=True)
         step = step * np.minimum(

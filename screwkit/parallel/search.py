@@ -7,6 +7,13 @@
   polynomial of degree 8 in t, which holds the factor (1 + t^2) (the circular points)
   and leaves the sextic. Its real roots are every real assembly mode; each is polished
   by Newton on the loop closure and checked.
+- :func:`spheres`: the delta's closed form: the platform's origin is where three
+  spheres of radius l2 meet (centred at the elbows less the platform points): two
+  points, one or none, or a continuum when the centres are collinear;
+- :func:`rails`: the Tripteron's closed form, a linear system in the platform's origin;
+- :func:`continuum`: whether a mode found lies on a continuum of solutions (the
+  closure's Jacobian loses rank there, and a step along its kernel projects back onto
+  solutions);
 - :func:`multistart`: Newton from many seeded starting poses (and their mirror images
   through the base plane, which keep every leg length when base and platform points are
   planar). Every pose returned satisfies the legs to ``PARALLEL_FK_ACCEPT_TOL`` times
@@ -16,19 +23,73 @@
 
 import numpy as np
 
-from .._checks import as_float_array
+from .._checks import as_float_array, check_flag
 from ..orientation import rotation_from_quaternion
 from ..tolerances import (
+    LENGTH_TOL,
+    PARALLEL_CONTINUUM_STEP,
     PARALLEL_CRAMER_TOL,
+    PARALLEL_FK_ACCEPT_TOL,
     PARALLEL_FLAT_TOL,
     PARALLEL_HEIGHT_DECIMALS,
     PARALLEL_POLISH_TOL,
     PARALLEL_POLY_ZERO_TOL,
+    PARALLEL_RANK_TOL,
     PARALLEL_REAL_ROOT_TOL,
     PARALLEL_SAME_POSE_TOL,
+    PARALLEL_SPHERES_TOL,
 )
+from . import numeric as _numeric
 
-__all__ = ["rpr_sextic", "multistart"]
+__all__ = [
+    "AssemblyModes",
+    "rpr_sextic",
+    "spheres",
+    "rails",
+    "continuum",
+    "sort_modes",
+    "random_starts",
+    "multistart",
+]
+
+
+class AssemblyModes(list):
+    """The assembly modes ``fk_all`` found: a list of poses that says how far to
+    trust it.
+
+    Parameters
+    ----------
+    poses : iterable of ndarray, shape (4, 4)
+        The assembly modes (platform poses, m).
+    complete : bool
+        True only when the list is proven to hold every real assembly mode (a closed
+        form, or a certified solver); False for a search or a float root finder.
+    method : str
+        How the modes were found: 'closed form (three spheres)', 'closed form
+        (linear)', 'sextic (floating-point roots)', 'multistart search', ...
+    reason : str or None
+        Why ``complete`` is False (or what the continuum is); None when complete.
+    continuum : bool
+        True when the solutions include a continuum (a self-motion, a degenerate
+        geometry): the poses listed are then samples of it, not every solution.
+
+    Examples
+    --------
+    >>> modes = AssemblyModes([], complete=False, method="multistart search",
+    ...                       reason="a search: it may miss modes")
+    >>> modes, modes.complete
+    ([], False)
+    """
+
+    def __init__(
+        self, poses=(), complete=False, method="", reason=None, continuum=False
+    ):
+        super().__init__(poses)
+        self.complete = bool(complete)
+        self.method = method
+        self.reason = reason
+        self.continuum = bool(continuum)
+
 
 #: Newton iterations when polishing a candidate assembly mode (each starts close).
 _POLISH_ITERATIONS = 30
@@ -76,6 +137,15 @@ def rpr_sextic(pm, rho, with_polynomial=False):
     rho = as_float_array(rho, "rho")
     if rho.shape != (3,):
         raise ValueError(f"rho must be 3 leg lengths (m), got shape {rho.shape}")
+    with_polynomial = check_flag(with_polynomial, "with_polynomial")
+    poses, poly, _ = _sextic_modes(pm, rho)
+    return (poses, poly) if with_polynomial else poses
+
+
+def _sextic_modes(pm, rho):
+    """The sextic's modes, the polynomial, and starting poses at the real roots where
+    Cramer's rule fails (the platform angle of a continuum, or of a mode the two linear
+    equations do not fix): the first leg's circle sampled at that angle."""
     a = pm.base_points[:, :2]
     b = pm.platform_points[:, :2]
     for phi0 in (
@@ -88,20 +158,25 @@ def rpr_sextic(pm, rho, with_polynomial=False):
     roots = poly.roots()
     scale = 1 + np.abs(roots)
     real = roots[np.abs(roots.imag) < PARALLEL_REAL_ROOT_TOL * scale].real
-    candidates = []
+    candidates, stuck = [], []
     for t in real:
         phi = phi0 + 2 * np.arctan(t)
-        q = solve_q(t)
-        if q is None:
-            continue
         c, s = np.cos(phi), np.sin(phi)
         R = np.array([[c, -s], [s, c]])
+        q = solve_q(t)
+        if q is None:  # q on leg 0's circle: Newton finds the rest, if anything
+            for k in range(8):
+                T = np.eye(4)
+                u = np.array([np.cos(k * np.pi / 4), np.sin(k * np.pi / 4)])
+                T[:2, :2], T[:2, 3] = R, a[0] + rho[0] * u - R @ b[0]
+                stuck.append(T)
+            continue
         T = np.eye(4)
         T[:2, :2], T[:2, 3] = R, q - R @ b[0]
         candidates.append(T)
     poses = _polish(pm, rho, candidates)
     poses.sort(key=lambda T: np.arctan2(T[1, 0], T[0, 0]))
-    return (poses, poly) if with_polynomial else poses
+    return poses, poly, stuck
 
 
 def _sextic(a, b, rho, phi0):
@@ -130,7 +205,7 @@ def _sextic(a, b, rho, phi0):
 
     def solve_q(t):
         d = D(t)
-        if abs(d) < PARALLEL_CRAMER_TOL * max(1.0, np.max(np.abs(D.coef))):
+        if abs(d) <= PARALLEL_CRAMER_TOL * np.max(np.abs(D.coef)):  # relative
             return None
         return np.array([Nx(t), Ny(t)]) / d
 
@@ -163,6 +238,308 @@ def _same_pose(T1, T2, scale):
     return max(rotation, translation) < PARALLEL_SAME_POSE_TOL
 
 
+def spheres(pm, rho):
+    """The delta's assembly modes in closed form: where three spheres meet.
+
+    With the crank angles fixed, elbow i is B_i and the platform point C_i = p + R b_i
+    (R the constant rotation) lies at l2 from it: the origin p is on the sphere of
+    radius l2 about c_i = B_i - R b_i. Three equal spheres meet on the line through
+    the centres' circumcentre O normal to their plane, at p = O +/- h n with
+    h^2 = l2^2 - |O - c_0|^2: two modes (mirror images through the centres' plane),
+    one where the spheres touch, none where they miss. Collinear centres give a
+    continuum (a circle, or the whole sphere where the centres coincide) or none.
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+        A translational mechanism with crank legs (``sk.parallel.delta()``).
+    rho : ndarray, shape (3,)
+        The crank angles (rad).
+
+    Returns
+    -------
+    poses : list of ndarray, shape (4, 4)
+        Every assembly mode (a sample of it for a continuum).
+    continuum : str or None
+        What the continuum is, or None for isolated modes.
+    """
+    legs, home = pm._legs, pm.home()
+    R = home[:3, :3]
+    B, _ = legs._crank(np.asarray(rho, dtype=float)[None])
+    c = (B[:, 0, :] - R @ pm.platform_points.T).T  # (3, 3): one centre a row
+    l2, scale = legs.l2, pm.scale
+    a, b = c[1] - c[0], c[2] - c[0]
+    n = np.cross(a, b)
+    area = np.linalg.norm(n)  # twice the centres' triangle's area (m^2)
+    close = LENGTH_TOL * scale
+    if area <= PARALLEL_RANK_TOL * max(np.dot(a, a), np.dot(b, b), close**2):
+        return _collinear_spheres(c, l2, R, close)
+    O = c[0] + np.cross(np.dot(a, a) * b - np.dot(b, b) * a, n) / (2 * area**2)
+    h2 = l2**2 - np.dot(O - c[0], O - c[0])
+    if h2 < -PARALLEL_SPHERES_TOL * l2**2:
+        return [], None
+    h = np.sqrt(max(h2, 0.0))
+    points = (
+        [O]
+        if h2 <= PARALLEL_SPHERES_TOL * l2**2
+        else [O + h * n / area, O - h * n / area]
+    )
+    return [_translation(R, p) for p in points], None
+
+
+def _translation(R, p):
+    T = np.eye(4)
+    T[:3, :3], T[:3, 3] = R, p
+    return T
+
+
+def _collinear_spheres(c, l2, R, close):
+    """Three spheres of radius l2 about collinear centres c (3, 3)."""
+    distinct = [c[0]]
+    for centre in c[1:]:
+        if all(np.linalg.norm(centre - d) > close for d in distinct):
+            distinct.append(centre)
+    if len(distinct) == 1:  # one sphere: every point of it
+        sample = c[0] + [0.0, 0.0, -l2]
+        return [_translation(R, sample)], (
+            f"the three spheres coincide: every point at {l2:.6g} m from "
+            f"{np.round(c[0], 9).tolist()} is an assembly mode (a sphere of them)"
+        )
+    if len(distinct) == 3:  # equidistant from three collinear points: nowhere
+        return [], None
+    d = distinct[1] - distinct[0]
+    half = np.linalg.norm(d) / 2
+    r2 = l2**2 - half**2
+    if r2 < -PARALLEL_SPHERES_TOL * l2**2:
+        return [], None
+    middle = distinct[0] + d / 2
+    if r2 <= PARALLEL_SPHERES_TOL * l2**2:
+        return [_translation(R, middle)], None
+    normal = np.cross(d, [1.0, 0.0, 0.0] if abs(d[0]) < abs(d[2]) else [0, 0, 1.0])
+    sample = middle + np.sqrt(r2) * normal / np.linalg.norm(normal)
+    return [_translation(R, sample)], (
+        f"two of the spheres coincide: the circle of radius {np.sqrt(r2):.6g} m about "
+        f"{np.round(middle, 9).tolist()} normal to {np.round(d, 9).tolist()} is a "
+        f"continuum of assembly modes"
+    )
+
+
+def rails(pm, rho):
+    """The Tripteron's assembly mode in closed form: a linear system in the origin.
+
+    Leg i's carriage sits at e_i . (p + R b_i - A_i) = rho_i, so E p = rho +
+    e_i . (A_i - R b_i) with E's rows the rails' directions e_i; the mode exists when
+    every leg's two links reach across (within l1 + l2 and above |l1 - l2|).
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+        A translational mechanism with linear legs (``sk.parallel.tripteron()``).
+    rho : ndarray, shape (3,)
+        The carriages' positions (m).
+
+    Returns
+    -------
+    poses : list of ndarray, shape (4, 4)
+        The assembly mode, or none where a leg cannot reach.
+    continuum : str or None
+        What the continuum is (rails in one plane), or None.
+    """
+    legs, R = pm._legs, pm.home()[:3, :3]
+    E = legs.e[:, 0, :].T  # (3, 3): one rail a row
+    A = legs.A[:, 0, :].T
+    rhs = np.asarray(rho, dtype=float) + np.einsum(
+        "ij,ij->i", E, A - pm.platform_points @ R.T
+    )
+    singular = np.linalg.svd(E, compute_uv=False)
+    if singular[-1] <= PARALLEL_RANK_TOL * singular[0]:
+        p, *_ = np.linalg.lstsq(E, rhs, rcond=PARALLEL_RANK_TOL)
+        if np.max(np.abs(E @ p - rhs)) > PARALLEL_FK_ACCEPT_TOL * pm.scale:
+            return [], None
+        poses, reason = (
+            [_translation(R, p)],
+            (
+                "the rails are not independent: the platform slides freely along their "
+                "common normal"
+            ),
+        )
+    else:
+        poses, reason = [_translation(R, np.linalg.solve(E, rhs))], None
+    C = _numeric.points(R[None], poses[0][None, :3, 3], pm.platform_points)
+    _, ok, _ = legs.ik(C, np.ones(pm.m))
+    return (poses, reason) if ok.all() else ([], None)
+
+
+def continuum(pm, rho, poses, starts=()):
+    """Whether the solutions with actuated values rho include a continuum.
+
+    At each pose (and at each of ``starts`` projected onto the solutions by
+    least-squares Newton) the loop closure's Jacobian over the free twist components
+    (linear columns times the scale) is checked for rank; where it loses rank, the pose
+    is stepped ``PARALLEL_CONTINUUM_STEP`` along the kernel and projected back: if it
+    lands on a solution that far from the first, the solutions there form a continuum
+    (an isolated double mode, a direct singularity, projects back onto itself or not at
+    all).
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+    rho : ndarray, shape (m,)
+        The actuated values (m or rad).
+    poses : list of ndarray, shape (4, 4)
+        Assembly modes found.
+    starts : sequence of ndarray, shape (4, 4)
+        More starting poses, projected onto the solutions first.
+
+    Returns
+    -------
+    isolated : list of ndarray, shape (4, 4)
+        The poses that are not on a continuum (with the distinct regular modes the
+        starts reached).
+    on_continuum : ndarray, shape (4, 4), or None
+        One pose of a continuum.
+    reason : str or None
+        The continuum's dimension (at least), or None.
+    """
+    candidates = list(poses)
+    if len(starts):
+        T, ok = _project(pm, rho, np.array(starts))
+        candidates += list(T[ok])
+    if not candidates:
+        return [], None, None
+    T = np.array(candidates)
+    rhos = np.broadcast_to(rho, (len(T), pm.m))
+    _, rows = _numeric.closure_rows(
+        pm._legs, pm.platform_points, pm.freedoms, T, rhos, pm.scale
+    )
+    _, sigma, vt = np.linalg.svd(rows)
+    k = rows.shape[-1]
+    units = np.array([1.0, 1.0, 1.0, pm.scale, pm.scale, pm.scale])[pm.freedoms]
+    isolated, found, reason = [], None, None
+    for n, pose in enumerate(T):
+        given = n < len(poses)
+        rank = int(np.sum(sigma[n] > PARALLEL_RANK_TOL * sigma[n, 0]))
+        if rank == k:  # a regular mode (one the starts reached is kept if new)
+            if given or not any(_same_pose(pose, P, pm.scale) for P in isolated):
+                isolated.append(pose)
+            continue
+        if found is not None and not given:
+            continue
+        step = PARALLEL_CONTINUUM_STEP * vt[n, rank:] * units  # along the kernel
+        moved = np.array([_moved(pm, pose, s) for s in np.vstack([step, -step])])
+        back, ok = _project(pm, rho, moved)
+        if any(
+            ok[i] and not _same_pose(back[i], pose, pm.scale) for i in range(len(back))
+        ):
+            if found is None:
+                found = pose
+                reason = (
+                    f"a continuum of assembly modes: the loop closure's Jacobian has "
+                    f"rank {rank} of {k} at the pose listed, and poses a step away "
+                    f"along its kernel solve the legs too (a self-motion or a "
+                    f"degenerate geometry, of dimension up to {k - rank})"
+                )
+        elif given:
+            isolated.append(pose)
+    return isolated, found, reason
+
+
+def _moved(pm, T, twist):
+    """T moved by the free twist components ``twist`` (first order, as Newton)."""
+    V = np.zeros(6)
+    V[pm.freedoms] = twist
+    w, v = V[:3], V[3:]
+    out = T.copy()
+    out[:3, :3] = _numeric._exp_rotation(w[None])[0] @ T[:3, :3]
+    out[:3, 3] = T[:3, 3] + v + np.cross(w, T[:3, 3])
+    return out
+
+
+def _project(pm, rho, T0):
+    """Least-squares Newton from the poses T0 onto the solutions."""
+    T, ok, _, _ = _numeric.newton(
+        pm._legs,
+        pm.platform_points,
+        pm.freedoms,
+        np.broadcast_to(rho, (len(T0), pm.m)),
+        T0,
+        PARALLEL_POLISH_TOL * pm.scale,
+        _POLISH_ITERATIONS,
+        pm.scale,
+        least_squares=True,
+    )
+    return T, ok
+
+
+def sort_modes(pm, poses):
+    """Assembly modes in fk_all's order.
+
+    Spatial and translational modes by height (platform above the base first), then by
+    distance from home; planar ones by the platform's angle.
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+    poses : list of ndarray, shape (4, 4)
+
+    Returns
+    -------
+    list of ndarray, shape (4, 4)
+    """
+    if pm.planar:
+        return sorted(poses, key=lambda T: np.arctan2(T[1, 0], T[0, 0]))
+    home = pm.home()
+    return sorted(
+        poses,
+        key=lambda T: (
+            np.round(-T[2, 3] / pm.scale, PARALLEL_HEIGHT_DECIMALS),
+            np.max(np.abs(T - home)),
+        ),
+    )
+
+
+def random_starts(pm, rho, starts, seed):
+    """The search's seeded starting poses around the home pose.
+
+    Parameters
+    ----------
+    pm : ParallelManipulator
+    rho : ndarray, shape (m,)
+        The actuated joint values (m or rad).
+    starts : int
+        How many.
+    seed : int
+
+    Returns
+    -------
+    ndarray, shape (starts, 4, 4)
+    """
+    rng = np.random.default_rng(seed)
+    home = pm.home()
+    spread = (
+        float(np.max(np.abs(rho)))
+        if pm.prismatic
+        else float(np.max(np.linalg.norm(pm.base_points, axis=1)) + pm.scale)
+    )
+    T0 = np.repeat(home[None], starts, axis=0)
+    if pm.motion == "spatial":
+        q = rng.normal(size=(starts, 4))  # uniform on SO(3): a normal 4-vector, unit
+        T0[:, :3, :3] = rotation_from_quaternion(q / np.linalg.norm(q, axis=1)[:, None])
+    elif pm.motion == "planar":
+        phi = rng.uniform(-np.pi, np.pi, starts)
+        T0[:, 0, 0], T0[:, 0, 1], T0[:, 1, 0], T0[:, 1, 1] = (
+            np.cos(phi),
+            -np.sin(phi),
+            np.sin(phi),
+            np.cos(phi),
+        )
+    offset = rng.uniform(-spread, spread, (starts, 3))
+    if pm.planar:
+        offset[:, 2] = 0.0
+    T0[:, :3, 3] = home[:3, 3] + offset
+    return T0
+
+
 def multistart(pm, rho, starts, seed):
     """Assembly modes by Newton from many seeded random poses: not proven complete.
 
@@ -188,29 +565,7 @@ def multistart(pm, rho, starts, seed):
     list of ndarray, shape (4, 4)
         The distinct poses found that satisfy the legs, highest platform first.
     """
-    rng = np.random.default_rng(seed)
-    home = pm.home()
-    spread = (
-        float(np.max(np.abs(rho)))
-        if pm.prismatic
-        else float(np.max(np.linalg.norm(pm.base_points, axis=1)) + pm.scale)
-    )
-    T0 = np.repeat(home[None], starts, axis=0)
-    if pm.motion == "spatial":
-        q = rng.normal(size=(starts, 4))  # uniform on SO(3): a normal 4-vector, unit
-        T0[:, :3, :3] = rotation_from_quaternion(q / np.linalg.norm(q, axis=1)[:, None])
-    elif pm.motion == "planar":
-        phi = rng.uniform(-np.pi, np.pi, starts)
-        T0[:, 0, 0], T0[:, 0, 1], T0[:, 1, 0], T0[:, 1, 1] = (
-            np.cos(phi),
-            -np.sin(phi),
-            np.sin(phi),
-            np.cos(phi),
-        )
-    offset = rng.uniform(-spread, spread, (starts, 3))
-    if pm.planar:
-        offset[:, 2] = 0.0
-    T0[:, :3, 3] = home[:3, 3] + offset
+    T0 = random_starts(pm, rho, starts, seed)
     poses = _polish(pm, rho, list(T0))
     flat = np.all(np.abs(pm.base_points[:, 2]) <= PARALLEL_FLAT_TOL * pm.scale) and (
         np.all(np.abs(pm.platform_points[:, 2]) <= PARALLEL_FLAT_TOL * pm.scale)
@@ -218,10 +573,4 @@ def multistart(pm, rho, starts, seed):
     if pm.motion == "spatial" and flat:  # the mirror image through the base plane
         M = np.diag([1.0, 1.0, -1.0, 1.0])
         poses = _polish(pm, rho, poses + [M @ T @ M for T in poses])
-    poses.sort(
-        key=lambda T: (
-            np.round(-T[2, 3] / pm.scale, PARALLEL_HEIGHT_DECIMALS),
-            np.max(np.abs(T - home)),
-        )
-    )
-    return poses
+    return sort_modes(pm, poses)

@@ -5,6 +5,7 @@ format of rows.py. Robots are built on first use, not at import."""
 import functools
 
 import numpy as np
+import sympy as sp
 from builders import puma, rpr, stanford, stewart, ur5e
 from rows import row
 
@@ -96,6 +97,82 @@ PARALLEL = [
         lambda: parallel.delta(base_radius=-1),
         ValueError,
         "base_radius",
+    ),
+    # issue 31, item 7: arguments that slipped through
+    row("fk-tol-str", lambda: stewart().fk([1.2] * 6, tol="1e-9"), TypeError, "tol"),
+    row("fk-tol-nan", lambda: stewart().fk([1.2] * 6, tol=np.nan), ValueError, "tol"),
+    row("fk-tol-negative", lambda: stewart().fk([1.2] * 6, tol=-1), ValueError, "tol"),
+    row(
+        "fk-max_iterations-float",
+        lambda: stewart().fk([1.2] * 6, max_iterations=2.5),
+        TypeError,
+        "max_iterations",
+    ),
+    row(
+        "fk-max_iterations-negative",
+        lambda: stewart().fk([1.2] * 6, max_iterations=-3),
+        ValueError,
+        "max_iterations",
+    ),
+    row(
+        "ik-free-symbol",
+        lambda: rpr().ik(sk.homogeneous(sk.rotz(sp.Symbol("t")))),
+        TypeError,
+        "T",
+        match="free symbol",
+    ),
+    row(
+        "jacobian-free-symbol",
+        lambda: rpr().jacobian(sk.homogeneous(sk.rotz(sp.Symbol("t")))),
+        TypeError,
+        "T",
+        match="free symbol",
+    ),
+    row(
+        "ik-passive-str",
+        lambda: stewart().ik(stewart().home(), passive="yes"),
+        TypeError,
+        "passive",
+    ),
+    row(
+        "planar_3rpr-home-3x3",
+        lambda: parallel.planar_3rpr(home=np.eye(3)),
+        ValueError,
+        "home",
+    ),
+    row(
+        "planar_3rpr-home-tilted",
+        lambda: parallel.planar_3rpr(home=sk.homogeneous(sk.rotx(0.3))),
+        ValueError,
+        "home",
+    ),
+    row(
+        "fk_all-starts-huge",
+        lambda: stewart().fk_all([1.2] * 6, starts=10**8),
+        ValueError,
+        "starts",
+    ),
+    row(
+        "fk_all-starts-float",
+        lambda: stewart().fk_all([1.2] * 6, starts=2.5),
+        TypeError,
+        "starts",
+    ),
+    row(
+        "rpr_sextic-with_polynomial",
+        lambda: parallel.rpr_sextic(rpr(), [1, 1, 1], with_polynomial="yes"),
+        TypeError,
+        "with_polynomial",
+    ),
+    row("tripteron-offset", lambda: parallel.tripteron(offset=0), ValueError, "offset"),
+    row(
+        "homogeneous-undefined-function",
+        lambda: sk.homogeneous(
+            sp.Matrix([[sp.Function("f")(sp.Symbol("t")), 0, 0], [0, 1, 0], [0, 0, 1]])
+        ),
+        TypeError,
+        "R",
+        match="undefined function",
     ),
 ]
 
