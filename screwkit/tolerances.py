@@ -244,6 +244,11 @@ PARALLEL_FLAT_TOL = 1e-8
 #: heights that agree to this many decimals (of the scale) count as equal.
 PARALLEL_HEIGHT_DECIMALS = 9
 
+#: Width (in t = tan(phi / 2), dimensionless) of the exact isolating intervals of a
+#: 3-RPR's real roots (parallel.proven.rpr_fk_proven): far below a double's
+#: resolution, so each interval's midpoint is the root to round-off.
+PARALLEL_PROVEN_ROOT_WIDTH = 2.0**-70
+
 # ---- motion: second-order kinematics, trajectories, differential IK ------------------
 
 #: Below this angle (rad) slerp and the SE(2) logarithm take the straight line /
