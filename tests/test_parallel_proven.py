@@ -13,6 +13,7 @@ the slow ones (random platforms against the independent count, the platform in f
 float precision) run with SCREWKIT_SLOW_TESTS=1.
 """
 
+import functools
 import os
 from decimal import Decimal
 
@@ -67,6 +68,12 @@ DIETMAIER_PLATFORM = [
 DIETMAIER_LENGTHS = [1, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071]
 
 
+@functools.cache
+def dietmaier_modes():
+    """stewart_fk_proven on Dietmaier's platform, once for the tests that use it."""
+    return stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+
+
 def leg_error(T, base, platform, lengths):
     """The largest leg-length error of pose T (m)."""
     base, platform = np.asarray(base, float), np.asarray(platform, float)
@@ -109,9 +116,7 @@ def stewart_of(base, platform):
 
 @needs_msolve
 def test_dietmaier_forty_real_modes_complete():
-    poses, complete, reason = stewart_fk_proven(
-        DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS
-    )
+    poses, complete, reason = dietmaier_modes()
     assert (len(poses), complete, reason) == (40, True, None)
     check_modes(poses, DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
 
@@ -125,9 +130,7 @@ def test_dietmaier_in_mm_and_cm_same_modes_scaled(factor):
     poses, complete, _ = stewart_fk_proven(base, platform, lengths)
     assert (len(poses), complete) == (40, True)
     check_modes(poses, base, platform, lengths)
-    metres, _, _ = stewart_fk_proven(
-        DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS
-    )
+    metres, _, _ = dietmaier_modes()
     k = float(factor)
     for T in poses:
         U = T.copy()
@@ -139,9 +142,7 @@ def test_dietmaier_in_mm_and_cm_same_modes_scaled(factor):
 def test_every_mode_the_search_finds_is_in_the_proven_list():
     pm = stewart_of(DIETMAIER_BASE, DIETMAIER_PLATFORM)
     found = pm.fk_all(np.array(DIETMAIER_LENGTHS, float), starts=400, seed=3)
-    poses, _, _ = stewart_fk_proven(
-        DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS
-    )
+    poses, _, _ = dietmaier_modes()
     assert found and len(found) <= len(poses)
     for T in found:
         assert any(same_pose(T, U, 1.0) for U in poses)
@@ -164,7 +165,9 @@ def short_decimal_platform(seed):
 
 
 @needs_msolve
-@pytest.mark.parametrize("seed", [0, 1, 2])
+@pytest.mark.parametrize(
+    "seed", [0, pytest.param(1, marks=slow), pytest.param(2, marks=slow)]
+)
 def test_random_platforms_contain_the_search_and_the_pose(seed):
     base, platform, lengths, T0 = short_decimal_platform(seed)
     poses, complete, _ = stewart_fk_proven(base, platform, lengths)
@@ -259,6 +262,7 @@ def test_a_continuum_is_reported_not_listed():
 
 
 @needs_msolve
+@slow
 def test_legs_too_short_have_no_mode_and_that_is_proven():
     # legs of 0.1 m cannot span base points 1.1 m apart to platform points 0.54 m
     # apart (triangle inequality: |A_0 - A_1| <= 0.2 + |B_0 - B_1| fails)
