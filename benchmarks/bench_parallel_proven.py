@@ -13,9 +13,11 @@ time does not). The search is the default 400 starts and 2000 starts.
 Usage: python benchmarks/bench_parallel_proven.py (needs screwkit[proof])
 """
 
+import os
 import resource
 import time
 from decimal import Decimal
+from platform import machine, python_version, system
 
 import numpy as np
 
@@ -86,6 +88,13 @@ def instances():
 
 
 def main():
+    load = " ".join(f"{v:.2f}" for v in os.getloadavg())
+    print(
+        f"# benchmarks/bench_parallel_proven.py, measured "
+        f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}\n"
+        f"# on {system()} {machine()}, {os.cpu_count()} cores, "
+        f"load average {load}, Python {python_version()}\n"
+    )
     header = (
         f"{'instance':24} {'method':14} {'modes':>5} {'proven':>6} "
         f"{'wall s':>8} {'CPU s':>8}"
