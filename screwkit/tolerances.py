@@ -263,6 +263,11 @@ PARALLEL_CONTINUUM_STEP = 1e-2
 #: below this fraction of l2^2 (relative): round-off of h^2 is a few 1e-16 of l2^2.
 PARALLEL_SPHERES_TOL = 1e-12
 
+#: Width (in t = tan(phi / 2), dimensionless) of the exact isolating intervals of a
+#: 3-RPR's real roots (parallel.proven.rpr_fk_proven): far below a double's
+#: resolution, so each interval's midpoint is the root to round-off.
+PARALLEL_PROVEN_ROOT_WIDTH = 2.0**-70
+
 # ---- motion: second-order kinematics, trajectories, differential IK ------------------
 
 #: Below this angle (rad) slerp and the SE(2) logarithm take the straight line /

@@ -57,6 +57,7 @@ ORDER = [
             "parallel.legs",
             "parallel.numeric",
             "parallel.search",
+            "parallel.proven",
             "parallel.model",
             "parallel.catalogue",
             "parallel",

@@ -8,6 +8,9 @@ The folder, one idea a module, bottom up:
 - :mod:`~screwkit.parallel.numeric`: platform points of a batch, Newton on the closure;
 - :mod:`~screwkit.parallel.search`: every assembly mode (the 3-RPR's sextic, and a
   multi-start search for the others);
+- :mod:`~screwkit.parallel.proven`: every assembly mode with a proof of completeness
+  (the Stewart-Gough platform by msolve, an optional dependency; the 3-RPR's exact
+  sextic);
 - :mod:`~screwkit.parallel.model`: :class:`ParallelManipulator` and its results;
 - :mod:`~screwkit.parallel.catalogue`: the builders and their default geometry;
 - :mod:`~screwkit.parallel.plotting`: drawings (matplotlib; loaded on first use, as
@@ -36,6 +39,7 @@ from .model import (
     ParallelManipulator,
     Workspace,
 )
+from .proven import rpr_fk_proven, stewart_fk_proven
 from .search import AssemblyModes, rpr_sextic
 
 __all__ = [
@@ -52,6 +56,8 @@ __all__ = [
     "delta",
     "tripteron",
     "rpr_sextic",
+    "stewart_fk_proven",
+    "rpr_fk_proven",
     "STEWART_BASE",
     "STEWART_PLATFORM",
     "RPR_BASE",

@@ -90,6 +90,48 @@ PARALLEL = [
         ValueError,
         "base",
     ),
+    row(
+        "stewart_fk_proven-base-shape",
+        lambda: parallel.stewart_fk_proven([[0, 0, 0]], np.zeros((6, 3)), [1] * 6),
+        ValueError,
+        "base",
+    ),
+    row(
+        "stewart_fk_proven-lengths-negative",
+        lambda: parallel.stewart_fk_proven(
+            np.eye(6, 3), np.eye(6, 3), [1, 1, 1, 1, 1, -1]
+        ),
+        ValueError,
+        "lengths",
+    ),
+    row(
+        "stewart_fk_proven-timeout-str",
+        lambda: parallel.stewart_fk_proven(
+            np.eye(6, 3), np.eye(6, 3), [1] * 6, timeout="1"
+        ),
+        TypeError,
+        "timeout",
+    ),
+    row(
+        "stewart_fk_proven-rationals",
+        lambda: parallel.stewart_fk_proven(
+            np.eye(6, 3), np.eye(6, 3), [1] * 6, rationals="float"
+        ),
+        ValueError,
+        "rationals",
+    ),
+    row(
+        "rpr_fk_proven-platform-str",
+        lambda: parallel.rpr_fk_proven(np.eye(3, 2), "x", [1, 1, 1]),
+        TypeError,
+        "platform",
+    ),
+    row(
+        "rpr_fk_proven-lengths-shape",
+        lambda: parallel.rpr_fk_proven(np.eye(3, 2), np.eye(3, 2), [1, 1]),
+        ValueError,
+        "lengths",
+    ),
     row("planar_3rrr-l1", lambda: parallel.planar_3rrr(l1=-1), ValueError, "l1"),
     row("tripteron-L", lambda: parallel.tripteron(L="x"), TypeError, "L"),
     row(

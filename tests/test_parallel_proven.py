@@ -1,0 +1,356 @@
+"""Forward kinematics with a proof of completeness (screwkit.parallel.proven).
+
+References, none from the code under test: Dietmaier's 6-6 platform with 40 real
+assembly modes (the most a Stewart-Gough platform can have: its forward kinematics has
+40 complex solutions in general, Raghavan 1993, so 40 distinct real poses are all of
+them); the search ``fk_all`` (every pose it finds must be in the proven list); an
+independent exact count in other unknowns (rotation matrix and translation, with
+R^T R = I and det R = 1, solved by msolve, written here with SymPy); the 3-RPR's modes
+of ``rpr_sextic`` (numeric roots of the same sextic) and a pose built at phi = pi.
+
+The Stewart tests need msolve (``pip install screwkit[proof]``) and skip without it;
+the slow ones (random platforms against the independent count, the platform in full
+float precision) run with SCREWKIT_SLOW_TESTS=1.
+"""
+
+import functools
+import os
+from decimal import Decimal
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import screwkit as sk
+import screwkit.parallel.proven as proven
+from screwkit.parallel.proven import rpr_fk_proven, stewart_fk_proven
+from screwkit.tolerances import (
+    PARALLEL_FK_ACCEPT_TOL,
+    PARALLEL_SAME_POSE_TOL,
+    length_scale,
+)
+
+SLOW = os.environ.get("SCREWKIT_SLOW_TESTS") == "1"
+slow = pytest.mark.skipif(not SLOW, reason="slow: set SCREWKIT_SLOW_TESTS=1")
+
+
+def _has_msolve():
+    try:
+        proven._msolve()
+    except ModuleNotFoundError:
+        return False
+    return True
+
+
+needs_msolve = pytest.mark.skipif(
+    not _has_msolve(), reason="msolve missing: pip install screwkit[proof]"
+)
+
+#: Dietmaier (1998), "The Stewart-Gough platform of general geometry can have 40 real
+#: postures", Advances in Robot Kinematics: base points A_i, platform points B_i
+#: (platform frame) and leg lengths, as printed (6 decimals).
+DIETMAIER_BASE = [
+    [0, 0, 0],
+    [1.107915, 0, 0],
+    [0.549094, 0.756063, 0],
+    [0.735077, -0.223935, 0.525991],
+    [0.514188, -0.526063, -0.368418],
+    [0.590473, 0.094733, -0.205018],
+]
+DIETMAIER_PLATFORM = [
+    [0, 0, 0],
+    [0.542805, 0, 0],
+    [0.956919, -0.528915, 0],
+    [0.665885, -0.353482, 1.402538],
+    [0.478359, 1.158742, 0.107672],
+    [-0.137087, -0.235121, 0.353913],
+]
+DIETMAIER_LENGTHS = [1, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071]
+
+
+@functools.cache
+def dietmaier_modes():
+    """stewart_fk_proven on Dietmaier's platform, once for the tests that use it."""
+    return stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+
+
+def leg_error(T, base, platform, lengths):
+    """The largest leg-length error of pose T (m)."""
+    base, platform = np.asarray(base, float), np.asarray(platform, float)
+    ends = platform @ T[:3, :3].T + T[:3, 3]
+    return np.max(np.abs(np.linalg.norm(ends - base, axis=1) - lengths))
+
+
+def same_pose(T1, T2, scale):
+    rotation = np.max(np.abs(T1[:3, :3] - T2[:3, :3]))
+    translation = np.max(np.abs(T1[:3, 3] - T2[:3, 3])) / scale
+    return max(rotation, translation) < PARALLEL_SAME_POSE_TOL
+
+
+def check_modes(poses, base, platform, lengths):
+    """Every pose a rigid motion satisfying the legs, no two the same."""
+    scale = length_scale(base, platform, lengths)
+    for T in poses:
+        R = T[:3, :3]
+        assert np.allclose(R.T @ R, np.eye(3)) and np.isclose(np.linalg.det(R), 1)
+        assert leg_error(T, base, platform, lengths) < PARALLEL_FK_ACCEPT_TOL * scale
+    for i, T in enumerate(poses):
+        assert not any(same_pose(T, U, scale) for U in poses[:i])
+
+
+def in_decimal_units(values, factor):
+    """The numbers a user would type in other units: the printed decimals times
+    ``factor`` (a power of ten), exactly, then as floats."""
+    return [
+        [float(Decimal(repr(float(v))) * Decimal(factor)) for v in row]
+        for row in np.atleast_2d(values)
+    ]
+
+
+def stewart_of(base, platform):
+    pm = sk.parallel.stewart_gough(
+        base=np.asarray(base, float), platform=np.asarray(platform, float)
+    )
+    return pm
+
+
+@needs_msolve
+def test_dietmaier_forty_real_modes_complete():
+    poses, complete, reason = dietmaier_modes()
+    assert (len(poses), complete, reason) == (40, True, None)
+    check_modes(poses, DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+
+
+@needs_msolve
+@pytest.mark.parametrize("factor", ["1000", "0.01"])
+def test_dietmaier_in_mm_and_cm_same_modes_scaled(factor):
+    base = in_decimal_units(DIETMAIER_BASE, factor)
+    platform = in_decimal_units(DIETMAIER_PLATFORM, factor)
+    lengths = in_decimal_units(DIETMAIER_LENGTHS, factor)[0]
+    poses, complete, _ = stewart_fk_proven(base, platform, lengths)
+    assert (len(poses), complete) == (40, True)
+    check_modes(poses, base, platform, lengths)
+    metres, _, _ = dietmaier_modes()
+    k = float(factor)
+    for T in poses:
+        U = T.copy()
+        U[:3, 3] /= k
+        assert any(same_pose(U, V, 1.0) for V in metres)
+
+
+@needs_msolve
+def test_every_mode_the_search_finds_is_in_the_proven_list():
+    pm = stewart_of(DIETMAIER_BASE, DIETMAIER_PLATFORM)
+    found = pm.fk_all(np.array(DIETMAIER_LENGTHS, float), starts=400, seed=3)
+    poses, _, _ = dietmaier_modes()
+    assert found and len(found) <= len(poses)
+    for T in found:
+        assert any(same_pose(T, U, 1.0) for U in poses)
+
+
+def short_decimal_platform(seed):
+    """A random 6-6 platform in 3 decimals and the legs of a random pose (4
+    decimals): the platform has at least one real mode near that pose."""
+    rng = np.random.default_rng(seed)
+    base = np.round(rng.uniform(-1, 1, (6, 3)), 3)
+    platform = np.round(rng.uniform(-0.6, 0.6, (6, 3)), 3)
+    q = rng.normal(size=4)
+    T = np.eye(4)
+    T[:3, :3] = sk.orientation.rotation_from_quaternion(q / np.linalg.norm(q))
+    T[:3, 3] = rng.uniform(-0.3, 0.3, 3) + [0, 0, 1.2]
+    lengths = np.round(
+        np.linalg.norm(platform @ T[:3, :3].T + T[:3, 3] - base, axis=1), 4
+    )
+    return base, platform, lengths, T
+
+
+@needs_msolve
+@pytest.mark.parametrize(
+    "seed", [0, pytest.param(1, marks=slow), pytest.param(2, marks=slow)]
+)
+def test_random_platforms_contain_the_search_and_the_pose(seed):
+    base, platform, lengths, T0 = short_decimal_platform(seed)
+    poses, complete, _ = stewart_fk_proven(base, platform, lengths)
+    assert complete and 1 <= len(poses) <= 40
+    check_modes(poses, base, platform, lengths)
+    # the legs were rounded to 1e-4 m: a mode within a few times that of T0
+    assert min(np.max(np.abs(T[:3, 3] - T0[:3, 3])) for T in poses) < 0.05
+    for T in stewart_of(base, platform).fk_all(lengths, starts=400, seed=seed):
+        assert any(same_pose(T, U, 1.0) for U in poses)
+
+
+def rotation_matrix_count(base, platform, lengths):
+    """The real assembly modes counted in other unknowns: R (9 entries) and t,
+    R^T R = I, det R = 1, the six |R p + t - b|^2 = l^2; msolve's count."""
+    r, t = sp.symbols("r0:9"), sp.symbols("t0:3")
+    R, tv = sp.Matrix(3, 3, r), sp.Matrix(t)
+
+    def rat(v):
+        return sp.Rational(repr(float(v)))
+
+    equations = []
+    for b, p, length in zip(base, platform, lengths):
+        v = R * sp.Matrix([rat(c) for c in p]) + tv - sp.Matrix([rat(c) for c in b])
+        equations.append((v.T * v)[0] - rat(length) ** 2)
+    gram = R.T * R - sp.eye(3)
+    equations += [gram[i, j] for i in range(3) for j in range(i, 3)]
+    equations.append(R.det() - 1)
+    texts = []
+    for e in equations:
+        poly = sp.Poly(sp.expand(e), *r, *t)
+        poly = poly * sp.ilcm(*[c.q for c in poly.coeffs()])
+        texts.append(str(poly.as_expr()).replace("**", "^").replace(" ", ""))
+    names = [str(s) for s in r + t]
+    text = proven._run_msolve(proven._msolve(), names, texts, 600)
+    boxes = proven._parse_real_solutions(text)
+    assert boxes is not None, "positive-dimensional in the rotation-matrix unknowns"
+    return len(boxes)
+
+
+@needs_msolve
+@slow
+@pytest.mark.parametrize("seed", range(10))
+def test_random_platforms_count_equals_independent_exact_count(seed):
+    base, platform, lengths, _ = short_decimal_platform(100 + seed)
+    poses, complete, _ = stewart_fk_proven(base, platform, lengths)
+    assert complete
+    assert len(poses) == rotation_matrix_count(base, platform, lengths)
+    for T in stewart_of(base, platform).fk_all(lengths, starts=2000, seed=seed):
+        assert any(same_pose(T, U, 1.0) for U in poses)
+
+
+@needs_msolve
+@slow
+def test_dietmaier_independent_count_and_binary_floats_times_1000():
+    assert (
+        rotation_matrix_count(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+        == 40
+    )
+    k = 1000.0
+    base = np.array(DIETMAIER_BASE) * k
+    platform = np.array(DIETMAIER_PLATFORM) * k
+    lengths = np.array(DIETMAIER_LENGTHS) * k
+    for rationals in ("decimal", "binary"):
+        poses, complete, _ = stewart_fk_proven(
+            base, platform, lengths, rationals=rationals
+        )
+        assert (len(poses), complete) == (40, True)
+        check_modes(poses, base, platform, lengths)
+
+
+@needs_msolve
+@slow
+def test_default_platform_home_pose_among_the_modes():
+    pm = sk.parallel.stewart_gough()
+    rho = pm.ik(pm.home())
+    poses, complete, _ = stewart_fk_proven(pm.base_points, pm.platform_points, rho)
+    assert complete
+    check_modes(poses, pm.base_points, pm.platform_points, rho)
+    assert any(same_pose(pm.home(), T, pm.scale) for T in poses)
+    for T in pm.fk_all(rho):
+        assert any(same_pose(T, U, pm.scale) for U in poses)
+
+
+@needs_msolve
+def test_a_continuum_is_reported_not_listed():
+    # every platform point at one place: any rotation about it keeps the legs
+    poses, complete, reason = stewart_fk_proven(
+        sk.parallel.STEWART_BASE, np.zeros((6, 3)), np.full(6, 1.2)
+    )
+    assert (poses, complete) == ([], False)
+    assert "positive-dimensional" in reason
+
+
+@needs_msolve
+@slow
+def test_legs_too_short_have_no_mode_and_that_is_proven():
+    # legs of 0.1 m cannot span base points 1.1 m apart to platform points 0.54 m
+    # apart (triangle inequality: |A_0 - A_1| <= 0.2 + |B_0 - B_1| fails)
+    poses, complete, reason = stewart_fk_proven(
+        DIETMAIER_BASE, DIETMAIER_PLATFORM, np.full(6, 0.1)
+    )
+    assert (poses, complete, reason) == ([], True, None)
+
+
+@needs_msolve
+def test_timeout_gives_no_proof():
+    _, complete, reason = stewart_fk_proven(
+        DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS, timeout=1e-3
+    )
+    assert not complete and "timeout" in reason
+
+
+def test_missing_msolve_says_how_to_install(monkeypatch):
+    def missing(name):
+        raise proven.importlib.metadata.PackageNotFoundError(name)
+
+    monkeypatch.setattr(proven.importlib.metadata, "distribution", missing)
+    monkeypatch.setattr(proven.shutil, "which", lambda name: None)
+    with pytest.raises(ModuleNotFoundError, match=r"screwkit\[proof\]"):
+        stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+
+
+# ---- the 3-RPR ----------------------------------------------------------------------
+
+
+def rpr_points(pm):
+    return pm.base_points[:, :2], pm.platform_points[:, :2]
+
+
+def test_rpr_six_modes_as_rpr_sextic():
+    pm = sk.parallel.planar_3rpr()
+    rho = np.array(sk.parallel.RPR_SIX_MODES_RHO)
+    poses, complete, reason = rpr_fk_proven(*rpr_points(pm), rho)
+    assert (len(poses), complete, reason) == (6, True, None)
+    reference = sk.parallel.rpr_sextic(pm, rho)
+    assert len(reference) == 6
+    for T in reference:
+        assert any(same_pose(T, U, pm.scale) for U in poses)
+    base, platform = rpr_points(pm)
+    for T in poses:
+        assert leg_error(
+            T, np.c_[base, np.zeros(3)], np.c_[platform, np.zeros(3)], rho
+        ) < (PARALLEL_FK_ACCEPT_TOL * pm.scale)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_rpr_random_instances_as_rpr_sextic_and_in_mm(seed):
+    rng = np.random.default_rng(seed)
+    base = np.round(rng.uniform(-1, 1, (3, 2)), 3)
+    platform = np.round(rng.uniform(-0.5, 0.5, (3, 2)), 3)
+    rho = np.round(rng.uniform(0.4, 1.6, 3), 3)
+    pm = sk.parallel.planar_3rpr(base=base, platform=platform, leg_limits=None)
+    poses, complete, _ = rpr_fk_proven(base, platform, rho)
+    assert complete
+    reference = sk.parallel.rpr_sextic(pm, rho)
+    assert len(reference) == len(poses)
+    for T in reference:
+        assert any(same_pose(T, U, pm.scale) for U in poses)
+    mm = rpr_fk_proven(
+        in_decimal_units(base, "1000"),
+        in_decimal_units(platform, "1000"),
+        in_decimal_units(rho, "1000")[0],
+    )
+    assert len(mm[0]) == len(poses) and mm[1]
+
+
+def test_rpr_mode_at_a_half_turn_is_found():
+    # the platform turned by exactly pi (R = -I) with its point 0 at q = (0.3, 0.4):
+    # t = tan(phi / 2) is infinite there, outside the polynomial. Leg k runs from a_k
+    # to q - b_k; a_k + b_k = 0, (-0.3, -0.4), (-0.5, 1) make the legs exact: 0.5, 1, 1
+    base = np.array([[0.0, 0.0], [-1.0, 0.0], [0.0, 1.0]])
+    platform = np.array([[0.0, 0.0], [0.7, -0.4], [-0.5, 0.0]])
+    q = np.array([0.3, 0.4])
+    rho = np.array([0.5, 1.0, 1.0])
+    assert np.allclose(np.linalg.norm(q - platform - base, axis=1), rho)
+    poses, complete, _ = rpr_fk_proven(base, platform, rho)
+    assert complete
+    half_turns = [T for T in poses if np.allclose(T[:2, :2], -np.eye(2))]
+    assert len(half_turns) == 1 and np.allclose(half_turns[0][:2, 3], q)
+
+
+def test_rpr_self_motion_is_a_continuum():
+    # congruent base and platform, equal legs: the platform translates on a circle
+    base = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+    poses, complete, reason = rpr_fk_proven(base, base, [0.5, 0.5, 0.5])
+    assert not complete and "self-motion" in reason
