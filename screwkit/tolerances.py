@@ -182,8 +182,8 @@ NEWTON_TOL = 1e-10
 NEWTON_DAMPING = 1e-9
 
 #: Subproblems 5 and 6 (:mod:`screwkit.ik.subproblems`) and the decomposed engine
-#: (:mod:`screwkit.ik.decomposed`). A 2x2 block of their two sinusoid equations counts as
-#: of rank 1 (the equations are solved one after the other instead of through the
+#: (:mod:`screwkit.ik.decomposed`). A 2x2 block of their two sinusoid equations counts
+#: as of rank 1 (the equations are solved one after the other instead of through the
 #: quartic) when |det| is below this times its squared Frobenius norm, and a coefficient
 #: vector counts as 0 below this times the equations' size. A structural rank drop (two
 #: axes that meet, two parallel) is exact to round-off, a few 1e-16.

@@ -127,7 +127,9 @@ def classify(chain, name="chain"):
     """
     check_chain(chain, name)
     if chain.n != 6:
-        raise ValueError(f"{name} must have 6 joints for the closed form, got {chain.n}")
+        raise ValueError(
+            f"{name} must have 6 joints for the closed form, got {chain.n}"
+        )
     if any(j is not Joint.REVOLUTE for j in chain.joints):
         raise ValueError(f"{name} must have revolute joints only")
     w, p = _axes(chain)
@@ -149,8 +151,11 @@ def classify(chain, name="chain"):
         f = 1 if 1 in parallel_at else 2
         kind = f"parallel {f + 1}{f + 2}{f + 3}"
         head = f"three parallel ({f + 1}, {f + 2}, {f + 3})"
-        features = [x for x in features if x not in (f"{f + 1} || {f + 2}",
-                                                     f"{f + 2} || {f + 3}")]
+        features = [
+            x
+            for x in features
+            if x not in (f"{f + 1} || {f + 2}", f"{f + 2} || {f + 3}")
+        ]
     elif parallel_at:
         f = parallel_at[0]
         head = f"general: three parallel ({f + 1}, {f + 2}, {f + 3}) at an end"
@@ -388,7 +393,9 @@ class DecomposedArm:
         free6 = np.linalg.norm(np.cross(a, w[5]), axis=-1) <= IK_CLIP_TOL
         E1 = _motions(w[0], r[0], q1)
         E56 = _motions(w[4], r[4], q5) @ _motions(w[5], r[5], q6)
-        H = _inverse(E1) @ G[:, None] @ _inverse(E56)  # exp(xi2 q2) exp(xi3 q3) exp(xi4 q4)
+        H = (
+            _inverse(E1) @ G[:, None] @ _inverse(E56)
+        )  # exp(xi2 q2) exp(xi3 q3) exp(xi4 q4)
         x = np.cross(u, [1.0, 0, 0] if abs(u[0]) < 0.9 else [0, 1.0, 0])
         phi = _angle_about(u, x, H[..., :3, :3] @ x)
         g = _apply(H, r[3])  # (N, 4, 3)

@@ -8,6 +8,8 @@ twists xi = (w; v) with |w| = 1 (the axis through r = w x v):
   p = q, for two axes that meet in a point;
 * :func:`subproblem3` -- the angles with |exp(theta xi) p - q| = delta;
 * :func:`subproblem4` -- the angles that bring p onto the plane n . x = d;
+* :func:`subproblem5` -- three cones: p0 + R1 p1 = R2 (p2 + R3 p3) (Elias and Wen);
+* :func:`subproblem6` -- two equations, each h . R p about two axes (Elias and Wen);
 * :func:`subproblem1_prismatic`, :func:`subproblem3_prismatic` -- the same questions for
   a translation along a unit direction s (the twist (0; s)).
 
@@ -52,6 +54,8 @@ __all__ = [
     "subproblem2",
     "subproblem3",
     "subproblem4",
+    "subproblem5",
+    "subproblem6",
     "subproblem1_prismatic",
     "subproblem3_prismatic",
 ]
@@ -403,11 +407,13 @@ def _quartic_candidates(A1, A2, d):
     size = np.abs(np.stack([c0, c1, s1, c2, s2], -1)).max(-1) + np.finfo(float).tiny
     lead = (c2 - 1j * s2) / 2
     quartic = np.abs(lead) > IK_RANK_TOL * size
-    coeffs = np.stack([(c1 - 1j * s1) / 2, c0 + 0j, (c1 + 1j * s1) / 2, (c2 + 1j * s2) / 2])
+    coeffs = np.stack(
+        [(c1 - 1j * s1) / 2, c0 + 0j, (c1 + 1j * s1) / 2, (c2 + 1j * s2) / 2]
+    )
     companion = np.zeros(lead.shape + (4, 4), complex)
-    companion[..., 0, :] = -np.moveaxis(coeffs, 0, -1) / np.where(quartic, lead, 1.0)[
-        ..., None
-    ]
+    companion[..., 0, :] = (
+        -np.moveaxis(coeffs, 0, -1) / np.where(quartic, lead, 1.0)[..., None]
+    )
     companion[..., 1, 0] = companion[..., 2, 1] = companion[..., 3, 2] = 1.0
     z = np.linalg.eigvals(companion)
     # degree 1 (c2 = s2 = 0): c0 + c1 cos + s1 sin = 0, two roots
@@ -440,10 +446,14 @@ def _rank1_candidates(A1, A2, d, size):
     mask (..., 4) and where an angle is free (...): a continuum."""
     columns = np.swapaxes(A1, -1, -2)  # (..., 2 columns, 2)
     lengths = np.linalg.norm(columns, axis=-1)
-    big = np.take_along_axis(columns, lengths.argmax(-1)[..., None, None], -2)[..., 0, :]
+    big = np.take_along_axis(columns, lengths.argmax(-1)[..., None, None], -2)[
+        ..., 0, :
+    ]
     norm = np.linalg.norm(big, axis=-1)
     zero1 = norm <= IK_RANK_TOL * size
-    v = np.where(zero1[..., None], [1.0, 0.0], big / np.where(zero1, 1.0, norm)[..., None])
+    v = np.where(
+        zero1[..., None], [1.0, 0.0], big / np.where(zero1, 1.0, norm)[..., None]
+    )
     u = np.stack([-v[..., 1], v[..., 0]], -1)
     uA2 = np.einsum("...i,...ij->...j", u, A2)
     ud = np.sum(u * d, -1)
@@ -453,8 +463,11 @@ def _rank1_candidates(A1, A2, d, size):
     theta2 = np.where(flat2[..., None], 0.0, theta2)
     ok2 = np.where(flat2, free, ok2)
     vA1 = np.einsum("...i,...ij->...j", v, A1)  # (..., 2)
-    rest = np.sum(v[..., None, :] * (d[..., None, :] - np.einsum(
-        "...ij,...kj->...ki", A2, _unit(theta2))), -1)  # (..., 2)
+    rest = np.sum(
+        v[..., None, :]
+        * (d[..., None, :] - np.einsum("...ij,...kj->...ki", A2, _unit(theta2))),
+        -1,
+    )  # (..., 2)
     theta1, ok1 = _two_roots(vA1[..., None, 0], vA1[..., None, 1], rest)  # (..., 2, 2)
     free = free | zero1
     theta1 = np.where(zero1[..., None, None], 0.0, theta1)
@@ -494,7 +507,9 @@ def sinusoid_pairs(A1, A2, d):
     """
     A1, A2, d = np.broadcast_arrays(A1, A2, d[..., None])
     d = d[..., 0]
-    size = 1.0 + np.sqrt(np.sum(A1**2, (-1, -2)) + np.sum(A2**2, (-1, -2)) + np.sum(d**2, -1))
+    size = 1.0 + np.sqrt(
+        np.sum(A1**2, (-1, -2)) + np.sum(A2**2, (-1, -2)) + np.sum(d**2, -1)
+    )
     r1 = np.abs(_det2(A1)) / (np.sum(A1**2, (-1, -2)) + np.finfo(float).tiny)
     r2 = np.abs(_det2(A2)) / (np.sum(A2**2, (-1, -2)) + np.finfo(float).tiny)
     swap = r2 > r1
@@ -528,7 +543,9 @@ def sinusoid_pairs(A1, A2, d):
     theta = np.pi - np.mod(np.pi - theta, 2 * np.pi)
     for i in range(1, 4):  # a double root found twice is one solution
         for j in range(i):
-            gap = np.abs(np.pi - np.mod(np.pi - (theta[..., i, :] - theta[..., j, :]), 2 * np.pi))
+            gap = np.abs(
+                np.pi - np.mod(np.pi - (theta[..., i, :] - theta[..., j, :]), 2 * np.pi)
+            )
             ok[..., i] &= ~(ok[..., j] & np.all(gap < IK_DUPLICATE_TOL, -1))
     return theta, ok, free
 
@@ -584,10 +601,11 @@ def three_cones(k1, k2, k3, p0, p1, p2, p3):
     theta13, ok, free = sinusoid_pairs(A1, A3, d)
     c1, s1 = np.cos(theta13[..., 0]), np.sin(theta13[..., 0])
     c3, s3 = np.cos(theta13[..., 1]), np.sin(theta13[..., 1])
-    x = (lambda v: v[..., None, :])
-    v1 = x(o1) + x(b1) * c1[..., None] + x(e1) * s1[..., None]
-    v3 = x(o3) + x(b3) * c3[..., None] + x(e3) * s3[..., None]
-    kk = x(k2)
+    v1 = o1[..., None, :] + b1[..., None, :] * c1[..., None]
+    v1 = v1 + e1[..., None, :] * s1[..., None]
+    v3 = o3[..., None, :] + b3[..., None, :] * c3[..., None]
+    v3 = v3 + e3[..., None, :] * s3[..., None]
+    kk = k2[..., None, :]
     theta2 = _angle_about(kk, v3, v1)
     across = np.linalg.norm(v3 - kk * np.sum(v3 * kk, -1)[..., None], axis=-1)
     free = free[..., None] | (across <= IK_RANK_TOL * size[..., None])
@@ -616,10 +634,20 @@ def two_pairs(h, k, p, d):
     h, k, p = np.broadcast_arrays(h, k, p)
     a, b, e = _cone_terms(k, p)
     hb, he, ha = (np.sum(h * x, -1) for x in (b, e, a))  # (..., 4)
-    A1 = np.stack([np.stack([hb[..., 0], he[..., 0]], -1),
-                   np.stack([hb[..., 2], he[..., 2]], -1)], -2)
-    A2 = np.stack([np.stack([hb[..., 1], he[..., 1]], -1),
-                   np.stack([hb[..., 3], he[..., 3]], -1)], -2)
+    A1 = np.stack(
+        [
+            np.stack([hb[..., 0], he[..., 0]], -1),
+            np.stack([hb[..., 2], he[..., 2]], -1),
+        ],
+        -2,
+    )
+    A2 = np.stack(
+        [
+            np.stack([hb[..., 1], he[..., 1]], -1),
+            np.stack([hb[..., 3], he[..., 3]], -1),
+        ],
+        -2,
+    )
     rhs = d - np.stack([ha[..., 0] + ha[..., 1], ha[..., 2] + ha[..., 3]], -1)
     return sinusoid_pairs(A1, A2, rhs)
 
@@ -909,6 +937,92 @@ def _subproblem4_numeric(w, r, u, n, d):
             f"to {_fmt(C + radius)}, not {_fmt(d)}"
         )
     return Solutions([phi + half] if sign == 0 else [phi - half, phi + half])
+
+
+def subproblem5(k1, k2, k3, p0, p1, p2, p3):
+    """The angle triples with
+    p0 + R(k1, theta1) p1 = R(k2, theta2) (p2 + R(k3, theta3) p3) (Elias and Wen's
+    subproblem 5, three cones), rotations about axes through the origin.
+
+    Up to four solutions: k2 . (p0 + R1 p1) = k2 . (p2 + R3 p3) and
+    |p0 + R1 p1| = |p2 + R3 p3| are two equations, each a sinusoid in theta1 plus one in
+    theta3, which eliminate to a quartic; theta2 then turns p2 + R3 p3 onto
+    p0 + R1 p1 (subproblem 1). Floats only.
+
+    Parameters
+    ----------
+    k1, k2, k3 : array-like, shape (3,)
+        Unit axis directions.
+    p0, p1, p2, p3 : array-like, shape (3,)
+        Vectors (m).
+
+    Returns
+    -------
+    Solutions
+        (theta1, theta2, theta3) triples (rad, in (-pi, pi]), or [] with ``reason``;
+        ``free`` when an angle is free (a continuum; that angle is 0 in the list).
+    """
+    k = [_direction(v, name, False) for v, name in ((k1, "k1"), (k2, "k2"), (k3, "k3"))]
+    p = [_point(v, f"p{i}", False) for i, v in enumerate((p0, p1, p2, p3))]
+    theta, ok, free = three_cones(*k, *p)
+    if not ok.any():
+        return Solutions(
+            reason="the circles of p0 + R(k1, theta1) p1 and p2 + R(k3, theta3) p3 "
+            "never share a height along k2 and a distance from the origin"
+        )
+    return Solutions(
+        [tuple(float(a) for a in row) for row in theta[ok]], free=bool(free[ok].any())
+    )
+
+
+def subproblem6(h, k, p, d):
+    """The angle pairs with h1 . R(k1, theta1) p1 + h2 . R(k2, theta2) p2 = d1 and
+    h3 . R(k3, theta1) p3 + h4 . R(k4, theta2) p4 = d2 (Elias and Wen's subproblem 6).
+
+    Each term is h . a + (h . b) cos(theta) + (h . e) sin(theta) (a, b: the parts of p
+    along and across k, e = k x p): two equations linear in (cos theta1, sin theta1)
+    and in (cos theta2, sin theta2); eliminating one pair leaves a quartic. Up to four
+    solutions. Floats only.
+
+    Parameters
+    ----------
+    h : array-like, shape (4, 3)
+        The vectors h1 ... h4.
+    k : array-like, shape (4, 3)
+        Unit axes k1 ... k4 (k1, k3 turn by theta1; k2, k4 by theta2).
+    p : array-like, shape (4, 3)
+        The vectors p1 ... p4.
+    d : array-like, shape (2,)
+        The right-hand sides d1, d2.
+
+    Returns
+    -------
+    Solutions
+        (theta1, theta2) pairs (rad, in (-pi, pi]), or [] with ``reason``; ``free`` when
+        an angle is free (a continuum; that angle is 0 in the list).
+    """
+    arrays = {}
+    for value, name, shape in (
+        (h, "h", (4, 3)),
+        (k, "k", (4, 3)),
+        (p, "p", (4, 3)),
+        (d, "d", (2,)),
+    ):
+        array = as_float_array(value, name)
+        if array.shape != shape:
+            raise ValueError(f"{name} must have shape {shape}, got {describe(array)}")
+        arrays[name] = array
+    norms = np.linalg.norm(arrays["k"], axis=1)
+    if np.any(np.abs(norms - 1) > TOL):
+        raise ValueError(
+            f"k must hold unit axes, got norms {np.round(norms, 6).tolist()}"
+        )
+    theta, ok, free = two_pairs(arrays["h"], arrays["k"], arrays["p"], arrays["d"])
+    if not ok.any():
+        return Solutions(reason="the two equations have no common real solution")
+    return Solutions(
+        [tuple(float(a) for a in row) for row in theta[ok]], free=bool(free)
+    )
 
 
 def subproblem1_prismatic(s, p, q):
