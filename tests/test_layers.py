@@ -63,6 +63,7 @@ ORDER = [
             "ik.spherical_wrist",
             "ik.ur",
             "ik.stanford",
+            "ik.general",
             "ik.decomposed",
             "ik.dispatch",
             "acceleration",

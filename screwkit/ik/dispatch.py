@@ -59,6 +59,11 @@ from .spherical_wrist import CONFIGURATIONS, SphericalWristArm
 from .stanford import StanfordArm
 from .ur import URArm
 
+try:  # the general 6R (another module of the family, when it is there)
+    from .general import general_6r_ik
+except ImportError:
+    general_6r_ik = None
+
 __all__ = [
     "CONFIGURATIONS",
     "IKSolution",
@@ -199,13 +204,6 @@ class _GeneralArm:
         self.chain, self.solver, self.structure = chain, solver, structure
 
 
-def _general_solver():
-    """general_6r_ik, or None while :mod:`screwkit.ik.general` is not there."""
-    try:
-        from .general import general_6r_ik
-    except ImportError:
-        return None
-    return general_6r_ik
 
 
 def _arm(chain, name="chain"):
@@ -230,7 +228,7 @@ def _arm(chain, name="chain"):
         else:
             _ARMS[chain] = arm
             return arm
-        solver = _general_solver()
+        solver = general_6r_ik
         if solver is not None:
             arm = _GeneralArm(chain, solver, classify(chain, name).name)
             _ARMS[chain] = arm
