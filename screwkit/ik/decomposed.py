@@ -407,10 +407,11 @@ class DecomposedArm:
         theta0 = np.arctan2(np.cross(a34, a32) @ u, a34 @ a32)
         reach = np.abs(cosine) <= 1 + IK_CLIP_TOL
         beta = np.arccos(np.clip(cosine, -1, 1))
-        q3 = theta0 + np.stack([-beta, beta], -1)  # (N, 4, 2)
+        q3 = theta0 + np.stack([-beta, beta], -1)  # (N, 4, 2), about u
         elbow = _apply(_motions(u, r[2], q3), r[3])  # exp(xi3 q3) r4
         q2 = _angle_about(u, elbow - r[1], g[..., None, :] - r[1])
-        q4 = phi[..., None] - q2 - q3
+        q4 = (phi[..., None] - q2 - q3) * np.sign(w[3] @ u)  # axes 3, 4 along +-u
+        q3 = q3 * np.sign(w[2] @ u)
         free2 = np.sqrt(delta2) <= IK_CLIP_TOL * self.scale
         Q = np.stack(
             [

@@ -204,8 +204,6 @@ class _GeneralArm:
         self.chain, self.solver, self.structure = chain, solver, structure
 
 
-
-
 def _arm(chain, name="chain"):
     try:
         return _ARMS[chain]

@@ -475,7 +475,7 @@ def _rank1_candidates(A1, A2, d, size):
     angles = np.stack(
         [theta1.reshape(theta1.shape[:-2] + (4,)), np.repeat(theta2, 2, -1)], -1
     )
-    ok = (ok1 & ok2[..., None]).reshape(ok2.shape[:-1] + (4,))
+    ok = np.repeat(ok1 & ok2[..., None], 2, -1)
     return angles, ok, free
 
 
