@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._checks import check_chain
+from .._checks import check_chain, check_poses
 from .._compiled import CHUNK
 from ..links import Joint
 from ..tolerances import IK_ACCEPT_TOL, IK_CLIP_TOL, IK_DUPLICATE_TOL, IK_STRUCTURE_TOL
@@ -252,8 +252,8 @@ class DecomposedArm:
         found = classify(chain, name)
         if found.kind is None:
             raise ValueError(
-                f"{name} has no three consecutive axes meeting at an end and no three "
-                f"parallel axes 2, 3, 4 or 3, 4, 5 ({found.name})"
+                f"{name} must have three consecutive axes meeting at an end or three "
+                f"parallel axes 2, 3, 4 or 3, 4, 5, got {found.name}"
             )
         w, r = _axes(chain)
         M = chain.home()
@@ -281,8 +281,8 @@ class DecomposedArm:
 
         Parameters
         ----------
-        T : ndarray, shape (N, 4, 4)
-            Tool poses (m), checked by the caller.
+        T : array-like, shape (N, 4, 4) (or (4, 4), a batch of one)
+            Tool poses (m).
 
         Returns
         -------
@@ -291,6 +291,8 @@ class DecomposedArm:
             as Q)
         free : ndarray of bool (N, 8): a solution with a free angle (a continuum)
         """
+        T = check_poses(T, "T")
+        T = T[None] if T.ndim == 2 else T
         N = T.shape[0]
         Q, res, free = np.empty((N, 8, 6)), np.empty((N, 8)), np.empty((N, 8), bool)
         for start in range(0, N, CHUNK):

@@ -388,7 +388,8 @@ def _quartic_candidates(A1, A2, d):
     """The candidates of A1 x1 + A2 x2 = d for A1 of rank 2: x1 = adj(A1) (d - A2 x2) /
     det(A1) with |x1| = 1 is a trigonometric polynomial of degree 2 in theta2, a
     quartic in z = exp(i theta2) (companion-matrix eigenvalues; its roots on the unit
-    circle, polished by Newton). Returns angles (..., 4, 2) and a mask (..., 4)."""
+    circle, polished by Newton). Returns angles (..., 4, 2), a mask (..., 4) and where
+    theta2 is free (...)."""
     det = _det2(A1)
     adj = np.stack(
         [
@@ -425,6 +426,13 @@ def _quartic_candidates(A1, A2, d):
         np.abs(np.abs(z) - 1) < IK_ROOT_TOL,
         np.stack([linear_ok, linear_ok, no, no], -1),
     )
+    # no theta2 in it (A2's block vanishes after elimination): every theta2 or none
+    flat = np.abs(np.stack([c1, s1, c2, s2], -1)).max(-1) <= IK_RANK_TOL * (
+        np.sum(f * f, -1) + det**2 + np.finfo(float).tiny
+    )
+    free = flat & (np.abs(c0) <= IK_RANK_TOL * (np.sum(f * f, -1) + det**2))
+    theta2 = np.where(flat[..., None], 0.0, theta2)
+    ok = np.where(flat[..., None], free[..., None] & [True, False, False, False], ok)
     for _ in range(2):  # Newton on the trigonometric polynomial
         c, s = np.cos(theta2), np.sin(theta2)
         cc, ss = c * c - s * s, 2 * s * c
@@ -436,7 +444,7 @@ def _quartic_candidates(A1, A2, d):
     e = f[..., None, :] + np.einsum("...ij,...kj->...ki", G, _unit(theta2))
     sign = np.where(det < 0, -1.0, 1.0)[..., None]
     theta1 = np.arctan2(sign * e[..., 1], sign * e[..., 0])
-    return np.stack([theta1, theta2], -1), ok
+    return np.stack([theta1, theta2], -1), ok, free
 
 
 def _rank1_candidates(A1, A2, d, size):
@@ -515,14 +523,13 @@ def sinusoid_pairs(A1, A2, d):
     swap = r2 > r1
     Aa = np.where(swap[..., None, None], A2, A1)
     Ab = np.where(swap[..., None, None], A1, A2)
-    theta, ok = _quartic_candidates(Aa, Ab, d)
+    theta, ok, free = _quartic_candidates(Aa, Ab, d)
     rank1 = np.maximum(r1, r2) <= IK_RANK_TOL
-    free = np.zeros(rank1.shape, bool)
     if np.any(rank1):
         low, low_ok, low_free = _rank1_candidates(Aa, Ab, d, size)
         theta = np.where(rank1[..., None, None], low, theta)
         ok = np.where(rank1[..., None], low_ok, ok)
-        free = rank1 & low_free
+        free = np.where(rank1, low_free, free)
     theta = np.where(swap[..., None, None], theta[..., ::-1], theta)
     A1, A2, d = A1[..., None, :, :], A2[..., None, :, :], d[..., None, :]
     for _ in range(2):  # Newton on both equations
