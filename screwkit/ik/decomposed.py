@@ -309,7 +309,9 @@ class DecomposedArm:
         else:
             Q, ok, free = self._parallel(G)
         Q = np.pi - np.mod(np.pi - Q, 2 * np.pi)
-        residual = self._residual(Q, G)
+        residual = np.full(ok.shape, np.inf)
+        rows, branch = np.nonzero(ok)  # only the candidates the subproblems kept
+        residual[rows, branch] = self._residual(Q[rows, branch], G[rows])
         ok &= residual <= IK_ACCEPT_TOL
         for i in range(1, 8):
             for j in range(i):
@@ -321,16 +323,23 @@ class DecomposedArm:
         residual[~ok] = np.nan
         return Q, residual, free & ok
 
-    def _product(self, Q):
-        E = np.broadcast_to(np.eye(4), Q.shape[:-1] + (4, 4))
-        for i in range(6):
-            E = E @ _motions(self.w[i], self.r[i], Q[..., i])
-        return E
-
     def _residual(self, Q, G):
-        D = self._product(Q) - G[:, None]
-        rot = np.abs(D[..., :3, :3]).max((-1, -2))
-        return np.maximum(rot, np.abs(D[..., :3, 3]).max(-1) / self.scale)
+        """The pose residual of candidates Q (k, 6) against their G (k, 4, 4):
+        exp(xi_1 q1) ... exp(xi_6 q6) applied to the origin and the three unit points
+        (Rodrigues on the points, joint 6 first); rotation entries and positions /
+        scale."""
+        x = np.broadcast_to(np.vstack([np.zeros(3), np.eye(3)]), Q.shape[:-1] + (4, 3))
+        for i in range(5, -1, -1):
+            w, r = self.w[i], self.r[i]
+            c, s = np.cos(Q[..., i])[..., None, None], np.sin(Q[..., i])[..., None, None]
+            u = x - r
+            along = (u @ w)[..., None] * w
+            x = r + along + (u - along) * c + np.cross(w, u) * s
+        origin = x[..., 0, :]
+        rotation = x[..., 1:, :] - origin[..., None, :]  # rows: R e_j, the columns of R
+        rot = np.abs(rotation - np.swapaxes(G[..., :3, :3], -1, -2)).max((-1, -2))
+        moved = np.abs(origin - G[..., :3, 3]).max(-1)
+        return np.maximum(rot, moved / self.scale)
 
     def _wrist(self, G):
         w, r = self.w, self.r
