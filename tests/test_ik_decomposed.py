@@ -7,6 +7,9 @@ pose, the chain's forward kinematics, and a multi-start Newton search written he
 plain NumPy (its own product of exponentials, central differences, 300 starts) whose
 every converged solution must be among those returned."""
 
+import importlib
+import os
+
 import numpy as np
 import pytest
 
@@ -287,3 +290,62 @@ def test_structures_of_the_zoo():
     assert ik.structure(sk.robots.ur5e()).startswith("UR-type")
     assert classify(sk.robots.puma560()).kind == "wrist"
     assert classify(sk.robots.ur5e()).kind == "parallel 234"
+
+
+# ---- the peer: EAIK (tests/reference-requirements.txt) -------------------------------
+
+REQUIRED = os.environ.get("SCREWKIT_REFERENCES") == "required"
+
+
+def eaik_hp():
+    """EAIK's robot class by its H, P vectors (not ``import eaik``: its package needs
+    urchin for URDFs), or a skip when EAIK is not installed."""
+    if REQUIRED:
+        return importlib.import_module("eaik.IK_HP").HPRobot
+    module = pytest.importorskip(
+        "eaik.IK_HP", reason="EAIK is not installed: tests/reference-requirements.txt"
+    )
+    return module.HPRobot
+
+
+@pytest.mark.parametrize("kind", ["wrist", "shoulder", "parallel 234", "parallel 345"])
+def test_every_exact_eaik_solution_is_returned(kind):
+    """EAIK's solutions (those whose forward kinematics reach the pose to 1e-8: EAIK
+    also returns least-squares approximations) are all among screwkit's, and
+    screwkit finds at least as many. Parallel axes in one direction here: EAIK's
+    answers for an antiparallel middle axis do not reach their poses."""
+    HPRobot = eaik_hp()
+    rng = np.random.default_rng(RNG_SEED + 34)
+    w = np.array([unit(rng.normal(size=3)) for _ in range(6)])
+    p = rng.normal(size=(6, 3)) * 0.5
+    if kind == "wrist":
+        p[3:] = rng.normal(size=3)
+    elif kind == "shoulder":
+        p[:3] = rng.normal(size=3)
+    else:
+        first = 1 if kind == "parallel 234" else 2
+        w[first : first + 3] = w[first]
+    chain = arm_from_axes(w, p, rng)
+    S, M = chain.screw_axes(), chain.home()
+    axes, points = S[:, :3], np.cross(S[:, :3], S[:, 3:])
+    robot = HPRobot(
+        axes, np.vstack([points[0], np.diff(points, axis=0), M[:3, 3] - points[5]])
+    )
+    q = rng.uniform(-np.pi, np.pi, (40, 6))
+    T = chain.fk(q)
+    Q = ik.analytic_ik_all(chain, T)
+    for k in range(len(T)):
+        pose = T[k].copy()
+        pose[:3, :3] = (
+            T[k][:3, :3] @ M[:3, :3].T
+        )  # EAIK's tool has no rotation at q = 0
+        theirs = np.array(robot.IK(pose).Q).reshape(-1, 6)
+        if len(theirs):
+            theirs = theirs[np.abs(chain.fk(theirs) - T[k]).max((1, 2)) < 1e-8]
+        mine = Q[k][~np.isnan(Q[k, :, 0])]
+        distinct = []
+        for row in theirs:
+            assert np.abs(wrapped(mine - row)).max(1).min() <= 1e-6
+            if all(np.abs(wrapped(row - d)).max() > 1e-6 for d in distinct):
+                distinct.append(row)
+        assert len(mine) >= len(distinct)

@@ -331,7 +331,10 @@ class DecomposedArm:
         x = np.broadcast_to(np.vstack([np.zeros(3), np.eye(3)]), Q.shape[:-1] + (4, 3))
         for i in range(5, -1, -1):
             w, r = self.w[i], self.r[i]
-            c, s = np.cos(Q[..., i])[..., None, None], np.sin(Q[..., i])[..., None, None]
+            c, s = (
+                np.cos(Q[..., i])[..., None, None],
+                np.sin(Q[..., i])[..., None, None],
+            )
             u = x - r
             along = (u @ w)[..., None] * w
             x = r + along + (u - along) * c + np.cross(w, u) * s
