@@ -13,10 +13,15 @@ lengths, offsets, base and tool of these structures (:data:`STRUCTURES`, tried i
   (:mod:`screwkit.ik.stanford`; eight solutions, four with the boom forward).
 
 Up to eight solutions, labelled l/r arm, u/d elbow, n/f wrist by geometric definitions
-(Corke's labels for the PUMA). Any other arm (7 joints, no spherical wrist and no three
-parallel axes, ...) is refused with a ``ValueError`` that says what each structure
-needs: use :func:`screwkit.ik.numeric_ik`. :func:`puma560_ik` is the same solver under
-the PUMA's name.
+(Corke's labels for the PUMA). Any other 6R arm is classified by its axes
+(:func:`screwkit.ik.decomposed.classify`): a spherical wrist or shoulder, or three
+parallel axes 2, 3, 4 or 3, 4, 5, is solved by subproblems 5 and 6
+(:mod:`screwkit.ik.decomposed`, labels 's0' ...); a general 6R by
+:mod:`screwkit.ik.general` when that module is present, else it is refused with a
+``ValueError`` that says what each structure needs (use
+:func:`screwkit.ik.numeric_ik`). A 7R arm is solved with one joint held
+(``fixed={index: value}``). Every solution carries its pose residual and a within-limits
+flag. :func:`puma560_ik` is the same solver under the PUMA's name.
 
 One angle convention: every closed-form angle is in (-pi, pi]. ``within_limits=True`` is
 the explicit option that moves angles by whole turns into the joint limits
