@@ -181,6 +181,32 @@ NEWTON_TOL = 1e-10
 #: J^T J + lambda I invertible at a singular configuration once the error is tiny.
 NEWTON_DAMPING = 1e-9
 
+#: Subproblems 5 and 6 (:mod:`screwkit.ik.subproblems`) and the decomposed engine
+#: (:mod:`screwkit.ik.decomposed`). A 2x2 block of their two sinusoid equations counts
+#: as of rank 1 (the equations are solved one after the other instead of through the
+#: quartic) when |det| is below this times its squared Frobenius norm, and a coefficient
+#: vector counts as 0 below this times the equations' size. A structural rank drop (two
+#: axes that meet, two parallel) is exact to round-off, a few 1e-16.
+IK_RANK_TOL = 1e-10
+
+#: A root z of the quartic in z = exp(i theta) is a real angle candidate when
+#: ||z| - 1| is below this: a double root (a tangency) splits off the unit circle by
+#: about the square root of round-off, 1e-8; each candidate is then polished by Newton
+#: and kept only if its residual passes IK_ACCEPT_TOL, so a loose gate drops nothing
+#: real and lets nothing false through.
+IK_ROOT_TOL = 1e-5
+
+#: A candidate of subproblems 5 and 6, or a joint vector of the decomposed engine, is a
+#: solution when its residual (the equations', relative to their size; the pose's:
+#: rotation entries and positions divided by the arm's size) is below this after
+#: polishing. Round-off leaves about 1e-14; a near-miss of a false candidate is 1e-6 or
+#: more.
+IK_ACCEPT_TOL = 1e-9
+
+#: Two solutions of the decomposed engine are one (a double root found twice) when
+#: their joint angles differ by less than this (rad), wrapped.
+IK_DUPLICATE_TOL = 1e-7
+
 # ---- parallel: model, legs, numerics, search ----------------------------------------
 # A length below is written for a mechanism about 1 m across and used times the
 # mechanism's own size (ParallelManipulator.scale, the farthest attachment point from

@@ -72,6 +72,8 @@ ORDER = [
             "ik.spherical_wrist",
             "ik.ur",
             "ik.stanford",
+            "ik.general",
+            "ik.decomposed",
             "ik.dispatch",
             "acceleration",
             "trajectory",

@@ -13,6 +13,8 @@ from screwkit.ik import (
     subproblem3,
     subproblem3_prismatic,
     subproblem4,
+    subproblem5,
+    subproblem6,
 )
 
 Z_AXIS = [0, 0, 1, 0, 0, 0]  # rotation about z through the origin
@@ -168,3 +170,151 @@ def test_float_input_gives_floats_and_symbolic_gives_sympy():
     assert isinstance(
         subproblem1(Z_AXIS, [1, 0, 0], [0, sp.Integer(1), 0])[0], sp.Basic
     )
+
+
+# ---- subproblems 5 and 6 (Elias and Wen 2022): random instances built around a known
+# solution; every returned solution checked in the equations; the count against a
+# brute-force search (a grid of starts, Newton, distinct roots) written here.
+
+
+def _rot(k, t):
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + np.sin(t) * K + (1 - np.cos(t)) * K @ K
+
+
+def _rot_batch(k, t):
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    t = t[:, None, None]
+    return np.eye(3) + np.sin(t) * K + (1 - np.cos(t)) * K @ K
+
+
+def _wrapped(a):
+    return np.angle(np.exp(1j * np.asarray(a)))
+
+
+def _distinct(roots, tol=1e-6):
+    kept = []
+    for r in roots:
+        if all(np.abs(_wrapped(r - k)).max() > tol for k in kept):
+            kept.append(r)
+    return kept
+
+
+def _newton_roots(F, n, grid, iterations=40):
+    """Distinct roots of F (batch of angle vectors (m, n) -> residuals (m, n)) from a
+    grid of starts, by Newton with a central-difference Jacobian."""
+    axes = np.meshgrid(*[np.linspace(-np.pi, np.pi, grid, endpoint=False)] * n)
+    X = np.stack([a.ravel() for a in axes], -1)
+    h = 1e-7
+    for _ in range(iterations):
+        R = F(X)
+        J = np.stack(
+            [
+                (F(X + h * np.eye(n)[i]) - F(X - h * np.eye(n)[i])) / (2 * h)
+                for i in range(n)
+            ],
+            -1,
+        )
+        JtJ = np.swapaxes(J, 1, 2) @ J + 1e-12 * np.eye(n)
+        X = X - np.linalg.solve(JtJ, np.swapaxes(J, 1, 2) @ R[..., None])[..., 0]
+    good = np.abs(F(X)).max(1) < 1e-11
+    return _distinct(_wrapped(X[good]))
+
+
+def _unit(v):
+    return v / np.linalg.norm(v)
+
+
+def _check_subproblem5(rng):
+    k1, k2, k3 = (_unit(rng.normal(size=3)) for _ in range(3))
+    p1, p2, p3 = (rng.normal(size=3) for _ in range(3))
+    t = rng.uniform(-np.pi, np.pi, 3)
+    p0 = _rot(k2, t[1]) @ (p2 + _rot(k3, t[2]) @ p3) - _rot(k1, t[0]) @ p1
+    solutions = subproblem5(k1, k2, k3, p0, p1, p2, p3)
+    assert 1 <= len(solutions) <= 4 and not solutions.free
+    for a, b, c in solutions:
+        gap = p0 + _rot(k1, a) @ p1 - _rot(k2, b) @ (p2 + _rot(k3, c) @ p3)
+        assert np.linalg.norm(gap) <= 1e-10
+    assert min(np.abs(_wrapped(np.array(s) - t)).max() for s in solutions) < 1e-8
+
+    def F(X):
+        R1, R2 = _rot_batch(k1, X[:, 0]), _rot_batch(k2, X[:, 1])
+        R3 = _rot_batch(k3, X[:, 2])
+        return p0 + R1 @ p1 - (R2 @ (p2 + R3 @ p3)[..., None])[..., 0]
+
+    brute = _newton_roots(F, 3, 14)
+    assert len(brute) == len(solutions)
+    for root in brute:
+        assert min(np.abs(_wrapped(np.array(s) - root)).max() for s in solutions) < 1e-6
+    return len(solutions)
+
+
+def test_subproblem5_random_instances():
+    rng = np.random.default_rng(55)
+    counts = [_check_subproblem5(rng) for _ in range(12)]
+    assert 4 in counts  # the quartic's four real roots happen
+
+
+def test_subproblem5_no_solution_and_bad_axes():
+    z = [0.0, 0.0, 1.0]
+    far = subproblem5(
+        z, [1.0, 0, 0], z, [100.0, 0, 0], [1.0, 0, 0], [0, 1.0, 0], [1.0, 0, 0]
+    )
+    assert far == [] and "never" in far.reason
+    with pytest.raises(ValueError, match="k2 must be a unit direction"):
+        subproblem5(z, [0, 0, 2.0], z, z, z, z, z)
+
+
+def _check_subproblem6(rng):
+    h = np.array([_unit(rng.normal(size=3)) for _ in range(4)])
+    k = np.array([_unit(rng.normal(size=3)) for _ in range(4)])
+    p = rng.normal(size=(4, 3))
+    t = rng.uniform(-np.pi, np.pi, 2)
+
+    def lhs(a, b):
+        return np.array(
+            [
+                h[0] @ _rot(k[0], a) @ p[0] + h[1] @ _rot(k[1], b) @ p[1],
+                h[2] @ _rot(k[2], a) @ p[2] + h[3] @ _rot(k[3], b) @ p[3],
+            ]
+        )
+
+    d = lhs(*t)
+    solutions = subproblem6(h, k, p, d)
+    assert 1 <= len(solutions) <= 4
+    for a, b in solutions:
+        assert np.abs(lhs(a, b) - d).max() <= 1e-10
+    assert min(np.abs(_wrapped(np.array(s) - t)).max() for s in solutions) < 1e-8
+
+    def F(X):
+        terms = [
+            np.einsum("j,njk,k->n", h[i], _rot_batch(k[i], X[:, i % 2]), p[i])
+            for i in range(4)
+        ]
+        return np.stack([terms[0] + terms[1], terms[2] + terms[3]], -1) - d
+
+    brute = _newton_roots(F, 2, 40)
+    assert len(brute) == len(solutions)
+    for root in brute:
+        assert min(np.abs(_wrapped(np.array(s) - root)).max() for s in solutions) < 1e-6
+    return len(solutions)
+
+
+def test_subproblem6_random_instances():
+    rng = np.random.default_rng(66)
+    counts = [_check_subproblem6(rng) for _ in range(12)]
+    assert 4 in counts
+
+
+def test_subproblem6_rank_one_block_and_free():
+    """Axis k1 = k3 = h1 = h3 makes the theta1 block vanish from both equations: theta1
+    is free, and theta2 solves the two equations alone."""
+    z = np.array([0.0, 0.0, 1.0])
+    h = np.array([z, [1.0, 0, 0], z, [0, 1.0, 0]])
+    k = np.array([z, z, z, z])
+    p = np.array([[0, 0, 0.5], [1.0, 0, 0], [0, 0, 0.2], [1.0, 0, 0]])
+    # 0.5 + cos(b) = d1, 0.2 + sin(b) = d2: b = 0.7
+    d = [0.5 + np.cos(0.7), 0.2 + np.sin(0.7)]
+    solutions = subproblem6(h, k, p, d)
+    assert solutions.free
+    assert len(solutions) == 1 and abs(solutions[0][1] - 0.7) < 1e-12

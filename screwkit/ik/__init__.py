@@ -3,13 +3,15 @@
 The family, one idea a module:
 
 * :mod:`~screwkit.ik.subproblems`: the Paden–Kahan subproblems and their batched
-  kernels (``sk.ik.subproblem1`` ... ``subproblem4``, ``Solutions``);
+  kernels (``sk.ik.subproblem1`` ... ``subproblem6``, ``Solutions``);
 * :mod:`~screwkit.ik.newton`: numerical IK of any chain (``sk.ik.numeric_ik``,
   ``pose_error``, ``NumericIKResult``);
 * :mod:`~screwkit.ik._closed_form`: what the closed-form engines share;
 * the engines, each a structure solved from the chain's screws:
   :mod:`~screwkit.ik.spherical_wrist` (PUMA 560, Kawasaki CX210L),
-  :mod:`~screwkit.ik.ur` (Universal Robots), :mod:`~screwkit.ik.stanford`;
+  :mod:`~screwkit.ik.ur` (Universal Robots), :mod:`~screwkit.ik.stanford`, and
+  :mod:`~screwkit.ik.decomposed` (any 6R with a spherical wrist or shoulder, or three
+  parallel axes 2, 3, 4 or 3, 4, 5, by subproblems 5 and 6);
 * :mod:`~screwkit.ik.dispatch`: picks the engine and labels the solutions
   (``sk.ik.analytic_ik``, ``analytic_ik_all``, ``configuration``, ``structure``,
   ``CONFIGURATIONS``, ``puma560_ik`` ...).
@@ -47,6 +49,7 @@ LAZY = {
     "spherical_wrist": (),
     "ur": (),
     "stanford": (),
+    "decomposed": (),
 }
 
 __all__ = [

@@ -13,10 +13,15 @@ lengths, offsets, base and tool of these structures (:data:`STRUCTURES`, tried i
   (:mod:`screwkit.ik.stanford`; eight solutions, four with the boom forward).
 
 Up to eight solutions, labelled l/r arm, u/d elbow, n/f wrist by geometric definitions
-(Corke's labels for the PUMA). Any other arm (7 joints, no spherical wrist and no three
-parallel axes, ...) is refused with a ``ValueError`` that says what each structure
-needs: use :func:`screwkit.ik.numeric_ik`. :func:`puma560_ik` is the same solver under
-the PUMA's name.
+(Corke's labels for the PUMA). Any other 6R arm is classified by its axes
+(:func:`screwkit.ik.decomposed.classify`): a spherical wrist or shoulder, or three
+parallel axes 2, 3, 4 or 3, 4, 5, is solved by subproblems 5 and 6
+(:mod:`screwkit.ik.decomposed`, labels 's0' ...); a general 6R by
+:mod:`screwkit.ik.general` when that module is present, else it is refused with a
+``ValueError`` that says what each structure needs (use
+:func:`screwkit.ik.numeric_ik`). A 7R arm is solved with one joint held
+(``fixed={index: value}``). Every solution carries its pose residual and a within-limits
+flag. :func:`puma560_ik` is the same solver under the PUMA's name.
 
 One angle convention: every closed-form angle is in (-pi, pi]. ``within_limits=True`` is
 the explicit option that moves angles by whole turns into the joint limits
@@ -41,14 +46,28 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._checks import as_float_array, check_chain, check_flag, check_poses
+from .._checks import (
+    as_float_array,
+    check_chain,
+    check_flag,
+    check_integer,
+    check_poses,
+    describe,
+)
+from ..links import Joint
 from ..robots import puma560
 from ..tolerances import IK_JOINT_LIMIT_SLACK
 from ..tolerances import IK_SINGULAR_TOL as SINGULAR_TOL
 from ..transforms import _wrap_angle
+from .decomposed import DecomposedArm, _motions, classify
 from .spherical_wrist import CONFIGURATIONS, SphericalWristArm
 from .stanford import StanfordArm
 from .ur import URArm
+
+try:  # the general 6R (another module of the family, when it is there)
+    from .general import general_6r_ik
+except ImportError:
+    general_6r_ik = None
 
 __all__ = [
     "CONFIGURATIONS",
@@ -81,12 +100,16 @@ class IKSolution:
         Stanford arm's boom counts as its elbow); empty for a regular solution.
     within_limits : bool
         Whether q, or q moved by whole turns, respects the joint limits.
+    residual : float
+        How far the chain's pose at q is from the asked one: the largest entry of the
+        rotation's difference and of the position's divided by the arm's size (m / m).
     """
 
     q: np.ndarray
     config: str
     singular: tuple = ()
     within_limits: bool = True
+    residual: float = float("nan")
 
     def __repr__(self):
         q = ", ".join(f"{v:+.4f}" for v in self.q)
@@ -129,9 +152,14 @@ class IKSolutions(list):
         IKSolution or None
             None if that branch has no solution.
         """
-        if config not in CONFIGURATIONS:
+        labels = (
+            CONFIGURATIONS
+            if not self or self[0].config in CONFIGURATIONS
+            else [s.config for s in self]
+        )
+        if config not in labels:
             raise ValueError(
-                f"config must be one of {', '.join(CONFIGURATIONS)}, got {config!r}"
+                f"config must be one of {', '.join(labels)}, got {config!r}"
             )
         return next((s for s in self if s.config == config), None)
 
@@ -149,8 +177,9 @@ class IKSolutions(list):
             None if there is no solution.
         """
         q = as_float_array(q, "q")
-        if q.shape != (6,):
-            raise ValueError(f"q must have 6 entries, got shape {q.shape}")
+        n = len(self[0].q) if self else 6
+        if q.shape != (n,):
+            raise ValueError(f"q must have {n} entries, got shape {q.shape}")
         if not self:
             return None
         return min(self, key=lambda s: np.linalg.norm(_wrap_angle(s.q - q)))
@@ -173,6 +202,13 @@ STRUCTURES = {
 }
 
 
+class _GeneralArm:
+    """A 6R arm of no decomposable class, solved by :mod:`screwkit.ik.general`."""
+
+    def __init__(self, chain, solver, structure):
+        self.chain, self.solver, self.structure = chain, solver, structure
+
+
 def _arm(chain, name="chain"):
     try:
         return _ARMS[chain]
@@ -187,13 +223,29 @@ def _arm(chain, name="chain"):
             continue
         _ARMS[chain] = arm
         return arm
+    if chain.n == 6 and all(j is Joint.REVOLUTE for j in chain.joints):
+        try:
+            arm = DecomposedArm.from_chain(chain, name)
+        except ValueError as error:
+            refusals.append(f"decomposable 6R: {error}")
+        else:
+            _ARMS[chain] = arm
+            return arm
+        solver = general_6r_ik
+        if solver is not None:
+            arm = _GeneralArm(chain, solver, classify(chain, name).name)
+            _ARMS[chain] = arm
+            return arm
     raise ValueError(
         f"{name} has none of the structures solved in closed form; "
         + "; ".join(refusals)
+        + "; use screwkit.ik.numeric_ik"
     )
 
 
 def _name(arm):
+    if isinstance(arm, (DecomposedArm, _GeneralArm)):
+        return arm.structure
     return next(name for name, solver in STRUCTURES.items() if isinstance(arm, solver))
 
 
@@ -207,64 +259,171 @@ def structure(chain):
     Returns
     -------
     str
-        A key of :data:`STRUCTURES`; a chain of none of them is a ``ValueError`` that
-        names what each one needs.
+        A key of :data:`STRUCTURES`, or the class of a 6R arm from its axes
+        (:func:`screwkit.ik.decomposed.classify`: 'spherical wrist (4, 5, 6 meet)',
+        'three parallel (2, 3, 4)', ..., 'general ...'); a chain of none of them
+        (not 6R, or a general 6R without :mod:`screwkit.ik.general`) is a
+        ``ValueError`` that names what each one needs.
     """
-    return _name(_arm(chain))
+    check_chain(chain)
+    try:
+        return _name(_arm(chain))
+    except ValueError:
+        if chain.n == 6 and all(j is Joint.REVOLUTE for j in chain.joints):
+            return classify(chain).name
+        raise
 
 
 def analytic_ik_all(chain, T):
-    """All eight closed-form solutions of one pose or a batch, in the order of
-    CONFIGURATIONS.
+    """All closed-form solutions of one pose or a batch, as a fixed-size array.
 
     Parameters
     ----------
     chain : Chain
-        An arm of one of the :data:`STRUCTURES` (spherical wrist, UR-type, Stanford).
+        An arm of one of the :data:`STRUCTURES` (spherical wrist, UR-type, Stanford) or
+        a decomposable 6R (:mod:`screwkit.ik.decomposed`).
     T : array-like, shape (4, 4) or (N, 4, 4)
         Poses of the tool in the world frame (m).
 
     Returns
     -------
     Q : ndarray, shape (8, 6) or (N, 8, 6)
-        Joint vectors, rad in (-pi, pi] (m for a prismatic joint); NaN rows for the
-        branches that do not reach a pose (all eight when it is out of reach; see
-        :func:`analytic_ik` for the reason). Computed in chunks, so memory stays
+        Joint vectors, rad in (-pi, pi] (m for a prismatic joint), in the order of
+        CONFIGURATIONS (a decomposable arm: the engine's order 's0' ... 's7'); NaN rows
+        for the branches that do not reach a pose (all eight when it is out of reach;
+        see :func:`analytic_ik` for the reason). Computed in chunks, so memory stays
         bounded for large batches.
     """
     arm = _arm(chain)
     T = check_poses(T, "T")
-    Q, _, _ = arm._solve_batch(T[None] if T.ndim == 2 else T)
+    batch = T[None] if T.ndim == 2 else T
+    if isinstance(arm, _GeneralArm):
+        raise ValueError(
+            f"chain is a general 6R ({arm.structure}): its solutions are not a fixed "
+            "array of eight; use analytic_ik"
+        )
+    Q = (
+        arm.solve(batch)[0]
+        if isinstance(arm, DecomposedArm)
+        else arm._solve_batch(batch)[0]
+    )
     return Q[0] if T.ndim == 2 else Q
 
 
-def analytic_ik(chain, T, within_limits=False, near=None):
-    """Every closed-form solution of a pose, labelled, for an arm of :data:`STRUCTURES`.
+def analytic_ik(chain, T, within_limits=False, near=None, fixed=None):
+    """Every closed-form solution of a pose, labelled, for a 6R arm (or a 7R arm with
+    one joint fixed).
 
     Parameters
     ----------
     chain : Chain
-        A 6R arm with a spherical wrist and joints 2, 3 parallel, a UR-type arm (joints
-        2, 3, 4 parallel) or an RRP arm with a spherical wrist (Stanford); any other
-        arm is a ``ValueError`` saying what each structure needs.
+        A 6R arm: one of the :data:`STRUCTURES` (labels 'lun' ... 'rdf'), a decomposable
+        6R (a spherical wrist or shoulder, three parallel axes 2, 3, 4 or 3, 4, 5:
+        :mod:`screwkit.ik.decomposed`, labels 's0' ...), or a general 6R (solved by
+        :mod:`screwkit.ik.general` when it is installed, else a ``ValueError`` pointing
+        to :func:`screwkit.ik.numeric_ik`); a 7R arm with ``fixed``.
     T : array-like, shape (4, 4) or (N, 4, 4)
         The tool pose (m); a batch gives a list of answers.
     within_limits : bool, default False
         False: angles in (-pi, pi]. True: each angle moved by whole turns into its
         joint limits, the solutions that cannot be dropped; if none is left, the
         answer is empty and its ``reason`` says so.
-    near : array-like, shape (6,), optional
+    near : array-like, shape (n,), optional
         A joint vector (rad): the solutions are sorted by their distance to it.
+    fixed : dict {int: float}, optional
+        For a 7R arm: {joint index (0-based): value (rad)}, the joint held at that
+        value while the six others are solved; the solutions hold all seven joints.
 
     Returns
     -------
     IKSolutions
-        Up to eight :class:`IKSolution` in the order of :data:`CONFIGURATIONS` (sorted
-        by distance to ``near`` if given); empty with a ``reason`` when out of reach;
-        ``structure`` names the structure recognised. For a batch, a list of
-        IKSolutions.
+        Every solution as an :class:`IKSolution` (with its residual and within-limits
+        flag), sorted by distance to ``near`` if given; empty with a ``reason`` when
+        out of reach; ``reason`` also says when the solutions form a continuum (an
+        angle free: each listed solution is then one of a family). ``structure`` names
+        the class. For a batch, a list of IKSolutions.
     """
+    check_chain(chain)
+    if fixed is not None or chain.n == 7:
+        return _fixed_ik(chain, T, within_limits, near, fixed)
     return _analytic_ik(_arm(chain), chain, check_poses(T, "T"), within_limits, near)
+
+
+def _fixed_ik(chain, T, within_limits, near, fixed):
+    """analytic_ik of a 7R chain with one joint fixed: the 6R that remains."""
+    if fixed is None:
+        try:
+            _arm(chain)
+        except ValueError as refusal:
+            why = str(refusal)
+        raise ValueError(
+            "fixed must name one joint of a 7-joint chain to hold, e.g. "
+            f"fixed={{2: 0.0}}, got None for {chain.name!r}; {why}"
+        )
+    if chain.n != 7:
+        raise ValueError(f"fixed is for a chain of 7 joints, got {chain.n} joints")
+    if not isinstance(fixed, dict) or len(fixed) != 1:
+        raise TypeError(
+            f"fixed must be a dict of one entry {{joint index: value}}, got "
+            f"{describe(fixed)}"
+        )
+    ((j, value),) = fixed.items()
+    j = check_integer(j, "fixed", minimum=0)
+    if j > 6:
+        raise ValueError(f"fixed must name a joint index 0 ... 6, got {j}")
+    value = float(as_float_array(value, "fixed"))
+    if chain.joints[j] is not Joint.REVOLUTE:
+        raise ValueError(f"fixed must name a revolute joint, joint {j} is not")
+    S, M = chain.screw_axes(), chain.home()
+    w = S[:, :3]
+    r = np.cross(w, S[:, 3:])
+    E = _motions(w[j], r[j], np.array(value))
+    w_after = w[j + 1 :] @ E[:3, :3].T
+    r_after = r[j + 1 :] @ E[:3, :3].T + E[:3, 3]
+    axes = np.vstack([w[:j], w_after])
+    points = np.vstack([r[:j], r_after])
+    screws = np.hstack([axes, np.cross(points, axes)])
+    keep = [i for i in range(7) if i != j]
+    reduced = chain.from_screws(
+        screws, E @ M, qlim=chain.qlim[keep], name=f"{chain.name} (joint {j} fixed)"
+    )
+    near6 = None
+    if near is not None:
+        near = as_float_array(near, "near")
+        if near.shape != (7,):
+            raise ValueError(
+                f"near must be a joint vector of 7 entries, got shape {near.shape}"
+            )
+        near6 = near[keep]
+    answers = analytic_ik(reduced, T, within_limits, near6)
+    single = isinstance(answers, IKSolutions)
+    out = []
+    for answer in [answers] if single else answers:
+        widened = IKSolutions(
+            [
+                IKSolution(
+                    np.insert(s.q, j, value),
+                    s.config,
+                    s.singular,
+                    s.within_limits,
+                    s.residual,
+                )
+                for s in answer
+            ],
+            reason=answer.reason,
+            structure=f"{answer.structure}, joint {j + 1} of 7 fixed",
+        )
+        out.append(widened)
+    return out[0] if single else out
+
+
+def _pose_residual(chain, Q, T, scale):
+    """The residual of each row of Q (k, n) against the pose T: the largest entry of
+    the rotation's difference and of the position's divided by ``scale``."""
+    D = chain.fk(Q) - T
+    return np.maximum(
+        np.abs(D[..., :3, :3]).max((-1, -2)), np.abs(D[..., :3, 3]).max(-1) / scale
+    )
 
 
 def _analytic_ik(arm, chain, T, within_limits, near):
@@ -277,22 +436,112 @@ def _analytic_ik(arm, chain, T, within_limits, near):
                 f"near must be a joint vector of 6 entries, got shape {near.shape}"
             )
     batch = T if T.ndim == 3 else T[None]
-    Q, flags, code = arm._solve_batch(batch)
-    limits = chain.qlim
-    answers = [
-        _answer(arm, batch[k], Q[k], flags[k], code[k], limits, within_limits, near)
-        for k in range(batch.shape[0])
-    ]
+    if isinstance(arm, DecomposedArm):
+        answers = _decomposed_answers(arm, chain, batch, within_limits, near)
+    elif isinstance(arm, _GeneralArm):
+        answers = [
+            _general_answer(arm, chain, pose, within_limits, near) for pose in batch
+        ]
+    else:
+        Q, flags, code = arm._solve_batch(batch)
+        limits = chain.qlim
+        answers = [
+            _answer(
+                arm,
+                batch[k],
+                Q[k],
+                flags[k],
+                code[k],
+                limits,
+                within_limits,
+                near,
+                chain,
+            )
+            for k in range(batch.shape[0])
+        ]
     return answers if T.ndim == 3 else answers[0]
 
 
-def _answer(arm, T, Q, flags, code, limits, within_limits, near):
+def _listed(solutions, limits, within_limits, near, structure, reason=None):
+    """IKSolutions of (q, label, residual, singular) rows: limits, order and reason."""
+    if not solutions:
+        return IKSolutions([], reason=reason, structure=structure)
+    Q = np.array([s[0] for s in solutions])
+    moved, inside = _into_limits(Q, limits)
+    listed = [
+        IKSolution(
+            q=m if within_limits and ok else q,
+            config=label,
+            singular=singular,
+            within_limits=bool(ok),
+            residual=float(res),
+        )
+        for (q, label, res, singular), m, ok in zip(solutions, moved, inside)
+    ]
+    kept = [s for s in listed if s.within_limits] if within_limits else listed
+    result = IKSolutions(kept, reason=reason, structure=structure)
+    if near is not None:
+        result.sort(key=lambda s: np.linalg.norm(_wrap_angle(s.q - near)))
+    if not kept:
+        result.reason = (
+            "every solution violates a joint limit, even moved by whole turns: "
+            + ", ".join(
+                f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
+                for s in listed
+            )
+        )
+    return result
+
+
+_CONTINUUM = (
+    "a continuum: an angle is free at this pose (two axes aligned, or a point on "
+    "the axis it turns about); each listed solution is one of a family"
+)
+
+
+def _decomposed_answers(arm, chain, batch, within_limits, near):
+    Q, residual, free = arm.solve(batch)
+    answers = []
+    for k in range(batch.shape[0]):
+        rows = ~np.isnan(Q[k, :, 0])
+        solutions = [
+            (q, f"s{i}", res, ("continuum",) if f else ())
+            for i, (q, res, f) in enumerate(
+                zip(Q[k, rows], residual[k, rows], free[k, rows])
+            )
+        ]
+        reason = _CONTINUUM if free[k].any() else None
+        if not solutions:
+            reason = "out of reach: no real solution of the subproblems"
+        answers.append(
+            _listed(solutions, chain.qlim, within_limits, near, arm.structure, reason)
+        )
+    return answers
+
+
+def _general_answer(arm, chain, T, within_limits, near):
+    found = arm.solver(chain, T)
+    solutions = [
+        (q, f"s{i}", res, ())
+        for i, (q, res) in enumerate(zip(found.Q, found.residuals))
+    ]
+    reason = found.reason or (None if solutions else "out of reach: no real solution")
+    return _listed(solutions, chain.qlim, within_limits, near, arm.structure, reason)
+
+
+def _answer(arm, T, Q, flags, code, limits, within_limits, near, chain=None):
     if code != 0:
         return IKSolutions([], reason=arm._reason(T, code), structure=_name(arm))
     names = ("shoulder", "elbow", "wrist")
     moved, inside = _into_limits(Q, limits, getattr(arm, "revolute", None))
+    reached = ~np.isnan(Q[:, 0])
+    residual = np.full(len(Q), np.nan)
+    if chain is not None and reached.any():
+        residual[reached] = _pose_residual(chain, Q[reached], T, arm.scale)
     solutions = []
-    for q, q_moved, ok, config, flag in zip(Q, moved, inside, CONFIGURATIONS, flags):
+    for q, q_moved, ok, config, flag, res in zip(
+        Q, moved, inside, CONFIGURATIONS, flags, residual
+    ):
         if np.isnan(q[0]):
             continue
         solutions.append(
@@ -301,6 +550,7 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near):
                 config=config,
                 within_limits=bool(ok),
                 singular=tuple(n for n, f in zip(names, flag) if f),
+                residual=float(res),
             )
         )
     if within_limits:
@@ -325,7 +575,7 @@ def _into_limits(Q, qlim, revolute=None):
     ``revolute`` (6,) marks the angles (default all); other joints are not moved."""
     low, high = qlim[:, 0], qlim[:, 1]
     already = (Q >= low) & (Q <= high)
-    angles = np.ones(6, bool) if revolute is None else revolute
+    angles = np.ones(Q.shape[-1], bool) if revolute is None else revolute
     turns = np.arange(-3, 4) * angles[:, None]
     candidates = Q[..., None] + 2 * np.pi * turns  # (k, 6, 7)
     slack = IK_JOINT_LIMIT_SLACK
@@ -355,6 +605,11 @@ def configuration(chain, q):
         The label ('ruf', ...) of q, or the N labels of a batch.
     """
     arm = _arm(chain)
+    if isinstance(arm, (DecomposedArm, _GeneralArm)):
+        raise ValueError(
+            f"chain must be an arm of the STRUCTURES for a configuration label; "
+            f"{arm.structure} has none (its solutions are numbered 's0' ...)"
+        )
     q = chain.check_q(q)
     labels = arm._labels(q)
     return str(labels) if q.ndim == 1 else labels.tolist()

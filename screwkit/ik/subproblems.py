@@ -8,6 +8,8 @@ twists xi = (w; v) with |w| = 1 (the axis through r = w x v):
   p = q, for two axes that meet in a point;
 * :func:`subproblem3` -- the angles with |exp(theta xi) p - q| = delta;
 * :func:`subproblem4` -- the angles that bring p onto the plane n . x = d;
+* :func:`subproblem5` -- three cones: p0 + R1 p1 = R2 (p2 + R3 p3) (Elias and Wen);
+* :func:`subproblem6` -- two equations, each h . R p about two axes (Elias and Wen);
 * :func:`subproblem1_prismatic`, :func:`subproblem3_prismatic` -- the same questions for
   a translation along a unit direction s (the twist (0; s)).
 
@@ -37,6 +39,12 @@ from .._checks import (
     describe,
     is_symbolic,
 )
+from ..tolerances import (
+    IK_ACCEPT_TOL,
+    IK_DUPLICATE_TOL,
+    IK_RANK_TOL,
+    IK_ROOT_TOL,
+)
 from ..tolerances import SUBPROBLEM_TOL as TOL
 from ..transforms import _cross
 
@@ -46,6 +54,8 @@ __all__ = [
     "subproblem2",
     "subproblem3",
     "subproblem4",
+    "subproblem5",
+    "subproblem6",
     "subproblem1_prismatic",
     "subproblem3_prismatic",
 ]
@@ -333,6 +343,322 @@ def meeting_points(w1, w2, x, y):
     return z, gamma2
 
 
+# ---- subproblems 5 and 6: two equations, each linear in two unit vectors -------------
+# Both come down to A1 x1 + A2 x2 = d with x_i = (cos theta_i, sin theta_i): two
+# equations, each a sinusoid in theta1 plus one in theta2 (Elias and Wen 2022).
+
+
+def _cone_terms(k, p):
+    """R(k, theta) p = a + b cos(theta) + e sin(theta) for unit axes k and vectors p,
+    both (..., 3): returns a = k (k . p), b = p - a, e = k x p, each (..., 3)."""
+    a = k * np.sum(k * p, -1)[..., None]
+    return a, p - a, np.cross(k, p)
+
+
+def _angle_about(k, a, b):
+    """The angle about the unit axes k (..., 3) turning a towards b (..., 3), rad; 0
+    where a or b is on the axis."""
+    a_ = a - k * np.sum(a * k, -1)[..., None]
+    b_ = b - k * np.sum(b * k, -1)[..., None]
+    return np.arctan2(np.sum(np.cross(a_, b_) * k, -1), np.sum(a_ * b_, -1))
+
+
+def _det2(A):
+    return A[..., 0, 0] * A[..., 1, 1] - A[..., 0, 1] * A[..., 1, 0]
+
+
+def _unit(theta):
+    return np.stack([np.cos(theta), np.sin(theta)], -1)
+
+
+def _mv(A, x):
+    """A x for stacks of 2x2 matrices (..., 2, 2) and vectors (..., 2)."""
+    return np.einsum("...ij,...j->...i", A, x)
+
+
+def _two_roots(A, B, C):
+    """The two angles of A cos + B sin = C, (..., 2), and whether they are real
+    (...): the excess A^2 + B^2 - C^2 clipped by IK_RANK_TOL."""
+    phi, half, excess, radius2 = sinusoid_angles(A, B, C)
+    ok = (excess >= -IK_RANK_TOL * np.maximum(radius2, C * C)) & (radius2 > 0)
+    return np.stack([phi - half, phi + half], -1), ok
+
+
+def _quartic_candidates(A1, A2, d):
+    """The candidates of A1 x1 + A2 x2 = d for A1 of rank 2: x1 = adj(A1) (d - A2 x2) /
+    det(A1) with |x1| = 1 is a trigonometric polynomial of degree 2 in theta2, a
+    quartic in z = exp(i theta2) (companion-matrix eigenvalues; its roots on the unit
+    circle, polished by Newton). Returns angles (..., 4, 2), a mask (..., 4) and where
+    theta2 is free (...)."""
+    det = _det2(A1)
+    adj = np.stack(
+        [
+            np.stack([A1[..., 1, 1], -A1[..., 0, 1]], -1),
+            np.stack([-A1[..., 1, 0], A1[..., 0, 0]], -1),
+        ],
+        -2,
+    )
+    f = _mv(adj, d)
+    G = -adj @ A2
+    H = np.swapaxes(G, -1, -2) @ G
+    fG = np.einsum("...i,...ij->...j", f, G)
+    c0 = np.sum(f * f, -1) + (H[..., 0, 0] + H[..., 1, 1]) / 2 - det**2
+    c1, s1 = 2 * fG[..., 0], 2 * fG[..., 1]
+    c2, s2 = (H[..., 0, 0] - H[..., 1, 1]) / 2, H[..., 0, 1]
+    size = np.abs(np.stack([c0, c1, s1, c2, s2], -1)).max(-1) + np.finfo(float).tiny
+    lead = (c2 - 1j * s2) / 2
+    quartic = np.abs(lead) > IK_RANK_TOL * size
+    coeffs = np.stack(
+        [(c1 - 1j * s1) / 2, c0 + 0j, (c1 + 1j * s1) / 2, (c2 + 1j * s2) / 2]
+    )
+    companion = np.zeros(lead.shape + (4, 4), complex)
+    companion[..., 0, :] = (
+        -np.moveaxis(coeffs, 0, -1) / np.where(quartic, lead, 1.0)[..., None]
+    )
+    companion[..., 1, 0] = companion[..., 2, 1] = companion[..., 3, 2] = 1.0
+    z = np.linalg.eigvals(companion)
+    # degree 1 (c2 = s2 = 0): c0 + c1 cos + s1 sin = 0, two roots
+    linear, linear_ok = _two_roots(c1, s1, -c0)
+    theta2 = np.where(quartic[..., None], np.angle(z), np.concatenate([linear] * 2, -1))
+    no = np.zeros_like(linear_ok)
+    ok = np.where(
+        quartic[..., None],
+        np.abs(np.abs(z) - 1) < IK_ROOT_TOL,
+        np.stack([linear_ok, linear_ok, no, no], -1),
+    )
+    # no theta2 in it (A2's block vanishes after elimination): every theta2 or none
+    flat = np.abs(np.stack([c1, s1, c2, s2], -1)).max(-1) <= IK_RANK_TOL * (
+        np.sum(f * f, -1) + det**2 + np.finfo(float).tiny
+    )
+    free = flat & (np.abs(c0) <= IK_RANK_TOL * (np.sum(f * f, -1) + det**2))
+    theta2 = np.where(flat[..., None], 0.0, theta2)
+    ok = np.where(flat[..., None], free[..., None] & [True, False, False, False], ok)
+    for _ in range(2):  # Newton on the trigonometric polynomial
+        c, s = np.cos(theta2), np.sin(theta2)
+        cc, ss = c * c - s * s, 2 * s * c
+        coef = [x[..., None] for x in (c0, c1, s1, c2, s2)]
+        P = coef[0] + coef[1] * c + coef[2] * s + coef[3] * cc + coef[4] * ss
+        dP = -coef[1] * s + coef[2] * c - 2 * coef[3] * ss + 2 * coef[4] * cc
+        steep = np.abs(dP) > IK_RANK_TOL * size[..., None]
+        theta2 = theta2 - np.where(steep, P / np.where(steep, dP, 1.0), 0.0)
+    e = f[..., None, :] + np.einsum("...ij,...kj->...ki", G, _unit(theta2))
+    sign = np.where(det < 0, -1.0, 1.0)[..., None]
+    theta1 = np.arctan2(sign * e[..., 1], sign * e[..., 0])
+    return np.stack([theta1, theta2], -1), ok, free
+
+
+def _rank1_candidates(A1, A2, d, size):
+    """The candidates of A1 x1 + A2 x2 = d for A1 of rank 1 or 0: with u across A1's
+    columns, u . A2 x2 = u . d gives theta2 (two angles), then v . A1 x1 =
+    v . (d - A2 x2) along them gives theta1 (two each). Returns angles (..., 4, 2), a
+    mask (..., 4) and where an angle is free (...): a continuum."""
+    columns = np.swapaxes(A1, -1, -2)  # (..., 2 columns, 2)
+    lengths = np.linalg.norm(columns, axis=-1)
+    big = np.take_along_axis(columns, lengths.argmax(-1)[..., None, None], -2)[
+        ..., 0, :
+    ]
+    norm = np.linalg.norm(big, axis=-1)
+    zero1 = norm <= IK_RANK_TOL * size
+    v = np.where(
+        zero1[..., None], [1.0, 0.0], big / np.where(zero1, 1.0, norm)[..., None]
+    )
+    u = np.stack([-v[..., 1], v[..., 0]], -1)
+    uA2 = np.einsum("...i,...ij->...j", u, A2)
+    ud = np.sum(u * d, -1)
+    theta2, ok2 = _two_roots(uA2[..., 0], uA2[..., 1], ud)
+    flat2 = np.linalg.norm(uA2, axis=-1) <= IK_RANK_TOL * size
+    free = flat2 & (np.abs(ud) <= IK_RANK_TOL * size)
+    theta2 = np.where(flat2[..., None], 0.0, theta2)
+    ok2 = np.where(flat2, free, ok2)
+    vA1 = np.einsum("...i,...ij->...j", v, A1)  # (..., 2)
+    rest = np.sum(
+        v[..., None, :]
+        * (d[..., None, :] - np.einsum("...ij,...kj->...ki", A2, _unit(theta2))),
+        -1,
+    )  # (..., 2)
+    theta1, ok1 = _two_roots(vA1[..., None, 0], vA1[..., None, 1], rest)  # (..., 2, 2)
+    free = free | zero1
+    theta1 = np.where(zero1[..., None, None], 0.0, theta1)
+    ok1 = np.where(zero1[..., None], True, ok1)
+    angles = np.stack(
+        [theta1.reshape(theta1.shape[:-2] + (4,)), np.repeat(theta2, 2, -1)], -1
+    )
+    ok = np.repeat(ok1 & ok2[..., None], 2, -1)
+    return angles, ok, free
+
+
+def sinusoid_pairs(A1, A2, d):
+    """Subproblem 6's core over a batch: the angle pairs with A1 x1 + A2 x2 = d, where
+    x_i = (cos theta_i, sin theta_i): two equations, each a sinusoid in theta1 plus one
+    in theta2.
+
+    The unknown whose block is better conditioned is eliminated: for a block of rank
+    2, x1 = adj(A1) (d - A2 x2) / det(A1) and |x1| = 1 is a quartic in
+    z = exp(i theta2); for rank 1 (axes that meet or are parallel make it so), the two
+    equations are solved one after the other (:data:`~screwkit.tolerances.IK_RANK_TOL`
+    decides). Every candidate is polished by Newton on both equations and kept when its
+    residual is below :data:`~screwkit.tolerances.IK_ACCEPT_TOL` (relative to the
+    equations' size); duplicates are dropped.
+
+    Parameters
+    ----------
+    A1, A2 : array, shape (..., 2, 2), the coefficients of x1 and x2 (any one unit)
+    d : array, shape (..., 2), the right-hand sides (the same unit)
+
+    Returns
+    -------
+    theta : array (..., 4, 2), rad in (-pi, pi]: (theta1, theta2) of up to four
+        solutions
+    ok : array of bool (..., 4): which rows are solutions
+    free : array of bool (...): True where an angle is free (a continuum of solutions;
+        the rows then hold the representatives with that angle 0)
+    """
+    A1, A2, d = np.broadcast_arrays(A1, A2, d[..., None])
+    d = d[..., 0]
+    size = 1.0 + np.sqrt(
+        np.sum(A1**2, (-1, -2)) + np.sum(A2**2, (-1, -2)) + np.sum(d**2, -1)
+    )
+    r1 = np.abs(_det2(A1)) / (np.sum(A1**2, (-1, -2)) + np.finfo(float).tiny)
+    r2 = np.abs(_det2(A2)) / (np.sum(A2**2, (-1, -2)) + np.finfo(float).tiny)
+    swap = r2 > r1
+    Aa = np.where(swap[..., None, None], A2, A1)
+    Ab = np.where(swap[..., None, None], A1, A2)
+    theta, ok, free = _quartic_candidates(Aa, Ab, d)
+    rank1 = np.maximum(r1, r2) <= IK_RANK_TOL
+    if np.any(rank1):
+        low, low_ok, low_free = _rank1_candidates(Aa, Ab, d, size)
+        theta = np.where(rank1[..., None, None], low, theta)
+        ok = np.where(rank1[..., None], low_ok, ok)
+        free = np.where(rank1, low_free, free)
+    theta = np.where(swap[..., None, None], theta[..., ::-1], theta)
+    A1, A2, d = A1[..., None, :, :], A2[..., None, :, :], d[..., None, :]
+    for _ in range(2):  # Newton on both equations
+        x1, x2 = _unit(theta[..., 0]), _unit(theta[..., 1])
+        F = _mv(A1, x1) + _mv(A2, x2) - d
+        J = np.stack(
+            [_mv(A1, x1[..., ::-1] * [-1, 1]), _mv(A2, x2[..., ::-1] * [-1, 1])], -1
+        )
+        det = _det2(J)
+        regular = np.abs(det) > IK_RANK_TOL * size[..., None] ** 2
+        step = np.linalg.solve(
+            np.where(regular[..., None, None], J, np.eye(2)), F[..., None]
+        )[..., 0]
+        theta = theta - np.where(regular[..., None], step, 0.0)
+    x1, x2 = _unit(theta[..., 0]), _unit(theta[..., 1])
+    residual = np.linalg.norm(_mv(A1, x1) + _mv(A2, x2) - d, axis=-1)
+    ok = ok & (residual <= IK_ACCEPT_TOL * size[..., None])
+    theta = np.pi - np.mod(np.pi - theta, 2 * np.pi)
+    for i in range(1, 4):  # a double root found twice is one solution
+        for j in range(i):
+            gap = np.abs(
+                np.pi - np.mod(np.pi - (theta[..., i, :] - theta[..., j, :]), 2 * np.pi)
+            )
+            ok[..., i] &= ~(ok[..., j] & np.all(gap < IK_DUPLICATE_TOL, -1))
+    return theta, ok, free
+
+
+def three_cones(k1, k2, k3, p0, p1, p2, p3):
+    """Subproblem 5 over a batch: the angles with p0 + R(k1, theta1) p1 =
+    R(k2, theta2) (p2 + R(k3, theta3) p3), rotations about unit axes through the
+    origin.
+
+    With v1 = p0 + R1 p1 and v3 = p2 + R3 p3, a theta2 exists exactly when
+    k2 . v1 = k2 . v3 and |v1| = |v3|: two equations, each a sinusoid in theta1 plus
+    one in theta3 (:func:`sinusoid_pairs`); theta2 is then subproblem 1 from v3 to v1.
+
+    Parameters
+    ----------
+    k1, k2, k3 : array, shape (..., 3), unit axes
+    p0, p1, p2, p3 : array, shape (..., 3), vectors (m)
+
+    Returns
+    -------
+    theta : array (..., 4, 3), rad: (theta1, theta2, theta3) of up to four solutions
+    ok : array of bool (..., 4): which rows are solutions
+    free : array of bool (..., 4): True where an angle is free (a continuum; the row
+        holds the representative with that angle 0)
+    """
+    k1, k2, k3, p0, p1, p2, p3 = np.broadcast_arrays(k1, k2, k3, p0, p1, p2, p3)
+    size = 1.0 + sum(np.linalg.norm(p, axis=-1) for p in (p0, p1, p2, p3))
+    a1, b1, e1 = _cone_terms(k1, p1)
+    a3, b3, e3 = _cone_terms(k3, p3)
+    o1, o3 = p0 + a1, p2 + a3
+    dot = lambda x, y: np.sum(x * y, -1)  # noqa: E731
+    A1 = np.stack(
+        [
+            np.stack([dot(k2, b1), dot(k2, e1)], -1),
+            np.stack([dot(o1, b1), dot(o1, e1)], -1) * 2 / size[..., None],
+        ],
+        -2,
+    )
+    A3 = -np.stack(
+        [
+            np.stack([dot(k2, b3), dot(k2, e3)], -1),
+            np.stack([dot(o3, b3), dot(o3, e3)], -1) * 2 / size[..., None],
+        ],
+        -2,
+    )
+    d = np.stack(
+        [
+            dot(k2, o3 - o1),
+            (dot(o3, o3) + dot(b3, b3) - dot(o1, o1) - dot(b1, b1)) / size,
+        ],
+        -1,
+    )
+    theta13, ok, free = sinusoid_pairs(A1, A3, d)
+    c1, s1 = np.cos(theta13[..., 0]), np.sin(theta13[..., 0])
+    c3, s3 = np.cos(theta13[..., 1]), np.sin(theta13[..., 1])
+    v1 = o1[..., None, :] + b1[..., None, :] * c1[..., None]
+    v1 = v1 + e1[..., None, :] * s1[..., None]
+    v3 = o3[..., None, :] + b3[..., None, :] * c3[..., None]
+    v3 = v3 + e3[..., None, :] * s3[..., None]
+    kk = k2[..., None, :]
+    theta2 = _angle_about(kk, v3, v1)
+    across = np.linalg.norm(v3 - kk * np.sum(v3 * kk, -1)[..., None], axis=-1)
+    free = free[..., None] | (across <= IK_RANK_TOL * size[..., None])
+    theta = np.stack([theta13[..., 0], theta2, theta13[..., 1]], -1)
+    return theta, ok, free & ok
+
+
+def two_pairs(h, k, p, d):
+    """Subproblem 6 over a batch: the angles with
+    h1 . R(k1, theta1) p1 + h2 . R(k2, theta2) p2 = d1 and
+    h3 . R(k3, theta1) p3 + h4 . R(k4, theta2) p4 = d2.
+
+    Each term h . R(k, theta) p = h . a + (h . b) cos(theta) + (h . e) sin(theta)
+    (a, b, e: the parts of p along k, across it, and k x p), so the two equations are
+    A1 x1 + A2 x2 = d' (:func:`sinusoid_pairs`).
+
+    Parameters
+    ----------
+    h, k, p : array, shape (..., 4, 3): the four terms' vectors, unit axes and vectors
+    d : array, shape (..., 2): the right-hand sides
+
+    Returns
+    -------
+    theta, ok, free : as :func:`sinusoid_pairs` returns them
+    """
+    h, k, p = np.broadcast_arrays(h, k, p)
+    a, b, e = _cone_terms(k, p)
+    hb, he, ha = (np.sum(h * x, -1) for x in (b, e, a))  # (..., 4)
+    A1 = np.stack(
+        [
+            np.stack([hb[..., 0], he[..., 0]], -1),
+            np.stack([hb[..., 2], he[..., 2]], -1),
+        ],
+        -2,
+    )
+    A2 = np.stack(
+        [
+            np.stack([hb[..., 1], he[..., 1]], -1),
+            np.stack([hb[..., 3], he[..., 3]], -1),
+        ],
+        -2,
+    )
+    rhs = d - np.stack([ha[..., 0] + ha[..., 1], ha[..., 2] + ha[..., 3]], -1)
+    return sinusoid_pairs(A1, A2, rhs)
+
+
 # ---- the subproblems -----------------------------------------------------------------
 
 
@@ -618,6 +944,92 @@ def _subproblem4_numeric(w, r, u, n, d):
             f"to {_fmt(C + radius)}, not {_fmt(d)}"
         )
     return Solutions([phi + half] if sign == 0 else [phi - half, phi + half])
+
+
+def subproblem5(k1, k2, k3, p0, p1, p2, p3):
+    """The angle triples with
+    p0 + R(k1, theta1) p1 = R(k2, theta2) (p2 + R(k3, theta3) p3) (Elias and Wen's
+    subproblem 5, three cones), rotations about axes through the origin.
+
+    Up to four solutions: k2 . (p0 + R1 p1) = k2 . (p2 + R3 p3) and
+    |p0 + R1 p1| = |p2 + R3 p3| are two equations, each a sinusoid in theta1 plus one in
+    theta3, which eliminate to a quartic; theta2 then turns p2 + R3 p3 onto
+    p0 + R1 p1 (subproblem 1). Floats only.
+
+    Parameters
+    ----------
+    k1, k2, k3 : array-like, shape (3,)
+        Unit axis directions.
+    p0, p1, p2, p3 : array-like, shape (3,)
+        Vectors (m).
+
+    Returns
+    -------
+    Solutions
+        (theta1, theta2, theta3) triples (rad, in (-pi, pi]), or [] with ``reason``;
+        ``free`` when an angle is free (a continuum; that angle is 0 in the list).
+    """
+    k = [_direction(v, name, False) for v, name in ((k1, "k1"), (k2, "k2"), (k3, "k3"))]
+    p = [_point(v, f"p{i}", False) for i, v in enumerate((p0, p1, p2, p3))]
+    theta, ok, free = three_cones(*k, *p)
+    if not ok.any():
+        return Solutions(
+            reason="the circles of p0 + R(k1, theta1) p1 and p2 + R(k3, theta3) p3 "
+            "never share a height along k2 and a distance from the origin"
+        )
+    return Solutions(
+        [tuple(float(a) for a in row) for row in theta[ok]], free=bool(free[ok].any())
+    )
+
+
+def subproblem6(h, k, p, d):
+    """The angle pairs with h1 . R(k1, theta1) p1 + h2 . R(k2, theta2) p2 = d1 and
+    h3 . R(k3, theta1) p3 + h4 . R(k4, theta2) p4 = d2 (Elias and Wen's subproblem 6).
+
+    Each term is h . a + (h . b) cos(theta) + (h . e) sin(theta) (a, b: the parts of p
+    along and across k, e = k x p): two equations linear in (cos theta1, sin theta1)
+    and in (cos theta2, sin theta2); eliminating one pair leaves a quartic. Up to four
+    solutions. Floats only.
+
+    Parameters
+    ----------
+    h : array-like, shape (4, 3)
+        The vectors h1 ... h4.
+    k : array-like, shape (4, 3)
+        Unit axes k1 ... k4 (k1, k3 turn by theta1; k2, k4 by theta2).
+    p : array-like, shape (4, 3)
+        The vectors p1 ... p4.
+    d : array-like, shape (2,)
+        The right-hand sides d1, d2.
+
+    Returns
+    -------
+    Solutions
+        (theta1, theta2) pairs (rad, in (-pi, pi]), or [] with ``reason``; ``free`` when
+        an angle is free (a continuum; that angle is 0 in the list).
+    """
+    arrays = {}
+    for value, name, shape in (
+        (h, "h", (4, 3)),
+        (k, "k", (4, 3)),
+        (p, "p", (4, 3)),
+        (d, "d", (2,)),
+    ):
+        array = as_float_array(value, name)
+        if array.shape != shape:
+            raise ValueError(f"{name} must have shape {shape}, got {describe(array)}")
+        arrays[name] = array
+    norms = np.linalg.norm(arrays["k"], axis=1)
+    if np.any(np.abs(norms - 1) > TOL):
+        raise ValueError(
+            f"k must hold unit axes, got norms {np.round(norms, 6).tolist()}"
+        )
+    theta, ok, free = two_pairs(arrays["h"], arrays["k"], arrays["p"], arrays["d"])
+    if not ok.any():
+        return Solutions(reason="the two equations have no common real solution")
+    return Solutions(
+        [tuple(float(a) for a in row) for row in theta[ok]], free=bool(free)
+    )
 
 
 def subproblem1_prismatic(s, p, q):

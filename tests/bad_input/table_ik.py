@@ -137,7 +137,7 @@ ROWS = [
     ),
     row(
         "wrist axes miss",
-        lambda: ik.analytic_ik(skew_wrist(), t0()),
+        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(skew_wrist()),
         ValueError,
         "chain",
         match="chain must have a spherical wrist: "
@@ -145,7 +145,7 @@ ROWS = [
     ),
     row(
         "joints 2, 3 not parallel",
-        lambda: ik.analytic_ik(twisted(), t0()),
+        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(twisted()),
         ValueError,
         "chain",
         match="chain must have parallel axes for joints 2 and 3",

@@ -1,0 +1,107 @@
+"""Inverse kinematics of decomposable 6R arms by subproblems 5 and 6, beside EAIK.
+
+Random arms of four classes (a spherical wrist with no other condition, a spherical
+shoulder, three parallel axes 2, 3, 4 and 3, 4, 5, each with offsets everywhere): all
+solutions of 10,000 random poses in one call (issue 34's goal: at most 100 ms), and the
+same poses through EAIK (Ostermeier et al. 2024, C++ behind pybind, one thread) when it
+is installed (``pip install EAIK``; benchmarks/requirements.txt). Prints how many
+solutions each finds, whether every exact EAIK solution (forward-kinematics error below
+1e-8) is among screwkit's, and the times side by side.
+Usage (from the top level): .venv/bin/python benchmarks/bench_ik_decomposed.py
+"""
+
+import numpy as np
+from _report import best
+
+import screwkit as sk
+from screwkit.ik.decomposed import DecomposedArm
+
+try:
+    from eaik.IK_HP import HPRobot  # not eaik itself: its __init__ needs urchin
+except ImportError:
+    HPRobot = None
+
+N = 10_000
+rng = np.random.default_rng(34)
+
+
+def unit(v):
+    return v / np.linalg.norm(v)
+
+
+def arm(kind):
+    w = np.array([unit(rng.normal(size=3)) for _ in range(6)])
+    p = rng.normal(size=(6, 3)) * 0.5
+    if kind == "spherical wrist":
+        p[3:] = rng.normal(size=3)
+    elif kind == "spherical shoulder":
+        p[:3] = rng.normal(size=3)
+    elif kind == "parallel 2, 3, 4":
+        w[1:4] = w[1]
+    else:
+        w[2:5] = w[2]
+    M = np.eye(4)
+    M[:3, 3] = rng.normal(size=3) * 0.3
+    return sk.Chain.from_screws(np.hstack([w, np.cross(p, w)]), M)
+
+
+def eaik_robot(chain):
+    """The chain in EAIK's H, P convention (axes, offsets between axis points, the
+    tool's rotation at q = 0 taken off the poses)."""
+    S, M = chain.screw_axes(), chain.home()
+    w = S[:, :3]
+    r = np.cross(w, S[:, 3:])
+    return HPRobot(w, np.vstack([r[0], np.diff(r, axis=0), M[:3, 3] - r[5]]))
+
+
+def wrapped(a):
+    return np.angle(np.exp(1j * a))
+
+
+print(
+    f"{'class':<22}{'screwkit':>12}{'EAIK':>12}{'ratio':>8}  solutions (screwkit/EAIK)"
+)
+for kind in (
+    "spherical wrist",
+    "spherical shoulder",
+    "parallel 2, 3, 4",
+    "parallel 3, 4, 5",
+):
+    chain = arm(kind)
+    engine = DecomposedArm.from_chain(chain)
+    T = chain.fk(rng.uniform(-np.pi, np.pi, (N, 6)))
+    Q = sk.ik.analytic_ik_all(chain, T)
+    ours = int((~np.isnan(Q[..., 0])).sum())
+    t_ours = best(lambda: sk.ik.analytic_ik_all(chain, T), 1, 3)  # noqa: B023
+    t_theirs, theirs, missing = None, "-", "-"
+    if HPRobot is not None:
+        robot = eaik_robot(chain)
+        T_eaik = T.copy()
+        T_eaik[:, :3, :3] = T[:, :3, :3] @ chain.home()[:3, :3].T
+        poses = list(T_eaik)
+        t_theirs = best(lambda: robot.IK_batched(poses, 1), 1, 3)  # noqa: B023
+        found = robot.IK_batched(poses, 1)
+        count, missing = 0, 0
+        for k in range(N):
+            QE = np.array(found[k].Q).reshape(-1, 6)
+            if len(QE):
+                QE = QE[np.abs(chain.fk(QE) - T[k]).max((1, 2)) < 1e-8]
+            distinct = []
+            for q in QE:
+                if all(np.abs(wrapped(q - d)).max() > 1e-6 for d in distinct):
+                    distinct.append(q)
+            count += len(distinct)
+            mine = Q[k][~np.isnan(Q[k, :, 0])]
+            for q in distinct:
+                if len(mine) == 0 or np.abs(wrapped(mine - q)).max(1).min() > 1e-6:
+                    missing += 1
+        theirs = count
+    ratio = f"{t_theirs / t_ours:>7.2f}x" if t_theirs else f"{'-':>8}"
+    theirs_ms = f"{t_theirs * 1e3:>9.1f} ms" if t_theirs else f"{'-':>12}"
+    print(
+        f"{kind:<22}{t_ours * 1e3:>9.1f} ms{theirs_ms}{ratio}  {ours}/{theirs}"
+        f" (exact EAIK solutions screwkit lacks: {missing})"
+    )
+print(f"\n{N} poses per class; goal (issue 34): all solutions in at most 100 ms")
+if HPRobot is None:
+    print("EAIK is not installed (pip install EAIK): screwkit alone")

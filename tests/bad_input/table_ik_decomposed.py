@@ -1,0 +1,172 @@
+"""Bad input to the decomposed closed form and subproblems 5 and 6: one row per case,
+the error type and the argument the message names."""
+
+import functools
+
+import numpy as np
+import sympy as sp
+from builders import planar, puma
+from rows import row
+
+import screwkit as sk
+from screwkit import ik
+from screwkit.ik import decomposed
+
+Z = [0.0, 0.0, 1.0]
+
+
+@functools.cache
+def iiwa():
+    return sk.robots.iiwa14()
+
+
+# the PUMA with a4 = 0.1 m: wrist axes 4, 5, 6 do not meet, no decomposition
+@functools.cache
+def offset_wrist():
+    return sk.Chain(
+        list(puma().links[:3])
+        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
+        + list(puma().links[4:])
+    )
+
+
+@functools.cache
+def shoulder_arm():
+    return decomposed.DecomposedArm.from_chain(
+        sk.Chain.from_screws(sk.robots.iiwa14().screw_axes()[1:], np.eye(4))
+    )
+
+
+@functools.cache
+def t7():
+    return iiwa().fk(np.zeros(7))
+
+
+ROWS = [
+    row(
+        "subproblem5 k not unit",
+        lambda: ik.subproblem5(Z, [0, 0, 2.0], Z, Z, Z, Z, Z),
+        ValueError,
+        "k2",
+        match="k2 must be a unit direction",
+    ),
+    row(
+        "subproblem5 p shape",
+        lambda: ik.subproblem5(Z, Z, Z, [1.0, 0], Z, Z, Z),
+        ValueError,
+        "p0",
+        match=r"p0 must be a point of shape \(3,\)",
+    ),
+    row(
+        "subproblem5 p text",
+        lambda: ik.subproblem5(Z, Z, Z, Z, "p", Z, Z),
+        TypeError,
+        "p1",
+        match="p1 must be a number or an array",
+    ),
+    row(
+        "subproblem6 h shape",
+        lambda: ik.subproblem6(
+            np.zeros((3, 3)), np.eye(3)[[2, 2, 2, 2]], np.ones((4, 3)), [0, 0]
+        ),
+        ValueError,
+        "h",
+        match=r"h must have shape \(4, 3\)",
+    ),
+    row(
+        "subproblem6 k not unit",
+        lambda: ik.subproblem6(
+            np.ones((4, 3)), np.ones((4, 3)), np.ones((4, 3)), [0, 0]
+        ),
+        ValueError,
+        "k",
+        match="k must hold unit axes",
+    ),
+    row(
+        "subproblem6 d shape",
+        lambda: ik.subproblem6(
+            np.ones((4, 3)), np.eye(3)[[2, 2, 2, 2]], np.ones((4, 3)), 0.0
+        ),
+        ValueError,
+        "d",
+        match=r"d must have shape \(2,\)",
+    ),
+    row(
+        "7R without fixed",
+        lambda: ik.analytic_ik(iiwa(), t7()),
+        ValueError,
+        "fixed",
+        match="fixed must name one joint of a 7-joint chain",
+    ),
+    row(
+        "fixed not a dict",
+        lambda: ik.analytic_ik(iiwa(), t7(), fixed=[2, 0.0]),
+        TypeError,
+        "fixed",
+        match="fixed must be a dict of one entry",
+    ),
+    row(
+        "fixed joint out of range",
+        lambda: ik.analytic_ik(iiwa(), t7(), fixed={9: 0.0}),
+        ValueError,
+        "fixed",
+        match="fixed must name a joint index 0 ... 6, got 9",
+    ),
+    row(
+        "fixed on a 6R",
+        lambda: ik.analytic_ik(puma(), puma().fk(np.zeros(6)), fixed={2: 0.0}),
+        ValueError,
+        "fixed",
+        match="fixed is for a chain of 7 joints, got 6",
+    ),
+    row(
+        "fixed value text",
+        lambda: ik.analytic_ik(iiwa(), t7(), fixed={2: "zero"}),
+        TypeError,
+        "fixed",
+    ),
+    row(
+        "classify 3 joints",
+        lambda: decomposed.classify(planar(1.0, 1.0, 1.0)),
+        ValueError,
+        "chain",
+        match="chain must have 6 joints for the closed form, got 3",
+    ),
+    row(
+        "classify not a chain",
+        lambda: decomposed.classify("puma"),
+        TypeError,
+        "chain",
+        match="chain must be a screwkit Chain",
+    ),
+    row(
+        "DecomposedArm of a general 6R",
+        lambda: decomposed.DecomposedArm.from_chain(offset_wrist()),
+        ValueError,
+        "chain",
+        match="chain must have three consecutive axes meeting",
+    ),
+    row(
+        "DecomposedArm.solve T not rigid",
+        lambda: shoulder_arm().solve(np.diag([1.0, 2.0, 1.0, 1.0])),
+        ValueError,
+        "T",
+        match=r"T must .*rotation",
+    ),
+    row(
+        "DecomposedArm.solve T shape",
+        lambda: shoulder_arm().solve(np.eye(3)),
+        ValueError,
+        "T",
+    ),
+    row(
+        "configuration of a decomposed arm",
+        lambda: ik.configuration(
+            sk.Chain.from_screws(sk.robots.iiwa14().screw_axes()[1:], np.eye(4)),
+            np.zeros(6),
+        ),
+        ValueError,
+        "chain",
+        match="chain must be an arm of the STRUCTURES",
+    ),
+]
