@@ -42,6 +42,9 @@ def _has_msolve():
     return True
 
 
+if os.environ.get("SCREWKIT_PROOF") == "required" and not _has_msolve():
+    raise RuntimeError("SCREWKIT_PROOF=required but msolve is missing")
+
 needs_msolve = pytest.mark.skipif(
     not _has_msolve(), reason="msolve missing: pip install screwkit[proof]"
 )
@@ -354,3 +357,28 @@ def test_rpr_self_motion_is_a_continuum():
     base = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
     poses, complete, reason = rpr_fk_proven(base, base, [0.5, 0.5, 0.5])
     assert not complete and "self-motion" in reason
+
+
+@needs_msolve
+def test_fk_all_with_proof_is_the_proven_list_and_says_complete():
+    pm = stewart_of(DIETMAIER_BASE, DIETMAIER_PLATFORM)
+    modes = pm.fk_all(np.array(DIETMAIER_LENGTHS, float), proof=True)
+    assert (len(modes), modes.complete, modes.reason) == (40, True, None)
+    assert "msolve" in modes.method
+    check_modes(modes, DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+    fast = pm.fk_all(np.array(DIETMAIER_LENGTHS, float))
+    assert fast.complete is False and "may miss" in fast.reason
+
+
+def test_fk_all_with_proof_on_the_3rpr_and_where_no_proof_exists():
+    pm = sk.parallel.planar_3rpr()
+    rho = np.array(sk.parallel.RPR_SIX_MODES_RHO)
+    modes = pm.fk_all(rho, proof=True)
+    assert (len(modes), modes.complete) == (6, True)
+    for T in sk.parallel.rpr_sextic(pm, rho):
+        assert any(same_pose(T, U, pm.scale) for U in modes)
+    rrr = sk.parallel.planar_3rrr()  # no exact solver: the search, unproven
+    searched = rrr.fk_all(rrr.ik(np.eye(4)), proof=True)
+    assert searched.complete is False and searched.reason
+    with pytest.raises(TypeError, match="proof"):
+        pm.fk_all(rho, proof="yes")

@@ -42,6 +42,7 @@ from ..screws import Wrench
 from ..systems import ScrewSystem
 from ..tolerances import PARALLEL_FK_TOL, PARALLEL_MOTION_TOL
 from . import numeric as _numeric
+from . import proven as _proven
 from . import search as _search
 from .legs import Linear, Prismatic, Revolute, evaluated
 from .search import AssemblyModes
@@ -709,7 +710,7 @@ class ParallelManipulator:
             self.scale,
         )
 
-    def fk_all(self, rho, starts=None, seed=0):
+    def fk_all(self, rho, starts=None, seed=0, proof=False):
         """Every real assembly mode with actuated values rho, and how far to trust it.
 
         The delta solves three spheres' intersection and the Tripteron a linear
@@ -724,6 +725,12 @@ class ParallelManipulator:
         a solution and the solutions continue along its kernel, the result says so
         (``continuum``): a self-motion or a degenerate geometry.
 
+        With ``proof=True`` the Stewart-Gough platform (six prismatic legs, spatial) and
+        the 3-RPR are solved exactly instead, with certified real roots
+        (:func:`~screwkit.parallel.stewart_fk_proven`, which needs the optional
+        package of ``screwkit[proof]``, and :func:`~screwkit.parallel.rpr_fk_proven`):
+        ``complete`` is then True unless the solver says why not.
+
         Parameters
         ----------
         rho : array-like, shape (m,)
@@ -733,6 +740,10 @@ class ParallelManipulator:
             ``MAX_FK_STARTS``).
         seed : int
             The search's seed.
+        proof : bool
+            Ask for a proof of completeness (default False: the fast path). A
+            mechanism without an exact solver answers by its usual method, with
+            ``complete`` False and the reason.
 
         Returns
         -------
@@ -760,6 +771,10 @@ class ParallelManipulator:
                 f"{starts} starts would not fit in memory), got {starts}"
             )
         seed = check_integer(seed, "seed", minimum=0)
+        if check_flag(proof, "proof") and isinstance(self._legs, Prismatic):
+            proven = self._fk_proven(values)
+            if proven is not None:
+                return proven
         closed = None
         three = self.motion == "translational" and self.m == 3
         if three and isinstance(self._legs, Revolute):
@@ -804,6 +819,29 @@ class ParallelManipulator:
             method=method,
             reason=reason,
             continuum=on is not None,
+        )
+
+    def _fk_proven(self, values):
+        """fk_all by an exact solver with certified roots, or None if there is none."""
+        if self.planar:
+            method = "sextic, real roots isolated exactly (SymPy)"
+            solved = _proven.rpr_fk_proven(
+                self.base_points[:, :2], self.platform_points[:, :2], values
+            )
+        elif self.m == 6 and self.motion == "spatial":
+            method = "Study parameters, Groebner basis and certified roots (msolve)"
+            solved = _proven.stewart_fk_proven(
+                self.base_points, self.platform_points, values
+            )
+        else:
+            return None
+        poses, complete, reason = solved
+        return AssemblyModes(
+            _search.sort_modes(self, poses),
+            complete=complete,
+            method=method,
+            reason=reason,
+            continuum=False,
         )
 
     # ---- workspace ------------------------------------------------------------------
