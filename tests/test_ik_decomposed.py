@@ -292,7 +292,7 @@ def test_structures_of_the_zoo():
     assert classify(sk.robots.ur5e()).kind == "parallel 234"
 
 
-# ---- the peer: EAIK (tests/reference-requirements.txt) -------------------------------
+# ---- the peer: EAIK (.ci/nodeps-requirements.txt) ----------------------------------
 
 REQUIRED = os.environ.get("SCREWKIT_REFERENCES") == "required"
 
@@ -303,7 +303,7 @@ def eaik_hp():
     if REQUIRED:
         return importlib.import_module("eaik.IK_HP").HPRobot
     module = pytest.importorskip(
-        "eaik.IK_HP", reason="EAIK is not installed: tests/reference-requirements.txt"
+        "eaik.IK_HP", reason="EAIK is not installed: .ci/nodeps-requirements.txt"
     )
     return module.HPRobot
 
