@@ -43,7 +43,9 @@ def _has_msolve():
 
 
 if os.environ.get("SCREWKIT_PROOF") == "required" and not _has_msolve():
-    raise RuntimeError("SCREWKIT_PROOF=required but msolve is missing (.ci/nodeps-requirements.txt)")
+    raise RuntimeError(
+        "SCREWKIT_PROOF=required but msolve is missing (.ci/nodeps-requirements.txt)"
+    )
 
 needs_msolve = pytest.mark.skipif(
     not _has_msolve(), reason="msolve missing: pip install screwkit[proof]"
