@@ -411,11 +411,6 @@ def _joint_paths(paths, labels, n):
                 f"{name} must have shape (K, {n}) with K >= 2 samples, "
                 f"got shape {Q.shape}"
             )
-        if not np.all(np.isfinite(Q)):
-            raise ValueError(
-                f"{name} must be finite (a pose the IK did not reach is NaN), "
-                f"got NaN or inf in rows {np.flatnonzero(~np.isfinite(Q).all(1))}"
-            )
         if arrays and Q.shape[0] != arrays[0].shape[0]:
             raise ValueError(
                 f"{name} must have as many samples as paths[0], "
@@ -759,7 +754,14 @@ def show_platform(
             f"({', '.join(n for n, _, _ in names)}), got shape {start.shape}"
         )
     specs = []
-    for (label, unit, half), centre, value in zip(names, at_home, start):
+    for k, ((label, unit, half), centre, value) in enumerate(
+        zip(names, at_home, start)
+    ):
+        if not centre - half <= value <= centre + half:
+            raise ValueError(
+                f"pose[{k}] ({label}) must lie within +-{half:g} {unit} of the home "
+                f"pose's {centre:g} {unit} (the slider's range), got {value:g} {unit}"
+            )
         if unit == "m":
             steps, scale = _sliders.LENGTH_STEPS, 1.0
         else:
