@@ -571,9 +571,13 @@ def test_the_readout_gives_the_tools_orientation(page):
     for q4 in (0, 35, -70):
         root.locator("input[type=range]").nth(3).fill(str(q4))
         degrees[3] = q4
-        rpy = np.degrees(sk.orientation.rpy_from_rotation(puma.fk(np.radians(degrees))[:3, :3]))
+        rpy = np.degrees(
+            sk.orientation.rpy_from_rotation(puma.fk(np.radians(degrees))[:3, :3])
+        )
         text = caption.inner_text()
-        assert f"Roll, pitch, yaw ({rpy[0]:.1f}, {rpy[1]:.1f}, {rpy[2]:.1f}) deg." in text
+        assert (
+            f"Roll, pitch, yaw ({rpy[0]:.1f}, {rpy[1]:.1f}, {rpy[2]:.1f}) deg." in text
+        )
         texts.append(text)
     assert len(set(texts)) == 3
 
@@ -661,7 +665,10 @@ def test_play_moves_the_arms_and_stops_at_the_end(page):
         ".toDataURL()"
     )
     before, text = page.evaluate(snapshot), caption.inner_text()
-    assert button.inner_text().endswith("Play") and root.get_attribute("data-time") == "0.000"
+    assert (
+        button.inner_text().endswith("Play")
+        and root.get_attribute("data-time") == "0.000"
+    )
     button.click()
     assert button.get_attribute("aria-pressed") == "true"
     assert caption.get_attribute("aria-live") == "off"  # no announcement per frame

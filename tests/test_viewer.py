@@ -659,7 +659,9 @@ def test_joints_are_coloured_as_in_the_mobility_figures():
 
     from screwkit._mechanism_plot import JOINT_STYLES
 
-    scene = (pathlib.Path(viewer.__file__).parent / "static/viewer/scene.js").read_text()
+    scene = (
+        pathlib.Path(viewer.__file__).parent / "static/viewer/scene.js"
+    ).read_text()
     for kind, (colour, _, _) in JOINT_STYLES.items():
         found = re.search(rf"\b{kind}: 0x([0-9a-f]{{6}})", scene).group(1)
         assert "#" + found == to_hex(colour), kind

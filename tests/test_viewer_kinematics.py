@@ -214,7 +214,9 @@ def test_a_trajectory_between_samples_is_the_linear_interpolation():
     page = run_page(
         [["sampleAt", [times.tolist(), Q.tolist(), float(t)]] for t in queries]
     )
-    expected = np.array([[np.interp(t, times, Q[:, j]) for j in range(3)] for t in queries])
+    expected = np.array(
+        [[np.interp(t, times, Q[:, j]) for j in range(3)] for t in queries]
+    )
     np.testing.assert_allclose(page, expected, rtol=0, atol=1e-14)
 
 
