@@ -690,3 +690,48 @@ def test_play_moves_the_arms_and_stops_at_the_end(page):
     page.wait_for_timeout(200)
     assert root.get_attribute("data-time") == paused and float(paused) < 1
     assert page.errors == []
+
+
+def test_the_site_checks_rule_presses_play_and_sees_the_arm_move(page, tmp_path):
+    # A small built "book": a page whose viewer plays, one whose page stops every
+    # animation frame (so play cannot move it), and a chapter whose code calls
+    # trajectory_viewer but whose page shows none. The rule passes the first and
+    # names the other two.
+    import json
+
+    import site_check
+
+    puma, paths, times = puma_paths(samples=11, duration=1.0)
+    figure = viewer.trajectory_viewer(puma, paths, times=times)
+    frozen = "<script>window.requestAnimationFrame = () => 0;</script>"
+    (tmp_path / "notebooks").mkdir()
+    (tmp_path / "notebooks" / "plays.html").write_text(figure.page())
+    (tmp_path / "notebooks" / "frozen.html").write_text(
+        figure.page().replace("<body>", "<body>" + frozen, 1)
+    )
+    (tmp_path / "notebooks" / "none.html").write_text("<html><body>text</body></html>")
+    sources = tmp_path / "_sources" / "notebooks"
+    sources.mkdir(parents=True)
+    cell = {"cell_type": "code", "source": ["sk.viewer.trajectory_viewer(puma, Q)"]}
+    (sources / "none.ipynb").write_text(json.dumps({"cells": [cell]}))
+    server = site_check.serve(str(tmp_path))
+    try:
+        site = site_check.Site(
+            root=str(tmp_path),
+            origin=f"http://127.0.0.1:{server.server_address[1]}/",
+            pages=[
+                "notebooks/plays.html",
+                "notebooks/frozen.html",
+                "notebooks/none.html",
+            ],
+            tmp=str(tmp_path),
+        )
+        problems = site_check.trajectories_play_in(page.context.browser, site)
+    finally:
+        server.shutdown()
+    assert problems == [
+        f"notebooks/frozen.html: play on {figure.id} did not move it: its time went "
+        "from 0 s to 0 s in 10 s",
+        "notebooks/none.html: its code calls trajectory_viewer but the page has no "
+        "player (a viewer with a play button)",
+    ]
