@@ -521,7 +521,8 @@
     });
     var size = (this.size = stage.size = bounds(model.base.concat(top)).size / 2);
     this.floorZ = floorUnder(stage, model.base.concat(top), 2 * size);
-    plate(stage, model.base, COLOURS.base, 0.9);
+    // seen from above, a planar base is a light plate under its legs and platform
+    plate(stage, model.base, COLOURS.base, model.planar ? 0.3 : 0.9);
     var THREE = stage.THREE;
     this.group = new THREE.Group();
     this.group.matrixAutoUpdate = false;
