@@ -98,6 +98,7 @@
   // Play and pause a trajectory: its time slider advances in real time and stops at
   // the end (play there starts again). The root's data-time is the time drawn; while
   // playing, data-playing is set and the caption is not read aloud at every frame.
+  // The button says what it does next (Play, Pause), so it carries no aria-pressed.
   function addPlayer(root, controls, viewer, caption) {
     var slider = viewer.sliders[0],
       spec = slider.spec,
@@ -106,7 +107,7 @@
       clock = spec.value;
     var button = el(
       "button",
-      { type: "button", class: "screwkit-play", "aria-pressed": "false" },
+      { type: "button", class: "screwkit-play" },
       null
     );
     controls.insertBefore(button, controls.firstChild);
@@ -120,8 +121,11 @@
       root.setAttribute("data-time", t.toFixed(3));
     }
     function label() {
-      button.textContent = playing ? "\u275a\u275a Pause" : "\u25b6 Play";
-      button.setAttribute("aria-pressed", playing ? "true" : "false");
+      button.textContent = "";
+      el("span", { "aria-hidden": "true" }, button).textContent = playing
+        ? "\u275a\u275a "
+        : "\u25b6 ";
+      button.appendChild(document.createTextNode(playing ? "Pause" : "Play"));
       caption.setAttribute("aria-live", playing ? "off" : "polite");
       if (playing) root.setAttribute("data-playing", "1");
       else root.removeAttribute("data-playing");
