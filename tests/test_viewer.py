@@ -784,3 +784,20 @@ def test_trajectory_takes_a_dict_or_follow_path_results_and_unwraps_turns():
 def test_a_bad_trajectory_is_refused_with_the_reason(call, error, message):
     with pytest.raises(error, match=message):
         call()
+
+
+def test_the_time_slider_obeys_the_slider_rules_but_starts_at_its_first_time():
+    # tests/slider_rules.py: a player's time may start at the low end of its range
+    # (only there: a time slider is not a joint kept off its limits), every other rule
+    # holds.
+    from slider_rules import problems
+
+    model = model_of(viewer.trajectory_viewer(sk.robots.puma560(), np.zeros((4, 6))))
+    time = model["slider"]
+    assert problems(time, starts_at_an_end=True) == []
+    assert problems(time) == [
+        "t [0.0, 2.0] step 0.01 at 0.0: default not strictly inside the range"
+    ]
+    assert problems({**time, "value": 2.0}, starts_at_an_end=True) == [
+        "t [0.0, 2.0] step 0.01 at 2.0: default not strictly inside the range"
+    ]
