@@ -20,6 +20,9 @@ unresolvable). Fails unless:
     (goal: under 50 ms);
   - no page holds a widget placeholder (a widget view with no fallback: blank in the
     book);
+  - every trajectory viewer (screwkit.viewer.trajectory_viewer) plays: a click on its
+    play button moves the arms (its time, readout and drawing change), and every
+    chapter whose code calls it shows one;
   - every chapter says what the student will learn ("What you will learn") and ends with
     a "Summary";
   - no link (a launch button above all) points to a placeholder host such as
@@ -507,6 +510,87 @@ def figures_respond(page, page_name):
     return problems, times, figures
 
 
+# ---- Rule on the trajectory viewers (screwkit.viewer.trajectory_viewer): play moves
+# the arms.
+
+TRAJECTORY_STATE = script("trajectory_state")
+PLAYED_S = 0.3  # the animation time play must reach, from where it started (s)
+
+
+def trajectories_play(site):
+    """On every page with a trajectory viewer, and every chapter whose code calls
+    ``trajectory_viewer(``: each viewer has a play button, and a click on it moves the
+    arms: its time (the root's data-time) advances by PLAYED_S, its readout and its
+    drawing change, and a second click pauses it. Prints what each viewer played."""
+    with harness.launch() as chromium:
+        return trajectories_play_in(chromium, site)
+
+
+def trajectories_play_in(chromium, site):
+    """trajectories_play in a running browser (Playwright's): the problems."""
+    problems = []
+    for name in site.pages:
+        with open(os.path.join(site.root, name), encoding="utf-8") as f:
+            built = '"kind":"trajectory"' in f.read()
+        code = chapter_code(site, built_page(name, "")) or []
+        called = any("trajectory_viewer(" in cell for cell in code)
+        if not (built or called):
+            continue
+        page = chromium.new_page()
+        errors = harness.collect_errors(
+            page, ignore=lambda url: url.endswith("/favicon.ico")
+        )
+        page.goto(site.origin + name, wait_until="load")
+        players = page.eval_on_selector_all(
+            "div.screwkit-viewer:has(button.screwkit-play)", "d => d.map(e => e.id)"
+        )
+        if called and not players:
+            problems.append(
+                f"{name}: its code calls trajectory_viewer but the page has no "
+                "player (a viewer with a play button)"
+            )
+        for figure in players:
+            problems += trajectory_plays(page, name, figure)
+        problems += [f"{name}: JavaScript error: {e}" for e in errors]
+        page.close()
+    return problems
+
+
+def trajectory_plays(page, page_name, figure):
+    """A click on the viewer's play button moves its arms; another pauses them."""
+    button = page.locator(f"[id='{figure}'] button.screwkit-play")
+    button.scroll_into_view_if_needed()
+    start, _, caption, drawing = page.evaluate(TRAJECTORY_STATE, figure)
+    button.click()
+    from playwright.sync_api import TimeoutError as Timeout
+
+    try:
+        page.wait_for_function(
+            f"() => +document.getElementById('{figure}').dataset.time >= "
+            f"{start + PLAYED_S}",
+            timeout=10000,
+        )
+    except Timeout:  # the time did not advance
+        time, *_ = page.evaluate(TRAJECTORY_STATE, figure)
+        return [
+            f"{page_name}: play on {figure} did not move it: its time went from "
+            f"{start:g} s to {time:g} s in 10 s"
+        ]
+    button.click()
+    time, playing, text, pixels = page.evaluate(TRAJECTORY_STATE, figure)
+    problems = [
+        f"{page_name}: play on {figure} {what}"
+        for what, wrong in (
+            ("left its readout as it was", text == caption),
+            ("left its drawing as it was", pixels == drawing),
+            ("did not pause on a second click", playing),
+        )
+        if wrong
+    ]
+    print(f"{page_name}: {figure} played from {start:g} s to {time:g} s")
+    return problems
+
+
 # ---- Rules on the book as a reader sees it: navigation, weight, accessibility and
 # layout, at the widths of a phone (390 px), a tablet (800 px) and a laptop (1280 px),
 # on every page.
@@ -849,6 +933,7 @@ RULES = [
     Rule("page", mechanisms_are_drawn),
     Rule("book", first_chapter_screenshot),
     Rule("book", interactive_figures_respond),
+    Rule("book", trajectories_play),
     Rule("book", reader_sees_a_working_book),
     Rule("book", server_had_every_file),
     Rule("book", book_within_its_limit),

@@ -248,15 +248,14 @@ class PlanarStandIn:
         return sk.transl(0.5, 0.35, 0.0)
 
 
-def expected_legs(pm, offsets):
-    """|p + R b_i - a_i| with p = p_home + d, R = Rz(yaw) Ry(pitch) Rx(roll) R_home."""
-    H = pm.home()
+def expected_legs(pm, pose):
+    """|p + R b_i - a_i| with the sliders' absolute pose: p = (x, y, z), R = Rz(yaw)
+    Ry(pitch) Rx(roll); planar p = (x, y, z_home), R = Rz(phi)."""
     if pm.planar:
-        d, R = np.array([offsets[0], offsets[1], 0.0]), sk.rotz(offsets[2])
+        p, R = np.array([pose[0], pose[1], pm.home()[2, 3]]), sk.rotz(pose[2])
     else:
-        d = np.asarray(offsets[:3])
-        R = sk.rotz(offsets[5]) @ sk.roty(offsets[4]) @ sk.rotx(offsets[3])
-    p, R = H[:3, 3] + d, R @ H[:3, :3]
+        p = np.asarray(pose[:3])
+        R = sk.rotz(pose[5]) @ sk.roty(pose[4]) @ sk.rotx(pose[3])
     return np.linalg.norm(p + pm.platform_points @ R.T - pm.base_points, axis=1)
 
 
@@ -265,7 +264,8 @@ def test_page_leg_lengths_equal_the_formula(page, pm):
     figure_id = show(page, viewer.show_platform(pm))
     rng = np.random.default_rng(5)
     n = 3 if pm.planar else 6
-    offsets = rng.uniform(-0.15, 0.15, size=(100, n))
+    home = [s["value"] * s["scale"] for s in viewer.show_platform(pm).model["sliders"]]
+    offsets = home + rng.uniform(-0.15, 0.15, size=(100, n))
     lengths = page.evaluate(
         """([id, V]) => {
             const f = window.screwkit.viewers[id].figure;
@@ -283,7 +283,8 @@ def test_a_leg_outside_its_limits_is_marked_and_announced(page):
     root = page.locator(f"[id='{figure_id}']")
     z = root.locator("input[type=range]").nth(2)
     z.fill(z.get_attribute("max"))  # the platform lifted to the top of its slider
-    legs = expected_legs(pm, [0, 0, float(z.get_attribute("max")), 0, 0, 0])
+    yaw = np.radians(float(root.locator("input[type=range]").nth(5).input_value()))
+    legs = expected_legs(pm, [0, 0, float(z.get_attribute("max")), 0, 0, yaw])
     outside = [i + 1 for i, x in enumerate(legs) if not 0.5 <= x <= 0.75]
     assert outside  # the slider's top reaches past the 0.75 m limit (checked here)
     caption = root.locator(".screwkit-caption")
@@ -553,3 +554,184 @@ def test_the_canvas_uses_the_device_pixel_ratio(page):
         }}"""
         )
         assert pixels == round(2 * css) and css <= 390
+
+
+def test_the_readout_gives_the_tools_orientation(page):
+    # Moving a wrist joint changes the numbers: the readout's roll, pitch, yaw are
+    # those of chain.fk at the sliders (screwkit.orientation.rpy_from_rotation), to the
+    # 0.1 deg printed.
+    puma = sk.robots.puma560()
+    figure_id = show(page, viewer.robot_viewer(puma))
+    root = page.locator(f"[id='{figure_id}']")
+    caption = root.locator(".screwkit-caption")
+    degrees = [20, -40, 30, 0, 50, 0]
+    for k, value in enumerate(degrees):
+        root.locator("input[type=range]").nth(k).fill(str(value))
+    texts = []
+    for q4 in (0, 35, -70):
+        root.locator("input[type=range]").nth(3).fill(str(q4))
+        degrees[3] = q4
+        rpy = np.degrees(
+            sk.orientation.rpy_from_rotation(puma.fk(np.radians(degrees))[:3, :3])
+        )
+        text = caption.inner_text()
+        assert (
+            f"Roll, pitch, yaw ({rpy[0]:.1f}, {rpy[1]:.1f}, {rpy[2]:.1f}) deg." in text
+        )
+        texts.append(text)
+    assert len(set(texts)) == 3
+
+
+def test_a_planar_platform_is_seen_from_above(page):
+    # The camera looks down the z axis (to the orbit's limit of 86 deg), x to the
+    # right and y up on the screen: the base's x axis projects rightwards, its y axis
+    # upwards.
+    figure_id = show(page, viewer.show_platform(PlanarStandIn()))
+    ends, looking = page.evaluate(
+        """id => {
+        const S = window.screwkit.viewers[id].stage;
+        return [[[0, 0, 0], [0.1, 0, 0], [0, 0.1, 0]].map(p => {
+            const n = new S.THREE.Vector3(p[0], p[1], p[2]).project(S.camera);
+            return [n.x * S.width / 2, n.y * S.height / 2];
+        }), S.camera.getWorldDirection(new S.THREE.Vector3()).toArray()];
+    }""",
+        figure_id,
+    )
+    assert looking[2] < -np.cos(np.radians(5))  # down, within 5 deg of -z
+    o, x, y = np.asarray(ends)  # px from the centre, y up
+    # (within 3 deg: the perspective and the 4 deg left by the orbit's limit)
+    assert (x - o)[0] > 0 and abs((x - o)[1]) < 0.05 * (x - o)[0]
+    assert (y - o)[1] > 0 and abs((y - o)[0]) < 0.05 * (y - o)[1]
+
+
+# ---- trajectories: joint paths computed in Python, played in the page ----
+
+
+def puma_paths(samples=31, duration=3.0):
+    """The motion chapter's two paths of the PUMA (screw motion, straight line +
+    slerp) between two poses, timed by a quintic and solved by the closed-form IK."""
+    puma = sk.robots.puma560()
+    q_start = np.radians([0, -30, 20, 0, 40, 0])
+    T0, T1 = puma.fk(q_start), puma.fk(np.radians([90, -10, -10, 60, 60, 30]))
+    timing = sk.trajectory.quintic(duration)
+    times = timing.times(samples)
+    s = timing(times)
+    paths = {
+        "screw motion": sk.trajectory.follow_path(
+            puma, sk.trajectory.screw_path(T0, T1, s), q_start=q_start
+        ),
+        "straight line": sk.trajectory.follow_path(
+            puma, sk.trajectory.cartesian_path(T0, T1, s), q_start=q_start
+        ),
+    }
+    return puma, paths, times
+
+
+def test_the_drawn_arms_are_the_paths_poses_at_the_sliders_time(page):
+    # Scrubbing the time slider as a reader does: at a sample time each arm's gripper
+    # is chain.fk of its path's sample; between two samples, of the joint values
+    # interpolated linearly (np.interp), to 1e-9.
+    puma, paths, times = puma_paths()
+    figure = viewer.trajectory_viewer(puma, paths, times=times)
+    figure_id = show(page, figure)
+    root = page.locator(f"[id='{figure_id}']")
+    Q = [np.array(p["q"]) for p in figure.model["paths"]]
+    for t in (times[10], 1.23, times[-1]):
+        root.locator("input[type=range]").fill(f"{t:.2f}")
+        t = round(t, 2)
+        grippers = page.evaluate(
+            """id => window.screwkit.viewers[id].figure.arms.map(a => {
+                const g = a.gripper.group;
+                g.updateMatrixWorld(true);
+                return g.matrixWorld.clone().transpose().toArray();
+            })""",
+            figure_id,
+        )
+        for q, drawn in zip(Q, grippers):
+            expected = puma.fk([np.interp(t, times, q[:, j]) for j in range(6)])
+            np.testing.assert_allclose(np.reshape(drawn, (4, 4)), expected, atol=1e-9)
+        assert root.get_attribute("data-time") == f"{t:.3f}"
+    assert page.errors == []
+
+
+def test_play_moves_the_arms_and_stops_at_the_end(page):
+    puma, paths, times = puma_paths(duration=1.0)
+    figure_id = show(page, viewer.trajectory_viewer(puma, paths, times=times))
+    root = page.locator(f"[id='{figure_id}']")
+    button = root.locator("button.screwkit-play")
+    caption = root.locator(".screwkit-caption")
+    snapshot = (
+        f"() => document.getElementById('{figure_id}').querySelector('canvas')"
+        ".toDataURL()"
+    )
+    before, text = page.evaluate(snapshot), caption.inner_text()
+    assert (
+        button.inner_text().endswith("Play")
+        and root.get_attribute("data-time") == "0.000"
+    )
+    button.click()
+    assert button.inner_text().endswith("Pause")
+    assert caption.get_attribute("aria-live") == "off"  # no announcement per frame
+    page.wait_for_function(
+        f"() => !document.getElementById('{figure_id}').dataset.playing", timeout=10000
+    )
+    assert root.get_attribute("data-time") == "1.000"
+    assert page.evaluate(snapshot) != before and caption.inner_text() != text
+    assert caption.inner_text().startswith("t = 1.00 s. screw motion: tool at")
+    assert button.inner_text().endswith("Play")
+    assert caption.get_attribute("aria-live") == "polite"
+    button.click()  # at the end, play starts again from the first time
+    page.wait_for_function(
+        f"() => +document.getElementById('{figure_id}').dataset.time < 0.9",
+        timeout=5000,
+    )
+    button.click()  # pause
+    paused = root.get_attribute("data-time")
+    page.wait_for_timeout(200)
+    assert root.get_attribute("data-time") == paused and float(paused) < 1
+    assert page.errors == []
+
+
+def test_the_site_checks_rule_presses_play_and_sees_the_arm_move(page, tmp_path):
+    # A small built "book": a page whose viewer plays, one whose page stops every
+    # animation frame (so play cannot move it), and a chapter whose code calls
+    # trajectory_viewer but whose page shows none. The rule passes the first and
+    # names the other two.
+    import json
+
+    import site_check
+
+    puma, paths, times = puma_paths(samples=11, duration=1.0)
+    figure = viewer.trajectory_viewer(puma, paths, times=times)
+    frozen = "<script>window.requestAnimationFrame = () => 0;</script>"
+    (tmp_path / "notebooks").mkdir()
+    (tmp_path / "notebooks" / "plays.html").write_text(figure.page())
+    (tmp_path / "notebooks" / "frozen.html").write_text(
+        figure.page().replace("<body>", "<body>" + frozen, 1)
+    )
+    (tmp_path / "notebooks" / "none.html").write_text("<html><body>text</body></html>")
+    sources = tmp_path / "_sources" / "notebooks"
+    sources.mkdir(parents=True)
+    cell = {"cell_type": "code", "source": ["sk.viewer.trajectory_viewer(puma, Q)"]}
+    (sources / "none.ipynb").write_text(json.dumps({"cells": [cell]}))
+    server = site_check.serve(str(tmp_path))
+    try:
+        site = site_check.Site(
+            root=str(tmp_path),
+            origin=f"http://127.0.0.1:{server.server_address[1]}/",
+            pages=[
+                "notebooks/plays.html",
+                "notebooks/frozen.html",
+                "notebooks/none.html",
+            ],
+            tmp=str(tmp_path),
+        )
+        problems = site_check.trajectories_play_in(page.context.browser, site)
+    finally:
+        server.shutdown()
+    assert problems == [
+        f"notebooks/frozen.html: play on {figure.id} did not move it: its time went "
+        "from 0 s to 0 s in 10 s",
+        "notebooks/none.html: its code calls trajectory_viewer but the page has no "
+        "player (a viewer with a play button)",
+    ]

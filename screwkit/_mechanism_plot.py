@@ -21,7 +21,9 @@ from .transforms import _cross, _is_infinite_pitch
 
 __all__ = ["draw_mechanism"]
 
-#: How each joint kind is drawn: colour, marker, axis line style.
+#: How each joint kind is drawn: colour, marker, axis line style. The 3D viewers
+#: colour joints the same way (``static/viewer/scene.js``, ``COLOURS``; checked by
+#: tests/test_viewer.py).
 JOINT_STYLES = {
     "revolute": ("tab:blue", "o", "-."),
     "prismatic": ("tab:orange", "s", "-"),

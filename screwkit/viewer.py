@@ -38,11 +38,13 @@ from ._checks import (
     check_transform,
     describe,
 )
+from .links import Joint
 from .tolerances import LENGTH_TOL, PARALLEL_TOL, ZERO_TOL, length_scale
 from .transforms import _is_infinite_pitch, _pitch
 
 __all__ = [
     "robot_viewer",
+    "trajectory_viewer",
     "screw_motion_viewer",
     "show_platform",
     "show_mechanism",
@@ -66,7 +68,7 @@ VIEWER_PARTS = (
     "style.js",  # the viewers' stylesheet and a DOM element helper
     "scene.js",  # the three.js stage: renderer, camera, meshes, framing, labels
     "controls.js",  # the stage's pointer, wheel, keyboard and resize handlers
-    "figures.js",  # robot, screw motion, platform and mechanism drawn on a stage
+    "figures.js",  # robot, trajectory, screw motion, platform, mechanism on a stage
     "page.js",  # sliders, readouts, aria-live captions, mounting, window.screwkit
 )
 
@@ -322,6 +324,10 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     frame carries a two-finger gripper along its approach axis (the tool axis nearest
     the offset from the last joint's axis point to the tool, +z when there is none), so
     that the wrist's turn shows; a pose that reaches out of the view widens the view.
+    The line under the drawing gives the tool's position (m) and its orientation as
+    roll, pitch, yaw (deg, R = Rz(yaw) Ry(pitch) Rx(roll), as
+    :func:`screwkit.orientation.rpy_from_rotation`). Joints are coloured as in the
+    mobility figures: revolute blue, prismatic orange, helical purple.
     """
     _check_chain(chain)
     specs = _sliders.slider_specs(chain, q)
@@ -332,27 +338,13 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
             f"got {ellipsoid_scale!r}"
         )
     width, height = _check_size(size)
-    zero = np.zeros(chain.n)
-    axes, points = chain.joint_axes(zero)
-    home = chain.home()
-    reach = np.vstack([[0.0, 0.0, 0.0], points, home[:3, 3]])
-    radius = float(np.sum(np.linalg.norm(np.diff(reach, axis=0), axis=1)))
     travel = sum(abs(s.high) + abs(s.low) for s in specs if s.unit == "m")
-    radius = max(radius + travel, 0.1)
     model = {
         "kind": "robot",
-        "name": chain.name,
         "width": width,
         "height": height,
-        "screws": _numbers(chain.screw_axes()),
-        "home": _numbers(home),
-        "points": _numbers(points),
-        "axes": _numbers(axes),
-        "joints": [joint.value for joint in chain.joints],
-        "approach": _approach(home, points[-1]),
+        **_chain_model(chain, travel),
         "sliders": [s.as_dict() for s in specs],
-        "radius": radius,
-        "centre": [0.0, 0.0, 0.0],
         "ellipsoid": bool(ellipsoid),
         "ellipsoid_scale": float(scale),
         "label": _chain_label(chain, ellipsoid),
@@ -363,6 +355,167 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     )
     extra = " with its manipulability ellipsoid" if ellipsoid else ""
     return Viewer(model, f"{chain.name}{extra}: sliders {sliders}")
+
+
+def _chain_model(chain, travel=0.0):
+    """What the page needs to pose the chain: its joint screws and home pose (product
+    of exponentials), each joint's axis and point at q = 0, the joints' kinds, the
+    gripper's approach axis, and a radius (m) the arm reaches within (its links' lengths
+    and ``travel``, the prismatic joints' strokes)."""
+    axes, points = chain.joint_axes(np.zeros(chain.n))
+    home = chain.home()
+    reach = np.vstack([[0.0, 0.0, 0.0], points, home[:3, 3]])
+    radius = float(np.sum(np.linalg.norm(np.diff(reach, axis=0), axis=1)))
+    return {
+        "name": chain.name,
+        "screws": _numbers(chain.screw_axes()),
+        "home": _numbers(home),
+        "points": _numbers(points),
+        "axes": _numbers(axes),
+        "joints": [joint.value for joint in chain.joints],
+        "approach": _approach(home, points[-1]),
+        "radius": max(radius + travel, 0.1),
+        "centre": [0.0, 0.0, 0.0],
+    }
+
+
+#: The time slider's candidate steps (s), coarsest first (see :func:`trajectory_viewer`)
+TIME_STEPS = (0.01, 0.005, 0.001)
+
+
+def _joint_paths(paths, labels, n):
+    """The trajectories as (labels, arrays (K, n)), checked, with the reason when
+    wrong."""
+    if isinstance(paths, dict):
+        if labels is not None:
+            raise ValueError(
+                "labels must be None when paths is a dict (its keys are the labels), "
+                f"got {labels!r}"
+            )
+        labels, paths = list(paths), list(paths.values())
+    elif isinstance(paths, np.ndarray) or hasattr(paths, "q"):
+        paths = [paths]
+    elif not isinstance(paths, (list, tuple)):
+        raise TypeError(
+            "paths must be an array (K, n) of joint values, a list of them or a dict "
+            f"{{label: array}}, got {describe(paths)}"
+        )
+    if not 1 <= len(paths) <= 4:
+        raise ValueError(f"paths must hold 1 to 4 trajectories, got {len(paths)}")
+    arrays = []
+    for k, path in enumerate(paths):
+        name = f"paths[{k}]"
+        Q = as_float_array(getattr(path, "q", path), name)
+        if Q.ndim != 2 or Q.shape[1] != n or Q.shape[0] < 2:
+            raise ValueError(
+                f"{name} must have shape (K, {n}) with K >= 2 samples, "
+                f"got shape {Q.shape}"
+            )
+        if arrays and Q.shape[0] != arrays[0].shape[0]:
+            raise ValueError(
+                f"{name} must have as many samples as paths[0], "
+                f"{arrays[0].shape[0]}, got {Q.shape[0]}"
+            )
+        arrays.append(Q)
+    if labels is None:
+        labels = [f"path {k + 1}" for k in range(len(arrays))]
+    labels = [labels] if isinstance(labels, str) else list(labels)
+    if len(labels) != len(arrays) or not all(isinstance(x, str) for x in labels):
+        raise ValueError(
+            f"labels must be {len(arrays)} names (str), one per path, got {labels!r}"
+        )
+    return labels, arrays
+
+
+def trajectory_viewer(chain, paths, labels=None, times=None, size=(560, 460)):
+    """Precomputed joint trajectories of one chain, played in the page: no kernel.
+
+    Python computes the trajectories (a path of poses from :mod:`screwkit.trajectory`
+    through :func:`screwkit.trajectory.follow_path`, or joint paths); the page poses
+    one arm per trajectory by the product of exponentials, the first solid, the
+    others translucent ghosts, each in its own colour (red, green, brown, pink), and
+    draws each tool's path as a line in that colour, named at its middle. A play button
+    runs the motion in real time; the time slider scrubs it; the line under the drawing
+    gives the time and each tool's position. Between samples the page interpolates the
+    joint values linearly.
+
+    Parameters
+    ----------
+    chain : Chain, n >= 1 joints
+    paths : array-like (K, n), or a list of up to 4 of them, or a dict {label: array};
+        joint values (rad, m) at the K sample times; a
+        :class:`screwkit.trajectory.PathIK` (its ``q``) in place of an array
+    labels : list of str, optional
+        Each path's name (default 'path 1', ...; a dict's keys)
+    times : array-like, shape (K,), optional
+        Increasing sample times (s); default K samples over 2 s
+    size : (width, height) of the drawing in pixels
+
+    Returns
+    -------
+    Viewer, displayed as HTML: the arms, a play/pause button and a time slider from the
+    first to the last time (s, on a grid of 0.01, 0.005 or 0.001 s that holds both).
+    Revolute joints' paths are sent unwrapped (no jump of a whole turn between two
+    samples, the same poses), so that the interpolation never spins a joint round.
+    """
+    _check_chain(chain)
+    labels, arrays = _joint_paths(paths, labels, chain.n)
+    K = arrays[0].shape[0]
+    if times is None:
+        times = np.linspace(0.0, 2.0, K)
+    times = as_float_array(times, "times")
+    if times.shape != (K,) or not np.all(np.isfinite(times)):
+        raise ValueError(
+            f"times must be {K} finite sample times (s), one per sample, "
+            f"got shape {times.shape}"
+        )
+    if np.any(np.diff(times) <= 0):
+        raise ValueError(
+            f"times must increase, got a step of {np.diff(times).min():g} s"
+        )
+    turning = np.array([joint is not Joint.PRISMATIC for joint in chain.joints])
+    arrays = [np.where(turning, np.unwrap(Q, axis=0), Q) for Q in arrays]
+    step = next(
+        (
+            s
+            for s in TIME_STEPS
+            if _sliders.on_grid(times[0], s) and _sliders.on_grid(times[-1], s)
+        ),
+        TIME_STEPS[-1],
+    )
+    slider = _sliders.slider_spec(
+        "t", "s", times[0], times[-1], times[0], steps=(step,)
+    )
+    width, height = _check_size(size)
+    model = {
+        "kind": "trajectory",
+        "width": width,
+        "height": height,
+        **_chain_model(chain),
+        "paths": [
+            {"label": label, "q": _numbers(Q)} for label, Q in zip(labels, arrays)
+        ],
+        "times": _numbers(times),
+        "slider": slider.as_dict(),
+    }
+    colours = ("red", "green", "brown", "pink")
+    named = ", ".join(
+        f"{label} ({colours[k]}{', solid' if k == 0 else ', ghost'})"
+        for k, label in enumerate(labels)
+    )
+    model["label"] = (
+        f"{chain.name} following {len(labels)} precomputed trajectories over "
+        f"{times[-1] - times[0]:g} s, drawn in 3D: one arm per trajectory with its "
+        f"tool's path as a line, {named}. The play button below runs the motion, the "
+        f"time slider sets the time; the text below gives each tool's position. Drag "
+        f"or use the arrow keys to turn the view, + and - to zoom."
+    )
+    return Viewer(
+        model,
+        f"{chain.name}: {len(labels)} trajectories of {K} samples over "
+        f"{times[0]:g} to {times[-1]:g} s ({', '.join(labels)}); play button and time "
+        f"slider",
+    )
 
 
 def _approach(home, last_point):
@@ -392,7 +545,8 @@ def _chain_label(chain, ellipsoid):
     )
     return (
         f"{chain.name}: a serial robot arm of {chain.n} joints ({counts}), drawn in 3D "
-        "on a floor with numbered joints (cylinders revolute, boxes prismatic) and "
+        "on a floor with numbered joints (blue cylinders revolute, orange boxes "
+        "prismatic) and "
         "the tool frame with a two-finger gripper along its approach axis"
         f"{extra}. The sliders below set the joints; drag or use the arrow "
         f"keys to turn the view, + and - to zoom."
@@ -535,32 +689,37 @@ def _platform_parts(pm):
     return base, platform, home, limits
 
 
-def show_platform(pm, pose=None, translation=None, rotation=30.0, size=(560, 480)):
+def show_platform(
+    pm, pose=None, translation=None, rotation=30.0, yaw=120.0, size=(560, 480)
+):
     """A parallel manipulator's platform moved by sliders; leg lengths computed in the
     page.
 
     Parameters
     ----------
     pm : a parallel manipulator: ``base_points`` (m, 3) in m, base frame;
-        ``platform_points``
-        (m, 3) in m, platform frame; ``home()`` -> (4, 4) platform pose; ``leg_limits``
-        (m, 2) [low, high] in m, or None; ``name`` str; ``planar`` bool (platform moving
-        in the base's xy plane)
-    pose : array-like, optional, the first slider values: (x, y, z, roll, pitch, yaw) in
-        m
-        and deg (planar: (x, y, phi)), offsets from the home pose; default zeros
-    translation : float, optional, each translation slider's range +- (m); default a
-        third
-        of the base's size
-    rotation : float, each angle slider's range +- (deg)
+        ``platform_points`` (m, 3) in m, platform frame; ``home()`` -> (4, 4) platform
+        pose; ``leg_limits`` (m, 2) [low, high] in m, or None; ``name`` str; ``planar``
+        bool (platform moving in the base's xy plane)
+    pose : array-like, optional, the first slider values, the platform's pose itself
+        (not an offset): (x, y, z, roll, pitch, yaw) in m and deg (planar: (x, y,
+        phi)); default the home pose's
+    translation : float, optional, each position slider's range +- (m) about home;
+        default a third of the base's size
+    rotation : float, the roll and pitch sliders' range +- (deg) about home
+    yaw : float, the yaw (planar: phi) slider's range +- (deg) about home; the default
+        120 reaches a Gough-Stewart platform's singular turn of 90 deg about its axis
     size : (width, height) in pixels: the drawing's proportions (it fills its column)
 
     Returns
     -------
-    Viewer. The page poses the platform at T = Trans(p_home + d) Rz(yaw) Ry(pitch)
-    Rx(roll) R_home (planar: Rz(phi)), draws leg i from a_i to p + R b_i, prints every
-    length |p + R b_i - a_i| (m) and marks a leg outside its limits.
+    Viewer. The sliders are absolute: the page poses the platform at T = Trans(x, y, z)
+    Rz(yaw) Ry(pitch) Rx(roll) (planar: Trans(x, y, z_home) Rz(phi), seen from
+    above), draws leg i from a_i to p + R b_i, prints every length |p + R b_i - a_i|
+    (m) and marks a leg outside its limits.
     """
+    from .orientation import rpy_from_rotation
+
     base, platform, home, limits = _platform_parts(pm)
     planar = bool(pm.planar)
     width, height = _check_size(size)
@@ -568,41 +727,50 @@ def show_platform(pm, pose=None, translation=None, rotation=30.0, size=(560, 480
     if translation is None:
         translation = max(round(span / 3, 2), 0.01)
     reach = check_positive(translation, "translation")
-    turn = check_positive(rotation, "rotation")
-    if turn > 180:
-        raise ValueError(f"rotation must be at most 180 deg, got {rotation!r}")
-    names = (
-        [("x", "m"), ("y", "m"), ("phi", "deg")]
-        if planar
-        else [
-            ("x", "m"),
-            ("y", "m"),
-            ("z", "m"),
-            ("roll", "deg"),
-            ("pitch", "deg"),
-            ("yaw", "deg"),
+    tilt = check_positive(rotation, "rotation")
+    turn = check_positive(yaw, "yaw")
+    for value, name in ((tilt, "rotation"), (turn, "yaw")):
+        if value > 180:
+            raise ValueError(f"{name} must be at most 180 deg, got {value:g}")
+    angles = np.degrees(rpy_from_rotation(home[:3, :3]))
+    if planar:
+        names = [("x", "m", reach), ("y", "m", reach), ("phi", "deg", turn)]
+        at_home = [home[0, 3], home[1, 3], angles[2]]
+    else:
+        names = [
+            ("x", "m", reach),
+            ("y", "m", reach),
+            ("z", "m", reach),
+            ("roll", "deg", tilt),
+            ("pitch", "deg", tilt),
+            ("yaw", "deg", turn),
         ]
-    )
-    start = np.zeros(len(names)) if pose is None else as_float_array(pose, "pose")
+        at_home = [*home[:3, 3], *angles]
+    at_home = np.round(at_home, 9) + 0.0
+    start = at_home if pose is None else as_float_array(pose, "pose")
     if start.shape != (len(names),):
         raise ValueError(
             f"pose must have {len(names)} entries "
-            f"({', '.join(n for n, _ in names)}), got shape {start.shape}"
+            f"({', '.join(n for n, _, _ in names)}), got shape {start.shape}"
         )
     specs = []
-    for (label, unit), value in zip(names, start):
+    for k, ((label, unit, half), centre, value) in enumerate(
+        zip(names, at_home, start)
+    ):
+        if not centre - half <= value <= centre + half:
+            raise ValueError(
+                f"pose[{k}] ({label}) must lie within +-{half:g} {unit} of the home "
+                f"pose's {centre:g} {unit} (the slider's range), got {value:g} {unit}"
+            )
         if unit == "m":
-            specs.append(
-                _sliders.slider_spec(
-                    label, unit, -reach, reach, value, _sliders.LENGTH_STEPS
-                )
-            )
+            steps, scale = _sliders.LENGTH_STEPS, 1.0
         else:
-            specs.append(
-                _sliders.slider_spec(
-                    label, unit, -turn, turn, value, _sliders.ANGLE_STEPS, math.pi / 180
-                )
+            steps, scale = _sliders.ANGLE_STEPS, math.pi / 180
+        specs.append(
+            _sliders.slider_spec(
+                label, unit, centre - half, centre + half, value, steps, scale
             )
+        )
     name = str(pm.name)
     legs = base.shape[0]
     limits_text = (
@@ -621,8 +789,9 @@ def show_platform(pm, pose=None, translation=None, rotation=30.0, size=(560, 480
         "sliders": [s.as_dict() for s in specs],
         "label": (
             f"{name}: a {'planar ' if planar else ''}parallel manipulator whose "
-            f"platform is held by {legs} numbered legs from the base, drawn in 3D "
-            f"{limits_text}. The sliders below move the platform; the text below "
+            f"platform is held by {legs} numbered legs from the base, drawn in 3D"
+            f"{' from above' if planar else ''}{limits_text}. The sliders below set "
+            f"the platform's pose (position in m, angles in deg); the text below "
             f"gives each leg's length. Drag or use the arrow keys to turn the view, "
             f"+ and - to zoom."
         ),
@@ -680,8 +849,8 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     -------
     Viewer: the base (polygon through each limb's first joint), the platform (through
     the last joints), each limb through its joints (a parallelogram Pa as its closed
-    loop), and each joint's axis: cylinders revolute, boxes prismatic, green cylinders
-    helical.
+    loop), and each joint's axis, coloured as in the mobility figures: blue cylinders
+    revolute, orange boxes prismatic, purple cylinders helical.
     """
     from . import robots
     from ._mechanism_plot import evaluate, twist_arrows
@@ -751,9 +920,9 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     ]
     moves = f"; the platform's twists: {' and '.join(counts)}" if arrows else ""
     legend = {
-        "revolute": "orange cylinders revolute",
-        "prismatic": "purple boxes prismatic",
-        "helical": "green cylinders helical",
+        "revolute": "blue cylinders revolute",
+        "prismatic": "orange boxes prismatic",
+        "helical": "purple cylinders helical",
     }
     caption = (
         f"{title}: {len(joints)} limbs of {', '.join(str(len(j)) for j in joints)} "

@@ -10,8 +10,11 @@ def multiple(x, step):
     return abs(x / step - round(x / step)) < 1e-9 * max(1.0, abs(x / step))
 
 
-def problems(slider):
-    """What is wrong with one slider (dict with label, unit, min, max, step, value)."""
+def problems(slider, starts_at_an_end=False):
+    """What is wrong with one slider (dict with label, unit, min, max, step, value).
+
+    ``starts_at_an_end``: the slider is a player's time (a trajectory viewer's, which
+    starts at its first time), so its default may be the range's low end."""
     low, high, step, value = (slider[k] for k in ("min", "max", "step", "value"))
     name = f"{slider['label']} [{low}, {high}] step {step} at {value}"
     found = []
@@ -25,6 +28,6 @@ def problems(slider):
         )
     if not multiple(value - low, step):
         found.append(f"{name}: default not on the grid")
-    if not low < value < high:
+    if not (low < value < high or (starts_at_an_end and value == low < high)):
         found.append(f"{name}: default not strictly inside the range")
     return found

@@ -454,13 +454,14 @@ class Platform:
 
 
 def test_platform_payload_and_sliders():
-    model = model_of(viewer.show_platform(Platform(), pose=[0.1, 0, 0, 0, 0, 5]))
+    model = model_of(viewer.show_platform(Platform(), pose=[0.1, 0, 0.8, 0, 0, 5]))
     assert model["kind"] == "platform" and model["planar"] is False
     np.testing.assert_array_equal(model["base"], Platform.base_points)
     np.testing.assert_array_equal(model["platform"], Platform.platform_points)
     assert model["home"][2][3] == 0.8 and model["limits"] == [[0.5, 1.5]] * 3
-    # six offsets from home: translations +- a third of the base's size (1.6 m / 3,
-    # in cm)
+    # the pose itself (absolute): translations +- a third of the base's size (1.6 m / 3,
+    # to the cm inward) about home (0, 0, 0.8) m; roll and pitch +- 30 deg, yaw +- 120
+    # deg about home's 0
     assert [(s["label"], s["unit"]) for s in model["sliders"]] == [
         ("x", "m"),
         ("y", "m"),
@@ -469,9 +470,13 @@ def test_platform_payload_and_sliders():
         ("pitch", "deg"),
         ("yaw", "deg"),
     ]
-    assert [(s["min"], s["max"], s["value"]) for s in model["sliders"]][::5] == [
+    assert [(s["min"], s["max"], s["value"]) for s in model["sliders"]] == [
         (-0.53, 0.53, 0.1),
-        (-30.0, 30.0, 5.0),
+        (-0.53, 0.53, 0.0),
+        (0.27, 1.33, 0.8),
+        (-30.0, 30.0, 0.0),
+        (-30.0, 30.0, 0.0),
+        (-120.0, 120.0, 5.0),
     ]
     assert "3 numbered legs" in model["label"]
 
@@ -479,9 +484,25 @@ def test_platform_payload_and_sliders():
 def test_planar_platform_has_x_y_phi():
     planar = Platform()
     planar.planar, planar.leg_limits = True, None
-    model = model_of(viewer.show_platform(planar, translation=0.2, rotation=45))
+    model = model_of(viewer.show_platform(planar, translation=0.2, yaw=45))
     assert [s["label"] for s in model["sliders"]] == ["x", "y", "phi"]
     assert model["sliders"][2]["max"] == 45.0 and model["limits"] is None
+
+
+def test_platform_sliders_start_at_the_home_pose_itself():
+    # The 3-RPR's home is turned by 90 deg about z at (0.3, 0.85) m (its catalogue
+    # entry): the sliders read those values, and phi reaches +-120 deg about them.
+    model = model_of(viewer.show_platform(sk.robots.planar_3rpr()))
+    assert [(s["label"], s["value"]) for s in model["sliders"]] == [
+        ("x", 0.3),
+        ("y", 0.85),
+        ("phi", 90.0),
+    ]
+    assert (model["sliders"][2]["min"], model["sliders"][2]["max"]) == (-30.0, 210.0)
+    # the Stewart-Gough platform at 1 m; yaw reaches Fichter's singular 90 deg
+    model = model_of(viewer.show_platform(sk.robots.stewart_gough()))
+    z, yaw = model["sliders"][2], model["sliders"][5]
+    assert z["value"] == 1.0 and yaw["min"] <= -90 and yaw["max"] >= 90
 
 
 @pytest.mark.parametrize(
@@ -532,6 +553,14 @@ def test_platform_pose_of_the_wrong_length_is_refused():
         ValueError, match=r"pose must have 6 entries \(x, y, z, roll, pitch, yaw\)"
     ):
         viewer.show_platform(Platform(), pose=[0, 0, 0])
+    with pytest.raises(
+        ValueError,
+        match=r"pose\[2\] \(z\) must lie within \+-0.2 m of the home pose's 0.8 m "
+        r"\(the slider's range\), got 0 m",
+    ):
+        viewer.show_platform(Platform(), pose=[0] * 6, translation=0.2)
+    with pytest.raises(ValueError, match="yaw must be at most 180 deg, got 200"):
+        viewer.show_platform(Platform(), yaw=200)
 
 
 # ---- mechanisms: base, platform, limbs, parallelograms ----
@@ -617,3 +646,158 @@ def test_a_figure_as_a_whole_page_carries_everything_it_needs():
     assert page.startswith("<!DOCTYPE html>") and "<title>pm_6ups</title>" in page
     assert viewer.library_script() in page and viewer.viewer_script() in page
     assert 'name="viewport" content="width=device-width' in page
+
+
+# ---- joint colours: one scheme in the 3D viewers and the mobility figures ----
+
+
+def test_joints_are_coloured_as_in_the_mobility_figures():
+    # scene.js's COLOURS for each joint kind are the matplotlib colours of
+    # screwkit._mechanism_plot.JOINT_STYLES (revolute tab:blue, prismatic tab:orange,
+    # helical tab:purple), read from both files.
+    from matplotlib.colors import to_hex
+
+    from screwkit._mechanism_plot import JOINT_STYLES
+
+    scene = (
+        pathlib.Path(viewer.__file__).parent / "static/viewer/scene.js"
+    ).read_text()
+    for kind, (colour, _, _) in JOINT_STYLES.items():
+        found = re.search(rf"\b{kind}: 0x([0-9a-f]{{6}})", scene).group(1)
+        assert "#" + found == to_hex(colour), kind
+
+
+# ---- trajectories: precomputed joint paths played in the page ----
+
+
+def test_trajectory_payload_carries_the_chain_and_every_path():
+    puma = sk.robots.puma560()
+    Q = np.linspace(np.zeros(6), np.radians([90, -20, 30, 60, 45, 120]), 11)
+    figure = viewer.trajectory_viewer(
+        puma, [Q, Q[::-1]], labels=["out", "back"], times=np.linspace(0, 2.5, 11)
+    )
+    model = model_of(figure)
+    robot = model_of(viewer.robot_viewer(puma))
+    for key in ("screws", "home", "points", "axes", "joints", "approach"):
+        assert model[key] == robot[key], key  # the same chain as the robot viewer's
+    assert [p["label"] for p in model["paths"]] == ["out", "back"]
+    np.testing.assert_allclose(model["paths"][1]["q"], Q[::-1], atol=1e-11)  # 12 digits
+    assert model["times"][-1] == 2.5 and len(model["times"]) == 11
+    assert model["slider"] == {
+        "label": "t",
+        "unit": "s",
+        "min": 0.0,
+        "max": 2.5,
+        "step": 0.01,
+        "value": 0.0,
+        "scale": 1.0,
+    }
+    assert "out (red, solid), back (green, ghost)" in model["label"]
+
+
+def test_trajectory_takes_a_dict_or_follow_path_results_and_unwraps_turns():
+    # follow_path's result in place of its q; a revolute joint that crosses +-pi
+    # between two samples is sent unwrapped (the same pose, no spin in between);
+    # a prismatic joint is sent as it is.
+    arm = sk.robots.planar([0.3, 0.2])
+    q = np.array([[3.0, 0.1], [-3.0, 0.2], [-2.9, 0.3]])
+    path = sk.trajectory.PathIK(q, np.ones(3, bool), np.zeros(3, bool), np.ones(3), [])
+    model = model_of(viewer.trajectory_viewer(arm, {"wrapped": path}))
+    sent = np.array(model["paths"][0]["q"])
+    np.testing.assert_allclose(sent[:, 0], [3.0, 2 * np.pi - 3.0, 2 * np.pi - 2.9])
+    np.testing.assert_allclose(arm.fk(sent), arm.fk(q), atol=1e-12)
+    assert model["times"] == [0.0, 1.0, 2.0]  # default: the samples over 2 s
+    slide = sk.Chain.from_screws(
+        [[0, 0, 0, 1, 0, 0]], np.eye(4), qlim=[[-5.0, 5.0]], name="slide"
+    )
+    model = model_of(viewer.trajectory_viewer(slide, np.array([[3.0], [-3.0]])))
+    assert model["paths"][0]["q"] == [[3.0], [-3.0]]
+
+
+@pytest.mark.parametrize(
+    ("call", "error", "message"),
+    [
+        (
+            lambda: viewer.trajectory_viewer(sk.robots.puma560(), "q"),
+            TypeError,
+            r"paths must be an array \(K, n\) of joint values, a list of them or a "
+            r"dict \{label: array\}, got 'q' \(str\)",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(sk.robots.puma560(), np.zeros((5, 5))),
+            ValueError,
+            r"paths\[0\] must have shape \(K, 6\) with K >= 2 samples, got shape "
+            r"\(5, 5\)",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(
+                sk.robots.puma560(), [np.zeros((5, 6)), np.zeros((4, 6))]
+            ),
+            ValueError,
+            r"paths\[1\] must have as many samples as paths\[0\], 5, got 4",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(
+                sk.robots.puma560(), np.full((3, 6), np.nan)
+            ),
+            ValueError,
+            r"paths\[0\] must be finite, got nan",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(
+                sk.robots.puma560(), np.zeros((3, 6)), times=[0, 2, 1]
+            ),
+            ValueError,
+            "times must increase, got a step of -1 s",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(
+                sk.robots.puma560(), np.zeros((3, 6)), times=[0, 1]
+            ),
+            ValueError,
+            r"times must be 3 finite sample times \(s\), one per sample, got shape "
+            r"\(2,\)",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(
+                sk.robots.puma560(), np.zeros((3, 6)), labels=["a", "b"]
+            ),
+            ValueError,
+            r"labels must be 1 names \(str\), one per path, got \['a', 'b'\]",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(
+                sk.robots.puma560(), {"a": np.zeros((3, 6))}, labels=["a"]
+            ),
+            ValueError,
+            "labels must be None when paths is a dict",
+        ),
+        (
+            lambda: viewer.trajectory_viewer(
+                sk.robots.puma560(), [np.zeros((3, 6))] * 5
+            ),
+            ValueError,
+            "paths must hold 1 to 4 trajectories, got 5",
+        ),
+    ],
+)
+def test_a_bad_trajectory_is_refused_with_the_reason(call, error, message):
+    with pytest.raises(error, match=message):
+        call()
+
+
+def test_the_time_slider_obeys_the_slider_rules_but_starts_at_its_first_time():
+    # tests/slider_rules.py: a player's time may start at the low end of its range
+    # (only there: a time slider is not a joint kept off its limits), every other rule
+    # holds.
+    from slider_rules import problems
+
+    model = model_of(viewer.trajectory_viewer(sk.robots.puma560(), np.zeros((4, 6))))
+    time = model["slider"]
+    assert problems(time, starts_at_an_end=True) == []
+    assert problems(time) == [
+        "t [0.0, 2.0] step 0.01 at 0.0: default not strictly inside the range"
+    ]
+    assert problems({**time, "value": 2.0}, starts_at_an_end=True) == [
+        "t [0.0, 2.0] step 0.01 at 2.0: default not strictly inside the range"
+    ]

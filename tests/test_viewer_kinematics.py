@@ -7,7 +7,9 @@ seeded random configurations: a chain's tool pose with ``chain.fk``, its joint a
 ``chain.joint_axes``, the position Jacobian with the rows v of
 ``chain.geometric_jacobian`` and the manipulability ellipsoid with their singular
 values; the exponential of a twist with ``exp_twist`` and ``screw_motion``; a parallel
-platform's pose with the composition the sliders promise, its legs with ``pm.ik``.
+platform's pose with the composition the sliders promise, its legs with ``pm.ik``; the
+readout's roll, pitch, yaw with ``rpy_from_rotation``; a trajectory's joint values
+between samples with ``np.interp`` and its tool path with ``chain.fk``.
 """
 
 import json
@@ -141,15 +143,13 @@ def test_exponential_of_a_twist_equals_screwkits(s, r, h):
 
 
 def platform_pose(model, values):
-    """The pose the sliders promise (viewer.show_platform): Trans(p_home + d) Rz(yaw)
-    Ry(pitch) Rx(roll) R_home, or Trans(p_home + (x, y, 0)) Rz(phi) R_home if planar."""
-    home = np.asarray(model["home"])
+    """The pose the sliders promise (viewer.show_platform), absolute: Trans(x, y, z)
+    Rz(yaw) Ry(pitch) Rx(roll), or Trans(x, y, z_home) Rz(phi) if planar."""
     if model["planar"]:
-        d, R = [values[0], values[1], 0.0], sk.rotz(values[2])
-    else:
-        d = values[:3]
-        R = sk.rotz(values[5]) @ sk.roty(values[4]) @ sk.rotx(values[3])
-    return sk.homogeneous(R @ home[:3, :3], home[:3, 3] + np.asarray(d))
+        z = np.asarray(model["home"])[2, 3]
+        return sk.homogeneous(sk.rotz(values[2]), [values[0], values[1], z])
+    R = sk.rotz(values[5]) @ sk.roty(values[4]) @ sk.rotx(values[3])
+    return sk.homogeneous(R, values[:3])
 
 
 # Without leg limits, so that pm.ik answers at every pose the sliders reach (the page
@@ -171,6 +171,67 @@ def test_platform_pose_and_legs_equal_screwkits(name):
         want = platform_pose(model, v)
         np.testing.assert_allclose(matrix(T), want, rtol=0, atol=TOL)
         np.testing.assert_allclose(rho, pm.ik(want), rtol=0, atol=TOL)
+
+
+def test_the_home_sliders_give_the_home_pose():
+    # The sliders start at the home pose's own values (absolute, not offsets): the
+    # Stewart-Gough platform at z = 1 m, the 3-RPR turned by 90 deg about z.
+    for pm in PLATFORMS.values():
+        pm = pm()
+        model = viewer.show_platform(pm).model
+        start = [s["value"] * s["scale"] for s in model["sliders"]]
+        (T,) = run_page([["platformPose", [model, start]]])
+        np.testing.assert_allclose(matrix(T), pm.home(), rtol=0, atol=TOL)
+
+
+def test_roll_pitch_yaw_equal_screwkits():
+    # random rotations, and the two gimbal locks (pitch +-90 deg), where screwkit sets
+    # yaw = 0 and roll carries the turn
+    rng = np.random.default_rng(35)
+    angles = rng.uniform(-np.pi, np.pi, size=(SAMPLES, 3))
+    angles[:, 1] /= 2
+    angles[:2, 1] = [np.pi / 2, -np.pi / 2]
+    rotations = sk.orientation.rotation_from_rpy(angles)
+    poses = [sk.homogeneous(R, [0.1, 0.2, 0.3]) for R in rotations]
+    page = np.array(run_page([["rollPitchYaw", [T.ravel().tolist()]] for T in poses]))
+    np.testing.assert_allclose(
+        page, sk.orientation.rpy_from_rotation(rotations), rtol=0, atol=TOL
+    )
+    np.testing.assert_allclose(
+        sk.orientation.rotation_from_rpy(page), rotations, rtol=0, atol=TOL
+    )
+
+
+def test_a_trajectory_between_samples_is_the_linear_interpolation():
+    # np.interp per joint, at times inside, at the samples and outside (held at the
+    # ends), with uneven sample times
+    rng = np.random.default_rng(36)
+    times = np.cumsum(rng.uniform(0.05, 0.3, 12))
+    Q = rng.uniform(-2, 2, size=(12, 3))
+    queries = np.concatenate(
+        [rng.uniform(times[0] - 0.5, times[-1] + 0.5, SAMPLES), times]
+    )
+    page = run_page(
+        [["sampleAt", [times.tolist(), Q.tolist(), float(t)]] for t in queries]
+    )
+    expected = np.array(
+        [[np.interp(t, times, Q[:, j]) for j in range(3)] for t in queries]
+    )
+    np.testing.assert_allclose(page, expected, rtol=0, atol=1e-14)
+
+
+def test_a_trajectorys_tool_path_and_drawn_points_equal_screwkits():
+    ur5e = sk.robots.ur5e()
+    Q = np.random.default_rng(37).uniform(-np.pi, np.pi, size=(SAMPLES, 6))
+    model = viewer.trajectory_viewer(ur5e, Q).model
+    sent = np.array(model["paths"][0]["q"])
+    (path,) = run_page([["toolPath", [model, sent.tolist()]]])
+    np.testing.assert_allclose(path, ur5e.fk(sent)[:, :3, 3], rtol=0, atol=TOL)
+    pose = run_page([["chainPose", [model, sent[3].tolist()]]])[0]
+    (points,) = run_page([["chainPoints", [model, pose]]])
+    _, joint_points = ur5e.joint_axes(sent[3])
+    expected = np.vstack([[0, 0, 0], joint_points, ur5e.fk(sent[3])[:3, 3]])
+    np.testing.assert_allclose(points, expected, rtol=0, atol=TOL)
 
 
 def test_the_kinematics_module_needs_no_browser():

@@ -71,7 +71,7 @@ def figures():
         ),
         (
             "platform-stand-in",
-            viewer.show_platform(StandInPlatform(), pose=[0.05, 0, 0.12, 0, 12, 0]),
+            viewer.show_platform(StandInPlatform(), pose=[0.05, 0, 0.67, 0, 12, 0]),
         ),
         (
             "puma_ik-ur5e",
@@ -85,6 +85,7 @@ def figures():
             viewer.show_platform(sk.robots.stewart_gough()),
         ),
         ("parallel_kinematics-3rpr", viewer.show_platform(parallel.planar_3rpr())),
+        ("motion_in_time-screw_vs_line", motion_paths(puma)),
     ]
     for name, builder in [
         ("3-PRRR", "pm_3prrr"),
@@ -101,6 +102,25 @@ def figures():
         )
     found.append(("mobility-figure_slider", stepped_mechanisms()))
     return found
+
+
+def motion_paths(puma):
+    """The motion chapter's PUMA on the screw motion and the straight line + slerp
+    between two poses, over a 3 s quintic (joint paths from the closed-form IK)."""
+    from screwkit import trajectory as tr
+
+    q_first = np.radians([0, -30, 20, 0, 40, 0])
+    T0, T1 = puma.fk(q_first), puma.fk(np.radians([90, -10, -10, 60, 60, 30]))
+    timing = tr.quintic(3.0)
+    times = timing.times(61)
+    s = timing(times)
+    paths = {
+        "screw motion": tr.follow_path(puma, tr.screw_path(T0, T1, s), q_first),
+        "straight line + slerp": tr.follow_path(
+            puma, tr.cartesian_path(T0, T1, s), q_first
+        ),
+    }
+    return viewer.trajectory_viewer(puma, paths, times=times)
 
 
 def stepped_mechanisms():

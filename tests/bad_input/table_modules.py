@@ -409,7 +409,31 @@ VIEWERS = [
         ValueError,
         "s",
     ),
+    row(
+        "trajectory_viewer-str",
+        lambda: viewer.trajectory_viewer(puma(), "q"),
+        TypeError,
+        "paths",
+    ),
+    row(
+        "trajectory_viewer-times",
+        lambda: viewer.trajectory_viewer(puma(), np.zeros((3, 6)), times=[0, 2, 1]),
+        ValueError,
+        "times",
+    ),
+    row(
+        "trajectory_viewer-chain",
+        lambda: viewer.trajectory_viewer("puma", np.zeros((3, 6))),
+        TypeError,
+        "chain",
+    ),
     row("show_platform-str", lambda: viewer.show_platform("pm"), TypeError, "pm"),
+    row(
+        "show_platform-yaw",
+        lambda: viewer.show_platform(stewart(), yaw=-1),
+        ValueError,
+        "yaw",
+    ),
     row(
         "show_platform-pose",
         lambda: viewer.show_platform(stewart(), pose=np.eye(3)),

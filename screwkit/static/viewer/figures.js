@@ -11,6 +11,12 @@
     );
   }
 
+  function degrees(angles) {
+    return angles.map(function (x) {
+      return (x * 180) / Math.PI;
+    });
+  }
+
   function bounds(points) {
     var lo = [Infinity, Infinity, Infinity],
       hi = [-Infinity, -Infinity, -Infinity];
@@ -64,7 +70,7 @@
   }
 
   // A joint marker: a cylinder along the axis (revolute, helical) or a box (prismatic)
-  function jointMarker(stage, kind, size) {
+  function jointMarker(stage, kind, size, opacity) {
     var prismatic = kind === "P" || kind === "prismatic";
     var helical = kind === "H" || kind === "helical";
     var colour = prismatic
@@ -72,11 +78,15 @@
       : helical
         ? COLOURS.helical
         : COLOURS.revolute;
-    var mesh = stage.mesh(prismatic ? stage.unitBox : stage.unitCylinder, colour);
+    var mesh = stage.mesh(
+      prismatic ? stage.unitBox : stage.unitCylinder,
+      colour,
+      opacity
+    );
     return {
       mesh: mesh,
       length: (prismatic ? 0.17 : 0.12) * size,
-      width: (prismatic ? 0.075 : 0.05) * size * (prismatic ? 1 : 1)
+      width: (prismatic ? 0.075 : 0.05) * size
     };
   }
 
@@ -95,7 +105,7 @@
   // along the approach, so that the tool's orientation shows (its roll about the approach
   // too). approach = [axis 0, 1 or 2 of the tool frame, sign]; the jaws open along y
   // (along z when the approach is y). Returns the group and the points it reaches.
-  function gripper(stage, approach, size) {
+  function gripper(stage, approach, size, opacity) {
     var THREE = stage.THREE,
       a = approach[0],
       sign = approach[1] < 0 ? -1 : 1,
@@ -105,7 +115,7 @@
     group.matrixAutoUpdate = false;
     stage.scene.add(group);
     function box(colour, from, to, jaw, across, offset) {
-      var mesh = new THREE.Mesh(stage.unitBox, stage.material(colour)),
+      var mesh = new THREE.Mesh(stage.unitBox, stage.material(colour, opacity)),
         scale = [0, 0, 0],
         at = [0, 0, 0];
       scale[a] = (to - from) * size;
@@ -130,39 +140,68 @@
     return { group: group, reach: reach };
   }
 
+  // An arm on the stage: a rod per link in `colour`, a marker per joint (coloured by its
+  // kind) and the gripper on the tool frame; an opacity below 1 draws a ghost
+  function Arm(stage, model, size, colour, opacity) {
+    this.model = model;
+    this.stage = stage;
+    this.radius = 0.028 * size;
+    this.links = [];
+    for (var i = 0; i <= model.screws.length; i++)
+      this.links.push(stage.rod(colour, opacity));
+    this.joints = model.joints.map(function (kind) {
+      return jointMarker(stage, kind, size, opacity);
+    });
+    this.gripper = gripper(stage, model.approach || [2, 1], size, opacity);
+  }
+
+  // The arm at `pose` (chainPose), through its `points` (chainPoints)
+  Arm.prototype.place = function (pose, points) {
+    var S = this.stage,
+      m = this.model,
+      n = m.screws.length,
+      i;
+    for (i = 0; i <= n; i++)
+      S.between(this.links[i], points[i], points[i + 1], this.radius);
+    for (i = 0; i < n; i++)
+      placeJoint(S, this.joints[i], points[i + 1], rotate(pose.before[i], m.axes[i]));
+    var g = this.gripper.group;
+    g.matrix.set.apply(g.matrix, pose.tool);
+    g.matrixWorldNeedsUpdate = true;
+  };
+
+  // A chain's stand: a pedestal from the floor up to the base frame when the floor is
+  // below it, and a flat foot on the floor
+  function pedestal(stage, floorZ, size) {
+    if (floorZ < -1e-9)
+      stage.between(stage.rod(COLOURS.base), [0, 0, floorZ], [0, 0, 0], 0.0616 * size);
+    stage.between(
+      stage.rod(COLOURS.base),
+      [0, 0, floorZ],
+      [0, 0, floorZ + 0.03 * size],
+      0.16 * size
+    );
+  }
+
   function RobotFigure(model, stage) {
     this.model = model;
     this.stage = stage;
-    var n = model.screws.length,
-      q0 = model.sliders.map(function (s) {
+    var q0 = model.sliders.map(function (s) {
         return s.value * s.scale;
       });
     var pose = chainPose(model, q0),
       first = this.points(pose);
     var size = (this.size = bounds(first.concat([[0, 0, 0]])).size / 2);
     this.floorZ = floorUnder(stage, first, 2 * size, 0.45 * model.radius);
-    var r = 0.028 * size;
-    this.linkRadius = r;
-    if (this.floorZ < -1e-9) {
-      // a pedestal from the floor up to the base frame
-      stage.between(stage.rod(COLOURS.base), [0, 0, this.floorZ], [0, 0, 0], 2.2 * r);
-    }
-    stage.between(
-      stage.rod(COLOURS.base),
-      [0, 0, this.floorZ],
-      [0, 0, this.floorZ + 0.03 * size],
-      0.16 * size
-    );
-    this.links = [];
-    for (var i = 0; i <= n; i++) this.links.push(stage.rod(COLOURS.link));
-    this.joints = model.joints.map(function (kind) {
-      return jointMarker(stage, kind, size);
-    });
+    pedestal(stage, this.floorZ, size);
+    this.arm = new Arm(stage, model, size, COLOURS.link);
+    this.links = this.arm.links;
+    this.joints = this.arm.joints;
+    this.gripper = this.arm.gripper;
     this.tags = model.joints.map(function (_, i) {
       return stage.tag(String(i + 1));
     });
     this.toolFrame = stage.frame();
-    this.gripper = gripper(stage, model.approach || [2, 1], size);
     this.toolTag = stage.tag("tool");
     if (model.ellipsoid) {
       this.ellipsoidMesh = stage.mesh(stage.unitSphere, COLOURS.ellipsoid, 0.35);
@@ -201,12 +240,7 @@
   };
 
   RobotFigure.prototype.points = function (pose) {
-    var points = [[0, 0, 0]],
-      m = this.model;
-    for (var i = 0; i < m.screws.length; i++)
-      points.push(apply(pose.before[i], m.points[i]));
-    points.push(origin(pose.tool));
-    return points;
+    return chainPoints(this.model, pose);
   };
 
   RobotFigure.prototype.draw = function (q) {
@@ -214,24 +248,21 @@
       S = this.stage,
       pose = chainPose(m, q),
       points = this.points(pose);
-    var r = this.linkRadius,
-      n = m.screws.length,
-      i;
-    for (i = 0; i <= n; i++) S.between(this.links[i], points[i], points[i + 1], r);
-    for (i = 0; i < n; i++) {
-      var z = rotate(pose.before[i], m.axes[i]),
-        o = points[i + 1];
-      placeJoint(S, this.joints[i], o, z);
-      var off = 0.09 * this.size; // the number beside the joint, off its axis
+    this.arm.place(pose, points);
+    var off = 0.09 * this.size; // each joint's number beside it, off its axis
+    for (var i = 0; i < m.screws.length; i++) {
+      var o = points[i + 1];
       this.tags[i].at = [o[0] + off * 0.5, o[1] - off * 0.5, o[2] + off];
     }
     S.placeFrame(this.toolFrame, pose.tool, 0.3 * this.size);
-    var g = this.gripper.group;
-    g.matrix.set.apply(g.matrix, pose.tool);
-    g.matrixWorldNeedsUpdate = true;
     var tool = origin(pose.tool);
     this.toolTag.at = [tool[0], tool[1], tool[2] - 0.08 * this.size];
-    var text = "Tool at " + fixed(tool, 3) + " m.",
+    var text =
+        "Tool at " +
+        fixed(tool, 3) +
+        " m. Roll, pitch, yaw " +
+        fixed(degrees(rollPitchYaw(pose.tool)), 1) +
+        " deg.",
       e = null;
     if (m.ellipsoid) {
       e = ellipsoid(m, pose);
@@ -476,6 +507,11 @@
   function PlatformFigure(model, stage) {
     this.model = model;
     this.stage = stage;
+    if (model.planar) {
+      // from above, x to the right and y up: the plane of the motion, seen whole
+      stage.azimuth0 = stage.azimuth = -Math.PI / 2;
+      stage.elevation0 = stage.elevation = 1.5;
+    }
     var v0 = model.sliders.map(function (s) {
       return s.value * s.scale;
     });
@@ -485,7 +521,8 @@
     });
     var size = (this.size = stage.size = bounds(model.base.concat(top)).size / 2);
     this.floorZ = floorUnder(stage, model.base.concat(top), 2 * size);
-    plate(stage, model.base, COLOURS.base, 0.9);
+    // seen from above, a planar base is a light plate under its legs and platform
+    plate(stage, model.base, COLOURS.base, model.planar ? 0.3 : 0.9);
     var THREE = stage.THREE;
     this.group = new THREE.Group();
     this.group.matrixAutoUpdate = false;
@@ -493,6 +530,9 @@
     var local = plate(stage, model.platform, COLOURS.platform, 0.75, false);
     stage.scene.remove(local.mesh);
     this.group.add(local.mesh);
+    // a planar platform moves in the base's plane: its plate drawn a hair above the
+    // base's, so that where they overlap seen from above it shows whole
+    if (model.planar) local.mesh.position.z = 0.004 * size;
     this.order = local.order;
     this.edges = model.platform.map(function () {
       return stage.rod(COLOURS.platform);
@@ -592,6 +632,13 @@
     return text;
   };
 
+  // A plate through 3 or more points (k, 3), a rod between 2
+  function outline(stage, points, colour, opacity, size) {
+    if (points.length >= 3) plate(stage, points, colour, opacity);
+    else if (points.length === 2)
+      stage.between(stage.rod(colour), points[0], points[1], 0.012 * size);
+  }
+
   function MechanismFigure(model, stage) {
     this.model = model;
     this.stage = stage;
@@ -613,22 +660,8 @@
       );
     });
     var floorZ = floorUnder(stage, all, 2 * size);
-    if (model.base.length >= 3) plate(stage, model.base, COLOURS.base, 0.55);
-    else if (model.base.length === 2)
-      stage.between(
-        stage.rod(COLOURS.base),
-        model.base[0],
-        model.base[1],
-        0.012 * size
-      );
-    if (model.platform.length >= 3) plate(stage, model.platform, COLOURS.platform, 0.6);
-    else if (model.platform.length === 2)
-      stage.between(
-        stage.rod(COLOURS.platform),
-        model.platform[0],
-        model.platform[1],
-        0.012 * size
-      );
+    outline(stage, model.base, COLOURS.base, 0.55, size);
+    outline(stage, model.platform, COLOURS.platform, 0.6, size);
     var r = 0.018 * size,
       L = model.length;
     model.limbs.forEach(function (limb, i) {
@@ -702,3 +735,78 @@
     return this.model.caption;
   };
 
+
+  // Arms that play precomputed joint trajectories, one per path (the first solid, the
+  // others ghosts), each link and tool path in its path's colour, each path named at
+  // its middle. The page only interpolates q between the samples (sampleAt).
+  function TrajectoryFigure(model, stage) {
+    this.model = model;
+    this.stage = stage;
+    var THREE = stage.THREE,
+      self = this;
+    this.colours = model.paths.map(function (_, k) {
+      return PATH_COLOURS[k % PATH_COLOURS.length];
+    });
+    var tools = model.paths.map(function (p) {
+      return toolPath(model, p.q);
+    });
+    var reach = [[0, 0, 0]];
+    model.paths.forEach(function (p) {
+      p.q.forEach(function (q) {
+        reach = reach.concat(chainPoints(model, chainPose(model, q)));
+      });
+      reach = corners(bounds(reach)); // the box is what frames the view
+    });
+    var size = (this.size = stage.size = bounds(reach).size / 2);
+    this.floorZ = floorUnder(stage, reach, 2 * size, 0.45 * model.radius);
+    pedestal(stage, this.floorZ, size);
+    this.arms = model.paths.map(function (_, k) {
+      return new Arm(stage, model, size, self.colours[k], k ? 0.35 : undefined);
+    });
+    var grip = [];
+    tools.forEach(function (points, k) {
+      var curve = new THREE.CatmullRomCurve3(
+        points.map(function (p) {
+          return new THREE.Vector3(p[0], p[1], p[2]);
+        })
+      );
+      var tube = new THREE.TubeGeometry(
+        curve,
+        Math.min(4 * points.length, 600),
+        0.008 * size,
+        8
+      );
+      stage.scene.add(new THREE.Mesh(tube, stage.material(self.colours[k], 0.9)));
+      var tag = stage.tag(model.paths[k].label);
+      tag.at = points[Math.floor(points.length / 2)];
+      tag.span.style.borderColor = "#" + ("00000" + self.colours[k].toString(16)).slice(-6);
+    });
+    model.paths.forEach(function (p, k) {
+      p.q.forEach(function (q) {
+        var tool = chainPose(model, q).tool;
+        self.arms[k].gripper.reach.forEach(function (g) {
+          grip.push(apply(tool, g));
+        });
+      });
+    });
+    stage.fit(
+      padded(corners(bounds(reach.concat(grip))), 0.07 * size).concat([
+        [0, 0, this.floorZ]
+      ])
+    );
+  }
+
+  // Every arm at time t (s): q interpolated between its samples
+  TrajectoryFigure.prototype.draw = function (values) {
+    var m = this.model,
+      t = values[0],
+      self = this;
+    var text = m.paths.map(function (p, k) {
+      var pose = chainPose(m, sampleAt(m.times, p.q, t));
+      self.arms[k].place(pose, chainPoints(m, pose));
+      return p.label + ": tool at " + fixed(origin(pose.tool), 3) + " m";
+    });
+    this.time = t;
+    this.stage.render();
+    return "t = " + t.toFixed(2) + " s. " + text.join("; ") + ".";
+  };

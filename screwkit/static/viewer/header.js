@@ -2,7 +2,8 @@
  *
  * Python (screwkit/viewer.py) hands each figure its parameters as JSON: a chain's joint
  * screws S_i = [omega; v] and home pose M (product of exponentials), a screw (s, r, h),
- * a parallel platform's attachment points, a mechanism's joints, or precomputed frames.
+ * a parallel platform's attachment points, a mechanism's joints, precomputed joint
+ * trajectories to play, or precomputed frames.
  * This script computes the kinematics in double precision (exponentials of twists,
  * forward kinematics, the position Jacobian and its ellipsoid, leg lengths) and draws
  * with three.js (window.THREE, vendored from npm, shipped once per page by viewer.py).
@@ -11,7 +12,7 @@
  */
 (function () {
   "use strict";
-  var VERSION = "2";
+  var VERSION = "3";
   if (window.screwkit && window.screwkit.version === VERSION) {
     window.screwkit.mountAll();
     return;

@@ -210,40 +210,22 @@
     return [c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
   }
 
-  // A platform's pose from its slider offsets (SI): p = p_home + d, R = Rz Ry Rx R_home
-  // (spatial: x, y, z, roll, pitch, yaw; planar: x, y, phi)
+  // A platform's pose from its sliders (SI), absolute: T = Trans(x, y, z) Rz(yaw)
+  // Ry(pitch) Rx(roll) (spatial: x, y, z, roll, pitch, yaw); planar: x, y, phi, the
+  // platform in the plane z = z_home, T = Trans(x, y, z_home) Rz(phi)
   function platformPose(model, values) {
-    var H = flat(model.home),
-      d,
-      R;
+    var T;
     if (model.planar) {
-      d = [values[0], values[1], 0];
-      R = rotZ(values[2]);
+      T = rotZ(values[2]);
+      T[3] = values[0];
+      T[7] = values[1];
+      T[11] = flat(model.home)[11];
     } else {
-      d = [values[0], values[1], values[2]];
-      R = matmul(rotZ(values[5]), matmul(rotY(values[4]), rotX(values[3])));
+      T = matmul(rotZ(values[5]), matmul(rotY(values[4]), rotX(values[3])));
+      T[3] = values[0];
+      T[7] = values[1];
+      T[11] = values[2];
     }
-    var T = matmul(R, [
-      H[0],
-      H[1],
-      H[2],
-      0,
-      H[4],
-      H[5],
-      H[6],
-      0,
-      H[8],
-      H[9],
-      H[10],
-      0,
-      0,
-      0,
-      0,
-      1
-    ]);
-    T[3] = H[3] + d[0];
-    T[7] = H[7] + d[1];
-    T[11] = H[11] + d[2];
     return T;
   }
 
@@ -254,3 +236,52 @@
     });
   }
 
+
+  // The points a chain's drawing joins: the base origin, each joint's point (moved by
+  // the joints before it) and the tool's origin, (n + 2, 3)
+  function chainPoints(model, pose) {
+    var points = [[0, 0, 0]];
+    for (var i = 0; i < model.screws.length; i++)
+      points.push(apply(pose.before[i], model.points[i]));
+    points.push(origin(pose.tool));
+    return points;
+  }
+
+  // (roll, pitch, yaw) (rad) of the rotation of T: R = Rz(yaw) Ry(pitch) Rx(roll),
+  // pitch in [-pi/2, pi/2]; at pitch = +-pi/2 (gimbal lock) yaw = 0 and roll carries
+  // the turn (as screwkit.orientation.rpy_from_rotation)
+  function rollPitchYaw(T) {
+    var c = Math.hypot(T[0], T[4]),
+      pitch = Math.atan2(-T[8], c);
+    if (c < 1e-9) {
+      var roll = T[8] < 0 ? Math.atan2(T[1], T[5]) : Math.atan2(-T[1], T[5]);
+      return [roll, pitch, 0];
+    }
+    return [Math.atan2(T[9], T[10]), pitch, Math.atan2(T[4], T[0])];
+  }
+
+  // The joint values at time t of a trajectory sampled at increasing times (K,) as
+  // rows Q (K, n): linear between the samples around t, the first or last row outside
+  function sampleAt(times, Q, t) {
+    var K = times.length;
+    if (t <= times[0]) return Q[0].slice();
+    if (t >= times[K - 1]) return Q[K - 1].slice();
+    var lo = 0,
+      hi = K - 1;
+    while (hi - lo > 1) {
+      var mid = (lo + hi) >> 1;
+      if (times[mid] <= t) lo = mid;
+      else hi = mid;
+    }
+    var w = (t - times[lo]) / (times[hi] - times[lo]);
+    return Q[lo].map(function (x, j) {
+      return x + w * (Q[hi][j] - x);
+    });
+  }
+
+  // The tool's origin (K, 3) along a joint trajectory Q (K, n)
+  function toolPath(model, Q) {
+    return Q.map(function (q) {
+      return origin(chainPose(model, q).tool);
+    });
+  }

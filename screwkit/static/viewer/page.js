@@ -91,8 +91,77 @@
     robot: RobotFigure,
     screw: ScrewFigure,
     platform: PlatformFigure,
-    mechanism: MechanismFigure
+    mechanism: MechanismFigure,
+    trajectory: TrajectoryFigure
   };
+
+  // Play and pause a trajectory: its time slider advances in real time and stops at
+  // the end (play there starts again). The root's data-time is the time drawn; while
+  // playing, data-playing is set and the caption is not read aloud at every frame.
+  // The button says what it does next (Play, Pause), so it carries no aria-pressed.
+  function addPlayer(root, controls, viewer, caption) {
+    var slider = viewer.sliders[0],
+      spec = slider.spec,
+      playing = false,
+      last = null,
+      clock = spec.value;
+    var button = el(
+      "button",
+      { type: "button", class: "screwkit-play" },
+      null
+    );
+    controls.insertBefore(button, controls.firstChild);
+    function show(t) {
+      clock = t;
+      slider.input.value = t;
+      slider.readout.textContent = t.toFixed(spec.digits);
+      var start = performance.now();
+      caption.textContent = viewer.figure.draw([t]);
+      viewer.lastDrawMs = performance.now() - start;
+      root.setAttribute("data-time", t.toFixed(3));
+    }
+    function label() {
+      button.textContent = "";
+      el("span", { "aria-hidden": "true" }, button).textContent = playing
+        ? "\u275a\u275a "
+        : "\u25b6 ";
+      button.appendChild(document.createTextNode(playing ? "Pause" : "Play"));
+      caption.setAttribute("aria-live", playing ? "off" : "polite");
+      if (playing) root.setAttribute("data-playing", "1");
+      else root.removeAttribute("data-playing");
+    }
+    function tick(now) {
+      if (!playing) return;
+      if (last !== null) show(Math.min(clock + (now - last) / 1000, spec.max));
+      last = now;
+      if (clock >= spec.max) {
+        playing = false;
+        label();
+        return;
+      }
+      window.requestAnimationFrame(tick);
+    }
+    function play(on) {
+      if (on === playing) return;
+      playing = on;
+      last = null;
+      if (playing && clock >= spec.max) show(spec.min);
+      label();
+      if (playing) window.requestAnimationFrame(tick);
+    }
+    button.addEventListener("click", function () {
+      play(!playing);
+    });
+    slider.input.addEventListener("input", function () {
+      clock = +slider.input.value;
+      root.setAttribute("data-time", clock.toFixed(3));
+      play(false);
+    });
+    label();
+    root.setAttribute("data-time", clock.toFixed(3));
+    viewer.play = play;
+    viewer.show = show;
+  }
 
   function mount(root) {
     if (!root || root.getAttribute("data-mounted")) return null;
@@ -141,6 +210,7 @@
       camera: stage
     };
     redraw();
+    if (model.kind === "trajectory") addPlayer(root, controls, viewer, caption);
     return register(root, viewer);
   }
 
@@ -165,7 +235,11 @@
     symmetricEigen: symmetricEigen,
     ellipsoid: ellipsoid,
     platformPose: platformPose,
-    legLengths: legLengths
+    legLengths: legLengths,
+    chainPoints: chainPoints,
+    rollPitchYaw: rollPitchYaw,
+    sampleAt: sampleAt,
+    toolPath: toolPath
   };
   mountAll();
 })();

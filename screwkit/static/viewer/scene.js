@@ -1,9 +1,11 @@
   // ---- the stage: renderer, camera, orbit, zoom, labels -----------------------------
+  // Joints as in the mobility figures (screwkit/_mechanism_plot.py, JOINT_STYLES):
+  // revolute tab:blue, prismatic tab:orange, helical tab:purple
   var COLOURS = {
     link: 0x6b7785,
-    revolute: 0xe8891c,
-    prismatic: 0x7b52c7,
-    helical: 0x2f9e8f,
+    revolute: 0x1f77b4,
+    prismatic: 0xff7f0e,
+    helical: 0x9467bd,
     base: 0x4a5360,
     platform: 0x3ba9c9,
     leg: 0x56606b,
@@ -12,13 +14,17 @@
     x: 0xd62728,
     y: 0x2ca02c,
     z: 0x1f5fbf,
-    path: 0x9467bd,
+    path: 0x8c564b,
     axis: 0x7f7f7f,
     twistR: 0xd62728,
     twistT: 0x2ca02c,
     gripper: 0x5d6f8c,
     finger: 0x2b3038
   };
+
+  // A trajectory viewer's arms and their tool paths, in order (tab:red, tab:green,
+  // tab:brown, tab:pink): none is a joint's colour
+  var PATH_COLOURS = [0xd62728, 0x2ca02c, 0x8c564b, 0xe377c2];
 
   function Stage(root, model, label) {
     var THREE = window.THREE;

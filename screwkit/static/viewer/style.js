@@ -32,6 +32,10 @@
     ".screwkit-controls output{text-align:right;font-variant-numeric:tabular-nums;",
     "font-family:ui-monospace,monospace;display:inline-block}",
     ".screwkit-controls .screwkit-unit{opacity:.75}",
+    ".screwkit-controls .screwkit-play{grid-column:1/-1;justify-self:start;",
+    "min-width:7em;min-height:32px;font:600 14px/1 system-ui,sans-serif;",
+    "border:1px solid #9aa3ad;border-radius:5px;background:#fff;color:#222;",
+    "cursor:pointer}",
     ".screwkit-frame img{max-width:100%;height:auto}",
     ".screwkit-note{padding:1em;opacity:.8}"
   ].join("");
