@@ -221,7 +221,8 @@ def test_systems_typeset_as_tables_and_print_as_text():
         "  [0, 0, 0, 0, 1, 0]",
     ]
     html = system._repr_html_()
-    assert "<caption>twist 2-system</caption>" in html and html.count("<tr>") == 6
+    assert ">twist 2-system</caption>" in html and html.count("<tr>") == 6
+    assert repr(system.reciprocal()) == "ScrewSystem(4 wrenches, rank 4)"
     assert system._repr_latex_().startswith(
         "$\\text{twist 2-system: }\\left[\\begin{matrix}"
     )
