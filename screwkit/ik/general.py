@@ -1,0 +1,371 @@
+"""Every inverse-kinematics solution of any 6R serial chain: the Raghavan–Roth
+elimination solved as an eigenvalue problem (Manocha and Canny 1994).
+
+With E_i = exp([S_i] q_i) and G = T M^-1 the loop is E1 E2 E3 E4 E5 E6 = G. Joint 6
+leaves its own axis fixed: a point p6 on it and its direction w6. So
+
+    E3 E4 E5 (p6, w6) = E2^-1 E1^-1 G (p6, w6),
+
+two vectors p and l on each side, and with them p.p, p.l, p x l and
+(p.p) l - 2 (p.l) p: 14 equations whose two sides have degree at most one in the
+cosine and sine of each joint angle (Raghavan and Roth 1993; the products keep that
+degree because each side is a rotation about one axis after another). The right side
+is a constant plus Q b, b the 8 products (1, c1, s1) x (1, c2, s2) without 1, so the 6
+combinations N with N Q = 0 are free of joints 1 and 2: 6 equations in the 9 products
+(1, c4, s4) x (1, c5, s5), each of degree one in (c3, s3). In half-angle tangents
+x_i = tan(q_i / 2) and with a second copy multiplied by x4 they are 12 equations,
+linear in the 12 monomials x4^i x5^j (i <= 3, j <= 2), quadratic in x3:
+(M0 + x3 M1 + x3^2 M2) v = 0, a 24 x 24 eigenvalue problem (its companion matrix). Its
+real eigenvalues give q3, the eigenvectors q4 and q5, the 14 equations q1 and q2, the
+rotation left q6; every candidate is then polished by Newton steps on the chain's own
+forward kinematics and Jacobian, and kept when it meets the pose. At most 16
+solutions.
+
+Each side's coefficients are found by sampling: a function of degree one in
+(cos, sin) of an angle is fixed by its values at three equally spaced angles, so the
+side's values on a 3 x 3 (x 3) grid give its coefficients exactly, from the chain's
+screws at any geometry. The angles are shifted (q_i = phi_i + delta_i, fixed
+pseudo-random delta) so that no solution sits at a half-angle tangent of infinity.
+
+Special geometry (intersecting or parallel axes) can make Q lose rank or the
+eigenvalue problem singular (det M(x3) = 0 for every x3). The same loop is then
+written again with another joint first (a cyclic shift: E2 ... E6 (G^-1 E1 G) = G) or
+backwards (E6^-1 ... E1^-1 = G^-1), twelve formulations in all; when every one is
+degenerate the answer says so (a reason, no solutions) rather than give a wrong count.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._checks import check_chain, check_poses
+from ..links import Joint
+from ..lie import log_transform
+from ..tolerances import (
+    IK_GENERAL_ACCEPT_TOL,
+    IK_GENERAL_LEADING_TOL,
+    IK_GENERAL_RANK_TOL,
+    IK_GENERAL_REAL_TOL,
+    IK_GENERAL_SAME_TOL,
+    length_scale,
+)
+from ..transforms import _wrap_angle, inv
+
+__all__ = ["GeneralIK", "general_6r_ik"]
+
+#: Newton steps that polish each candidate (quadratic convergence from the
+#: eigenvalue's 1e-8 or better reaches round-off in two or three).
+NEWTON_STEPS = 6
+
+#: Three equally spaced angles: a function a + b cos + c sin is fixed by its values
+#: there, and _FIT turns the three values into (a, b, c).
+_GRID = 2 * np.pi * np.arange(3) / 3
+_FIT = np.linalg.inv(np.stack([np.ones(3), np.cos(_GRID), np.sin(_GRID)], axis=1))
+
+#: (1, cos, sin) times 1 + x^2 as polynomials in x = tan(angle / 2): rows 1, cos,
+#: sin; columns the coefficients of x^0, x^1, x^2.
+_TO_POLY = np.array([[1.0, 0.0, 1.0], [1.0, 0.0, -1.0], [0.0, 2.0, 0.0]])
+
+#: The angle shifts of the three tries of a formulation (rad), fixed so that the
+#: answers are reproducible; any values away from multiples of pi would do.
+_SHIFTS = np.array(
+    [
+        [0.4137, -0.9212, 0.2843, 1.1371, -0.6271, 0.0],
+        [-1.2719, 0.3331, 0.8779, -0.2466, 1.3587, 0.0],
+        [0.7713, 1.4891, -1.0437, 0.6109, 0.1931, 0.0],
+    ]
+)
+
+
+@dataclass
+class GeneralIK:
+    """The solutions of :func:`general_6r_ik` for one pose.
+
+    Parameters
+    ----------
+    Q : ndarray, shape (k, 6)
+        Every real solution found (rad, each in (-pi, pi]), sorted lexicographically;
+        k is at most 16 (0 for a pose out of reach or a degenerate arm).
+    residuals : ndarray, shape (k,)
+        The pose error of each solution after polishing: the norm of the error twist
+        [omega; v / scale] (rad; v divided by the chain's size, so unitless).
+    reason : str or None
+        None when solved; otherwise a sentence (no real solution, or why the
+        elimination could not be set up for this arm).
+    formulation : str
+        The form of the loop that was solved, e.g. 'joints 1..6' or
+        'joints 6..1 shifted by 2' (for the record; '' when none worked).
+    """
+
+    Q: np.ndarray
+    residuals: np.ndarray
+    reason: str | None = None
+    formulation: str = ""
+
+
+# ---- the loop's two sides -----------------------------------------------------------
+
+
+def _turn(w, r, angle, x, point):
+    """x (..., 3) turned by ``angle`` (...) about the axis through r along unit w; a
+    point if ``point``, else a direction. Rodrigues' formula."""
+    d = x - r if point else x
+    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
+    turned = d * c + np.cross(w, d) * s + w * (d @ w)[..., None] * (1 - c)
+    return turned + r if point else turned
+
+
+def _products(p, l):
+    """The 14 Raghavan–Roth quantities of a point p and a direction l (..., 3)."""
+    pp = np.sum(p * p, axis=-1)[..., None]
+    pl = np.sum(p * l, axis=-1)[..., None]
+    return np.concatenate([p, l, pp, pl, np.cross(p, l), pp * l - 2 * pl * p], axis=-1)
+
+
+def _left(w, r, p6, w6, q3, q4, q5):
+    """E3 E4 E5 applied to (p6, w6): the 14 quantities (..., 14)."""
+    p, l = p6, w6
+    for k, q in ((4, q5), (3, q4), (2, q3)):
+        p = _turn(w[k], r[k], q, p, True)
+        l = _turn(w[k], r[k], q, l, False)
+    return _products(p, l)
+
+
+def _right(w, r, hp, hl, q1, q2):
+    """E2^-1 E1^-1 applied to G (p6, w6) = (hp, hl): the 14 quantities (..., 14)."""
+    p = _turn(w[1], r[1], -q2, _turn(w[0], r[0], -q1, hp, True), True)
+    l = _turn(w[1], r[1], -q2, _turn(w[0], r[0], -q1, hl, False), False)
+    return _products(p, l)
+
+
+# ---- one formulation ----------------------------------------------------------------
+
+
+def _companion(w, r, G, shift):
+    """The eigenvalue problem of the loop E1 ... E6 = G (unit axes w, points r, the
+    lengths divided by the chain's size), angles q_i = phi_i + shift_i.
+
+    Returns (A, Q, C0, reason): A the 24 x 24 companion matrix whose eigenvalues are
+    tan(phi_3 / 2), Q (14, 8) and C0 (14,) the right side's coefficients (for q1,
+    q2); A is None with a reason when this formulation is degenerate.
+    """
+    p6, w6 = r[5], w[5]
+    hp, hl = G[:3, :3] @ p6 + G[:3, 3], G[:3, :3] @ w6
+    g = _GRID
+    a1, a2 = np.meshgrid(g + shift[0], g + shift[1], indexing="ij")
+    right = np.einsum("ai,bj,ije->eab", _FIT, _FIT, _right(w, r, hp, hl, a1, a2))
+    right = right.reshape(14, 9)
+    C0, Q = right[:, 0], right[:, 1:]
+    U, sigma, _ = np.linalg.svd(Q)
+    if sigma[-1] <= IK_GENERAL_RANK_TOL * sigma[0]:
+        return None, Q, C0, "joints 1 and 2 do not enter the 14 equations independently"
+    N = U[:, 8:].T  # (6, 14): N Q = 0
+    a3, a4, a5 = np.meshgrid(*(g + shift[k] for k in (2, 3, 4)), indexing="ij")
+    left = np.einsum(
+        "ai,bj,ck,ijke->eabc", _FIT, _FIT, _FIT, _left(w, r, p6, w6, a3, a4, a5)
+    )
+    left[:, 0, 0, 0] -= C0
+    poly = np.einsum(
+        "fe,eabc,ai,bj,ck->fijk", N, left, _TO_POLY, _TO_POLY, _TO_POLY
+    )  # (6, power of x3, power of x4, power of x5)
+    M = np.zeros((3, 12, 4, 3))
+    M[:, :6, :3, :] = poly.transpose(1, 0, 2, 3)
+    M[:, 6:, 1:, :] = poly.transpose(1, 0, 2, 3)
+    M = M.reshape(3, 12, 12)
+    sv = np.linalg.svd(M[2], compute_uv=False)
+    size = max(np.abs(M).max(), 1.0)
+    if sv[-1] <= IK_GENERAL_LEADING_TOL * size:
+        return None, Q, C0, "the eigenvalue problem's leading matrix is singular"
+    solved = np.linalg.solve(M[2], np.concatenate([M[0], M[1]], axis=1))
+    A = np.zeros((24, 24))
+    A[:12, 12:] = np.eye(12)
+    A[12:, :12] = -solved[:, :12]
+    A[12:, 12:] = -solved[:, 12:]
+    return A, Q, C0, None
+
+
+def _half_angle(x):
+    """The angle (rad) whose half-angle tangent is x."""
+    return 2 * np.arctan(x)
+
+
+def _candidates(w, r, G, shift):
+    """Joint vectors (k, 6) of the loop E1 ... E6 = G from its eigenvalue problem,
+    or (None, reason)."""
+    A, Q, C0, reason = _companion(w, r, G, shift)
+    if A is None:
+        return None, reason
+    values, vectors = np.linalg.eig(A)
+    real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
+    if not np.any(real):
+        return np.zeros((0, 6)), None
+    x3, Z = values[real], vectors[:, real]
+    # the eigenvector is (v, x3 v): take the better-scaled half
+    V = np.where(np.abs(x3) <= 1, Z[:12], Z[12:]).T.reshape(-1, 4, 3)
+    x4 = np.sum(V[:, :-1].conj() * V[:, 1:], axis=(1, 2)) / np.sum(
+        np.abs(V[:, :-1]) ** 2, axis=(1, 2)
+    )
+    x5 = np.sum(V[:, :, :-1].conj() * V[:, :, 1:], axis=(1, 2)) / np.sum(
+        np.abs(V[:, :, :-1]) ** 2, axis=(1, 2)
+    )
+    q3 = _half_angle(x3.real) + shift[2]
+    q4 = _half_angle(x4.real) + shift[3]
+    q5 = _half_angle(x5.real) + shift[4]
+    # q1, q2: the right side's 8 products from the 14 values of the left side
+    b = np.linalg.lstsq(Q, (_left(w, r, r[5], w[5], q3, q4, q5) - C0).T, rcond=None)[0]
+    # b's rows: (1, c1, s1) x (1, c2, s2) without the first, in that order
+    q1 = np.arctan2(b[5], b[2]) + shift[0]
+    q2 = np.arctan2(b[1], b[0]) + shift[1]
+    q = np.stack([q1, q2, q3, q4, q5, np.zeros_like(q1)], axis=1)
+    q[:, 5] = _last_angle(w, r, G, q)
+    return q, None
+
+
+def _last_angle(w, r, G, q):
+    """q6 (k,) from q1..q5: the rotation E6 = (E1 ... E5)^-1 G about axis 6."""
+    w6 = w[5]
+    u = np.cross(w6, [1.0, 0.0, 0.0])
+    if np.linalg.norm(u) < 0.5:
+        u = np.cross(w6, [0.0, 1.0, 0.0])
+    u = u / np.linalg.norm(u)
+    Gu = np.broadcast_to(G[:3, :3] @ u, (q.shape[0], 3))
+    for k in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
+        Gu = _turn(w[k], r[k], -q[:, k], Gu, False)
+    return np.arctan2(Gu @ np.cross(w6, u), Gu @ u)
+
+
+# ---- the twelve formulations ---------------------------------------------------------
+
+
+def _adjoint_inverse(G, S):
+    """Ad(G^-1) applied to screws S (k, 6) [omega; v]."""
+    R, p = G[:3, :3], G[:3, 3]
+    w = S[:, :3] @ R  # R^T omega
+    v = (S[:, 3:] - np.cross(p, S[:, :3])) @ R
+    return np.concatenate([w, v], axis=1)
+
+
+def _formulations(S, G):
+    """(name, screws, target, joint order, sign) of the twelve forms of the loop."""
+    for backwards in (False, True):
+        screws, target = (-S[::-1], inv(G)) if backwards else (S, G)
+        order = np.arange(6)[::-1] if backwards else np.arange(6)
+        for k in range(6):
+            moved = np.concatenate([screws[k:], _adjoint_inverse(target, screws[:k])])
+            name = "joints " + ("6..1" if backwards else "1..6")
+            yield (
+                name + (f" shifted by {k}" if k else ""),
+                moved,
+                target,
+                np.roll(order, -k),
+                -1.0 if backwards else 1.0,
+            )
+
+
+# ---- the public function ------------------------------------------------------------
+
+
+def _error(chain, T, q, scale):
+    """The error twists (k, 6) [omega; v] from T(q) to T and their norms with v
+    divided by ``scale``."""
+    V = log_transform(inv(chain.fk(q)) @ T)
+    return V, np.hypot(
+        np.linalg.norm(V[:, :3], axis=1), np.linalg.norm(V[:, 3:], axis=1) / scale
+    )
+
+
+def _polish(chain, T, q, scale):
+    """Newton steps on the pose from the candidates q (k, 6); returns q and the
+    residuals."""
+    for _ in range(NEWTON_STEPS):
+        V, residual = _error(chain, T, q, scale)
+        if np.all(residual <= IK_GENERAL_ACCEPT_TOL * 1e-3):
+            break
+        q = q + (np.linalg.pinv(chain.body_jacobian(q)) @ V[..., None])[..., 0]
+    return q, _error(chain, T, q, scale)[1]
+
+
+def _distinct(Q, residuals):
+    """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
+    lexicographically."""
+    keep = []
+    for i in np.argsort(residuals):
+        if all(
+            np.max(np.abs(_wrap_angle(Q[i] - Q[j]))) > IK_GENERAL_SAME_TOL for j in keep
+        ):
+            keep.append(i)
+    Q, residuals = Q[keep], residuals[keep]
+    order = np.lexsort(Q.T[::-1])
+    return Q[order], residuals[order]
+
+
+def general_6r_ik(chain, T):
+    """Every real inverse-kinematics solution of a 6R chain for one pose.
+
+    The Raghavan–Roth equations eliminated to a 24 x 24 eigenvalue problem in
+    tan(q3 / 2) (Manocha and Canny 1994), each real root back-substituted and
+    polished by Newton steps on ``chain.fk`` and ``chain.body_jacobian``; see the
+    module's docstring. Any geometry (DH or screws, base and tool included); an arm
+    whose special axes make every form of the elimination degenerate gets a reason,
+    not a wrong count.
+
+    Parameters
+    ----------
+    chain : Chain
+        A serial chain of 6 revolute joints.
+    T : array-like, shape (4, 4)
+        The end-effector pose, a rigid transform in the chain's world frame (m).
+
+    Returns
+    -------
+    GeneralIK
+        ``Q`` (k, 6) the solutions (rad, in (-pi, pi], sorted), ``residuals`` (k,),
+        ``reason`` (None when solved).
+
+    >>> import numpy as np, screwkit as sk
+    >>> arm = sk.Chain.from_table([[0, 0.3, 0.2, 1.0], [0, 0.1, 0.5, -0.7],
+    ...     [0, 0.2, 0.4, 1.3], [0, 0.25, 0.1, 0.9], [0, 0.1, 0.3, -1.1],
+    ...     [0, 0.2, 0.1, 0.4]])
+    >>> q = np.array([0.3, -0.5, 1.0, 0.7, -1.2, 2.0])
+    >>> result = general_6r_ik(arm, arm.fk(q))
+    >>> bool(np.min(np.abs(result.Q - q).max(axis=1)) < 1e-9)
+    True
+    """
+    check_chain(chain)
+    if chain.n != 6 or any(j is not Joint.REVOLUTE for j in chain.joints):
+        kinds = "".join(j.value for j in chain.joints)
+        raise ValueError(
+            f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
+        )
+    T = check_poses(T, "T", single_only=True)
+    S, M = chain.screw_axes(), chain.home()
+    scale = length_scale(S[:, 3:], M[:3, 3])
+    Sn = S.copy()
+    Sn[:, 3:] /= scale
+    G = T @ inv(M)
+    G[:3, 3] /= scale
+    reasons = []
+    for name, screws, target, order, sign in _formulations(Sn, G):
+        w = screws[:, :3]
+        r = np.cross(w, screws[:, 3:])  # the point of each axis nearest the origin
+        for shift in _SHIFTS:
+            phi, reason = _candidates(w, r, target, shift)
+            if phi is not None:
+                break
+        if phi is None:
+            reasons.append(f"{name}: {reason}")
+            continue
+        q = np.empty_like(phi)
+        q[:, order] = sign * phi
+        q, residuals = _polish(chain, T, q, scale)
+        good = residuals <= IK_GENERAL_ACCEPT_TOL
+        Q, residuals = _distinct(_wrap_angle(q[good]), residuals[good])
+        reason = None if len(Q) else "no real solution: the pose is out of reach"
+        return GeneralIK(Q, residuals, reason, name)
+    return GeneralIK(
+        np.zeros((0, 6)),
+        np.zeros(0),
+        "every form of the elimination is degenerate for this arm ("
+        + "; ".join(reasons[:2])
+        + ", ...)",
+    )
