@@ -34,6 +34,7 @@ backwards (E6^-1 ... E1^-1 = G^-1), twelve formulations in all; when every one i
 degenerate the answer says so (a reason, no solutions) rather than give a wrong count.
 """
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -49,7 +50,7 @@ from ..tolerances import (
     IK_GENERAL_SAME_TOL,
     length_scale,
 )
-from ..transforms import _wrap_angle, inv
+from ..transforms import _cross, _wrap_angle, inv
 
 __all__ = ["GeneralIK", "general_6r_ik"]
 
@@ -62,9 +63,13 @@ NEWTON_STEPS = 6
 _GRID = 2 * np.pi * np.arange(3) / 3
 _FIT = np.linalg.inv(np.stack([np.ones(3), np.cos(_GRID), np.sin(_GRID)], axis=1))
 
+_FIT2 = np.kron(_FIT, _FIT)
+_FIT3 = np.kron(_FIT2, _FIT)
+
 #: (1, cos, sin) times 1 + x^2 as polynomials in x = tan(angle / 2): rows 1, cos,
 #: sin; columns the coefficients of x^0, x^1, x^2.
 _TO_POLY = np.array([[1.0, 0.0, 1.0], [1.0, 0.0, -1.0], [0.0, 2.0, 0.0]])
+_TO_POLY3 = np.kron(np.kron(_TO_POLY, _TO_POLY), _TO_POLY)
 
 #: The angle shifts of the three tries of a formulation (rad), fixed so that the
 #: answers are reproducible; any values away from multiples of pi would do.
@@ -75,6 +80,9 @@ _SHIFTS = np.array(
         [0.7713, 1.4891, -1.0437, 0.6109, 0.1931, 0.0],
     ]
 )
+
+
+_RANK_REASON = "joints 1 and 2 do not enter the 14 equations independently"
 
 
 @dataclass
@@ -107,34 +115,40 @@ class GeneralIK:
 
 
 def _turn(w, r, angle, x, point):
-    """x (..., 3) turned by ``angle`` (...) about the axis through r along unit w; a
-    point if ``point``, else a direction. Rodrigues' formula."""
+    """x (3, m) turned by ``angle`` (m,) about the axis through r along unit w (3,);
+    a point if ``point``, else a direction. Rodrigues' formula."""
+    w, r = w[:, None], r[:, None]
     d = x - r if point else x
-    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
-    turned = d * c + np.cross(w, d) * s + w * (d @ w)[..., None] * (1 - c)
+    c, s = np.cos(angle), np.sin(angle)
+    turned = d * c + _cross(w, d) * s + w * (np.sum(w * d, axis=0) * (1 - c))
     return turned + r if point else turned
 
 
 def _products(p, l):
-    """The 14 Raghavan–Roth quantities of a point p and a direction l (..., 3)."""
-    pp = np.sum(p * p, axis=-1)[..., None]
-    pl = np.sum(p * l, axis=-1)[..., None]
-    return np.concatenate([p, l, pp, pl, np.cross(p, l), pp * l - 2 * pl * p], axis=-1)
+    """The 14 Raghavan–Roth quantities (14, m) of points p and directions l
+    (3, m)."""
+    pp = np.sum(p * p, axis=0)
+    pl = np.sum(p * l, axis=0)
+    return np.concatenate([p, l, [pp, pl], _cross(p, l), pp * l - 2 * pl * p])
 
 
-def _left(w, r, p6, w6, q3, q4, q5):
-    """E3 E4 E5 applied to (p6, w6): the 14 quantities (..., 14)."""
-    p, l = p6, w6
+def _left(w, r, q3, q4, q5):
+    """E3 E4 E5 applied to axis 6's point and direction (r[5], w[5]): the 14
+    quantities (14, m) at the angles (m,)."""
+    p = np.repeat(r[5][:, None], len(q3), axis=1)
+    l = np.repeat(w[5][:, None], len(q3), axis=1)
     for k, q in ((4, q5), (3, q4), (2, q3)):
-        p = _turn(w[k], r[k], q, p, True)
-        l = _turn(w[k], r[k], q, l, False)
+        p, l = _turn(w[k], r[k], q, p, True), _turn(w[k], r[k], q, l, False)
     return _products(p, l)
 
 
 def _right(w, r, hp, hl, q1, q2):
-    """E2^-1 E1^-1 applied to G (p6, w6) = (hp, hl): the 14 quantities (..., 14)."""
-    p = _turn(w[1], r[1], -q2, _turn(w[0], r[0], -q1, hp, True), True)
-    l = _turn(w[1], r[1], -q2, _turn(w[0], r[0], -q1, hl, False), False)
+    """E2^-1 E1^-1 applied to G's image (hp, hl) of axis 6's point and direction:
+    the 14 quantities (14, m) at the angles (m,)."""
+    p = np.repeat(hp[:, None], len(q1), axis=1)
+    l = np.repeat(hl[:, None], len(q1), axis=1)
+    for k, q in ((0, q1), (1, q2)):
+        p, l = _turn(w[k], r[k], -q, p, True), _turn(w[k], r[k], -q, l, False)
     return _products(p, l)
 
 
@@ -149,25 +163,18 @@ def _companion(w, r, G, shift):
     tan(phi_3 / 2), Q (14, 8) and C0 (14,) the right side's coefficients (for q1,
     q2); A is None with a reason when this formulation is degenerate.
     """
-    p6, w6 = r[5], w[5]
-    hp, hl = G[:3, :3] @ p6 + G[:3, 3], G[:3, :3] @ w6
-    g = _GRID
-    a1, a2 = np.meshgrid(g + shift[0], g + shift[1], indexing="ij")
-    right = np.einsum("ai,bj,ije->eab", _FIT, _FIT, _right(w, r, hp, hl, a1, a2))
-    right = right.reshape(14, 9)
+    hp, hl = G[:3, :3] @ r[5] + G[:3, 3], G[:3, :3] @ w[5]
+    a1, a2 = (a.ravel() for a in np.meshgrid(*_GRID + shift[:2, None], indexing="ij"))
+    right = _right(w, r, hp, hl, a1, a2) @ _FIT2.T  # (14, 9) coefficients
     C0, Q = right[:, 0], right[:, 1:]
     U, sigma, _ = np.linalg.svd(Q)
     if sigma[-1] <= IK_GENERAL_RANK_TOL * sigma[0]:
-        return None, Q, C0, "joints 1 and 2 do not enter the 14 equations independently"
+        return None, Q, C0, _RANK_REASON
     N = U[:, 8:].T  # (6, 14): N Q = 0
-    a3, a4, a5 = np.meshgrid(*(g + shift[k] for k in (2, 3, 4)), indexing="ij")
-    left = np.einsum(
-        "ai,bj,ck,ijke->eabc", _FIT, _FIT, _FIT, _left(w, r, p6, w6, a3, a4, a5)
-    )
-    left[:, 0, 0, 0] -= C0
-    poly = np.einsum(
-        "fe,eabc,ai,bj,ck->fijk", N, left, _TO_POLY, _TO_POLY, _TO_POLY
-    )  # (6, power of x3, power of x4, power of x5)
+    left = _left_coefficients(w[2:], r[2:], shift[2:5].tobytes()).copy()
+    left[:, 0] -= C0
+    # (6, power of x3, power of x4, power of x5)
+    poly = (N @ left @ _TO_POLY3).reshape(6, 3, 3, 3)
     M = np.zeros((3, 12, 4, 3))
     M[:, :6, :3, :] = poly.transpose(1, 0, 2, 3)
     M[:, 6:, 1:, :] = poly.transpose(1, 0, 2, 3)
@@ -182,6 +189,30 @@ def _companion(w, r, G, shift):
     A[12:, :12] = -solved[:, :12]
     A[12:, 12:] = -solved[:, 12:]
     return A, Q, C0, None
+
+
+@functools.lru_cache(maxsize=64)
+def _left_coefficients_cached(w, r, shift):
+    """_left_coefficients on bytes (hashable), cached: joints 3 to 6 of a chain's
+    first formulation do not depend on the pose."""
+    w, r = np.frombuffer(w).reshape(4, 3), np.frombuffer(r).reshape(4, 3)
+    a3, a4, a5 = (
+        a.ravel()
+        for a in np.meshgrid(*_GRID + np.frombuffer(shift)[:, None], indexing="ij")
+    )
+    pad = np.zeros((2, 3))
+    left = _left(np.vstack([pad, w]), np.vstack([pad, r]), a3, a4, a5) @ _FIT3.T
+    left.setflags(write=False)
+    return left
+
+
+def _left_coefficients(w, r, shift):
+    """The left side's coefficients (14, 27) in (1, c3, s3) x (1, c4, s4) x
+    (1, c5, s5), from joints 3 to 6 (axes w, points r, (4, 3)) and the shifts of
+    q3, q4, q5 (bytes)."""
+    return _left_coefficients_cached(
+        np.ascontiguousarray(w).tobytes(), np.ascontiguousarray(r).tobytes(), shift
+    )
 
 
 def _half_angle(x):
@@ -212,7 +243,7 @@ def _candidates(w, r, G, shift):
     q4 = _half_angle(x4.real) + shift[3]
     q5 = _half_angle(x5.real) + shift[4]
     # q1, q2: the right side's 8 products from the 14 values of the left side
-    b = np.linalg.lstsq(Q, (_left(w, r, r[5], w[5], q3, q4, q5) - C0).T, rcond=None)[0]
+    b = np.linalg.lstsq(Q, _left(w, r, q3, q4, q5) - C0[:, None], rcond=None)[0]
     # b's rows: (1, c1, s1) x (1, c2, s2) without the first, in that order
     q1 = np.arctan2(b[5], b[2]) + shift[0]
     q2 = np.arctan2(b[1], b[0]) + shift[1]
@@ -228,10 +259,10 @@ def _last_angle(w, r, G, q):
     if np.linalg.norm(u) < 0.5:
         u = np.cross(w6, [0.0, 1.0, 0.0])
     u = u / np.linalg.norm(u)
-    Gu = np.broadcast_to(G[:3, :3] @ u, (q.shape[0], 3))
+    Gu = np.repeat((G[:3, :3] @ u)[:, None], q.shape[0], axis=1)
     for k in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
         Gu = _turn(w[k], r[k], -q[:, k], Gu, False)
-    return np.arctan2(Gu @ np.cross(w6, u), Gu @ u)
+    return np.arctan2(np.cross(w6, u) @ Gu, u @ Gu)
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -265,24 +296,39 @@ def _formulations(S, G):
 # ---- the public function ------------------------------------------------------------
 
 
-def _error(chain, T, q, scale):
-    """The error twists (k, 6) [omega; v] from T(q) to T and their norms with v
-    divided by ``scale``."""
-    V = log_transform(inv(chain.fk(q)) @ T)
-    return V, np.hypot(
+def _residuals(V, scale):
+    """The norms (k,) of error twists V (k, 6) [omega; v] with v divided by
+    ``scale``."""
+    return np.hypot(
         np.linalg.norm(V[:, :3], axis=1), np.linalg.norm(V[:, 3:], axis=1) / scale
     )
 
 
 def _polish(chain, T, q, scale):
     """Newton steps on the pose from the candidates q (k, 6); returns q and the
-    residuals."""
+    residuals (of the exact error twist, log(T(q)^-1 T)).
+
+    A step solves J_b dq = e with e = (vee of the skew part of R(q)^T R,
+    R(q)^T (p - p(q))): the error twist to first order, with the same Jacobian at a
+    solution, so the convergence stays quadratic without a logarithm per step."""
+    R, p = T[:3, :3], T[:3, 3]
     for _ in range(NEWTON_STEPS):
-        V, residual = _error(chain, T, q, scale)
-        if np.all(residual <= IK_GENERAL_ACCEPT_TOL * 1e-3):
+        Tq = chain.fk(q)
+        Rt = np.swapaxes(Tq[:, :3, :3], 1, 2)
+        E = Rt @ R
+        e = np.concatenate(
+            [
+                np.stack([E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0],
+                          E[:, 1, 0] - E[:, 0, 1]], axis=1) / 2,
+                (Rt @ (p - Tq[:, :3, 3])[..., None])[..., 0],
+            ],
+            axis=1,
+        )
+        if np.all(_residuals(e, scale) <= IK_GENERAL_ACCEPT_TOL * 1e-3):
             break
-        q = q + (np.linalg.pinv(chain.body_jacobian(q)) @ V[..., None])[..., 0]
-    return q, _error(chain, T, q, scale)[1]
+        q = q + (np.linalg.pinv(chain.body_jacobian(q)) @ e[..., None])[..., 0]
+    V = log_transform(inv(chain.fk(q)) @ T)
+    return q, _residuals(V, scale)
 
 
 def _distinct(Q, residuals):
@@ -345,13 +391,14 @@ def general_6r_ik(chain, T):
     G = T @ inv(M)
     G[:3, 3] /= scale
     reasons = []
-    for name, screws, target, order, sign in _formulations(Sn, G):
+    # a singular leading matrix from special geometry stays singular at any shift:
+    # every formulation is tried at the first shift before another shift is
+    for shift, (name, screws, target, order, sign) in (
+        (shift, form) for shift in _SHIFTS for form in _formulations(Sn, G)
+    ):
         w = screws[:, :3]
         r = np.cross(w, screws[:, 3:])  # the point of each axis nearest the origin
-        for shift in _SHIFTS:
-            phi, reason = _candidates(w, r, target, shift)
-            if phi is not None:
-                break
+        phi, reason = _candidates(w, r, target, shift)
         if phi is None:
             reasons.append(f"{name}: {reason}")
             continue
