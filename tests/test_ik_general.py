@@ -233,7 +233,8 @@ def test_a_chain_from_screws_with_base_and_tool():
     result = general_6r_ik(screws, T)
     assert result.reason is None and contains(result.Q, q)
     np.testing.assert_allclose(
-        base @ dh_fk(table, result.Q) @ tool, np.broadcast_to(T, (len(result.Q), 4, 4)),
+        base @ dh_fk(table, result.Q) @ tool,
+        np.broadcast_to(T, (len(result.Q), 4, 4)),
         atol=1e-9,
     )
 

@@ -64,6 +64,7 @@ ORDER = [
             "ik.ur",
             "ik.stanford",
             "ik.dispatch",
+            "ik.general",
             "acceleration",
             "trajectory",
             "differential_ik",

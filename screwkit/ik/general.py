@@ -40,8 +40,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_chain, check_poses
-from ..links import Joint
 from ..lie import log_transform
+from ..links import Joint
 from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
     IK_GENERAL_LEADING_TOL,
@@ -318,8 +318,15 @@ def _polish(chain, T, q, scale):
         E = Rt @ R
         e = np.concatenate(
             [
-                np.stack([E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0],
-                          E[:, 1, 0] - E[:, 0, 1]], axis=1) / 2,
+                np.stack(
+                    [
+                        E[:, 2, 1] - E[:, 1, 2],
+                        E[:, 0, 2] - E[:, 2, 0],
+                        E[:, 1, 0] - E[:, 0, 1],
+                    ],
+                    axis=1,
+                )
+                / 2,
                 (Rt @ (p - Tq[:, :3, 3])[..., None])[..., 0],
             ],
             axis=1,
