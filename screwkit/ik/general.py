@@ -296,46 +296,63 @@ def _formulations(S, G):
 # ---- the public function ------------------------------------------------------------
 
 
-def _residuals(V, scale):
-    """The norms (k,) of error twists V (k, 6) [omega; v] with v divided by
-    ``scale``."""
+def _rotations(w, angle):
+    """Rotations (k, 3, 3) by ``angle`` (k,) about the unit axis w (3,)."""
+    K = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+    s, c = np.sin(angle)[:, None, None], np.cos(angle)[:, None, None]
+    return np.eye(3) + s * K + (1 - c) * (K @ K)
+
+
+def _poe(w, r, home, q):
+    """The pose exp([S1] q1) ... exp([S6] q6) M (rotation (k, 3, 3), position (k, 3))
+    and the space Jacobian (k, 6, 6), [omega; v] rows, of the axes (w, r)."""
+    R = np.broadcast_to(np.eye(3), (len(q), 3, 3))
+    p = np.zeros((len(q), 3))
+    J = np.empty((len(q), 6, 6))
+    for i in range(6):
+        wi, ri = R @ w[i], R @ r[i] + p
+        J[:, :3, i], J[:, 3:, i] = wi, np.cross(ri, wi)
+        Ri = _rotations(w[i], q[:, i])
+        p = p + (R @ (r[i] - Ri @ r[i])[..., None])[..., 0]
+        R = R @ Ri
+    return R @ home[:3, :3], R @ home[:3, 3] + p, J
+
+
+def _polish(w, r, home, target, q):
+    """Newton steps on the pose from the candidates q (k, 6), lengths divided by the
+    chain's size.
+
+    A step solves J_s dq = e, e = (omega, dp - omega x p): omega the vee of the skew
+    part of R* R(q)^T, dp the position error, the spatial error twist to first order
+    with the same Jacobian at a solution (quadratic convergence, no logarithm)."""
+    for _ in range(NEWTON_STEPS):
+        R, p, J = _poe(w, r, home, q)
+        E = target[:3, :3] @ np.swapaxes(R, 1, 2)
+        omega = (
+            np.stack(
+                [
+                    E[:, 2, 1] - E[:, 1, 2],
+                    E[:, 0, 2] - E[:, 2, 0],
+                    E[:, 1, 0] - E[:, 0, 1],
+                ],
+                axis=1,
+            )
+            / 2
+        )
+        e = np.concatenate([omega, target[:3, 3] - p - np.cross(omega, p)], axis=1)
+        if np.all(np.linalg.norm(e, axis=1) <= IK_GENERAL_ACCEPT_TOL * 1e-3):
+            break
+        q = q + (np.linalg.pinv(J) @ e[..., None])[..., 0]
+    return q
+
+
+def _residuals(chain, T, q, scale):
+    """The norms (k,) of the error twists log(T(q)^-1 T) [omega; v / scale], by the
+    chain's own forward kinematics."""
+    V = log_transform(inv(chain.fk(q)) @ T)
     return np.hypot(
         np.linalg.norm(V[:, :3], axis=1), np.linalg.norm(V[:, 3:], axis=1) / scale
     )
-
-
-def _polish(chain, T, q, scale):
-    """Newton steps on the pose from the candidates q (k, 6); returns q and the
-    residuals (of the exact error twist, log(T(q)^-1 T)).
-
-    A step solves J_b dq = e with e = (vee of the skew part of R(q)^T R,
-    R(q)^T (p - p(q))): the error twist to first order, with the same Jacobian at a
-    solution, so the convergence stays quadratic without a logarithm per step."""
-    R, p = T[:3, :3], T[:3, 3]
-    for _ in range(NEWTON_STEPS):
-        Tq = chain.fk(q)
-        Rt = np.swapaxes(Tq[:, :3, :3], 1, 2)
-        E = Rt @ R
-        e = np.concatenate(
-            [
-                np.stack(
-                    [
-                        E[:, 2, 1] - E[:, 1, 2],
-                        E[:, 0, 2] - E[:, 2, 0],
-                        E[:, 1, 0] - E[:, 0, 1],
-                    ],
-                    axis=1,
-                )
-                / 2,
-                (Rt @ (p - Tq[:, :3, 3])[..., None])[..., 0],
-            ],
-            axis=1,
-        )
-        if np.all(_residuals(e, scale) <= IK_GENERAL_ACCEPT_TOL * 1e-3):
-            break
-        q = q + (np.linalg.pinv(chain.body_jacobian(q)) @ e[..., None])[..., 0]
-    V = log_transform(inv(chain.fk(q)) @ T)
-    return q, _residuals(V, scale)
 
 
 def _distinct(Q, residuals):
@@ -391,12 +408,14 @@ def general_6r_ik(chain, T):
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
     T = check_poses(T, "T", single_only=True)
-    S, M = chain.screw_axes(), chain.home()
-    scale = length_scale(S[:, 3:], M[:3, 3])
-    Sn = S.copy()
-    Sn[:, 3:] /= scale
-    G = T @ inv(M)
-    G[:3, 3] /= scale
+    z, o = chain.joint_axes(np.zeros(6))
+    M = chain.fk(np.zeros(6))
+    scale = length_scale(o, M[:3, 3])
+    M_scaled, T_scaled = M.copy(), T.copy()
+    M_scaled[:3, 3] /= scale
+    T_scaled[:3, 3] /= scale
+    Sn = np.concatenate([z, np.cross(o / scale, z)], axis=1)  # unit screws (w; r x w)
+    G = T_scaled @ inv(M_scaled)
     reasons = []
     # a singular leading matrix from special geometry stays singular at any shift:
     # every formulation is tried at the first shift before another shift is
@@ -411,7 +430,8 @@ def general_6r_ik(chain, T):
             continue
         q = np.empty_like(phi)
         q[:, order] = sign * phi
-        q, residuals = _polish(chain, T, q, scale)
+        q = _polish(z, o / scale, M_scaled, T_scaled, q)
+        residuals = _residuals(chain, T, q, scale)
         good = residuals <= IK_GENERAL_ACCEPT_TOL
         Q, residuals = _distinct(_wrap_angle(q[good]), residuals[good])
         reason = None if len(Q) else "no real solution: the pose is out of reach"
