@@ -211,6 +211,12 @@ IK_GENERAL_ACCEPT_TOL = 1e-10
 #: far more.
 IK_GENERAL_SAME_TOL = 1e-7
 
+#: A solution is at a singular configuration (the answer says so: solutions may
+#: coincide or form a continuum there) when the smallest singular value of its space
+#: Jacobian (lengths divided by the chain's size) is below this fraction of the
+#: largest: a generic solution's ratio is above 1e-3, one on aligned axes 1e-16.
+IK_GENERAL_SINGULAR_TOL = 1e-8
+
 # ---- parallel: model, legs, numerics, search ----------------------------------------
 # A length below is written for a mechanism about 1 m across and used times the
 # mechanism's own size (ParallelManipulator.scale, the farthest attachment point from

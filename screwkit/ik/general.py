@@ -40,7 +40,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_chain, check_poses
-from ..lie import log_transform
 from ..links import Joint
 from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
@@ -48,6 +47,7 @@ from ..tolerances import (
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
+    IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
 from ..transforms import _cross, _wrap_angle, inv
@@ -95,11 +95,14 @@ class GeneralIK:
         Every real solution found (rad, each in (-pi, pi]), sorted lexicographically;
         k is at most 16 (0 for a pose out of reach or a degenerate arm).
     residuals : ndarray, shape (k,)
-        The pose error of each solution after polishing: the norm of the error twist
-        [omega; v / scale] (rad; v divided by the chain's size, so unitless).
+        The pose error of each solution after polishing:
+        sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2) by the chain's own ``fk``, the
+        norm of the error twist [omega; v / scale] to first order (unitless: lengths
+        divided by the chain's size).
     reason : str or None
-        None when solved; otherwise a sentence (no real solution, or why the
-        elimination could not be set up for this arm).
+        None when solved; otherwise a sentence: no real solution, a solution at a
+        singular configuration (solutions may coincide or form a continuum there),
+        or why the elimination could not be set up for this arm and pose.
     formulation : str
         The form of the loop that was solved, e.g. 'joints 1..6' or
         'joints 6..1 shifted by 2' (for the record; '' when none worked).
@@ -112,6 +115,15 @@ class GeneralIK:
 
 
 # ---- the loop's two sides -----------------------------------------------------------
+
+
+def _cross3(a, b):
+    """a x b along the last axis (..., 3): np.cross without its axis handling, which
+    costs more than the product for the few small arrays here."""
+    return a[..., _NEXT] * b[..., _LAST] - a[..., _LAST] * b[..., _NEXT]
+
+
+_NEXT, _LAST = [1, 2, 0], [2, 0, 1]
 
 
 def _turn(w, r, angle, x, point):
@@ -132,13 +144,25 @@ def _products(p, l):
     return np.concatenate([p, l, [pp, pl], _cross(p, l), pp * l - 2 * pl * p])
 
 
+def _turn_both(w, r, angle, p, l):
+    """Points p and directions l (3, m) turned by ``angle`` (m,) about the axis through
+    r along unit w (3,), in one Rodrigues step."""
+    m = p.shape[1]
+    x = np.concatenate([p - r[:, None], l], axis=1)
+    angle = np.concatenate([angle, angle])
+    w = w[:, None]
+    c, s = np.cos(angle), np.sin(angle)
+    x = x * c + _cross(w, x) * s + w * (np.sum(w * x, axis=0) * (1 - c))
+    return x[:, :m] + r[:, None], x[:, m:]
+
+
 def _left(w, r, q3, q4, q5):
     """E3 E4 E5 applied to axis 6's point and direction (r[5], w[5]): the 14
     quantities (14, m) at the angles (m,)."""
     p = np.repeat(r[5][:, None], len(q3), axis=1)
     l = np.repeat(w[5][:, None], len(q3), axis=1)
     for k, q in ((4, q5), (3, q4), (2, q3)):
-        p, l = _turn(w[k], r[k], q, p, True), _turn(w[k], r[k], q, l, False)
+        p, l = _turn_both(w[k], r[k], q, p, l)
     return _products(p, l)
 
 
@@ -148,7 +172,7 @@ def _right(w, r, hp, hl, q1, q2):
     p = np.repeat(hp[:, None], len(q1), axis=1)
     l = np.repeat(hl[:, None], len(q1), axis=1)
     for k, q in ((0, q1), (1, q2)):
-        p, l = _turn(w[k], r[k], -q, p, True), _turn(w[k], r[k], -q, l, False)
+        p, l = _turn_both(w[k], r[k], -q, p, l)
     return _products(p, l)
 
 
@@ -255,14 +279,14 @@ def _candidates(w, r, G, shift):
 def _last_angle(w, r, G, q):
     """q6 (k,) from q1..q5: the rotation E6 = (E1 ... E5)^-1 G about axis 6."""
     w6 = w[5]
-    u = np.cross(w6, [1.0, 0.0, 0.0])
+    u = _cross3(w6, np.array([1.0, 0.0, 0.0]))
     if np.linalg.norm(u) < 0.5:
-        u = np.cross(w6, [0.0, 1.0, 0.0])
+        u = _cross3(w6, np.array([0.0, 1.0, 0.0]))
     u = u / np.linalg.norm(u)
     Gu = np.repeat((G[:3, :3] @ u)[:, None], q.shape[0], axis=1)
     for k in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
         Gu = _turn(w[k], r[k], -q[:, k], Gu, False)
-    return np.arctan2(np.cross(w6, u) @ Gu, u @ Gu)
+    return np.arctan2(_cross3(w6, u) @ Gu, u @ Gu)
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -272,25 +296,31 @@ def _adjoint_inverse(G, S):
     """Ad(G^-1) applied to screws S (k, 6) [omega; v]."""
     R, p = G[:3, :3], G[:3, 3]
     w = S[:, :3] @ R  # R^T omega
-    v = (S[:, 3:] - np.cross(p, S[:, :3])) @ R
+    v = (S[:, 3:] - _cross3(p, S[:, :3])) @ R
     return np.concatenate([w, v], axis=1)
 
 
-def _formulations(S, G):
-    """(name, screws, target, joint order, sign) of the twelve forms of the loop."""
-    for backwards in (False, True):
-        screws, target = (-S[::-1], inv(G)) if backwards else (S, G)
-        order = np.arange(6)[::-1] if backwards else np.arange(6)
-        for k in range(6):
-            moved = np.concatenate([screws[k:], _adjoint_inverse(target, screws[:k])])
-            name = "joints " + ("6..1" if backwards else "1..6")
-            yield (
-                name + (f" shifted by {k}" if k else ""),
-                moved,
-                target,
-                np.roll(order, -k),
-                -1.0 if backwards else 1.0,
-            )
+def _formulation(S, G, index):
+    """(name, screws, target, joint order, sign) of form ``index`` (0 to 11) of the
+    loop: joints 1..6 (index < 6) or 6..1, cyclically shifted by index % 6."""
+    backwards, k = divmod(index, 6)
+    screws, target = (-S[::-1], inv(G)) if backwards else (S, G)
+    order = np.arange(6)[::-1] if backwards else np.arange(6)
+    moved = np.concatenate([screws[k:], _adjoint_inverse(target, screws[:k])])
+    name = "joints " + ("6..1" if backwards else "1..6")
+    return (
+        name + (f" shifted by {k}" if k else ""),
+        moved,
+        target,
+        np.roll(order, -k),
+        -1.0 if backwards else 1.0,
+    )
+
+
+#: The form that last solved a chain's pose, by the chain's axes (bytes): tried first
+#: next time, since special geometry makes the same forms degenerate for every pose.
+_LAST_FORM = {}
+_LAST_FORM_SIZE = 64
 
 
 # ---- the public function ------------------------------------------------------------
@@ -311,7 +341,7 @@ def _poe(w, r, home, q):
     J = np.empty((len(q), 6, 6))
     for i in range(6):
         wi, ri = R @ w[i], R @ r[i] + p
-        J[:, :3, i], J[:, 3:, i] = wi, np.cross(ri, wi)
+        J[:, :3, i], J[:, 3:, i] = wi, _cross3(ri, wi)
         Ri = _rotations(w[i], q[:, i])
         p = p + (R @ (r[i] - Ri @ r[i])[..., None])[..., 0]
         R = R @ Ri
@@ -325,8 +355,10 @@ def _polish(w, r, home, target, q):
     A step solves J_s dq = e, e = (omega, dp - omega x p): omega the vee of the skew
     part of R* R(q)^T, dp the position error, the spatial error twist to first order
     with the same Jacobian at a solution (quadratic convergence, no logarithm)."""
+    q = q.copy()
+    active = np.arange(len(q))
     for _ in range(NEWTON_STEPS):
-        R, p, J = _poe(w, r, home, q)
+        R, p, J = _poe(w, r, home, q[active])
         E = target[:3, :3] @ np.swapaxes(R, 1, 2)
         omega = (
             np.stack(
@@ -339,19 +371,39 @@ def _polish(w, r, home, target, q):
             )
             / 2
         )
-        e = np.concatenate([omega, target[:3, 3] - p - np.cross(omega, p)], axis=1)
-        if np.all(np.linalg.norm(e, axis=1) <= IK_GENERAL_ACCEPT_TOL * 1e-3):
+        e = np.concatenate([omega, target[:3, 3] - p - _cross3(omega, p)], axis=1)
+        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_ACCEPT_TOL * 1e-3
+        active, e, J = active[moving], e[moving], J[moving]
+        if not len(active):
             break
-        q = q + (np.linalg.pinv(J) @ e[..., None])[..., 0]
+        q[active] += (np.linalg.pinv(J) @ e[..., None])[..., 0]
     return q
 
 
 def _residuals(chain, T, q, scale):
-    """The norms (k,) of the error twists log(T(q)^-1 T) [omega; v / scale], by the
-    chain's own forward kinematics."""
-    V = log_transform(inv(chain.fk(q)) @ T)
-    return np.hypot(
-        np.linalg.norm(V[:, :3], axis=1), np.linalg.norm(V[:, 3:], axis=1) / scale
+    """The pose error (k,) of each q by the chain's own forward kinematics:
+    sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2), which is the norm of the error
+    twist [omega; v / scale] to first order (|R(q) - R|_F = 2 sqrt(2) sin(angle / 2))
+    and, unlike the skew part of R(q)^T R, vanishes only at the pose itself."""
+    Tq = chain.fk(q)
+    rotation = np.sum((Tq[:, :3, :3] - T[:3, :3]) ** 2, axis=(1, 2)) / 2
+    position = np.sum((Tq[:, :3, 3] - T[:3, 3]) ** 2, axis=1) / scale**2
+    return np.sqrt(rotation + position)
+
+
+def _say(w, r, home, Q):
+    """The reason of an answer: None for isolated solutions; a sentence for none or for
+    a solution where the Jacobian loses rank."""
+    if not len(Q):
+        return "no real solution: the pose is out of reach"
+    sigma = np.linalg.svd(_poe(w, r, home, Q)[2], compute_uv=False)
+    singular = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
+    if not np.any(singular):
+        return None
+    return (
+        f"{int(np.sum(singular))} of the {len(Q)} solutions are at a singular "
+        "configuration (the Jacobian loses rank): solutions there may coincide or "
+        "form a continuum (aligned axes), of which Q holds points only"
     )
 
 
@@ -414,32 +466,40 @@ def general_6r_ik(chain, T):
     M_scaled, T_scaled = M.copy(), T.copy()
     M_scaled[:3, 3] /= scale
     T_scaled[:3, 3] /= scale
-    Sn = np.concatenate([z, np.cross(o / scale, z)], axis=1)  # unit screws (w; r x w)
+    Sn = np.concatenate([z, _cross3(o / scale, z)], axis=1)  # unit screws (w; r x w)
     G = T_scaled @ inv(M_scaled)
     reasons = []
     # a singular leading matrix from special geometry stays singular at any shift:
-    # every formulation is tried at the first shift before another shift is
-    for shift, (name, screws, target, order, sign) in (
-        (shift, form) for shift in _SHIFTS for form in _formulations(Sn, G)
-    ):
+    # every form is tried at the first shift before another shift is
+    key = Sn.tobytes()
+    tries = [(s, f) for s in range(len(_SHIFTS)) for f in range(12)]
+    if key in _LAST_FORM:
+        tries.remove(_LAST_FORM[key])
+        tries.insert(0, _LAST_FORM[key])
+    for attempt in tries:
+        shift = _SHIFTS[attempt[0]]
+        name, screws, target, order, sign = _formulation(Sn, G, attempt[1])
         w = screws[:, :3]
-        r = np.cross(w, screws[:, 3:])  # the point of each axis nearest the origin
+        r = _cross3(w, screws[:, 3:])  # the point of each axis nearest the origin
         phi, reason = _candidates(w, r, target, shift)
         if phi is None:
             reasons.append(f"{name}: {reason}")
             continue
+        if len(_LAST_FORM) >= _LAST_FORM_SIZE:
+            _LAST_FORM.clear()
+        _LAST_FORM[key] = attempt
         q = np.empty_like(phi)
         q[:, order] = sign * phi
         q = _polish(z, o / scale, M_scaled, T_scaled, q)
         residuals = _residuals(chain, T, q, scale)
         good = residuals <= IK_GENERAL_ACCEPT_TOL
         Q, residuals = _distinct(_wrap_angle(q[good]), residuals[good])
-        reason = None if len(Q) else "no real solution: the pose is out of reach"
-        return GeneralIK(Q, residuals, reason, name)
+        return GeneralIK(Q, residuals, _say(z, o / scale, M_scaled, Q), name)
     return GeneralIK(
         np.zeros((0, 6)),
         np.zeros(0),
-        "every form of the elimination is degenerate for this arm ("
+        "every form of the elimination is degenerate for this arm and pose (special "
+        "geometry, or solutions that form a continuum, e.g. along aligned axes): "
         + "; ".join(reasons[:2])
-        + ", ...)",
+        + "; ...",
     )
