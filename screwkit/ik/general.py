@@ -35,6 +35,7 @@ degenerate the answer says so (a reason, no solutions) rather than give a wrong 
 """
 
 import functools
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,7 +51,7 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _wrap_angle, inv
+from ..transforms import _cross, _wrap_angle
 
 __all__ = ["GeneralIK", "general_6r_ik"]
 
@@ -63,6 +64,9 @@ NEWTON_STEPS = 6
 _GRID = 2 * np.pi * np.arange(3) / 3
 _FIT = np.linalg.inv(np.stack([np.ones(3), np.cos(_GRID), np.sin(_GRID)], axis=1))
 
+#: The grid's angles for two and three joints, first joint slowest (ravelled).
+_GRID2 = np.stack([a.ravel() for a in np.meshgrid(_GRID, _GRID, indexing="ij")])
+_GRID3 = np.stack([a.ravel() for a in np.meshgrid(_GRID, _GRID, _GRID, indexing="ij")])
 _FIT2 = np.kron(_FIT, _FIT)
 _FIT3 = np.kron(_FIT2, _FIT)
 
@@ -188,7 +192,7 @@ def _companion(w, r, G, shift):
     q2); A is None with a reason when this formulation is degenerate.
     """
     hp, hl = G[:3, :3] @ r[5] + G[:3, 3], G[:3, :3] @ w[5]
-    a1, a2 = (a.ravel() for a in np.meshgrid(*_GRID + shift[:2, None], indexing="ij"))
+    a1, a2 = _GRID2 + shift[:2, None]
     right = _right(w, r, hp, hl, a1, a2) @ _FIT2.T  # (14, 9) coefficients
     C0, Q = right[:, 0], right[:, 1:]
     U, sigma, _ = np.linalg.svd(Q)
@@ -220,10 +224,7 @@ def _left_coefficients_cached(w, r, shift):
     """_left_coefficients on bytes (hashable), cached: joints 3 to 6 of a chain's
     first formulation do not depend on the pose."""
     w, r = np.frombuffer(w).reshape(4, 3), np.frombuffer(r).reshape(4, 3)
-    a3, a4, a5 = (
-        a.ravel()
-        for a in np.meshgrid(*_GRID + np.frombuffer(shift)[:, None], indexing="ij")
-    )
+    a3, a4, a5 = _GRID3 + np.frombuffer(shift)[:, None]
     pad = np.zeros((2, 3))
     left = _left(np.vstack([pad, w]), np.vstack([pad, r]), a3, a4, a5) @ _FIT3.T
     left.setflags(write=False)
@@ -292,6 +293,14 @@ def _last_angle(w, r, G, q):
 # ---- the twelve formulations ---------------------------------------------------------
 
 
+def _inverse(T):
+    """The inverse of a rigid transform (4, 4), unchecked."""
+    inverse = np.eye(4)
+    inverse[:3, :3] = T[:3, :3].T
+    inverse[:3, 3] = -T[:3, :3].T @ T[:3, 3]
+    return inverse
+
+
 def _adjoint_inverse(G, S):
     """Ad(G^-1) applied to screws S (k, 6) [omega; v]."""
     R, p = G[:3, :3], G[:3, 3]
@@ -304,7 +313,7 @@ def _formulation(S, G, index):
     """(name, screws, target, joint order, sign) of form ``index`` (0 to 11) of the
     loop: joints 1..6 (index < 6) or 6..1, cyclically shifted by index % 6."""
     backwards, k = divmod(index, 6)
-    screws, target = (-S[::-1], inv(G)) if backwards else (S, G)
+    screws, target = (-S[::-1], _inverse(G)) if backwards else (S, G)
     order = np.arange(6)[::-1] if backwards else np.arange(6)
     moved = np.concatenate([screws[k:], _adjoint_inverse(target, screws[:k])])
     name = "joints " + ("6..1" if backwards else "1..6")
@@ -315,6 +324,19 @@ def _formulation(S, G, index):
         np.roll(order, -k),
         -1.0 if backwards else 1.0,
     )
+
+
+#: Each chain's joint axes (directions, points) and home pose at q = 0, kept while
+#: the chain lives (a chain is immutable).
+_GEOMETRY = weakref.WeakKeyDictionary()
+
+
+def _geometry(chain):
+    """The axes z, o (6, 3) and the home pose M (4, 4) of a chain at q = 0 (m)."""
+    if chain not in _GEOMETRY:
+        z, o = chain.joint_axes(np.zeros(6))
+        _GEOMETRY[chain] = (z, o, chain.fk(np.zeros(6)))
+    return _GEOMETRY[chain]
 
 
 #: The form that last solved a chain's pose, by the chain's axes (bytes): tried first
@@ -410,11 +432,14 @@ def _say(w, r, home, Q):
 def _distinct(Q, residuals):
     """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
     lexicographically."""
+    order = np.argsort(residuals)
+    Q, residuals = Q[order], residuals[order]
+    same = np.max(np.abs(_wrap_angle(Q[:, None] - Q[None])), axis=2) <= (
+        IK_GENERAL_SAME_TOL
+    )
     keep = []
-    for i in np.argsort(residuals):
-        if all(
-            np.max(np.abs(_wrap_angle(Q[i] - Q[j]))) > IK_GENERAL_SAME_TOL for j in keep
-        ):
+    for i in range(len(Q)):
+        if not any(same[i, j] for j in keep):
             keep.append(i)
     Q, residuals = Q[keep], residuals[keep]
     order = np.lexsort(Q.T[::-1])
@@ -460,14 +485,13 @@ def general_6r_ik(chain, T):
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
     T = check_poses(T, "T", single_only=True)
-    z, o = chain.joint_axes(np.zeros(6))
-    M = chain.fk(np.zeros(6))
+    z, o, M = _geometry(chain)
     scale = length_scale(o, M[:3, 3])
     M_scaled, T_scaled = M.copy(), T.copy()
     M_scaled[:3, 3] /= scale
     T_scaled[:3, 3] /= scale
     Sn = np.concatenate([z, _cross3(o / scale, z)], axis=1)  # unit screws (w; r x w)
-    G = T_scaled @ inv(M_scaled)
+    G = T_scaled @ _inverse(M_scaled)
     reasons = []
     # a singular leading matrix from special geometry stays singular at any shift:
     # every form is tried at the first shift before another shift is
