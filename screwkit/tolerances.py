@@ -190,6 +190,14 @@ NEWTON_DAMPING = 1e-9
 #: is above 1e-3, one with aligned or meeting axes' exactly 0 to round-off (1e-16).
 IK_GENERAL_RANK_TOL = 1e-9
 
+#: A form of the elimination is well conditioned when both ratios above (Q's smallest
+#: to largest singular value, M2's smallest to the problem's largest entry) exceed
+#: this: on random arms they are above 3e-3 and 1e-5, on degenerate forms 1e-16. A
+#: form between the hard limits and this is used only when no other form is well
+#: conditioned (the best of them), so a nearly special arm is solved from its best
+#: form rather than its first.
+IK_GENERAL_COMFORT_TOL = 1e-6
+
 #: The leading 12 x 12 matrix M2 of the eigenvalue problem is invertible when its
 #: smallest singular value is above this fraction of the problem's largest entry;
 #: below it the problem is singular (det M(x) = 0 for every x, special geometry) or

@@ -44,6 +44,7 @@ from .._checks import check_chain, check_poses
 from ..links import Joint
 from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
+    IK_GENERAL_COMFORT_TOL,
     IK_GENERAL_LEADING_TOL,
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
@@ -197,7 +198,7 @@ def _companion(w, r, G, shift):
     C0, Q = right[:, 0], right[:, 1:]
     U, sigma, _ = np.linalg.svd(Q)
     if sigma[-1] <= IK_GENERAL_RANK_TOL * sigma[0]:
-        return None, Q, C0, _RANK_REASON
+        return None, Q, C0, _RANK_REASON, 0.0
     N = U[:, 8:].T  # (6, 14): N Q = 0
     left = _left_coefficients(w[2:], r[2:], shift[2:5].tobytes()).copy()
     left[:, 0] -= C0
@@ -210,13 +211,13 @@ def _companion(w, r, G, shift):
     sv = np.linalg.svd(M[2], compute_uv=False)
     size = max(np.abs(M).max(), 1.0)
     if sv[-1] <= IK_GENERAL_LEADING_TOL * size:
-        return None, Q, C0, "the eigenvalue problem's leading matrix is singular"
+        return None, Q, C0, "the eigenvalue problem's leading matrix is singular", 0.0
     solved = np.linalg.solve(M[2], np.concatenate([M[0], M[1]], axis=1))
     A = np.zeros((24, 24))
     A[:12, 12:] = np.eye(12)
     A[12:, :12] = -solved[:, :12]
     A[12:, 12:] = -solved[:, 12:]
-    return A, Q, C0, None
+    return A, Q, C0, None, min(sigma[-1] / sigma[0], sv[-1] / size)
 
 
 @functools.lru_cache(maxsize=64)
@@ -248,13 +249,13 @@ def _half_angle(x):
 def _candidates(w, r, G, shift):
     """Joint vectors (k, 6) of the loop E1 ... E6 = G from its eigenvalue problem,
     or (None, reason)."""
-    A, Q, C0, reason = _companion(w, r, G, shift)
+    A, Q, C0, reason, quality = _companion(w, r, G, shift)
     if A is None:
-        return None, reason
+        return None, reason, quality
     values, vectors = np.linalg.eig(A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     if not np.any(real):
-        return np.zeros((0, 6)), None
+        return np.zeros((0, 6)), None, quality
     x3, Z = values[real], vectors[:, real]
     # the eigenvector is (v, x3 v): take the better-scaled half
     V = np.where(np.abs(x3) <= 1, Z[:12], Z[12:]).T.reshape(-1, 4, 3)
@@ -274,7 +275,7 @@ def _candidates(w, r, G, shift):
     q2 = np.arctan2(b[1], b[0]) + shift[1]
     q = np.stack([q1, q2, q3, q4, q5, np.zeros_like(q1)], axis=1)
     q[:, 5] = _last_angle(w, r, G, q)
-    return q, None
+    return q, None, quality
 
 
 def _last_angle(w, r, G, q):
@@ -492,7 +493,21 @@ def general_6r_ik(chain, T):
     T_scaled[:3, 3] /= scale
     Sn = np.concatenate([z, _cross3(o / scale, z)], axis=1)  # unit screws (w; r x w)
     G = T_scaled @ _inverse(M_scaled)
-    reasons = []
+
+    def finish(attempt, phi, name, order, sign):
+        """The answer from the candidates phi of a form."""
+        if len(_LAST_FORM) >= _LAST_FORM_SIZE:
+            _LAST_FORM.clear()
+        _LAST_FORM[key] = attempt
+        q = np.empty_like(phi)
+        q[:, order] = sign * phi
+        q = _polish(z, o / scale, M_scaled, T_scaled, q)
+        residuals = _residuals(chain, T, q, scale)
+        good = residuals <= IK_GENERAL_ACCEPT_TOL
+        Q, residuals = _distinct(_wrap_angle(q[good]), residuals[good])
+        return GeneralIK(Q, residuals, _say(z, o / scale, M_scaled, Q), name)
+
+    reasons, fallback = [], None
     # a singular leading matrix from special geometry stays singular at any shift:
     # every form is tried at the first shift before another shift is
     key = Sn.tobytes()
@@ -505,20 +520,17 @@ def general_6r_ik(chain, T):
         name, screws, target, order, sign = _formulation(Sn, G, attempt[1])
         w = screws[:, :3]
         r = _cross3(w, screws[:, 3:])  # the point of each axis nearest the origin
-        phi, reason = _candidates(w, r, target, shift)
+        phi, reason, quality = _candidates(w, r, target, shift)
         if phi is None:
             reasons.append(f"{name}: {reason}")
             continue
-        if len(_LAST_FORM) >= _LAST_FORM_SIZE:
-            _LAST_FORM.clear()
-        _LAST_FORM[key] = attempt
-        q = np.empty_like(phi)
-        q[:, order] = sign * phi
-        q = _polish(z, o / scale, M_scaled, T_scaled, q)
-        residuals = _residuals(chain, T, q, scale)
-        good = residuals <= IK_GENERAL_ACCEPT_TOL
-        Q, residuals = _distinct(_wrap_angle(q[good]), residuals[good])
-        return GeneralIK(Q, residuals, _say(z, o / scale, M_scaled, Q), name)
+        if quality < IK_GENERAL_COMFORT_TOL:  # nearly degenerate: look on
+            if fallback is None or quality > fallback[0]:
+                fallback = (quality, attempt, phi, name, order, sign)
+            continue
+        return finish(attempt, phi, name, order, sign)
+    if fallback is not None:
+        return finish(*fallback[1:])
     return GeneralIK(
         np.zeros((0, 6)),
         np.zeros(0),
