@@ -209,6 +209,16 @@ IK_GENERAL_LEADING_TOL = 1e-10
 #: sqrt(eps) apart; Newton and the residual decide which candidates are solutions.
 IK_GENERAL_REAL_TOL = 1e-4
 
+#: Real eigenvalues x3 closer than this (relative to 1 + |x3|) are one repeated root:
+#: solutions sharing q3, whose eigenvectors mix. A repeated root with independent
+#: eigenvectors is computed to round-off (1e-14), distinct roots of a generic pose
+#: differ by far more; a false grouping costs only a few more candidates.
+IK_GENERAL_CLUSTER_TOL = 1e-6
+
+#: The null space of M(x3) at a repeated root: its singular values below this
+#: fraction of the largest (round-off, 1e-15, against 1e-4 or more for the others).
+IK_GENERAL_NULL_TOL = 1e-8
+
 #: A polished candidate is a solution when its error twist [omega; v / scale] has a
 #: norm below this: Newton from an eigenvalue reaches 1e-14, a candidate from a
 #: complex root or a spurious one stays far above.

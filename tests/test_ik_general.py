@@ -300,3 +300,31 @@ def test_an_arm_every_form_of_which_is_degenerate_gets_a_reason():
     result = general_6r_ik(chain, chain.fk([0.3, -0.2, 0.5, 0.1, -0.4, 0.7]))
     assert result.Q.shape == (0, 6)
     assert "degenerate" in result.reason
+
+
+def test_solutions_sharing_the_eigenvalue_joint_are_all_found():
+    # right angles and zero offsets: no form avoids a joint that pairs of solutions
+    # share, so the eigenvalue problem has repeated roots (their eigenvectors mix)
+    table = np.array(
+        [
+            [0.0, 0.0, -np.pi / 2],
+            [0.0, 0.0, np.pi / 2],
+            [0.3, 0.0, np.pi / 2],
+            [0.0, 0.0, np.pi / 2],
+            [-0.2, 0.4, -np.pi / 2],
+            [0.0, 0.25, np.pi / 2],
+        ]
+    )
+    chain = sk.Chain.from_table(np.column_stack([np.zeros(6), table]))
+    rng = np.random.default_rng(13)
+    for q in rng.uniform(-np.pi, np.pi, (3, 6)):
+        T = dh_fk(table, q)[0]
+        result = general_6r_ik(chain, T)
+        check_answer(result, table, T)
+        searched = multistart(table, T, seed=2)
+        assert len(searched) == len(result.Q)
+        for s in searched:
+            assert contains(result.Q, s)
+        # pairs share a joint angle: the repeated roots were there to separate
+        shared = np.abs(wrap(result.Q[:, None] - result.Q[None])) < SAME
+        assert np.any(shared.sum(axis=(0, 1)) > len(result.Q))

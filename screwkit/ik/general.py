@@ -55,8 +55,10 @@ from .._checks import check_chain, check_poses
 from ..links import Joint
 from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
+    IK_GENERAL_CLUSTER_TOL,
     IK_GENERAL_COMFORT_TOL,
     IK_GENERAL_LEADING_TOL,
+    IK_GENERAL_NULL_TOL,
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
@@ -209,7 +211,7 @@ def _companion(w, r, G, shift):
     C0, Q = right[:, 0], right[:, 1:]
     U, sigma, _ = np.linalg.svd(Q)
     if sigma[-1] <= IK_GENERAL_RANK_TOL * sigma[0]:
-        return None, Q, C0, _RANK_REASON, 0.0
+        return None, Q, C0, _RANK_REASON, 0.0, None
     N = U[:, 8:].T  # (6, 14): N Q = 0
     left = _left_coefficients(w[2:], r[2:], shift[2:5].tobytes()).copy()
     left[:, 0] -= C0
@@ -222,13 +224,14 @@ def _companion(w, r, G, shift):
     sv = np.linalg.svd(M[2], compute_uv=False)
     size = max(np.abs(M).max(), 1.0)
     if sv[-1] <= IK_GENERAL_LEADING_TOL * size:
-        return None, Q, C0, "the eigenvalue problem's leading matrix is singular", 0.0
+        reason = "the eigenvalue problem's leading matrix is singular"
+        return None, Q, C0, reason, 0.0, None
     solved = np.linalg.solve(M[2], np.concatenate([M[0], M[1]], axis=1))
     A = np.zeros((24, 24))
     A[:12, 12:] = np.eye(12)
     A[12:, :12] = -solved[:, :12]
     A[12:, 12:] = -solved[:, 12:]
-    return A, Q, C0, None, min(sigma[-1] / sigma[0], sv[-1] / size)
+    return A, Q, C0, None, min(sigma[-1] / sigma[0], sv[-1] / size), M
 
 
 @functools.lru_cache(maxsize=64)
@@ -257,10 +260,49 @@ def _half_angle(x):
     return 2 * np.arctan(x)
 
 
+#: Where the monomials x4^i x5^j (i <= 3, j <= 2; flat index 3 i + j) are, for the
+#: products of the 6 with i <= 2, j <= 1 by x4 and by x5.
+_LOW = np.array([3 * i + j for i in range(3) for j in range(2)])
+_TIMES_X4, _TIMES_X5 = _LOW + 3, _LOW + 1
+
+#: A fixed weight: two solutions that share x3 are told apart by x4 + _MIX x5.
+_MIX = 0.6180339887
+
+
+def _repeated_roots(M, x3, V):
+    """Eigenvectors V (k, 12) for the roots x3 (k,), with those of repeated roots
+    replaced.
+
+    Solutions that share q3 (e.g. two wrist configurations) give a repeated root whose
+    eigenvectors are any mixture of their monomial vectors. The null space B of
+    M(x3) holds them all; multiplying by x4 + _MIX x5 maps the monomials of low degree
+    onto others, (B[x4] + _MIX B[x5]) c = (x4 + _MIX x5) B[low] c, a small eigenvalue
+    problem whose eigenvectors c give the solutions' monomial vectors B c."""
+    order = np.argsort(x3.real)
+    x3, V = x3[order], V[order]
+    gaps = np.abs(np.diff(x3.real)) > IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x3[1:]))
+    starts = np.concatenate([[0], np.nonzero(gaps)[0] + 1, [len(x3)]])
+    roots, vectors = [x3], [V]
+    for a, b in zip(starts[:-1], starts[1:]):
+        if b - a < 2:
+            continue
+        x = float(np.mean(x3[a:b].real))
+        _, sigma, Vh = np.linalg.svd(M[0] + x * M[1] + x * x * M[2])
+        d = min(int(np.sum(sigma <= IK_GENERAL_NULL_TOL * sigma[0])), len(_LOW))
+        if d < 2:
+            continue
+        B = Vh[-d:].T
+        K = np.linalg.lstsq(B[_LOW], B[_TIMES_X4] + _MIX * B[_TIMES_X5], rcond=None)
+        C = np.linalg.eig(K[0])[1]
+        roots.append(np.full(d, x, dtype=complex))
+        vectors.append((B @ C).T)
+    return np.concatenate(roots), np.concatenate(vectors)
+
+
 def _candidates(w, r, G, shift):
     """Joint vectors (k, 6) of the loop E1 ... E6 = G from its eigenvalue problem,
     or (None, reason)."""
-    A, Q, C0, reason, quality = _companion(w, r, G, shift)
+    A, Q, C0, reason, quality, M = _companion(w, r, G, shift)
     if A is None:
         return None, reason, quality
     values, vectors = np.linalg.eig(A)
@@ -269,7 +311,9 @@ def _candidates(w, r, G, shift):
         return np.zeros((0, 6)), None, quality
     x3, Z = values[real], vectors[:, real]
     # the eigenvector is (v, x3 v): take the better-scaled half
-    V = np.where(np.abs(x3) <= 1, Z[:12], Z[12:]).T.reshape(-1, 4, 3)
+    V = np.where(np.abs(x3) <= 1, Z[:12], Z[12:]).T
+    x3, V = _repeated_roots(M, x3, V)
+    V = V.reshape(-1, 4, 3)
     x4 = np.sum(V[:, :-1].conj() * V[:, 1:], axis=(1, 2)) / np.sum(
         np.abs(V[:, :-1]) ** 2, axis=(1, 2)
     )
