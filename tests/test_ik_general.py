@@ -8,7 +8,7 @@ UR5e (``sk.ik.analytic_ik_all``) is a second, independent solver for those arms.
 The random-arm tests run a reduced set by default (the first 200 arms once for the
 generating configuration; 12 arms against the search), and the issue's full set
 (200 arms, 5 poses each, every one against the search) with
-``SCREWKIT_IK_GENERAL_FULL=1`` (212 tests, eleven minutes on a busy two-core machine).
+``SCREWKIT_IK_GENERAL_FULL=1`` (213 tests, 5 to 11 minutes on a busy two-core machine).
 The default run: the 200 arms take about 2 s of CPU, the file about 18 s wall on
 that machine.
 """
