@@ -207,6 +207,60 @@ IK_ACCEPT_TOL = 1e-9
 #: their joint angles differ by less than this (rad), wrapped.
 IK_DUPLICATE_TOL = 1e-7
 
+# The general 6R (:mod:`screwkit.ik.general`): lengths are divided by the chain's size
+# (length_scale of its screws' moments and home position) before the elimination, so
+# the constants below are relative.
+
+#: The right side's 14 x 8 coefficient matrix Q (joints 1 and 2) has full rank when
+#: its smallest singular value is above this fraction of its largest: a generic arm's
+#: is above 1e-3, one with aligned or meeting axes' exactly 0 to round-off (1e-16).
+IK_GENERAL_RANK_TOL = 1e-9
+
+#: A form of the elimination is well conditioned when both ratios above (Q's smallest
+#: to largest singular value, M2's smallest to the problem's largest entry) exceed
+#: this: on random arms they are above 3e-3 and 1e-5, on degenerate forms 1e-16. A
+#: form between the hard limits and this is used only when no other form is well
+#: conditioned (the best of them), so a nearly special arm is solved from its best
+#: form rather than its first.
+IK_GENERAL_COMFORT_TOL = 1e-6
+
+#: The leading 12 x 12 matrix M2 of the eigenvalue problem is invertible when its
+#: smallest singular value is above this fraction of the problem's largest entry;
+#: below it the problem is singular (det M(x) = 0 for every x, special geometry) or
+#: has a root at infinity, and another angle shift or formulation is tried.
+IK_GENERAL_LEADING_TOL = 1e-10
+
+#: An eigenvalue x = tan(q3 / 2) is a candidate when |Im x| is below this fraction of
+#: 1 + |x|: loose, because a double real root splits into a complex pair about
+#: sqrt(eps) apart; Newton and the residual decide which candidates are solutions.
+IK_GENERAL_REAL_TOL = 1e-4
+
+#: Real eigenvalues x3 closer than this (relative to 1 + |x3|) are one repeated root:
+#: solutions sharing q3, whose eigenvectors mix. A repeated root with independent
+#: eigenvectors is computed to round-off (1e-14), distinct roots of a generic pose
+#: differ by far more; a false grouping costs only a few more candidates.
+IK_GENERAL_CLUSTER_TOL = 1e-6
+
+#: The null space of M(x3) at a repeated root: its singular values below this
+#: fraction of the largest (round-off, 1e-15, against 1e-4 or more for the others).
+IK_GENERAL_NULL_TOL = 1e-8
+
+#: A polished candidate is a solution when its error twist [omega; v / scale] has a
+#: norm below this: Newton from an eigenvalue reaches 1e-14, a candidate from a
+#: complex root or a spurious one stays far above.
+IK_GENERAL_ACCEPT_TOL = 1e-10
+
+#: Two solutions are one when no joint angle differs by more than this (rad, modulo a
+#: turn): polished solutions agree to 1e-12, distinct ones of a generic pose differ by
+#: far more.
+IK_GENERAL_SAME_TOL = 1e-7
+
+#: A solution is at a singular configuration (the answer says so: solutions may
+#: coincide or form a continuum there) when the smallest singular value of its space
+#: Jacobian (lengths divided by the chain's size) is below this fraction of the
+#: largest: a generic solution's ratio is above 1e-3, one on aligned axes 1e-16.
+IK_GENERAL_SINGULAR_TOL = 1e-8
+
 # ---- parallel: model, legs, numerics, search ----------------------------------------
 # A length below is written for a mechanism about 1 m across and used times the
 # mechanism's own size (ParallelManipulator.scale, the farthest attachment point from

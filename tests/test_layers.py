@@ -75,6 +75,7 @@ ORDER = [
             "ik.general",
             "ik.decomposed",
             "ik.dispatch",
+            "ik.general",
             "acceleration",
             "trajectory",
             "differential_ik",

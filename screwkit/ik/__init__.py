@@ -14,7 +14,9 @@ The family, one idea a module:
   parallel axes 2, 3, 4 or 3, 4, 5, by subproblems 5 and 6);
 * :mod:`~screwkit.ik.dispatch`: picks the engine and labels the solutions
   (``sk.ik.analytic_ik``, ``analytic_ik_all``, ``configuration``, ``structure``,
-  ``CONFIGURATIONS``, ``puma560_ik`` ...).
+  ``CONFIGURATIONS``, ``puma560_ik`` ...);
+* :mod:`~screwkit.ik.general`: every solution of any 6R chain, by the Raghavan–Roth
+  eigenvalue problem (``sk.ik.general_6r_ik``, ``GeneralIK``).
 
 The subproblems and Newton load with the package: they sit below the chains
 (``Chain.numeric_ik`` is Newton). The closed form loads on first use of one of its
@@ -45,6 +47,7 @@ LAZY = {
         "puma560_ik_all",
         "structure",
     ),
+    "general": ("GeneralIK", "general_6r_ik"),
     "_closed_form": (),
     "spherical_wrist": (),
     "ur": (),
@@ -54,6 +57,7 @@ LAZY = {
 
 __all__ = [
     *LAZY["dispatch"],
+    *LAZY["general"],
     "NumericIKResult",
     "numeric_ik",
     "pose_error",

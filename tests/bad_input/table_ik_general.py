@@ -1,0 +1,81 @@
+"""Bad input to the general 6R inverse kinematics (screwkit.ik.general): one row per
+case, the error type and the argument the message names."""
+
+import functools
+
+import numpy as np
+from builders import planar, puma
+from rows import row
+
+import screwkit as sk
+from screwkit import ik
+
+
+@functools.cache
+def t0():
+    return puma().fk(np.zeros(6))
+
+
+@functools.cache
+def prismatic():
+    return sk.Chain([sk.Link.prismatic()] + list(puma().links[1:]))
+
+
+ROWS = [
+    row(
+        "general_6r_ik-chain-not-a-chain",
+        lambda: ik.general_6r_ik("puma", t0()),
+        TypeError,
+        "chain",
+        match="chain must be a screwkit Chain",
+    ),
+    row(
+        "general_6r_ik-chain-3R",
+        lambda: ik.general_6r_ik(planar(1.0, 1.0, 1.0), t0()),
+        ValueError,
+        "chain",
+        match=r"chain must have 6 revolute joints \(6R\), got 3 joints RRR",
+    ),
+    row(
+        "general_6r_ik-chain-prismatic",
+        lambda: ik.general_6r_ik(prismatic(), t0()),
+        ValueError,
+        "chain",
+        match="got 6 joints PRRRRR",
+    ),
+    row(
+        "general_6r_ik-T-not-rigid",
+        lambda: ik.general_6r_ik(puma(), np.diag([1.0, 2.0, 1.0, 1.0])),
+        ValueError,
+        "T",
+        match=r"T must .*rotation",
+    ),
+    row(
+        "general_6r_ik-T-nan",
+        lambda: ik.general_6r_ik(puma(), np.full((4, 4), np.nan)),
+        ValueError,
+        "T",
+        match="T must be finite",
+    ),
+    row(
+        "general_6r_ik-T-string",
+        lambda: ik.general_6r_ik(puma(), "pose"),
+        TypeError,
+        "T",
+        match="T must be",
+    ),
+    row(
+        "general_6r_ik-T-batch",
+        lambda: ik.general_6r_ik(puma(), np.stack([t0(), t0()])),
+        ValueError,
+        "T",
+        match=r"T must be one pose of shape \(4, 4\)",
+    ),
+    row(
+        "general_6r_ik-T-wrong-shape",
+        lambda: ik.general_6r_ik(puma(), np.eye(3)),
+        ValueError,
+        "T",
+        match=r"T must be one pose of shape \(4, 4\)",
+    ),
+]
