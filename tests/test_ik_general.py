@@ -329,3 +329,19 @@ def test_solutions_sharing_the_eigenvalue_joint_are_all_found():
         # pairs share a joint angle: the repeated roots were there to separate
         shared = np.abs(wrap(result.Q[:, None] - result.Q[None])) < SAME
         assert np.any(shared.sum(axis=(0, 1)) > len(result.Q))
+
+
+def test_analytic_ik_solves_a_general_arm_with_every_solution():
+    """sk.ik.analytic_ik dispatches an arm of no decomposable class to the eigenvalue
+    method: the same 16 solutions as the search, each with its residual."""
+    table = np.asarray(SIXTEEN_TABLE)
+    chain = sk.Chain.from_table(np.column_stack([np.zeros(6), table]))
+    T = dh_fk(table, SIXTEEN_Q)[0]
+    solutions = sk.ik.analytic_ik(chain, T)
+    assert solutions.structure.startswith("general") and solutions.reason is None
+    assert len(solutions) == 16
+    Q = np.array([s.q for s in solutions])
+    for s in multistart(table, T, starts=300, seed=7):
+        assert contains(Q, s)
+    assert max(s.residual for s in solutions) <= 1e-9
+    assert contains(Q, np.asarray(SIXTEEN_Q))

@@ -75,7 +75,6 @@ ORDER = [
             "ik.general",
             "ik.decomposed",
             "ik.dispatch",
-            "ik.general",
             "acceleration",
             "trajectory",
             "differential_ik",

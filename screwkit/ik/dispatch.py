@@ -16,8 +16,9 @@ Up to eight solutions, labelled l/r arm, u/d elbow, n/f wrist by geometric defin
 (Corke's labels for the PUMA). Any other 6R arm is classified by its axes
 (:func:`screwkit.ik.decomposed.classify`): a spherical wrist or shoulder, or three
 parallel axes 2, 3, 4 or 3, 4, 5, is solved by subproblems 5 and 6
-(:mod:`screwkit.ik.decomposed`, labels 's0' ...); a general 6R by
-:mod:`screwkit.ik.general` when that module is present, else it is refused with a
+(:mod:`screwkit.ik.decomposed`, labels 's0' ...); any other 6R by
+the eigenvalue method of :mod:`screwkit.ik.general` (Raghavan-Roth, Manocha-Canny; up
+to 16 solutions). A chain of none of these (not 6R or 7R) is refused with a
 ``ValueError`` that says what each structure needs (use
 :func:`screwkit.ik.numeric_ik`). A 7R arm is solved with one joint held
 (``fixed={index: value}``). Every solution carries its pose residual and a within-limits
@@ -60,14 +61,10 @@ from ..tolerances import IK_JOINT_LIMIT_SLACK
 from ..tolerances import IK_SINGULAR_TOL as SINGULAR_TOL
 from ..transforms import _wrap_angle
 from .decomposed import DecomposedArm, _motions, classify
+from .general import general_6r_ik
 from .spherical_wrist import CONFIGURATIONS, SphericalWristArm
 from .stanford import StanfordArm
 from .ur import URArm
-
-try:  # the general 6R (another module of the family, when it is there)
-    from .general import general_6r_ik
-except ImportError:
-    general_6r_ik = None
 
 __all__ = [
     "CONFIGURATIONS",
@@ -231,11 +228,9 @@ def _arm(chain, name="chain"):
         else:
             _ARMS[chain] = arm
             return arm
-        solver = general_6r_ik
-        if solver is not None:
-            arm = _GeneralArm(chain, solver, classify(chain, name).name)
-            _ARMS[chain] = arm
-            return arm
+        arm = _GeneralArm(chain, general_6r_ik, classify(chain, name).name)
+        _ARMS[chain] = arm
+        return arm
     raise ValueError(
         f"{name} has none of the structures solved in closed form; "
         + "; ".join(refusals)
@@ -262,7 +257,7 @@ def structure(chain):
         A key of :data:`STRUCTURES`, or the class of a 6R arm from its axes
         (:func:`screwkit.ik.decomposed.classify`: 'spherical wrist (4, 5, 6 meet)',
         'three parallel (2, 3, 4)', ..., 'general ...'); a chain of none of them
-        (not 6R, or a general 6R without :mod:`screwkit.ik.general`) is a
+        (neither 6R nor one of the structures) is a
         ``ValueError`` that names what each one needs.
     """
     check_chain(chain)
@@ -319,9 +314,8 @@ def analytic_ik(chain, T, within_limits=False, near=None, fixed=None):
     chain : Chain
         A 6R arm: one of the :data:`STRUCTURES` (labels 'lun' ... 'rdf'), a decomposable
         6R (a spherical wrist or shoulder, three parallel axes 2, 3, 4 or 3, 4, 5:
-        :mod:`screwkit.ik.decomposed`, labels 's0' ...), or a general 6R (solved by
-        :mod:`screwkit.ik.general` when it is installed, else a ``ValueError`` pointing
-        to :func:`screwkit.ik.numeric_ik`); a 7R arm with ``fixed``.
+        :mod:`screwkit.ik.decomposed`, labels 's0' ...), or any other 6R (solved by
+        :mod:`screwkit.ik.general`, up to 16 solutions); a 7R arm with ``fixed``.
     T : array-like, shape (4, 4) or (N, 4, 4)
         The tool pose (m); a batch gives a list of answers.
     within_limits : bool, default False
