@@ -35,6 +35,18 @@ CITATION = re.compile(DOC.pattern + r"\s*(?:exercises?\s+)?(" + NUMBERS + ")")
 GENERIC = set("sk np sp q T J S R M F e i h r s a d pi round zeros linalg".split())
 GENERIC |= set("puma arm robot fk theta rows axis".split())
 
+# An exercise is "**N.** text" (the old syntax) or sphinx-exercise's directive labelled
+# CHAPTER-exercise-N (tools/convert_exercises.py); both read as "**N.** text".
+NEW_EXERCISE = re.compile(
+    r"^:{3,}\{exercise(?:-start)?\}\n:label: [a-z0-9_]+-exercise-(\d+)\n(?::{3,}\n)?\n",
+    re.M,
+)
+SOLUTION = re.compile(r"^:{3,}\{(?:admonition\} Solution|solution\})", re.M)
+
+
+def old_syntax(text):
+    return NEW_EXERCISE.sub(r"**\1.** ", text)
+
 
 def chapters():
     """The chapter notebooks of _toc.yml, in order."""
@@ -49,7 +61,7 @@ def source(chapter):
 
 def exercises(chapter):
     """Exercise number -> its text (statement and solution), under ``## Exercises``."""
-    text = source(chapter).split("\n## Exercises", 1)[1]
+    text = old_syntax(source(chapter).split("\n## Exercises", 1)[1])
     parts = re.split(r"^\*\*(\d+)\.\*\*", text, flags=re.M)
     return {int(n): body for n, body in zip(parts[1::2], parts[2::2])}
 
