@@ -176,10 +176,13 @@ def convert_section(chapter, lines):
             i = end
         new = _convert_one(chapter, number, statement, cells, solution)
         out += new
-        if i < len(lines):
-            out.append("")
+        blank = i
         while i < len(lines) and not lines[i].strip():
             i += 1
+        # one blank line before what follows; at the end, the blank lines there were
+        out += [""] if i < len(lines) else lines[blank:i]
+    if lines and not lines[-1] and (not out or out[-1]):
+        out.append("")  # the section's last line break
     return out
 
 
@@ -192,6 +195,48 @@ def convert(text, chapter):
     lines = section.split("\n")
     new = "\n".join(convert_section(chapter, lines))
     return head + sep + new + sep2 + tail
+
+
+def read_exercises(text, chapter):
+    """The exercises of a chapter's MyST text (either syntax), in order: a list of
+    dicts with ``number``, ``statement``, ``cells`` (the code between exercise-start
+    and exercise-end) and ``solution`` (the solution's body, or None)."""
+    lines = convert(text, chapter).split("\n")
+    found, solutions, i = [], {}, 0
+    start = re.compile(r"^(:{3,})\{(exercise|exercise-start|solution)\}\s*(\S*)$")
+    while i < len(lines):
+        match = start.match(lines[i])
+        if not match:
+            i += 1
+            continue
+        colons, kind, argument = match.groups()
+        end = _block_end(lines, i)
+        block, i = lines[i + 1 : end - 1], end
+        options = [line for line in block if re.match(r"^:\w[\w-]*:", line)]
+        body = block[len(options) :]
+        if kind == "solution":
+            solutions[argument] = "\n".join(_strip_blank(body))
+            continue
+        label = next(o.split(":", 2)[2].strip() for o in options if ":label:" in o)
+        number = int(label.rsplit("-", 1)[1])
+        cells = []
+        if kind == "exercise-start":  # the statement and cells up to exercise-end
+            rest = []
+            while i < len(lines) and not lines[i].startswith(colons + "{exercise-end}"):
+                rest.append(lines[i])
+                i += 1
+            i = _block_end(lines, i) if i < len(lines) else i
+            cut = next(
+                (k for k, line in enumerate(rest) if CODE_CELL.match(line)), len(rest)
+            )
+            body, cells = rest[:cut], _strip_blank(rest[cut:])
+        statement = "\n".join(_strip_blank(body))
+        found.append(
+            {"number": number, "label": label, "statement": statement, "cells": cells}
+        )
+    for exercise in found:
+        exercise["solution"] = solutions.get(exercise["label"])
+    return found
 
 
 def sync_notebook(source_path):
