@@ -47,7 +47,7 @@ def texts(folder):
 
 
 def plain(text):
-    """A page's words: tags, entities, JSON escapes and runs of white space flattened."""
+    """A page's words: tags, entities, JSON escapes and white space flattened."""
     text = re.sub(r"<[^>]+>", " ", text)
     text = html.unescape(text).replace("\\n", " ").replace('\\"', '"')
     return re.sub(r"\s+", " ", text)

@@ -1,4 +1,4 @@
-"""The teacher's answers: every exercise's statement, answer key and solution, in one file.
+"""The teacher's answers: each exercise's statement, answer key and solution, one file.
 
 The course edition of the book (``make book EDITION=course``) has no solutions and no
 key of the assessed exercises (book/assessed.yml); this script (``make answers``)
@@ -66,9 +66,9 @@ def answers_markdown():
     out = [
         "# Answers and solutions (for the teacher)",
         "",
-        "Every exercise of the course, its answer key (self-checking exercises) and its "
-        "solution. Exercises marked **assessed** (book/assessed.yml) have no key in the "
-        "course edition of the book.",
+        "Every exercise of the course, its answer key (self-checking exercises) and "
+        "its solution. Exercises marked **assessed** (book/assessed.yml) have no key "
+        "in the course edition of the book.",
     ]
     for chapter in chapters():
         with open(

@@ -130,7 +130,8 @@ def test_text_outside_the_exercises_section_is_unchanged():
     text = "**1.** not an exercise\n\n## Summary\n\n**2.** nor this\n"
     assert convert_exercises.convert(text, "demo") == text
     tail = OLD + "\n## After\n\n**9.** stays\n"
-    assert convert_exercises.convert(tail, "demo").endswith("## After\n\n**9.** stays\n")
+    converted = convert_exercises.convert(tail, "demo")
+    assert converted.endswith("## After\n\n**9.** stays\n")
 
 
 def test_read_exercises_gives_the_same_exercises_in_either_syntax():
@@ -186,9 +187,9 @@ def test_solutions_are_stripped_from_a_source_and_a_notebook():
     }
     course = editions.course_notebook(notebook, {("screws", 10)})
     assert "Because" not in course["cells"][0]["source"]
-    assert "application/json" not in course["cells"][1]["outputs"][0]["data"][
-        "text/html"
-    ]
+    assert (
+        "application/json" not in course["cells"][1]["outputs"][0]["data"]["text/html"]
+    )
 
 
 def test_the_assessed_list_names_exercises_with_an_answer_box():
