@@ -55,7 +55,7 @@ answers: $(STAMP)
 ## (Playwright for Python from .ci/requirements.txt; it drives the system Chromium, downloads none)
 site-check: $(STAMP)
 	$(BIN)/python -m pip install --quiet --requirement .ci/requirements.txt
-	$(BIN)/python -m pytest .ci/test_viewer_browser.py -q
+	$(BIN)/python -m pytest .ci/test_viewer_browser.py .ci/test_site_check_math.py -q
 	$(BIN)/python .ci/site_check.py _build/html
 
 ## make lab: JupyterLab on notebooks/, opened on the first chapter of _toc.yml (installs the
