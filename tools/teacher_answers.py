@@ -95,7 +95,13 @@ def answers_html(markdown, mathjax):
         "math_block",
         lambda r, s, i, *a: "<div>\\[" + html.escape(s[i].content) + "\\]</div>\n",
     )
-    script = f'<script defer src="{mathjax}"></script>\n' if mathjax else ""
+    config = '{"loader": {"load": ["input/tex", "output/chtml"]}}'
+    script = (
+        f"<script>window.MathJax = {config}</script>\n"
+        f'<script defer src="{mathjax}"></script>\n'
+        if mathjax
+        else ""
+    )
     return (
         '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
         '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
