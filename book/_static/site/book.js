@@ -25,7 +25,7 @@
  * Scroll cue: each of those boxes whose content is wider than it (more than 3 px: an italic
  * letter's overhang does not count) is marked .sk-scrolls, with .sk-more-left and
  * .sk-more-right saying on which side there is more (kept up to date as it scrolls); the
- * book's stylesheet fades that side. Only those boxes take the keyboard focus.
+ * book's stylesheet fades that side. Every box that scrolls takes the keyboard focus.
  */
 (function () {
   "use strict";
@@ -87,9 +87,6 @@
   }
   function cueIfScrolling(box) {
     const scrolls = hiddenWidth(box) > 3;
-    // a formula that passes its box by an overhang only does not scroll (.sk-fits)
-    const math = box.matches("span.math, mjx-container");
-    box.classList.toggle("sk-fits", math && !scrolls);
     box.classList.toggle("sk-scrolls", scrolls);
     if (scrolls) {
       updateSides(box);
@@ -100,8 +97,9 @@
     } else {
       box.classList.remove("sk-more-left", "sk-more-right");
     }
-    // what scrolls takes the keyboard focus, so that the arrow keys scroll it
-    if (scrolls || (!math && box.scrollWidth > box.clientWidth + 1)) {
+    // what scrolls (if only by a letter's overhang) takes the keyboard focus, so that
+    // the arrow keys scroll it
+    if (box.scrollWidth > box.clientWidth + 1) {
       box.setAttribute("tabindex", "0");
     } else {
       box.removeAttribute("tabindex");
