@@ -68,9 +68,11 @@
   const SCROLLERS = 'mjx-container[display="true"], span.math, ' +
     "div.pst-scrollable-table-container, div.cell_output .output, pre.sk-bench";
   // How far the content of a box reaches past its right edge, in px, by its elements'
-  // boxes (MathJax's copy for screen readers, clipped on purpose, left out).
+  // boxes (MathJax's copy for screen readers, clipped on purpose, left out); for a box
+  // of plain text (a benchmark table), by its scroll width.
   function hiddenWidth(box) {
     if (box.scrollWidth <= box.clientWidth + 1) return 0;
+    if (!box.firstElementChild) return box.scrollWidth - box.clientWidth;  // plain text
     const edge = box.getBoundingClientRect().left + box.clientLeft + box.clientWidth;
     let widest = edge - box.scrollLeft;
     box.querySelectorAll("*").forEach((element) => {
