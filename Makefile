@@ -12,7 +12,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(abspath $(BIN)):$(PATH)
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: book test lab site-check bench notebooks check-sources lint clean
+.PHONY: book answers test lab site-check bench notebooks check-sources lint clean
 
 $(STAMP): requirements.txt pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -c '$(SUPPORTED)' 2>/dev/null || { echo "make: .venv needs\
@@ -27,15 +27,35 @@ test: $(STAMP)
 	$(BIN)/python -m pytest --nbval notebooks --nbval-sanitize-with .nbval_sanitize.cfg -p no:cacheprovider
 
 ## make book: the HTML book in _build/html (fails on any cell error or Sphinx warning)
+## make book EDITION=course: the course edition in _build/course/html, with no solution and no
+## answer key of the exercises book/assessed.yml lists (book/_ext/editions.py); build the
+## self-study book first and the course edition reuses its executed notebooks
+EDITION ?= self-study
+JB_BUILD = $(BIN)/jupyter-book build . --builder html --warningiserror --nitpick --keep-going
 book: $(STAMP)
-	$(BIN)/jupyter-book build . --path-output . --builder html --warningiserror --nitpick --keep-going
+ifeq ($(EDITION),course)
+	rm -rf _build/course/html _build/course-build
+	SCREWKIT_EDITION=course $(JB_BUILD) --path-output _build/course-build
+	@mkdir -p _build/course && mv _build/course-build/_build/html _build/course/html
+	@echo "The course edition is built: _build/course/html/index.html (make answers: the keys)."
+else ifeq ($(EDITION),self-study)
+	$(JB_BUILD) --path-output .
 	@echo "The book is built: open _build/html/index.html in a browser."
+else
+	@echo "make book: EDITION is '$(EDITION)'; expected self-study (the default) or course" >&2
+	@exit 1
+endif
+
+## make answers: every exercise's statement, answer key and solution for the teacher, in
+## _build/answers/answers.md and answers.html (the course edition has none of them)
+answers: $(STAMP)
+	$(BIN)/python tools/teacher_answers.py _build/answers
 
 ## make site-check: serve _build/html on 127.0.0.1 and check every page in headless Chromium
 ## (Playwright for Python from .ci/requirements.txt; it drives the system Chromium, downloads none)
 site-check: $(STAMP)
 	$(BIN)/python -m pip install --quiet --requirement .ci/requirements.txt
-	$(BIN)/python -m pytest .ci/test_viewer_browser.py -q
+	$(BIN)/python -m pytest .ci/test_viewer_browser.py .ci/test_site_check_math.py -q
 	$(BIN)/python .ci/site_check.py _build/html
 
 ## make lab: JupyterLab on notebooks/, opened on the first chapter of _toc.yml (installs the

@@ -37,8 +37,11 @@ unresolvable). Fails unless:
     (the code font fits 88 characters), no figure image wider than the column; at every
     width the page itself never scrolls sideways and equations and tables stay in the
     column (in their own scrolling box);
+  - at every width no formula (display or in the text) or table is clipped: one wider
+    than its paragraph or the column scrolls in a box of its own (math_is_not_clipped);
   - axe-core (from the npm registry, fetched at check time) finds no critical or serious
-    violation on any page;
+    violation on any page, in the light and in the dark theme, with every answer box
+    answered (its verdict's contrast checked);
   - every page weighs at most 2.5 MB cold (its HTML and all it loads, empty cache);
   - the whole book stays under 20 MB.
 Keeps a screenshot of the first chapter in _build/.
@@ -605,6 +608,9 @@ TOOLTIPS = script("tooltips")
 MEASURE_LAYOUT = script("measure_layout")
 AXE_RUN = script("axe_run")
 MATHJAX_DONE = script("mathjax_done")
+CLIPPED_MATH = script("clipped_math")
+DARK_THEME = script("dark_theme")
+ANSWER_BOXES = script("answer_boxes_answered")
 
 
 def navigation_works(page, page_name, width):
@@ -680,9 +686,10 @@ def navigation_works(page, page_name, width):
 
 def layout_fits(page, page_name, width):
     """At 1280 px nothing wider than the column, and no code cell, output or table that
-    scrolls sideways (an equation too long for any column, or a code block of the prose,
-    may: they are listed); at every width the page itself never scrolls sideways, and
-    equations and tables stay in the column (scrolling inside their own box)."""
+    scrolls sideways (an equation too long for any column, a code block of the prose, or
+    a benchmark table in 12 px text, may: they are listed); at every width the page
+    itself never scrolls sideways, and equations and tables stay in the column
+    (scrolling inside their own box)."""
     layout = page.evaluate(MEASURE_LAYOUT)
     where, column = f"{page_name} at {width} px", layout["column"]
     problems, counts, notes = [], {}, []
@@ -698,7 +705,7 @@ def layout_fits(page, page_name, width):
             counts[key] = counts.get(key, 0) + 1
     for kind, name, full, shown in layout["scrolling"]:
         counts[kind] = counts.get(kind, 0) + 1
-        if width >= 1280 and kind in ("equation", "code block"):
+        if width >= 1280 and kind in ("equation", "code block", "wide table"):
             notes.append(
                 f"{where}: {kind} {name} scrolls sideways ({full} px in {shown} px)"
             )
@@ -712,6 +719,33 @@ def layout_fits(page, page_name, width):
             for src, w in layout["images"]
         ]
     return problems, counts, notes
+
+
+def math_is_not_clipped(page, page_name, width):
+    """No formula (display or in the text) or table runs out of its paragraph or the
+    column, or is cut off, without a box around it that scrolls sideways (issue 30: on
+    a phone, long inline formulas ran out of their paragraph with no way to scroll)."""
+    page.evaluate(MATHJAX_DONE)
+    clipped = page.evaluate(CLIPPED_MATH)
+    return [
+        f"{page_name} at {width} px: {kind} {text!r} is {w} px wide in {room} px, "
+        "clipped (no box around it scrolls)"
+        for kind, text, w, room in clipped
+    ]
+
+
+def axe_in_both_themes(page, page_name, axe):
+    """axe-core (no_serious_accessibility_violations) in the light theme, then in the
+    dark one, with every answer box answered so that its verdict is checked too."""
+    page.evaluate(MATHJAX_DONE)
+    page.evaluate(ANSWER_BOXES)
+    problems, counts = no_serious_accessibility_violations(page, page_name, axe)
+    if page.evaluate(DARK_THEME, "dark") != "dark":
+        return problems + [f"{page_name}: the dark theme cannot be set"], counts, {}
+    page.wait_for_timeout(300)  # the theme's colours transition
+    dark, dark_counts = no_serious_accessibility_violations(page, page_name, axe)
+    page.evaluate(DARK_THEME, "light")  # the next page starts light
+    return problems + [f"{p} (dark theme)" for p in dark], counts, dark_counts
 
 
 def axe_source(cache):
@@ -818,13 +852,15 @@ def cold_weight(chromium, url):
 
 
 def reader_sees_a_working_book(site):
-    """Every page at every width: navigation and layout (see navigation_works,
-    layout_fits), and at 1280 px axe-core; every page's cold weight at most
+    """Every page at every width: navigation, layout and no clipped math (see
+    navigation_works, layout_fits, math_is_not_clipped), and at 1280 px axe-core in both
+    themes; every page's cold weight at most
     PAGE_LIMIT_MB; a search finds pages. Prints the boxes that scroll sideways, the axe
     counts and each page's weight."""
     cache = os.path.join(os.path.dirname(site.root), ".site-check")
     axe = axe_source(cache)
     problems, notes, layout_counts, axe_counts, weights = [], [], {}, {}, {}
+    clipped, dark_counts = {}, {}
     with harness.launch() as chromium:
         for width in WIDTHS:
             phone = width < 600
@@ -844,15 +880,16 @@ def reader_sees_a_working_book(site):
                     layout_counts[(width, kind)] = (
                         layout_counts.get((width, kind), 0) + count
                     )
+                found = math_is_not_clipped(page, page_name, width)
+                problems += found
+                clipped[width] = clipped.get(width, 0) + len(found)
                 problems += navigation_works(page, page_name, width)
                 if width == 1280:
                     page.reload(wait_until="load")
                     page.wait_for_timeout(500)
-                    found, counts = no_serious_accessibility_violations(
-                        page, page_name, axe
-                    )
+                    found, counts, dark = axe_in_both_themes(page, page_name, axe)
                     problems += found
-                    axe_counts[page_name] = counts
+                    axe_counts[page_name], dark_counts[page_name] = counts, dark
                 page.close()
             context.close()
         for page_name in site.pages:
@@ -863,6 +900,7 @@ def reader_sees_a_working_book(site):
             kind: n for (w, kind), n in sorted(layout_counts.items()) if w == width
         }
         print(f"at {width} px, boxes that scroll sideways (by kind): {kinds or 'none'}")
+        print(f"at {width} px, clipped formulas and tables: {clipped.get(width, 0)}")
     for note in notes:
         print("  " + note)
     print(
@@ -874,8 +912,12 @@ def reader_sees_a_working_book(site):
         counts = ", ".join(
             f"{k} {v}" for k, v in sorted(axe_counts.get(page_name, {}).items())
         )
+        dark = ", ".join(
+            f"{k} {v}" for k, v in sorted(dark_counts.get(page_name, {}).items())
+        )
         print(
             f"  {page_name}: {weights[page_name] / 1e6:.2f} MB; axe: {counts or 'none'}"
+            f"; dark theme: {dark or 'none'}"
         )
         if weights[page_name] > PAGE_LIMIT_MB * 1e6:
             problems.append(

@@ -17,7 +17,9 @@
         return `${e.tagName.toLowerCase()}${e.className && typeof e.className === "string"
             ? "." + e.className.trim().split(/\s+/)[0] : ""} ${JSON.stringify(text)}`;
     };
-    const kind = e => e.closest(".cell_input") ? "code"
+    // the benchmark tables (book/benchmarks.md): preformatted, wider than the column
+    const kind = e => e.closest("pre.sk-bench") ? "wide table"
+        : e.closest(".cell_input") ? "code"
         : e.closest("mjx-container, div.math, span.math") ? "equation"
         : e.closest("table, .pst-scrollable-table-container") || e.querySelector("table") ? "table"
         : e.closest(".cell_output") ? "output"

@@ -35,6 +35,18 @@ CITATION = re.compile(DOC.pattern + r"\s*(?:exercises?\s+)?(" + NUMBERS + ")")
 GENERIC = set("sk np sp q T J S R M F e i h r s a d pi round zeros linalg".split())
 GENERIC |= set("puma arm robot fk theta rows axis".split())
 
+# An exercise is "**N.** text" (the old syntax) or sphinx-exercise's directive labelled
+# CHAPTER-exercise-N (tools/convert_exercises.py); both read as "**N.** text".
+NEW_EXERCISE = re.compile(
+    r"^:{3,}\{exercise(?:-start)?\}\n:label: [a-z0-9_]+-exercise-(\d+)\n(?::{3,}\n)?\n",
+    re.M,
+)
+SOLUTION = re.compile(r"^:{3,}\{(?:admonition\} Solution|solution\})", re.M)
+
+
+def old_syntax(text):
+    return NEW_EXERCISE.sub(r"**\1.** ", text)
+
 
 def chapters():
     """The chapter notebooks of _toc.yml, in order."""
@@ -49,7 +61,7 @@ def source(chapter):
 
 def exercises(chapter):
     """Exercise number -> its text (statement and solution), under ``## Exercises``."""
-    text = source(chapter).split("\n## Exercises", 1)[1]
+    text = old_syntax(source(chapter).split("\n## Exercises", 1)[1])
     parts = re.split(r"^\*\*(\d+)\.\*\*", text, flags=re.M)
     return {int(n): body for n, body in zip(parts[1::2], parts[2::2])}
 
@@ -150,6 +162,44 @@ def test_sections_a_week_names_are_sections_of_its_chapters(week):
         assert any(
             heading.startswith(name) for c in linked for heading in headings(c)
         ), (week, name, linked)
+
+
+def sections_in(text):
+    """(section, chapter) for each "*Section* in {doc}`A`, {doc}`B` and {doc}`C`": the
+    plan says that each of those chapters has that section."""
+    links = DOC.pattern + r"(?:(?:,\s*|\s+and\s+)" + DOC.pattern + ")*"
+    pairs = []
+    for match in re.finditer(r"(?<![*\w])\*([^*\n]+)\*\s+in\s+(" + links + ")", text):
+        pairs += [(match.group(1), c) for c in DOC.findall(match.group(2))]
+    return pairs
+
+
+def test_a_section_said_to_be_in_chapters_is_in_each_of_them():
+    # week 15 named *The paper, checked* in chapters that had no such section
+    pairs = sections_in(PLAN) + sections_in(INTRO)
+    assert pairs, "the plan's project week names the chapters' paper sections"
+    missing = [
+        (name, c)
+        for name, c in pairs
+        if not any(h.startswith(name) for h in headings(c))
+    ]
+    assert missing == []
+
+
+def test_sections_in_reads_every_chapter_of_a_list():
+    text = (
+        "*The paper, checked* in {doc}`../notebooks/screws`, {doc}`a <../notebooks/"
+        "poe>` and {doc}`../notebooks/mobility`, and *Other* in {doc}`../notebooks/"
+        "puma_ik`."
+    )
+    assert sections_in(text) == [
+        ("The paper, checked", "screws"),
+        ("The paper, checked", "poe"),
+        ("The paper, checked", "mobility"),
+        ("Other", "puma_ik"),
+    ]
+    # the week 15 of issue 30, which listed chapters without that section
+    assert not any(h.startswith("The paper, checked") for h in headings("puma_ik"))
 
 
 def test_every_citation_names_an_exercise_the_chapter_has():

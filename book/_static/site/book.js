@@ -19,7 +19,13 @@
  *
  * Equations: a display equation at most a fifth wider than the column is set that much
  * smaller, so that it fits; a wider one (on a phone) scrolls in its own box, which then takes
- * the keyboard focus, so that it can be scrolled without a mouse.
+ * the keyboard focus, so that it can be scrolled without a mouse. A formula in the text
+ * scrolls in its box too (span.math, book.css); tables and outputs in theirs.
+ *
+ * Scroll cue: each of those boxes whose content is wider than it (more than 3 px: an italic
+ * letter's overhang does not count) is marked .sk-scrolls, with .sk-more-left and
+ * .sk-more-right saying on which side there is more (kept up to date as it scrolls); the
+ * book's stylesheet fades that side. Every box that scrolls takes the keyboard focus.
  */
 (function () {
   "use strict";
@@ -56,11 +62,45 @@
         const size = parseFloat(getComputedStyle(box).fontSize);
         box.style.fontSize = `${Math.floor(size * ratio * 100) / 100}px`;
       }
-      focusableIfScrolling(box);
     });
-    document.querySelectorAll("span.math").forEach(focusableIfScrolling);
+    document.querySelectorAll(SCROLLERS).forEach(cueIfScrolling);
   }
-  function focusableIfScrolling(box) {
+  const SCROLLERS = 'mjx-container[display="true"], span.math, ' +
+    "div.pst-scrollable-table-container, div.cell_output .output, pre.sk-bench";
+  // How far the content of a box reaches past its right edge, in px, by its elements'
+  // boxes (MathJax's copy for screen readers, clipped on purpose, left out); for a box
+  // of plain text (a benchmark table), by its scroll width.
+  function hiddenWidth(box) {
+    if (box.scrollWidth <= box.clientWidth + 1) return 0;
+    if (!box.firstElementChild) return box.scrollWidth - box.clientWidth;  // plain text
+    const edge = box.getBoundingClientRect().left + box.clientLeft + box.clientWidth;
+    let widest = edge - box.scrollLeft;
+    box.querySelectorAll("*").forEach((element) => {
+      if (element.closest("mjx-assistive-mml")) return;
+      const right = element.getBoundingClientRect().right;
+      if (right > widest) widest = right;
+    });
+    return widest + box.scrollLeft - edge;
+  }
+  function updateSides(box) {
+    const more = box.scrollWidth - box.clientWidth;
+    box.classList.toggle("sk-more-left", box.scrollLeft > 1);
+    box.classList.toggle("sk-more-right", box.scrollLeft < more - 1);
+  }
+  function cueIfScrolling(box) {
+    const scrolls = hiddenWidth(box) > 3;
+    box.classList.toggle("sk-scrolls", scrolls);
+    if (scrolls) {
+      updateSides(box);
+      if (!box.dataset.skCue) {
+        box.dataset.skCue = "1";
+        box.addEventListener("scroll", () => updateSides(box), { passive: true });
+      }
+    } else {
+      box.classList.remove("sk-more-left", "sk-more-right");
+    }
+    // what scrolls (if only by a letter's overhang) takes the keyboard focus, so that
+    // the arrow keys scroll it
     if (box.scrollWidth > box.clientWidth + 1) {
       box.setAttribute("tabindex", "0");
     } else {
@@ -75,5 +115,6 @@
   window.addEventListener("load", () => {
     const startup = window.MathJax && window.MathJax.startup;
     if (startup && startup.promise) startup.promise.then(fitEquations);
+    else fitEquations();  // a page without math: its tables and outputs
   });
 })();

@@ -1,0 +1,159 @@
+"""Two editions of one book: self-study (every solution, every key) and course.
+
+The chapters write their exercises with sphinx-exercise's directives
+(``exercise``/``exercise-start``, ``solution``; tools/convert_exercises.py), labelled
+``CHAPTER-exercise-N``.
+
+* Numbers: Sphinx numbers enumerable nodes across the whole book when the table of
+  contents is not numbered (the exercises of the third chapter would be 21 to 30); each
+  exercise is shown with the number of its label instead, the chapter's own.
+* The course edition, ``SCREWKIT_EDITION=course`` (``make book EDITION=course``):
+  sphinx-exercise's ``hide_solutions`` drops every solution, and the answer box of each
+  exercise listed in ``book/assessed.yml`` loses its key (the JSON the page checks
+  with) and its Check button: the page says that the teacher marks it. The other boxes
+  still check. The copies of the notebooks offered for download (``_sources``) get the
+  same treatment. The notebooks' stored outputs are the same for both editions; the
+  course edition reuses the self-study build's execution cache.
+"""
+
+import json
+import os
+import re
+
+import yaml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ASSESSED = os.path.normpath(os.path.join(HERE, os.pardir, "assessed.yml"))
+LABEL = re.compile(r"^([a-z0-9_]+)-exercise-(\d+)$")
+BOX = re.compile(
+    r'<div class="sk-answer-box" id="sk-exercise-([a-z0-9_]+)-(\d+)-\d+".*?'
+    r"</noscript>\n</div>",
+    re.S,
+)
+SOLUTION = re.compile(r"^(:{3,})\{solution(?:-start)?\}")
+
+
+def edition():
+    """'course' or 'self-study', from the environment variable SCREWKIT_EDITION."""
+    value = os.environ.get("SCREWKIT_EDITION", "self-study") or "self-study"
+    if value not in ("course", "self-study"):
+        raise ValueError(
+            f"SCREWKIT_EDITION must be 'course' or 'self-study', got {value!r}"
+        )
+    return value
+
+
+def assessed(path=ASSESSED):
+    """The assessed exercises of book/assessed.yml: a set of (chapter, number)."""
+    with open(path, encoding="utf-8") as f:
+        table = yaml.safe_load(f) or {}
+    return {(chapter, int(n)) for chapter, ns in table.items() for n in ns or []}
+
+
+def strip_keys(text, marked):
+    """``text`` (HTML) with each answer box of an exercise in ``marked`` replaced by a
+    box with no key: its label and a note that the teacher marks the answer."""
+
+    def replace(match):
+        chapter, number = match.group(1), int(match.group(2))
+        if (chapter, number) not in marked:
+            return match.group(0)
+        return (
+            f'<div class="sk-assessed-box" style="font:14px sans-serif;margin:0.5em 0">'
+            f"<p><strong>Exercise {number} is assessed:</strong> hand your answer to "
+            f"your teacher; this edition of the book does not check it.</p></div>"
+        )
+
+    return BOX.sub(replace, text)
+
+
+def strip_solutions(source):
+    """A chapter's MyST text without its ``solution`` blocks."""
+    lines, out, i = source.split("\n"), [], 0
+    while i < len(lines):
+        match = SOLUTION.match(lines[i])
+        if not match:
+            out.append(lines[i])
+            i += 1
+            continue
+        colons, fence = match.group(1), None
+        i += 1
+        while i < len(lines):
+            line = lines[i]
+            i += 1
+            if fence is not None:
+                fence = None if line.strip() == fence else fence
+            elif re.match(r"^(`{3,}|~{3,})", line):
+                fence = re.match(r"^(`{3,}|~{3,})", line).group(1)
+            elif line.strip() == colons:
+                break
+    return "\n".join(out)
+
+
+def course_notebook(notebook, marked):
+    """A notebook (as JSON) for the course edition: no solution, no assessed key."""
+    for cell in notebook.get("cells", []):
+        text = "".join(cell.get("source", ""))
+        if cell.get("cell_type") == "markdown":
+            cell["source"] = strip_solutions(text)
+        for output in cell.get("outputs", []):
+            data = output.get("data", {})
+            if "text/html" in data:
+                html = "".join(data["text/html"])
+                data["text/html"] = strip_keys(html, marked)
+    return notebook
+
+
+def numbers_from_labels(app, env):
+    """Show each exercise with the number its label carries."""
+    for fignumbers in env.toc_fignumbers.values():
+        for label in list(fignumbers.get("exercise", {})):
+            match = LABEL.match(label)
+            if match:
+                fignumbers["exercise"][label] = (int(match.group(2)),)
+    return []
+
+
+def course_config(app, config):
+    if edition() != "course":
+        return
+    config.hide_solutions = True
+    # the same stored outputs: the self-study build's execution cache
+    cache = os.path.join(app.srcdir, "_build", ".jupyter_cache")
+    if os.path.isdir(cache):
+        config.nb_execution_cache_path = cache
+
+
+def course_page(app, pagename, templatename, context, doctree):
+    if edition() == "course" and "body" in context:
+        context["body"] = strip_keys(context["body"], assessed())
+
+
+def course_sources(app, exception):
+    if exception is not None or edition() != "course":
+        return
+    marked = assessed()
+    for folder, _, files in os.walk(os.path.join(app.outdir, "_sources")):
+        for name in files:
+            path = os.path.join(folder, name)
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
+            if name.endswith(".ipynb"):
+                new = json.dumps(
+                    course_notebook(json.loads(text), marked),
+                    indent=1,
+                    ensure_ascii=False,
+                )
+            else:
+                new = strip_keys(strip_solutions(text), marked)
+            if new != text:
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(new)
+
+
+def setup(app):
+    app.connect("config-inited", course_config)
+    app.connect("env-get-updated", numbers_from_labels, priority=900)
+    app.connect("html-page-context", course_page, priority=950)
+    app.connect("build-finished", course_sources)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}

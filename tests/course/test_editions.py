@@ -1,0 +1,211 @@
+"""The two editions: the exercises' conversion, and what the course edition takes out.
+
+Building the book takes minutes, so nothing is built here: .ci/check_course_edition.py
+checks the built course edition (``make book EDITION=course``, in .ci/run). These tests
+check the pieces it is made of on small inputs written here: the conversion of the
+old exercise syntax (tools/convert_exercises.py), the stripping of assessed keys and of
+solutions (book/_ext/editions.py), and that book/assessed.yml lists exercises that
+exist and have an answer box.
+"""
+
+import json
+import re
+import sys
+from pathlib import Path
+
+import pytest
+
+from screwkit import exercises
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+sys.path.insert(0, str(ROOT / "book" / "_ext"))
+
+import convert_exercises  # noqa: E402
+import editions  # noqa: E402
+
+OLD = """# A chapter
+
+Text with **bold** and **2.** in the middle of a line.
+
+## Exercises
+
+Some words about the exercises.
+
+**1.** *(by hand)* Show that $a = b$.
+It has two lines.
+
+:::{admonition} Solution
+:class: dropdown
+Because $a$ is $b$.
+```python
+print(":::")   # a colon fence inside code is code
+```
+:::
+
+**2.** *(by hand, self-checking)* What is $h$?
+
+```{code-cell} ipython3
+sk.exercises.answer_box("screws", 4)
+```
+
+:::{admonition} Solution
+:class: dropdown
+$h = 0.5$.
+:::
+
+**3.** *(implement it yourself)* Write `my_exp`, no solution yet.
+"""
+
+NEW = """# A chapter
+
+Text with **bold** and **2.** in the middle of a line.
+
+## Exercises
+
+Some words about the exercises.
+
+:::{exercise}
+:label: demo-exercise-1
+
+*(by hand)* Show that $a = b$.
+It has two lines.
+:::
+
+:::{solution} demo-exercise-1
+:class: dropdown
+
+Because $a$ is $b$.
+```python
+print(":::")   # a colon fence inside code is code
+```
+:::
+
+:::{exercise-start}
+:label: demo-exercise-2
+:::
+
+*(by hand, self-checking)* What is $h$?
+
+```{code-cell} ipython3
+sk.exercises.answer_box("screws", 4)
+```
+
+:::{exercise-end}
+:::
+
+:::{solution} demo-exercise-2
+:class: dropdown
+
+$h = 0.5$.
+:::
+
+:::{exercise}
+:label: demo-exercise-3
+
+*(implement it yourself)* Write `my_exp`, no solution yet.
+:::
+"""
+
+
+def test_the_old_syntax_becomes_exercise_and_solution_directives():
+    assert convert_exercises.convert(OLD, "demo") == NEW
+
+
+def test_the_conversion_leaves_converted_text_alone():
+    assert convert_exercises.convert(NEW, "demo") == NEW
+
+
+def test_a_chapter_with_old_and_new_exercises_converts_only_the_old():
+    # a helper's new exercise 4 in the old syntax, merged after the conversion
+    mixed = NEW + "\n**4.** *(by hand)* One more.\n\n:::{admonition} Solution\n"
+    mixed += ":class: dropdown\nYes.\n:::\n"
+    converted = convert_exercises.convert(mixed, "demo")
+    assert converted.startswith(NEW)
+    assert ":label: demo-exercise-4" in converted and "**4.**" not in converted
+    assert convert_exercises.convert(converted, "demo") == converted
+
+
+def test_text_outside_the_exercises_section_is_unchanged():
+    text = "**1.** not an exercise\n\n## Summary\n\n**2.** nor this\n"
+    assert convert_exercises.convert(text, "demo") == text
+    tail = OLD + "\n## After\n\n**9.** stays\n"
+    converted = convert_exercises.convert(tail, "demo")
+    assert converted.endswith("## After\n\n**9.** stays\n")
+
+
+def test_read_exercises_gives_the_same_exercises_in_either_syntax():
+    old = convert_exercises.read_exercises(OLD, "demo")
+    assert old == convert_exercises.read_exercises(NEW, "demo")
+    assert [e["number"] for e in old] == [1, 2, 3]
+    assert old[0]["statement"] == "*(by hand)* Show that $a = b$.\nIt has two lines."
+    assert old[1]["cells"][1] == 'sk.exercises.answer_box("screws", 4)'
+    assert old[1]["solution"] == "$h = 0.5$."
+    assert old[2]["solution"] is None
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "notebooks").glob("*.md")))
+def test_every_chapter_is_converted_and_numbered_from_one(path):
+    text = path.read_text(encoding="utf-8")
+    assert convert_exercises.convert(text, path.stem) == text, "run the conversion"
+    found = convert_exercises.read_exercises(text, path.stem)
+    assert [e["number"] for e in found] == list(range(1, len(found) + 1))
+    assert all(e["label"] == f"{path.stem}-exercise-{e['number']}" for e in found)
+
+
+def box_html(chapter, number):
+    return exercises.answer_box(chapter, number, script=False)._repr_html_()
+
+
+def test_an_assessed_box_loses_its_key_and_the_others_keep_theirs():
+    assessed, other = box_html("screws", 10), box_html("screws", 4)
+    page = f"<p>before</p>\n{assessed}<p>between</p>\n{other}<p>after</p>"
+    stripped = editions.strip_keys(page, {("screws", 10)})
+    key = json.loads(re.search(r'json">(.*?)</script>', assessed, re.S).group(1))
+    assert json.dumps(key["values"]) not in stripped.replace(other, "")
+    assert "application/json" not in stripped.replace(other, "")
+    assert "Exercise 10 is assessed" in stripped
+    assert other in stripped and "<p>between</p>" in stripped
+    assert stripped.endswith("<p>after</p>")
+    assert editions.strip_keys(page, set()) == page
+
+
+def test_solutions_are_stripped_from_a_source_and_a_notebook():
+    stripped = editions.strip_solutions(NEW)
+    assert "Because" not in stripped and "h = 0.5" not in stripped
+    assert "print" not in stripped  # the code inside the solution went with it
+    assert stripped.count(":label: demo-exercise-") == 3
+    notebook = {
+        "cells": [
+            {"cell_type": "markdown", "source": NEW.split("```{code-cell}")[0]},
+            {
+                "cell_type": "code",
+                "source": 'sk.exercises.answer_box("screws", 10)',
+                "outputs": [{"data": {"text/html": [box_html("screws", 10)]}}],
+            },
+        ]
+    }
+    course = editions.course_notebook(notebook, {("screws", 10)})
+    assert "Because" not in course["cells"][0]["source"]
+    assert (
+        "application/json" not in course["cells"][1]["outputs"][0]["data"]["text/html"]
+    )
+
+
+def test_the_assessed_list_names_exercises_with_an_answer_box():
+    marked = editions.assessed()
+    assert marked
+    for chapter, number in sorted(marked):
+        source = (ROOT / "notebooks" / f"{chapter}.md").read_text(encoding="utf-8")
+        assert f'sk.exercises.answer_box("{chapter}", {number})' in source
+        exercises.answer_key(chapter, number)  # has a key
+
+
+def test_the_edition_comes_from_the_environment(monkeypatch):
+    monkeypatch.delenv("SCREWKIT_EDITION", raising=False)
+    assert editions.edition() == "self-study"
+    monkeypatch.setenv("SCREWKIT_EDITION", "course")
+    assert editions.edition() == "course"
+    monkeypatch.setenv("SCREWKIT_EDITION", "teacher")
+    with pytest.raises(ValueError, match="SCREWKIT_EDITION must be"):
+        editions.edition()
