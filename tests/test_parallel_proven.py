@@ -372,15 +372,42 @@ def test_fk_all_with_proof_is_the_proven_list_and_says_complete():
     assert fast.complete is False and "may miss" in fast.reason
 
 
-def test_fk_all_with_proof_on_the_3rpr_and_where_no_proof_exists():
+def test_fk_all_with_proof_on_the_3rpr():
     pm = sk.parallel.planar_3rpr()
     rho = np.array(sk.parallel.RPR_SIX_MODES_RHO)
     modes = pm.fk_all(rho, proof=True)
     assert (len(modes), modes.complete) == (6, True)
     for T in sk.parallel.rpr_sextic(pm, rho):
         assert any(same_pose(T, U, pm.scale) for U in modes)
-    rrr = sk.parallel.planar_3rrr()  # no exact solver: the search, unproven
-    searched = rrr.fk_all(rrr.ik(np.eye(4)), proof=True)
-    assert searched.complete is False and searched.reason
     with pytest.raises(TypeError, match="proof"):
         pm.fk_all(rho, proof="yes")
+
+
+def test_3rrr_modes_are_the_elbows_3rpr_and_contain_the_search():
+    """A 3-RRR with its cranks held is a 3-RPR on its elbows: the sextic's modes, up to
+    six, each reproducing the cranks, containing every mode a long search finds, the
+    same with proof=True (exact roots) as in floating point."""
+    rrr = sk.parallel.planar_3rrr(1, 0.6, 0.8, 0.9)  # a geometry with six at times
+    rng = np.random.default_rng(0)
+    counts = []
+    for _ in range(20):
+        T = np.eye(4)
+        T[:2, :2] = sk.rotz(rng.uniform(-1, 1))[:2, :2]
+        T[:2, 3] = rng.uniform(-0.3, 0.3, 2)
+        theta = rrr.ik(T)
+        if np.isnan(theta).any():  # out of reach
+            continue
+        modes = rrr.fk_all(theta)
+        counts.append(len(modes))
+        assert 1 <= len(modes) <= 6 and not modes.complete
+        assert any(same_pose(T, U, rrr.scale) for U in modes)
+        for U in modes:  # every mode holds the cranks at theta in one working mode
+            assert any(
+                np.allclose(sk.wrap_angle(q - theta), 0, atol=1e-7)
+                for q in rrr.ik_all(U).values()
+            )
+        for U in sk.parallel.search.multistart(rrr, theta, 1000, 0):
+            assert any(same_pose(U, V, rrr.scale) for V in modes)
+        proven_modes = rrr.fk_all(theta, proof=True)
+        assert proven_modes.complete and len(proven_modes) == len(modes)
+    assert max(counts) == 6  # the most a 3-RRR can have, reached

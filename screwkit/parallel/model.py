@@ -714,7 +714,9 @@ class ParallelManipulator:
         """Every real assembly mode with actuated values rho, and how far to trust it.
 
         The delta solves three spheres' intersection and the Tripteron a linear
-        system (closed forms: ``complete`` is True). The 3-RPR solves its univariate
+        system (closed forms: ``complete`` is True). The planar 3-RRR is the 3-RPR whose
+        base points are its elbows and whose legs are its distal links: that 3-RPR's
+        sextic gives its modes, up to six. The 3-RPR solves its univariate
         sextic (:func:`~screwkit.parallel.rpr_sextic`; Gosselin, Sefrioui & Richard
         1992), up to six modes, its roots found in floating point. Other mechanisms run
         a multi-start Newton search (:func:`screwkit.parallel.search.multistart`,
@@ -725,8 +727,8 @@ class ParallelManipulator:
         a solution and the solutions continue along its kernel, the result says so
         (``continuum``): a self-motion or a degenerate geometry.
 
-        With ``proof=True`` the Stewart-Gough platform (six prismatic legs, spatial) and
-        the 3-RPR are solved exactly instead, with certified real roots
+        With ``proof=True`` the Stewart-Gough platform (six prismatic legs, spatial),
+        the 3-RPR and the 3-RRR are solved exactly instead, with certified real roots
         (:func:`~screwkit.parallel.stewart_fk_proven`, which needs the optional
         package of ``screwkit[proof]``, and :func:`~screwkit.parallel.rpr_fk_proven`):
         ``complete`` is then True unless the solver says why not.
@@ -771,7 +773,10 @@ class ParallelManipulator:
                 f"{starts} starts would not fit in memory), got {starts}"
             )
         seed = check_integer(seed, "seed", minimum=0)
-        if check_flag(proof, "proof") and isinstance(self._legs, Prismatic):
+        proof = check_flag(proof, "proof")
+        if self.planar and isinstance(self._legs, Revolute):
+            return self._rrr_modes(values, proof)
+        if proof and isinstance(self._legs, Prismatic):
             proven = self._fk_proven(values)
             if proven is not None:
                 return proven
@@ -819,6 +824,35 @@ class ParallelManipulator:
             method=method,
             reason=reason,
             continuum=on is not None,
+        )
+
+    def _rrr_modes(self, theta, proof):
+        """A planar 3-RRR's modes: with the cranks at theta, each distal link turns
+        about its elbow, so the platform moves as a 3-RPR's whose base points are the
+        elbows and whose legs are the links' length: that 3-RPR's sextic."""
+        elbows = self._legs._crank(theta)[0][:, 0, :].T
+        links = np.full(3, self._legs.l2)
+        if proof:
+            poses, complete, reason = _proven.rpr_fk_proven(
+                elbows[:, :2], self.platform_points[:, :2], links
+            )
+            method = "the elbows' 3-RPR sextic, real roots isolated exactly (SymPy)"
+            return AssemblyModes(poses, complete=complete, method=method, reason=reason)
+        equivalent = ParallelManipulator(
+            name="3-RPR of the elbows",
+            legs=Prismatic(elbows.tolist(), planar=True),
+            base=elbows.tolist(),
+            platform=self.platform_points.tolist(),
+            motion="planar",
+            home=np.eye(4),
+        )
+        modes = equivalent.fk_all(links)
+        return AssemblyModes(
+            modes,
+            complete=False,
+            method="the elbows' 3-RPR sextic (floating-point roots)",
+            reason=modes.reason,
+            continuum=modes.continuum,
         )
 
     def _fk_proven(self, values):
