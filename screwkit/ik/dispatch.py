@@ -473,18 +473,27 @@ def _listed(solutions, limits, within_limits, near, structure, reason=None):
         for (q, label, res, singular), m, ok in zip(solutions, moved, inside)
     ]
     kept = [s for s in listed if s.within_limits] if within_limits else listed
-    result = IKSolutions(kept, reason=reason, structure=structure)
+    result = _nearest_first(IKSolutions(kept, reason=reason, structure=structure), near)
+    if not kept:
+        result.reason = _outside_limits(listed)
+    return result
+
+
+def _nearest_first(result, near):
+    """The solutions sorted by wrapped distance to ``near`` (None: as they are)."""
     if near is not None:
         result.sort(key=lambda s: np.linalg.norm(_wrap_angle(s.q - near)))
-    if not kept:
-        result.reason = (
-            "every solution violates a joint limit, even moved by whole turns: "
-            + ", ".join(
-                f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
-                for s in listed
-            )
-        )
     return result
+
+
+def _outside_limits(listed):
+    """Why no solution is left: each one, with the joint limit it violates."""
+    return "every solution violates a joint limit, even moved by whole turns: " + (
+        ", ".join(
+            f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
+            for s in listed
+        )
+    )
 
 
 _CONTINUUM = (
@@ -549,16 +558,10 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near, chain=None):
         )
     if within_limits:
         solutions = [s for s in solutions if s.within_limits]
-    result = IKSolutions(solutions, structure=_name(arm))
-    if near is not None:
-        result.sort(key=lambda s: np.linalg.norm(_wrap_angle(s.q - near)))
+    result = _nearest_first(IKSolutions(solutions, structure=_name(arm)), near)
     if not result:
-        result.reason = (
-            "every solution violates a joint limit, even moved by whole turns: "
-            + ", ".join(
-                f"{s.config} q = {np.round(np.degrees(s.q), 1).tolist()} deg"
-                for s in _answer(arm, T, Q, flags, code, limits, False, None)
-            )
+        result.reason = _outside_limits(
+            _answer(arm, T, Q, flags, code, limits, False, None)
         )
     return result
 

@@ -6,6 +6,7 @@ Points are laid out component first, (3, N, m), as in :mod:`screwkit.parallel.le
 
 import numpy as np
 
+from .._docstrings import fill
 from ..tolerances import (
     PARALLEL_FK_ACCEPT_TOL,
     PARALLEL_NEWTON_MAX_STEP,
@@ -55,13 +56,18 @@ def _exp_rotation(w):
     return _rodrigues(_skew(unit), np.sin(theta)[:, None, None], 2 * half * half)
 
 
+_SYSTEMS = """Parameters
+----------
+A : ndarray, shape (N, k, k)
+b : ndarray, shape (N, k)
+    N systems A x = b."""
+
+
+@fill(systems=_SYSTEMS)
 def solve(A, b):
     """Batched linear solve, one system at a time where the batch has a singular one.
 
-    Parameters
-    ----------
-    A : ndarray, shape (N, k, k)
-    b : ndarray, shape (N, k)
+    {systems}
 
     Returns
     -------
@@ -80,14 +86,12 @@ def solve(A, b):
         return out
 
 
+@fill(systems=_SYSTEMS)
 def solve_least_squares(A, b):
     """Batched minimum-norm least-squares solve (singular values below
     ``PARALLEL_RANK_TOL`` times the largest are dropped).
 
-    Parameters
-    ----------
-    A : ndarray, shape (N, k, k)
-    b : ndarray, shape (N, k)
+    {systems}
 
     Returns
     -------

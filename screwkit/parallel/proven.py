@@ -46,6 +46,7 @@ from ..tolerances import (
     PARALLEL_PROVEN_ROOT_WIDTH,
     length_scale,
 )
+from .search import cramer_octic
 
 __all__ = ["stewart_fk_proven", "rpr_fk_proven"]
 
@@ -380,11 +381,7 @@ def _rpr_exact_polynomial(a, b, rho):
             + (a[0][0] ** 2 + a[0][1] ** 2)
         )
         rhs.append(constant * W + 2 * (a[k][0] * Rb[0] + a[k][1] * Rb[1]))
-    (r2x, r2y), (r3x, r3y) = rows
-    D = r2x * r3y - r2y * r3x
-    Nx = rhs[0] * r3y - rhs[1] * r2y
-    Ny = r2x * rhs[1] - r3x * rhs[0]
-    octic = (Nx - a[0][0] * D) ** 2 + (Ny - a[0][1] * D) ** 2 - rho[0] ** 2 * D**2
+    D, Nx, Ny, octic = cramer_octic(rows, rhs, a[0], rho[0])
     sextic, remainder = sp.div(octic, W)
     return (sextic if remainder.is_zero else octic), Nx, Ny, D, W
 

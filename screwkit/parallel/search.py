@@ -24,6 +24,7 @@
 import numpy as np
 
 from .._checks import as_float_array, check_flag
+from .._docstrings import fill
 from ..orientation import rotation_from_quaternion
 from ..tolerances import (
     LENGTH_TOL,
@@ -179,6 +180,25 @@ def _sextic_modes(pm, rho):
     return poses, poly, stuck
 
 
+def cramer_octic(rows, rhs, a0, rho0):
+    """The 3-RPR's elimination after the loops are made linear in q: Cramer's rule
+    q = (Nx, Ny) / D on the two linear rows, put into the first loop
+    |q - a0|^2 = rho0^2 times D^2. Written once for NumPy polynomials (the float
+    sextic) and SymPy expressions (the exact one of :mod:`screwkit.parallel.proven`).
+
+    Returns
+    -------
+    D, Nx, Ny, octic
+        The determinant, the numerators, and the polynomial of degree 8 in t.
+    """
+    (r2x, r2y), (r3x, r3y) = rows
+    D = r2x * r3y - r2y * r3x
+    Nx = rhs[0] * r3y - rhs[1] * r2y
+    Ny = r2x * rhs[1] - r3x * rhs[0]
+    octic = (Nx - a0[0] * D) ** 2 + (Ny - a0[1] * D) ** 2 - rho0**2 * D**2
+    return D, Nx, Ny, octic
+
+
 def _sextic(a, b, rho, phi0):
     """The polynomial in t and q(t); b holds the platform points relative to b_0."""
     W, Cp, Sp = _poly(1, 0, 1), _poly(1, 0, -1), _poly(0, 2)
@@ -192,11 +212,7 @@ def _sextic(a, b, rho, phi0):
         rows.append((2 * (Rb[0] - d[0] * W), 2 * (Rb[1] - d[1] * W)))
         constant = rho[k] ** 2 - rho[0] ** 2 - b[k] @ b[k] - a[k] @ a[k] + a[0] @ a[0]
         rhs.append(constant * W + 2 * (a[k][0] * Rb[0] + a[k][1] * Rb[1]))
-    (r2x, r2y), (r3x, r3y) = rows
-    D = r2x * r3y - r2y * r3x
-    Nx = rhs[0] * r3y - rhs[1] * r2y
-    Ny = r2x * rhs[1] - r3x * rhs[0]
-    octic = (Nx - a[0][0] * D) ** 2 + (Ny - a[0][1] * D) ** 2 - rho[0] ** 2 * D**2
+    D, Nx, Ny, octic = cramer_octic(rows, rhs, a[0], rho[0])
     sextic, remainder = divmod(octic, W)
     if np.max(np.abs(remainder.coef)) > PARALLEL_POLY_ZERO_TOL * np.max(
         np.abs(octic.coef)
@@ -498,17 +514,22 @@ def sort_modes(pm, poses):
     )
 
 
+_SEARCH = """Parameters
+----------
+pm : ParallelManipulator
+rho : ndarray, shape (m,)
+    The actuated joint values (m or rad).
+starts : int
+    How many random starting poses.
+seed : int
+    The seed of the random starts (the search is deterministic)."""
+
+
+@fill(search=_SEARCH)
 def random_starts(pm, rho, starts, seed):
     """The search's seeded starting poses around the home pose.
 
-    Parameters
-    ----------
-    pm : ParallelManipulator
-    rho : ndarray, shape (m,)
-        The actuated joint values (m or rad).
-    starts : int
-        How many.
-    seed : int
+    {search}
 
     Returns
     -------
@@ -540,6 +561,7 @@ def random_starts(pm, rho, starts, seed):
     return T0
 
 
+@fill(search=_SEARCH)
 def multistart(pm, rho, starts, seed):
     """Assembly modes by Newton from many seeded random poses: not proven complete.
 
@@ -548,17 +570,9 @@ def multistart(pm, rho, starts, seed):
     or the base's size plus the mechanism's scale for crank legs), and for a spatial
     mechanism whose base and platform points are flat, the mirror images of the poses
     found through the base plane. ``pm.fk_all(rho)`` calls it for every mechanism but
-    the 3-RPR.
+    the 3-RPR, the 3-RRR, the delta and the Tripteron.
 
-    Parameters
-    ----------
-    pm : ParallelManipulator
-    rho : ndarray, shape (m,)
-        The actuated joint values (m or rad).
-    starts : int
-        How many random starting poses.
-    seed : int
-        The seed of the random starts (the search is deterministic).
+    {search}
 
     Returns
     -------
