@@ -36,7 +36,11 @@ helpers keep the build strict (``-W -n``) without hiding a broken reference:
   a helper outside ``__all__``) is printed as code, not linked, and not reported; a
   reference to anything that does not exist still fails the build;
 * types of NumPy, SymPy, Matplotlib and ipywidgets (from the dataclasses' annotations)
-  are not documented here: ``nitpick_ignore_regex`` lets them stand unlinked.
+  are not documented here: ``nitpick_ignore_regex`` lets them stand unlinked;
+* a constant re-exported under another module (``screwkit.ik.SINGULAR_TOL``, a tuple or
+  a list of ``screwkit.parallel``) has no ``#:`` comment where autodoc looks, which
+  would print its type's docstring ("Convert a string or number to a floating point
+  number"): it gets the ``#:`` comment of the module that assigns it instead.
 """
 
 import ast
@@ -285,6 +289,53 @@ def escape_norms(app, what, name, obj, options, lines):
             )
 
 
+def assignment_comments(package):
+    """The ``#:`` comments of the package's top-level assignments, by name, over every
+    module (private ones included: ``tolerances``, where most constants live), and the
+    names that ``from ... import NAME as ALIAS`` gives them: ({name: [(value,
+    comment lines)]}, {alias: name})."""
+    comments, aliases = {}, {}
+    root = importlib.import_module(package)
+    for info in pkgutil.walk_packages(root.__path__, package + "."):
+        module = importlib.import_module(info.name)
+        with open(module.__file__, encoding="utf-8") as source:
+            text = source.read()
+        source_lines = text.splitlines()
+        for node in ast.parse(text).body:
+            if isinstance(node, ast.ImportFrom):
+                aliases.update((a.asname, a.name) for a in node.names if a.asname)
+            if not isinstance(node, ast.Assign):
+                continue
+            above, k = [], node.lineno - 2
+            while k >= 0 and source_lines[k].lstrip().startswith("#:"):
+                above.insert(0, source_lines[k].lstrip()[2:].strip())
+                k -= 1
+            for target in node.targets:
+                if isinstance(target, ast.Name) and above:
+                    value = getattr(module, target.id, None)
+                    comments.setdefault(target.id, []).append((value, above))
+    return comments, aliases
+
+
+def constant_comments(app, what, name, obj, options, lines):
+    """A constant whose docstring is its type's gets its assignment's comment: the
+    one of its name (or of the name it was imported as) whose value it is."""
+    own = getattr(type(obj), "__doc__", None)
+    if what != "data" or not own or not lines:
+        return
+    if lines[0].strip() != inspect.cleandoc(own).splitlines()[0].strip():
+        return
+    if not hasattr(app, "_screwkit_comments"):
+        app._screwkit_comments = assignment_comments(PACKAGE)
+    comments, aliases = app._screwkit_comments
+    tail = name.rsplit(".", 1)[-1]
+    for key in (tail, aliases.get(tail)):
+        for value, comment in comments.get(key, ()):
+            if value is obj:
+                lines[:] = list(comment)
+                return
+
+
 def napoleon_except_attributes(napoleon):
     def process(app, what, name, obj, options, lines):
         if what not in ("attribute", "property", "data"):
@@ -350,6 +401,7 @@ def setup(app):
                 napoleon_except_attributes(listener.handler),
                 priority=listener.priority,
             )
+    app.connect("autodoc-process-docstring", constant_comments, priority=300)
     app.connect("autodoc-process-docstring", escape_norms, priority=400)
     app.connect("missing-reference", private_reference)
     app.connect("config-inited", ignore_library_types)

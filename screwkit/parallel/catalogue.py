@@ -56,6 +56,8 @@ def _circle(radius, degrees):
 #: leg i joins base point i to platform point i (each base pair reaches two platform
 #: pairs).
 STEWART_BASE = _circle(1, [-15, 15, 105, 135, 225, 255])
+#: Default Stewart-Gough platform points (m, platform frame): on a circle of 0.5 m at
+#: 120 k -/+ 45 degrees (see STEWART_BASE).
 STEWART_PLATFORM = _circle(sp.Rational(1, 2), [-45, 45, 75, 165, 195, 285])
 
 #: Default 3-RPR geometry (m): with the leg lengths RPR_SIX_MODES_RHO it has six real
@@ -65,11 +67,13 @@ RPR_BASE = [
     [sp.Rational(3, 5), sp.Rational(-4, 5)],
     [sp.Rational(1, 5), sp.Rational(1, 2)],
 ]
+#: Default 3-RPR platform points (m, platform frame), with RPR_BASE.
 RPR_PLATFORM = [
     [0, 0],
     [sp.Rational(-1, 2), sp.Rational(3, 10)],
     [sp.Rational(1, 10), sp.Rational(-7, 10)],
 ]
+#: Leg lengths (m) at which the default 3-RPR has six real assembly modes.
 RPR_SIX_MODES_RHO = (0.92, 1.37, 0.9)
 
 
