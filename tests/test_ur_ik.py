@@ -8,7 +8,7 @@ from builders import ur5e
 
 import screwkit as sk
 from screwkit import ik
-from screwkit.ik.ur import STRUCTURE
+from screwkit.ik.ur import STRUCTURE, URArm
 
 RNG = np.random.default_rng(2013)
 # a region of generic poses where all eight solutions exist (elbow bent, wrist forward)
@@ -123,11 +123,17 @@ def test_other_arms_are_refused_naming_the_structures(build):
     assert "must have 6 joints" in str(error.value)
 
 
-def test_a_ur_with_joint_4_not_parallel_is_refused():
+def test_a_ur_with_joint_4_not_parallel_is_refused_by_the_ur_engine():
+    """The UR engine refuses it; analytic_ik solves it as another class of 6R."""
     links = list(ur5e().links)
     links[2] = sk.Link.revolute(a=-0.3922, alpha=0.2)
+    chain = sk.Chain(links)
     with pytest.raises(ValueError, match="parallel axes for joints 2, 3 and 4"):
-        ik.analytic_ik(sk.Chain(links), np.eye(4))
+        URArm.from_chain(chain)
+    q = np.array([0.4, -1.3, 1.7, 0.2, 1.1, -0.6])
+    solutions = ik.analytic_ik(chain, chain.fk(q))
+    assert solutions.structure != STRUCTURE
+    assert any(np.allclose(sk.wrap_angle(s.q - q), 0, atol=1e-8) for s in solutions)
 
 
 def test_puma_is_still_the_spherical_wrist_structure():
