@@ -10,14 +10,14 @@ body and geometric forms of one quantity), their docstrings hold a placeholder s
 ...
 ...     {returns}
 ...     '''
->>> print(size.__doc__.replace("    ", "~"))
+>>> import inspect
+>>> print(inspect.cleandoc(size.__doc__))
 The size of a pose.
 <BLANKLINE>
-~Returns
-~-------
-~float
-~~Its size.
-~
+Returns
+-------
+float
+    Its size.
 """
 
 import textwrap
