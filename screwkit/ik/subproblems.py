@@ -951,10 +951,10 @@ def subproblem5(k1, k2, k3, p0, p1, p2, p3):
     p0 + R(k1, theta1) p1 = R(k2, theta2) (p2 + R(k3, theta3) p3) (Elias and Wen's
     subproblem 5, three cones), rotations about axes through the origin.
 
-    Up to four solutions: k2 . (p0 + R1 p1) = k2 . (p2 + R3 p3) and
-    |p0 + R1 p1| = |p2 + R3 p3| are two equations, each a sinusoid in theta1 plus one in
-    theta3, which eliminate to a quartic; theta2 then turns p2 + R3 p3 onto
-    p0 + R1 p1 (subproblem 1). Floats only.
+    Up to four solutions: k2 . (p0 + R1 p1) = k2 . (p2 + R3 p3) and the equal
+    lengths ``|p0 + R1 p1| = |p2 + R3 p3|`` are two equations, each a sinusoid in
+    theta1 plus one in theta3, which eliminate to a quartic; theta2 then turns
+    p2 + R3 p3 onto p0 + R1 p1 (subproblem 1). Floats only.
 
     Parameters
     ----------

@@ -183,7 +183,7 @@ def _sextic_modes(pm, rho):
 def cramer_octic(rows, rhs, a0, rho0):
     """The 3-RPR's elimination after the loops are made linear in q: Cramer's rule
     q = (Nx, Ny) / D on the two linear rows, put into the first loop
-    |q - a0|^2 = rho0^2 times D^2. Written once for NumPy polynomials (the float
+    ``|q - a0|^2 = rho0^2``, times D^2. Written once for NumPy polynomials (the float
     sextic) and SymPy expressions (the exact one of :mod:`screwkit.parallel.proven`).
 
     Returns
