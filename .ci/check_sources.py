@@ -229,7 +229,7 @@ def notation_alternatives(page=NOTATION_PAGE):
     alternatives = {}
     for line in text[start : end if end > 0 else None].splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) < 4 or set(cells[0]) <= set("-") or cells[0] == "concept":
+        if len(cells) < 3 or set(cells[0]) <= set("-") or cells[0] == "concept":
             continue
         for symbol in re.findall(r"`([^`]+)`", cells[-1]):
             alternatives[symbol] = cells[0]
