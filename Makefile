@@ -79,9 +79,11 @@ $(BENCH_STAMP): requirements.txt benchmarks/requirements.txt pyproject.toml
 # Each script's tables also go to benchmarks/results/NAME.txt, headed by the date and the machine;
 # the book's appendix "screwkit against other libraries" (book/benchmarks.md) prints those files.
 BENCH_RESULTS := benchmarks/results
+# a subset: make bench BENCH_SCRIPTS="benchmarks/bench_ik_general.py"
+BENCH_SCRIPTS ?= benchmarks/bench_*.py
 bench: $(BENCH_STAMP)
 	@mkdir -p $(BENCH_RESULTS)
-	@for script in benchmarks/bench_*.py; do \
+	@for script in $(BENCH_SCRIPTS); do \
 	  out=$(BENCH_RESULTS)/$$(basename $$script .py).txt; echo "== $$script"; \
 	  { echo "# $$script, measured $$(date -u '+%Y-%m-%d %H:%M UTC')"; \
 	    echo "# on $$(uname -sm), $$(getconf _NPROCESSORS_ONLN) cores:\

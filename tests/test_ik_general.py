@@ -156,14 +156,27 @@ def test_the_generating_configuration_is_found_on_200_random_arms():
         assert contains(result.Q, q)
 
 
+def test_a_batch_finds_every_generating_configuration():
+    # 100 poses of one arm in one call: the batched elimination, checked pose by pose
+    rng = np.random.default_rng(21)
+    table, chain = random_arm(rng)
+    q = rng.uniform(-np.pi, np.pi, (100, 6))
+    T = dh_fk(table, q)
+    results = general_6r_ik(chain, T)
+    assert isinstance(results, list) and len(results) == 100
+    for result, q_k, T_k in zip(results, q, T):
+        check_answer(result, table, T_k)
+        assert contains(result.Q, q_k)
+
+
 @pytest.mark.parametrize("arm", range(200 if FULL else 12))
 def test_no_solution_of_a_300_start_search_is_missing(arm):
+    # the arm's poses in one batched call (5 in the full run), each against the search
     rng = np.random.default_rng(1000 + arm)
     table, chain = random_arm(rng)
-    for _ in range(5 if FULL else 1):
-        q = rng.uniform(-np.pi, np.pi, 6)
-        T = dh_fk(table, q)[0]
-        result = general_6r_ik(chain, T)
+    q = rng.uniform(-np.pi, np.pi, (5 if FULL else 2, 6))
+    targets = dh_fk(table, q)
+    for T, result in zip(targets, general_6r_ik(chain, targets)):
         check_answer(result, table, T)
         searched = multistart(table, T, seed=arm)
         assert len(searched) >= 1  # the search finds the generating one at least
@@ -258,6 +271,23 @@ def test_a_pose_out_of_reach_has_no_solution_and_says_so():
     assert "out of reach" in result.reason
 
 
+def test_a_batch_mixes_poses_in_and_out_of_reach_and_singular_ones():
+    # each pose of a batch gets its own answer and reason, as when asked alone
+    puma = sk.robots.puma560()
+    q = np.array([[0.3, -0.5, 0.8, 0.4, 0.0, 0.2], [0.1, 0.2, -0.3, 0.4, 0.5, 0.6]])
+    far = sk.transforms.transl(50.0, 0.0, 0.0)
+    T = np.stack([puma.fk(q[0]), far, puma.fk(q[1])])
+    singular, out, regular = general_6r_ik(puma, T)
+    assert "singular configuration" in singular.reason
+    assert out.Q.shape == (0, 6) and "out of reach" in out.reason
+    assert regular.reason is None and contains(regular.Q, q[1])
+    closed = sk.ik.analytic_ik_all(puma, T[2])
+    closed = closed[~np.isnan(closed).any(axis=1)]
+    assert len(regular.Q) == len(closed)
+    for c in closed:
+        assert contains(regular.Q, c)
+
+
 def test_an_offset_wrist_arm_misses_nothing_the_search_finds():
     # a Kinova-Jaco-like arm: 60 degree wrist, no axes meeting (no closed form here)
     table = np.array(
@@ -318,9 +348,8 @@ def test_solutions_sharing_the_eigenvalue_joint_are_all_found():
     )
     chain = sk.Chain.from_table(np.column_stack([np.zeros(6), table]))
     rng = np.random.default_rng(13)
-    for q in rng.uniform(-np.pi, np.pi, (3, 6)):
-        T = dh_fk(table, q)[0]
-        result = general_6r_ik(chain, T)
+    targets = dh_fk(table, rng.uniform(-np.pi, np.pi, (3, 6)))
+    for T, result in zip(targets, general_6r_ik(chain, targets)):  # one batch
         check_answer(result, table, T)
         searched = multistart(table, T, seed=2)
         assert len(searched) == len(result.Q)

@@ -434,7 +434,8 @@ def _analytic_ik(arm, chain, T, within_limits, near):
         answers = _decomposed_answers(arm, chain, batch, within_limits, near)
     elif isinstance(arm, _GeneralArm):
         answers = [
-            _general_answer(arm, chain, pose, within_limits, near) for pose in batch
+            _general_answer(arm, chain, found, within_limits, near)
+            for found in arm.solver(chain, batch)
         ]
     else:
         Q, flags, code = arm._solve_batch(batch)
@@ -522,8 +523,8 @@ def _decomposed_answers(arm, chain, batch, within_limits, near):
     return answers
 
 
-def _general_answer(arm, chain, T, within_limits, near):
-    found = arm.solver(chain, T)
+def _general_answer(arm, chain, found, within_limits, near):
+    """The IKSolutions of a general 6R arm from its solver's answer for one pose."""
     solutions = [
         (q, f"s{i}", res, ())
         for i, (q, res) in enumerate(zip(found.Q, found.residuals))

@@ -35,6 +35,11 @@ UR5e are solved so); a nearly degenerate form is used only when no well-conditio
 one exists; when every one is degenerate the answer says so (a reason, no solutions)
 rather than give a wrong count.
 
+A batch of poses is solved together: the elimination is the same for every pose, so
+each step is one NumPy call for the whole batch (the 24 x 24 eigenvalue problems
+included), and a pose whose form turns out degenerate goes on to the next form with
+the other poses that did.
+
 What the answer claims: every real root of the eigenvalue problem whose imaginary
 part is below IK_GENERAL_REAL_TOL becomes a candidate, and every candidate that
 Newton brings to the pose (residual at most IK_GENERAL_ACCEPT_TOL) is returned once.
@@ -132,9 +137,6 @@ class GeneralIK:
     formulation: str = ""
 
 
-# ---- the loop's two sides -----------------------------------------------------------
-
-
 def _cross3(a, b):
     """a x b along the last axis (..., 3): np.cross without its axis handling, which
     costs more than the product for the few small arrays here."""
@@ -144,94 +146,128 @@ def _cross3(a, b):
 _NEXT, _LAST = [1, 2, 0], [2, 0, 1]
 
 
-def _turn(w, r, angle, x, point):
-    """x (3, m) turned by ``angle`` (m,) about the axis through r along unit w (3,);
-    a point if ``point``, else a direction. Rodrigues' formula."""
-    w, r = w[:, None], r[:, None]
-    d = x - r if point else x
+# ---- the loop's two sides, for a batch ----------------------------------------------
+#
+# Arrays are laid out component first: points and directions (3, n, g) for n poses (or
+# candidates) and g angles each, the axes of a formulation (6, 3, n, 1) (n = 1 when they
+# do not depend on the pose), angles (n, g).
+
+
+def _turn(w, c, s, x):
+    """Directions x (3, n, g) turned about unit w (3, n, 1) by the angles whose
+    cosines and sines are c, s (n, g): Rodrigues' formula."""
+    return x * c + _cross(w, x) * s + w * (np.sum(w * x, axis=0) * (1 - c))
+
+
+def _turn_both(w, r, angle, p, l):
+    """Points p and directions l (3, n, g) turned by ``angle`` (n, g) about the axis
+    through r (3, n, 1) along unit w (3, n, 1)."""
     c, s = np.cos(angle), np.sin(angle)
-    turned = d * c + _cross(w, d) * s + w * (np.sum(w * d, axis=0) * (1 - c))
-    return turned + r if point else turned
+    return _turn(w, c, s, p - r) + r, _turn(w, c, s, l)
 
 
 def _products(p, l):
-    """The 14 Raghavan–Roth quantities (14, m) of points p and directions l
-    (3, m)."""
+    """The 14 Raghavan–Roth quantities (14, n, g) of points p and directions l
+    (3, n, g)."""
     pp = np.sum(p * p, axis=0)
     pl = np.sum(p * l, axis=0)
     return np.concatenate([p, l, [pp, pl], _cross(p, l), pp * l - 2 * pl * p])
 
 
-def _turn_both(w, r, angle, p, l):
-    """Points p and directions l (3, m) turned by ``angle`` (m,) about the axis through
-    r along unit w (3,), in one Rodrigues step."""
-    m = p.shape[1]
-    x = np.concatenate([p - r[:, None], l], axis=1)
-    angle = np.concatenate([angle, angle])
-    w = w[:, None]
-    c, s = np.cos(angle), np.sin(angle)
-    x = x * c + _cross(w, x) * s + w * (np.sum(w * x, axis=0) * (1 - c))
-    return x[:, :m] + r[:, None], x[:, m:]
-
-
 def _left(w, r, q3, q4, q5):
     """E3 E4 E5 applied to axis 6's point and direction (r[5], w[5]): the 14
-    quantities (14, m) at the angles (m,)."""
-    p = np.repeat(r[5][:, None], len(q3), axis=1)
-    l = np.repeat(w[5][:, None], len(q3), axis=1)
+    quantities (14, n, g) at the angles (n, g); axes w, r (6, 3, n, 1)."""
+    shape = (3,) + np.broadcast_shapes(w.shape[2:], q3.shape)
+    p, l = np.broadcast_to(r[5], shape), np.broadcast_to(w[5], shape)
     for k, q in ((4, q5), (3, q4), (2, q3)):
         p, l = _turn_both(w[k], r[k], q, p, l)
     return _products(p, l)
 
 
 def _right(w, r, hp, hl, q1, q2):
-    """E2^-1 E1^-1 applied to G's image (hp, hl) of axis 6's point and direction:
-    the 14 quantities (14, m) at the angles (m,)."""
-    p = np.repeat(hp[:, None], len(q1), axis=1)
-    l = np.repeat(hl[:, None], len(q1), axis=1)
+    """E2^-1 E1^-1 applied to G's image (hp, hl) (3, n, 1) of axis 6's point and
+    direction: the 14 quantities (14, n, g) at the angles (n, g)."""
+    shape = (3,) + np.broadcast_shapes(hp.shape[1:], q1.shape)
+    p, l = np.broadcast_to(hp, shape), np.broadcast_to(hl, shape)
     for k, q in ((0, q1), (1, q2)):
         p, l = _turn_both(w[k], r[k], -q, p, l)
     return _products(p, l)
 
 
-# ---- one formulation ----------------------------------------------------------------
+def _pick(axes, rows):
+    """The axes (6, 3, n, 1) of the poses ``rows``: themselves when shared (n = 1)."""
+    return axes if axes.shape[2] == 1 else axes[:, :, rows]
 
 
-def _companion(w, r, G, shift):
-    """The eigenvalue problem of the loop E1 ... E6 = G (unit axes w, points r, the
-    lengths divided by the chain's size), angles q_i = phi_i + shift_i.
+# ---- one formulation, for a batch ---------------------------------------------------
 
-    Returns (A, Q, C0, reason): A the 24 x 24 companion matrix whose eigenvalues are
-    tan(phi_3 / 2), Q (14, 8) and C0 (14,) the right side's coefficients (for q1,
-    q2); A is None with a reason when this formulation is degenerate.
-    """
-    hp, hl = G[:3, :3] @ r[5] + G[:3, 3], G[:3, :3] @ w[5]
-    a1, a2 = _GRID2 + shift[:2, None]
-    right = _right(w, r, hp, hl, a1, a2) @ _FIT2.T  # (14, 9) coefficients
-    C0, Q = right[:, 0], right[:, 1:]
-    U, sigma, _ = np.linalg.svd(Q)
-    if sigma[-1] <= IK_GENERAL_RANK_TOL * sigma[0]:
-        return None, Q, C0, _RANK_REASON, 0.0, None
-    N = U[:, 8:].T  # (6, 14): N Q = 0
-    left = _left_coefficients(w[2:], r[2:], shift[2:5].tobytes()).copy()
-    left[:, 0] -= C0
-    # (6, power of x3, power of x4, power of x5)
-    poly = (N @ left @ _TO_POLY3).reshape(6, 3, 3, 3)
-    M = np.zeros((3, 12, 4, 3))
-    M[:, :6, :3, :] = poly.transpose(1, 0, 2, 3)
-    M[:, 6:, 1:, :] = poly.transpose(1, 0, 2, 3)
-    M = M.reshape(3, 12, 12)
-    sv = np.linalg.svd(M[2], compute_uv=False)
-    size = max(np.abs(M).max(), 1.0)
-    if sv[-1] <= IK_GENERAL_LEADING_TOL * size:
-        reason = "the eigenvalue problem's leading matrix is singular"
-        return None, Q, C0, reason, 0.0, None
-    solved = np.linalg.solve(M[2], np.concatenate([M[0], M[1]], axis=1))
-    A = np.zeros((24, 24))
-    A[:12, 12:] = np.eye(12)
-    A[12:, :12] = -solved[:, :12]
-    A[12:, 12:] = -solved[:, 12:]
-    return A, Q, C0, None, min(sigma[-1] / sigma[0], sv[-1] / size), M
+
+@dataclass
+class _Eliminated:
+    """One formulation's elimination for n poses: the pieces the candidates need.
+
+    ``A`` (m, 24, 24) the companion matrices of the ``usable`` poses (bool (n,)),
+    ``M`` (m, 3, 12, 12) their matrix polynomials, ``C0`` (n, 14) and ``pinv``
+    (n, 8, 14) the right side's constant and the pseudo-inverse of its coefficients
+    (for q1, q2), ``reason`` (n,) None or why a pose's form is degenerate,
+    ``quality`` (n,) how far from degenerate (1 best, 0 degenerate)."""
+
+    A: np.ndarray
+    M: np.ndarray
+    C0: np.ndarray
+    pinv: np.ndarray
+    usable: np.ndarray
+    reason: list
+    quality: np.ndarray
+
+
+def _eliminate(w, r, G, shift):
+    """The eigenvalue problems of the loops E1 ... E6 = G_k (unit axes w, points r
+    (6, 3, n or 1, 1), lengths divided by the chain's size; poses G (n, 4, 4)), angles
+    q_i = phi_i + shift_i: an :class:`_Eliminated`."""
+    n = G.shape[0]
+    r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
+    w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
+    hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
+    hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
+    a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
+    right = np.einsum("inj,kj->nik", _right(w, r, hp, hl, a1, a2), _FIT2)
+    C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
+    U, sigma, Vh = np.linalg.svd(Q)
+    reason = [None] * n
+    usable = sigma[:, -1] > IK_GENERAL_RANK_TOL * sigma[:, 0]
+    for k in np.nonzero(~usable)[0]:
+        reason[k] = _RANK_REASON
+    pinv = np.swapaxes(Vh, 1, 2) @ (np.swapaxes(U[:, :, :8], 1, 2) / sigma[..., None])
+    N = np.swapaxes(U[:, :, 8:], 1, 2)  # (n, 6, 14): N Q = 0
+    if w.shape[2] == 1:  # joints 3 to 6 do not depend on the pose
+        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
+    else:
+        a3, a4, a5 = _GRID3[:, None, :] + shift[2:5, None, None]
+        left = np.einsum("inj,kj->nik", _left(w, r, a3, a4, a5), _FIT3)
+    left = np.broadcast_to(left, (n, 14, 27)).copy()
+    left[:, :, 0] -= C0
+    # (n, 6, power of x3, power of x4, power of x5)
+    poly = (N @ left @ _TO_POLY3).reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
+    M = np.zeros((n, 3, 12, 4, 3))
+    M[:, :, :6, :3, :] = poly
+    M[:, :, 6:, 1:, :] = poly
+    M = M.reshape(n, 3, 12, 12)
+    sv = np.linalg.svd(M[:, 2], compute_uv=False)
+    size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
+    leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
+    for k in np.nonzero(usable & ~leading)[0]:
+        reason[k] = "the eigenvalue problem's leading matrix is singular"
+    usable &= leading
+    quality = np.where(
+        usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
+    )
+    M = M[usable]
+    solved = np.linalg.solve(M[:, 2], np.concatenate([M[:, 0], M[:, 1]], axis=2))
+    A = np.zeros((len(M), 24, 24))
+    A[:, :12, 12:] = np.eye(12)
+    A[:, 12:] = -solved
+    return _Eliminated(A, M, C0, pinv, usable, reason, quality)
 
 
 @functools.lru_cache(maxsize=64)
@@ -239,9 +275,10 @@ def _left_coefficients_cached(w, r, shift):
     """_left_coefficients on bytes (hashable), cached: joints 3 to 6 of a chain's
     first formulation do not depend on the pose."""
     w, r = np.frombuffer(w).reshape(4, 3), np.frombuffer(r).reshape(4, 3)
-    a3, a4, a5 = _GRID3 + np.frombuffer(shift)[:, None]
+    a3, a4, a5 = _GRID3[:, None, :] + np.frombuffer(shift)[:, None, None]
     pad = np.zeros((2, 3))
-    left = _left(np.vstack([pad, w]), np.vstack([pad, r]), a3, a4, a5) @ _FIT3.T
+    axes = np.vstack([pad, w])[:, :, None, None], np.vstack([pad, r])[:, :, None, None]
+    left = _left(*axes, a3, a4, a5)[:, 0] @ _FIT3.T
     left.setflags(write=False)
     return left
 
@@ -299,20 +336,19 @@ def _repeated_roots(M, x3, V):
     return np.concatenate(roots), np.concatenate(vectors)
 
 
-def _candidates(w, r, G, shift):
-    """Joint vectors (k, 6) of the loop E1 ... E6 = G from its eigenvalue problem,
-    or (None, reason)."""
-    A, Q, C0, reason, quality, M = _companion(w, r, G, shift)
-    if A is None:
-        return None, reason, quality
-    values, vectors = np.linalg.eig(A)
+def _candidates(w, r, G, shift, found):
+    """Joint vectors (k, 6) of the loops E1 ... E6 = G_j from the eigenvalue problems
+    of ``found`` (an :class:`_Eliminated`), and the pose j (k,) of each."""
+    values, vectors = np.linalg.eig(found.A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
-    if not np.any(real):
-        return np.zeros((0, 6)), None, quality
-    x3, Z = values[real], vectors[:, real]
+    usable = np.nonzero(found.usable)[0]
+    which, column = np.nonzero(real)
+    x3 = values[which, column]
+    Z = vectors[which, :, column]  # (k, 24)
     # the eigenvector is (v, x3 v): take the better-scaled half
-    V = np.where(np.abs(x3) <= 1, Z[:12], Z[12:]).T
-    x3, V = _repeated_roots(M, x3, V)
+    V = np.where(np.abs(x3[:, None]) <= 1, Z[:, :12], Z[:, 12:])
+    x3, V, which = _with_repeated_roots(found.M, x3, V, which)
+    pose = usable[which]
     V = V.reshape(-1, 4, 3)
     x4 = np.sum(V[:, :-1].conj() * V[:, 1:], axis=(1, 2)) / np.sum(
         np.abs(V[:, :-1]) ** 2, axis=(1, 2)
@@ -324,58 +360,102 @@ def _candidates(w, r, G, shift):
     q4 = _half_angle(x4.real) + shift[3]
     q5 = _half_angle(x5.real) + shift[4]
     # q1, q2: the right side's 8 products from the 14 values of the left side
-    b = np.linalg.lstsq(Q, _left(w, r, q3, q4, q5) - C0[:, None], rcond=None)[0]
-    # b's rows: (1, c1, s1) x (1, c2, s2) without the first, in that order
-    q1 = np.arctan2(b[5], b[2]) + shift[0]
-    q2 = np.arctan2(b[1], b[0]) + shift[1]
+    wk, rk = _pick(w, pose), _pick(r, pose)
+    values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0]
+    b = np.einsum("kij,kj->ki", found.pinv[pose], values.T - found.C0[pose])
+    # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
+    q1 = np.arctan2(b[:, 5], b[:, 2]) + shift[0]
+    q2 = np.arctan2(b[:, 1], b[:, 0]) + shift[1]
     q = np.stack([q1, q2, q3, q4, q5, np.zeros_like(q1)], axis=1)
-    q[:, 5] = _last_angle(w, r, G, q)
-    return q, None, quality
+    q[:, 5] = _last_angle(wk, rk, G[pose], q)
+    return q, pose
+
+
+def _with_repeated_roots(M, x3, V, which):
+    """The roots x3 (k,), their vectors V (k, 12) and problems ``which`` (k,), with the
+    vectors of repeated roots replaced (:func:`_repeated_roots`) in the problems that
+    have any."""
+    order = np.lexsort((x3.real, which))
+    x3, V, which = x3[order], V[order], which[order]
+    close = (which[1:] == which[:-1]) & (
+        np.abs(np.diff(x3.real)) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x3[1:]))
+    )
+    if not np.any(close):
+        return x3, V, which
+    parts = []
+    for j in np.unique(which):
+        mine = which == j
+        if np.any(close & mine[1:]):
+            x, v = _repeated_roots(M[j], x3[mine], V[mine])
+            parts.append((x, v, np.full(len(x), j)))
+        else:
+            parts.append((x3[mine], V[mine], which[mine]))
+    return tuple(np.concatenate(p) for p in zip(*parts))
 
 
 def _last_angle(w, r, G, q):
-    """q6 (k,) from q1..q5: the rotation E6 = (E1 ... E5)^-1 G about axis 6."""
-    w6 = w[5]
-    u = _cross3(w6, np.array([1.0, 0.0, 0.0]))
-    if np.linalg.norm(u) < 0.5:
-        u = _cross3(w6, np.array([0.0, 1.0, 0.0]))
-    u = u / np.linalg.norm(u)
-    Gu = np.repeat((G[:3, :3] @ u)[:, None], q.shape[0], axis=1)
-    for k in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
-        Gu = _turn(w[k], r[k], -q[:, k], Gu, False)
-    return np.arctan2(_cross3(w6, u) @ Gu, u @ Gu)
+    """q6 (k,) from q1..q5 (k, 6): the rotation E6 = (E1 ... E5)^-1 G_k about axis 6
+    (axes w, r (6, 3, k or 1, 1), poses G (k, 4, 4))."""
+    k = len(q)
+    w6 = np.broadcast_to(w[5, :, :, 0], (3, k))
+    u = _cross(w6, np.array([1.0, 0.0, 0.0])[:, None])
+    u = np.where(
+        np.linalg.norm(u, axis=0) < 0.5,
+        _cross(w6, np.array([0.0, 1.0, 0.0])[:, None]),
+        u,
+    )
+    u = u / np.linalg.norm(u, axis=0)
+    Gu = np.einsum("kij,jk->ik", G[:, :3, :3], u)[..., None]
+    for j in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
+        angle = -q[:, j, None]
+        Gu = _turn(w[j], np.cos(angle), np.sin(angle), Gu)
+    Gu = Gu[..., 0]
+    return np.arctan2(np.sum(_cross(w6, u) * Gu, axis=0), np.sum(u * Gu, axis=0))
 
 
 # ---- the twelve formulations ---------------------------------------------------------
 
 
 def _inverse(T):
-    """The inverse of a rigid transform (4, 4), unchecked."""
-    inverse = np.eye(4)
-    inverse[:3, :3] = T[:3, :3].T
-    inverse[:3, 3] = -T[:3, :3].T @ T[:3, 3]
+    """The inverse of rigid transforms (..., 4, 4), unchecked."""
+    inverse = np.zeros_like(T)
+    Rt = np.swapaxes(T[..., :3, :3], -1, -2)
+    inverse[..., :3, :3] = Rt
+    inverse[..., :3, 3] = -(Rt @ T[..., :3, 3, None])[..., 0]
+    inverse[..., 3, 3] = 1.0
     return inverse
 
 
 def _adjoint_inverse(G, S):
-    """Ad(G^-1) applied to screws S (k, 6) [omega; v]."""
-    R, p = G[:3, :3], G[:3, 3]
-    w = S[:, :3] @ R  # R^T omega
-    v = (S[:, 3:] - _cross3(p, S[:, :3])) @ R
-    return np.concatenate([w, v], axis=1)
+    """Ad(G_n^-1) applied to screws S (k, 6) [omega; v], for poses G (n, 4, 4):
+    (n, k, 6)."""
+    R, p = G[:, None, :3, :3], G[:, None, :3, 3]
+    w = (S[:, None, :3] @ R)[..., 0, :]  # R^T omega
+    v = ((S[:, 3:] - _cross3(p, S[:, :3]))[..., None, :] @ R)[..., 0, :]
+    return np.concatenate([w, v], axis=-1)
 
 
 def _formulation(S, G, index):
-    """(name, screws, target, joint order, sign) of form ``index`` (0 to 11) of the
-    loop: joints 1..6 (index < 6) or 6..1, cyclically shifted by index % 6."""
+    """(name, w, r, target, joint order, sign) of form ``index`` (0 to 11) of the
+    loop for poses G (n, 4, 4): joints 1..6 (index < 6) or 6..1, cyclically shifted by
+    index % 6; w, r (6, 3, n, 1) the axes (n = 1 when they do not depend on the pose),
+    r the point of each axis nearest the origin."""
     backwards, k = divmod(index, 6)
     screws, target = (-S[::-1], _inverse(G)) if backwards else (S, G)
     order = np.arange(6)[::-1] if backwards else np.arange(6)
-    moved = np.concatenate([screws[k:], _adjoint_inverse(target, screws[:k])])
+    if k:
+        n = len(G)
+        kept = np.broadcast_to(screws[k:], (n, 6 - k, 6))
+        screws = np.concatenate([kept, _adjoint_inverse(target, screws[:k])], axis=1)
+    else:
+        screws = screws[None]
+    w = screws[..., :3]
+    r = _cross3(w, screws[..., 3:])
     name = "joints " + ("6..1" if backwards else "1..6")
     return (
         name + (f" shifted by {k}" if k else ""),
-        moved,
+        w.transpose(1, 2, 0)[..., None],
+        r.transpose(1, 2, 0)[..., None],
         target,
         np.roll(order, -k),
         -1.0 if backwards else 1.0,
@@ -426,9 +506,9 @@ def _poe(w, r, home, q):
     return R @ home[:3, :3], R @ home[:3, 3] + p, J
 
 
-def _polish(w, r, home, target, q):
-    """Newton steps on the pose from the candidates q (k, 6), lengths divided by the
-    chain's size.
+def _polish(w, r, home, targets, q):
+    """Newton steps on the pose from the candidates q (k, 6) towards their targets
+    (k, 4, 4), lengths divided by the chain's size.
 
     A step solves J_s dq = e, e = (omega, dp - omega x p): omega the vee of the skew
     part of R* R(q)^T, dp the position error, the spatial error twist to first order
@@ -437,7 +517,7 @@ def _polish(w, r, home, target, q):
     active = np.arange(len(q))
     for _ in range(NEWTON_STEPS):
         R, p, J = _poe(w, r, home, q[active])
-        E = target[:3, :3] @ np.swapaxes(R, 1, 2)
+        E = targets[active, :3, :3] @ np.swapaxes(R, 1, 2)
         omega = (
             np.stack(
                 [
@@ -449,7 +529,9 @@ def _polish(w, r, home, target, q):
             )
             / 2
         )
-        e = np.concatenate([omega, target[:3, 3] - p - _cross3(omega, p)], axis=1)
+        e = np.concatenate(
+            [omega, targets[active, :3, 3] - p - _cross3(omega, p)], axis=1
+        )
         moving = np.linalg.norm(e, axis=1) > IK_GENERAL_ACCEPT_TOL * 1e-3
         active, e, J = active[moving], e[moving], J[moving]
         if not len(active):
@@ -459,27 +541,35 @@ def _polish(w, r, home, target, q):
 
 
 def _residuals(chain, T, q, scale):
-    """The pose error (k,) of each q by the chain's own forward kinematics:
-    sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2), which is the norm of the error
-    twist [omega; v / scale] to first order (|R(q) - R|_F = 2 sqrt(2) sin(angle / 2))
-    and, unlike the skew part of R(q)^T R, vanishes only at the pose itself."""
+    """The pose error (k,) of each q (k, 6) against its pose T (k, 4, 4) by the
+    chain's own forward kinematics: sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2),
+    which is the norm of the error twist [omega; v / scale] to first order
+    (|R(q) - R|_F = 2 sqrt(2) sin(angle / 2)) and, unlike the skew part of R(q)^T R,
+    vanishes only at the pose itself."""
     Tq = chain.fk(q)
-    rotation = np.sum((Tq[:, :3, :3] - T[:3, :3]) ** 2, axis=(1, 2)) / 2
-    position = np.sum((Tq[:, :3, 3] - T[:3, 3]) ** 2, axis=1) / scale**2
+    rotation = np.sum((Tq[:, :3, :3] - T[:, :3, :3]) ** 2, axis=(1, 2)) / 2
+    position = np.sum((Tq[:, :3, 3] - T[:, :3, 3]) ** 2, axis=1) / scale**2
     return np.sqrt(rotation + position)
 
 
-def _say(w, r, home, Q):
-    """The reason of an answer: None for isolated solutions; a sentence for none or for
-    a solution where the Jacobian loses rank."""
+def _singular(w, r, home, Q):
+    """Whether the Jacobian loses rank at each solution Q (k, 6)."""
     if not len(Q):
-        return "no real solution: the pose is out of reach"
+        return np.zeros(0, bool)
     sigma = np.linalg.svd(_poe(w, r, home, Q)[2], compute_uv=False)
-    singular = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
+    return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
+
+
+def _say(singular):
+    """The reason of an answer from the singular flags (k,) of its solutions: None for
+    isolated solutions; a sentence for none or for a solution where the Jacobian loses
+    rank."""
+    if not len(singular):
+        return "no real solution: the pose is out of reach"
     if not np.any(singular):
         return None
     return (
-        f"{int(np.sum(singular))} of the {len(Q)} solutions are at a singular "
+        f"{int(np.sum(singular))} of the {len(singular)} solutions are at a singular "
         "configuration (the Jacobian loses rank): solutions there may coincide or "
         "form a continuum (aligned axes), of which Q holds points only"
     )
@@ -488,7 +578,7 @@ def _say(w, r, home, Q):
 def _distinct(Q, residuals):
     """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
     lexicographically."""
-    order = np.argsort(residuals)
+    order = np.argsort(residuals, kind="stable")
     Q, residuals = Q[order], residuals[order]
     same = np.max(np.abs(_wrap_angle(Q[:, None] - Q[None])), axis=2) <= (
         IK_GENERAL_SAME_TOL
@@ -503,25 +593,26 @@ def _distinct(Q, residuals):
 
 
 def general_6r_ik(chain, T):
-    """Every real inverse-kinematics solution of a 6R chain for one pose.
+    """Every real inverse-kinematics solution of a 6R chain, for one pose or a batch.
 
     The Raghavan–Roth equations eliminated to a 24 x 24 eigenvalue problem in
     tan(q3 / 2) (Manocha and Canny 1994), each real root back-substituted and
-    polished by Newton steps on ``chain.fk`` and ``chain.body_jacobian``; see the
-    module's docstring. Any geometry (DH or screws, base and tool included); an arm
-    whose special axes make every form of the elimination degenerate gets a reason,
-    not a wrong count.
+    polished by Newton steps on the chain's forward kinematics; see the module's
+    docstring. Any geometry (DH or screws, base and tool included); an arm whose
+    special axes make every form of the elimination degenerate gets a reason, not a
+    wrong count. A batch is solved together (one eigenvalue call for all its poses),
+    which is several times faster a pose than one call each.
 
     Parameters
     ----------
     chain : Chain
         A serial chain of 6 revolute joints.
-    T : array-like, shape (4, 4)
-        The end-effector pose, a rigid transform in the chain's world frame (m).
+    T : array-like, shape (4, 4) or (N, 4, 4)
+        The end-effector pose(s), rigid transforms in the chain's world frame (m).
 
     Returns
     -------
-    GeneralIK
+    GeneralIK, or a list of N for a batch
         ``Q`` (k, 6) the solutions (rad, in (-pi, pi], sorted), ``residuals`` (k,),
         ``reason`` (None when solved).
 
@@ -540,29 +631,46 @@ def general_6r_ik(chain, T):
         raise ValueError(
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
-    T = check_poses(T, "T", single_only=True)
+    T = check_poses(T, "T")
+    answers = _solve(chain, T[None] if T.ndim == 2 else T)
+    return answers[0] if T.ndim == 2 else answers
+
+
+def _solve(chain, T):
+    """The answers (a list of GeneralIK) for poses T (n, 4, 4): each form of the loop
+    is tried on the poses that no earlier form solved; a nearly degenerate form is
+    kept as a pose's fallback, used only when no well-conditioned form exists."""
     z, o, M = _geometry(chain)
     scale = length_scale(o, M[:3, 3])
-    M_scaled, T_scaled = M.copy(), T.copy()
-    M_scaled[:3, 3] /= scale
-    T_scaled[:3, 3] /= scale
+    home, T_scaled = M.copy(), T.copy()
+    home[:3, 3] /= scale
+    T_scaled[:, :3, 3] /= scale
     Sn = np.concatenate([z, _cross3(o / scale, z)], axis=1)  # unit screws (w; r x w)
-    G = T_scaled @ _inverse(M_scaled)
+    G = T_scaled @ _inverse(home)
+    n = len(T)
+    answers, reasons, fallback = [None] * n, [[] for _ in range(n)], {}
 
-    def finish(attempt, phi, name, order, sign):
-        """The answer from the candidates phi of a form."""
-        if len(_LAST_FORM) >= _LAST_FORM_SIZE:
-            _LAST_FORM.clear()
-        _LAST_FORM[key] = attempt
+    def finish(phi, pose, poses, name, order, sign):
+        """The answers of ``poses`` from the candidates phi (k, 6) of the form
+        ``name``, pose (k,) naming each candidate's pose."""
         q = np.empty_like(phi)
         q[:, order] = sign * phi
-        q = _polish(z, o / scale, M_scaled, T_scaled, q)
-        residuals = _residuals(chain, T, q, scale)
+        q = _polish(z, o / scale, home, T_scaled[pose], q)
+        residuals = _residuals(chain, T[pose], q, scale)
         good = residuals <= IK_GENERAL_ACCEPT_TOL
-        Q, residuals = _distinct(_wrap_angle(q[good]), residuals[good])
-        return GeneralIK(Q, residuals, _say(z, o / scale, M_scaled, Q), name)
+        q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
+        by_pose = np.argsort(pose, kind="stable")
+        q, pose, residuals = q[by_pose], pose[by_pose], residuals[by_pose]
+        starts = np.searchsorted(pose, poses, "left")
+        ends = np.searchsorted(pose, poses, "right")
+        kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
+        singular = _singular(z, o / scale, home, np.concatenate([Q for Q, _ in kept]))
+        start = 0
+        for j, (Q, res) in zip(poses, kept):
+            flags = singular[start : start + len(Q)]
+            answers[j] = GeneralIK(Q, res, _say(flags), name)
+            start += len(Q)
 
-    reasons, fallback = [], None
     # a singular leading matrix from special geometry stays singular at any shift:
     # every form is tried at the first shift before another shift is
     key = Sn.tobytes()
@@ -570,27 +678,42 @@ def general_6r_ik(chain, T):
     if key in _LAST_FORM:
         tries.remove(_LAST_FORM[key])
         tries.insert(0, _LAST_FORM[key])
+    pending = np.arange(n)
     for attempt in tries:
+        if not len(pending):
+            break
         shift = _SHIFTS[attempt[0]]
-        name, screws, target, order, sign = _formulation(Sn, G, attempt[1])
-        w = screws[:, :3]
-        r = _cross3(w, screws[:, 3:])  # the point of each axis nearest the origin
-        phi, reason, quality = _candidates(w, r, target, shift)
-        if phi is None:
-            reasons.append(f"{name}: {reason}")
-            continue
-        if quality < IK_GENERAL_COMFORT_TOL:  # nearly degenerate: look on
-            if fallback is None or quality > fallback[0]:
-                fallback = (quality, attempt, phi, name, order, sign)
-            continue
-        return finish(attempt, phi, name, order, sign)
-    if fallback is not None:
-        return finish(*fallback[1:])
-    return GeneralIK(
-        np.zeros((0, 6)),
-        np.zeros(0),
-        "every form of the elimination is degenerate for this arm and pose (special "
-        "geometry, or solutions that form a continuum, e.g. along aligned axes): "
-        + "; ".join(reasons[:2])
-        + "; ...",
-    )
+        name, w, r, target, order, sign = _formulation(Sn, G[pending], attempt[1])
+        found = _eliminate(w, r, target, shift)
+        for j, why in zip(pending, found.reason):
+            if why is not None:
+                reasons[j].append(f"{name}: {why}")
+        phi, which = _candidates(w, r, target, shift, found)
+        comfortable = found.usable & (found.quality >= IK_GENERAL_COMFORT_TOL)
+        for i in np.nonzero(found.usable & ~comfortable)[0]:  # nearly degenerate
+            j = pending[i]
+            if j not in fallback or found.quality[i] > fallback[j][0]:
+                mine = which == i
+                fallback[j] = (found.quality[i], phi[mine], name, order, sign)
+        if np.any(comfortable):
+            take = comfortable[which]
+            finish(
+                phi[take], pending[which[take]], pending[comfortable], name, order, sign
+            )
+            if len(_LAST_FORM) >= _LAST_FORM_SIZE:
+                _LAST_FORM.clear()
+            _LAST_FORM[key] = attempt
+        pending = pending[~comfortable]
+    for j in pending:
+        if j in fallback:
+            _, phi, name, order, sign = fallback[j]
+            finish(phi, np.full(len(phi), j), [j], name, order, sign)
+        else:
+            answers[j] = GeneralIK(
+                np.zeros((0, 6)),
+                np.zeros(0),
+                "every form of the elimination is degenerate for this arm and pose "
+                "(special geometry, or solutions that form a continuum, e.g. along "
+                "aligned axes): " + "; ".join(reasons[j][:2]) + "; ...",
+            )
+    return answers

@@ -65,17 +65,26 @@ ROWS = [
         match="T must be",
     ),
     row(
-        "general_6r_ik-T-batch",
-        lambda: ik.general_6r_ik(puma(), np.stack([t0(), t0()])),
+        "general_6r_ik-T-batch-with-a-non-rigid-pose",
+        lambda: ik.general_6r_ik(
+            puma(), np.stack([t0(), np.diag([1.0, 2.0, 1.0, 1.0])])
+        ),
         ValueError,
         "T",
-        match=r"T must be one pose of shape \(4, 4\)",
+        match="rotation block of T must be a rotation matrix",
     ),
     row(
         "general_6r_ik-T-wrong-shape",
         lambda: ik.general_6r_ik(puma(), np.eye(3)),
         ValueError,
         "T",
-        match=r"T must be one pose of shape \(4, 4\)",
+        match=r"T must have shape \(4 x 4\) or \(N, 4 x 4\)",
+    ),
+    row(
+        "general_6r_ik-T-batch-of-batches",
+        lambda: ik.general_6r_ik(puma(), np.zeros((2, 3, 4, 4))),
+        ValueError,
+        "T",
+        match=r"T must have shape \(4, 4\) or \(N, 4, 4\)",
     ),
 ]
