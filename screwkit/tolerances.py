@@ -261,6 +261,12 @@ IK_GENERAL_SAME_TOL = 1e-7
 #: largest: a generic solution's ratio is above 1e-3, one on aligned axes 1e-16.
 IK_GENERAL_SINGULAR_TOL = 1e-8
 
+#: The damping (Levenberg-Marquardt, lengths divided by the chain's size) of the
+#: Newton search that screwkit.ik.general runs where its elimination finds nothing:
+#: small enough not to slow convergence, large enough to step across singular
+#: configurations.
+IK_GENERAL_SEARCH_DAMPING = 1e-4
+
 # ---- parallel: model, legs, numerics, search ----------------------------------------
 # A length below is written for a mechanism about 1 m across and used times the
 # mechanism's own size (ParallelManipulator.scale, the farthest attachment point from

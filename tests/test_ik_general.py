@@ -327,10 +327,17 @@ def test_a_wrist_singular_pose_is_answered_with_a_reason():
 
 def test_an_arm_every_form_of_which_is_degenerate_gets_a_reason():
     # six parallel axes: a planar arm, its poses a continuum or out of reach
-    chain = sk.Chain.from_table([[0, 0, a, 0] for a in (0.3, 0.3, 0.3, 0.2, 0.2, 0.1)])
-    result = general_6r_ik(chain, chain.fk([0.3, -0.2, 0.5, 0.1, -0.4, 0.7]))
-    assert result.Q.shape == (0, 6)
-    assert "degenerate" in result.reason
+    lengths = (0.3, 0.3, 0.3, 0.2, 0.2, 0.1)
+    chain = sk.Chain.from_table([[0, 0, a, 0] for a in lengths])
+    table = np.array([[0.0, a, 0.0] for a in lengths])
+    T = chain.fk([0.3, -0.2, 0.5, 0.1, -0.4, 0.7])
+    result = general_6r_ik(chain, T)
+    # the search finds points of the continuum, and the reason says both
+    assert "degenerate" in result.reason and "continuum" in result.reason
+    assert len(result.Q) > 16  # more than a 6R's isolated solutions can be
+    assert np.all(pose_gap(dh_fk(table, result.Q), T) < 1e-8)
+    above = general_6r_ik(chain, sk.transforms.transl(0.0, 0.0, 0.5))  # off the plane
+    assert above.Q.shape == (0, 6) and "degenerate" in above.reason
 
 
 def test_solutions_sharing_the_eigenvalue_joint_are_all_found():
@@ -374,3 +381,31 @@ def test_analytic_ik_solves_a_general_arm_with_every_solution():
         assert contains(Q, s)
     assert max(s.residual for s in solutions) <= 1e-9
     assert contains(Q, np.asarray(SIXTEEN_Q))
+
+
+def test_a_pose_the_elimination_misses_is_found_by_the_search():
+    # three parallel axes at the base and a wrist of right angles: the elimination
+    # finds no real root for poses the arm reaches (special geometry); the Newton
+    # search that follows finds them, and the reason says what was done
+    table = np.array(
+        [
+            [0.4, 0.5, 0.0],
+            [0.3, 0.5, 0.0],
+            [0.0, 0.0, -np.pi / 2],
+            [0.0, 0.0, -np.pi / 2],
+            [0.0, 0.5, 0.0],
+            [0.0, 0.0, np.pi / 2],
+        ]
+    )
+    chain = sk.Chain.from_table(np.column_stack([np.zeros(6), table]))
+    q = np.array([2.077, 0.441, -2.491, -2.131, -0.065, -0.505])
+    T = dh_fk(table, q)[0]
+    result = general_6r_ik(chain, T)
+    assert result.formulation == "Newton search"
+    assert "Newton search" in result.reason and "may be other" in result.reason
+    assert contains(result.Q, q)
+    assert np.all(result.residuals <= RESIDUAL)
+    assert np.all(pose_gap(dh_fk(table, result.Q), T) < 1e-8)
+    searched = multistart(table, T, seed=3)
+    for s in searched:
+        assert contains(result.Q, s), f"the test's search found {s}, missing"

@@ -48,6 +48,13 @@ Newton's basin, which round-off does not do for a well-conditioned form (the tes
 find nothing missing against a 300-start search on random arms). A solution where
 the Jacobian loses rank (solutions coinciding, or a continuum along aligned axes) is
 returned with a reason saying so: of a continuum, Q holds points only.
+
+Special geometry can also hide real roots from a form that looks well posed (three
+parallel axes at an end with a wrist of right angles is one such arm), and an arm
+whose axes leave it fewer than six degrees of freedom has continua where the
+elimination is degenerate. So where the elimination finds nothing, damped Newton
+steps from SEARCH_STARTS fixed starts look for solutions; what they find is returned
+with a reason that says it came from a search, which may not find them all.
 """
 
 import functools
@@ -67,6 +74,7 @@ from ..tolerances import (
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
+    IK_GENERAL_SEARCH_DAMPING,
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
@@ -238,7 +246,8 @@ def _eliminate(w, r, G, shift):
     usable = sigma[:, -1] > IK_GENERAL_RANK_TOL * sigma[:, 0]
     for k in np.nonzero(~usable)[0]:
         reason[k] = _RANK_REASON
-    pinv = np.swapaxes(Vh, 1, 2) @ (np.swapaxes(U[:, :, :8], 1, 2) / sigma[..., None])
+    inverse = np.divide(1.0, sigma, out=np.zeros_like(sigma), where=sigma > 0)
+    pinv = np.swapaxes(Vh, 1, 2) @ (np.swapaxes(U[:, :, :8], 1, 2) * inverse[..., None])
     N = np.swapaxes(U[:, :, 8:], 1, 2)  # (n, 6, 14): N Q = 0
     if w.shape[2] == 1:  # joints 3 to 6 do not depend on the pose
         left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
@@ -506,38 +515,59 @@ def _poe(w, r, home, q):
     return R @ home[:3, :3], R @ home[:3, 3] + p, J
 
 
-def _polish(w, r, home, targets, q):
-    """Newton steps on the pose from the candidates q (k, 6) towards their targets
-    (k, 4, 4), lengths divided by the chain's size.
+def _error(w, r, home, targets, q):
+    """The error twists e (k, 6) of q (k, 6) against their targets (k, 4, 4) and the
+    space Jacobians (k, 6, 6): e = (omega, dp - omega x p), omega the vee of the skew
+    part of R* R(q)^T and dp the position error, the spatial error twist to first
+    order."""
+    R, p, J = _poe(w, r, home, q)
+    E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
+    omega = np.stack(
+        [E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0], E[:, 1, 0] - E[:, 0, 1]],
+        axis=1,
+    )
+    omega /= 2
+    return np.concatenate([omega, targets[:, :3, 3] - p - _cross3(omega, p)], 1), J
 
-    A step solves J_s dq = e, e = (omega, dp - omega x p): omega the vee of the skew
-    part of R* R(q)^T, dp the position error, the spatial error twist to first order
-    with the same Jacobian at a solution (quadratic convergence, no logarithm)."""
+
+def _polish(w, r, home, targets, q):
+    """Newton steps J_s dq = e (:func:`_error`) on the pose from the candidates q
+    (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
+    quadratic convergence near a solution, no logarithm."""
     q = q.copy()
     active = np.arange(len(q))
     for _ in range(NEWTON_STEPS):
-        R, p, J = _poe(w, r, home, q[active])
-        E = targets[active, :3, :3] @ np.swapaxes(R, 1, 2)
-        omega = (
-            np.stack(
-                [
-                    E[:, 2, 1] - E[:, 1, 2],
-                    E[:, 0, 2] - E[:, 2, 0],
-                    E[:, 1, 0] - E[:, 0, 1],
-                ],
-                axis=1,
-            )
-            / 2
-        )
-        e = np.concatenate(
-            [omega, targets[active, :3, 3] - p - _cross3(omega, p)], axis=1
-        )
+        e, J = _error(w, r, home, targets[active], q[active])
         moving = np.linalg.norm(e, axis=1) > IK_GENERAL_ACCEPT_TOL * 1e-3
         active, e, J = active[moving], e[moving], J[moving]
         if not len(active):
             break
         q[active] += (np.linalg.pinv(J) @ e[..., None])[..., 0]
     return q
+
+
+#: The search that stands in when the elimination finds nothing: Newton from this
+#: many fixed pseudo-random starts a pose, this many damped steps each.
+SEARCH_STARTS = 64
+SEARCH_STEPS = 40
+
+
+def _search(w, r, home, targets):
+    """Joint vectors (k, 6) that damped Newton steps bring near the targets (n, 4, 4)
+    from SEARCH_STARTS starts each, and the pose (k,) of each (to be polished and
+    checked): the answer when the elimination is degenerate or finds no root."""
+    starts = np.random.default_rng(6).uniform(-np.pi, np.pi, (SEARCH_STARTS, 6))
+    n = len(targets)
+    q = np.tile(starts, (n, 1))
+    pose = np.repeat(np.arange(n), SEARCH_STARTS)
+    for _ in range(SEARCH_STEPS):
+        e, J = _error(w, r, home, targets[pose], q)
+        JT = np.swapaxes(J, 1, 2)
+        damped = JT @ J + IK_GENERAL_SEARCH_DAMPING * np.eye(6)
+        step = np.linalg.solve(damped, JT @ e[..., None])[..., 0]
+        size = np.max(np.abs(step), axis=1, keepdims=True)
+        q = q + step * (0.5 / np.maximum(size, 0.5))  # at most 0.5 rad a joint
+    return q, pose
 
 
 def _residuals(chain, T, q, scale):
@@ -715,5 +745,22 @@ def _solve(chain, T):
                 "every form of the elimination is degenerate for this arm and pose "
                 "(special geometry, or solutions that form a continuum, e.g. along "
                 "aligned axes): " + "; ".join(reasons[j][:2]) + "; ...",
+            )
+    empty = [j for j in range(n) if not len(answers[j].Q)]
+    if empty:  # special geometry can hide roots from a form that looks well posed
+        q, pose = _search(z, o / scale, home, T_scaled[empty])
+        before = [answers[j] for j in empty]
+        finish(
+            q, np.asarray(empty)[pose], empty, "Newton search", [0, 1, 2, 3, 4, 5], 1
+        )
+        for j, old in zip(empty, before):
+            if not len(answers[j].Q):
+                answers[j] = old
+                continue
+            answers[j].reason = (
+                f"the elimination found no solution ({old.reason}), but a Newton "
+                f"search from {SEARCH_STARTS} starts found these {len(answers[j].Q)}: "
+                "the pose is reachable, and there may be other solutions"
+                + ("; " + answers[j].reason if answers[j].reason else "")
             )
     return answers
