@@ -22,25 +22,8 @@ from platform import machine, python_version, system
 import numpy as np
 
 import screwkit as sk
+from screwkit.parallel import DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO
 from screwkit.parallel.proven import rpr_fk_proven, stewart_fk_proven
-
-DIETMAIER_BASE = [
-    [0, 0, 0],
-    [1.107915, 0, 0],
-    [0.549094, 0.756063, 0],
-    [0.735077, -0.223935, 0.525991],
-    [0.514188, -0.526063, -0.368418],
-    [0.590473, 0.094733, -0.205018],
-]
-DIETMAIER_PLATFORM = [
-    [0, 0, 0],
-    [0.542805, 0, 0],
-    [0.956919, -0.528915, 0],
-    [0.665885, -0.353482, 1.402538],
-    [0.478359, 1.158742, 0.107672],
-    [-0.137087, -0.235121, 0.353913],
-]
-DIETMAIER_LENGTHS = [1, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071]
 
 
 def cpu():
@@ -62,19 +45,19 @@ def mm(values):
 
 
 def instances():
-    yield "Dietmaier (m)", DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS, {}
+    yield "Dietmaier (m)", DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO, {}
     yield (
         "Dietmaier (mm)",
         mm(DIETMAIER_BASE),
         mm(DIETMAIER_PLATFORM),
-        mm([DIETMAIER_LENGTHS])[0],
+        mm([DIETMAIER_RHO])[0],
         {},
     )
     yield (
         "Dietmaier, binary",
         DIETMAIER_BASE,
         DIETMAIER_PLATFORM,
-        DIETMAIER_LENGTHS,
+        DIETMAIER_RHO,
         {"rationals": "binary"},
     )
     pm = sk.parallel.stewart_gough()

@@ -3,10 +3,11 @@
 References, none from the code under test: Dietmaier's 6-6 platform with 40 real
 assembly modes (the most a Stewart-Gough platform can have: its forward kinematics has
 40 complex solutions in general, Raghavan 1993, so 40 distinct real poses are all of
-them); the search ``fk_all`` (every pose it finds must be in the proven list); an
-independent exact count in other unknowns (rotation matrix and translation, with
-R^T R = I and det R = 1, solved by msolve, written here with SymPy); the 3-RPR's modes
-of ``rpr_sextic`` (numeric roots of the same sextic) and a pose built at phi = pi.
+them; its geometry, as printed, is screwkit.parallel's DIETMAIER_* data); the search
+``fk_all`` (every pose it finds must be in the proven list); an independent exact count
+in other unknowns (rotation matrix and translation, with R^T R = I and det R = 1, solved
+by msolve, written here with SymPy); the 3-RPR's modes of ``rpr_sextic`` (numeric roots
+of the same sextic) and a pose built at phi = pi.
 
 The Stewart tests need msolve (``pip install screwkit[proof]``) and skip without it;
 the slow ones (random platforms against the independent count, the platform in full
@@ -23,6 +24,7 @@ import sympy as sp
 
 import screwkit as sk
 import screwkit.parallel.proven as proven
+from screwkit.parallel import DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO
 from screwkit.parallel.proven import rpr_fk_proven, stewart_fk_proven
 from screwkit.tolerances import (
     PARALLEL_FK_ACCEPT_TOL,
@@ -51,32 +53,11 @@ needs_msolve = pytest.mark.skipif(
     not _has_msolve(), reason="msolve missing: pip install screwkit[proof]"
 )
 
-#: Dietmaier (1998), "The Stewart-Gough platform of general geometry can have 40 real
-#: postures", Advances in Robot Kinematics: base points A_i, platform points B_i
-#: (platform frame) and leg lengths, as printed (6 decimals).
-DIETMAIER_BASE = [
-    [0, 0, 0],
-    [1.107915, 0, 0],
-    [0.549094, 0.756063, 0],
-    [0.735077, -0.223935, 0.525991],
-    [0.514188, -0.526063, -0.368418],
-    [0.590473, 0.094733, -0.205018],
-]
-DIETMAIER_PLATFORM = [
-    [0, 0, 0],
-    [0.542805, 0, 0],
-    [0.956919, -0.528915, 0],
-    [0.665885, -0.353482, 1.402538],
-    [0.478359, 1.158742, 0.107672],
-    [-0.137087, -0.235121, 0.353913],
-]
-DIETMAIER_LENGTHS = [1, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071]
-
 
 @functools.cache
 def dietmaier_modes():
     """stewart_fk_proven on Dietmaier's platform, once for the tests that use it."""
-    return stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+    return stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO)
 
 
 def leg_error(T, base, platform, lengths):
@@ -123,7 +104,7 @@ def stewart_of(base, platform):
 def test_dietmaier_forty_real_modes_complete():
     poses, complete, reason = dietmaier_modes()
     assert (len(poses), complete, reason) == (40, True, None)
-    check_modes(poses, DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+    check_modes(poses, DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO)
 
 
 @needs_msolve
@@ -131,7 +112,7 @@ def test_dietmaier_forty_real_modes_complete():
 def test_dietmaier_in_mm_and_cm_same_modes_scaled(factor):
     base = in_decimal_units(DIETMAIER_BASE, factor)
     platform = in_decimal_units(DIETMAIER_PLATFORM, factor)
-    lengths = in_decimal_units(DIETMAIER_LENGTHS, factor)[0]
+    lengths = in_decimal_units(DIETMAIER_RHO, factor)[0]
     poses, complete, _ = stewart_fk_proven(base, platform, lengths)
     assert (len(poses), complete) == (40, True)
     check_modes(poses, base, platform, lengths)
@@ -146,7 +127,7 @@ def test_dietmaier_in_mm_and_cm_same_modes_scaled(factor):
 @needs_msolve
 def test_every_mode_the_search_finds_is_in_the_proven_list():
     pm = stewart_of(DIETMAIER_BASE, DIETMAIER_PLATFORM)
-    found = pm.fk_all(np.array(DIETMAIER_LENGTHS, float), starts=400, seed=3)
+    found = pm.fk_all(np.array(DIETMAIER_RHO, float), starts=400, seed=3)
     poses, _, _ = dietmaier_modes()
     assert found and len(found) <= len(poses)
     for T in found:
@@ -228,13 +209,12 @@ def test_random_platforms_count_equals_independent_exact_count(seed):
 @slow
 def test_dietmaier_independent_count_and_binary_floats_times_1000():
     assert (
-        rotation_matrix_count(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
-        == 40
+        rotation_matrix_count(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO) == 40
     )
     k = 1000.0
     base = np.array(DIETMAIER_BASE) * k
     platform = np.array(DIETMAIER_PLATFORM) * k
-    lengths = np.array(DIETMAIER_LENGTHS) * k
+    lengths = np.array(DIETMAIER_RHO) * k
     for rationals in ("decimal", "binary"):
         poses, complete, _ = stewart_fk_proven(
             base, platform, lengths, rationals=rationals
@@ -280,7 +260,7 @@ def test_legs_too_short_have_no_mode_and_that_is_proven():
 @needs_msolve
 def test_timeout_gives_no_proof():
     _, complete, reason = stewart_fk_proven(
-        DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS, timeout=1e-3
+        DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO, timeout=1e-3
     )
     assert not complete and "timeout" in reason
 
@@ -292,7 +272,7 @@ def test_missing_msolve_says_how_to_install(monkeypatch):
     monkeypatch.setattr(proven.importlib.metadata, "distribution", missing)
     monkeypatch.setattr(proven.shutil, "which", lambda name: None)
     with pytest.raises(ModuleNotFoundError, match=r"screwkit\[proof\]"):
-        stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
+        stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO)
 
 
 # ---- the 3-RPR ----------------------------------------------------------------------
@@ -364,11 +344,11 @@ def test_rpr_self_motion_is_a_continuum():
 @needs_msolve
 def test_fk_all_with_proof_is_the_proven_list_and_says_complete():
     pm = stewart_of(DIETMAIER_BASE, DIETMAIER_PLATFORM)
-    modes = pm.fk_all(np.array(DIETMAIER_LENGTHS, float), proof=True)
+    modes = pm.fk_all(np.array(DIETMAIER_RHO, float), proof=True)
     assert (len(modes), modes.complete, modes.reason) == (40, True, None)
     assert "msolve" in modes.method
-    check_modes(modes, DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_LENGTHS)
-    fast = pm.fk_all(np.array(DIETMAIER_LENGTHS, float))
+    check_modes(modes, DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO)
+    fast = pm.fk_all(np.array(DIETMAIER_RHO, float))
     assert fast.complete is False and "may miss" in fast.reason
 
 

@@ -12,7 +12,8 @@ The folder, one idea a module, bottom up:
   (the Stewart-Gough platform by msolve, an optional dependency; the 3-RPR's exact
   sextic);
 - :mod:`~screwkit.parallel.model`: :class:`ParallelManipulator` and its results;
-- :mod:`~screwkit.parallel.catalogue`: the builders and their default geometry;
+- :mod:`~screwkit.parallel.catalogue`: the builders and their default geometry, and
+  Dietmaier's published platform with 40 real assembly modes;
 - :mod:`~screwkit.parallel.plotting`: drawings (matplotlib; loaded on first use, as
   ``sk.parallel.plotting`` or ``from screwkit.parallel.plotting import ...``).
 """
@@ -20,6 +21,9 @@ The folder, one idea a module, bottom up:
 import importlib
 
 from .catalogue import (
+    DIETMAIER_BASE,
+    DIETMAIER_PLATFORM,
+    DIETMAIER_RHO,
     RPR_BASE,
     RPR_PLATFORM,
     RPR_SIX_MODES_RHO,
@@ -63,6 +67,9 @@ __all__ = [
     "RPR_BASE",
     "RPR_PLATFORM",
     "RPR_SIX_MODES_RHO",
+    "DIETMAIER_BASE",
+    "DIETMAIER_PLATFORM",
+    "DIETMAIER_RHO",
 ]
 
 

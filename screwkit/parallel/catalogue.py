@@ -4,7 +4,8 @@
 Each builder checks its arguments, lays out the legs and returns a
 :class:`~screwkit.parallel.ParallelManipulator`; ``sk.robots`` re-exports them.
 Defaults are exact SymPy numbers, so that the exact layer stays exact; the numeric layer
-reads their float values.
+reads their float values. A published geometry (Dietmaier's) is kept as printed, in
+floats whose shortest decimals are the printed ones.
 """
 
 import sympy as sp
@@ -75,6 +76,31 @@ RPR_PLATFORM = [
 ]
 #: Leg lengths (m) at which the default 3-RPR has six real assembly modes.
 RPR_SIX_MODES_RHO = (0.92, 1.37, 0.9)
+
+#: Dietmaier's Stewart-Gough platform with 40 real assembly modes, the most there can be
+#: (P. Dietmaier, "The Stewart-Gough platform of general geometry can have 40 real
+#: postures", Advances in Robot Kinematics, Kluwer 1998, pp. 7-16): base points A_i
+#: (m, base frame), as printed (6 decimals); with DIETMAIER_PLATFORM and DIETMAIER_RHO.
+DIETMAIER_BASE = (
+    (0, 0, 0),
+    (1.107915, 0, 0),
+    (0.549094, 0.756063, 0),
+    (0.735077, -0.223935, 0.525991),
+    (0.514188, -0.526063, -0.368418),
+    (0.590473, 0.094733, -0.205018),
+)
+#: Dietmaier's platform points b_i (m, platform frame), as printed (see DIETMAIER_BASE).
+DIETMAIER_PLATFORM = (
+    (0, 0, 0),
+    (0.542805, 0, 0),
+    (0.956919, -0.528915, 0),
+    (0.665885, -0.353482, 1.402538),
+    (0.478359, 1.158742, 0.107672),
+    (-0.137087, -0.235121, 0.353913),
+)
+#: Dietmaier's leg lengths (m), as printed: with DIETMAIER_BASE and DIETMAIER_PLATFORM
+#: they have 40 real assembly modes.
+DIETMAIER_RHO = (1, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071)
 
 
 def stewart_gough(base=None, platform=None, height=1, leg_limits=((0.9, 1.6),) * 6):

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
+from exercise_syntax import SOLUTION, old_syntax
 
 from screwkit import exercises
 
@@ -35,19 +36,6 @@ def outputs(name):
             )
         texts.append(text)
     return texts
-
-
-# An exercise is "**N.** text" (the old syntax) or sphinx-exercise's directive labelled
-# CHAPTER-exercise-N (tools/convert_exercises.py); both read as "**N.** text".
-NEW_EXERCISE = re.compile(
-    r"^:{3,}\{exercise(?:-start)?\}\n:label: [a-z0-9_]+-exercise-(\d+)\n(?::{3,}\n)?\n",
-    re.M,
-)
-SOLUTION = re.compile(r"^:{3,}\{(?:admonition\} Solution|solution\})", re.M)
-
-
-def old_syntax(text):
-    return NEW_EXERCISE.sub(r"**\1.** ", text)
 
 
 def exercises_section(name):

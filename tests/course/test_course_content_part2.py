@@ -9,6 +9,7 @@ import re
 import tomllib
 
 import pytest
+from exercise_syntax import SOLUTION, old_syntax
 from pybtex.database import parse_file
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -34,19 +35,6 @@ def outputs(name):
         if cell["cell_type"] == "code":
             text = "".join("".join(o.get("text", "")) for o in cell.get("outputs", []))
             yield "".join(cell["source"]), text, cell.get("outputs", [])
-
-
-# An exercise is "**N.** text" (the old syntax) or sphinx-exercise's directive labelled
-# CHAPTER-exercise-N (tools/convert_exercises.py); both read as "**N.** text".
-NEW_EXERCISE = re.compile(
-    r"^:{3,}\{exercise(?:-start)?\}\n:label: [a-z0-9_]+-exercise-(\d+)\n(?::{3,}\n)?\n",
-    re.M,
-)
-SOLUTION = re.compile(r"^:{3,}\{(?:admonition\} Solution|solution\})", re.M)
-
-
-def old_syntax(text):
-    return NEW_EXERCISE.sub(r"**\1.** ", text)
 
 
 def exercises(name):

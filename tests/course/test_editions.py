@@ -14,6 +14,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from exercise_syntax import SOLUTION, SOLUTION_DIRECTIVE, exercise_directive, old_syntax
 
 from screwkit import exercises
 
@@ -110,6 +111,20 @@ $h = 0.5$.
 
 def test_the_old_syntax_becomes_exercise_and_solution_directives():
     assert convert_exercises.convert(OLD, "demo") == NEW
+
+
+def test_the_chapter_tests_read_the_converted_exercises():
+    # tests/course/exercise_syntax.py, with which the chapter tests read the sources,
+    # reads each exercise the conversion writes as its number and statement
+    converted = convert_exercises.convert(OLD, "demo")
+    assert exercise_directive("demo").split(converted)[1::2] == ["1", "2", "3"]
+    assert exercise_directive("screws").search(converted) is None
+    as_old = old_syntax(converted)
+    assert "\n**1.** *(by hand)* Show that $a = b$.\n" in as_old
+    assert "\n**2.** *(by hand, self-checking)* What is $h$?\n" in as_old
+    assert "\n**3.** *(implement it yourself)* Write `my_exp`" in as_old
+    assert len(SOLUTION_DIRECTIVE.findall(converted)) == 2
+    assert len(SOLUTION.findall(converted)) == len(SOLUTION.findall(OLD)) == 2
 
 
 def test_the_conversion_leaves_converted_text_alone():

@@ -25,6 +25,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from exercise_syntax import old_syntax
 
 ROOT = Path(__file__).resolve().parents[2]
 DOC = re.compile(r"\{doc\}`(?:[^`<]*<)?\.\./notebooks/([a-z0-9_]+)>?`")
@@ -34,18 +35,6 @@ CITATION = re.compile(DOC.pattern + r"\s*(?:exercises?\s+)?(" + NUMBERS + ")")
 # names too common to tie a lab to an exercise
 GENERIC = set("sk np sp q T J S R M F e i h r s a d pi round zeros linalg".split())
 GENERIC |= set("puma arm robot fk theta rows axis".split())
-
-# An exercise is "**N.** text" (the old syntax) or sphinx-exercise's directive labelled
-# CHAPTER-exercise-N (tools/convert_exercises.py); both read as "**N.** text".
-NEW_EXERCISE = re.compile(
-    r"^:{3,}\{exercise(?:-start)?\}\n:label: [a-z0-9_]+-exercise-(\d+)\n(?::{3,}\n)?\n",
-    re.M,
-)
-SOLUTION = re.compile(r"^:{3,}\{(?:admonition\} Solution|solution\})", re.M)
-
-
-def old_syntax(text):
-    return NEW_EXERCISE.sub(r"**\1.** ", text)
 
 
 def chapters():

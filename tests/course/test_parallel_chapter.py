@@ -8,6 +8,8 @@ import re
 import tomllib
 from pathlib import Path
 
+from exercise_syntax import SOLUTION_DIRECTIVE, exercise_directive
+
 SOURCE = Path(__file__).resolve().parents[2] / "notebooks" / "parallel_kinematics.md"
 
 
@@ -16,12 +18,7 @@ def text():
 
 
 # sphinx-exercise's directive labelled parallel_kinematics-exercise-N opens exercise N
-EXERCISE = re.compile(
-    r"^:{3,}\{exercise(?:-start)?\}\n:label: parallel_kinematics-exercise-(\d+)\n"
-    r"(?::{3,}\n)?\n",
-    re.M,
-)
-SOLUTION = re.compile(r"^:{3,}\{solution\}", re.M)
+EXERCISE = exercise_directive("parallel_kinematics")
 
 
 def exercises():
@@ -41,7 +38,7 @@ def test_problem_set_numbered_with_one_solution_each():
     bodies = exercises()
     assert len(bodies) >= 8  # the course's minimum (CONTRIBUTING.md)
     assert list(bodies) == list(range(1, len(bodies) + 1))
-    assert all(len(SOLUTION.findall(body)) == 1 for body in bodies.values())
+    assert all(len(SOLUTION_DIRECTIVE.findall(body)) == 1 for body in bodies.values())
 
 
 def test_exercises_by_kind():

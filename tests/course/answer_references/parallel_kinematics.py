@@ -6,6 +6,7 @@ docstrings), not from the key's formula nor from screwkit's legs.
 import numpy as np
 
 from .registry import reference
+from .roots import bisect
 
 
 def circle(radius, degrees):
@@ -35,19 +36,6 @@ def plucker_det(yaw):
     R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
     legs = STEWART_PLATFORM @ R.T + [0, 0, 1] - STEWART_BASE
     return np.linalg.det(np.c_[np.cross(STEWART_BASE, legs), legs])
-
-
-def bisect(f, low, high, steps=80):
-    """A root of f in [low, high], where f changes sign."""
-    f_low = f(low)
-    assert f_low * f(high) < 0, "the bracket must hold a sign change"
-    for _ in range(steps):
-        middle = (low + high) / 2
-        if f_low * f(middle) <= 0:
-            high = middle
-        else:
-            low, f_low = middle, f(middle)
-    return (low + high) / 2
 
 
 @reference("parallel_kinematics", 6)
