@@ -12,8 +12,9 @@ style.
 import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
+from mpl_toolkits.mplot3d import Axes3D
 
-from ._checks import describe, real_number
+from ._checks import check_positive, describe, real_number
 from .limbs import check_limbs
 from .screws import Screw, Wrench
 from .tolerances import LENGTH_TOL, ZERO_TOL, length_scale
@@ -144,8 +145,12 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
     values, so the symmetric limbs close on a regular polygon.
     """
     joints = evaluate(limbs, values)
+    if axis_length is not None:
+        axis_length = check_positive(axis_length, "axis_length")
     if ax is None:
         ax = plt.figure(figsize=(5, 5)).add_subplot(projection="3d")
+    elif not isinstance(ax, Axes3D):
+        raise TypeError(f"ax must be a 3D matplotlib Axes, got {describe(ax)}")
     points = np.array([p for limb in joints for _, _, p in limb])
     size = float(np.ptp(points, axis=0).max())
     size = (
