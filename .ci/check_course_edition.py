@@ -12,7 +12,9 @@ offered for download):
   plain words, read from notebooks/*.md); the self-study edition has them all;
 * no key of an assessed exercise (book/assessed.yml): no answer box of it carrying its
   JSON key, and none of the key's JSON in any file; the self-study edition has each;
-* the other answer boxes still check: each keeps its key in the course edition.
+* the other answer boxes still check: each keeps its key in the course edition;
+* no launch button (Binder, Colab) in the course edition, whose notebooks would be the
+  repository's, with their solutions; the self-study edition has them.
 """
 
 import html
@@ -117,6 +119,13 @@ def check(course_dir, study_dir):
                     and values in text
                 ):
                     problems.append(f"{chapter} {number}: its key is in {path}")
+    launchers = ("mybinder.org", "colab.research.google.com")
+    launching = [p for p, t in course.items() if any(x in t for x in launchers)]
+    if launching:
+        problems.append(f"launch buttons in the course edition: {launching[:3]}")
+    launched = sum(any(x in t for x in launchers) for t in study.values())
+    if not launched:
+        problems.append("no launch button in the self-study book: is it built?")
     kept = set(study_boxes) - marked
     lost = sorted(kept - set(course_boxes))
     if lost:
@@ -126,6 +135,7 @@ def check(course_dir, study_dir):
         "solution sentences checked": probes,
         "assessed exercises": len(marked),
         "answer boxes still checking": len(kept & set(course_boxes)),
+        "self-study pages with launch buttons": launched,
     }
 
 

@@ -12,8 +12,10 @@ The chapters write their exercises with sphinx-exercise's directives
   exercise listed in ``book/assessed.yml`` loses its key (the JSON the page checks
   with) and its Check button: the page says that the teacher marks it. The other boxes
   still check. The copies of the notebooks offered for download (``_sources``) get the
-  same treatment. The notebooks' stored outputs are the same for both editions; the
-  course edition reuses the self-study build's execution cache.
+  same treatment, and the pages have no launch buttons (Binder, Colab, a hub), which
+  would open the repository's notebooks with their solutions. The notebooks' stored
+  outputs are the same for both editions; the course edition reuses the self-study
+  build's execution cache.
 """
 
 import json
@@ -118,6 +120,12 @@ def course_config(app, config):
     if edition() != "course":
         return
     config.hide_solutions = True
+    # Binder, Colab and a hub would open the repository's notebooks, which hold every
+    # solution: the course edition has no launch buttons, and its download button
+    # offers the notebook with the solutions taken out (course_sources)
+    options = dict(config.html_theme_options or {})
+    options["launch_buttons"] = {}
+    config.html_theme_options = options
     # the same stored outputs: the self-study build's execution cache
     cache = os.path.join(app.srcdir, "_build", ".jupyter_cache")
     if os.path.isdir(cache):

@@ -224,3 +224,27 @@ def test_the_edition_comes_from_the_environment(monkeypatch):
     monkeypatch.setenv("SCREWKIT_EDITION", "teacher")
     with pytest.raises(ValueError, match="SCREWKIT_EDITION must be"):
         editions.edition()
+
+
+def test_the_course_edition_has_no_launch_buttons(monkeypatch, tmp_path):
+    # they would open the repository's notebooks, which hold the solutions
+    launch = {"binderhub_url": "https://mybinder.org", "colab_url": "https://colab"}
+
+    class Config:
+        hide_solutions = False
+        html_theme_options = {"launch_buttons": dict(launch), "repository_url": "r"}
+
+    class App:
+        srcdir = str(tmp_path)
+
+    monkeypatch.setenv("SCREWKIT_EDITION", "self-study")
+    study = Config()
+    editions.course_config(App(), study)
+    assert study.html_theme_options["launch_buttons"] == launch
+    assert not study.hide_solutions
+    monkeypatch.setenv("SCREWKIT_EDITION", "course")
+    course = Config()
+    editions.course_config(App(), course)
+    assert course.html_theme_options["launch_buttons"] == {}
+    assert course.html_theme_options["repository_url"] == "r"
+    assert course.hide_solutions
