@@ -113,3 +113,65 @@ def test_vendor_urdfs_of_ur_type_arms_are_solved_in_closed_form(relative, tip):
         solutions = sk.ik.analytic_ik(chain, T)
         assert max(np.abs(chain.fk(s.q) - T).max() for s in solutions) <= 1e-9
         assert min(np.abs(sk.wrap_angle(s.q - q)).max() for s in solutions) < 1e-9
+
+
+@pytest.mark.parametrize(
+    "relative, tip, fixed",
+    [
+        ("kinova_description/robots/kinova.urdf", "j2s6s200_end_effector", None),
+        ("xarm_description/urdf/xarm7.urdf", "link7", 2),
+        ("panda_description/urdf/panda.urdf", "panda_hand_tcp", 2),
+    ],
+)
+def test_vendor_arms_get_every_ik_solution(relative, tip, fixed):
+    """Issue 34 on vendor URDFs: the Kinova Jaco 2 (6R) and, with joint 3 held, the
+    xArm 7 and the Panda (general 6R arms left). Everything is checked by Pinocchio:
+    the poses are its forward kinematics, each solution must meet its pose there, the
+    generating configuration must be among them, and no solution that Newton on
+    Pinocchio's kinematics reaches from 30 random starts may be missing."""
+    path = os.path.join(robots_folder(), relative)
+    chain = sk.Chain.from_urdf(path, tip_link=tip)
+    model = pin.buildModelFromUrdf(path)
+    data = model.createData()
+    frame = model.getFrameId(tip)
+    columns = [model.joints[model.getJointId(name)].idx_v for name in chain.joint_names]
+    free = [j for j in range(chain.n) if j != fixed]
+
+    def pose(q):
+        pin.framesForwardKinematics(model, data, _pinocchio_q(model, chain, q))
+        return data.oMf[frame].homogeneous.copy()
+
+    def newton(q, T):
+        """Gauss-Newton on the body error twist log(T(q)^-1 T), the held joint
+        kept; the solution, or None."""
+        q = q.copy()
+        for _ in range(100):
+            x = _pinocchio_q(model, chain, q)
+            pin.framesForwardKinematics(model, data, x)
+            error = pin.log6(data.oMf[frame].inverse() * pin.SE3(T)).vector
+            if np.linalg.norm(error) < 1e-13:
+                return q
+            J = pin.computeFrameJacobian(model, data, x, frame, pin.LOCAL)
+            step = np.linalg.lstsq(J[:, columns][:, free], error, rcond=None)[0]
+            q[free] += step / max(1.0, np.abs(step).max() / 0.5)
+        return None
+
+    low, high = chain.qlim.T
+    low, high = np.maximum(low, -np.pi), np.minimum(high, np.pi)
+    rng = np.random.default_rng(34)
+    for q in rng.uniform(low, high, (4, chain.n)):
+        T = pose(q)
+        held = None if fixed is None else {fixed: q[fixed]}
+        solutions = sk.ik.analytic_ik(chain, T, fixed=held)
+        assert solutions.reason is None and len(solutions) >= 2
+        Q = np.array([s.q for s in solutions])
+        for s in Q:
+            np.testing.assert_allclose(pose(s), T, rtol=0, atol=1e-9)
+        assert np.abs(sk.wrap_angle(Q - q)).max(axis=1).min() < 1e-9
+        for start in rng.uniform(-np.pi, np.pi, (30, chain.n)):
+            if fixed is not None:
+                start[fixed] = q[fixed]
+            found = newton(start, T)
+            if found is not None:
+                gap = np.abs(sk.wrap_angle(Q - found)).max(axis=1).min()
+                assert gap < 1e-6, f"Newton found {found}, missing"
