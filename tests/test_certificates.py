@@ -74,8 +74,10 @@ def systems_of(mobility):
     "name", ["pm_3prrr", "pm_3prpar", "pm_4prru", "pm_6ups", "pm_3ruu", "pm_3rps"]
 )
 def test_the_mobility_chapters_systems_have_proven_ranks(name):
+    # the 3-RPS's platform twists take 9 s alone: a busy machine must not turn the
+    # default 30 s limit into a failure of the proof (speed is benchmarks' business)
     for system in systems_of(mobility_of(name)):
-        certificate = system.certificate()
+        certificate = system.certificate(timeout=300)
         assert certificate.proven, certificate.reason
         check_independently(system, certificate)
 
