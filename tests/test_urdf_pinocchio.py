@@ -70,17 +70,26 @@ def _pinocchio_q(model, chain, q):
     return x
 
 
-@pytest.mark.parametrize("arm", sorted(ARMS))
-def test_fk_and_jacobian_agree_with_pinocchio(arm):
-    relative, tip = ARMS[arm]
+def _arm_and_model(relative, tip):
+    """screwkit's chain of a URDF of example-robot-data, Pinocchio's model and data of
+    it, the tip's frame id, and the velocity index of each of the chain's joints."""
     path = os.path.join(robots_folder(), relative)
     chain = sk.Chain.from_urdf(path, tip_link=tip)
     model = pin.buildModelFromUrdf(path)
-    data = model.createData()
-    frame = model.getFrameId(tip)
     columns = [model.joints[model.getJointId(name)].idx_v for name in chain.joint_names]
+    return chain, model, model.createData(), model.getFrameId(tip), columns
+
+
+def _limits_within_a_turn(chain):
+    """The joint limits (low, high), each clipped to [-pi, pi]."""
     low, high = chain.qlim.T
-    low, high = np.maximum(low, -np.pi), np.minimum(high, np.pi)
+    return np.maximum(low, -np.pi), np.minimum(high, np.pi)
+
+
+@pytest.mark.parametrize("arm", sorted(ARMS))
+def test_fk_and_jacobian_agree_with_pinocchio(arm):
+    chain, model, data, frame, columns = _arm_and_model(*ARMS[arm])
+    low, high = _limits_within_a_turn(chain)
     rng = np.random.default_rng(22)
     Q = rng.uniform(low, high, (25, chain.n))
     T, J = chain.fk(Q), chain.geometric_jacobian(Q)
@@ -129,12 +138,7 @@ def test_vendor_arms_get_every_ik_solution(relative, tip, fixed):
     the poses are its forward kinematics, each solution must meet its pose there, the
     generating configuration must be among them, and no solution that Newton on
     Pinocchio's kinematics reaches from 30 random starts may be missing."""
-    path = os.path.join(robots_folder(), relative)
-    chain = sk.Chain.from_urdf(path, tip_link=tip)
-    model = pin.buildModelFromUrdf(path)
-    data = model.createData()
-    frame = model.getFrameId(tip)
-    columns = [model.joints[model.getJointId(name)].idx_v for name in chain.joint_names]
+    chain, model, data, frame, columns = _arm_and_model(relative, tip)
     free = [j for j in range(chain.n) if j != fixed]
 
     def pose(q):
@@ -156,8 +160,7 @@ def test_vendor_arms_get_every_ik_solution(relative, tip, fixed):
             q[free] += step / max(1.0, np.abs(step).max() / 0.5)
         return None
 
-    low, high = chain.qlim.T
-    low, high = np.maximum(low, -np.pi), np.minimum(high, np.pi)
+    low, high = _limits_within_a_turn(chain)
     rng = np.random.default_rng(34)
     for q in rng.uniform(low, high, (4, chain.n)):
         T = pose(q)
