@@ -37,6 +37,12 @@ BOX = re.compile(
     r'<script type="application/json">(.*?)</script>',
     re.S,
 )
+# what a launch button opens (sphinx-book-theme's header_buttons/launch.py): a notebook of
+# the repository on Binder, Colab or a hub (nbgitpuller); a mere mention of the sites (the
+# how-to page, sphinx-thebe's default settings) is not a button
+LAUNCH = re.compile(
+    r"mybinder\.org/v2/gh/|colab\.research\.google\.com/github/|/hub/user-redirect/git-pull"
+)
 
 
 def texts(folder):
@@ -119,11 +125,10 @@ def check(course_dir, study_dir):
                     and values in text
                 ):
                     problems.append(f"{chapter} {number}: its key is in {path}")
-    launchers = ("mybinder.org", "colab.research.google.com")
-    launching = [p for p, t in course.items() if any(x in t for x in launchers)]
+    launching = [p for p, t in course.items() if LAUNCH.search(t)]
     if launching:
         problems.append(f"launch buttons in the course edition: {launching[:3]}")
-    launched = sum(any(x in t for x in launchers) for t in study.values())
+    launched = sum(bool(LAUNCH.search(t)) for t in study.values())
     if not launched:
         problems.append("no launch button in the self-study book: is it built?")
     kept = set(study_boxes) - marked

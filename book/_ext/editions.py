@@ -120,6 +120,8 @@ def course_config(app, config):
     if edition() != "course":
         return
     config.hide_solutions = True
+    # pages say what differs with {only} course / {only} not course (book/how_to_use.md)
+    app.tags.add("course")
     # Binder, Colab and a hub would open the repository's notebooks, which hold every
     # solution: the course edition has no launch buttons, and its download button
     # offers the notebook with the solutions taken out (course_sources)

@@ -237,14 +237,38 @@ def test_the_course_edition_has_no_launch_buttons(monkeypatch, tmp_path):
     class App:
         srcdir = str(tmp_path)
 
+        def __init__(self):
+            self.tags = set()  # Sphinx's tags, for {only}
+
     monkeypatch.setenv("SCREWKIT_EDITION", "self-study")
-    study = Config()
-    editions.course_config(App(), study)
+    study, study_app = Config(), App()
+    editions.course_config(study_app, study)
     assert study.html_theme_options["launch_buttons"] == launch
     assert not study.hide_solutions
+    assert "course" not in study_app.tags
     monkeypatch.setenv("SCREWKIT_EDITION", "course")
-    course = Config()
-    editions.course_config(App(), course)
+    course, course_app = Config(), App()
+    editions.course_config(course_app, course)
     assert course.html_theme_options["launch_buttons"] == {}
     assert course.html_theme_options["repository_url"] == "r"
     assert course.hide_solutions
+    assert "course" in course_app.tags  # how_to_use.md's {only} course
+
+
+def test_the_launch_check_tells_a_button_from_a_mention():
+    # the addresses sphinx-book-theme's header_buttons/launch.py builds for a chapter
+    sys.path.insert(0, str(ROOT / ".ci"))
+    from check_course_edition import LAUNCH
+
+    buttons = [
+        "https://mybinder.org/v2/gh/screwkit/rkws/main?urlpath=lab/tree/notebooks/puma_ik.ipynb",
+        "https://colab.research.google.com/github/screwkit/rkws/blob/main/notebooks/x.ipynb",
+        "https://hub.example.edu/hub/user-redirect/git-pull?repo=https://github.com/s/r",
+    ]
+    mentions = [
+        'opens it on <a href="https://mybinder.org">Binder</a>',
+        '[Google Colab](https://colab.research.google.com), or on your machine',
+        'binderUrl: "https://mybinder.org"',  # sphinx-thebe.js's default
+    ]
+    assert all(LAUNCH.search(text) for text in buttons)
+    assert not any(LAUNCH.search(text) for text in mentions)
