@@ -37,9 +37,9 @@ BOX = re.compile(
     r'<script type="application/json">(.*?)</script>',
     re.S,
 )
-# what a launch button opens (sphinx-book-theme's header_buttons/launch.py): a notebook of
-# the repository on Binder, Colab or a hub (nbgitpuller); a mere mention of the sites (the
-# how-to page, sphinx-thebe's default settings) is not a button
+# what a launch button opens (sphinx-book-theme's header_buttons/launch.py): a notebook
+# of the repository on Binder, Colab or a hub (nbgitpuller); a mere mention of the sites
+# (the how-to page, sphinx-thebe's default settings) is not a button
 LAUNCH = re.compile(
     r"mybinder\.org/v2/gh/|colab\.research\.google\.com/github/|/hub/user-redirect/git-pull"
 )
