@@ -267,7 +267,7 @@ def test_the_launch_check_tells_a_button_from_a_mention():
     ]
     mentions = [
         'opens it on <a href="https://mybinder.org">Binder</a>',
-        '[Google Colab](https://colab.research.google.com), or on your machine',
+        "[Google Colab](https://colab.research.google.com), or on your machine",
         'binderUrl: "https://mybinder.org"',  # sphinx-thebe.js's default
     ]
     assert all(LAUNCH.search(text) for text in buttons)
