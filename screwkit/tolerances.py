@@ -196,6 +196,11 @@ IK_RANK_TOL = 1e-10
 #: real and lets nothing false through.
 IK_ROOT_TOL = 1e-5
 
+#: The closed-form quartic (:mod:`screwkit.ik._quartic`, Ferrari) is trusted for a batch
+#: member when each root's value and the roots' sum (Vieta) are within this of 0
+#: relative to the coefficients' size; else the companion matrix's eigenvalues are used.
+IK_QUARTIC_TOL = 1e-9
+
 #: A candidate of subproblems 5 and 6, or a joint vector of the decomposed engine, is a
 #: solution when its residual (the equations', relative to their size; the pose's:
 #: rotation entries and positions divided by the arm's size) is below this after

@@ -47,6 +47,7 @@ from ..tolerances import (
 )
 from ..tolerances import SUBPROBLEM_TOL as TOL
 from ..transforms import _cross
+from ._quartic import quartic_roots
 
 __all__ = [
     "Solutions",
@@ -387,9 +388,9 @@ def _two_roots(A, B, C):
 def _quartic_candidates(A1, A2, d):
     """The candidates of A1 x1 + A2 x2 = d for A1 of rank 2: x1 = adj(A1) (d - A2 x2) /
     det(A1) with |x1| = 1 is a trigonometric polynomial of degree 2 in theta2, a
-    quartic in z = exp(i theta2) (companion-matrix eigenvalues; its roots on the unit
-    circle, polished by Newton). Returns angles (..., 4, 2), a mask (..., 4) and where
-    theta2 is free (...)."""
+    quartic in z = exp(i theta2) (:func:`~screwkit.ik._quartic.quartic_roots`; its
+    roots on the unit circle, polished by Newton). Returns angles (..., 4, 2), a mask
+    (..., 4) and where theta2 is free (...)."""
     det = _det2(A1)
     adj = np.stack(
         [
@@ -408,15 +409,18 @@ def _quartic_candidates(A1, A2, d):
     size = np.abs(np.stack([c0, c1, s1, c2, s2], -1)).max(-1) + np.finfo(float).tiny
     lead = (c2 - 1j * s2) / 2
     quartic = np.abs(lead) > IK_RANK_TOL * size
-    coeffs = np.stack(
-        [(c1 - 1j * s1) / 2, c0 + 0j, (c1 + 1j * s1) / 2, (c2 + 1j * s2) / 2]
+    z = quartic_roots(
+        np.stack(
+            [
+                np.where(quartic, lead, 1.0),
+                (c1 - 1j * s1) / 2,
+                c0 + 0j,
+                (c1 + 1j * s1) / 2,
+                (c2 + 1j * s2) / 2,
+            ],
+            -1,
+        )
     )
-    companion = np.zeros(lead.shape + (4, 4), complex)
-    companion[..., 0, :] = (
-        -np.moveaxis(coeffs, 0, -1) / np.where(quartic, lead, 1.0)[..., None]
-    )
-    companion[..., 1, 0] = companion[..., 2, 1] = companion[..., 3, 2] = 1.0
-    z = np.linalg.eigvals(companion)
     # degree 1 (c2 = s2 = 0): c0 + c1 cos + s1 sin = 0, two roots
     linear, linear_ok = _two_roots(c1, s1, -c0)
     theta2 = np.where(quartic[..., None], np.angle(z), np.concatenate([linear] * 2, -1))
