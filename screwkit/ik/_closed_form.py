@@ -167,6 +167,27 @@ class ClosedFormArm:
         return Q, flags, code
 
 
+def pose_residual(chain, Q, T, scale):
+    """How far the chain's forward kinematics at each row of Q lands from its pose.
+
+    Parameters
+    ----------
+    chain : Chain
+    Q : array, shape (k, n), joint vectors (rad)
+    T : array, shape (k, 4, 4) or (4, 4), the poses (m)
+    scale : float, the arm's size (m), see :func:`arm_scale`
+
+    Returns
+    -------
+    array (k,) : the largest entry of the rotation's difference and of the position's
+        divided by scale
+    """
+    D = chain.fk(Q) - T
+    return np.maximum(
+        np.abs(D[..., :3, :3]).max((-1, -2)), np.abs(D[..., :3, 3]).max(-1) / scale
+    )
+
+
 def arm_scale(p):
     """The size of an arm, the length its tolerances are measured against.
 

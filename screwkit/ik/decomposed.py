@@ -34,7 +34,7 @@ from .._checks import check_chain, check_poses
 from .._compiled import CHUNK
 from ..links import Joint
 from ..tolerances import IK_ACCEPT_TOL, IK_CLIP_TOL, IK_DUPLICATE_TOL, IK_STRUCTURE_TOL
-from ._closed_form import arm_scale
+from ._closed_form import arm_scale, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
 __all__ = ["DecomposedArm", "Classification", "classify"]
@@ -223,6 +223,8 @@ class DecomposedArm:
         Whether the chain is solved reversed.
     structure : str
         The class's name.
+    chain : Chain
+        The arm as given: its forward kinematics checks every solution.
     """
 
     w: np.ndarray
@@ -232,6 +234,7 @@ class DecomposedArm:
     case: str
     reverse: bool
     structure: str
+    chain: object
 
     @classmethod
     def from_chain(cls, chain, name="chain"):
@@ -274,7 +277,7 @@ class DecomposedArm:
             r[3] = r[4] = r[5] = _common_point(w, r, 3, 4)
         elif not _parallel(w[4], w[5]):
             r[5] = _common_point(w, r, 5, 4)
-        return cls(w, r, M, scale, case, reverse, found.name)
+        return cls(w, r, M, scale, case, reverse, found.name, chain)
 
     def solve(self, T):
         """Every solution of a batch of poses.
@@ -301,48 +304,29 @@ class DecomposedArm:
         return Q, res, free
 
     def _solve(self, T):
-        if self.reverse:
-            T = _inverse(T)
-        G = T @ _inverse(self.home)
+        G = (_inverse(T) if self.reverse else T) @ _inverse(self.home)
         if self.case == "wrist":
             Q, ok, free = self._wrist(G)
         else:
             Q, ok, free = self._parallel(G)
         Q = np.pi - np.mod(np.pi - Q, 2 * np.pi)
-        residual = np.full(ok.shape, np.inf)
-        rows, branch = np.nonzero(ok)  # only the candidates the subproblems kept
-        residual[rows, branch] = self._residual(Q[rows, branch], G[rows])
-        ok &= residual <= IK_ACCEPT_TOL
-        for i in range(1, 8):
-            for j in range(i):
-                gap = np.abs(np.pi - np.mod(np.pi - (Q[:, i] - Q[:, j]), 2 * np.pi))
-                ok[:, i] &= ~(ok[:, j] & np.all(gap < IK_DUPLICATE_TOL, -1))
         if self.reverse:
             Q = -Q[..., ::-1]
+        # branches 2i and 2i + 1 share the first subproblem's solution i, which differ
+        # from each other (sinusoid_pairs drops repeats): only siblings can coincide
+        gap = np.abs(Q[:, 1::2] - Q[:, 0::2])
+        same = np.all(np.minimum(gap, 2 * np.pi - gap) < IK_DUPLICATE_TOL, -1)
+        ok[:, 1::2] &= ~(ok[:, 0::2] & same)
+        # the solution is checked by the chain's own forward kinematics
+        residual = np.full(ok.shape, np.nan)
+        rows, branch = np.nonzero(ok)
+        residual[rows, branch] = pose_residual(
+            self.chain, Q[rows, branch], T[rows], self.scale
+        )
+        ok &= residual <= IK_ACCEPT_TOL
         Q[~ok] = np.nan
         residual[~ok] = np.nan
         return Q, residual, free & ok
-
-    def _residual(self, Q, G):
-        """The pose residual of candidates Q (k, 6) against their G (k, 4, 4):
-        exp(xi_1 q1) ... exp(xi_6 q6) applied to the origin and the three unit points
-        (Rodrigues on the points, joint 6 first); rotation entries and positions /
-        scale."""
-        x = np.broadcast_to(np.vstack([np.zeros(3), np.eye(3)]), Q.shape[:-1] + (4, 3))
-        for i in range(5, -1, -1):
-            w, r = self.w[i], self.r[i]
-            c, s = (
-                np.cos(Q[..., i])[..., None, None],
-                np.sin(Q[..., i])[..., None, None],
-            )
-            u = x - r
-            along = (u @ w)[..., None] * w
-            x = r + along + (u - along) * c + np.cross(w, u) * s
-        origin = x[..., 0, :]
-        rotation = x[..., 1:, :] - origin[..., None, :]  # rows: R e_j, the columns of R
-        rot = np.abs(rotation - np.swapaxes(G[..., :3, :3], -1, -2)).max((-1, -2))
-        moved = np.abs(origin - G[..., :3, 3]).max(-1)
-        return np.maximum(rot, moved / self.scale)
 
     def _wrist(self, G):
         w, r = self.w, self.r

@@ -60,6 +60,7 @@ from ..robots import puma560
 from ..tolerances import IK_JOINT_LIMIT_SLACK
 from ..tolerances import IK_SINGULAR_TOL as SINGULAR_TOL
 from ..transforms import _wrap_angle
+from ._closed_form import pose_residual
 from .decomposed import DecomposedArm, _motions, classify
 from .general import general_6r_ik
 from .spherical_wrist import CONFIGURATIONS, SphericalWristArm
@@ -411,15 +412,6 @@ def _fixed_ik(chain, T, within_limits, near, fixed):
     return out[0] if single else out
 
 
-def _pose_residual(chain, Q, T, scale):
-    """The residual of each row of Q (k, n) against the pose T: the largest entry of
-    the rotation's difference and of the position's divided by ``scale``."""
-    D = chain.fk(Q) - T
-    return np.maximum(
-        np.abs(D[..., :3, :3]).max((-1, -2)), np.abs(D[..., :3, 3]).max(-1) / scale
-    )
-
-
 def _analytic_ik(arm, chain, T, within_limits, near):
     """analytic_ik for poses T already checked."""
     within_limits = check_flag(within_limits, "within_limits")
@@ -541,7 +533,7 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near, chain=None):
     reached = ~np.isnan(Q[:, 0])
     residual = np.full(len(Q), np.nan)
     if chain is not None and reached.any():
-        residual[reached] = _pose_residual(chain, Q[reached], T, arm.scale)
+        residual[reached] = pose_residual(chain, Q[reached], T, arm.scale)
     solutions = []
     for q, q_moved, ok, config, flag, res in zip(
         Q, moved, inside, CONFIGURATIONS, flags, residual
