@@ -184,6 +184,14 @@ def _motions(w, r, theta):
     return E
 
 
+def _turn(w, theta, v):
+    """R(w, theta) v by Rodrigues, for a fixed unit axis w (3,), angles (...) and
+    vectors v (..., 3) or (3,): (..., 3). Cheaper than building the matrices."""
+    c, s = np.cos(theta)[..., None], np.sin(theta)[..., None]
+    along = (v @ w)[..., None] * w
+    return along + (v - along) * c + np.cross(w, v) * s
+
+
 def _inverse(T):
     out = np.zeros_like(T)
     Rt = np.swapaxes(T[..., :3, :3], -1, -2)
@@ -195,7 +203,7 @@ def _inverse(T):
 
 def _apply(T, x):
     """T x for transforms (..., 4, 4) and points x (..., 3) (or (3,))."""
-    return np.einsum("...ij,...j->...i", T[..., :3, :3], x) + T[..., :3, 3]
+    return (T[..., :3, :3] @ x[..., None])[..., 0] + T[..., :3, 3]
 
 
 def _across(u, x):
@@ -336,23 +344,24 @@ class DecomposedArm:
         theta, ok, free = three_cones(
             w[0], w[1], w[2], r[0] - r[1], target - r[0], r[2] - r[1], c - r[2]
         )  # (N, 4, 3)
-        q123 = theta * [-1.0, 1.0, 1.0]
-        E = (
-            _motions(w[0], r[0], q123[..., 0])
-            @ _motions(w[1], r[1], q123[..., 1])
-            @ _motions(w[2], r[2], q123[..., 2])
-        )
-        Rw = np.swapaxes(E[..., :3, :3], -1, -2) @ G[:, None, :3, :3]  # (N, 4, 3, 3)
-        y = Rw @ w[5]  # (N, 4, 3)
+        q1, q2, q3 = -theta[..., 0], theta[..., 1], theta[..., 2]
+
+        def back123(v):  # R3^T R2^T R1^T v
+            return _turn(w[2], -q3, _turn(w[1], -q2, _turn(w[0], -q1, v)))
+
+        RG = G[:, None, :3, :3]
+        y = back123(RG @ w[5])  # R123^T R_G w6, (N, 4, 3)
         z, gamma2 = meeting_points(w[3], w[4], w[5], y)  # (N, 4, 2, 3)
         reach = gamma2 >= -IK_CLIP_TOL
         q5 = _angle_about(w[4], w[5], z)
         q4 = _angle_about(w[3], z, y[..., None, :])
         aligned = np.linalg.norm(np.cross(y, w[3]), axis=-1) <= IK_CLIP_TOL
-        R45 = _rotations(w[3], q4) @ _rotations(w[4], q5)
+        # q6 turns x to R6 x = R5^T R4^T R123^T R_G x
         x = np.cross(w[5], [1.0, 0, 0] if abs(w[5, 0]) < 0.9 else [0, 1.0, 0])
-        R6 = np.swapaxes(R45, -1, -2) @ Rw[..., None, :, :]
-        q6 = _angle_about(w[5], x, R6 @ x)
+        R6x = back123(RG @ x)[..., None, :]
+        R6x = _turn(w[4], -q5, _turn(w[3], -q4, R6x))
+        q6 = _angle_about(w[5], x, R6x)
+        q123 = np.stack([q1, q2, q3], -1)
         Q = np.concatenate(
             [
                 np.broadcast_to(q123[..., None, :], (N, 4, 2, 3)),
@@ -384,19 +393,20 @@ class DecomposedArm:
         d = np.broadcast_to([0.0, u @ (r[4] - r[0])], (N, 2))
         theta, ok, free = two_pairs(h, k, p, d)  # (N, 4, 2)
         q1, q5 = -theta[..., 0], theta[..., 1]
-        R1, R5 = _rotations(w[0], q1), _rotations(w[4], q5)
-        a = np.einsum("nji,nkj->nki", RG, R1 @ u)  # R_G^T R1 u
-        b = u @ R5  # R5^T u
+        a = _turn(w[0], q1, u) @ RG  # R_G^T R1 u, (N, 4, 3)
+        b = _turn(w[4], -q5, u)  # R5^T u
         q6 = _angle_about(w[5], a, b)
         free6 = np.linalg.norm(np.cross(a, w[5]), axis=-1) <= IK_CLIP_TOL
-        E1 = _motions(w[0], r[0], q1)
-        E56 = _motions(w[4], r[4], q5) @ _motions(w[5], r[5], q6)
-        H = (
-            _inverse(E1) @ G[:, None] @ _inverse(E56)
-        )  # exp(xi2 q2) exp(xi3 q3) exp(xi4 q4)
+        # H = E1^-1 G E6^-1 E5^-1 = exp(xi2 q2) exp(xi3 q3) exp(xi4 q4), a turn about u
+        # by phi = q2 + q3 + q4 (signed) that takes r4 to g
         x = np.cross(u, [1.0, 0, 0] if abs(u[0]) < 0.9 else [0, 1.0, 0])
-        phi = _angle_about(u, x, H[..., :3, :3] @ x)
-        g = _apply(H, r[3])  # (N, 4, 3)
+        Hx = _turn(w[4], -q5, x)
+        Hx = _turn(w[0], -q1, (RG[:, None] @ _turn(w[5], -q6, Hx)[..., None])[..., 0])
+        phi = _angle_about(u, x, Hx)
+        g = _turn(w[4], -q5, r[3] - r[4]) + r[4]
+        g = _turn(w[5], -q6, g - r[5]) + r[5]
+        g = (RG[:, None] @ g[..., None])[..., 0] + G[:, None, :3, 3]
+        g = _turn(w[0], -q1, g - r[0]) + r[0]  # (N, 4, 3)
         a34, a32 = _across(u, r[3] - r[2]), _across(u, r[1] - r[2])
         target = _across(u, g - r[1])
         delta2 = np.sum(target**2, -1)
@@ -406,7 +416,7 @@ class DecomposedArm:
         reach = np.abs(cosine) <= 1 + IK_CLIP_TOL
         beta = np.arccos(np.clip(cosine, -1, 1))
         q3 = theta0 + np.stack([-beta, beta], -1)  # (N, 4, 2), about u
-        elbow = _apply(_motions(u, r[2], q3), r[3])  # exp(xi3 q3) r4
+        elbow = _turn(u, q3, r[3] - r[2]) + r[2]  # exp(xi3 q3) r4
         q2 = _angle_about(u, elbow - r[1], g[..., None, :] - r[1])
         q4 = (phi[..., None] - q2 - q3) * np.sign(w[3] @ u)  # axes 3, 4 along +-u
         q3 = q3 * np.sign(w[2] @ u)
