@@ -94,6 +94,20 @@ def _cross(a, b):
     )
 
 
+def _cross_last(a, b):
+    """a x b along the last axis, for arrays laid out (..., 3) (or (3,)) that
+    broadcast: written out, several times cheaper than np.cross. No checks."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], -1)
+
+
+def _dot_last(a, b):
+    """a . b along the last axis of length 3, for arrays that broadcast: written out,
+    several times cheaper than np.sum(a * b, -1) or a matrix product. No checks."""
+    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1] + a[..., 2] * b[..., 2]
+
+
 def _rodrigues(W, s, c1):
     """I + s [w] + c1 [w]^2 from W = [w] (..., 3, 3), s = sin and c1 = 1 - cos
     (..., 1, 1)."""

@@ -34,6 +34,7 @@ from .._checks import check_chain, check_poses
 from .._compiled import CHUNK
 from ..links import Joint
 from ..tolerances import IK_ACCEPT_TOL, IK_CLIP_TOL, IK_DUPLICATE_TOL, IK_STRUCTURE_TOL
+from ..transforms import _cross_last, _dot_last
 from ._closed_form import arm_scale, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
@@ -184,12 +185,18 @@ def _motions(w, r, theta):
     return E
 
 
-def _turn(w, theta, v):
-    """R(w, theta) v by Rodrigues, for a fixed unit axis w (3,), angles (...) and
-    vectors v (..., 3) or (3,): (..., 3). Cheaper than building the matrices."""
-    c, s = np.cos(theta)[..., None], np.sin(theta)[..., None]
-    along = (v @ w)[..., None] * w
-    return along + (v - along) * c + np.cross(w, v) * s
+def _cos_sin(theta):
+    """cos and sin of angles (...), as _turn takes them: (..., 2)."""
+    return np.stack([np.cos(theta), np.sin(theta)], -1)
+
+
+def _turn(w, cs, v, back=False):
+    """R(w, theta) v by Rodrigues (R(w, theta)^T v if back), for a fixed unit axis w
+    (3,), cs = _cos_sin(theta) (..., 2) and vectors v (..., 3) or (3,): (..., 3).
+    Cheaper than building the matrices, and an angle's cos and sin are taken once."""
+    c, s = cs[..., :1], (-cs[..., 1:] if back else cs[..., 1:])
+    along = _dot_last(v, w)[..., None] * w
+    return along + (v - along) * c + _cross_last(w, v) * s
 
 
 def _inverse(T):
@@ -345,9 +352,11 @@ class DecomposedArm:
             w[0], w[1], w[2], r[0] - r[1], target - r[0], r[2] - r[1], c - r[2]
         )  # (N, 4, 3)
         q1, q2, q3 = -theta[..., 0], theta[..., 1], theta[..., 2]
+        cs1, cs2, cs3 = _cos_sin(q1), _cos_sin(q2), _cos_sin(q3)
 
         def back123(v):  # R3^T R2^T R1^T v
-            return _turn(w[2], -q3, _turn(w[1], -q2, _turn(w[0], -q1, v)))
+            v = _turn(w[0], cs1, v, back=True)
+            return _turn(w[2], cs3, _turn(w[1], cs2, v, back=True), back=True)
 
         RG = G[:, None, :3, :3]
         y = back123(RG @ w[5])  # R123^T R_G w6, (N, 4, 3)
@@ -355,11 +364,13 @@ class DecomposedArm:
         reach = gamma2 >= -IK_CLIP_TOL
         q5 = _angle_about(w[4], w[5], z)
         q4 = _angle_about(w[3], z, y[..., None, :])
-        aligned = np.linalg.norm(np.cross(y, w[3]), axis=-1) <= IK_CLIP_TOL
+        off = _cross_last(y, w[3])
+        aligned = np.sqrt(_dot_last(off, off)) <= IK_CLIP_TOL
         # q6 turns x to R6 x = R5^T R4^T R123^T R_G x
         x = np.cross(w[5], [1.0, 0, 0] if abs(w[5, 0]) < 0.9 else [0, 1.0, 0])
         R6x = back123(RG @ x)[..., None, :]
-        R6x = _turn(w[4], -q5, _turn(w[3], -q4, R6x))
+        R6x = _turn(w[3], _cos_sin(q4), R6x, back=True)
+        R6x = _turn(w[4], _cos_sin(q5), R6x, back=True)
         q6 = _angle_about(w[5], x, R6x)
         q123 = np.stack([q1, q2, q3], -1)
         Q = np.concatenate(
@@ -393,30 +404,33 @@ class DecomposedArm:
         d = np.broadcast_to([0.0, u @ (r[4] - r[0])], (N, 2))
         theta, ok, free = two_pairs(h, k, p, d)  # (N, 4, 2)
         q1, q5 = -theta[..., 0], theta[..., 1]
-        a = _turn(w[0], q1, u) @ RG  # R_G^T R1 u, (N, 4, 3)
-        b = _turn(w[4], -q5, u)  # R5^T u
+        cs1, cs5 = _cos_sin(q1), _cos_sin(q5)
+        a = _turn(w[0], cs1, u) @ RG  # R_G^T R1 u, (N, 4, 3)
+        b = _turn(w[4], cs5, u, back=True)  # R5^T u
         q6 = _angle_about(w[5], a, b)
-        free6 = np.linalg.norm(np.cross(a, w[5]), axis=-1) <= IK_CLIP_TOL
+        off = _cross_last(a, w[5])
+        free6 = np.sqrt(_dot_last(off, off)) <= IK_CLIP_TOL
         # H = E1^-1 G E6^-1 E5^-1 = exp(xi2 q2) exp(xi3 q3) exp(xi4 q4), a turn about u
         # by phi = q2 + q3 + q4 (signed) that takes r4 to g
         x = np.cross(u, [1.0, 0, 0] if abs(u[0]) < 0.9 else [0, 1.0, 0])
-        Hx = _turn(w[4], -q5, x)
-        Hx = _turn(w[0], -q1, (RG[:, None] @ _turn(w[5], -q6, Hx)[..., None])[..., 0])
+        cs6 = _cos_sin(q6)
+        Hx = _turn(w[5], cs6, _turn(w[4], cs5, x, back=True), back=True)
+        Hx = _turn(w[0], cs1, (RG[:, None] @ Hx[..., None])[..., 0], back=True)
         phi = _angle_about(u, x, Hx)
-        g = _turn(w[4], -q5, r[3] - r[4]) + r[4]
-        g = _turn(w[5], -q6, g - r[5]) + r[5]
+        g = _turn(w[4], cs5, r[3] - r[4], back=True) + r[4]
+        g = _turn(w[5], cs6, g - r[5], back=True) + r[5]
         g = (RG[:, None] @ g[..., None])[..., 0] + G[:, None, :3, 3]
-        g = _turn(w[0], -q1, g - r[0]) + r[0]  # (N, 4, 3)
+        g = _turn(w[0], cs1, g - r[0], back=True) + r[0]  # (N, 4, 3)
         a34, a32 = _across(u, r[3] - r[2]), _across(u, r[1] - r[2])
         target = _across(u, g - r[1])
-        delta2 = np.sum(target**2, -1)
+        delta2 = _dot_last(target, target)
         l1, l2 = np.linalg.norm(a34), np.linalg.norm(a32)
         cosine = (l1**2 + l2**2 - delta2) / (2 * l1 * l2)
         theta0 = np.arctan2(np.cross(a34, a32) @ u, a34 @ a32)
         reach = np.abs(cosine) <= 1 + IK_CLIP_TOL
         beta = np.arccos(np.clip(cosine, -1, 1))
         q3 = theta0 + np.stack([-beta, beta], -1)  # (N, 4, 2), about u
-        elbow = _turn(u, q3, r[3] - r[2]) + r[2]  # exp(xi3 q3) r4
+        elbow = _turn(u, _cos_sin(q3), r[3] - r[2]) + r[2]  # exp(xi3 q3) r4
         q2 = _angle_about(u, elbow - r[1], g[..., None, :] - r[1])
         q4 = (phi[..., None] - q2 - q3) * np.sign(w[3] @ u)  # axes 3, 4 along +-u
         q3 = q3 * np.sign(w[2] @ u)

@@ -46,7 +46,7 @@ from ..tolerances import (
     IK_ROOT_TOL,
 )
 from ..tolerances import SUBPROBLEM_TOL as TOL
-from ..transforms import _cross
+from ..transforms import _cross, _cross_last, _dot_last
 from ._quartic import quartic_roots
 
 __all__ = [
@@ -352,16 +352,16 @@ def meeting_points(w1, w2, x, y):
 def _cone_terms(k, p):
     """R(k, theta) p = a + b cos(theta) + e sin(theta) for unit axes k and vectors p,
     both (..., 3): returns a = k (k . p), b = p - a, e = k x p, each (..., 3)."""
-    a = k * np.sum(k * p, -1)[..., None]
-    return a, p - a, np.cross(k, p)
+    a = k * _dot_last(k, p)[..., None]
+    return a, p - a, _cross_last(k, p)
 
 
 def _angle_about(k, a, b):
     """The angle about the unit axes k (..., 3) turning a towards b (..., 3), rad; 0
     where a or b is on the axis."""
-    a_ = a - k * np.sum(a * k, -1)[..., None]
-    b_ = b - k * np.sum(b * k, -1)[..., None]
-    return np.arctan2(np.sum(np.cross(a_, b_) * k, -1), np.sum(a_ * b_, -1))
+    a_ = a - k * _dot_last(a, k)[..., None]
+    b_ = b - k * _dot_last(b, k)[..., None]
+    return np.arctan2(_dot_last(_cross_last(a_, b_), k), _dot_last(a_, b_))
 
 
 def _det2(A):
@@ -592,11 +592,11 @@ def three_cones(k1, k2, k3, p0, p1, p2, p3):
         holds the representative with that angle 0)
     """
     k1, k2, k3, p0, p1, p2, p3 = np.broadcast_arrays(k1, k2, k3, p0, p1, p2, p3)
-    size = 1.0 + sum(np.linalg.norm(p, axis=-1) for p in (p0, p1, p2, p3))
+    size = 1.0 + sum(np.sqrt(_dot_last(p, p)) for p in (p0, p1, p2, p3))
     a1, b1, e1 = _cone_terms(k1, p1)
     a3, b3, e3 = _cone_terms(k3, p3)
     o1, o3 = p0 + a1, p2 + a3
-    dot = lambda x, y: np.sum(x * y, -1)  # noqa: E731
+    dot = _dot_last
     A1 = np.stack(
         [
             np.stack([dot(k2, b1), dot(k2, e1)], -1),
@@ -627,7 +627,8 @@ def three_cones(k1, k2, k3, p0, p1, p2, p3):
     v3 = v3 + e3[..., None, :] * s3[..., None]
     kk = k2[..., None, :]
     theta2 = _angle_about(kk, v3, v1)
-    across = np.linalg.norm(v3 - kk * np.sum(v3 * kk, -1)[..., None], axis=-1)
+    v3_across = v3 - kk * _dot_last(v3, kk)[..., None]
+    across = np.sqrt(_dot_last(v3_across, v3_across))
     free = free[..., None] | (across <= IK_RANK_TOL * size[..., None])
     theta = np.stack([theta13[..., 0], theta2, theta13[..., 1]], -1)
     return theta, ok, free & ok
@@ -653,7 +654,7 @@ def two_pairs(h, k, p, d):
     """
     h, k, p = np.broadcast_arrays(h, k, p)
     a, b, e = _cone_terms(k, p)
-    hb, he, ha = (np.sum(h * x, -1) for x in (b, e, a))  # (..., 4)
+    hb, he, ha = (_dot_last(h, x) for x in (b, e, a))  # (..., 4)
     A1 = np.stack(
         [
             np.stack([hb[..., 0], he[..., 0]], -1),
