@@ -442,14 +442,14 @@ def _quartic_candidates(A1, A2, d):
     free = flat & (np.abs(c0) <= IK_RANK_TOL * (np.sum(f * f, -1) + det**2))
     theta2 = np.where(flat[..., None], 0.0, theta2)
     ok = np.where(flat[..., None], free[..., None] & [True, False, False, False], ok)
-    for _ in range(2):  # Newton on the trigonometric polynomial
-        c, s = np.cos(theta2), np.sin(theta2)
-        cc, ss = c * c - s * s, 2 * s * c
-        coef = [x[..., None] for x in (c0, c1, s1, c2, s2)]
-        P = coef[0] + coef[1] * c + coef[2] * s + coef[3] * cc + coef[4] * ss
-        dP = -coef[1] * s + coef[2] * c - 2 * coef[3] * ss + 2 * coef[4] * cc
-        steep = np.abs(dP) > IK_RANK_TOL * size[..., None]
-        theta2 = theta2 - np.where(steep, P / np.where(steep, dP, 1.0), 0.0)
+    # a step of Newton on the trigonometric polynomial
+    c, s = np.cos(theta2), np.sin(theta2)
+    cc, ss = c * c - s * s, 2 * s * c
+    coef = [x[..., None] for x in (c0, c1, s1, c2, s2)]
+    P = coef[0] + coef[1] * c + coef[2] * s + coef[3] * cc + coef[4] * ss
+    dP = -coef[1] * s + coef[2] * c - 2 * coef[3] * ss + 2 * coef[4] * cc
+    steep = np.abs(dP) > IK_RANK_TOL * size[..., None]
+    theta2 = theta2 - np.where(steep, P / np.where(steep, dP, 1.0), 0.0)
     e = f[..., None, :] + _mv(G[..., None, :, :], _unit(theta2))
     sign = np.where(det < 0, -1.0, 1.0)[..., None]
     theta1 = np.arctan2(sign * e[..., 1], sign * e[..., 0])
@@ -541,22 +541,22 @@ def sinusoid_pairs(A1, A2, d):
         free = np.where(rank1, low_free, free)
     theta = np.where(swap[..., None, None], theta[..., ::-1], theta)
     A1, A2, d = A1[..., None, :, :], A2[..., None, :, :], d[..., None, :]
-    for _ in range(2):  # Newton on both equations
-        x1, x2 = _unit(theta[..., 0]), _unit(theta[..., 1])
-        F = _mv(A1, x1) + _mv(A2, x2) - d
-        j1 = _mv(A1, x1[..., ::-1] * [-1, 1])  # the Jacobian's columns
-        j2 = _mv(A2, x2[..., ::-1] * [-1, 1])
-        det = j1[..., 0] * j2[..., 1] - j2[..., 0] * j1[..., 1]
-        regular = np.abs(det) > IK_RANK_TOL * size[..., None] ** 2
-        det = np.where(regular, det, 1.0)
-        step = np.stack(  # Cramer's rule
-            [
-                (j2[..., 1] * F[..., 0] - j2[..., 0] * F[..., 1]) / det,
-                (j1[..., 0] * F[..., 1] - j1[..., 1] * F[..., 0]) / det,
-            ],
-            -1,
-        )
-        theta = theta - np.where(regular[..., None], step, 0.0)
+    # a step of Newton on both equations
+    x1, x2 = _unit(theta[..., 0]), _unit(theta[..., 1])
+    F = _mv(A1, x1) + _mv(A2, x2) - d
+    j1 = _mv(A1, x1[..., ::-1] * [-1, 1])  # the Jacobian's columns
+    j2 = _mv(A2, x2[..., ::-1] * [-1, 1])
+    det = j1[..., 0] * j2[..., 1] - j2[..., 0] * j1[..., 1]
+    regular = np.abs(det) > IK_RANK_TOL * size[..., None] ** 2
+    det = np.where(regular, det, 1.0)
+    step = np.stack(  # Cramer's rule
+        [
+            (j2[..., 1] * F[..., 0] - j2[..., 0] * F[..., 1]) / det,
+            (j1[..., 0] * F[..., 1] - j1[..., 1] * F[..., 0]) / det,
+        ],
+        -1,
+    )
+    theta = theta - np.where(regular[..., None], step, 0.0)
     x1, x2 = _unit(theta[..., 0]), _unit(theta[..., 1])
     residual = np.linalg.norm(_mv(A1, x1) + _mv(A2, x2) - d, axis=-1)
     ok = ok & (residual <= IK_ACCEPT_TOL * size[..., None])
