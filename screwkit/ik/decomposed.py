@@ -345,44 +345,40 @@ class DecomposedArm:
 
     def _wrist(self, G):
         w, r = self.w, self.r
-        N = G.shape[0]
         c = r[3]
         target = _apply(G, c)  # (N, 3)
         theta, ok, free = three_cones(
             w[0], w[1], w[2], r[0] - r[1], target - r[0], r[2] - r[1], c - r[2]
         )  # (N, 4, 3)
-        q1, q2, q3 = -theta[..., 0], theta[..., 1], theta[..., 2]
+        # the rest only for the k solutions of subproblem 5 (about half the slots)
+        rows, slot = np.nonzero(ok)
+        theta, free = theta[rows, slot], free[rows, slot]  # (k, 3), (k,)
+        RG = G[rows, :3, :3]
+        q1, q2, q3 = -theta[:, 0], theta[:, 1], theta[:, 2]
         cs1, cs2, cs3 = _cos_sin(q1), _cos_sin(q2), _cos_sin(q3)
 
         def back123(v):  # R3^T R2^T R1^T v
             v = _turn(w[0], cs1, v, back=True)
             return _turn(w[2], cs3, _turn(w[1], cs2, v, back=True), back=True)
 
-        RG = G[:, None, :3, :3]
-        y = back123(RG @ w[5])  # R123^T R_G w6, (N, 4, 3)
-        z, gamma2 = meeting_points(w[3], w[4], w[5], y)  # (N, 4, 2, 3)
+        y = back123(RG @ w[5])  # R123^T R_G w6, (k, 3)
+        z, gamma2 = meeting_points(w[3], w[4], w[5], y)  # (k, 2, 3)
         reach = gamma2 >= -IK_CLIP_TOL
         q5 = _angle_about(w[4], w[5], z)
-        q4 = _angle_about(w[3], z, y[..., None, :])
+        q4 = _angle_about(w[3], z, y[:, None, :])
         off = _cross_last(y, w[3])
         aligned = np.sqrt(_dot_last(off, off)) <= IK_CLIP_TOL
         # q6 turns x to R6 x = R5^T R4^T R123^T R_G x
         x = np.cross(w[5], [1.0, 0, 0] if abs(w[5, 0]) < 0.9 else [0, 1.0, 0])
-        R6x = back123(RG @ x)[..., None, :]
+        R6x = back123(RG @ x)[:, None, :]
         R6x = _turn(w[3], _cos_sin(q4), R6x, back=True)
         R6x = _turn(w[4], _cos_sin(q5), R6x, back=True)
         q6 = _angle_about(w[5], x, R6x)
-        q123 = np.stack([q1, q2, q3], -1)
+        q123 = np.stack([q1, q2, q3], -1)[:, None, :]
         Q = np.concatenate(
-            [
-                np.broadcast_to(q123[..., None, :], (N, 4, 2, 3)),
-                np.stack([q4, q5, q6], -1),
-            ],
-            -1,
-        ).reshape(N, 8, 6)
-        ok = (ok & reach)[..., None].repeat(2, -1).reshape(N, 8)
-        free = (free[..., None] | aligned[..., None]).repeat(2, -1).reshape(N, 8)
-        return Q, ok, free
+            [np.broadcast_to(q123, q4.shape + (3,)), np.stack([q4, q5, q6], -1)], -1
+        )
+        return _spread(G.shape[0], rows, slot, Q, reach, free | aligned)
 
     def _parallel(self, G):
         w, r = self.w, self.r
@@ -403,9 +399,13 @@ class DecomposedArm:
         )
         d = np.broadcast_to([0.0, u @ (r[4] - r[0])], (N, 2))
         theta, ok, free = two_pairs(h, k, p, d)  # (N, 4, 2)
-        q1, q5 = -theta[..., 0], theta[..., 1]
+        # the rest only for the k solutions of subproblem 6
+        rows, slot = np.nonzero(ok)
+        theta, free = theta[rows, slot], free[rows]  # (k, 2), (k,)
+        RG, tG = G[rows, :3, :3], G[rows, :3, 3]
+        q1, q5 = -theta[:, 0], theta[:, 1]
         cs1, cs5 = _cos_sin(q1), _cos_sin(q5)
-        a = _turn(w[0], cs1, u) @ RG  # R_G^T R1 u, (N, 4, 3)
+        a = (_turn(w[0], cs1, u)[:, None, :] @ RG)[:, 0]  # R_G^T R1 u, (k, 3)
         b = _turn(w[4], cs5, u, back=True)  # R5^T u
         q6 = _angle_about(w[5], a, b)
         off = _cross_last(a, w[5])
@@ -415,12 +415,12 @@ class DecomposedArm:
         x = np.cross(u, [1.0, 0, 0] if abs(u[0]) < 0.9 else [0, 1.0, 0])
         cs6 = _cos_sin(q6)
         Hx = _turn(w[5], cs6, _turn(w[4], cs5, x, back=True), back=True)
-        Hx = _turn(w[0], cs1, (RG[:, None] @ Hx[..., None])[..., 0], back=True)
+        Hx = _turn(w[0], cs1, (RG @ Hx[..., None])[..., 0], back=True)
         phi = _angle_about(u, x, Hx)
         g = _turn(w[4], cs5, r[3] - r[4], back=True) + r[4]
         g = _turn(w[5], cs6, g - r[5], back=True) + r[5]
-        g = (RG[:, None] @ g[..., None])[..., 0] + G[:, None, :3, 3]
-        g = _turn(w[0], cs1, g - r[0], back=True) + r[0]  # (N, 4, 3)
+        g = (RG @ g[..., None])[..., 0] + tG
+        g = _turn(w[0], cs1, g - r[0], back=True) + r[0]  # (k, 3)
         a34, a32 = _across(u, r[3] - r[2]), _across(u, r[1] - r[2])
         target = _across(u, g - r[1])
         delta2 = _dot_last(target, target)
@@ -429,23 +429,33 @@ class DecomposedArm:
         theta0 = np.arctan2(np.cross(a34, a32) @ u, a34 @ a32)
         reach = np.abs(cosine) <= 1 + IK_CLIP_TOL
         beta = np.arccos(np.clip(cosine, -1, 1))
-        q3 = theta0 + np.stack([-beta, beta], -1)  # (N, 4, 2), about u
+        q3 = theta0 + np.stack([-beta, beta], -1)  # (k, 2), about u
         elbow = _turn(u, _cos_sin(q3), r[3] - r[2]) + r[2]  # exp(xi3 q3) r4
-        q2 = _angle_about(u, elbow - r[1], g[..., None, :] - r[1])
-        q4 = (phi[..., None] - q2 - q3) * np.sign(w[3] @ u)  # axes 3, 4 along +-u
+        q2 = _angle_about(u, elbow - r[1], g[:, None, :] - r[1])
+        q4 = (phi[:, None] - q2 - q3) * np.sign(w[3] @ u)  # axes 3, 4 along +-u
         q3 = q3 * np.sign(w[2] @ u)
         free2 = np.sqrt(delta2) <= IK_CLIP_TOL * self.scale
         Q = np.stack(
             [
-                np.broadcast_to(q1[..., None], q2.shape),
+                np.broadcast_to(q1[:, None], q2.shape),
                 q2,
                 q3,
                 q4,
-                np.broadcast_to(q5[..., None], q2.shape),
-                np.broadcast_to(q6[..., None], q2.shape),
+                np.broadcast_to(q5[:, None], q2.shape),
+                np.broadcast_to(q6[:, None], q2.shape),
             ],
             -1,
-        ).reshape(N, 8, 6)
-        ok = (ok & reach)[..., None].repeat(2, -1).reshape(N, 8)
-        free = (free[:, None] | free6 | free2)[..., None].repeat(2, -1).reshape(N, 8)
-        return Q, ok, free
+        )
+        return _spread(N, rows, slot, Q, reach, free | free6 | free2)
+
+
+def _spread(N, rows, slot, Q, ok, free):
+    """The k solutions of the first subproblem (rows, slot), each with two branches
+    Q (k, 2, 6), ok (k, 2) or (k,) and free (k,), back in the batch's slots:
+    (N, 8, 6), (N, 8), (N, 8); branches 2i and 2i + 1 of a pose come from slot i."""
+    Q_all = np.full((N, 4, 2, 6), np.nan)
+    ok_all, free_all = np.zeros((N, 4, 2), bool), np.zeros((N, 4, 2), bool)
+    Q_all[rows, slot] = Q
+    ok_all[rows, slot] = ok if ok.ndim == 2 else ok[:, None]
+    free_all[rows, slot] = free[:, None]
+    return Q_all.reshape(N, 8, 6), ok_all.reshape(N, 8), free_all.reshape(N, 8)

@@ -540,26 +540,31 @@ def sinusoid_pairs(A1, A2, d):
         ok = np.where(rank1[..., None], low_ok, ok)
         free = np.where(rank1, low_free, free)
     theta = np.where(swap[..., None, None], theta[..., ::-1], theta)
-    A1, A2, d = A1[..., None, :, :], A2[..., None, :, :], d[..., None, :]
-    # a step of Newton on both equations
-    x1, x2 = _unit(theta[..., 0]), _unit(theta[..., 1])
+    # the candidates kept so far (about half: roots off the unit circle are not), each
+    # polished by a step of Newton on both equations and checked
+    kept = np.nonzero(ok)
+    pose = kept[:-1]
+    A1, A2, d, size = A1[pose], A2[pose], d[pose], size[pose]
+    angles = theta[kept]
+    x1, x2 = _unit(angles[:, 0]), _unit(angles[:, 1])
     F = _mv(A1, x1) + _mv(A2, x2) - d
-    j1 = _mv(A1, x1[..., ::-1] * [-1, 1])  # the Jacobian's columns
-    j2 = _mv(A2, x2[..., ::-1] * [-1, 1])
-    det = j1[..., 0] * j2[..., 1] - j2[..., 0] * j1[..., 1]
-    regular = np.abs(det) > IK_RANK_TOL * size[..., None] ** 2
+    j1 = _mv(A1, x1[:, ::-1] * [-1, 1])  # the Jacobian's columns
+    j2 = _mv(A2, x2[:, ::-1] * [-1, 1])
+    det = j1[:, 0] * j2[:, 1] - j2[:, 0] * j1[:, 1]
+    regular = np.abs(det) > IK_RANK_TOL * size**2
     det = np.where(regular, det, 1.0)
     step = np.stack(  # Cramer's rule
         [
-            (j2[..., 1] * F[..., 0] - j2[..., 0] * F[..., 1]) / det,
-            (j1[..., 0] * F[..., 1] - j1[..., 1] * F[..., 0]) / det,
+            (j2[:, 1] * F[:, 0] - j2[:, 0] * F[:, 1]) / det,
+            (j1[:, 0] * F[:, 1] - j1[:, 1] * F[:, 0]) / det,
         ],
         -1,
     )
-    theta = theta - np.where(regular[..., None], step, 0.0)
-    x1, x2 = _unit(theta[..., 0]), _unit(theta[..., 1])
+    angles = angles - np.where(regular[:, None], step, 0.0)
+    x1, x2 = _unit(angles[:, 0]), _unit(angles[:, 1])
     residual = np.linalg.norm(_mv(A1, x1) + _mv(A2, x2) - d, axis=-1)
-    ok = ok & (residual <= IK_ACCEPT_TOL * size[..., None])
+    theta[kept] = angles
+    ok[kept] = residual <= IK_ACCEPT_TOL * size
     theta = np.pi - np.mod(np.pi - theta, 2 * np.pi)
     for i in range(1, 4):  # a double root found twice is one solution
         for j in range(i):
