@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_chain, check_poses
-from .._compiled import CHUNK
+from .._compiled import CHUNK, cos_sin
 from ..links import Joint
 from ..tolerances import IK_ACCEPT_TOL, IK_CLIP_TOL, IK_DUPLICATE_TOL, IK_STRUCTURE_TOL
 from ..transforms import _cross_last, _dot_last
@@ -187,7 +187,7 @@ def _motions(w, r, theta):
 
 def _cos_sin(theta):
     """cos and sin of angles (...), as _turn takes them: (..., 2)."""
-    return np.stack([np.cos(theta), np.sin(theta)], -1)
+    return np.stack(cos_sin(theta), -1)
 
 
 def _turn(w, cs, v, back=False):
