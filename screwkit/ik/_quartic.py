@@ -54,12 +54,14 @@ def _ferrari(a, b, c, d):
         B, C = -sign * root, p / 2 + m + sign * half_q
         disc = np.sqrt(B * B - 4 * C)
         y += [(-B + disc) / 2, (-B - disc) / 2]
-    # m = 0 (q = 0 and p^2 = 4 r): a biquadratic, y^2 = (-p +- sqrt(p^2 - 4 r)) / 2
-    w = np.sqrt(p * p - 4 * r)
-    y2 = [(-p + w) / 2, (-p - w) / 2]
-    quad = [np.sqrt(y2[0]), -np.sqrt(y2[0]), np.sqrt(y2[1]), -np.sqrt(y2[1])]
-    y = [np.where(ok, yi, qi) for yi, qi in zip(y, quad, strict=True)]
-    return np.stack(y, -1) - (a / 4)[..., None]
+    y = np.stack(y, -1)
+    if not np.all(ok):
+        # m = 0 (q = 0 and p^2 = 4 r): a biquadratic, y^2 = (-p +- sqrt(p^2 - 4 r)) / 2
+        w = np.sqrt(p * p - 4 * r)
+        y2 = [np.sqrt((-p + w) / 2), np.sqrt((-p - w) / 2)]
+        quad = np.stack([y2[0], -y2[0], y2[1], -y2[1]], -1)
+        y = np.where(ok[..., None], y, quad)
+    return y - (a / 4)[..., None]
 
 
 def _value(coeffs, z):

@@ -324,9 +324,10 @@ class DecomposedArm:
             Q, ok, free = self._wrist(G)
         else:
             Q, ok, free = self._parallel(G)
-        Q = np.pi - np.mod(np.pi - Q, 2 * np.pi)
         if self.reverse:
             Q = -Q[..., ::-1]
+        rows, branch = np.nonzero(ok)  # the candidates' angles into (-pi, pi]
+        Q[rows, branch] = np.pi - np.mod(np.pi - Q[rows, branch], 2 * np.pi)
         # branches 2i and 2i + 1 share the first subproblem's solution i, which differ
         # from each other (sinusoid_pairs drops repeats): only siblings can coincide
         gap = np.abs(Q[:, 1::2] - Q[:, 0::2])
