@@ -42,7 +42,7 @@ ORDER = [
     ),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
-    ("Lie algebra", ["lie", "ik.subproblems", "_second_order"]),
+    ("Lie algebra", ["lie", "ik._quartic", "ik.subproblems", "_second_order"]),
     ("screws", ["screws", "systems"]),
     # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
     # it; the entry point of screwkit.ik loads only it and the subproblems at the top

@@ -506,8 +506,8 @@ def sinusoid_pairs(A1, A2, d):
     2, x1 = adj(A1) (d - A2 x2) / det(A1) and |x1| = 1 is a quartic in
     z = exp(i theta2); for rank 1 (axes that meet or are parallel make it so), the two
     equations are solved one after the other (:data:`~screwkit.tolerances.IK_RANK_TOL`
-    decides). Every candidate (a root on the unit circle) is polished by a step of Newton
-    on both equations and kept when its residual is below
+    decides). Every candidate (a root on the unit circle) is polished by a step of
+    Newton on both equations and kept when its residual is below
     :data:`~screwkit.tolerances.IK_ACCEPT_TOL` (relative to the equations' size);
     duplicates are dropped.
 
