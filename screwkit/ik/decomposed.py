@@ -21,9 +21,9 @@ A spherical shoulder (axes 1, 2, 3 meet) and three parallel axes 3, 4, 5 are the
 above for the reversed chain: T^-1 = exp(xi'_1 q'_1) ... exp(xi'_6 q'_6) M^-1 with
 xi'_i = Ad(M^-1) xi_{7-i} and q'_i = -q_{7-i}.
 
-The solutions are labelled 's0', 's1', ... in the engine's order (no arm, elbow or wrist
-meaning applies in general). Where the solutions form a continuum (an angle free: axis 6
-turned onto axis 4, a point on the axis it turns about) the pose says so.
+The solutions are labelled 's0', 's1', ... in increasing q1, then q2, ... (no arm, elbow
+or wrist meaning applies in general). Where the solutions form a continuum (an angle
+free: axis 6 turned onto axis 4, a point on the axis it turns about) the pose says so.
 """
 
 from dataclasses import dataclass
@@ -304,7 +304,8 @@ class DecomposedArm:
 
         Returns
         -------
-        Q : ndarray (N, 8, 6), rad in (-pi, pi], NaN rows where no solution
+        Q : ndarray (N, 8, 6), rad in (-pi, pi]: each pose's solutions in increasing
+            q1, then q2, ..., then NaN rows
         residual : ndarray (N, 8): max |R - R_T| entry and |p - p_T| / scale (NaN rows
             as Q)
         free : ndarray of bool (N, 8): a solution with a free angle (a continuum)
@@ -316,7 +317,11 @@ class DecomposedArm:
         for start in range(0, N, CHUNK):
             part = slice(start, start + CHUNK)
             Q[part], res[part], free[part] = self._solve(T[part])
-        return Q, res, free
+        # the solutions sorted by their angles (q1 first), NaN last: the labels s0, s1,
+        # ... do not depend on the order in which the subproblems found the roots
+        order = np.lexsort(np.moveaxis(Q[..., ::-1], -1, 0), axis=-1)
+        Q = np.take_along_axis(Q, order[..., None], 1)
+        return Q, *(np.take_along_axis(x, order, 1) for x in (res, free))
 
     def _solve(self, T):
         G = (_inverse(T) if self.reverse else T) @ _inverse(self.home)

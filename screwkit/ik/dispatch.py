@@ -285,10 +285,10 @@ def analytic_ik_all(chain, T):
     -------
     Q : ndarray, shape (8, 6) or (N, 8, 6)
         Joint vectors, rad in (-pi, pi] (m for a prismatic joint), in the order of
-        CONFIGURATIONS (a decomposable arm: the engine's order 's0' ... 's7'); NaN rows
-        for the branches that do not reach a pose (all eight when it is out of reach;
-        see :func:`analytic_ik` for the reason). Computed in chunks, so memory stays
-        bounded for large batches.
+        CONFIGURATIONS (a decomposable arm: 's0' ... 's7', in increasing q1, then q2,
+        ..., the solutions first); NaN rows for the branches that do not reach a pose
+        (all eight when it is out of reach; see :func:`analytic_ik` for the reason).
+        Computed in chunks, so memory stays bounded for large batches.
     """
     arm = _arm(chain)
     T = check_poses(T, "T")
