@@ -8,7 +8,7 @@ is installed (``pip install EAIK``; benchmarks/requirements.txt). Prints how man
 solutions each finds, whether every exact EAIK solution (forward-kinematics error below
 1e-8) is among screwkit's, and the times side by side: the first call (a chain built
 anew: its class found, its engine and its generated forward kinematics made; EAIK's
-robot built, its decomposition found) and the steady state (best of three).
+robot built, its decomposition found) and the steady state (best of seven calls).
 Usage (from the top level): .venv/bin/python benchmarks/bench_ik_decomposed.py
 """
 
@@ -26,6 +26,7 @@ except ImportError:
     HPRobot = None
 
 N = 10_000
+REPEAT = 7  # the steady state: the best of seven calls, each side
 rng = np.random.default_rng(34)
 
 
@@ -85,7 +86,7 @@ for kind in (
     first_ours = time.perf_counter() - start
     assert DecomposedArm.from_chain(chain).case in ("wrist", "parallel")
     ours = int((~np.isnan(Q[..., 0])).sum())
-    t_ours = best(lambda: sk.ik.analytic_ik_all(chain, T), 1, 3)  # noqa: B023
+    t_ours = best(lambda: sk.ik.analytic_ik_all(chain, T), 1, REPEAT)  # noqa: B023
     t_theirs = first_theirs = None
     theirs, missing = "-", "-"
     if HPRobot is not None:
@@ -96,7 +97,7 @@ for kind in (
         robot = eaik_robot(chain)  # EAIK finds its decomposition here
         found = robot.IK_batched(poses, 1)
         first_theirs = time.perf_counter() - start
-        t_theirs = best(lambda: robot.IK_batched(poses, 1), 1, 3)  # noqa: B023
+        t_theirs = best(lambda: robot.IK_batched(poses, 1), 1, REPEAT)  # noqa: B023
         count, missing = 0, 0
         for k in range(N):
             QE = np.array(found[k].Q).reshape(-1, 6)

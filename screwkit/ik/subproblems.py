@@ -570,9 +570,8 @@ def sinusoid_pairs(A1, A2, d):
     theta = np.pi - np.mod(np.pi - theta, 2 * np.pi)
     for i in range(1, 4):  # a double root found twice is one solution
         for j in range(i):
-            gap = np.abs(
-                np.pi - np.mod(np.pi - (theta[..., i, :] - theta[..., j, :]), 2 * np.pi)
-            )
+            gap = np.abs(theta[..., i, :] - theta[..., j, :])  # both in (-pi, pi]
+            gap = np.minimum(gap, 2 * np.pi - gap)
             ok[..., i] &= ~(ok[..., j] & np.all(gap < IK_DUPLICATE_TOL, -1))
     return theta, ok, free
 
