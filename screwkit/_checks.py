@@ -284,9 +284,10 @@ def check_shape(array, name, shape):
     """Require ``array.shape`` to end with ``shape`` (leading axes are a batch)."""
     tail = array.shape[array.ndim - len(shape) :] if array.ndim >= len(shape) else None
     if tail != tuple(shape):
-        expected = " x ".join(str(s) for s in shape)
+        expected = ", ".join(str(s) for s in shape)
+        single = f"({expected},)" if len(shape) == 1 else f"({expected})"
         raise ValueError(
-            f"{name} must have shape ({expected}) or (N, {expected}) for a batch, "
+            f"{name} must have shape {single} or (N, {expected}) for a batch, "
             f"got shape {array.shape}"
         )
     return array

@@ -533,7 +533,7 @@ def test_stewart_constant_orientation_workspace():
 @pytest.mark.parametrize(
     "call, error, match",
     [
-        (lambda: stewart().ik(np.eye(3)), ValueError, r"T must have shape \(4 x 4\)"),
+        (lambda: stewart().ik(np.eye(3)), ValueError, r"T must have shape \(4, 4\)"),
         (lambda: stewart().ik(np.full((4, 4), np.nan)), ValueError, "T must be finite"),
         (lambda: stewart().ik(np.diag([2.0, 1, 1, 1])), ValueError, "rotation matrix"),
         (lambda: stewart().ik("home"), TypeError, "T must be a number or an array"),

@@ -52,7 +52,7 @@ def test_spatial_drawing_and_workspace():
 def test_bad_input():
     with pytest.raises(TypeError, match="pm must be a ParallelManipulator"):
         draw_planar_platform([[0, 0, 1]], np.eye(4))
-    with pytest.raises(ValueError, match=r"T must have shape \(4 x 4\)"):
+    with pytest.raises(ValueError, match=r"T must have shape \(4, 4\)"):
         draw_planar_platform(parallel.planar_3rpr(), np.eye(3))
 
 

@@ -188,7 +188,7 @@ def test_transl_forms_agree():
         (lambda: sk.rotz([0.1, np.inf]), ValueError, "theta must be finite"),
         (lambda: sk.rotz(sp.nan), ValueError, "theta must be finite"),
         (lambda: sk.rotz(None), TypeError, "theta must be a real number"),
-        (lambda: sk.skew([1, 2]), ValueError, r"v must have shape \(3\)"),
+        (lambda: sk.skew([1, 2]), ValueError, r"v must have shape \(3,\)"),
         (
             lambda: sk.rot_axis([0, 0, 0], 1.0),
             ValueError,
@@ -204,20 +204,20 @@ def test_transl_forms_agree():
             TypeError,
             "transl takes a 3-vector p or three numbers",
         ),
-        (lambda: sk.transl([1, 2, 3, 4]), ValueError, r"p must have shape \(3\)"),
+        (lambda: sk.transl([1, 2, 3, 4]), ValueError, r"p must have shape \(3,\)"),
         (
             lambda: sk.homogeneous(np.ones((3, 3))),
             ValueError,
             "R must be a rotation matrix",
         ),
         (lambda: sk.homogeneous(np.diag([1, 1, -1])), ValueError, "determinant \\+1"),
-        (lambda: sk.homogeneous(np.eye(2)), ValueError, r"R must have shape \(3 x 3\)"),
+        (lambda: sk.homogeneous(np.eye(2)), ValueError, r"R must have shape \(3, 3\)"),
         (
             lambda: sk.homogeneous(sp.Matrix([[theta, 0, 0], [0, 1, 0], [0, 0, 1]])),
             ValueError,
             "R must be a rotation matrix",
         ),
-        (lambda: sk.inv(np.eye(3)), ValueError, r"T must have shape \(4 x 4\)"),
+        (lambda: sk.inv(np.eye(3)), ValueError, r"T must have shape \(4, 4\)"),
         (lambda: sk.inv(np.full((4, 4), np.nan)), ValueError, "T must be finite"),
         (
             lambda: sk.inv(np.diag([1.0, 1, 1, 2])),

@@ -247,7 +247,7 @@ def test_a_chain_with_no_links_is_refused():
         (
             lambda: viewer.screw_motion_viewer([0, 1], [0, 0, 0], 0),
             ValueError,
-            r"s must have shape \(3\)",
+            r"s must have shape \(3,\)",
         ),
         (
             lambda: viewer.screw_motion_viewer([0, 0, 1], [0, 0, 0], "x"),

@@ -77,7 +77,7 @@ ROWS = [
         lambda: ik.analytic_ik_all(puma(), np.eye(3)),
         ValueError,
         "T",
-        match=r"T must have shape \(4 x 4\)",
+        match=r"T must have shape \(4, 4\)",
     ),
     row(
         "T wrong batch shape",

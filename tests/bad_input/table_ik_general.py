@@ -78,7 +78,7 @@ ROWS = [
         lambda: ik.general_6r_ik(puma(), np.eye(3)),
         ValueError,
         "T",
-        match=r"T must have shape \(4 x 4\) or \(N, 4 x 4\)",
+        match=r"T must have shape \(4, 4\) or \(N, 4, 4\)",
     ),
     row(
         "general_6r_ik-T-batch-of-batches",
