@@ -84,7 +84,7 @@ for kind in (
     start = time.perf_counter()
     Q = sk.ik.analytic_ik_all(fresh, T)
     first_ours = time.perf_counter() - start
-    assert DecomposedArm.from_chain(chain).case in ("wrist", "parallel")
+    DecomposedArm.from_chain(chain)  # a ValueError if the arm were not decomposable
     ours = int((~np.isnan(Q[..., 0])).sum())
     t_ours = best(lambda: sk.ik.analytic_ik_all(chain, T), 1, REPEAT)  # noqa: B023
     t_theirs = first_theirs = None

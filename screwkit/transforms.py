@@ -71,8 +71,14 @@ def _skew(v):
 def _rotate_vectors(w, angle, x):
     """x (..., 3) turned about the unit direction w (3,) by angle (..., rad): Rodrigues'
     formula on vectors, x c + (w x x) s + w (w . x)(1 - c). No checks."""
-    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
-    return x * c + np.cross(w, x) * s + w * ((x @ w)[..., None] * (1 - c))
+    return _turn_vectors(w, np.cos(angle), np.sin(angle), x)
+
+
+def _turn_vectors(w, c, s, x):
+    """:func:`_rotate_vectors` with the angle's cos c and sin s (...) already known
+    (an angle turning several vectors; -s turns back). No checks."""
+    c, s = c[..., None], s[..., None]
+    return x * c + _cross_last(w, x) * s + w * (_dot_last(x, w)[..., None] * (1 - c))
 
 
 def _skew_exact(v):

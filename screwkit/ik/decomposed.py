@@ -34,7 +34,7 @@ from .._checks import check_chain, check_poses
 from .._compiled import CHUNK, cos_sin
 from ..links import Joint
 from ..tolerances import IK_ACCEPT_TOL, IK_CLIP_TOL, IK_DUPLICATE_TOL, IK_STRUCTURE_TOL
-from ..transforms import _cross_last, _dot_last
+from ..transforms import _cross_last, _dot_last, _turn_vectors
 from ._closed_form import arm_scale, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
@@ -183,20 +183,6 @@ def _motions(w, r, theta):
     E[..., :3, 3] = r - R @ r
     E[..., 3, 3] = 1.0
     return E
-
-
-def _cos_sin(theta):
-    """cos and sin of angles (...), as _turn takes them: (..., 2)."""
-    return np.stack(cos_sin(theta), -1)
-
-
-def _turn(w, cs, v, back=False):
-    """R(w, theta) v by Rodrigues (R(w, theta)^T v if back), for a fixed unit axis w
-    (3,), cs = _cos_sin(theta) (..., 2) and vectors v (..., 3) or (3,): (..., 3).
-    Cheaper than building the matrices, and an angle's cos and sin are taken once."""
-    c, s = cs[..., :1], (-cs[..., 1:] if back else cs[..., 1:])
-    along = _dot_last(v, w)[..., None] * w
-    return along + (v - along) * c + _cross_last(w, v) * s
 
 
 def _inverse(T):
@@ -361,11 +347,11 @@ class DecomposedArm:
         theta, free = theta[rows, slot], free[rows, slot]  # (k, 3), (k,)
         RG = G[rows, :3, :3]
         q1, q2, q3 = -theta[:, 0], theta[:, 1], theta[:, 2]
-        cs1, cs2, cs3 = _cos_sin(q1), _cos_sin(q2), _cos_sin(q3)
+        (c1, c2, c3), (s1, s2, s3) = cos_sin(np.stack([q1, q2, q3]))
 
         def back123(v):  # R3^T R2^T R1^T v
-            v = _turn(w[0], cs1, v, back=True)
-            return _turn(w[2], cs3, _turn(w[1], cs2, v, back=True), back=True)
+            v = _turn_vectors(w[0], c1, -s1, v)
+            return _turn_vectors(w[2], c3, -s3, _turn_vectors(w[1], c2, -s2, v))
 
         y = back123(RG @ w[5])  # R123^T R_G w6, (k, 3)
         z, gamma2 = meeting_points(w[3], w[4], w[5], y)  # (k, 2, 3)
@@ -377,8 +363,8 @@ class DecomposedArm:
         # q6 turns x to R6 x = R5^T R4^T R123^T R_G x
         x = np.cross(w[5], [1.0, 0, 0] if abs(w[5, 0]) < 0.9 else [0, 1.0, 0])
         R6x = back123(RG @ x)[:, None, :]
-        R6x = _turn(w[3], _cos_sin(q4), R6x, back=True)
-        R6x = _turn(w[4], _cos_sin(q5), R6x, back=True)
+        (c4, c5), (s4, s5) = cos_sin(np.stack([q4, q5]))
+        R6x = _turn_vectors(w[4], c5, -s5, _turn_vectors(w[3], c4, -s4, R6x))
         q6 = _angle_about(w[5], x, R6x)
         q123 = np.stack([q1, q2, q3], -1)[:, None, :]
         Q = np.concatenate(
@@ -410,23 +396,23 @@ class DecomposedArm:
         theta, free = theta[rows, slot], free[rows]  # (k, 2), (k,)
         RG, tG = G[rows, :3, :3], G[rows, :3, 3]
         q1, q5 = -theta[:, 0], theta[:, 1]
-        cs1, cs5 = _cos_sin(q1), _cos_sin(q5)
-        a = (_turn(w[0], cs1, u)[:, None, :] @ RG)[:, 0]  # R_G^T R1 u, (k, 3)
-        b = _turn(w[4], cs5, u, back=True)  # R5^T u
+        (c1, c5), (s1, s5) = cos_sin(np.stack([q1, q5]))
+        a = (_turn_vectors(w[0], c1, s1, u)[:, None, :] @ RG)[:, 0]  # R_G^T R1 u
+        b = _turn_vectors(w[4], c5, -s5, u)  # R5^T u
         q6 = _angle_about(w[5], a, b)
         off = _cross_last(a, w[5])
         free6 = np.sqrt(_dot_last(off, off)) <= IK_CLIP_TOL
         # H = E1^-1 G E6^-1 E5^-1 = exp(xi2 q2) exp(xi3 q3) exp(xi4 q4), a turn about u
         # by phi = q2 + q3 + q4 (signed) that takes r4 to g
         x = np.cross(u, [1.0, 0, 0] if abs(u[0]) < 0.9 else [0, 1.0, 0])
-        cs6 = _cos_sin(q6)
-        Hx = _turn(w[5], cs6, _turn(w[4], cs5, x, back=True), back=True)
-        Hx = _turn(w[0], cs1, (RG @ Hx[..., None])[..., 0], back=True)
+        c6, s6 = cos_sin(q6)
+        Hx = _turn_vectors(w[5], c6, -s6, _turn_vectors(w[4], c5, -s5, x))
+        Hx = _turn_vectors(w[0], c1, -s1, (RG @ Hx[..., None])[..., 0])
         phi = _angle_about(u, x, Hx)
-        g = _turn(w[4], cs5, r[3] - r[4], back=True) + r[4]
-        g = _turn(w[5], cs6, g - r[5], back=True) + r[5]
+        g = _turn_vectors(w[4], c5, -s5, r[3] - r[4]) + r[4]
+        g = _turn_vectors(w[5], c6, -s6, g - r[5]) + r[5]
         g = (RG @ g[..., None])[..., 0] + tG
-        g = _turn(w[0], cs1, g - r[0], back=True) + r[0]  # (k, 3)
+        g = _turn_vectors(w[0], c1, -s1, g - r[0]) + r[0]  # (k, 3)
         a34, a32 = _across(u, r[3] - r[2]), _across(u, r[1] - r[2])
         target = _across(u, g - r[1])
         delta2 = _dot_last(target, target)
@@ -436,7 +422,7 @@ class DecomposedArm:
         reach = np.abs(cosine) <= 1 + IK_CLIP_TOL
         beta = np.arccos(np.clip(cosine, -1, 1))
         q3 = theta0 + np.stack([-beta, beta], -1)  # (k, 2), about u
-        elbow = _turn(u, _cos_sin(q3), r[3] - r[2]) + r[2]  # exp(xi3 q3) r4
+        elbow = _turn_vectors(u, *cos_sin(q3), r[3] - r[2]) + r[2]  # exp(xi3 q3) r4
         q2 = _angle_about(u, elbow - r[1], g[:, None, :] - r[1])
         q4 = (phi[:, None] - q2 - q3) * np.sign(w[3] @ u)  # axes 3, 4 along +-u
         q3 = q3 * np.sign(w[2] @ u)
