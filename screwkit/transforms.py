@@ -120,6 +120,12 @@ def _rodrigues(W, s, c1):
     return np.eye(3) + s * W + c1 * (W @ W)
 
 
+def _rotations_about(w, angle):
+    """R(w, angle) (..., 3, 3) about a unit axis w (3,) for angles (...). No checks."""
+    angle = np.asarray(angle)[..., None, None]
+    return _rodrigues(_skew(np.asarray(w, float)), np.sin(angle), 1 - np.cos(angle))
+
+
 def _rodrigues_exact(W, theta):
     """I + sin(theta) W + (1 - cos(theta)) W^2 for a SymPy W = [w] (|w| = 1),
     exactly."""

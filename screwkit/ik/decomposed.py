@@ -34,7 +34,7 @@ from .._checks import check_chain, check_poses
 from .._compiled import CHUNK, cos_sin
 from ..links import Joint
 from ..tolerances import IK_ACCEPT_TOL, IK_CLIP_TOL, IK_DUPLICATE_TOL, IK_STRUCTURE_TOL
-from ..transforms import _cross_last, _dot_last, _turn_vectors
+from ..transforms import _cross_last, _dot_last, _rotations_about, _turn_vectors
 from ._closed_form import arm_scale, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
@@ -168,16 +168,9 @@ def classify(chain, name="chain"):
     return Classification(meet, parallel, label, kind)
 
 
-def _rotations(w, theta):
-    """R(w, theta) for a fixed unit axis w (3,) and angles (...): (..., 3, 3)."""
-    K = np.array([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
-    c, s = np.cos(theta)[..., None, None], np.sin(theta)[..., None, None]
-    return np.eye(3) + s * K + (1 - c) * (K @ K)
-
-
 def _motions(w, r, theta):
     """exp(xi theta) for the axis through r along w: (..., 4, 4)."""
-    R = _rotations(w, theta)
+    R = _rotations_about(w, theta)
     E = np.zeros(theta.shape + (4, 4))
     E[..., :3, :3] = R
     E[..., :3, 3] = r - R @ r

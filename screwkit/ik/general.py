@@ -78,7 +78,7 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _wrap_angle
+from ..transforms import _cross, _rotations_about, _wrap_angle
 
 __all__ = ["GeneralIK", "general_6r_ik"]
 
@@ -493,13 +493,6 @@ _LAST_FORM_SIZE = 64
 # ---- the public function ------------------------------------------------------------
 
 
-def _rotations(w, angle):
-    """Rotations (k, 3, 3) by ``angle`` (k,) about the unit axis w (3,)."""
-    K = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-    s, c = np.sin(angle)[:, None, None], np.cos(angle)[:, None, None]
-    return np.eye(3) + s * K + (1 - c) * (K @ K)
-
-
 def _poe(w, r, home, q):
     """The pose exp([S1] q1) ... exp([S6] q6) M (rotation (k, 3, 3), position (k, 3))
     and the space Jacobian (k, 6, 6), [omega; v] rows, of the axes (w, r)."""
@@ -509,7 +502,7 @@ def _poe(w, r, home, q):
     for i in range(6):
         wi, ri = R @ w[i], R @ r[i] + p
         J[:, :3, i], J[:, 3:, i] = wi, _cross3(ri, wi)
-        Ri = _rotations(w[i], q[:, i])
+        Ri = _rotations_about(w[i], q[:, i])
         p = p + (R @ (r[i] - Ri @ r[i])[..., None])[..., 0]
         R = R @ Ri
     return R @ home[:3, :3], R @ home[:3, 3] + p, J
