@@ -53,7 +53,6 @@ ORDER = [
         "catalogue",
         [
             "limbs",
-            "joints",
             "parallel.legs",
             "parallel.numeric",
             "parallel.search",
@@ -94,11 +93,6 @@ ORDER = [
             "widgets",
             "exercises",
         ],
-    ),
-    # old module paths kept one release: each warns and re-exports its new module
-    (
-        "deprecated aliases",
-        ["subproblems", "spherical_wrist", "ur_ik", "stanford_ik"],
     ),
 ]
 
@@ -338,13 +332,3 @@ def test_the_checker_sees_a_lazy_import(module, source, flagged):
 )
 def test_the_checker_lets_a_downward_import_of_a_folder_pass(module, source):
     assert not upward(module, imports(module, source))
-
-
-def test_the_old_module_path_of_the_limb_builders_still_works_and_warns():
-    import screwkit as sk
-    from screwkit import limbs
-
-    with pytest.deprecated_call(match="use screwkit.limbs"):
-        revolute, spherical = sk.joints.revolute, sk.joints.spherical
-        assert sorted(sk.joints.__all__) == sorted(limbs.__all__)
-    assert revolute is limbs.revolute and spherical is limbs.spherical
