@@ -9,15 +9,14 @@ metres and radians. Screws and twists are ordered [angular; linear].
 import importlib
 
 from . import (
-    acceleration,
     chains,
-    differential_ik,
     ik,
     jacobians,
     lie,
     limbs,
     links,
     mobility_analysis,
+    motion,
     orientation,
     parallel,
     redundancy,
@@ -25,7 +24,6 @@ from . import (
     screws,
     systems,
     tolerances,
-    trajectory,
     transforms,
     urdf,
     workspace,
@@ -77,9 +75,7 @@ def __getattr__(name):
 
 __all__ = [
     # submodules (plotting, viewer, widgets and exercises load on first use)
-    "acceleration",
     "chains",
-    "differential_ik",
     "exercises",
     "ik",
     "jacobians",
@@ -87,6 +83,7 @@ __all__ = [
     "limbs",
     "links",
     "mobility_analysis",
+    "motion",
     "orientation",
     "parallel",
     "plotting",
@@ -95,7 +92,6 @@ __all__ = [
     "screws",
     "systems",
     "tolerances",
-    "trajectory",
     "transforms",
     "urdf",
     "viewer",

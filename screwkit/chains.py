@@ -31,7 +31,7 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _compiled, _numeric, _second_order
+from . import _compiled, _numeric
 from ._checks import (
     ChainType,
     as_float_array,
@@ -61,6 +61,7 @@ from .links import (
     rigid,
     translation,
 )
+from .motion import _second_order
 from .screws import Twist
 from .systems import ScrewSystem
 from .tolerances import length_scale
@@ -1336,7 +1337,7 @@ class Chain(ChainType):
             T = T @ exp_twist(S, qi)
         return T @ self.home()
 
-    # ---- second order: Jacobians in time (issue 33; see screwkit.acceleration) -------
+    # ---- second order: Jacobians in time (see screwkit.motion.acceleration) -------
 
     def _rates(self, q, dq):
         """q and the joint rates dq as float64 of one shape, (n,) or (N, n)."""

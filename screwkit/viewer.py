@@ -430,8 +430,9 @@ def _joint_paths(paths, labels, n):
 def trajectory_viewer(chain, paths, labels=None, times=None, size=(560, 460)):
     """Precomputed joint trajectories of one chain, played in the page: no kernel.
 
-    Python computes the trajectories (a path of poses from :mod:`screwkit.trajectory`
-    through :func:`screwkit.trajectory.follow_path`, or joint paths); the page poses
+    Python computes the trajectories (a path of poses from
+    :mod:`screwkit.motion.trajectory` through
+    :func:`screwkit.motion.trajectory.follow_path`, or joint paths); the page poses
     one arm per trajectory by the product of exponentials, the first solid, the
     others translucent ghosts, each in its own colour (red, green, brown, pink), and
     draws each tool's path as a line in that colour, named at its middle. A play button
@@ -444,7 +445,7 @@ def trajectory_viewer(chain, paths, labels=None, times=None, size=(560, 460)):
     chain : Chain, n >= 1 joints
     paths : array-like (K, n), or a list of up to 4 of them, or a dict {label: array};
         joint values (rad, m) at the K sample times; a
-        :class:`screwkit.trajectory.PathIK` (its ``q``) in place of an array
+        :class:`screwkit.motion.trajectory.PathIK` (its ``q``) in place of an array
     labels : list of str, optional
         Each path's name (default 'path 1', ...; a dict's keys)
     times : array-like, shape (K,), optional

@@ -42,7 +42,12 @@ ORDER = [
     ),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
-    ("Lie algebra", ["lie", "ik._quartic", "ik.subproblems", "_second_order"]),
+    # motion's entry point loads its modules on first use (its LAZY table), so the
+    # chains can compute their second order with motion._second_order
+    (
+        "Lie algebra",
+        ["lie", "ik._quartic", "ik.subproblems", "motion", "motion._second_order"],
+    ),
     ("screws", ["screws", "systems"]),
     # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
     # it; the entry point of screwkit.ik loads only it and the subproblems at the top
@@ -74,9 +79,9 @@ ORDER = [
             "ik.general",
             "ik.decomposed",
             "ik.dispatch",
-            "acceleration",
-            "trajectory",
-            "differential_ik",
+            "motion.acceleration",
+            "motion.trajectory",
+            "motion.differential_ik",
             "workspace",
             "redundancy",
             "mobility_analysis",

@@ -26,17 +26,17 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _second_order
-from ._checks import (
+from .._checks import (
     as_sympy_scalar,
     check_chain,
     describe,
     is_symbolic,
 )
-from ._docstrings import fill
-from .lie import adjoint
-from .links import decimal
-from .transforms import inv
+from .._docstrings import fill
+from ..lie import adjoint
+from ..links import decimal
+from ..transforms import inv
+from . import _second_order
 
 __all__ = [
     "space_jacobian_dot",
