@@ -52,8 +52,23 @@ ORDER = [
     # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
     # it; the entry point of screwkit.ik loads only it and the subproblems at the top
     # (the closed form on first use), so chains can import it; urdf is read by
-    # Chain.from_urdf
-    ("chains", ["links", "urdf", "ik.newton", "ik", "chains"]),
+    # Chain.from_urdf; the computations on a chain (jacobians, motion.acceleration and
+    # the exact and fast kinematics) take it as their first argument and import no
+    # chain: the Chain's methods are these functions
+    (
+        "chains",
+        [
+            "links",
+            "urdf",
+            "ik.newton",
+            "ik",
+            "jacobians",
+            "motion.acceleration",
+            "_exact_kinematics",
+            "_fast_kinematics",
+            "chains",
+        ],
+    ),
     (
         "catalogue",
         [
@@ -71,7 +86,6 @@ ORDER = [
     (
         "algorithms",
         [
-            "jacobians",
             "ik._closed_form",
             "ik.spherical_wrist",
             "ik.ur",
@@ -79,7 +93,6 @@ ORDER = [
             "ik.general",
             "ik.decomposed",
             "ik.dispatch",
-            "motion.acceleration",
             "motion.trajectory",
             "motion.differential_ik",
             "workspace",
@@ -94,6 +107,9 @@ ORDER = [
             "_mechanism_plot",
             "parallel.plotting",
             "plotting",
+            "_viewer_page",
+            "_viewer_mechanisms",
+            "_stepped_figure",
             "viewer",
             "widgets",
             "exercises",
@@ -292,7 +308,7 @@ def test_the_entry_point_imports_only_listed_modules():
     "module, source",
     [
         ("_checks", "def check_chain(value):\n    from .chains import Chain\n"),
-        ("chains", "from .jacobians import geometric_jacobian\n"),
+        ("chains", "from .workspace import sweep\n"),
         ("transforms", "from .screws import axis_coordinates\n"),
         ("screws", "import screwkit.chains\n"),
         ("lie", "from . import lie\n"),  # itself
