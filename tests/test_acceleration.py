@@ -1,14 +1,15 @@
-"""Second-order kinematics (screwkit.acceleration, Chain.*_jacobian_dot/*_hessian):
-against central differences of the Jacobians and of FK (independent of the brackets),
-the Hessian against differences of the Jacobian, exact against float, the bracket
-formula against SymPy's own time derivative, batches against loops, bad input."""
+"""Second-order kinematics (screwkit.motion.acceleration,
+Chain.*_jacobian_dot/*_hessian): against central differences of the Jacobians and of
+FK (independent of the brackets), the Hessian against differences of the Jacobian,
+exact against float, the bracket formula against SymPy's own time derivative, batches
+against loops, bad input."""
 
 import numpy as np
 import pytest
 import sympy as sp
 
 import screwkit as sk
-from screwkit import acceleration
+from screwkit.motion import acceleration
 
 #: central differences with step H: error about H^2 |J'''| + eps / H, near 1e-10
 H = 1e-5

@@ -4,7 +4,6 @@ numeric IK."""
 
 import ast
 import functools
-import importlib
 import subprocess
 import sys
 from pathlib import Path
@@ -441,26 +440,6 @@ def test_numeric_ik_takes_a_numpy_tolerance():
 # ---- the family as a folder: old paths, names, kernels, tolerances -------------------
 
 
-@pytest.mark.parametrize(
-    "old, new",
-    [
-        ("subproblems", "subproblems"),
-        ("spherical_wrist", "spherical_wrist"),
-        ("ur_ik", "ur"),
-        ("stanford_ik", "stanford"),
-    ],
-)
-def test_each_old_module_path_warns_and_gives_the_same_objects(old, new):
-    sys.modules.pop(f"screwkit.{old}", None)  # imported afresh, so that it warns
-    with pytest.warns(
-        DeprecationWarning, match=rf"screwkit\.{old} .*screwkit\.ik\.{new}"
-    ):
-        alias = importlib.import_module(f"screwkit.{old}")
-    module = importlib.import_module(f"screwkit.ik.{new}")
-    assert alias.__all__ == module.__all__ and module.__all__
-    assert all(getattr(alias, name) is getattr(module, name) for name in module.__all__)
-
-
 def test_the_closed_form_loads_on_first_use():
     """Importing screwkit (chains and Chain.numeric_ik included) loads the subproblems
     and Newton, not the dispatcher; its names load when first asked for."""
@@ -488,7 +467,7 @@ def test_every_name_of_sk_ik_is_there():
     assert (
         sk.ik.numeric_ik
         is sk.ik.newton.numeric_ik
-        is sk.Chain.numeric_ik.__globals__["_newton"].numeric_ik
+        is sk.Chain.numeric_ik
     )
     with pytest.raises(AttributeError, match="no_such_name"):
         sk.ik.no_such_name  # noqa: B018

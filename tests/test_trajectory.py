@@ -1,5 +1,5 @@
-"""Trajectories (screwkit.trajectory): time scalings against their closed forms and
-limits, derivatives against differences, screw and Cartesian paths by their
+"""Trajectories (screwkit.motion.trajectory): time scalings against their closed forms
+and limits, derivatives against differences, screw and Cartesian paths by their
 properties (ends, constant twist, straight line), SE(2) against SE(3), slerp, via
 points, a path through the IK, bad input. Modern Robotics and SciPy are compared in
 tests/test_motion_references.py."""
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import screwkit as sk
-from screwkit import trajectory as tr
+from screwkit.motion import trajectory as tr
 
 PROFILES = [tr.cubic, tr.quintic]
 

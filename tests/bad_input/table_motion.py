@@ -1,5 +1,5 @@
-"""Bad input of motion in time (issue 33): screwkit.acceleration, the Chain's
-*_jacobian_dot and *_hessian, screwkit.trajectory and screwkit.differential_ik. One
+"""Bad input of motion in time: screwkit.motion.acceleration, the Chain's *_jacobian_dot
+and *_hessian, screwkit.motion.trajectory and screwkit.motion.differential_ik. One
 row per case (tests/bad_input/rows.py): the error type and the argument its sentence
 names."""
 
@@ -11,9 +11,9 @@ from builders import puma
 from rows import row
 
 import screwkit as sk
-from screwkit import acceleration as acc
-from screwkit import differential_ik as dik
-from screwkit import trajectory as tr
+from screwkit.motion import acceleration as acc
+from screwkit.motion import differential_ik as dik
+from screwkit.motion import trajectory as tr
 
 
 @functools.cache

@@ -147,12 +147,15 @@ def public_functions():
     in ``__all__``, each once (wherever it is defined): {function: dotted name}."""
     found = {}
 
-    def add(function, name):
-        function = function.__func__ if isinstance(function, classmethod) else function
+    def add(function, name, method=False):
+        # a method's first parameter is its instance (or class), whatever its name: a
+        # Chain method that is a function of the chain names it ``chain``
+        if isinstance(function, classmethod):
+            function = function.__func__
         if not inspect.isfunction(function):
             return
-        parameters = inspect.signature(function).parameters
-        if [p for p in parameters if p not in ("self", "cls")]:
+        parameters = list(inspect.signature(function).parameters)
+        if parameters[1 if method else 0 :]:
             found.setdefault(function, name)
 
     for module in public_modules():
@@ -163,7 +166,11 @@ def public_functions():
             if inspect.isclass(item):
                 for key, value in vars(item).items():
                     if not key.startswith("_"):
-                        add(value, f"{item.__module__}.{item.__qualname__}.{key}")
+                        add(
+                            value,
+                            f"{item.__module__}.{item.__qualname__}.{key}",
+                            method=not isinstance(value, staticmethod),
+                        )
             else:
                 add(item, f"{item.__module__}.{name}")
     return found

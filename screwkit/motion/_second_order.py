@@ -1,6 +1,6 @@
 """Second-order kinematics from the joint twists: Lie brackets, no chain needed.
 
-The kernels behind :mod:`screwkit.acceleration` and the Chain methods
+The kernels behind :mod:`screwkit.motion.acceleration` and the Chain methods
 ``space_jacobian_dot`` and friends. Each takes Jacobians that are already computed
 (columns [omega; v], the screw order) and joint rates, float64 arrays with any leading
 batch axes, or SymPy matrices for one exact configuration. Nothing here checks its
@@ -19,7 +19,7 @@ dJb_i/dq_j = [Jb_i, Jb_j] for j > i.
 import numpy as np
 import sympy as sp
 
-from . import transforms
+from .. import transforms
 
 __all__ = []
 

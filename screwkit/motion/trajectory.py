@@ -29,8 +29,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import ik
-from ._checks import (
+from .. import ik
+from .._checks import (
     as_float_array,
     check_chain,
     check_option,
@@ -38,11 +38,11 @@ from ._checks import (
     check_rotation,
     describe,
 )
-from ._docstrings import fill
-from .lie import log_rotation, log_transform
-from .links import Joint
-from .tolerances import NEAR_SINGULAR, SERIES_BELOW, SLERP_LINEAR_BELOW
-from .transforms import _wrap_angle, exp_twist
+from .._docstrings import fill
+from ..lie import log_rotation, log_transform
+from ..links import Joint
+from ..tolerances import NEAR_SINGULAR, SERIES_BELOW, SLERP_LINEAR_BELOW
+from ..transforms import _wrap_angle, exp_twist
 
 __all__ = [
     "TimeScaling",
@@ -301,8 +301,8 @@ def fastest_joint_scaling(profile, q_start, q_end, v_max, a_max):
     """
     if profile not in (cubic, quintic, trapezoidal):
         raise TypeError(
-            "profile must be screwkit.trajectory.cubic, quintic or trapezoidal, got "
-            f"{describe(profile)}"
+            "profile must be screwkit.motion.trajectory.cubic, quintic or "
+            f"trapezoidal, got {describe(profile)}"
         )
     q_start, q_end = _joint_pair(q_start, q_end)
     distance = np.abs(q_end - q_start)
