@@ -152,6 +152,15 @@ def _float_hessian(chain, form, q):
     return _HESSIAN[form](J)
 
 
+def _check_batch(chain, q, kind):
+    """Refuse a batch q (N, n) (a NumPy array; a list is checked by the kernel, once
+    converted) whose ``kind`` of results would pass the memory limit, before its
+    entries are checked or its Jacobians computed."""
+    shape = q.shape if isinstance(q, np.ndarray) else ()
+    count = int(np.prod(shape[:-1])) if len(shape) == 2 else 1
+    _second_order.check_batch(count, chain.n, kind)
+
+
 def _float_rates(chain, q, dq, ddq=None):
     q, dq = _rates(chain, q, dq)
     if ddq is None:
@@ -236,6 +245,7 @@ def _jacobian_dot(chain, form, q, dq):
         Js, T, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
         return _at(_DOT[form](_exact_jacobian(Js, T, form), dq), values)
+    _check_batch(chain, q, "Jacobian derivatives")
     return _float_dot(chain, form, q, dq)
 
 
@@ -245,6 +255,7 @@ def _hessian(chain, form, q):
     if _exact(q):
         Js, T, values = _exact_parts(chain, q)
         return _at(_HESSIAN[form](_exact_jacobian(Js, T, form)), values)
+    _check_batch(chain, q, "Hessians")
     return _float_hessian(chain, form, q)
 
 
@@ -258,6 +269,7 @@ def _end_acceleration(chain, form, q, dq, ddq):
         ddq = sp.Matrix(_exact_vector(chain, ddq, "ddq"))
         J = _exact_jacobian(Js, T, form)
         return _at(J * ddq + _DOT[form](J, dq) * sp.Matrix(dq), values)
+    _check_batch(chain, q, "accelerations")
     q, dq, ddq = _float_rates(chain, q, dq, ddq)
     J = getattr(chain, f"{form}_jacobian")(q)
     dJ = _float_dot(chain, form, q, dq)
