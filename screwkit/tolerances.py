@@ -255,6 +255,19 @@ IK_GENERAL_NULL_TOL = 1e-8
 #: complex root or a spurious one stays far above.
 IK_GENERAL_ACCEPT_TOL = 1e-10
 
+#: A real root of the eigenvalue problem is accounted for when a solution's angle of
+#: the eigenvalue joint is within this of it (rad): a simple root is computed to
+#: 1e-12, a double one to about sqrt(eps); a root no solution accounts for makes the
+#: answer say that it may be incomplete.
+IK_GENERAL_EXPLAINED_TOL = 1e-4
+
+#: A root's candidate is consistent (a solution must then account for the root) when
+#: the 8 products (1, c1, s1) x (1, c2, s2) it gives for joints 1 and 2 are those of
+#: two angles to this (c^2 + s^2 = 1, products of the factors): a genuine root's are
+#: to 1e-10, a spurious root's (special geometry: extra factors of the determinant,
+#: e.g. the PUMA's q = 0 and pi) are off by 0.5 or more.
+IK_GENERAL_CONSISTENT_TOL = 1e-4
+
 #: Two solutions are one when no joint angle differs by more than this (rad, modulo a
 #: turn): polished solutions agree to 1e-12, distinct ones of a generic pose differ by
 #: far more.

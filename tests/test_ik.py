@@ -221,6 +221,20 @@ def test_wrist_singularity_rule():
         assert puma560_config(s.q) == s.config  # the tie rule labels both
 
 
+def test_a_singular_answer_says_so_in_its_reason():
+    # issue 43: the docstring promises `reason` for a continuum, but a named
+    # structure flagged it only per solution; a regular pose keeps reason None
+    q = np.array([0.2, 0.4, -1.0, 0.7, 0.0, 0.3])  # q5 = 0: q4 + q6 fixed
+    solutions = puma560_ik(puma().fk(q))
+    assert "continuum" in solutions.reason and "wrist" in solutions.reason
+    assert analytic_ik(puma(), puma().fk(q)).reason == solutions.reason
+    q3 = np.arctan2(-D4, A3)  # the elbow stretched: solutions coincide in pairs
+    stretched = puma560_ik(puma().fk(np.array([0.3, 0.5, q3, 0.4, 0.7, 0.2])))
+    assert "elbow" in stretched.reason and "coincide" in stretched.reason
+    regular = puma560_ik(puma().fk(np.array([0.2, 0.4, -1.0, 0.7, 0.5, 0.3])))
+    assert regular.reason is None and not any(s.singular for s in regular)
+
+
 def test_elbow_singularity():
     """a3 sin q3 + d4 cos q3 = 0: the forearm in line with the upper arm (stretched or
     folded)."""
