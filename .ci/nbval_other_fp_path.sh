@@ -10,6 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 PY=${PYTHON:-.venv/bin/python}
 
+"$PY" -m pytest -q -p no:cacheprovider .ci/test_fp_path.py  # the rule, on this machine too
 disable=$("$PY" .ci/fp_path.py)
 if [ -z "$disable" ]; then
   echo "nbval_other_fp_path: NumPy dispatches no SIMD set on this CPU; one path only, skipped"
@@ -18,7 +19,6 @@ fi
 export NPY_DISABLE_CPU_FEATURES="$disable"
 echo "nbval_other_fp_path: NPY_DISABLE_CPU_FEATURES=\"$disable\""
 # the variable really changes NumPy's dispatch, in this Python and in a notebook kernel
-"$PY" -m pytest -q -p no:cacheprovider .ci/test_fp_path.py
 "$PY" .ci/fp_path.py --check
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
