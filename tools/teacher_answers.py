@@ -3,13 +3,16 @@
 The course edition of the book (``make book EDITION=course``) has no solutions and no
 key of the assessed exercises (book/assessed.yml); this script (``make answers``)
 writes them for the teacher, chapter by chapter in the order of _toc.yml, to
-``_build/answers/answers.md`` and ``answers.html`` (MathJax from the built book, when
-``_build/html`` is there, renders the formulas).
+``_build/answers/answers.md`` and ``answers.html``. The HTML file carries MathJax inside
+it (the self-contained TeX-to-SVG build, every TeX extension, from the same
+sphinx-mathjax-offline package the book serves MathJax from), so its formulas show
+wherever the file is copied or mailed, with no network and no book beside it.
 
 Usage: python tools/teacher_answers.py [OUTPUT_DIR]   (default _build/answers)
 """
 
 import html
+import importlib.util
 import os
 import sys
 
@@ -95,13 +98,10 @@ def answers_html(markdown, mathjax):
         "math_block",
         lambda r, s, i, *a: "<div>\\[" + html.escape(s[i].content) + "\\]</div>\n",
     )
-    config = '{"loader": {"load": ["input/tex", "output/chtml"]}}'
-    script = (
-        f"<script>window.MathJax = {config}</script>\n"
-        f'<script defer src="{mathjax}"></script>\n'
-        if mathjax
-        else ""
-    )
+    # MathJax's combined build: TeX in, SVG out (glyphs as paths, no font files), all
+    # extensions (nothing is fetched later); inline, so the file stands alone. Its
+    # defaults read \( \) and \[ \], as the render rules above write.
+    script = f"<script>\n{mathjax}\n</script>\n" if mathjax else ""
     return (
         '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
         '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
@@ -112,15 +112,31 @@ def answers_html(markdown, mathjax):
     )
 
 
+def mathjax_script():
+    """The text of MathJax's tex-svg-full.js from the sphinx-mathjax-offline package
+    (requirements.txt), checked to hold no end of a script element."""
+    spec = importlib.util.find_spec("sphinx-mathjax-offline")
+    if spec is None or not spec.submodule_search_locations:
+        raise SystemExit(
+            "the package sphinx-mathjax-offline is missing: "
+            "run `pip install -r requirements.txt`"
+        )
+    folder = list(spec.submodule_search_locations)[0]
+    path = os.path.join(folder, "static", "mathjax", "tex-svg-full.js")
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    if "</script" in text.lower():
+        raise SystemExit(f"{path} contains '</script': it cannot be inlined")
+    return text
+
+
 def main(folder):
     os.makedirs(folder, exist_ok=True)
     markdown = answers_markdown()
     with open(os.path.join(folder, "answers.md"), "w", encoding="utf-8") as f:
         f.write(markdown)
-    mathjax = os.path.join(ROOT, "_build", "html", "_static", "mathjax", "startup.js")
-    relative = os.path.relpath(mathjax, folder) if os.path.exists(mathjax) else None
     with open(os.path.join(folder, "answers.html"), "w", encoding="utf-8") as f:
-        f.write(answers_html(markdown, relative))
+        f.write(answers_html(markdown, mathjax_script()))
     print(f"The teacher's answers: {folder}/answers.md and answers.html")
 
 
