@@ -56,6 +56,14 @@ _UNITS = {
     "N": (1.0, (1, 1, -2, 0)),
     "Nm": (1.0, (1, 2, -2, 0)),
     "W": (1.0, (1, 2, -3, 0)),
+    "J": (1.0, (1, 2, -2, 0)),
+    "Hz": (1.0, (0, 0, -1, 0)),
+    "ms": (1e-3, (0, 0, 1, 0)),
+    "min": (60.0, (0, 0, 1, 0)),
+    "kN": (1e3, (1, 1, -2, 0)),
+    "kW": (1e3, (1, 2, -3, 0)),
+    "mrad": (1e-3, (0, 0, 0, 1)),
+    "km": (1e3, (0, 1, 0, 0)),
 }
 _UNIT_NAMES = {"degree": "deg", "degrees": "deg", "radian": "rad", "radians": "rad"}
 # what a dimension is called in a message ("expected a torque (N m), found a force (N)")
@@ -191,31 +199,84 @@ class _Parser:
 
     def items(self):
         """Items separated by commas, semicolons or whitespace (as NumPy prints arrays);
-        brackets group and are flattened."""
-        values = self.item()
+        brackets and parentheses around several items group them and are flattened.
+        Each item is a pair (value in SI, its _Unit or None). A unit written after the
+        last item only applies to all of them (``2000, 0, 0 mm``)."""
+        pairs = self.item()
         while True:
             if self.peek()[1] in (",", ";"):
                 self.take()
             elif not (self.space_before() and self.starts_item()):
-                return values
-            values += self.item()
+                break
+            pairs += self.item()
+        if len(pairs) > 1 and pairs[-1][1] is not None:
+            if all(unit is None for _, unit in pairs[:-1]):
+                unit = pairs[-1][1]
+                pairs = [(value * unit.factor, unit) for value, _ in pairs[:-1]] + [
+                    pairs[-1]
+                ]
+        return pairs
+
+    def is_group(self):
+        """A parenthesis that holds a list: a comma or semicolon inside it, outside
+        any inner parenthesis (``(2, 0, 0)``; ``(1 + 2)/3`` and ``(atan2(1, 2))`` are
+        expressions). Decided by looking ahead, so nothing is parsed twice."""
+        depth = 0
+        for _, token in self.tokens[self.at :]:
+            if token in ("(", "["):
+                depth += 1
+            elif token in (")", "]"):
+                depth -= 1
+                if depth == 0:
+                    return False
+            elif token in (",", ";") and depth == 1:
+                return True
+        return False
+
+    def group(self):
+        """The pairs of a bracketed list, ``[1, 2]`` or ``(2, 0, 0)``."""
+        closing = "]" if self.take()[1] == "[" else ")"
+        pairs = self.items()
+        self.take(closing)
+        return pairs
 
     def item(self):
-        if self.peek()[1] == "[":
-            self.take("[")
-            values = self.items()
-            self.take("]")
-            return values
+        if self.peek()[1] == "[" or self.peek()[1] == "(" and self.is_group():
+            pairs = self.group()
+            unit = self.unit()  # "(2, 0, 0) m": the unit of every entry
+            if unit is not None:
+                if any(u is not None for _, u in pairs):
+                    raise ValueError("a unit is written twice for one number")
+                pairs = [(value * unit.factor, unit) for value, _ in pairs]
+            return pairs
         value = self.expression()
-        return [value * self.unit()]
+        unit = self.unit()
+        return [(value if unit is None else value * unit.factor, unit)]
+
+    def unit_starts(self):
+        """A unit at the current token: a unit word, ``/s`` or ``1/s`` after a space."""
+        if self.unit_next() or self.peek()[1] == "/" and self.unit_after():
+            return True
+        kind, token = self.peek()
+        return (
+            kind == "number"
+            and token == "1"
+            and self.space_before()
+            and self.at + 2 < len(self.tokens)
+            and self.tokens[self.at + 1][1] == "/"
+            and not self.spaced[self.at + 1]
+            and self.tokens[self.at + 2][0] == "name"
+            and _is_unit(self.tokens[self.at + 2][1])
+        )
 
     def unit(self):
-        """The unit written after a value (``N m``, ``N*m``, ``m/s^2``, ``/s``), as a
-        :class:`_Unit`, or None where none is written."""
-        if not (self.unit_next() or self.peek()[1] == "/" and self.unit_after()):
-            self.units.append(None)
-            return 1.0
+        """The unit written after a value (``N m``, ``N*m``, ``m/s^2``, ``/s``,
+        ``1/s``), as a :class:`_Unit`, or None where none is written."""
+        if not self.unit_starts():
+            return None
         factor, dimension, text = 1.0, (0, 0, 0, 0), ""
+        if self.peek()[0] == "number":
+            self.take()  # the 1 of "1/s"
         if self.peek()[1] == "/":
             text = "1"
         while True:
@@ -246,8 +307,7 @@ class _Parser:
                 text += f"^{power}"
             factor *= f ** (sign * power)
             dimension = tuple(a + sign * power * b for a, b in zip(dimension, d))
-        self.units.append(_Unit(factor, dimension, text))
-        return factor
+        return _Unit(factor, dimension, text)
 
     def unit_next(self):
         kind, word = self.peek()
@@ -270,11 +330,18 @@ class _Parser:
         return value
 
     def term(self):
+        start = self.at
         value = self.signed()
+        literal = self.at == start + 1 and self.tokens[start][0] == "number"
         while True:
             kind, token = self.peek()
             if token in ("*", "/") and self.unit_after():
                 return value  # a unit follows: "10 N*m", "200/s"
+            if literal and token in ("pi", "π"):
+                self.take()
+                value = value * math.pi  # "0.6667 pi", a number times pi
+                literal = False
+                continue
             if token in ("*", "/"):
                 self.take()
                 right = self.signed()
@@ -336,20 +403,20 @@ def _parse(text):
     if not isinstance(text, str):
         raise TypeError(f"the answer text must be a string, got {describe(text)}")
     parser = _Parser(text)
-    parser.units = []
     if not parser.tokens:
         raise ValueError("the answer is empty")
     try:
-        values = parser.items()
+        pairs = parser.items()
     except RecursionError:
         raise ValueError("it is nested too deeply") from None
     except (ZeroDivisionError, OverflowError, TypeError) as error:
         raise ValueError(f"cannot evaluate it ({error})") from None
     if parser.peek()[0] is not None:
         raise ValueError(f"unexpected {parser.peek()[1]!r}")
+    values = [value for value, _ in pairs]
     if any(isinstance(v, complex) or not math.isfinite(v) for v in values):
         raise ValueError("it is not a finite real number")
-    return [float(v) for v in values], parser.units
+    return [float(v) for v in values], [unit for _, unit in pairs]
 
 
 def parse_answer(text):
@@ -462,6 +529,15 @@ def _range(bounds, key_unit, where):
     }
 
 
+def _per_text(per, key_unit, where):
+    """A key's ``per = "N m"``, checked: a unit other than the key's."""
+    if per == "":
+        return ""
+    if not isinstance(per, str) or _unit_of_key(per, where) == key_unit:
+        raise ValueError(f"per of {where} must be a unit other than the key's")
+    return per
+
+
 def answer_key(chapter, number):
     """The checked answer of an exercise, as a dict of floats, ready for the page.
 
@@ -512,6 +588,7 @@ def answer_key(chapter, number):
         "forms": forms,
         "alternatives": [_numbers(a)[0] for a in entry.get("alternatives", [])],
         "range": None if bounds is None else _range(bounds, key_unit, where),
+        "per": _per_text(entry.get("per", ""), key_unit, where),
     }
 
 
@@ -665,15 +742,36 @@ def _in_range(x, key):
     )
 
 
+def _per_unit(key):
+    """The unit an answer "per unit of ``key['per']``" is in (a force per N m of
+    torque: 1/m), or None where the key has no ``per``."""
+    if not key.get("per"):
+        return None
+    where = f"{key['chapter']} exercise {key['number']}"
+    key_unit = _unit_of_key(key["unit"], where)
+    per = _unit_of_key(key["per"], where)
+    return _Unit(
+        key_unit.factor / per.factor,
+        tuple(a - b for a, b in zip(key_unit.dimension, per.dimension)),
+        f"{key['unit']}/({key['per']})",
+    )
+
+
 def _to_key_unit(x, units, key):
-    """The values in the key's unit, or the sentence saying which unit does not fit."""
+    """The values in the key's unit, or the sentence saying which unit does not fit.
+    A key with ``per`` (the statement's bound is one of that unit) also takes the
+    answer per unit of it: 4.05 N per N m of torque is 4.05 1/m."""
     key_unit = _unit_of_key(key["unit"], f"{key['chapter']} exercise {key['number']}")
+    per = _per_unit(key)
     converted = []
     for value, unit in zip(x, units):
         if unit is None:
             converted.append(value)
             continue
         factor = _convert(unit, key_unit)
+        if factor is None and per is not None:
+            factor = _convert(unit, per)
+            factor = None if factor is None else factor * per.factor / key_unit.factor
         if factor is None:
             expected = _quantity(key_unit.dimension)
             expected += f" ({key['unit']})" if key["unit"] else " (no unit)"
@@ -690,6 +788,16 @@ def _decimal_comma(text):
     return " Use a decimal point: " + re.sub(r"(\d),(\d)", r"\1.\2", text) + "."
 
 
+def _in_radians(x, units, key):
+    """A box in degrees answered in radians without a unit (``pi/2``, ``1.5708``)
+    is right when the radians are: no slip gives the radian measure of the answer."""
+    nonzero = any(abs(v) > key["tolerance"] for v in key["values"])
+    if key["unit"] != "deg" or not nonzero or any(u is not None for u in units):
+        return False
+    degrees = [math.degrees(v) for v in x]
+    return _in_range(degrees, key) and _matches(degrees, key)
+
+
 def _verdict(x, units, key, text=None):
     chapter, number = key["chapter"], key["number"]
     x = _to_key_unit(x, units, key)
@@ -699,6 +807,9 @@ def _verdict(x, units, key, text=None):
     n = len(key["values"])
     if len(x) == n and _in_range(x, key) and _matches(x, key):
         return Verdict(True, f"Within {tolerance} of the answer.", chapter, number)
+    if len(x) == n and _in_radians(x, units, key):
+        message = f"Within {tolerance} of the answer (read as radians)."
+        return Verdict(True, message, chapter, number)
     if len(x) != n:
         what = "one number" if n == 1 else f"{n} numbers"
         reason = f"expected {what}, got {len(x)}." + _decimal_comma(text)
@@ -745,12 +856,22 @@ _script_sent = False
 
 
 def exercises_script():
-    """The JavaScript of the answer boxes (package data ``static/exercises.js``)."""
-    return (
+    """The JavaScript of the answer boxes (package data ``static/exercises.js``), with
+    this module's table of units written into it (one table for both checkers)."""
+    script = (
         resources.files("screwkit")
         .joinpath("static/exercises.js")
         .read_text(encoding="utf-8")
     )
+    tables = {
+        "units": {name: [f, list(d)] for name, (f, d) in _UNITS.items()},
+        "names": _UNIT_NAMES,
+        "quantities": {",".join(map(str, d)): q for d, q in _QUANTITIES.items()},
+    }
+    slot = "/*SCREWKIT-UNIT-TABLES*/ {units: {}, names: {}, quantities: {}}"
+    if slot not in script:
+        raise RuntimeError("static/exercises.js has lost its slot for the unit tables")
+    return script.replace(slot, json.dumps(tables, ensure_ascii=False))
 
 
 class AnswerBox:
@@ -799,6 +920,8 @@ class AnswerBox:
         if self.key["range"] is not None:
             key["range"] = self.key["range"]  # only where set: other boxes unchanged
             bounds = ", " + html.escape(self.key["range"]["text"])
+        if self.key.get("per"):
+            key["per"] = self.key["per"]
         payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
         ident = self.id
         script = f"<script>\n{exercises_script()}</script>\n" if self.script else ""
