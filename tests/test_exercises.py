@@ -266,7 +266,7 @@ def test_odd_python_values_never_crash(fake, answer):
 
 
 UNITS_OF_KEYS = ("", "rad", "deg", "m", "mm", "m/s", "rad/s", "N", "N m", "W")
-UNITS_OF_KEYS += ("m/rad", "m^2", "1/s")
+UNITS_OF_KEYS += ("m/rad", "m^2", "1/s", "s", "m/s^2")
 
 
 def test_parser_reads_units_and_their_combinations():
