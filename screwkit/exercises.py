@@ -25,19 +25,32 @@ import html
 import itertools
 import json
 import math
+import os
 import re
 import tomllib
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
+from pathlib import Path
 
 import numpy as np
 import sympy as sp
 
+from . import trajectory
 from ._checks import describe
+from .screws import Screw, Twist, Wrench
 from .tolerances import ZERO_TOL
+from .transforms import screw_motion
 
-__all__ = ["Verdict", "AnswerBox", "check", "answer_box", "answer_key", "parse_answer"]
+__all__ = [
+    "Verdict",
+    "AnswerBox",
+    "check",
+    "answer_box",
+    "answer_key",
+    "parse_answer",
+    "variant",
+]
 
 FORMS = ("modulo 2pi", "either sign", "any order")
 
@@ -479,6 +492,20 @@ def _unit_of_key(text, where):
 # ---- answer keys -------------------------------------------------------------------
 
 
+def _teacher_keys():
+    """The folder of the teacher's keys of the assessed exercises, or None: the
+    environment variable SCREWKIT_TEACHER_KEYS, else book/teacher_keys of the checkout
+    this screwkit runs from (the self-study book is built there). An installed
+    screwkit (a wheel) has neither, and no key of an assessed exercise."""
+    folder = os.environ.get("SCREWKIT_TEACHER_KEYS")
+    if folder:
+        return Path(folder)
+    root = Path(__file__).resolve().parents[1]
+    if (root / "book" / "assessed.yml").is_file():
+        return root / "book" / "teacher_keys"
+    return None
+
+
 @cache
 def _key_file(chapter):
     if not isinstance(chapter, str) or not re.fullmatch(r"[a-z0-9_]+", chapter):
@@ -492,7 +519,61 @@ def _key_file(chapter):
             f"chapter must be one with an answer key, got {chapter!r} "
             f"(no screwkit/answers/{chapter}.toml)"
         )
-    return tomllib.loads(path.read_text(encoding="utf-8")).get("exercise", {})
+    exercises = tomllib.loads(path.read_text(encoding="utf-8")).get("exercise", {})
+    folder = _teacher_keys()
+    teacher = folder / f"{chapter}.toml" if folder is not None else None
+    if teacher is not None and teacher.is_file():
+        keys = tomllib.loads(teacher.read_text(encoding="utf-8")).get("exercise", {})
+        for number, entry in exercises.items():
+            if entry.get("assessed") and number in keys:
+                exercises[number] = keys[number] | {"assessed": True}
+    return exercises
+
+
+def is_assessed(chapter, number):
+    """Whether the teacher marks an exercise (book/assessed.yml): its key is not in
+    the package, and :func:`check` and :func:`answer_box` say so.
+
+    Parameters
+    ----------
+    chapter, number : str, int
+        The chapter's notebook name and the exercise's number.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> is_assessed("rigid_motions", 10), is_assessed("rigid_motions", 2)
+    (True, False)
+    """
+    return bool(_entry(chapter, number).get("assessed", False))
+
+
+def _entry(chapter, number):
+    exercises = _key_file(chapter)
+    if isinstance(number, bool) or not isinstance(number, (int, np.integer)):
+        raise TypeError(
+            f"number must be an exercise number (int), got {describe(number)}"
+        )
+    if str(number) not in exercises:
+        raise ValueError(
+            f"number must be a self-checking exercise of {chapter!r} "
+            f"(one of {sorted(int(k) for k in exercises)}), got {number}"
+        )
+    return exercises[str(number)]
+
+
+class AssessedError(LookupError):
+    """The key of an assessed exercise, asked of a screwkit that has none."""
+
+
+def _assessed_sentence(chapter, number):
+    return (
+        f"{chapter} exercise {number} is assessed: your teacher marks it. Hand your "
+        f"answer to your teacher; this copy of screwkit has no key for it."
+    )
 
 
 def _numbers(answer):
@@ -538,13 +619,15 @@ def _per_text(per, key_unit, where):
     return per
 
 
-def answer_key(chapter, number):
+def answer_key(chapter, number, seed=0):
     """The checked answer of an exercise, as a dict of floats, ready for the page.
 
     Parameters
     ----------
     chapter, number : str, int
         The chapter's notebook name (e.g. ``"puma_ik"``) and the exercise's number.
+    seed : int, optional
+        A parametrised exercise's seed (see :func:`variant`); 0 for the others.
 
     Returns
     -------
@@ -553,21 +636,38 @@ def answer_key(chapter, number):
         key's expression text), ``unit`` (its text: ``"rad"``, ``"N m"``, ``"1/s"``;
         ``""`` for a pure number or a vector of mixed units), ``tolerance``, ``rtol``,
         ``hint``, ``forms``, ``alternatives`` (lists of float lists) and ``range``
-        (None, or ``low``, ``high`` in ``unit`` and the ``text`` the box shows).
+        (None, or ``low``, ``high`` in ``unit`` and the ``text`` the box shows),
+        ``per`` (a unit: the answer per one of it is accepted too, or ``""``) and
+        ``assessed`` (the teacher marks it).
+
+    Raises
+    ------
+    AssessedError
+        For an assessed exercise (book/assessed.yml) where this screwkit has no key:
+        an installed package holds none (see :func:`is_assessed`).
     """
-    exercises = _key_file(chapter)
-    if isinstance(number, bool) or not isinstance(number, (int, np.integer)):
-        raise TypeError(
-            f"number must be an exercise number (int), got {describe(number)}"
-        )
-    if str(number) not in exercises:
-        raise ValueError(
-            f"number must be a self-checking exercise of {chapter!r} "
-            f"(one of {sorted(int(k) for k in exercises)}), got {number}"
-        )
-    entry = exercises[str(number)]
+    entry = _entry(chapter, number)
+    if "answer" not in entry and entry.get("assessed"):
+        raise AssessedError(_assessed_sentence(chapter, number))
     where = f"{chapter} exercise {number}"
-    values, shape = _numbers(entry["answer"])
+    seed = _seed(seed)
+    if entry.get("parametrised"):
+        if (chapter, int(number)) not in _PARAMETRISED:
+            raise ValueError(f"{where} is parametrised but has no generator")
+        numbers, _, answer = _PARAMETRISED[chapter, int(number)](_draw(seed))
+        # rounded far inside any tolerance, so that a zero prints as 0 in the page
+        values = [round(float(v), 12) + 0.0 for v in np.ravel(answer)]
+        shape = list(np.shape(answer))
+        exact = f"computed by screwkit for seed {seed}: " + ", ".join(
+            f"{name} = {value:g}" for name, (value, _) in numbers.items()
+        )
+        entry = entry | {"answer": exact}
+    elif seed != 0:
+        raise ValueError(
+            f"seed must be 0 for {where}, which is not parametrised, got {seed}"
+        )
+    else:
+        values, shape = _numbers(entry["answer"])
     forms = list(entry.get("forms", []))
     unknown = [form for form in forms if form not in FORMS]
     if unknown:
@@ -589,7 +689,174 @@ def answer_key(chapter, number):
         "alternatives": [_numbers(a)[0] for a in entry.get("alternatives", [])],
         "range": None if bounds is None else _range(bounds, key_unit, where),
         "per": _per_text(entry.get("per", ""), key_unit, where),
+        "assessed": bool(entry.get("assessed", False)),
     }
+
+
+# ---- parametrised exercises -------------------------------------------------------
+
+#: (chapter, number) -> a generator: given a random generator (None for seed 0, the
+#: chapter's own numbers), it returns the statement's numbers ({name: (value, unit)}),
+#: the statement with them, and the key, computed by screwkit (never stored).
+_PARAMETRISED = {}
+
+
+def _parametrised(chapter, number):
+    def register(generator):
+        _PARAMETRISED[chapter, number] = generator
+        return generator
+
+    return register
+
+
+def _seed(seed):
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise ValueError(f"seed must be a whole number >= 0, got {describe(seed)}")
+    return int(seed)
+
+
+def _draw(seed):
+    """None for seed 0 (the numbers the chapter prints), else NumPy's generator."""
+    return None if seed == 0 else np.random.default_rng([42, seed])
+
+
+def _pick(rng, choices, default):
+    return default if rng is None else choices[int(rng.integers(len(choices)))]
+
+
+@_parametrised("rigid_motions", 2)
+def _turn_about_a_vertical_line(rng):
+    a = _pick(rng, [-2, -1, 1, 2, 3], 1)
+    b = _pick(rng, [-2, -1, 0, 1, 2], 0)
+    angle = _pick(rng, [90, 180, 270], 180)
+    origin = screw_motion([0, 0, 1], [a, b, 0], 0, math.radians(angle))[:3, 3]
+    numbers = {"a": (a, "m"), "b": (b, "m"), "angle": (angle, "deg")}
+    statement = (
+        f"A revolute joint turns about the vertical line through ({a}, {b}, 0) m. "
+        f"Where does the origin go when the joint turns by {angle} deg?"
+    )
+    return numbers, statement, [float(v) for v in origin]
+
+
+@_parametrised("screws", 6)
+def _power_of_a_force_on_a_spinning_body(rng):
+    force = _pick(rng, [5, 10, 20, 40], 10)
+    arm = _pick(rng, [0.25, 0.5, 0.75, 1.5], 0.5)
+    spin = _pick(rng, [1, 2, 3, 4], 2)
+    line = Screw.from_axis([0, 1, 0], [arm, 0, 0], 0).vector
+    power = Twist.from_vector([0, 0, spin, 0, 0, 0]) @ Wrench.from_vector(force * line)
+    numbers = {"F": (force, "N"), "x": (arm, "m"), "omega": (spin, "rad/s")}
+    statement = (
+        f"A force of {force} N along y acts through the point ({arm}, 0, 0) m on a "
+        f"body that spins at {spin} rad/s about the z axis through the origin. What "
+        f"power (W) does the force deliver?"
+    )
+    return numbers, statement, float(power)
+
+
+@_parametrised("motion_in_time", 3)
+def _peak_speed_of_a_quintic(rng):
+    duration = _pick(rng, [1.0, 1.5, 2.5, 3.0, 4.0, 5.0], 2.0)
+    numbers = {"T": (duration, "s")}
+    statement = (
+        f"The quintic time scaling of duration T = {duration:g} s: what is its "
+        f"largest ds/dt (1/s)?"
+    )
+    return numbers, statement, float(trajectory.quintic(duration).peak_velocity)
+
+
+@dataclass(frozen=True)
+class Variant:
+    """One student's version of a parametrised exercise (see :func:`variant`).
+
+    Parameters
+    ----------
+    chapter : str
+        The chapter's notebook name.
+    number : int
+        The exercise's number.
+    seed : int
+        The seed; 0 gives the numbers the chapter prints.
+    numbers : dict
+        The statement's numbers, ``{name: (value, unit)}``.
+    statement : str
+        The statement with these numbers, in plain text.
+    key : dict
+        The key, as :func:`answer_key` gives it, computed by screwkit.
+    """
+
+    chapter: str
+    number: int
+    seed: int
+    numbers: dict
+    statement: str
+    key: dict
+
+    def __repr__(self):
+        shown = ", ".join(
+            f"{name} = {value:g}" + (f" {unit}" if unit else "")
+            for name, (value, unit) in self.numbers.items()
+        )
+        return f"{self.chapter} exercise {self.number}, seed {self.seed}: {shown}"
+
+
+def variant(chapter, number, seed=0):
+    """A parametrised exercise's numbers and key for one seed.
+
+    The numbers are drawn from the seed (seed 0 gives those the chapter prints) and
+    the key is computed by screwkit from them, never stored: a teacher gives each
+    student a seed (``make answers SEEDS=class.csv`` writes each student's sheet and
+    the teacher's keys), and ``check(chapter, number, answer, seed=seed)`` and
+    ``answer_box(chapter, number, seed=seed)`` check that student's answer.
+
+    Parameters
+    ----------
+    chapter, number : str, int
+        The chapter's notebook name and the exercise's number.
+    seed : int, optional
+        A whole number >= 0.
+
+    Returns
+    -------
+    Variant
+        ``numbers`` ({name: (value, unit)}), ``statement`` (plain text) and ``key``.
+
+    Examples
+    --------
+    >>> variant("motion_in_time", 3, seed=0).numbers
+    {'T': (2.0, 's')}
+    >>> variant("motion_in_time", 3, seed=0).key["values"]
+    [0.9375]
+    """
+    seed = _seed(seed)
+    if not _entry(chapter, number).get("parametrised"):
+        raise ValueError(
+            f"number must be a parametrised exercise of {chapter!r} (one of "
+            f"{parametrised(chapter)}), got {number}"
+        )
+    numbers, statement, _ = _PARAMETRISED[chapter, int(number)](_draw(seed))
+    key = answer_key(chapter, number, seed)
+    return Variant(chapter, int(number), seed, numbers, statement, key)
+
+
+def parametrised(chapter=None):
+    """The parametrised exercises: of one chapter, a sorted list of numbers; of all
+    (no chapter), a sorted list of (chapter, number).
+
+    Parameters
+    ----------
+    chapter : str, optional
+        A chapter's notebook name.
+
+    Returns
+    -------
+    list
+    """
+    if chapter is None:
+        return sorted(_PARAMETRISED)
+    return sorted(
+        int(n) for n, e in _key_file(chapter).items() if e.get("parametrised")
+    )
 
 
 # ---- checking ----------------------------------------------------------------------
@@ -819,7 +1086,7 @@ def _verdict(x, units, key, text=None):
     return Verdict(False, reason[0].upper() + reason[1:] + hint, chapter, number)
 
 
-def check(chapter, number, answer):
+def check(chapter, number, answer, seed=0):
     """Check an answer to a self-checking exercise.
 
     Parameters
@@ -830,18 +1097,25 @@ def check(chapter, number, answer):
         A number, a SymPy expression, a text (``"pi/3"``, ``"60 deg"``,
         ``"0.1, 0.2"``), or a list or array (flattened row-major). Numbers without
         a unit are in the exercise's unit.
+    seed : int, optional
+        A parametrised exercise's seed (:func:`variant`); 0 for the others.
 
     Returns
     -------
     Verdict
         ``.correct`` and ``.message`` (why a wrong answer is wrong: units, sign,
         length, order, else the exercise's hint). Text that cannot be read gives a
-        wrong verdict saying so, never an exception.
+        wrong verdict saying so, never an exception. An assessed exercise whose key
+        this screwkit does not have (an installed package) gives a verdict saying
+        that the teacher marks it.
 
     >>> check("rigid_motions", 2, "2, 0, 0").correct
     True
     """
-    key = answer_key(chapter, number)
+    try:
+        key = answer_key(chapter, number, seed)
+    except AssessedError as error:
+        return Verdict(False, str(error), chapter, number)
     try:
         values, units = _as_values(answer)
     except (TypeError, ValueError) as error:
@@ -943,7 +1217,34 @@ class AnswerBox:
         )
 
 
-def answer_box(chapter, number, script=None):
+class AssessedBox:
+    """The box of an assessed exercise where screwkit has no key: it says that the
+    teacher marks the answer, and has no key and no Check button.
+
+    Parameters
+    ----------
+    chapter, number : str, int
+        The chapter's notebook name and the exercise's number.
+    """
+
+    def __init__(self, chapter, number):
+        self.chapter, self.number = chapter, int(number)
+
+    def __repr__(self):
+        return (
+            f"Exercise {self.number} of {self.chapter} is assessed: hand your answer "
+            f"to your teacher, who marks it."
+        )
+
+    def _repr_html_(self):
+        return (
+            f'<div class="sk-assessed-box" style="font:14px sans-serif;margin:0.5em 0">'
+            f"<p><strong>Exercise {self.number} is assessed:</strong> hand your answer "
+            f"to your teacher; this edition of the book does not check it.</p></div>"
+        )
+
+
+def answer_box(chapter, number, script=None, seed=0):
     """A self-checking answer box for the page.
 
     Parameters
@@ -952,16 +1253,23 @@ def answer_box(chapter, number, script=None):
     script : bool, optional
         Inline ``exercises.js`` with this box; by default only the first box of the
         session carries it (once per page).
+    seed : int, optional
+        A parametrised exercise's seed (:func:`variant`); the page shows seed 0.
 
     Returns
     -------
-    AnswerBox
-        Displayed as an HTML field, a Check button and a verdict announced to
+    AnswerBox or AssessedBox
+        An assessed exercise whose key this screwkit does not have gives an
+        :class:`AssessedBox`, which says that the teacher marks it. Otherwise
+        displayed as an HTML field, a Check button and a verdict announced to
         screen readers; the check runs in the browser with the key's tolerance,
         forms and hint.
     """
     global _script_sent
-    key = answer_key(chapter, number)
+    try:
+        key = answer_key(chapter, number, seed)
+    except AssessedError:
+        return AssessedBox(chapter, number)
     if script is None:
         script, _script_sent = not _script_sent, True
     return AnswerBox(key, bool(script))
