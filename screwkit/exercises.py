@@ -437,10 +437,14 @@ def parse_answer(text):
 
     Numbers are separated by commas, semicolons or whitespace (``"[0.5 -1.2 0.]"``, as
     NumPy prints an array; ``"1 - 2"`` with spaces on both sides is a subtraction).
-    A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"2 pi"`` two
-    numbers. A unit follows its number: rad, deg (or °), m, cm, mm, s, kg, N, W and
-    their products, quotients and integer powers (``N m``, ``N*m``, ``Nm``, ``N·m``,
-    ``m/s``, ``rad/s``, ``m/rad``, ``m^2``, ``200/s``).
+    A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"pi/6 pi/6"``
+    two numbers; a number followed by ``pi`` is a product (``"0.6667 pi"``). A unit
+    follows its number: rad, deg (or °), mrad, m, cm, mm, km, s, ms, min, kg, N, kN,
+    J, W, kW, Hz and their products, quotients and integer powers (``N m``, ``N*m``,
+    ``Nm``, ``N·m``, ``m/s``, ``rad/s``, ``m/rad``, ``m^2``, ``200/s``, ``200 1/s``).
+    Brackets or parentheses around a list group it (``(2, 0, 0) m``: the unit after
+    them is every entry's), and a unit after the last number of a list where no other
+    has one is every number's (``2000, 0, 0 mm``).
 
     Parameters
     ----------
@@ -464,7 +468,7 @@ def parse_answer(text):
 
     Examples
     --------
-    >>> parse_answer("pi/2, 90 deg")[0]
+    >>> parse_answer("pi/2 rad, 90 deg")[0]
     [1.5707963267948966, 1.5707963267948966]
     >>> parse_answer("-5 N m")
     ([-5.0], ['torque'])
