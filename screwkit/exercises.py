@@ -12,6 +12,16 @@ is the notebook's stem, e.g. ``puma_ik``)::
     forms = ["modulo 2pi"]             # optional: "modulo 2pi", "either sign",
                                        # "any order"
     alternatives = ["-pi/2"]           # optional: other accepted answers
+    per = "N m"                        # optional: the answer per unit of this is
+                                       # accepted too (a force per N m of torque)
+
+A parametrised exercise has ``parametrised = true`` instead of ``answer``: its
+numbers come from a seed and its key is computed by screwkit (:func:`variant`; seed 0
+is the chapter's statement). An assessed exercise (book/assessed.yml) has only
+``assessed = true``: its key is the teacher's, in book/teacher_keys/CHAPTER.toml
+outside the package, read from a checkout of the course (the self-study book is built
+there) or from the folder SCREWKIT_TEACHER_KEYS names; an installed screwkit has none,
+and :func:`check` and :func:`answer_box` say that the teacher marks it.
 
 ``check(chapter, number, answer)`` returns a :class:`Verdict` (right or wrong, and
 why); ``answer_box(chapter, number)`` returns a field and a Check button for the
