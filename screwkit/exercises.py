@@ -648,9 +648,11 @@ def answer_key(chapter, number, seed=0):
     dict
         ``values`` (list of float, row-major, in ``unit``), ``shape``, ``exact`` (the
         key's expression text), ``unit`` (its text: ``"rad"``, ``"N m"``, ``"1/s"``;
-        ``""`` for a pure number or a vector of mixed units), ``tolerance``, ``rtol``,
-        ``hint``, ``forms``, ``alternatives`` (lists of float lists) and ``range``
-        (None, or ``low``, ``high`` in ``unit`` and the ``text`` the box shows),
+        ``""`` for a pure number or a vector of mixed units), ``dimension`` (its
+        exponents of kg, m, s and rad) and ``quantity`` (its name, ``"torque"``),
+        ``tolerance``, ``rtol``, ``hint``, ``forms``, ``alternatives`` (lists of
+        float lists) and ``range`` (None, or ``low``, ``high`` in ``unit`` and the
+        ``text`` the box shows),
         ``per`` (a unit: the answer per one of it is accepted too, or ``""``) and
         ``assessed`` (the teacher marks it).
 
@@ -696,6 +698,8 @@ def answer_key(chapter, number, seed=0):
         "shape": shape,
         "exact": entry["answer"],
         "unit": unit,
+        "dimension": list(key_unit.dimension),
+        "quantity": _QUANTITIES.get(key_unit.dimension, "quantity"),
         "tolerance": float(entry["tolerance"]),
         "rtol": float(entry.get("rtol", 0.0)),
         "hint": entry.get("hint", ""),
