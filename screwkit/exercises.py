@@ -5,7 +5,8 @@ is the notebook's stem, e.g. ``puma_ik``)::
 
     [exercise.4]
     answer = "atan2(0.4318, 0.0203)"   # a SymPy expression, or a list of them
-    unit = "rad"                       # "rad", "deg", "m", "mm", "m/s", "" ...
+    unit = "rad"                       # "rad", "deg", "m", "mm", "m/s", "" ...,
+                                       # or one per number: ["rad/s", "m/s"]
     tolerance = 1e-3                   # absolute, in the answer's unit
     rtol = 0.0                         # optional, relative
     hint = "The elbow angle is measured from the forearm's line."
@@ -653,8 +654,9 @@ def answer_key(chapter, number, seed=0):
         ``tolerance``, ``rtol``, ``hint``, ``forms``, ``alternatives`` (lists of
         float lists) and ``range`` (None, or ``low``, ``high`` in ``unit`` and the
         ``text`` the box shows),
-        ``per`` (a unit: the answer per one of it is accepted too, or ``""``) and
-        ``assessed`` (the teacher marks it).
+        ``per`` (a unit: the answer per one of it is accepted too, or ``""``),
+        ``assessed`` (the teacher marks it) and, for a vector of mixed units only,
+        ``units`` (one per number; ``unit`` is then ``""``).
 
     Raises
     ------
@@ -688,10 +690,20 @@ def answer_key(chapter, number, seed=0):
     unknown = [form for form in forms if form not in FORMS]
     if unknown:
         raise ValueError(f"forms of {where} must be among {FORMS}, got {unknown}")
-    unit = entry.get("unit", "")
+    unit, units = entry.get("unit", ""), None
+    if isinstance(unit, list):  # a vector of mixed units: a twist in rad/s and m/s
+        if len(unit) != len(values):
+            raise ValueError(
+                f"unit of {where} must be one unit or one per number "
+                f"({len(values)}), got {len(unit)}"
+            )
+        units = [str(u) for u in unit]
+        for u in units:
+            _unit_of_key(u, where)
+        unit = ""
     key_unit = _unit_of_key(unit, where)
     bounds = entry.get("range")
-    return {
+    key = {
         "chapter": chapter,
         "number": int(number),
         "values": values,
@@ -709,6 +721,9 @@ def answer_key(chapter, number, seed=0):
         "per": _per_text(entry.get("per", ""), key_unit, where),
         "assessed": bool(entry.get("assessed", False)),
     }
+    if units is not None:
+        key["units"] = units  # only where set: other boxes unchanged
+    return key
 
 
 # ---- parametrised exercises -------------------------------------------------------
@@ -1046,31 +1061,42 @@ def _to_key_unit(x, units, key):
     """The values in the key's unit, or the sentence saying which unit does not fit.
     A key with ``per`` (the statement's bound is one of that unit) also takes the
     answer per unit of it: 4.05 N per N m of torque is 4.05 1/m."""
-    key_unit = _unit_of_key(key["unit"], f"{key['chapter']} exercise {key['number']}")
+    where = f"{key['chapter']} exercise {key['number']}"
+    texts = key.get("units") or [key["unit"]] * len(x)
+    if len(texts) != len(x):
+        return list(x)  # the wrong count is the answer's fault, said next
     per = _per_unit(key)
     converted = []
-    for value, unit in zip(x, units):
+    for value, unit, text in zip(x, units, texts):
         if unit is None:
             converted.append(value)
             continue
+        key_unit = _unit_of_key(text, where)
         factor = _convert(unit, key_unit)
         if factor is None and per is not None:
             factor = _convert(unit, per)
             factor = None if factor is None else factor * per.factor / key_unit.factor
         if factor is None:
             expected = _quantity(key_unit.dimension)
-            expected += f" ({key['unit']})" if key["unit"] else " (no unit)"
+            expected += f" ({text})" if text else " (no unit)"
             found = f"{_quantity(unit.dimension)} ({unit.text})"
             return f"Expected {expected}, found {found}."
         converted.append(value / unit.factor * factor)
     return converted
 
 
-def _decimal_comma(text):
-    """A hint for "4,05" (read as two numbers), else ""."""
+def _decimal_comma(text, n):
+    """A hint for "4,05" (read as two numbers), else "": only where the text with
+    decimal points has the ``n`` numbers the key asks for."""
     if not isinstance(text, str) or not re.search(r"\d,\d", text):
         return ""
-    return " Use a decimal point: " + re.sub(r"(\d),(\d)", r"\1.\2", text) + "."
+    fixed = re.sub(r"(\d),(\d)", r"\1.\2", text)
+    try:
+        if len(_parse(fixed)[0]) != n:
+            return ""
+    except ValueError:
+        return ""
+    return " Use a decimal point: " + fixed + "."
 
 
 def _in_radians(x, units, key):
@@ -1097,7 +1123,7 @@ def _verdict(x, units, key, text=None):
         return Verdict(True, message, chapter, number)
     if len(x) != n:
         what = "one number" if n == 1 else f"{n} numbers"
-        reason = f"expected {what}, got {len(x)}." + _decimal_comma(text)
+        reason = f"expected {what}, got {len(x)}." + _decimal_comma(text, n)
     else:
         reason = _diagnose(x, key) or f"not within {tolerance} of the answer."
     hint = f" Hint: {key['hint']}" if key["hint"] else ""
@@ -1214,6 +1240,9 @@ class AnswerBox:
             bounds = ", " + html.escape(self.key["range"]["text"])
         if self.key.get("per"):
             key["per"] = self.key["per"]
+        if self.key.get("units"):
+            key["units"] = self.key["units"]
+            unit = html.escape(", ".join(self.key["units"]))
         payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
         ident = self.id
         script = f"<script>\n{exercises_script()}</script>\n" if self.script else ""

@@ -368,10 +368,19 @@
     return null;
   }
 
-  function decimalComma(text) {
+  // a hint for "4,05" (read as two numbers): only where the text with decimal
+  // points has the n numbers the key asks for
+  function decimalComma(text, n) {
     if (!/\d,\d/.test(text)) return "";
-    return " Use a decimal point: " + text.replace(/(\d),(\d)/g, "$1.$2") + ".";
+    const fixed = text.replace(/(\d),(\d)/g, "$1.$2");
+    try {
+      if (parse(fixed).values.length !== n) return "";
+    } catch (error) {
+      return "";
+    }
+    return " Use a decimal point: " + fixed + ".";
   }
+
 
   function formatG(v) {
     // Python's "{:g}": six significant digits, no trailing zeros
@@ -401,21 +410,24 @@
       per = { factor: target.factor / of.factor,
               dimension: target.dimension.map((v, i) => v - of.dimension[i]) };
     }
+    // a vector of mixed units has one unit per number (a twist: rad/s and m/s)
+    const texts = key.units || parsed.values.map(() => key.unit);
     const x = [];
     for (let i = 0; i < parsed.values.length; i++) {
       const unit = parsed.units[i];
-      if (unit === null) {
+      if (unit === null || texts.length !== parsed.values.length) {
         x.push(parsed.values[i]);
         continue;
       }
-      let factor = convert(unit, target);
+      const own = keyUnit(texts[i]);
+      let factor = convert(unit, own);
       if (factor === null && per !== null) {
         factor = convert(unit, per);
-        if (factor !== null) factor *= per.factor / target.factor;
+        if (factor !== null) factor *= per.factor / own.factor;
       }
       if (factor === null) {
-        const expected = quantity(target.dimension) +
-          (key.unit ? " (" + key.unit + ")" : " (no unit)");
+        const expected = quantity(own.dimension) +
+          (texts[i] ? " (" + texts[i] + ")" : " (no unit)");
         const found = quantity(unit.dimension) + " (" + unit.text + ")";
         return { correct: false, message: "Expected " + expected + ", found " +
                  found + "." };
@@ -441,7 +453,7 @@
     let reason;
     if (x.length !== n) {
       const what = n === 1 ? "one number" : n + " numbers";
-      reason = "expected " + what + ", got " + x.length + "." + decimalComma(String(text));
+      reason = "expected " + what + ", got " + x.length + "." + decimalComma(String(text), n);
     } else {
       reason = diagnose(x, key) || "not within " + tolerance + " of the answer.";
     }

@@ -92,11 +92,24 @@ def generated_forms(chapter, number):
         values_scaled = ", ".join(number_text(v * factor) for v in values)
         forms += [f"{values_scaled} {scaled}", f"({values_scaled}) {scaled}"]
         forms += [", ".join(f"{number_text(v * factor)} {scaled}" for v in values)]
+    if key.get("units"):  # a vector of mixed units: each number with its own unit
+        forms += [
+            ", ".join(f"{number_text(v)} {u}" for v, u in zip(values, key["units"]))
+        ]
+        forms += [
+            " , ".join(
+                f"{number_text(v * SCALED[u][1])} {SCALED[u][0]}"
+                for v, u in zip(values, key["units"])
+            )
+        ]
     return forms
 
 
 def test_every_key_unit_has_a_scaled_unit():
-    units = {exercises.answer_key(c, n)["unit"] for c, n in all_keys()}
+    units = set()
+    for chapter, number in all_keys():
+        key = exercises.answer_key(chapter, number)
+        units |= {key["unit"], *key.get("units", [])}
     assert units - {""} <= set(SCALED)
 
 
