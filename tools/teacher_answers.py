@@ -70,7 +70,10 @@ def key_text(chapter, number):
     if number in exercises.parametrised(chapter):
         key["exact"] = "parametrised (sk.exercises.variant): seed 0, " + key["exact"]
     lines = [f"- answer: `{key['exact']}` = {key['values']} (shape {key['shape']})"]
-    lines.append(f"- unit: {key['unit'] or '(none)'}")
+    if key.get("units"):
+        lines.append(f"- units: {', '.join(key['units'])}")
+    else:
+        lines.append(f"- unit: {key['unit'] or '(none)'} ({key['quantity']})")
     lines.append(f"- tolerance: {key['tolerance']} (relative {key.get('rtol', 0)})")
     for name in ("forms", "alternatives", "hint"):
         if key.get(name):
