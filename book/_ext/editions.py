@@ -15,9 +15,9 @@ The chapters write their exercises with sphinx-exercise's directives
   same treatment (an assessed box's plain text no longer says how to check it), and
   the pages have no launch buttons (Binder, Colab, a hub), which would open the
   repository's notebooks with their solutions, and no button to the repository (nor
-  its issues, a page's source), which holds the solutions and the teacher's keys. The notebooks' stored
-  outputs are the same for both editions; the course edition reuses the self-study
-  build's execution cache.
+  its issues, a page's source), which holds the solutions and the teacher's keys.
+  The notebooks' stored outputs are the same for both editions; the course edition
+  reuses the self-study build's execution cache.
 """
 
 import json
