@@ -21,9 +21,9 @@ offered for download):
 
 And, with no build (``--package`` runs only these), over what a student installs:
 
-* the installed package holds no key of an assessed exercise: the files setuptools
-  packages (pyproject.toml's packages and package-data) have no ``answer`` of an
-  assessed exercise, none of its keys' answer lines or values, and no teacher's file;
+* the installed package holds no key of an assessed exercise: the files of the wheel
+  pip builds (pyproject.toml's packages and package-data) have no ``answer`` of an
+  assessed exercise, none of its keys' answer lines, and no teacher's file;
 * the live path: with only those files on its path, a fresh Python's
   ``sk.exercises.check`` of an assessed exercise's right answer says that the teacher
   marks it, and its ``answer_box`` (HTML and plain text) carries no key and no way to
@@ -34,10 +34,12 @@ import html
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
 import tomllib
+import zipfile
 from pathlib import Path
 
 import yaml
@@ -104,6 +106,36 @@ def package_files(root=ROOT):
                     text = path.read_text(encoding="utf-8", errors="replace")
                     out[path.relative_to(root).as_posix()] = text
     return out
+
+
+def wheel_files(root=ROOT):
+    """Relative path -> text of every file of the wheel pip builds from ``root`` (a
+    copy of its pyproject.toml, README.md and screwkit/, so that the checkout gets no
+    build folder): what ``pip install`` puts in a student's site-packages."""
+    with tempfile.TemporaryDirectory() as work:
+        source = Path(work, "source")
+        source.mkdir()
+        for name in ("pyproject.toml", "README.md"):
+            shutil.copy(Path(root, name), source / name)
+        shutil.copytree(
+            Path(root, "screwkit"),
+            source / "screwkit",
+            ignore=shutil.ignore_patterns("__pycache__"),
+        )
+        subprocess.run(
+            [sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-build-isolation"]
+            + ["--quiet", "--wheel-dir", str(Path(work, "dist")), str(source)],
+            check=True,
+            capture_output=True,
+            timeout=600,
+        )
+        (wheel,) = Path(work, "dist").glob("*.whl")
+        with zipfile.ZipFile(wheel) as archive:
+            return {
+                name: archive.read(name).decode("utf-8", errors="replace")
+                for name in archive.namelist()
+                if ".dist-info/" not in name and not name.endswith("/")
+            }
 
 
 def teacher_keys(folder=ROOT / "book" / "teacher_keys"):
@@ -216,9 +248,9 @@ def live_problems(files, trials, control):
 
 
 def check_package(root=ROOT):
-    """Problems of what a student installs: the package's files, the live path."""
+    """Problems of what a student installs: the wheel's files, the live path."""
     marked, keys = assessed(), teacher_keys(Path(root) / "book" / "teacher_keys")
-    files = package_files(root)
+    files = wheel_files(root)
     problems = package_leaks(files, marked, keys)
     trials = []
     for chapter, number in sorted(marked):

@@ -317,6 +317,17 @@ def test_the_assessed_keys_are_outside_the_package():
         assert stubs == {n for c, n in marked if c == chapter}
 
 
+def test_the_package_files_are_the_wheel_files():
+    # the tests below read the package's files from the source tree; the check reads
+    # the wheel pip builds: the two are the same files with the same text
+    wheel, source = checker.wheel_files(), checker.package_files()
+    assert set(wheel) == set(source)
+    assert all(wheel[name] == source[name] for name in source if name.endswith(".toml"))
+    assert (
+        checker.package_leaks(wheel, editions.assessed(), checker.teacher_keys()) == []
+    )
+
+
 def test_the_package_check_tells_a_leak_from_a_non_leak():
     marked, keys = editions.assessed(), checker.teacher_keys()
     files = checker.package_files()
