@@ -315,6 +315,13 @@ URDF_AND_EXERCISES = [
         "number",
     ),
     row("parse_answer-int", lambda: exercises.parse_answer(3), TypeError, "text"),
+    row("variant-seed", lambda: exercises.variant("screws", 6, -1), ValueError, "seed"),
+    row(
+        "variant-number",
+        lambda: exercises.variant("screws", 4, 1),
+        ValueError,
+        "number",
+    ),
 ]
 
 IK_ENGINES = [
