@@ -47,7 +47,7 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
-from . import trajectory
+from .motion import trajectory
 from ._checks import describe
 from .screws import Screw, Twist, Wrench
 from .tolerances import ZERO_TOL
