@@ -14,6 +14,7 @@ import warnings
 from . import (
     acceleration,
     chains,
+    contact,
     differential_ik,
     ik,
     jacobians,
@@ -26,6 +27,7 @@ from . import (
     redundancy,
     robots,
     screws,
+    statics,
     systems,
     tolerances,
     trajectory,
@@ -117,6 +119,7 @@ __all__ = [
     # submodules (plotting, viewer, widgets and exercises load on first use)
     "acceleration",
     "chains",
+    "contact",
     "differential_ik",
     "exercises",
     "ik",
@@ -131,6 +134,7 @@ __all__ = [
     "redundancy",
     "robots",
     "screws",
+    "statics",
     "systems",
     "tolerances",
     "trajectory",

@@ -81,6 +81,8 @@ ORDER = [
             "workspace",
             "redundancy",
             "mobility_analysis",
+            "statics",
+            "contact",
         ],
     ),
     (
