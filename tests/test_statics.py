@@ -9,7 +9,7 @@ import functools
 
 import numpy as np
 import pytest
-from builders import puma, rpr, stewart, ur5e
+from builders import delta, puma, rpr, stewart, ur5e
 
 import screwkit as sk
 from screwkit import statics as st
@@ -310,9 +310,11 @@ def test_a_matrix_with_complex_eigenvalues_is_not_a_stiffness():
 
 
 def fd_transmission(pm, T, leg):
-    """|cos| of the angle between leg i (A_i -> C_i) and the velocity of C_i when only
-    rho_i changes, by the forward kinematics."""
-    rho = pm.ik(T)
+    """|cos| of the angle between leg i's force line (A_i -> C_i for a prismatic leg,
+    the distal link elbow -> C_i for a crank) and the velocity of C_i when only rho_i
+    changes, by the forward kinematics."""
+    solution = pm.ik(T, passive=True)
+    rho = solution.rho
     step = np.zeros(pm.m)
     step[leg] = H
     Tp = pm.fk(rho + step, guess=T).T
@@ -320,17 +322,20 @@ def fd_transmission(pm, T, leg):
     b = pm.platform_points[leg]
     velocity = (Tp[:3, :3] @ b + Tp[:3, 3] - Tm[:3, :3] @ b - Tm[:3, 3]) / (2 * H)
     C = T[:3, :3] @ b + T[:3, 3]
-    u = C - pm.base_points[leg]
+    start = solution.passive["elbow"][leg] if "elbow" in solution.passive else None
+    u = C - (pm.base_points[leg] if start is None else start)
     return abs(u @ velocity) / (np.linalg.norm(u) * np.linalg.norm(velocity))
 
 
-@pytest.mark.parametrize("build", [rpr, stewart])
+@pytest.mark.parametrize("build", [rpr, stewart, delta])
 def test_transmission_index_is_the_pressure_angle_by_fk(build):
     pm = build()
     home = pm.home()
     poses = [home]
     if pm.planar:
         poses.append(home @ sk.homogeneous(sk.rotz(0.2), [0.05, -0.04, 0.0]))
+    elif pm.motion == "translational":
+        poses.append(sk.transl(0.04, -0.03, 0.02) @ home)
     else:
         poses.append(home @ sk.homogeneous(sk.roty(0.1), [0.03, 0.02, 0.05]))
     for T in poses:
