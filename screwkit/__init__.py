@@ -14,7 +14,6 @@ import warnings
 from . import (
     acceleration,
     chains,
-    contact,
     differential_ik,
     ik,
     jacobians,
@@ -70,8 +69,9 @@ __version__ = "0.1.0"
 
 # Drawing, widgets and the in-page viewer load matplotlib and ipywidgets: imported on
 # first use (sk.plotting, sk.widgets, sk.viewer); sk.exercises, the display of
-# self-checks, too.
-_LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises")
+# self-checks, too; and sk.contact, whose linear programs load scipy.optimize (about
+# half of screwkit's own import time).
+_LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises", "contact")
 
 #: Module paths kept for one release, {old name: new module}: each use warns.
 #: sk.joints was the limb builders' first name (joints also name a chain's joint kinds);
@@ -116,7 +116,7 @@ class _MovedModule(types.ModuleType):
 sys.modules[f"{__name__}.mobility"] = _MovedModule("mobility", mobility_analysis)
 
 __all__ = [
-    # submodules (plotting, viewer, widgets and exercises load on first use)
+    # submodules (plotting, viewer, widgets, exercises and contact load on first use)
     "acceleration",
     "chains",
     "contact",
