@@ -22,6 +22,7 @@ from . import (
     redundancy,
     robots,
     screws,
+    statics,
     systems,
     tolerances,
     transforms,
@@ -63,8 +64,9 @@ __version__ = "0.1.0"
 
 # Drawing, widgets and the in-page viewer load matplotlib and ipywidgets: imported on
 # first use (sk.plotting, sk.widgets, sk.viewer); sk.exercises, the display of
-# self-checks, too.
-_LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises")
+# self-checks, too; and sk.contact, whose linear programs load scipy.optimize (about
+# half of screwkit's own import time).
+_LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises", "contact")
 
 
 def __getattr__(name):
@@ -74,8 +76,9 @@ def __getattr__(name):
 
 
 __all__ = [
-    # submodules (plotting, viewer, widgets and exercises load on first use)
+    # submodules (plotting, viewer, widgets, exercises and contact load on first use)
     "chains",
+    "contact",
     "exercises",
     "ik",
     "jacobians",
@@ -90,6 +93,7 @@ __all__ = [
     "redundancy",
     "robots",
     "screws",
+    "statics",
     "systems",
     "tolerances",
     "transforms",

@@ -98,6 +98,8 @@ ORDER = [
             "workspace",
             "redundancy",
             "mobility_analysis",
+            "statics",
+            "contact",
         ],
     ),
     (

@@ -7,6 +7,7 @@ from . import (
     later_chapters,
     motion_in_time,
     parallel_kinematics,
+    statics,
 )
 from .registry import REFERENCES, all_keys, key, value
 
@@ -19,5 +20,6 @@ __all__ = [
     "later_chapters",
     "motion_in_time",
     "parallel_kinematics",
+    "statics",
     "value",
 ]
