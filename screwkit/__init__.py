@@ -19,6 +19,7 @@ from . import (
     jacobians,
     lie,
     limbs,
+    lines,
     links,
     mobility_analysis,
     orientation,
@@ -35,6 +36,7 @@ from . import (
 )
 from .chains import Chain, Convention, Joint, Link, textbook
 from .lie import ad, adjoint, log_rotation, log_transform, vee
+from .lines import Line
 from .mobility_analysis import Mobility, grubler_kutzbach, mobility
 from .orientation import (
     euler_from_rotation,
@@ -123,6 +125,7 @@ __all__ = [
     "jacobians",
     "lie",
     "limbs",
+    "lines",
     "links",
     "mobility_analysis",
     "orientation",
@@ -151,7 +154,8 @@ __all__ = [
     "log_rotation",
     "log_transform",
     "vee",
-    # screws and mobility
+    # screws, lines and mobility
+    "Line",
     "Mobility",
     "Screw",
     "ScrewSystem",
