@@ -14,6 +14,7 @@ from . import (
     jacobians,
     lie,
     limbs,
+    lines,
     links,
     mobility_analysis,
     motion,
@@ -31,6 +32,7 @@ from . import (
 )
 from .chains import Chain, Convention, Joint, Link, textbook
 from .lie import ad, adjoint, log_rotation, log_transform, vee
+from .lines import Line
 from .mobility_analysis import Mobility, grubler_kutzbach, mobility
 from .orientation import (
     euler_from_rotation,
@@ -84,6 +86,7 @@ __all__ = [
     "jacobians",
     "lie",
     "limbs",
+    "lines",
     "links",
     "mobility_analysis",
     "motion",
@@ -113,7 +116,8 @@ __all__ = [
     "log_rotation",
     "log_transform",
     "vee",
-    # screws and mobility
+    # screws, lines and mobility
+    "Line",
     "Mobility",
     "Screw",
     "ScrewSystem",

@@ -108,6 +108,29 @@ LIMIT_MARGIN = 1e-9
 FD_STEP = 1e-6
 
 
+# ---- lines and screw systems ---------------------------------------------------------
+
+#: Relative. A float line's coordinates (w; m) must satisfy |w . m| <= KLEIN_TOL |w| |m|
+#: (the cosine of the angle between w and m): lines typed to 6 or 7 digits pass, a
+#: screw of pitch h != 0 (w . m = h |w|^2) is refused; the excess is then removed.
+KLEIN_TOL = 1e-6
+
+#: Unitless. Two float lines are parallel when the sine of the angle between their
+#: unit directions, |u_a x u_b|, is below this: round-off of a few 1e-16 per operation
+#: is far below, a genuine angle of a micro-radian far above.
+LINE_ANGLE_TOL = 1e-9
+
+#: Relative. The rank of a set of float lines, and the zero tests of the quadratic form
+#: w . m on their span, after every direction is made unit and every moment divided by
+#: the lines' size (so the test is the same in m and mm): as RANK_TOL for screws.
+LINE_RANK_TOL = 1e-9
+
+#: Relative. Two principal pitches of a float screw system are equal, and a direction
+#: part is singular, below this fraction of the system's size (the largest of its
+#: lengths: moments over unit directions and pitches); the same in m and mm.
+PITCH_TOL = 1e-9
+
+
 def length_scale(*lengths):
     """The size of an instance, for length tolerances used as ``LENGTH_TOL * scale``.
 

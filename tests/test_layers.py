@@ -48,7 +48,9 @@ ORDER = [
         "Lie algebra",
         ["lie", "ik._quartic", "ik.subproblems", "motion", "motion._second_order"],
     ),
-    ("screws", ["screws", "systems"]),
+    # lines reads screw systems (a ScrewSystem of lines); _system_geometry is the
+    # kernel of ScrewSystem's principal screws and classification
+    ("screws", ["screws", "_system_geometry", "systems", "_line_geometry", "lines"]),
     # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
     # it; the entry point of screwkit.ik loads only it and the subproblems at the top
     # (the closed form on first use), so chains can import it; urdf is read by
@@ -107,6 +109,7 @@ ORDER = [
         [
             "_sliders",
             "_mechanism_plot",
+            "_line_plots",
             "parallel.plotting",
             "plotting",
             "_viewer_page",
