@@ -512,8 +512,8 @@ def transmission_index(pm, T, mode=None):
         eta_i = |g_i . v(C_i)| / (|g_i| |v(C_i)|) = |cos alpha_i|,
 
     alpha_i the pressure angle between the force and the velocity of the point it acts
-    on, v(C_i) = v_i + omega_i x C_i (Wang, Liu, Wang and Chen, Mech. Mach. Theory 45,
-    2010: their output transmission index for a force). 1 transmits best; 0 at a
+    on, v(C_i) = v_i + omega_i x C_i (Wang, Wu and Liu, Mech. Mach. Theory 45, 2010:
+    their output transmission index for a force). 1 transmits best; 0 at a
     direct singularity, where the actuators cannot hold the platform. It is
     independent of the frame and the unit of length.
 

@@ -360,3 +360,43 @@ def test_transmission_index_is_unit_free():
     np.testing.assert_allclose(
         st.transmission_index(big, T_mm), st.transmission_index(pm, T), atol=1e-9
     )
+
+
+def test_transmission_index_vanishes_at_a_direct_singularity():
+    """Across a direct singularity of the 3-RPR det J_p changes sign; bisected to it,
+    the smallest index falls to 0 (the actuators cannot hold the platform)."""
+    pm = rpr()
+
+    def pose(y):  # along the line x = 0.5 m, at the home orientation
+        T = pm.home().copy()
+        T[0, 3], T[1, 3] = 0.5, y
+        return T
+
+    def det(y):
+        return np.linalg.det(pm.jacobian(pose(y))[:, [2, 3, 4]])
+
+    ys = np.linspace(-0.6, 1.4, 201)
+    values = np.array([det(y) for y in ys])
+    assert np.all(np.isfinite(values))
+    k = int(np.flatnonzero(np.diff(np.sign(values)))[0])
+    low, high = ys[k], ys[k + 1]
+    for _ in range(60):
+        middle = (low + high) / 2
+        if np.sign(det(middle)) == np.sign(values[k]):
+            low = middle
+        else:
+            high = middle
+    assert st.transmission_index(pm, pose(low)).min() < 1e-6
+    assert st.transmission_index(pm, pose(low + 0.05)).min() > 1e-2
+    assert st.transmission_index(pm, pose(low - 0.05)).min() > 1e-2
+
+
+def test_gravity_torques_take_a_batch():
+    chain = puma()
+    Q = configurations(chain, 4, seed=12)
+    masses = [(3, 4.0, [0.1, 0.0, 0.0]), (6, 2.0, [0.0, 0.0, 0.1])]
+    batch = st.gravity_torques(chain, Q, masses)
+    for q, tau in zip(Q, batch):
+        np.testing.assert_allclose(
+            tau, st.gravity_torques(chain, q, masses), atol=1e-12
+        )
