@@ -90,8 +90,8 @@ def check_result_bytes(nbytes, what, advice):
     its size and what to do (``advice``)."""
     if nbytes > MAX_RESULT_BYTES:
         raise ValueError(
-            f"{what} would build an array of {nbytes / 1e9:.3g} GB, more than the "
-            f"limit of {MAX_RESULT_BYTES / 1e9:g} GB; {advice}"
+            f"{what} would build an array of {nbytes / 1e9:.3g} GB, but must stay "
+            f"within the limit of {MAX_RESULT_BYTES / 1e9:g} GB; {advice}"
         )
 
 
