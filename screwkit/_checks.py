@@ -294,7 +294,9 @@ def check_integer(value, name, minimum=None):
     ):
         raise TypeError(f"{name} must be an integer, got {describe(value)}")
     if minimum is not None and value < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {int(value)}")
+        raise ValueError(
+            f"{name} must be an integer >= {minimum}, got {quoted(int(value))}"
+        )
     return int(value)
 
 

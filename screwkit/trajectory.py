@@ -177,8 +177,10 @@ class TimeScaling:
         if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
             raise TypeError(f"count must be an integer, got {describe(count)}")
         if count < 2:
-            raise ValueError(f"count must be at least 2, got {count}")
-        check_result_bytes(8 * count, f"count={count} times", "ask for fewer times")
+            raise ValueError(f"count must be at least 2, got {quoted(count)}")
+        check_result_bytes(
+            8 * count, f"count={quoted(count)} times", "ask for fewer times"
+        )
         return np.linspace(0.0, self.duration, count)
 
 

@@ -182,6 +182,12 @@ PARALLEL = [
         ValueError,
         "rationals",
     ),
+    row(  # a thousand digits, quoted in 80 characters
+        "fk_all-starts-thousand-digits",
+        lambda: stewart().fk_all([1.2] * 6, starts=-(10**1000)),
+        ValueError,
+        "starts",
+    ),
     row(
         "fk_all-proof-str",
         lambda: stewart().fk_all([1.2] * 6, proof="yes"),

@@ -440,6 +440,12 @@ TRAJECTORY = [
         "t",
     ),
     row("times-float", lambda: tr.cubic(1.0).times(10.0), TypeError, "count"),
+    row(  # a thousand digits, quoted in 80 characters
+        "times-negative-thousand-digits",
+        lambda: tr.cubic(1.0).times(-(10**1000)),
+        ValueError,
+        "count",
+    ),
     row(
         "times-huge",
         lambda: tr.quintic(2.0).times(10**10),
