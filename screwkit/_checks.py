@@ -90,8 +90,8 @@ def check_result_bytes(nbytes, what, advice):
     its size and what to do (``advice``)."""
     if nbytes > MAX_RESULT_BYTES:
         raise ValueError(
-            f"{what} would build an array of {nbytes / 1e9:.3g} GB, more than the "
-            f"limit of {MAX_RESULT_BYTES / 1e9:g} GB; {advice}"
+            f"{what} would build an array of {nbytes / 1e9:.3g} GB, but must stay "
+            f"within the limit of {MAX_RESULT_BYTES / 1e9:g} GB; {advice}"
         )
 
 
@@ -294,7 +294,9 @@ def check_integer(value, name, minimum=None):
     ):
         raise TypeError(f"{name} must be an integer, got {describe(value)}")
     if minimum is not None and value < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {int(value)}")
+        raise ValueError(
+            f"{name} must be an integer >= {minimum}, got {quoted(int(value))}"
+        )
     return int(value)
 
 

@@ -205,7 +205,7 @@ def test_a_line_through_the_pumas_wrist_singularity_is_named():
 def test_bad_input_is_a_clear_error():
     with pytest.raises(ValueError, match="v_max must be a positive number"):
         tr.cubic(v_max=-1.0)
-    with pytest.raises(ValueError, match="duration 0.5 s is below"):
+    with pytest.raises(ValueError, match="duration must be at least the 1.875 s"):
         tr.quintic(0.5, v_max=1.0)
     with pytest.raises(ValueError, match="needs a duration or a limit"):
         tr.cubic()
@@ -242,7 +242,7 @@ def test_bad_input_is_a_clear_error():
 
 def test_too_many_times_are_refused_before_the_array_is_built():
     # 10^10 times are 80 GB of floats (NumPy's MemoryError before)
-    with pytest.raises(ValueError, match=r"times\(10000000000\).*80 GB.*fewer"):
+    with pytest.raises(ValueError, match=r"count=10000000000 times.*80 GB.*fewer"):
         tr.quintic(2.0).times(10**10)
     assert tr.quintic(2.0).times(5).tolist() == [0.0, 0.5, 1.0, 1.5, 2.0]
 
@@ -251,14 +251,14 @@ def test_too_many_path_samples_are_refused_before_the_poses_are_built():
     # 2 x 10^8 samples (a broadcast view, no memory) would be 25.6 GB of 4 x 4 poses
     s = np.broadcast_to(0.5, (2 * 10**8,))
     for path in (tr.screw_path, tr.cartesian_path):
-        with pytest.raises(ValueError, match="200000000 samples.*fewer s"):
+        with pytest.raises(ValueError, match="200000000 samples of s.*fewer s"):
             path(np.eye(4), pose(1), s)
     with pytest.raises(ValueError, match="200000000 samples"):
         tr.slerp([1.0, 0, 0, 0], [0.0, 1.0, 0, 0], s)
-    with pytest.raises(ValueError, match="200000000 times"):
+    with pytest.raises(ValueError, match="200000000 times t"):
         tr.joint_path([0.0] * 6, [1.0] * 6, tr.cubic(1.0), s)
     motion = tr.via_points([0.0, 1.0], [[0.0] * 6, [1.0] * 6])
-    with pytest.raises(ValueError, match="200000000 times"):
+    with pytest.raises(ValueError, match="200000000 times t"):
         motion.evaluate(s)
 
 

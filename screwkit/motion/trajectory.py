@@ -177,8 +177,10 @@ class TimeScaling:
         if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
             raise TypeError(f"count must be an integer, got {describe(count)}")
         if count < 2:
-            raise ValueError(f"count must be at least 2, got {count}")
-        check_result_bytes(8 * count, f"times({count})", "ask for fewer times")
+            raise ValueError(f"count must be at least 2, got {quoted(count)}")
+        check_result_bytes(
+            8 * count, f"count={quoted(count)} times", "ask for fewer times"
+        )
         return np.linspace(0.0, self.duration, count)
 
 
@@ -201,8 +203,8 @@ def _polynomial(kind, duration, v_max, a_max):
         duration = _limit(duration, "duration")
         if duration < fastest:
             raise ValueError(
-                f"duration {duration:g} s is below the {fastest:g} s that v_max and "
-                f"a_max allow for a {kind} scaling"
+                f"duration must be at least the {fastest:g} s that v_max and a_max "
+                f"allow for a {kind} scaling, got {duration:g} s"
             )
     return TimeScaling(kind, duration, peak_v / duration, peak_a / duration**2)
 
@@ -323,7 +325,9 @@ def fastest_joint_scaling(profile, q_start, q_end, v_max, a_max):
         ratio = np.broadcast_to(value, distance.shape)[moving] / distance[moving]
         bounds.append(float(ratio.min()) if ratio.size else None)
     if bounds[0] is None:
-        raise ValueError("q_start and q_end are equal: there is no motion to time")
+        raise ValueError(
+            "q_start and q_end must differ (a motion to time), got equal vectors"
+        )
     return profile(v_max=bounds[0], a_max=bounds[1])
 
 
@@ -347,7 +351,9 @@ def _path_parameter(s, size, what):
     s = as_float_array(s, "s")
     if s.ndim > 1:
         raise ValueError(f"s must be one number or shape (K,), got shape {s.shape}")
-    check_result_bytes(8 * size * s.size, f"{what} of {s.size} samples", "pass fewer s")
+    check_result_bytes(
+        8 * size * s.size, f"{what} at the {s.size} samples of s", "pass fewer s"
+    )
     return s
 
 
@@ -369,7 +375,9 @@ def joint_path(q_start, q_end, scaling, t):
         raise TypeError(f"scaling must be a TimeScaling, got {describe(scaling)}")
     samples = np.size(t)  # q, dq and ddq, each (K, n)
     check_result_bytes(
-        24 * samples * q_start.size, f"joint_path at {samples} times", "pass fewer t"
+        24 * samples * q_start.size,
+        f"joint_path at the {samples} times t",
+        "pass fewer t",
     )
     s, ds, dds = (x[..., None] for x in scaling.evaluate(t))
     d = q_end - q_start
@@ -625,7 +633,7 @@ class ViaPoints:
             )
         check_result_bytes(  # q, dq and ddq, each (K, n)
             24 * t.size * self.points.shape[1],
-            f"ViaPoints.evaluate at {t.size} times",
+            f"ViaPoints.evaluate at the {t.size} times t",
             "pass fewer t",
         )
         k = np.clip(np.searchsorted(self.times, t, side="right") - 1, 0, None)

@@ -782,7 +782,7 @@ class ParallelManipulator:
         if self.planar and isinstance(self._legs, Revolute):
             return self._rrr_modes(values, proof)
         if proof and isinstance(self._legs, Prismatic):
-            proven = self._fk_proven(values)
+            proven = self._fk_proven(values, starts, seed)
             if proven is not None:
                 return proven
         closed = None
@@ -860,7 +860,7 @@ class ParallelManipulator:
             continuum=modes.continuum,
         )
 
-    def _fk_proven(self, values):
+    def _fk_proven(self, values, starts, seed):
         """fk_all by an exact solver with certified roots, or None if there is none."""
         if self.planar:
             method = "sextic, real roots isolated exactly (SymPy)"
@@ -878,7 +878,7 @@ class ParallelManipulator:
         if not complete and reason.startswith(_proven.POSITIVE_DIMENSIONAL):
             # a continuum of complex solutions, proven: the search says whether it
             # has real poses (and lists one of them, and the isolated modes it finds)
-            found = self.fk_all(values)
+            found = self.fk_all(values, starts=starts, seed=seed)
             return AssemblyModes(
                 found,
                 complete=False,

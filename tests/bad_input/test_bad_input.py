@@ -81,6 +81,13 @@ OTHER_WORDING = {
 }
 SENTENCE_WORDS = ("got", "must", "undefined", "cannot")
 
+#: The longest message a row may raise (characters): a message names the argument and
+#: says what was wrong; it quotes an input only through screwkit._checks.quoted (at
+#: most QUOTE_CHARS characters), never the whole input (issue 43: 19.8 MB for an
+#: array of out-of-range times). The longest today, about 450, explain a choice of
+#: IK engines.
+MAX_MESSAGE_CHARS = 600
+
 
 def param(table, r):
     case_id = f"{table}:{r.id}"
@@ -94,6 +101,9 @@ def test_bad_input_is_a_clear_error_naming_the_argument(r, case_id):
         r.call()
     message = str(raised.value)
     assert type(raised.value) is r.error  # not a subclass from deep inside NumPy
+    assert len(message) <= MAX_MESSAGE_CHARS, (
+        f"a message of {len(message)} characters: {message[:300]}..."
+    )
     assert re.search(rf"(?<![\w.]){re.escape(r.name)}(?!\w)", message), (
         f"{r.name!r} not named in: {message}"
     )
