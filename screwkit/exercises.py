@@ -47,8 +47,8 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
-from .motion import trajectory
 from ._checks import describe
+from .motion import trajectory
 from .screws import Screw, Twist, Wrench
 from .tolerances import ZERO_TOL
 from .transforms import screw_motion

@@ -183,6 +183,12 @@ IK_CLIP_TOL = 1e-10
 #: form agree on poses solved at a singularity and every label round-trips.
 IK_LABEL_TOL = 1e-10
 
+#: The decomposed engine lists a pose's solutions in increasing q1, then q2, ...; angles
+#: (rad) are compared on a grid of this step, so that siblings whose q1 is the same
+#: angle (it differs only in its last bits, which the CPU's SIMD path decides) are
+#: ordered by q2 on every machine rather than by round-off.
+IK_ORDER_TOL = 1e-6
+
 #: A closed-form solution is flagged singular (shoulder, elbow, wrist) when its measure
 #: is below this: the squared distance of the wrist centre from the plane of axis 1
 #: (times the arm's size squared), 1 - |cos| of the elbow, the sine between axes 4 and

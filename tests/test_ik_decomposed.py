@@ -349,3 +349,24 @@ def test_every_exact_eaik_solution_is_returned(kind):
             if all(np.abs(wrapped(row - d)).max() > 1e-6 for d in distinct):
                 distinct.append(row)
         assert len(mine) >= len(distinct)
+
+
+def test_solutions_sharing_an_angle_are_ordered_by_the_next_one_not_by_round_off():
+    # siblings of a spherical-wrist arm share q1 (and q2, q3) in exact arithmetic; in
+    # floats their q1 differ in the last bits, and which one is smaller depends on the
+    # CPU's SIMD path: the order must come from q4 instead
+    from screwkit.ik.decomposed import _angle_order
+
+    q1 = 0.5
+    rows = np.array(
+        [
+            [np.nextafter(q1, 0), -0.9, -1.8, 1.242, -1.3, -1.442],
+            [np.nextafter(q1, 1), -0.9, -1.8, -1.9, 1.3, 1.7],
+            [np.nan] * 6,
+            [-0.2, 0.1, 0.2, 0.3, 0.4, 0.5],
+        ]
+    )
+    for flipped in (rows, rows[[1, 0, 2, 3]]):
+        order = _angle_order(flipped[None])[0]
+        assert np.allclose(flipped[order][:3, 3], [0.3, -1.9, 1.242])
+        assert np.isnan(flipped[order][3]).all()

@@ -1,6 +1,6 @@
-"""The wheel holds every folder of screwkit: pyproject.toml lists its packages by name, so
-a new family folder (ik/, motion/, parallel/) must be added there or `pip install .`
-ships a screwkit that cannot import it."""
+"""The wheel holds every folder of screwkit: pyproject.toml lists its packages by
+name, so a new family folder (ik/, motion/, parallel/) must be added there or
+`pip install .` ships a screwkit that cannot import it."""
 
 import tomllib
 from pathlib import Path

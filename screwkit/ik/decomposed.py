@@ -33,12 +33,27 @@ import numpy as np
 from .._checks import check_chain, check_poses
 from .._compiled import CHUNK, cos_sin
 from ..links import Joint
-from ..tolerances import IK_ACCEPT_TOL, IK_CLIP_TOL, IK_DUPLICATE_TOL, IK_STRUCTURE_TOL
+from ..tolerances import (
+    IK_ACCEPT_TOL,
+    IK_CLIP_TOL,
+    IK_DUPLICATE_TOL,
+    IK_ORDER_TOL,
+    IK_STRUCTURE_TOL,
+)
 from ..transforms import _cross_last, _dot_last, _rotations_about, _turn_vectors
 from ._closed_form import arm_scale, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
 __all__ = ["DecomposedArm", "Classification", "classify"]
+
+
+def _angle_order(Q):
+    """The order (N, k) that sorts each pose's solutions Q (N, k, 6) by q1, then q2,
+    ..., NaN rows last. Angles are compared on a grid of IK_ORDER_TOL, so two solutions
+    that share an angle (equal but for round-off) are ordered by the next one on every
+    machine."""
+    keys = np.round(Q[..., ::-1] / IK_ORDER_TOL)
+    return np.lexsort(np.moveaxis(keys, -1, 0), axis=-1)
 
 
 @dataclass(frozen=True)
@@ -296,9 +311,9 @@ class DecomposedArm:
         for start in range(0, N, CHUNK):
             part = slice(start, start + CHUNK)
             Q[part], res[part], free[part] = self._solve(T[part])
-        # the solutions sorted by their angles (q1 first), NaN last: the labels s0, s1,
-        # ... do not depend on the order in which the subproblems found the roots
-        order = np.lexsort(np.moveaxis(Q[..., ::-1], -1, 0), axis=-1)
+        # the labels s0, s1, ... do not depend on the order in which the subproblems
+        # found the roots
+        order = _angle_order(Q)
         Q = np.take_along_axis(Q, order[..., None], 1)
         return Q, *(np.take_along_axis(x, order, 1) for x in (res, free))
 
