@@ -2,7 +2,7 @@
 
 Random arms of four classes (a spherical wrist with no other condition, a spherical
 shoulder, three parallel axes 2, 3, 4 and 3, 4, 5, each with offsets everywhere): all
-solutions of 10,000 random poses in one call (issue 34's goal: at most 100 ms), and the
+solutions of 10,000 random poses in one call (the goal: at most 100 ms), and the
 same poses through EAIK (Ostermeier et al. 2024, C++ behind pybind, one thread) when it
 is installed (``pip install EAIK``; benchmarks/requirements.txt). Prints how many
 solutions each finds, whether every exact EAIK solution (forward-kinematics error below
@@ -120,7 +120,7 @@ for kind in (
     )
 print(
     f"\n{N} poses per class, one call; ratio: EAIK's steady time over screwkit's;"
-    " goal (issue 34): all solutions in at most 100 ms"
+    " goal: all solutions in at most 100 ms"
 )
 if HPRobot is None:
     print("EAIK is not installed (pip install EAIK): screwkit alone")

@@ -47,7 +47,7 @@ FAKE = {
     },
     "7": {"answer": "12", "unit": "mm", "tolerance": 0.01, "rtol": 0.01, "hint": "h7"},
     "9": {"answer": "0", "unit": "rad", "tolerance": 1e-3, "hint": "h9"},
-    # units of mechanics, combinations and ranges (issue 30, item 5)
+    # units of mechanics, combinations and ranges (the statics answers need them)
     "10": {"answer": "-5", "unit": "N m", "tolerance": 1e-3, "hint": "h10"},
     "11": {"answer": "4.05", "unit": "N", "tolerance": 1e-2, "hint": "h11"},
     "12": {"answer": "10", "unit": "W", "tolerance": 1e-3, "hint": "h12"},

@@ -464,11 +464,7 @@ def test_every_name_of_sk_ik_is_there():
     assert all(getattr(sk.ik, name) is not None for name in names)
     assert names | {"dispatch", "ur", "stanford", "spherical_wrist"} <= set(dir(sk.ik))
     assert sk.ik.analytic_ik is sk.ik.dispatch.analytic_ik
-    assert (
-        sk.ik.numeric_ik
-        is sk.ik.newton.numeric_ik
-        is sk.Chain.numeric_ik
-    )
+    assert sk.ik.numeric_ik is sk.ik.newton.numeric_ik is sk.Chain.numeric_ik
     with pytest.raises(AttributeError, match="no_such_name"):
         sk.ik.no_such_name  # noqa: B018
 

@@ -745,7 +745,7 @@ def test_the_same_stewart_platform_in_millimetres_gives_the_same_answers_scaled(
     assert len(modes) == len(modes_mm)
 
 
-# ---- how far fk_all's answer can be trusted (issue 31) ------------------------------
+# ---- how far fk_all's answer can be trusted: every mode found, or why not ----------
 
 
 def test_fk_all_says_whether_it_is_complete_and_how_it_found_the_modes():
@@ -812,7 +812,7 @@ def delta_modes_checked(pm, theta, l2):
 
 
 def test_delta_with_equal_cranks_returns_the_mirror_mode_above_the_base():
-    # issue 31: the search returned only the mode below; the mode above (the centres'
+    # the search once returned only the mode below; the mode above (the centres'
     # mirror image) is an assembly mode too
     modes = delta_robot().fk_all(np.full(3, -0.4))
     assert len(modes) == 2
@@ -823,7 +823,8 @@ def test_delta_with_equal_cranks_returns_the_mirror_mode_above_the_base():
 
 
 def test_a_continuum_is_reported_not_an_empty_list():
-    # issue 31: all platform points at one place: every rotation about it solves
+    # all platform points at one place: every rotation about it solves, so the
+    # answer is a continuum, not an empty list
     pm = parallel.stewart_gough(platform=np.zeros((6, 3)), leg_limits=None)
     modes = pm.fk_all(np.full(6, 1.2))
     assert modes.continuum and not modes.complete and "continuum" in modes.reason
@@ -857,7 +858,7 @@ def test_a_generic_input_is_not_taken_for_a_continuum():
         assert not rpr().fk_all(rho).continuum
 
 
-# ---- singularities robust to round-off and units (issue 31) -------------------------
+# ---- singularities robust to round-off and units (tolerances relative to size) ------
 
 
 def test_a_stewart_leg_near_the_base_x_axis_is_classified_as_exactly_on_it():

@@ -133,11 +133,12 @@ def test_vendor_urdfs_of_ur_type_arms_are_solved_in_closed_form(relative, tip):
     ],
 )
 def test_vendor_arms_get_every_ik_solution(relative, tip, fixed):
-    """Issue 34 on vendor URDFs: the Kinova Jaco 2 (6R) and, with joint 3 held, the
-    xArm 7 and the Panda (general 6R arms left). Everything is checked by Pinocchio:
-    the poses are its forward kinematics, each solution must meet its pose there, the
-    generating configuration must be among them, and no solution that Newton on
-    Pinocchio's kinematics reaches from 30 random starts may be missing."""
+    """Every IK solution of any 6R arm, on vendor URDFs: the Kinova Jaco 2 (6R) and,
+    with joint 3 held, the xArm 7 and the Panda (general 6R arms left). Everything is
+    checked by Pinocchio: the poses are its forward kinematics, each solution must meet
+    its pose there, the generating configuration must be among them, and no solution
+    that Newton on Pinocchio's kinematics reaches from 30 random starts may be
+    missing."""
     chain, model, data, frame, columns = _arm_and_model(relative, tip)
     free = [j for j in range(chain.n) if j != fixed]
 

@@ -397,7 +397,7 @@ def test_stepped_figure_renders_at_a_given_dpi_and_refuses_a_bad_one():
         viewer.stepped_figure(draw, "pick", choices=["a"], dpi=-80)
 
 
-# ---- slider grids (issue 18, item 4; tests/test_sliders.py checks the chapters) ----
+# ---- slider grids (the rules of tests/slider_rules.py; test_sliders the chapters) ---
 
 
 def test_slider_grid_holds_default_and_zero():
