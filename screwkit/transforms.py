@@ -32,7 +32,7 @@ from ._checks import (
     is_symbolic,
 )
 from ._docstrings import fill
-from .tolerances import ZERO_TOL
+from .tolerances import SERIES_BELOW, ZERO_TOL
 
 __all__ = [
     "skew",
@@ -607,7 +607,7 @@ def exp_twist(twist, theta):
     t = theta[..., None, None]
     # theta - sin(theta) cancels for small theta: its series there
     # (error below 1e-20 rad)
-    small = np.abs(theta) < 1e-2
+    small = np.abs(theta) < SERIES_BELOW
     series = theta**3 / 6 - theta**5 / 120 + theta**7 / 5040
     t_minus_s = np.where(small, series, theta - np.sin(theta))[..., None, None]
     R = _rodrigues(W, s, c1)

@@ -71,6 +71,7 @@ from ..tolerances import (
     IK_GENERAL_COMFORT_TOL,
     IK_GENERAL_LEADING_TOL,
     IK_GENERAL_NULL_TOL,
+    IK_GENERAL_POLISH_TOL,
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
@@ -531,7 +532,7 @@ def _polish(w, r, home, targets, q):
     active = np.arange(len(q))
     for _ in range(NEWTON_STEPS):
         e, J = _error(w, r, home, targets[active], q[active])
-        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_ACCEPT_TOL * 1e-3
+        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
         active, e, J = active[moving], e[moving], J[moving]
         if not len(active):
             break
