@@ -39,7 +39,7 @@ from ._checks import (
     describe,
 )
 from ._compiled import in_chunks
-from ._docstrings import fill
+from ._docstrings import CHAIN, CHAIN_Q, fill
 from .links import Joint
 from .tolerances import FD_STEP
 from .transforms import _cross
@@ -79,16 +79,9 @@ ROWS = {
     "planar": slice(0, 2),
 }
 
+
 #: The Parameters section of the functions taking a chain and its joint values only
 #: (they are the Chain's methods of the same names).
-_CHAIN_Q_PARAMETERS = """Parameters
-----------
-chain : Chain
-    The serial chain.
-q : array-like, shape (n,) or (N, n)
-    Joint values (rad or m)."""
-
-
 def check_rows(rows):
     """The slice of the geometric Jacobian's rows named ``rows``
     (one of :data:`ROWS`)."""
@@ -98,7 +91,7 @@ def check_rows(rows):
 # ---- the Jacobians, outputs of the chain's generated program (Chain's methods) -----
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(parameters=CHAIN_Q)
 def joint_axes(chain, q):
     """Direction z_i and a point o_i of every joint axis in the base frame.
 
@@ -141,7 +134,7 @@ def _generated_jacobian(chain, q, outputs):
     return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(parameters=CHAIN_Q)
 def space_jacobian(chain, q):
     """The space Jacobian, columns [omega; v].
 
@@ -161,7 +154,7 @@ def space_jacobian(chain, q):
     return chain._generated_jacobian(q, "space")
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(parameters=CHAIN_Q)
 def geometric_jacobian(chain, q):
     """The geometric Jacobian, rows [v; omega].
 
@@ -180,7 +173,7 @@ def geometric_jacobian(chain, q):
     return chain._generated_jacobian(q, "geometric")
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(parameters=CHAIN_Q)
 def body_jacobian(chain, q):
     """The body Jacobian, columns [omega; v].
 
@@ -210,15 +203,13 @@ def body_jacobian(chain, q):
     return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, chain.n)))
 
 
+@fill(chain=CHAIN)
 def jacobian_rows(chain, q, rows="all"):
     """Some rows of the geometric Jacobian.
 
     'planar' reads v_x, v_y in the chain's base frame.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : array-like, shape (n,) or (N, n)
         Joint values (rad or m).
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -238,13 +229,11 @@ def jacobian_rows(chain, q, rows="all"):
     return J[..., selected, :]
 
 
+@fill(chain=CHAIN)
 def singular_values(chain, q, rows="all"):
     """Singular values of the geometric Jacobian's rows, largest first.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : array-like, shape (n,) or (N, n)
         Joint values (rad or m).
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -265,14 +254,12 @@ def singular_values(chain, q, rows="all"):
     return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
 
 
+@fill(chain=CHAIN)
 def lost_rank(chain, sigma, rows="all"):
     """Whether Jacobian rows have lost rank, by NumPy's rule on the smallest
     singular value.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     sigma : ndarray, shape (..., k)
         Singular values, largest first, as :meth:`singular_values` returns them.
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -286,6 +273,7 @@ def lost_rank(chain, sigma, rows="all"):
     return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), chain.n)
 
 
+@fill(chain=CHAIN)
 def manipulability(chain, q, rows="all"):
     """Yoshikawa's manipulability, the product of the singular values: () or (N,).
 
@@ -295,10 +283,7 @@ def manipulability(chain, q, rows="all"):
     noise. With rows='all' the product mixes metres and radians; 'position' gives
     the volume factor of the velocity ellipsoid in m/s.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : array-like, shape (n,) or (N, n)
         Joint values (rad or m).
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -381,16 +366,14 @@ def _symbolic_point(chain, point, end, frames):
     return as_sympy_matrix(point, "point", (3, 1))
 
 
+@fill(chain=CHAIN)
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     """The exact geometric Jacobian, in the joint symbols q1..qn.
 
     Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the
     point: (v_i + omega_i x p; omega_i).
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     point : None, int or 3-vector of SymPy expressions, optional
         The reference point whose velocity the rows v give: None for the end-effector
         point, an integer k for the origin of frame k of a DH chain (e.g. a wrist
