@@ -13,6 +13,7 @@ import sympy as sp
 from builders import delta as delta_robot
 from builders import rpr, rrr, stewart
 from builders import tripteron as tripteron_robot
+from references import rpr_mode_count
 
 import screwkit as sk
 from screwkit import parallel
@@ -336,25 +337,10 @@ def test_fk_that_cannot_converge_says_so():
 # ---- every assembly mode -----------------------------------------------------------
 
 
-def scan_modes(a, b, rho, samples=400_001):
-    """Real assembly modes of a 3-RPR counted by sign changes over a dense grid of phi
-    (b_0 = 0: the platform point 0 is the origin of the platform frame)."""
-    phi = np.linspace(-np.pi, np.pi, samples)
-    c, s = np.cos(phi), np.sin(phi)
-    rows, rhs = [], []
-    for k in (1, 2):
-        w = np.c_[c * b[k, 0] - s * b[k, 1], s * b[k, 0] + c * b[k, 1]] - a[k]
-        rows.append(2 * (w + a[0]))
-        rhs.append(rho[k] ** 2 - rho[0] ** 2 - np.sum(w * w, 1) + a[0] @ a[0])
-    q = np.linalg.solve(np.stack(rows, 1), np.stack(rhs, 1)[..., None])[..., 0]
-    f = np.sum((q - a[0]) ** 2, 1) - rho[0] ** 2
-    return int(np.sum(np.sign(f[1:]) != np.sign(f[:-1])))
-
-
 def test_3rpr_instance_with_six_real_modes_returns_exactly_six():
     rho = np.array(parallel.RPR_SIX_MODES_RHO)
     a, b = rpr().base_points[:, :2], rpr().platform_points[:, :2]
-    assert scan_modes(a, b, rho) == 6
+    assert rpr_mode_count(a, b, rho) == 6
     poses = rpr().fk_all(rho)
     assert len(poses) == 6
     for T in poses:
@@ -372,7 +358,7 @@ def test_3rpr_fk_all_returns_the_generating_pose_and_counts_agree_with_the_scan(
         rho = rpr().ik(T)
         poses = rpr().fk_all(rho)
         assert min(np.max(np.abs(P - T)) for P in poses) < 1e-9
-        assert len(poses) == scan_modes(
+        assert len(poses) == rpr_mode_count(
             rpr().base_points[:, :2], rpr().platform_points[:, :2], rho
         )
         for P in poses:
@@ -685,7 +671,7 @@ def test_rpr_sextic_is_a_sextic_whose_real_roots_are_the_scanned_modes():
     roots = poly.roots()
     real = np.abs(roots.imag) < 1e-6 * (1 + np.abs(roots))
     a, b = rpr().base_points[:, :2], rpr().platform_points[:, :2]
-    assert poly.degree() == 6 and real.sum() == len(poses) == scan_modes(a, b, rho)
+    assert poly.degree() == 6 and real.sum() == len(poses) == rpr_mode_count(a, b, rho)
     for T in poses:
         lengths = leg_lengths(rpr().base_points, rpr().platform_points, T)
         assert np.max(np.abs(lengths - rho)) < 1e-9
