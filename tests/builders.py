@@ -7,6 +7,8 @@ when a test file is imported (tests/test_fixtures.py checks that). conftest.py's
 
 import functools
 
+import pytest
+
 import screwkit as sk
 from screwkit import parallel
 
@@ -69,3 +71,15 @@ def delta():
 def tripteron():
     """The Tripteron of the catalogue."""
     return parallel.tripteron()
+
+
+def refusals(cases):
+    """A test that each call of ``cases`` raises its error with a message matching its
+    pattern: ``cases`` is a list of (call, error type, regular expression)."""
+
+    @pytest.mark.parametrize("call, error, match", cases)
+    def test(call, error, match):
+        with pytest.raises(error, match=match):
+            call()
+
+    return test
