@@ -82,6 +82,18 @@ ROWS = {
 
 #: The Parameters section of the functions taking a chain and its joint values only
 #: (they are the Chain's methods of the same names).
+#: The sections of the Jacobians' docstrings (filled in by :func:`_docstrings.fill`).
+_JACOBIAN_SECTIONS = f"""{CHAIN_Q}
+
+Returns
+-------
+ndarray, shape (6, n) or (N, 6, n)
+    The Jacobian(s)."""
+_GEOMETRIC_SECTIONS = _JACOBIAN_SECTIONS.replace(
+    "Jacobian(s).", "Jacobian(s), base frame, end-effector point."
+)
+
+
 def check_rows(rows):
     """The slice of the geometric Jacobian's rows named ``rows``
     (one of :data:`ROWS`)."""
@@ -134,7 +146,7 @@ def _generated_jacobian(chain, q, outputs):
     return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
 
-@fill(parameters=CHAIN_Q)
+@fill(sections=_JACOBIAN_SECTIONS)
 def space_jacobian(chain, q):
     """The space Jacobian, columns [omega; v].
 
@@ -143,18 +155,13 @@ def space_jacobian(chain, q):
     (v is the velocity of the body point at the base origin), (0; z_i) for a
     prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
 
-    {parameters}
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s).
+    {sections}
     """
     check_chain(chain)
     return chain._generated_jacobian(q, "space")
 
 
-@fill(parameters=CHAIN_Q)
+@fill(sections=_GEOMETRIC_SECTIONS)
 def geometric_jacobian(chain, q):
     """The geometric Jacobian, rows [v; omega].
 
@@ -162,30 +169,20 @@ def geometric_jacobian(chain, q):
     (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint
     and (z_i; 0) for a prismatic one.
 
-    {parameters}
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s), base frame, end-effector point.
+    {sections}
     """
     check_chain(chain)
     return chain._generated_jacobian(q, "geometric")
 
 
-@fill(parameters=CHAIN_Q)
+@fill(sections=_JACOBIAN_SECTIONS)
 def body_jacobian(chain, q):
     """The body Jacobian, columns [omega; v].
 
     Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
 
-    {parameters}
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s).
+    {sections}
     """
 
     check_chain(chain)
