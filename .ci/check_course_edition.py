@@ -49,8 +49,8 @@ sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
 sys.path.insert(0, str(ROOT))
 
-from convert_exercises import read_exercises  # noqa: E402
 from editions import assessed, strip_solutions  # noqa: E402
+from exercise_syntax import read_exercises  # noqa: E402
 
 TEXT = (".html", ".js", ".ipynb", ".md", ".txt", ".json")
 BOX = re.compile(

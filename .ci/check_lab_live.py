@@ -1,4 +1,5 @@
-"""Sliders in JupyterLab against a live kernel, in headless Chromium (issue 14, item 3).
+"""Sliders in JupyterLab against a live kernel, in headless Chromium (a slider must move
+the figure where students use it, not only in the built page).
 
 Starts the JupyterLab of .venv headless on a free 127.0.0.1 port with a token of its
 own, serving a temporary directory with a copy of the redundancy chapter

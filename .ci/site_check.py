@@ -719,7 +719,7 @@ def layout_fits(page, page_name, width):
 
 def math_is_not_clipped(page, page_name, width):
     """No formula (display or in the text) or table runs out of its paragraph or the
-    column, or is cut off, without a box around it that scrolls sideways (issue 30: on
+    column, or is cut off, without a box around it that scrolls sideways (on
     a phone, long inline formulas ran out of their paragraph with no way to scroll)."""
     page.evaluate(MATHJAX_DONE)
     clipped = page.evaluate(CLIPPED_MATH)

@@ -2,7 +2,7 @@
 
 Random arms of four classes (a spherical wrist with no other condition, a spherical
 shoulder, three parallel axes 2, 3, 4 and 3, 4, 5, each with offsets everywhere): all
-solutions of 10,000 random poses in one call (issue 34's goal: at most 100 ms), and the
+solutions of 10,000 random poses in one call (the goal: at most 100 ms), and the
 same poses through EAIK (Ostermeier et al. 2024, C++ behind pybind, one thread) when it
 is installed (``pip install EAIK``; benchmarks/requirements.txt). Prints how many
 solutions each finds, whether every exact EAIK solution (forward-kinematics error below
@@ -12,13 +12,19 @@ robot built, its decomposition found) and the steady state (best of seven calls)
 Usage (from the top level): .venv/bin/python benchmarks/bench_ik_decomposed.py
 """
 
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 from _report import best
 
 import screwkit as sk
 from screwkit.ik.decomposed import DecomposedArm
+
+# the tests' random arms of each structure (tests/builders.py)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from builders import random_arm  # noqa: E402
 
 try:
     from eaik.IK_HP import HPRobot  # not eaik itself: its __init__ needs urchin
@@ -28,26 +34,6 @@ except ImportError:
 N = 10_000
 REPEAT = 7  # the steady state: the best of seven calls, each side
 rng = np.random.default_rng(34)
-
-
-def unit(v):
-    return v / np.linalg.norm(v)
-
-
-def arm(kind):
-    w = np.array([unit(rng.normal(size=3)) for _ in range(6)])
-    p = rng.normal(size=(6, 3)) * 0.5
-    if kind == "spherical wrist":
-        p[3:] = rng.normal(size=3)
-    elif kind == "spherical shoulder":
-        p[:3] = rng.normal(size=3)
-    elif kind == "parallel 2, 3, 4":
-        w[1:4] = w[1]
-    else:
-        w[2:5] = w[2]
-    M = np.eye(4)
-    M[:3, 3] = rng.normal(size=3) * 0.3
-    return sk.Chain.from_screws(np.hstack([w, np.cross(p, w)]), M)
 
 
 def eaik_robot(chain):
@@ -71,13 +57,13 @@ print(
     f"{'class':<20}{'first call':>12}{'steady':>12}{'EAIK first':>12}{'steady':>12}"
     f"{'ratio':>7}  solutions (screwkit/EAIK)"
 )
-for kind in (
-    "spherical wrist",
-    "spherical shoulder",
-    "parallel 2, 3, 4",
-    "parallel 3, 4, 5",
+for kind, name in (
+    ("wrist", "spherical wrist"),
+    ("shoulder", "spherical shoulder"),
+    ("parallel 234", "parallel 2, 3, 4"),
+    ("parallel 345", "parallel 3, 4, 5"),
 ):
-    chain = arm(kind)
+    chain = random_arm(kind, rng, antiparallel=False)
     T = chain.fk(rng.uniform(-np.pi, np.pi, (N, 6)))
     # the first call: a chain built anew, so its class, engine and kinematics are made
     fresh = sk.Chain.from_screws(chain.screw_axes(), chain.home())
@@ -115,12 +101,12 @@ for kind in (
         theirs = count
     ratio = f"{t_theirs / t_ours:>6.2f}x" if t_theirs else f"{'-':>7}"
     print(
-        f"{kind:<20}{ms(first_ours)}{ms(t_ours)}{ms(first_theirs)}{ms(t_theirs)}"
+        f"{name:<20}{ms(first_ours)}{ms(t_ours)}{ms(first_theirs)}{ms(t_theirs)}"
         f"{ratio}  {ours}/{theirs} (exact EAIK solutions screwkit lacks: {missing})"
     )
 print(
     f"\n{N} poses per class, one call; ratio: EAIK's steady time over screwkit's;"
-    " goal (issue 34): all solutions in at most 100 ms"
+    " goal: all solutions in at most 100 ms"
 )
 if HPRobot is None:
     print("EAIK is not installed (pip install EAIK): screwkit alone")

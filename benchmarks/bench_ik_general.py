@@ -1,7 +1,7 @@
 """Every IK solution of a general 6R arm (screwkit.ik.general: the Raghavan–Roth
 eigenvalue problem, Newton-polished): one pose a call, and 200 poses in one batched
 call, first call (a fresh chain, so its generated kinematics are compiled) and steady
-state (issue 34's goal: at most 2 ms a pose, batched), against the peers on the same
+state (the goal: at most 2 ms a pose, batched), against the peers on the same
 arm, the same poses and the same question (all solutions of each pose):
 
 * IK-Geo (``pip install ik-geo``, Elias and Wen; ``Robot.gen_six_dof``: a 2-D search

@@ -1,6 +1,7 @@
 """Motion in time: the Jacobian's time derivative and Hessian by Lie brackets, against
 the Jacobian's own time and the Robotics Toolbox for Python (RTB), and a screw
-trajectory against Modern Robotics' ScrewTrajectory, with the goals of issue 33.
+trajectory against Modern Robotics' ScrewTrajectory, with the goal of each (the table's
+last columns).
 
 Prints (1) agreement with RTB's jacob0_dot and hessian0 (PUMA 560, RTB's d1 = 0 as in
 screwkit) and with Modern Robotics' ScrewTrajectory; (2) a table of times and ratios.

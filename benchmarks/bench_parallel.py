@@ -16,11 +16,17 @@ solving the two linear equations at each (what one does without the sextic).
 Usage: python benchmarks/bench_parallel.py
 """
 
+import sys
 import timeit
+from pathlib import Path
 
 import numpy as np
 
 from screwkit import parallel
+
+# the tests' hand-written references (tests/references.py)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from references import rpr_mode_count  # noqa: E402
 
 RNG = np.random.default_rng(0)
 N_IK, N_FK = 100_000, 10_000
@@ -96,17 +102,9 @@ def loop_fk(pm, rho, guess):
 
 
 def scan_rpr(pm, rho, samples=100_001):
+    """The 3-RPR's modes by the tests' dense scan (tests/references.py)."""
     a, b = pm.base_points[:, :2], pm.platform_points[:, :2]
-    phi = np.linspace(-np.pi, np.pi, samples)
-    c, s = np.cos(phi), np.sin(phi)
-    rows, rhs = [], []
-    for k in (1, 2):
-        w = np.c_[c * b[k, 0] - s * b[k, 1], s * b[k, 0] + c * b[k, 1]] - a[k]
-        rows.append(2 * (w + a[0]))
-        rhs.append(rho[k] ** 2 - rho[0] ** 2 - np.sum(w * w, 1) + a[0] @ a[0])
-    q = np.linalg.solve(np.stack(rows, 1), np.stack(rhs, 1)[..., None])[..., 0]
-    f = np.sum((q - a[0]) ** 2, 1) - rho[0] ** 2
-    return int(np.sum(np.sign(f[1:]) != np.sign(f[:-1])))
+    return rpr_mode_count(a, b, rho, samples)
 
 
 def main():

@@ -22,7 +22,21 @@ float
 
 import textwrap
 
-__all__ = ["fill"]
+__all__ = ["fill", "CHAIN", "CHAIN_Q"]
+
+#: The Parameters section of a function of a chain (a Chain's method is such a
+#: function: ``chain.fk(q)`` is ``fk(chain, q)``); ``{chain}`` in its docstring.
+CHAIN = """Parameters
+----------
+chain : Chain
+    The serial chain."""
+#: The same with the chain's joint values, one configuration or a batch.
+CHAIN_Q = (
+    CHAIN
+    + """
+q : array-like, shape (n,) or (N, n)
+    Joint values (rad or m)."""
+)
 
 
 def fill(**passages):

@@ -12,6 +12,7 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 
 from ._checks import as_sympy_scalar, check_flag, check_integer, describe, is_symbolic
+from ._docstrings import CHAIN, fill
 from .lie import adjoint
 from .links import Convention, Joint, Link, decimal, exact_matrix
 from .screws import Twist
@@ -61,13 +62,11 @@ def _exact_q(chain, q, name="q"):
     ]
 
 
+@fill(chain=CHAIN)
 def link_transforms(chain, q=None):
     """The n exact link transforms A_i(q_i) of a DH chain.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : sequence of n numbers or SymPy expressions, optional
         Joint values; the joint symbols q1..qn by default.
 
@@ -81,13 +80,11 @@ def link_transforms(chain, q=None):
     return [link.transform(qi, chain.convention) for link, qi in zip(chain.links, q)]
 
 
+@fill(chain=CHAIN)
 def length_symbols(chain):
     """Symbols a_i, d_i for every non-zero link length of a DH chain.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
 
     Returns
     -------
@@ -135,13 +132,11 @@ def _with_symbolic_lengths(chain):
     return links
 
 
+@fill(chain=CHAIN)
 def fk_symbolic(chain, simplify=True, symbolic_lengths=False, upto=None):
     """The exact end-effector pose in the joint symbols q1..qn.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     simplify : bool, optional
         Combine sums of angles (cos(q2)cos(q3) - sin(q2)sin(q3) -> cos(q2 + q3))
         after each factor, as textbooks write c23.
@@ -191,13 +186,11 @@ def fk_symbolic(chain, simplify=True, symbolic_lengths=False, upto=None):
     return T
 
 
+@fill(chain=CHAIN)
 def frames_symbolic(chain, symbolic_lengths=False):
     """The exact frames base @ A_1 ... A_k for k = 0..n (no tool) of a DH chain.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     symbolic_lengths : bool, optional
         Use the symbols a_i, d_i for lengths.
 
@@ -217,6 +210,7 @@ def frames_symbolic(chain, symbolic_lengths=False):
     ]
 
 
+@fill(chain=CHAIN)
 def joint_frames(chain, frames):
     """Of the n + 1 frames of a DH chain (base first, no tool), the n whose z axis
     is a joint axis.
@@ -224,10 +218,7 @@ def joint_frames(chain, frames):
     Standard DH: joint i moves about z of frame i-1; modified DH: about z of frame
     i.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     frames : list of n + 1 4x4 matrices
         As :meth:`frames_symbolic` returns them.
 
@@ -245,15 +236,13 @@ def joint_frames(chain, frames):
     return frames[:-1] if chain.convention is Convention.STANDARD else frames[1:]
 
 
+@fill(chain=CHAIN)
 def twists_symbolic(chain, q=None, symbolic_lengths=False, rational=False):
     """The joint twists [omega; v] in the base frame, exactly.
 
     These are the columns of the space Jacobian.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : sequence of n exact values or symbols, optional
         The joint vector (default the joint symbols q1..qn).
     symbolic_lengths : bool, optional
@@ -309,6 +298,7 @@ def twists_symbolic(chain, q=None, symbolic_lengths=False, rational=False):
     return twists
 
 
+@fill(chain=CHAIN)
 def joint_twists(chain, q):
     """The joint twists at q in the base frame.
 
@@ -322,10 +312,7 @@ def joint_twists(chain, q):
     batch (N, n): the (N, n, 6) array of the space Jacobians' columns
     (``space_jacobian(q).T`` is one configuration's (n, 6) array).
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : sequence of n exact values or symbols, array-like (n,), or (N, n)
         Joint values (rad or m).
 
@@ -342,13 +329,11 @@ def joint_twists(chain, q):
     return ScrewSystem([Twist(t) for t in twists])
 
 
+@fill(chain=CHAIN)
 def table(chain):
     """The chain's parameters as rows of strings, and a header.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
 
     Returns
     -------

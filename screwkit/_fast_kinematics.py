@@ -12,16 +12,9 @@ import numpy as np
 
 from . import _compiled
 from ._checks import check_option
-from ._docstrings import fill
+from ._docstrings import CHAIN, CHAIN_Q, fill
 from .links import axis_points, dh_factors, translation
 from .transforms import exp_twist
-
-_CHAIN_Q_PARAMETERS = """Parameters
-----------
-chain : Chain
-    The serial chain.
-q : array-like, shape (n,) or (N, n)
-    Joint values (rad or m)."""
 
 
 def _program(chain):
@@ -67,6 +60,7 @@ def _functions(chain):
     return {}
 
 
+@fill(chain=CHAIN)
 def source(chain, outputs="pose"):
     """The straight-line Python that computes this chain's ``outputs`` (a string).
 
@@ -78,10 +72,7 @@ def source(chain, outputs="pose"):
     (the Jacobians, 6 x n) or 'axes' (each joint's twist and a point, then the
     pose). What :meth:`fk` and the Jacobians run, as text to read.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     outputs : {'pose', 'frames', 'space', 'geometric', 'axes'}, optional
         What the generated function returns.
 
@@ -115,7 +106,7 @@ def _run(chain, outputs, q, rows=None, out=None):
     return _compiled.evaluate_batch(function, q + offsets, out, rows)
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(parameters=CHAIN_Q)
 def fk(chain, q):
     """The end-effector pose.
 
@@ -137,7 +128,7 @@ def fk(chain, q):
     return T.transpose(2, 0, 1)  # a view: each entry was computed as one contiguous row
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(parameters=CHAIN_Q)
 def frames(chain, q):
     """The base frame and every link frame.
 
@@ -186,14 +177,12 @@ def _twists_and_pose(chain, q):
     )
 
 
+@fill(chain=CHAIN)
 def home(chain):
     """The end-effector pose at q = 0: the home pose of the product of
     exponentials.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
 
     Returns
     -------
@@ -203,15 +192,13 @@ def home(chain):
     return chain.fk(np.zeros(chain.n))
 
 
+@fill(chain=CHAIN)
 def screw_axes(chain):
     """The joint screws at q = 0 in the base frame.
 
     Revolute: (z, p x z) for the axis z through p; prismatic: (0, z).
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
 
     Returns
     -------
@@ -221,13 +208,11 @@ def screw_axes(chain):
     return chain.space_jacobian(np.zeros(chain.n)).T
 
 
+@fill(chain=CHAIN)
 def body_screw_axes(chain):
     """The joint screws at q = 0 in the end-effector frame.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
 
     Returns
     -------
@@ -237,15 +222,13 @@ def body_screw_axes(chain):
     return chain.body_jacobian(np.zeros(chain.n)).T
 
 
+@fill(chain=CHAIN)
 def fk_poe(chain, q):
     """The pose by the product of exponentials exp([S1] q1) ... exp([Sn] qn) M.
 
     An independent route to :meth:`fk` (a loop of 4x4 exponentials), for checking.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : array-like, shape (n,)
         Joint values (rad or m).
 

@@ -1,11 +1,11 @@
 """Slider grids shared by the in-page viewers and the ipywidgets: range, step and
 default together.
 
-The rules (issue 18): the default lies on the slider's grid and inside its range; the
-grid is anchored at 0 (both ends are multiples of the step), so 0 and round values are
-reachable where the range holds them; a joint's range comes from its limits, and a
-revolute joint without limits gets one turn placed so that its default is not at an
-edge; every slider names its unit.
+The rules (so that every slider of the course behaves alike): the default lies on the
+slider's grid and inside its range; the grid is anchored at 0 (both ends are multiples
+of the step), so 0 and round values are reachable where the range holds them; a joint's
+range comes from its limits, and a revolute joint without limits gets one turn placed so
+that its default is not at an edge; every slider names its unit.
 """
 
 import math

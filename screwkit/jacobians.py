@@ -39,7 +39,7 @@ from ._checks import (
     describe,
 )
 from ._compiled import in_chunks
-from ._docstrings import fill
+from ._docstrings import CHAIN, CHAIN_Q, fill
 from .links import Joint
 from .tolerances import FD_STEP
 from .transforms import _cross
@@ -79,14 +79,19 @@ ROWS = {
     "planar": slice(0, 2),
 }
 
+
 #: The Parameters section of the functions taking a chain and its joint values only
 #: (they are the Chain's methods of the same names).
-_CHAIN_Q_PARAMETERS = """Parameters
-----------
-chain : Chain
-    The serial chain.
-q : array-like, shape (n,) or (N, n)
-    Joint values (rad or m)."""
+#: The sections of the Jacobians' docstrings (filled in by :func:`_docstrings.fill`).
+_JACOBIAN_SECTIONS = f"""{CHAIN_Q}
+
+Returns
+-------
+ndarray, shape (6, n) or (N, 6, n)
+    The Jacobian(s)."""
+_GEOMETRIC_SECTIONS = _JACOBIAN_SECTIONS.replace(
+    "Jacobian(s).", "Jacobian(s), base frame, end-effector point."
+)
 
 
 def check_rows(rows):
@@ -98,7 +103,7 @@ def check_rows(rows):
 # ---- the Jacobians, outputs of the chain's generated program (Chain's methods) -----
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(parameters=CHAIN_Q)
 def joint_axes(chain, q):
     """Direction z_i and a point o_i of every joint axis in the base frame.
 
@@ -141,7 +146,7 @@ def _generated_jacobian(chain, q, outputs):
     return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(sections=_JACOBIAN_SECTIONS)
 def space_jacobian(chain, q):
     """The space Jacobian, columns [omega; v].
 
@@ -150,18 +155,13 @@ def space_jacobian(chain, q):
     (v is the velocity of the body point at the base origin), (0; z_i) for a
     prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
 
-    {parameters}
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s).
+    {sections}
     """
     check_chain(chain)
     return chain._generated_jacobian(q, "space")
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(sections=_GEOMETRIC_SECTIONS)
 def geometric_jacobian(chain, q):
     """The geometric Jacobian, rows [v; omega].
 
@@ -169,30 +169,20 @@ def geometric_jacobian(chain, q):
     (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint
     and (z_i; 0) for a prismatic one.
 
-    {parameters}
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s), base frame, end-effector point.
+    {sections}
     """
     check_chain(chain)
     return chain._generated_jacobian(q, "geometric")
 
 
-@fill(parameters=_CHAIN_Q_PARAMETERS)
+@fill(sections=_JACOBIAN_SECTIONS)
 def body_jacobian(chain, q):
     """The body Jacobian, columns [omega; v].
 
     Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
 
-    {parameters}
-
-    Returns
-    -------
-    ndarray, shape (6, n) or (N, 6, n)
-        The Jacobian(s).
+    {sections}
     """
 
     check_chain(chain)
@@ -210,15 +200,13 @@ def body_jacobian(chain, q):
     return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, chain.n)))
 
 
+@fill(chain=CHAIN)
 def jacobian_rows(chain, q, rows="all"):
     """Some rows of the geometric Jacobian.
 
     'planar' reads v_x, v_y in the chain's base frame.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : array-like, shape (n,) or (N, n)
         Joint values (rad or m).
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -238,13 +226,11 @@ def jacobian_rows(chain, q, rows="all"):
     return J[..., selected, :]
 
 
+@fill(chain=CHAIN)
 def singular_values(chain, q, rows="all"):
     """Singular values of the geometric Jacobian's rows, largest first.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : array-like, shape (n,) or (N, n)
         Joint values (rad or m).
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -265,14 +251,12 @@ def singular_values(chain, q, rows="all"):
     return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
 
 
+@fill(chain=CHAIN)
 def lost_rank(chain, sigma, rows="all"):
     """Whether Jacobian rows have lost rank, by NumPy's rule on the smallest
     singular value.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     sigma : ndarray, shape (..., k)
         Singular values, largest first, as :meth:`singular_values` returns them.
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -286,6 +270,7 @@ def lost_rank(chain, sigma, rows="all"):
     return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), chain.n)
 
 
+@fill(chain=CHAIN)
 def manipulability(chain, q, rows="all"):
     """Yoshikawa's manipulability, the product of the singular values: () or (N,).
 
@@ -295,10 +280,7 @@ def manipulability(chain, q, rows="all"):
     noise. With rows='all' the product mixes metres and radians; 'position' gives
     the volume factor of the velocity ellipsoid in m/s.
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     q : array-like, shape (n,) or (N, n)
         Joint values (rad or m).
     rows : {'all', 'position', 'orientation', 'planar'}, optional
@@ -381,16 +363,14 @@ def _symbolic_point(chain, point, end, frames):
     return as_sympy_matrix(point, "point", (3, 1))
 
 
+@fill(chain=CHAIN)
 def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     """The exact geometric Jacobian, in the joint symbols q1..qn.
 
     Column i is the joint twist (omega_i; v_i) of ``Chain.twists_symbolic`` moved to the
     point: (v_i + omega_i x p; omega_i).
 
-    Parameters
-    ----------
-    chain : Chain
-        The serial chain.
+    {chain}
     point : None, int or 3-vector of SymPy expressions, optional
         The reference point whose velocity the rows v give: None for the end-effector
         point, an integer k for the origin of frame k of a DH chain (e.g. a wrist

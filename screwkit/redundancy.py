@@ -42,7 +42,10 @@ from .motion.differential_ik import _damped_pseudo_inverse
 from .motion.trajectory import quintic
 from .tolerances import (
     LIMIT_MARGIN,
+    PATH_START_TOL,
     POSITION_TOL,
+    SINGULAR_REGION,
+    START_DAMPING,
     STEP_TOL,
     length_scale,
 )
@@ -395,7 +398,7 @@ def _gradient_indices(n):
     return (i, np.maximum(j, k)), (np.maximum(i, k), j)
 
 
-def pseudo_inverse(J, damping=0.0, singular_region=0.05):
+def pseudo_inverse(J, damping=0.0, singular_region=SINGULAR_REGION):
     """J+ = J^T (J J^T + lambda^2 I)^-1 for J (2, n).
 
     lambda = 0 (the exact Moore-Penrose inverse of a full-rank J) unless
@@ -480,7 +483,7 @@ def start_configuration(arm, point, q_guess, tol=None, max_iterations=100):
         error = np.linalg.norm(target - points[-1])
         if error < tol:
             return q
-        q += pseudo_inverse(J, damping=0.01) @ (target - points[-1])
+        q += pseudo_inverse(J, damping=START_DAMPING) @ (target - points[-1])
     raise ValueError(
         f"point must be reachable from q_guess: no configuration found that reaches "
         f"point {np.round(point, 6).tolist()} in {max_iterations} iterations, got a "
@@ -529,7 +532,7 @@ def resolve(
     joint_limits=None,
     limit_gain=0.1,
     max_rate=5.0,
-    start_tolerance=1e-3,
+    start_tolerance=PATH_START_TOL,
 ):
     """Follow ``path`` with the end effector of the planar ``arm`` from ``q0`` (n,).
 

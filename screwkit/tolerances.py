@@ -314,6 +314,11 @@ IK_GENERAL_SINGULAR_TOL = 1e-8
 #: configurations.
 IK_GENERAL_SEARCH_DAMPING = 1e-4
 
+#: Newton's polish of screwkit.ik.general stops moving a solution once its error is a
+#: thousandth of the acceptance, IK_GENERAL_ACCEPT_TOL: the last step then changes
+#: nothing the acceptance could see.
+IK_GENERAL_POLISH_TOL = IK_GENERAL_ACCEPT_TOL * 1e-3
+
 # ---- parallel: model, legs, numerics, search ----------------------------------------
 # A length below is written for a mechanism about 1 m across and used times the
 # mechanism's own size (ParallelManipulator.scale, the farthest attachment point from
@@ -400,6 +405,25 @@ PARALLEL_SPHERES_TOL = 1e-12
 #: 3-RPR's real roots (parallel.proven.rpr_fk_proven): far below a double's
 #: resolution, so each interval's midpoint is the root to round-off.
 PARALLEL_PROVEN_ROOT_WIDTH = 2.0**-70
+
+# ---- workspace and redundancy: defaults of the chapters' sweeps and planar arms ---
+
+#: How far (m) a swept point may lie from the plane of a workspace section and still be
+#: drawn in it: 1 cm, a dot's width in a figure of an arm about a metre across.
+SECTION_TOL = 0.01
+
+#: How far (m) q0's end effector may be from a redundancy path's start: 1 mm, so that
+#: the feedback's first step (gain 50/s, dt about 0.01 s) stays small.
+PATH_START_TOL = 1e-3
+
+#: Below this smallest singular value (m) of a planar Jacobian, damped least squares
+#: fades in (Nakamura's singular region): 5 cm on arms of links 0.2 to 1 m.
+SINGULAR_REGION = 0.05
+
+#: The damping (m) of the Newton steps that find a planar arm's start configuration:
+#: enough to cross a stretched (singular) guess, and gone inside SINGULAR_REGION's
+#: fade long before the target is met.
+START_DAMPING = 0.01
 
 # ---- motion: second-order kinematics, trajectories, differential IK ------------------
 

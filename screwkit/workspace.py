@@ -33,6 +33,7 @@ from ._compiled import (
 )
 from ._docstrings import fill
 from .jacobians import check_rows, geometric_jacobian, manipulability
+from .tolerances import SECTION_TOL
 
 __all__ = ["Sweep", "sweep", "MAX_CONFIGURATIONS"]
 
@@ -181,7 +182,7 @@ class Sweep:
             low, high = min(low, distance.min()), max(high, distance.max())
         return float(low), float(high)
 
-    def section(self, axis="y", value=0.0, tolerance=0.01):
+    def section(self, axis="y", value=0.0, tolerance=SECTION_TOL):
         """The swept points near the plane ``axis`` = ``value``.
 
         For a sweep that includes joint 1 this cuts the solid workspace, e.g. axis 'y',

@@ -7,6 +7,9 @@ when a test file is imported (tests/test_fixtures.py checks that). conftest.py's
 
 import functools
 
+import numpy as np
+import pytest
+
 import screwkit as sk
 from screwkit import parallel
 
@@ -69,3 +72,50 @@ def delta():
 def tripteron():
     """The Tripteron of the catalogue."""
     return parallel.tripteron()
+
+
+def refusals(cases):
+    """A test that each call of ``cases`` raises its error with a message matching its
+    pattern: ``cases`` is a list of (call, error type, regular expression)."""
+
+    @pytest.mark.parametrize("call, error, match", cases)
+    def test(call, error, match):
+        with pytest.raises(error, match=match):
+            call()
+
+    return test
+
+
+def _unit(v):
+    return v / np.linalg.norm(v)
+
+
+def arm_from_axes(w, p, rng):
+    """A 6R chain from unit axes w (6, 3) through points p (6, 3) and a random home."""
+    S = np.hstack([w, np.cross(p, w)])
+    M = np.eye(4)
+    axis, angle = _unit(rng.normal(size=3)), rng.uniform(-np.pi, np.pi)
+    K = np.array(
+        [[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]]
+    )
+    M[:3, :3] = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
+    M[:3, 3] = rng.normal(size=3) * 0.3
+    return sk.Chain.from_screws(S, M)
+
+
+def random_arm(kind, rng, antiparallel=True):
+    """A random 6R arm of a structure the decomposed IK solves: 'wrist' (axes 4, 5, 6
+    meet), 'shoulder' (1, 2, 3 meet), 'parallel 234' or 'parallel 345' (three parallel
+    axes; with ``antiparallel`` the middle of 2, 3, 4 points the other way); any other
+    kind, a general 6R. Axes, points and home drawn from ``rng``."""
+    w = np.array([_unit(rng.normal(size=3)) for _ in range(6)])
+    p = rng.normal(size=(6, 3)) * 0.5
+    if kind == "wrist":
+        p[3:] = rng.normal(size=3)
+    elif kind == "shoulder":
+        p[:3] = rng.normal(size=3)
+    elif kind == "parallel 234":
+        w[1:4] = w[1] * (np.array([[1], [-1], [1]]) if antiparallel else 1)
+    elif kind == "parallel 345":
+        w[2:5] = w[2]
+    return arm_from_axes(w, p, rng)

@@ -114,3 +114,21 @@ PUMA_TABLE = [
     (0, 0, -math.pi / 2),
     (0, 0, 0),
 ]
+
+
+def rpr_mode_count(a, b, rho, samples=400_001):
+    """The real assembly modes of a 3-RPR, counted by sign changes over a dense grid of
+    the platform angle phi: for each phi, legs 1 and 2 fix the platform point 0 (two
+    linear equations after subtracting leg 0's circle), and leg 0's residual changes
+    sign at each mode. ``a``, ``b`` (3, 2): base and platform points (b_0 = 0, the
+    platform frame's origin); ``rho`` (3,): leg lengths (m). Returns an int."""
+    phi = np.linspace(-np.pi, np.pi, samples)
+    c, s = np.cos(phi), np.sin(phi)
+    rows, rhs = [], []
+    for k in (1, 2):
+        w = np.c_[c * b[k, 0] - s * b[k, 1], s * b[k, 0] + c * b[k, 1]] - a[k]
+        rows.append(2 * (w + a[0]))
+        rhs.append(rho[k] ** 2 - rho[0] ** 2 - np.sum(w * w, 1) + a[0] @ a[0])
+    q = np.linalg.solve(np.stack(rows, 1), np.stack(rhs, 1)[..., None])[..., 0]
+    f = np.sum((q - a[0]) ** 2, 1) - rho[0] ** 2
+    return int(np.sum(np.sign(f[1:]) != np.sign(f[:-1])))

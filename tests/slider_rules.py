@@ -1,4 +1,4 @@
-"""The rules every slider of the course obeys (issue 18, item 4).
+"""The rules every slider of the course obeys (screwkit/_sliders.py states them).
 
 The default lies on the slider's grid and strictly inside its range; the grid is
 anchored at 0 (both ends are multiples of the step), so 0 and round values are

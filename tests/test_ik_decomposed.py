@@ -12,6 +12,7 @@ import os
 
 import numpy as np
 import pytest
+from builders import arm_from_axes, random_arm
 
 import screwkit as sk
 from screwkit import ik
@@ -27,33 +28,6 @@ def unit(v):
 
 def wrapped(a):
     return np.angle(np.exp(1j * np.asarray(a)))
-
-
-def arm_from_axes(w, p, rng):
-    """A 6R chain from unit axes w (6, 3) through points p (6, 3) and a random home."""
-    S = np.hstack([w, np.cross(p, w)])
-    M = np.eye(4)
-    axis, angle = unit(rng.normal(size=3)), rng.uniform(-np.pi, np.pi)
-    K = np.array(
-        [[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]]
-    )
-    M[:3, :3] = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
-    M[:3, 3] = rng.normal(size=3) * 0.3
-    return sk.Chain.from_screws(S, M)
-
-
-def random_arm(kind, rng):
-    w = np.array([unit(rng.normal(size=3)) for _ in range(6)])
-    p = rng.normal(size=(6, 3)) * 0.5
-    if kind == "wrist":
-        p[3:] = rng.normal(size=3)
-    elif kind == "shoulder":
-        p[:3] = rng.normal(size=3)
-    elif kind == "parallel 234":
-        w[1:4] = w[1] * np.array([[1], [-1], [1]])  # parallel, one reversed
-    elif kind == "parallel 345":
-        w[2:5] = w[2]
-    return arm_from_axes(w, p, rng)
 
 
 # ---- the independent search ----------------------------------------------------------
@@ -316,16 +290,7 @@ def test_every_exact_eaik_solution_is_returned(kind):
     answers for an antiparallel middle axis do not reach their poses."""
     HPRobot = eaik_hp()
     rng = np.random.default_rng(RNG_SEED + 34)
-    w = np.array([unit(rng.normal(size=3)) for _ in range(6)])
-    p = rng.normal(size=(6, 3)) * 0.5
-    if kind == "wrist":
-        p[3:] = rng.normal(size=3)
-    elif kind == "shoulder":
-        p[:3] = rng.normal(size=3)
-    else:
-        first = 1 if kind == "parallel 234" else 2
-        w[first : first + 3] = w[first]
-    chain = arm_from_axes(w, p, rng)
+    chain = random_arm(kind, rng, antiparallel=False)
     S, M = chain.screw_axes(), chain.home()
     axes, points = S[:, :3], np.cross(S[:, :3], S[:, 3:])
     robot = HPRobot(

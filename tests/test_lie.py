@@ -5,6 +5,7 @@ examples."""
 import numpy as np
 import pytest
 import sympy as sp
+from builders import refusals
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -182,8 +183,7 @@ def test_twist_exp_is_exact_or_numeric():
     assert T * sp.Matrix([1, 0, 0, 1]) == sp.Matrix([0, 1, sp.pi / 20, 1])
 
 
-@pytest.mark.parametrize(
-    "call, error, words",
+test_bad_input_names_the_argument = refusals(
     [
         (
             lambda: sk.log_rotation(np.diag([1.0, 1.0, -1.0])),
@@ -202,8 +202,5 @@ def test_twist_exp_is_exact_or_numeric():
         (lambda: sk.adjoint(np.eye(3)), ValueError, "T must have shape"),
         (lambda: sk.ad([1, 2, 3]), ValueError, "twist must have shape"),
         (lambda: sk.vee(np.eye(4)), ValueError, "W must have shape"),
-    ],
+    ]
 )
-def test_bad_input_names_the_argument(call, error, words):
-    with pytest.raises(error, match=words):
-        call()

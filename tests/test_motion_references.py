@@ -15,6 +15,7 @@ import os
 
 import numpy as np
 import pytest
+from pinocchio_models import pinocchio_q
 
 import screwkit as sk
 from screwkit.motion import trajectory as tr
@@ -98,17 +99,6 @@ def test_slerp_equals_scipys():
         np.testing.assert_allclose(got, sign * expected, rtol=0, atol=1e-12)
 
 
-def _pinocchio_q(pin, model, chain, q):
-    x = pin.neutral(model)
-    for name, value in zip(chain.joint_names, q):
-        joint = model.joints[model.getJointId(name)]
-        if joint.nq == 2:  # a continuous joint: (cos, sin)
-            x[joint.idx_q : joint.idx_q + 2] = np.cos(value), np.sin(value)
-        else:
-            x[joint.idx_q] = value
-    return x
-
-
 def test_jacobian_dot_equals_pinocchios_frame_jacobian_time_variation():
     pin = reference("pinocchio")
     path = sk.urdf.data_file("ur5e.urdf")
@@ -121,7 +111,7 @@ def test_jacobian_dot_equals_pinocchios_frame_jacobian_time_variation():
     Q, dQ = rng.uniform(-np.pi, np.pi, (20, 6)), rng.uniform(-2, 2, (20, 6))
     ours = chain.geometric_jacobian_dot(Q, dQ)
     for k in range(20):
-        x = _pinocchio_q(pin, model, chain, Q[k])
+        x = pinocchio_q(pin, model, chain, Q[k])
         v = np.zeros(model.nv)
         for joint, rate in zip(joints, dQ[k]):
             v[joint.idx_v] = rate

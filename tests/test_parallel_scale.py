@@ -1,4 +1,5 @@
-"""The same mechanism or arm in any unit gives the same answers, scaled (issue 31).
+"""The same mechanism or arm in any unit gives the same answers, scaled (tolerances are
+relative to the instance's size).
 
 Every catalogue mechanism (Stewart-Gough, 3-RPR, 3-RRR, delta, Tripteron) is built
 with all its lengths times 1000 (millimetres) and times 1/100 (hectometres, a
@@ -259,8 +260,9 @@ def delta_modes_written_out(theta, unit=1.0):
 
 
 def test_the_published_delta_with_equal_cranks_has_both_modes():
-    # issue 31: cranks at -20.5 degrees put the platform 0.900 m below the base and,
-    # the mirror mode, 1.267 m above it
+    # a delta with equal cranks has two assembly modes in any unit: cranks at -20.5
+    # degrees put the platform 0.900 m below the base and, the mirror mode, 1.267 m
+    # above it
     for unit in (1 / 1000, 1):  # m, mm
         pm = flexpicker(unit)
         modes = pm.fk_all(np.full(3, math.radians(-20.5)))

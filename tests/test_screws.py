@@ -237,8 +237,8 @@ def test_square_roots_keep_their_products_exact():
         second = Twist(sp.Matrix([sp.sqrt(b), sp.sqrt(a * b), 0, 0, 0, 0]))
         assert ScrewSystem([first, second]).rank == 1
         assert ScrewSystem([first, second]).reciprocal().rank == 5
-    # nested roots are algebraic numbers too (issue 23): sqrt(10 - 2 sqrt 5) = sqrt 2
-    # sqrt(5 - sqrt 5)
+    # nested roots are algebraic numbers too (an exact rank must see them):
+    # sqrt(10 - 2 sqrt 5) = sqrt 2 sqrt(5 - sqrt 5)
     nested = [
         sp.Matrix([sp.sqrt(5 - sp.sqrt(5)), 1, 0, 0, 0, 0]),
         sp.Matrix([sp.sqrt(10 - 2 * sp.sqrt(5)), sp.sqrt(2), 0, 0, 0, 0]),

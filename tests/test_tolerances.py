@@ -1,11 +1,18 @@
 """screwkit's tolerances live in one module, named and documented, and length
 tolerances follow the instance's own size.
 
-The rule the scan enforces: outside ``screwkit/tolerances.py``, no float literal
-``x`` with ``0 < |x| < 1e-3`` appears in screwkit's code (docstrings and comments are
-not code). Such a literal is a tolerance, a step or a guard, and belongs in
-tolerances.py with its reason. Elements of a tuple or list display are data, not
-tolerances (a slider's candidate steps), and are not flagged.
+The rule the scan enforces: outside ``screwkit/tolerances.py``, no tolerance-like
+float literal appears in screwkit's code (docstrings and comments are not code):
+
+* any ``x`` with ``0 < |x| < 1e-3``: a tolerance, a step or a guard by its size alone;
+* an ``x`` with ``1e-3 <= |x| <= 0.05`` used as a tolerance is: a parameter's default
+  (``tolerance=0.01``), a keyword argument (``damping=0.01``) or a term of a comparison
+  (``abs(t) < 1e-2``).
+
+Such a literal belongs in tolerances.py with its reason. Elements of a tuple or list
+display are data, not tolerances (a slider's candidate steps), and are not flagged; nor
+are the published parameters of the catalogue (``robots.py``: a link of 0.0203 m is a
+length, not a tolerance).
 """
 
 import ast
@@ -22,30 +29,60 @@ from screwkit.tolerances import length_scale
 PACKAGE = Path(sk.__file__).resolve().parent
 
 
+#: The largest literal that is flagged when it is used as a tolerance (a default, a
+#: keyword argument, a term of a comparison); below 1e-3 every literal is.
+TOLERANCE_LIKE = 0.05
+
+#: Modules whose literals are published data, not tolerances.
+DATA_MODULES = {"robots.py"}
+
+
+def _nodes(tree, kind):
+    """The ids of the nodes within the parts of ``tree`` that ``kind`` names."""
+    found = set()
+    for node in ast.walk(tree):
+        if kind == "display" and isinstance(node, (ast.Tuple, ast.List)):
+            found.update(id(element) for element in node.elts)
+            continue
+        if kind == "display":
+            continue
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            parts = node.args.defaults + [d for d in node.args.kw_defaults if d]
+        elif isinstance(node, ast.Call):
+            parts = [keyword.value for keyword in node.keywords]
+        elif isinstance(node, ast.Compare):
+            parts = [node]
+        else:
+            continue
+        found.update(id(n) for part in parts for n in ast.walk(part))
+    return found
+
+
 def bare_tolerances(source):
-    """(line, value) of every float literal 0 < |x| < 1e-3 outside tuple/list
-    displays."""
+    """(line, value) of every tolerance-like float literal (the module's docstring)
+    outside tuple/list displays."""
     tree = ast.parse(source)
-    in_display = {
-        id(element)
-        for node in ast.walk(tree)
-        if isinstance(node, (ast.Tuple, ast.List))
-        for element in node.elts
-    }
-    return [
+    in_display, as_tolerance = _nodes(tree, "display"), _nodes(tree, "use")
+    return sorted(
         (node.lineno, node.value)
         for node in ast.walk(tree)
         if isinstance(node, ast.Constant)
         and isinstance(node.value, float)
-        and 0 < abs(node.value) < 1e-3
         and id(node) not in in_display
-    ]
+        and (
+            0 < abs(node.value) < 1e-3
+            or (1e-3 <= abs(node.value) <= TOLERANCE_LIKE and id(node) in as_tolerance)
+        )
+    )
 
 
 def scanned_files():
     for path in sorted(PACKAGE.rglob("*.py")):
         relative = path.relative_to(PACKAGE)
-        if path.name == "tolerances.py" and relative.parent == Path("."):
+        if (
+            relative.parent == Path(".")
+            and path.name in {"tolerances.py"} | DATA_MODULES
+        ):
             continue
         yield path
 
@@ -54,6 +91,16 @@ def test_the_scan_finds_a_bare_tolerance():
     source = "def f(x, tol=1e-9):\n    return abs(x) < 2.5e-12 and x != 0.5\n"
     assert bare_tolerances(source) == [(1, 1e-9), (2, 2.5e-12)]
     assert bare_tolerances("STEPS = (0.01, 0.0001)\n") == []
+    # from 1e-3 to 0.05, a literal is flagged where it is used as a tolerance
+    source = (
+        "def f(x, tolerance=0.01):\n"  # 1: a default
+        "    g(x, damping=0.01)\n"  # 2: a keyword argument
+        "    small = abs(x) < 1e-2\n"  # 3: a comparison
+        "    big = abs(x) > 2 * 0.05\n"  # 4: a term of one
+        "    return x * 0.04 + h(0.01, 0.3)\n"  # 5: arithmetic, a positional value
+    )
+    assert bare_tolerances(source) == [(1, 0.01), (2, 0.01), (3, 0.01), (4, 0.05)]
+    assert bare_tolerances("def f(x, scale=0.4, step=0.06):\n    pass\n") == []
 
 
 @pytest.mark.parametrize(
@@ -130,7 +177,7 @@ def test_the_start_configuration_scales_with_the_arm(unit):
 
 @pytest.mark.parametrize("unit", [1.0, 1000.0])
 def test_a_parallelogram_is_found_in_any_unit(unit):
-    from screwkit.viewer import _parallelograms
+    from screwkit._viewer_mechanisms import _parallelograms
 
     z = np.array([0.0, 0.0, 1.0])
     a1, a2 = np.array([0.0, 0.0, 0.0]), np.array([0.0, 0.5, 0.0]) * unit

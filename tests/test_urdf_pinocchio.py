@@ -5,19 +5,14 @@ Pinocchio (``pin``) and ``example-robot-data`` are reference packages, not the c
 ``tests/reference-requirements.txt`` installs them and CI runs this file on its own.
 """
 
-import glob
 import os
-import sys
 
 import numpy as np
 import pytest
+from pinocchio_models import INSTALL, REQUIRED, pinocchio_q, robots_folder
 
 import screwkit as sk
 import screwkit.ik.ur  # noqa: F401  (sk.ik.ur)
-
-#: CI sets SCREWKIT_REFERENCES=required: there a missing reference fails, never skips.
-REQUIRED = os.environ.get("SCREWKIT_REFERENCES") == "required"
-INSTALL = "pip install -r tests/reference-requirements.txt"
 
 if REQUIRED:
     import pinocchio as pin
@@ -25,27 +20,6 @@ else:
     pin = pytest.importorskip(
         "pinocchio", reason=f"Pinocchio is not installed: {INSTALL}"
     )
-
-
-def robots_folder():
-    """example-robot-data's robots/ folder (skipped, or failed in CI, without it)."""
-    pattern = os.path.join(
-        sys.prefix,
-        "lib",
-        "python*",
-        "site-packages",
-        "cmeel.prefix",
-        "share",
-        "example-robot-data",
-        "robots",
-    )
-    found = glob.glob(pattern)
-    if not found:
-        message = f"example-robot-data is not installed: {INSTALL}"
-        if REQUIRED:
-            pytest.fail(message)
-        pytest.skip(message)
-    return found[0]
 
 
 # (file under robots/, tip link): the four arms of the issue (UR5, not UR5e: the package
@@ -56,18 +30,6 @@ ARMS = {
     "so101": ("so_arm_description/urdf/so101.urdf", "gripper_frame_link"),
     "z1": ("z1_description/urdf/z1.urdf", "link06"),
 }
-
-
-def _pinocchio_q(model, chain, q):
-    """Pinocchio's configuration vector (neutral elsewhere) with our joints set to q."""
-    x = pin.neutral(model)
-    for name, value in zip(chain.joint_names, q):
-        joint = model.joints[model.getJointId(name)]
-        if joint.nq == 2:  # a continuous joint: (cos, sin)
-            x[joint.idx_q : joint.idx_q + 2] = np.cos(value), np.sin(value)
-        else:
-            x[joint.idx_q] = value
-    return x
 
 
 def _arm_and_model(relative, tip):
@@ -94,7 +56,7 @@ def test_fk_and_jacobian_agree_with_pinocchio(arm):
     Q = rng.uniform(low, high, (25, chain.n))
     T, J = chain.fk(Q), chain.geometric_jacobian(Q)
     for k, q in enumerate(Q):
-        x = _pinocchio_q(model, chain, q)
+        x = pinocchio_q(pin, model, chain, q)
         pin.framesForwardKinematics(model, data, x)
         reference = data.oMf[frame].homogeneous
         np.testing.assert_allclose(T[k], reference, rtol=0, atol=1e-12)
@@ -133,16 +95,17 @@ def test_vendor_urdfs_of_ur_type_arms_are_solved_in_closed_form(relative, tip):
     ],
 )
 def test_vendor_arms_get_every_ik_solution(relative, tip, fixed):
-    """Issue 34 on vendor URDFs: the Kinova Jaco 2 (6R) and, with joint 3 held, the
-    xArm 7 and the Panda (general 6R arms left). Everything is checked by Pinocchio:
-    the poses are its forward kinematics, each solution must meet its pose there, the
-    generating configuration must be among them, and no solution that Newton on
-    Pinocchio's kinematics reaches from 30 random starts may be missing."""
+    """Every IK solution of any 6R arm, on vendor URDFs: the Kinova Jaco 2 (6R) and,
+    with joint 3 held, the xArm 7 and the Panda (general 6R arms left). Everything is
+    checked by Pinocchio: the poses are its forward kinematics, each solution must meet
+    its pose there, the generating configuration must be among them, and no solution
+    that Newton on Pinocchio's kinematics reaches from 30 random starts may be
+    missing."""
     chain, model, data, frame, columns = _arm_and_model(relative, tip)
     free = [j for j in range(chain.n) if j != fixed]
 
     def pose(q):
-        pin.framesForwardKinematics(model, data, _pinocchio_q(model, chain, q))
+        pin.framesForwardKinematics(model, data, pinocchio_q(pin, model, chain, q))
         return data.oMf[frame].homogeneous.copy()
 
     def newton(q, T):
@@ -150,7 +113,7 @@ def test_vendor_arms_get_every_ik_solution(relative, tip, fixed):
         kept; the solution, or None."""
         q = q.copy()
         for _ in range(100):
-            x = _pinocchio_q(model, chain, q)
+            x = pinocchio_q(pin, model, chain, q)
             pin.framesForwardKinematics(model, data, x)
             error = pin.log6(data.oMf[frame].inverse() * pin.SE3(T)).vector
             if np.linalg.norm(error) < 1e-13:

@@ -14,6 +14,7 @@ import re
 import numpy as np
 import pytest
 import sympy as sp
+from builders import refusals
 
 import screwkit as sk
 from screwkit import _sliders, viewer
@@ -216,8 +217,7 @@ def test_a_chain_with_no_links_is_refused():
         viewer.robot_viewer(empty)
 
 
-@pytest.mark.parametrize(
-    ("call", "error", "message"),
+test_bad_input_is_refused_with_the_reason = refusals(
     [
         (
             lambda: viewer.robot_viewer("puma"),
@@ -284,11 +284,8 @@ def test_a_chain_with_no_links_is_refused():
             ValueError,
             "low must be a multiple of step",
         ),
-    ],
+    ]
 )
-def test_bad_input_is_refused_with_the_reason(call, error, message):
-    with pytest.raises(error, match=message):
-        call()
 
 
 def test_a_pose_outside_the_limits_is_refused_with_the_joint_named():
@@ -397,7 +394,7 @@ def test_stepped_figure_renders_at_a_given_dpi_and_refuses_a_bad_one():
         viewer.stepped_figure(draw, "pick", choices=["a"], dpi=-80)
 
 
-# ---- slider grids (issue 18, item 4; tests/test_sliders.py checks the chapters) ----
+# ---- slider grids (the rules of tests/slider_rules.py; test_sliders the chapters) ---
 
 
 def test_slider_grid_holds_default_and_zero():
@@ -714,8 +711,7 @@ def test_trajectory_takes_a_dict_or_follow_path_results_and_unwraps_turns():
     assert model["paths"][0]["q"] == [[3.0], [-3.0]]
 
 
-@pytest.mark.parametrize(
-    ("call", "error", "message"),
+test_a_bad_trajectory_is_refused_with_the_reason = refusals(
     [
         (
             lambda: viewer.trajectory_viewer(sk.robots.puma560(), "q"),
@@ -779,11 +775,8 @@ def test_trajectory_takes_a_dict_or_follow_path_results_and_unwraps_turns():
             ValueError,
             "paths must hold 1 to 4 trajectories, got 5",
         ),
-    ],
+    ]
 )
-def test_a_bad_trajectory_is_refused_with_the_reason(call, error, message):
-    with pytest.raises(error, match=message):
-        call()
 
 
 def test_the_time_slider_obeys_the_slider_rules_but_starts_at_its_first_time():

@@ -2,12 +2,12 @@
 code, and against example-robot-data's URDFs through Pinocchio where they exist (the
 Panda; the UR5 for the UR's DH frames, as the package ships no UR5e)."""
 
-import glob
 import os
-import sys
 
 import numpy as np
+import pinocchio_models
 import pytest
+from pinocchio_models import INSTALL
 from references import dh_modified, dh_standard
 
 import screwkit as sk
@@ -111,27 +111,13 @@ def test_published_poses_at_zero():
 
 
 def robots_folder():
-    found = glob.glob(
-        os.path.join(
-            sys.prefix,
-            "lib",
-            "python*",
-            "site-packages",
-            "cmeel.prefix",
-            "share",
-            "example-robot-data",
-            "robots",
-        )
-    )
-    if pin is None or not found:
-        message = (
-            "Pinocchio and example-robot-data are not installed: "
-            "pip install -r tests/reference-requirements.txt"
-        )
+    """example-robot-data's robots/ folder, with Pinocchio to read its URDFs."""
+    if pin is None:
+        message = f"Pinocchio is not installed: {INSTALL}"
         if REQUIRED:
             pytest.fail(message)
         pytest.skip(message)
-    return found[0]
+    return pinocchio_models.robots_folder()
 
 
 def pinocchio_poses(path, Q, frame, base_frame=None):

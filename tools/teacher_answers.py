@@ -35,7 +35,7 @@ from mdit_py_plugins.dollarmath import dollarmath_plugin
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from convert_exercises import read_exercises  # noqa: E402
+from exercise_syntax import read_exercises  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # the keys of the assessed exercises, which the package does not hold

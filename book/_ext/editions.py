@@ -1,7 +1,7 @@
 """Two editions of one book: self-study (every solution, every key) and course.
 
 The chapters write their exercises with sphinx-exercise's directives
-(``exercise``/``exercise-start``, ``solution``; tools/convert_exercises.py), labelled
+(``exercise``/``exercise-start``, ``solution``; tools/exercise_syntax.py), labelled
 ``CHAPTER-exercise-N``.
 
 * Numbers: Sphinx numbers enumerable nodes across the whole book when the table of

@@ -73,6 +73,7 @@ from ..tolerances import (
     IK_GENERAL_EXPLAINED_TOL,
     IK_GENERAL_LEADING_TOL,
     IK_GENERAL_NULL_TOL,
+    IK_GENERAL_POLISH_TOL,
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
@@ -80,7 +81,7 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _rotations_about, _wrap_angle
+from ..transforms import _cross, _cross_last, _rotations_about, _wrap_angle
 
 __all__ = ["GeneralIK", "general_6r_ik"]
 
@@ -153,15 +154,6 @@ class GeneralIK:
     def __post_init__(self):
         if self.singular is None:
             self.singular = np.zeros(len(self.Q), bool)
-
-
-def _cross3(a, b):
-    """a x b along the last axis (..., 3): np.cross without its axis handling, which
-    costs more than the product for the few small arrays here."""
-    return a[..., _NEXT] * b[..., _LAST] - a[..., _LAST] * b[..., _NEXT]
-
-
-_NEXT, _LAST = [1, 2, 0], [2, 0, 1]
 
 
 # ---- the loop's two sides, for a batch ----------------------------------------------
@@ -462,7 +454,7 @@ def _adjoint_inverse(G, S):
     (n, k, 6)."""
     R, p = G[:, None, :3, :3], G[:, None, :3, 3]
     w = (S[:, None, :3] @ R)[..., 0, :]  # R^T omega
-    v = ((S[:, 3:] - _cross3(p, S[:, :3]))[..., None, :] @ R)[..., 0, :]
+    v = ((S[:, 3:] - _cross_last(p, S[:, :3]))[..., None, :] @ R)[..., 0, :]
     return np.concatenate([w, v], axis=-1)
 
 
@@ -483,7 +475,7 @@ def _formulation(S, G, index):
     else:
         screws = screws[None]
     w = screws[..., :3]
-    r = _cross3(w, screws[..., 3:])
+    r = _cross_last(w, screws[..., 3:])
     name = "joints " + ("6..1" if backwards else "1..6")
     return (
         name + (f" shifted by {k}" if k else ""),
@@ -524,7 +516,7 @@ def _poe(w, r, home, q):
     J = np.empty((len(q), 6, 6))
     for i in range(6):
         wi, ri = R @ w[i], R @ r[i] + p
-        J[:, :3, i], J[:, 3:, i] = wi, _cross3(ri, wi)
+        J[:, :3, i], J[:, 3:, i] = wi, _cross_last(ri, wi)
         Ri = _rotations_about(w[i], q[:, i])
         p = p + (R @ (r[i] - Ri @ r[i])[..., None])[..., 0]
         R = R @ Ri
@@ -543,7 +535,7 @@ def _error(w, r, home, targets, q):
         axis=1,
     )
     omega /= 2
-    return np.concatenate([omega, targets[:, :3, 3] - p - _cross3(omega, p)], 1), J
+    return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
 
 
 def _polish(w, r, home, targets, q):
@@ -554,7 +546,7 @@ def _polish(w, r, home, targets, q):
     active = np.arange(len(q))
     for _ in range(NEWTON_STEPS):
         e, J = _error(w, r, home, targets[active], q[active])
-        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_ACCEPT_TOL * 1e-3
+        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
         active, e, J = active[moving], e[moving], J[moving]
         if not len(active):
             break
@@ -701,7 +693,8 @@ def _solve(chain, T):
     home, T_scaled = M.copy(), T.copy()
     home[:3, 3] /= scale
     T_scaled[:, :3, 3] /= scale
-    Sn = np.concatenate([z, _cross3(o / scale, z)], axis=1)  # unit screws (w; r x w)
+    # unit screws (w; r x w)
+    Sn = np.concatenate([z, _cross_last(o / scale, z)], axis=1)
     G = T_scaled @ _inverse(home)
     n = len(T)
     answers, reasons, fallback = [None] * n, [[] for _ in range(n)], {}

@@ -1,4 +1,4 @@
-"""Bad input across the public API (issue 23): lie, transforms, screws, chains,
+"""Bad input across the public API: lie, transforms, screws, chains,
 jacobians, the catalogue, notation and display, ik and more. Rows in the format of
 rows.py; robots are built on first use, not at import."""
 

@@ -208,7 +208,7 @@ PARALLEL = [
         ValueError,
         "base_radius",
     ),
-    # issue 31, item 7: arguments that slipped through
+    # arguments that once slipped through unchecked
     row("fk-tol-str", lambda: stewart().fk([1.2] * 6, tol="1e-9"), TypeError, "tol"),
     row("fk-tol-nan", lambda: stewart().fk([1.2] * 6, tol=np.nan), ValueError, "tol"),
     row("fk-tol-negative", lambda: stewart().fk([1.2] * 6, tol=-1), ValueError, "tol"),

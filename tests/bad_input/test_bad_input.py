@@ -22,7 +22,7 @@ import screwkit
 HERE = Path(__file__).parent
 TABLES = sorted(path.stem for path in HERE.glob("table_*.py"))
 
-#: Rows held when the five old files became one contract (issue 32): 143 (api) + 286
+#: Rows held when the five old files became one contract: 143 (api) + 286
 #: (core) + 34 (ik) + 72 (modules) + 79 (screws, without its one valid control call,
 #: now a test of test_valid_input.py); the tables may grow, never shrink unnoticed.
 ROWS_WHEN_MERGED = 614

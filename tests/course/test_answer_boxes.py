@@ -4,15 +4,12 @@ current key, and the page's JavaScript (in Node) gives the same verdict and mess
 
 import json
 import re
-import shutil
-import subprocess
 from pathlib import Path
 
 import pytest
+from node_verdicts import NODE, node_verdicts
 
 from screwkit import exercises
-
-NODE = shutil.which("node")
 
 
 def box_key(chapter, number):
@@ -60,21 +57,7 @@ BOX_TEXTS += ["1, 2, 3", "0.1 m, 0.2 m, 0.3 m", "2 rad/s", "1,5", "2", "1 m"]
 @pytest.mark.skipif(NODE is None, reason="needs Node.js")
 def test_stored_boxes_answer_in_node_as_in_python():
     boxes = stored_boxes()
-    program = (
-        "global.window = {}; global.document = {querySelectorAll: () => []};\n"
-        + exercises.exercises_script()
-        + f"\nconst boxes = {json.dumps(boxes)};\n"
-        f"const texts = {json.dumps(BOX_TEXTS)};\n"
-        "const out = [];\n"
-        "for (const [c, n, key] of boxes) for (const t of texts) {\n"
-        "  const v = window.screwkitExercises.verdict(t, key);\n"
-        "  out.push([v.correct, v.message]); }\n"
-        "console.log(JSON.stringify(out));\n"
-    )
-    result = subprocess.run(
-        [NODE, "-e", program], capture_output=True, text=True, timeout=60, check=True
-    )
-    page = iter(json.loads(result.stdout))
+    page = iter(node_verdicts([[t, key] for _, _, key in boxes for t in BOX_TEXTS]))
     for chapter, number, _ in boxes:
         for text in BOX_TEXTS:
             correct, message = next(page)

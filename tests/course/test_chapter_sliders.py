@@ -1,4 +1,4 @@
-"""Every slider of the course's chapters behaves (issue 18, item 4), by the rules of
+"""Every slider of the course's chapters behaves, by the rules of
 tests/slider_rules.py.
 
 The sliders are collected from the chapters as executed: every in-page figure stores its

@@ -302,7 +302,8 @@ def test_public_names_dunders_and_other_packages_privates_pass(chapter):
 
 def test_the_notation_page_lists_the_alternatives_it_does_not_use():
     alternatives = check_sources.notation_alternatives()
-    # three ways of writing a joint screw, the DH link transform as A: issue 30's list
+    # three ways of writing a joint screw, the DH link transform as A: one symbol per
+    # concept (book/notation.md)
     for symbol in (r"\xi", r"\$", r"{}^{i-1}A_i", r"\operatorname{Ad}"):
         assert symbol in alternatives
     assert alternatives[r"\xi"].startswith("screw")

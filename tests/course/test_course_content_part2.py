@@ -1,7 +1,7 @@
 """The course's content promises for the Jacobian, Kawasaki, redundancy and mobility
 chapters, the course plan and the references, read from the sources and the stored
-notebooks: exercises with their own solutions and answer boxes, the slips of issue 26
-fixed, the plan's weeks, every cited key in the bibliography."""
+notebooks: exercises with their own solutions and answer boxes, slips once
+found in the prose fixed, the plan's weeks, every cited key in the bibliography."""
 
 import json
 import pathlib

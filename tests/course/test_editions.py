@@ -1,9 +1,10 @@
-"""The two editions: the exercises' conversion, and what the course edition takes out.
+"""The two editions: the exercises as the tools read them, and what the course edition
+takes out.
 
 Building the book takes minutes, so nothing is built here: .ci/check_course_edition.py
 checks the built course edition (``make book EDITION=course``, in .ci/run). These tests
-check the pieces it is made of on small inputs written here: the conversion of the
-old exercise syntax (tools/convert_exercises.py), the stripping of assessed keys and of
+check the pieces it is made of on small inputs written here: the reading of the
+exercises (tools/exercise_syntax.py), the stripping of assessed keys and of
 solutions (book/_ext/editions.py), and that book/assessed.yml lists exercises that
 exist and have an answer box.
 """
@@ -14,49 +15,20 @@ import sys
 from pathlib import Path
 
 import pytest
-from exercise_syntax import SOLUTION, SOLUTION_DIRECTIVE, exercise_directive, old_syntax
+from exercise_syntax import (
+    SOLUTION,
+    SOLUTION_DIRECTIVE,
+    exercise_directive,
+    old_syntax,
+    read_exercises,
+)
 
 from screwkit import exercises
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "book" / "_ext"))
 
-import convert_exercises  # noqa: E402
 import editions  # noqa: E402
-
-OLD = """# A chapter
-
-Text with **bold** and **2.** in the middle of a line.
-
-## Exercises
-
-Some words about the exercises.
-
-**1.** *(by hand)* Show that $a = b$.
-It has two lines.
-
-:::{admonition} Solution
-:class: dropdown
-Because $a$ is $b$.
-```python
-print(":::")   # a colon fence inside code is code
-```
-:::
-
-**2.** *(by hand, self-checking)* What is $h$?
-
-```{code-cell} ipython3
-sk.exercises.answer_box("screws", 4)
-```
-
-:::{admonition} Solution
-:class: dropdown
-$h = 0.5$.
-:::
-
-**3.** *(implement it yourself)* Write `my_exp`, no solution yet.
-"""
 
 NEW = """# A chapter
 
@@ -109,63 +81,37 @@ $h = 0.5$.
 """
 
 
-def test_the_old_syntax_becomes_exercise_and_solution_directives():
-    assert convert_exercises.convert(OLD, "demo") == NEW
-
-
-def test_the_chapter_tests_read_the_converted_exercises():
-    # tests/course/exercise_syntax.py, with which the chapter tests read the sources,
-    # reads each exercise the conversion writes as its number and statement
-    converted = convert_exercises.convert(OLD, "demo")
-    assert exercise_directive("demo").split(converted)[1::2] == ["1", "2", "3"]
-    assert exercise_directive("screws").search(converted) is None
-    as_old = old_syntax(converted)
+def test_the_chapter_tests_read_each_exercise_as_its_number_and_statement():
+    assert exercise_directive("demo").split(NEW)[1::2] == ["1", "2", "3"]
+    assert exercise_directive("screws").search(NEW) is None
+    as_old = old_syntax(NEW)
     assert "\n**1.** *(by hand)* Show that $a = b$.\n" in as_old
     assert "\n**2.** *(by hand, self-checking)* What is $h$?\n" in as_old
     assert "\n**3.** *(implement it yourself)* Write `my_exp`" in as_old
-    assert len(SOLUTION_DIRECTIVE.findall(converted)) == 2
-    assert len(SOLUTION.findall(converted)) == len(SOLUTION.findall(OLD)) == 2
+    assert len(SOLUTION_DIRECTIVE.findall(NEW)) == len(SOLUTION.findall(NEW)) == 2
 
 
-def test_the_conversion_leaves_converted_text_alone():
-    assert convert_exercises.convert(NEW, "demo") == NEW
-
-
-def test_a_chapter_with_old_and_new_exercises_converts_only_the_old():
-    # a helper's new exercise 4 in the old syntax, merged after the conversion
-    mixed = NEW + "\n**4.** *(by hand)* One more.\n\n:::{admonition} Solution\n"
-    mixed += ":class: dropdown\nYes.\n:::\n"
-    converted = convert_exercises.convert(mixed, "demo")
-    assert converted.startswith(NEW)
-    assert ":label: demo-exercise-4" in converted and "**4.**" not in converted
-    assert convert_exercises.convert(converted, "demo") == converted
-
-
-def test_text_outside_the_exercises_section_is_unchanged():
-    text = "**1.** not an exercise\n\n## Summary\n\n**2.** nor this\n"
-    assert convert_exercises.convert(text, "demo") == text
-    tail = OLD + "\n## After\n\n**9.** stays\n"
-    converted = convert_exercises.convert(tail, "demo")
-    assert converted.endswith("## After\n\n**9.** stays\n")
-
-
-def test_read_exercises_gives_the_same_exercises_in_either_syntax():
-    old = convert_exercises.read_exercises(OLD, "demo")
-    assert old == convert_exercises.read_exercises(NEW, "demo")
-    assert [e["number"] for e in old] == [1, 2, 3]
-    assert old[0]["statement"] == "*(by hand)* Show that $a = b$.\nIt has two lines."
-    assert old[1]["cells"][1] == 'sk.exercises.answer_box("screws", 4)'
-    assert old[1]["solution"] == "$h = 0.5$."
-    assert old[2]["solution"] is None
+def test_read_exercises_gives_number_statement_cells_and_solution():
+    found = read_exercises(NEW, "demo")
+    assert [e["number"] for e in found] == [1, 2, 3]
+    assert found[0]["statement"] == "*(by hand)* Show that $a = b$.\nIt has two lines."
+    assert found[0]["solution"].endswith(
+        'print(":::")   # a colon fence inside code is code\n```'
+    )
+    assert found[1]["cells"][1] == 'sk.exercises.answer_box("screws", 4)'
+    assert found[1]["solution"] == "$h = 0.5$."
+    assert found[2]["solution"] is None
 
 
 @pytest.mark.parametrize("path", sorted((ROOT / "notebooks").glob("*.md")))
-def test_every_chapter_is_converted_and_numbered_from_one(path):
+def test_every_chapter_numbers_its_exercises_from_one(path):
     text = path.read_text(encoding="utf-8")
-    assert convert_exercises.convert(text, path.stem) == text, "run the conversion"
-    found = convert_exercises.read_exercises(text, path.stem)
+    found = read_exercises(text, path.stem)
     assert [e["number"] for e in found] == list(range(1, len(found) + 1))
     assert all(e["label"] == f"{path.stem}-exercise-{e['number']}" for e in found)
+    # no exercise left in the syntax the chapters were converted from
+    exercises_section = text.split("\n## Exercises", 1)[-1]
+    assert not re.search(r"^\*\*\d+\.\*\*", exercises_section, re.M)
 
 
 def box_html(chapter, number):

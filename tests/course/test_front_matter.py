@@ -187,7 +187,7 @@ def test_sections_in_reads_every_chapter_of_a_list():
         ("The paper, checked", "mobility"),
         ("Other", "puma_ik"),
     ]
-    # the week 15 of issue 30, which listed chapters without that section
+    # the plan's week 15 once listed chapters without that section
     assert not any(h.startswith("The paper, checked") for h in headings("puma_ik"))
 
 

@@ -1,4 +1,4 @@
-"""The parallel chapter is a lecture (issue 30, item 1): it derives before it calls,
+"""The parallel chapter is a lecture: it derives before it calls,
 shows its mathematics, and asks the student to implement and to check.
 
 Read from the chapter's source, notebooks/parallel_kinematics.md.
