@@ -1,7 +1,13 @@
 """Independent recomputations of every exercise's answer key, one module per group of
 chapters; importing the package registers them all in ``REFERENCES``."""
 
-from . import first_chapters, later_chapters, motion_in_time, parallel_kinematics
+from . import (
+    first_chapters,
+    later_chapters,
+    lines,
+    motion_in_time,
+    parallel_kinematics,
+)
 from .registry import REFERENCES, all_keys, key, value
 
 __all__ = [
@@ -10,6 +16,7 @@ __all__ = [
     "first_chapters",
     "key",
     "later_chapters",
+    "lines",
     "motion_in_time",
     "parallel_kinematics",
     "value",
