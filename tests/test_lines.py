@@ -495,3 +495,26 @@ def test_names_survive_rigid_motions_and_units(name):
             v[3:] *= scale
             moved.append(Line(v).transform(T))
         assert dependency(moved).name == name
+
+
+def test_parabolic_and_elliptic_congruences_by_construction():
+    """Rank 4 whose reciprocal 2-system holds one line (parabolic) or none (elliptic).
+
+    Parabolic: lines through (0, 0, t) meeting the z axis and reciprocal to the screw of
+    pitch h = 2 on the x axis: with direction d, h d_x - t d_y = 0. Elliptic: lines
+    reciprocal to the pitch-1 screws on the x and y axes: m_x = -w_x, m_y = -w_y and
+    m_z = (w_x^2 + w_y^2) / w_z from w . m = 0."""
+    h = 2
+    parabolic = [
+        Line.from_point_direction([0, 0, t], [dx, R(h * dx, t), dz])
+        for t, dx, dz in [(1, 1, 0), (2, 1, 1), (-1, 2, 1), (3, 1, -2), (R(1, 2), 1, 3)]
+    ]
+    result = dependency(parabolic)
+    assert (result.rank, result.name) == (4, "parabolic congruence")
+    assert intersection(result.data["line"], Line([0, 0, 1, 0, 0, 0])) == "same line"
+    elliptic = [
+        Line([wx, wy, wz, -wx, -wy, R(wx**2 + wy**2, wz)])
+        for wx, wy, wz in [(1, 0, 1), (0, 1, 1), (1, 1, 2), (2, -1, 1), (1, 3, -1)]
+    ]
+    result = dependency(elliptic)
+    assert (result.rank, result.name) == (4, "elliptic congruence")
