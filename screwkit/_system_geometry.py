@@ -359,14 +359,16 @@ def classify(system):
     ]
     pitches += [sp.oo if exact else np.inf] * k
     name, words = _words(target.rank, k, groups, complete, exact)
+    if target.kind.noun == "wrench":  # a wrench of infinite pitch is a couple
+        words = _as_wrenches(words)
     if n >= 4:
         name = _RECIPROCAL_NAMES.get(name, "")
         words = (
             f"the screws reciprocal to a {target.rank}-system ({words}); its "
             "principal pitches are listed"
         )
-    if system.kind.noun == "wrench":  # a wrench of infinite pitch is a couple
-        name, words = _as_wrenches(name), _as_wrenches(words)
+    if system.kind.noun == "wrench":
+        name = _as_wrenches(name)
     return Classification(n, type_, k, pitches, name, words)
 
 
