@@ -78,3 +78,120 @@ def _close_figures():
     plt = sys.modules.get("matplotlib.pyplot")
     if plt is not None:
         plt.close("all")
+
+
+# ---- the test tiers: `make test` runs the fast one, `make test-all` every one --------
+#
+# The slow tiers, in this one place: each is a marker (registered in pyproject.toml),
+# why the tier is slow or needs something, and the node ids of its tests (fnmatch
+# patterns). `pytest --tier fast` (make test) leaves them out and says how many it left
+# out and why; `--tier slow` runs only them; `--tier all` (the default, and make
+# test-all) runs every test. A pattern that matches nothing in a file that was
+# collected is an error (a renamed test would otherwise move to the fast tier unseen).
+SLOW_TIERS = {
+    "certificates": (
+        "rank certificates checked with 60-digit evaluation",
+        ["tests/test_certificates.py::*"],
+    ),
+    "ranks60": (
+        "exact ranks against a 60-digit mpmath rank",
+        [
+            "tests/test_exact.py::test_related_angles_agree_with_a_60_digit_rank",
+            "tests/test_exact.py::test_nested_radicals_agree_with_a_60_digit_rank",
+        ],
+    ),
+    "network": (
+        "Binder's pip resolve, which needs PyPI",
+        ["tests/course/test_binder.py::test_binder_requirements_resolve_*"],
+    ),
+    "references": (
+        "reference packages (Pinocchio, Robotics Toolbox, EAIK, msolve)",
+        [
+            "tests/test_urdf_pinocchio.py::*",
+            "tests/test_zoo.py::*",
+            "tests/test_motion_references.py::*",
+            "tests/test_parallel_proven.py::*",
+        ],
+    ),
+    "browser": (
+        "headless Chromium",
+        [
+            "tests/test_exercises.py::test_answer_boxes_answer_in_the_browser",
+            "tests/course/test_answer_keys.py::test_stored_chapter_boxes_answer_in_*",
+            "tests/course/test_teacher_answers.py::test_answers_html_typesets_*",
+        ],
+    ),
+    "slow": (
+        "slow sweeps (IK over many poses, large searches)",
+        [],
+    ),
+}
+TIERS = ("fast", "slow", "all")
+
+
+def pytest_addoption(parser):
+    parser.addoption(
+        "--tier",
+        choices=TIERS,
+        default="all",
+        help="fast: leave out the slow tiers (conftest.py SLOW_TIERS; make test); "
+        "slow: only them; all: every test (the default; make test-all)",
+    )
+
+
+def _tier_of(nodeid):
+    from fnmatch import fnmatchcase
+
+    for marker, (_, patterns) in SLOW_TIERS.items():
+        for pattern in patterns:
+            if fnmatchcase(nodeid, pattern) or fnmatchcase(nodeid, pattern + "[[]*"):
+                return marker, pattern
+    return None, None
+
+
+def pytest_collection_modifyitems(config, items):
+    import pytest
+
+    used, files = set(), {item.nodeid.split("::")[0] for item in items}
+    kept, left_out = [], []
+    for item in items:
+        marker, pattern = _tier_of(item.nodeid)
+        if marker:
+            used.add(pattern)
+            item.add_marker(getattr(pytest.mark, marker))
+        slow = marker is not None
+        tier = config.getoption("tier")
+        (
+            left_out
+            if (tier == "fast" and slow) or (tier == "slow" and not slow)
+            else kept
+        ).append(item)
+    stale = [
+        pattern
+        for _, patterns in SLOW_TIERS.values()
+        for pattern in patterns
+        if pattern.split("::")[0] in files and pattern not in used
+    ]
+    if stale:
+        raise pytest.UsageError(
+            "conftest.py SLOW_TIERS: no collected test matches " + ", ".join(stale)
+        )
+    if left_out:
+        config.hook.pytest_deselected(items=left_out)
+        items[:] = kept
+    config._screwkit_left_out = left_out
+
+
+def pytest_terminal_summary(terminalreporter, config):
+    left_out = getattr(config, "_screwkit_left_out", [])
+    if not left_out or config.getoption("tier") != "fast":
+        return
+    counts = {}
+    for item in left_out:
+        marker, _ = _tier_of(item.nodeid)
+        counts[marker] = counts.get(marker, 0) + 1
+    terminalreporter.section(
+        "left out by --tier fast (make test); make test-all runs them"
+    )
+    for marker, count in counts.items():
+        terminalreporter.write_line(f"{count:5d} {marker}: {SLOW_TIERS[marker][0]}")

@@ -2,22 +2,26 @@
 chapters; importing the package registers them all in ``REFERENCES``."""
 
 from . import (
+    configuration_space,
     first_chapters,
     later_chapters,
     lines,
     motion_in_time,
     parallel_kinematics,
+    statics,
 )
 from .registry import REFERENCES, all_keys, key, value
 
 __all__ = [
     "REFERENCES",
     "all_keys",
+    "configuration_space",
     "first_chapters",
     "key",
     "later_chapters",
     "lines",
     "motion_in_time",
     "parallel_kinematics",
+    "statics",
     "value",
 ]

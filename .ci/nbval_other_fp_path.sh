@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Strict nbval over every chapter a second time, on another floating-point path: NumPy
+# with the CPU's widest dispatched SIMD set turned off (NPY_DISABLE_CPU_FEATURES, chosen
+# by .ci/fp_path.py: AVX-512 where the CPU has it, else AVX2/FMA3). A stored output that
+# depends on the last digits of a sum, a sin or a tie then fails here, in CI, rather
+# than on a student's machine with another CPU.
+# Usage: [PYTHON=.venv/bin/python] .ci/nbval_other_fp_path.sh [pytest arguments, e.g.
+# notebooks/poe.ipynb; default notebooks]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+PY=${PYTHON:-.venv/bin/python}
+
+"$PY" -m pytest -q -p no:cacheprovider .ci/test_fp_path.py  # the rule, on this machine too
+disable=$("$PY" .ci/fp_path.py)
+if [ -z "$disable" ]; then
+  echo "nbval_other_fp_path: NumPy dispatches no SIMD set on this CPU; one path only, skipped"
+  exit 0
+fi
+export NPY_DISABLE_CPU_FEATURES="$disable"
+echo "nbval_other_fp_path: NPY_DISABLE_CPU_FEATURES=\"$disable\""
+# the variable really changes NumPy's dispatch, in this Python and in a notebook kernel
+"$PY" .ci/fp_path.py --check
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+"$PY" - "$tmp/kernel_sees_it.ipynb" <<'EOF'
+import sys
+import nbformat
+check = ("import os, sys\n"
+         "sys.path.insert(0, os.path.join(os.environ['FP_PATH_ROOT'], '.ci'))\n"
+         "import fp_path\n"
+         "assert fp_path.main(['--check']) == 0")
+nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(check)])
+nbformat.write(nb, sys.argv[1])
+EOF
+FP_PATH_ROOT=$PWD "$PY" -m pytest --nbval-lax "$tmp/kernel_sees_it.ipynb" -p no:cacheprovider -q \
+  --rootdir "$tmp" >"$tmp/kernel.log" 2>&1 || { cat "$tmp/kernel.log"; exit 1; }
+[ $# -gt 0 ] || set -- notebooks
+"$PY" -m pytest --nbval --nbval-sanitize-with .nbval_sanitize.cfg -p no:cacheprovider -q "$@"
