@@ -88,6 +88,7 @@ class _Float:
     def __init__(self, tol):
         self.tol = tol
         self.K = K
+        self.size = 1.0
 
     def zero(self, x):
         return abs(x) <= self.tol
@@ -138,7 +139,9 @@ class _Float:
         return x
 
     def fmt(self, x):
-        return f"{float(x):.4g}"
+        # words only: round-off below the tolerance (times the lines' size) reads as 0
+        x = float(x)
+        return "0" if abs(x) <= self.tol * self.size else f"{x:.4g}"
 
 
 def _skew_sp(w):
@@ -249,6 +252,7 @@ def classify(vectors, exact, tol):
     name, data, words = _name(r, S, R, ar)
     if not exact:
         data = _rescale(data, L)
+        ar.size = L
         words = _words_rescaled(r, name, data, ar) or words
     return r, name, data, words
 

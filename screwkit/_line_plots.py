@@ -133,7 +133,7 @@ def draw_configuration(ax, lines, length=2.0, size=1.0):
 
     Returns
     -------
-    Dependency
+    screwkit.lines.Dependency
         The rank and the named configuration drawn.
     """
     _check_3d(ax)
@@ -193,8 +193,9 @@ def draw_cylindroid(ax, system, radius=1.0, steps=90, cmap="viridis"):
 
     Returns
     -------
-    matplotlib.collections.LineCollection-like
-        The 3D lines drawn (for a colorbar: ``ax.figure.colorbar(result, ax=ax)``).
+    matplotlib.collections.LineCollection
+        The 3D lines drawn, a ``Line3DCollection`` (for a colorbar:
+        ``ax.figure.colorbar(result, ax=ax)``).
     """
     from matplotlib import colormaps  # noqa: PLC0415 (display layer)
     from mpl_toolkits.mplot3d.art3d import Line3DCollection  # noqa: PLC0415

@@ -72,7 +72,8 @@ class Classification(NamedTuple):
     name : str
         The familiar name when there is one ('planar motion', 'spherical motion',
         'Schoenflies motion', 'spatial translations', 'general cylindroid', ...), else
-        ''.
+        ''; for a wrench system couples stand for translations ('planar couples',
+        'planar-motion type').
     description : str
         The special geometry in words.
     """
@@ -358,13 +359,30 @@ def classify(system):
     ]
     pitches += [sp.oo if exact else np.inf] * k
     name, words = _words(target.rank, k, groups, complete, exact)
+    if target.kind.noun == "wrench":  # a wrench of infinite pitch is a couple
+        words = _as_wrenches(words)
     if n >= 4:
         name = _RECIPROCAL_NAMES.get(name, "")
         words = (
             f"the screws reciprocal to a {target.rank}-system ({words}); its "
             "principal pitches are listed"
         )
+    if system.kind.noun == "wrench":
+        name = _as_wrenches(name)
     return Classification(n, type_, k, pitches, name, words)
+
+
+def _as_wrenches(text):
+    """The words of a twist system said of wrenches: couples for translations, and a
+    motion's name as the name of the type."""
+    text = text.replace("translations", "couples").replace("translation", "couple")
+    for twist, wrench in (
+        ("rotations about", "forces along"),
+        ("a rotation about", "a force through"),
+        ("(a rotation)", "(a force)"),
+    ):
+        text = text.replace(twist, wrench)
+    return text.replace(" motion", "-motion type")
 
 
 _RECIPROCAL_NAMES = {

@@ -25,9 +25,10 @@ import sympy as sp
 from . import _certificates, _exact, _numeric, _system_geometry
 from ._checks import describe
 from ._docstrings import fill
+from ._system_geometry import Classification, PrincipalScrews
 from .screws import Screw, Twist, Wrench
 
-__all__ = ["ScrewSystem"]
+__all__ = ["Classification", "PrincipalScrews", "ScrewSystem"]
 
 _OTHER = {Twist: Wrench, Wrench: Twist, Screw: Screw}
 
@@ -300,7 +301,8 @@ class ScrewSystem:
         The pitch of a member x = B c is (c^T A c) / (c^T D c) with D = W^T W (W the
         direction rows of the basis B) and A the symmetric part of W^T V (V the moment
         rows); the principal screws are the generalised eigenvectors of A c = h D c
-        (:mod:`screwkit._system_geometry`), exact for exact screws.
+        (the kernel is the private ``screwkit._system_geometry``), exact for exact
+        screws.
 
         Returns
         -------
@@ -354,7 +356,7 @@ class ScrewSystem:
         -------
         Classification
             ``order``, ``type`` (such as '3-IIIA', see
-            :class:`~screwkit._system_geometry.Classification`), ``translations``,
+            :class:`Classification`), ``translations``,
             ``pitches``, ``name`` ('planar motion', 'spherical motion', ...) and
             ``description``.
 

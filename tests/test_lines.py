@@ -430,3 +430,91 @@ def test_dependency_of_screw_systems_of_lines():
         "star",
         sp.Matrix([0, 0, 1]),
     )
+
+
+def named_configurations():
+    """One built example of every name dependency gives (ranks 1 to 5)."""
+    P = [1, 2, -1]
+    axis = Line.through([0, 0, 1], [1, 1, 1])
+    meeting_axis = [
+        Line.through(axis.point + t * axis.direction, q)
+        for t, q in [
+            (0, [5, 0, 0]),
+            (1, [0, 3, 2]),
+            (2, [1, -4, 0]),
+            (-1, [2, 2, 7]),
+            (3, [0, 0, -3]),
+        ]
+    ]
+    return {
+        "one line": [
+            Line.through([0, 0, 0], [1, 2, 3]),
+            Line.through([2, 4, 6], [1, 2, 3]),
+        ],
+        "two skew lines": [
+            Line.through([0, 0, 0], [1, 0, 0]),
+            Line.through([0, 0, 1], [0, 1, 1]),
+        ],
+        "flat pencil": pencil(P, [[1, 0, 0], [0, 1, 0], [1, 1, 0]]),
+        "star": pencil(P, [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 1]]),
+        "parallel lines": [
+            Line.from_point_direction(p, [1, 1, 0])
+            for p in ([0, 0, 0], [0, 0, 1], [3, 1, 2])
+        ],
+        "plane": [
+            Line.through(p, q)
+            for p, q in [
+                ([0, 0, 2], [1, 0, 2]),
+                ([0, 0, 2], [0, 1, 2]),
+                ([1, 1, 2], [3, -1, 2]),
+            ]
+        ],
+        "two flat pencils": pencil([0, 0, 0], [[1, 0, 0], [0, 1, 0]])
+        + pencil([2, 0, 0], [[0, 0, 1], [1, 0, 1]]),
+        "regulus": hyperboloid_lines(CIRCLE),
+        "lines meeting two lines": lines_meeting(
+            [[0, 0, 0], [1, 0, 0], [3, 0, 0]], [[0, 0, 1], [0, 2, 1]]
+        ),
+        "point and plane": pencil(P, [[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+        + [Line.through([0, 0, -1], [5, 1, -1]), Line.through([2, 0, -1], [0, 3, -1])],
+        "special complex": meeting_axis,
+    }
+
+
+@pytest.mark.parametrize("name", list(named_configurations()))
+def test_names_survive_rigid_motions_and_units(name):
+    lines = named_configurations()[name]
+    assert dependency(lines).name == name
+    rng = np.random.default_rng(len(name))
+    for scale in (1.0, 1000.0, 0.001):
+        T = random_pose(rng)
+        T[:3, 3] *= scale
+        moved = []
+        for line in lines:
+            v = f(line.vector)
+            v[3:] *= scale
+            moved.append(Line(v).transform(T))
+        assert dependency(moved).name == name
+
+
+def test_parabolic_and_elliptic_congruences_by_construction():
+    """Rank 4 whose reciprocal 2-system holds one line (parabolic) or none (elliptic).
+
+    Parabolic: lines through (0, 0, t) meeting the z axis and reciprocal to the screw of
+    pitch h = 2 on the x axis: with direction d, h d_x - t d_y = 0. Elliptic: lines
+    reciprocal to the pitch-1 screws on the x and y axes: m_x = -w_x, m_y = -w_y and
+    m_z = (w_x^2 + w_y^2) / w_z from w . m = 0."""
+    h = 2
+    parabolic = [
+        Line.from_point_direction([0, 0, t], [dx, R(h * dx, t), dz])
+        for t, dx, dz in [(1, 1, 0), (2, 1, 1), (-1, 2, 1), (3, 1, -2), (R(1, 2), 1, 3)]
+    ]
+    result = dependency(parabolic)
+    assert (result.rank, result.name) == (4, "parabolic congruence")
+    assert intersection(result.data["line"], Line([0, 0, 1, 0, 0, 0])) == "same line"
+    elliptic = [
+        Line([wx, wy, wz, -wx, -wy, R(wx**2 + wy**2, wz)])
+        for wx, wy, wz in [(1, 0, 1), (0, 1, 1), (1, 1, 2), (2, -1, 1), (1, 3, -1)]
+    ]
+    result = dependency(elliptic)
+    assert (result.rank, result.name) == (4, "elliptic congruence")

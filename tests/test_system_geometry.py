@@ -219,3 +219,14 @@ def test_the_cylindroid_drawn_has_the_pitch_law():
             abs((h1 - h2) * np.sin(angle) * np.cos(angle)), abs=1e-12
         )
     plt.close(ax.figure)
+
+
+def test_a_wrench_system_is_named_with_couples_and_forces():
+    """Planar motion's reciprocal: a force along z and couples about x and y (worked by
+    hand in the chapter's exercise 23); Schoenflies motion's: two couples."""
+    planar = ScrewSystem(CASES["planar motion"][0]).reciprocal()
+    kind = planar.classify()
+    assert (kind.type, kind.name) == ("3-IIIA", "planar-motion type")
+    assert "forces along parallel axes and the couples" in kind.description
+    schoenflies = ScrewSystem(CASES["Schoenflies motion"][0]).reciprocal().classify()
+    assert schoenflies.name == "planar couples"
