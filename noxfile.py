@@ -115,13 +115,10 @@ class _Timer:
 
 @nox.session(python=SUPPORTED, venv_backend="venv")
 def course(session):
-    """The course's pinned environment (requirements.txt) and `make test`, here."""
-    # Binder's resolution does not depend on this session's Python: `make test` checks
-    # it once
-    binder = (
-        "tests/course/test_binder.py"
-        "::test_binder_requirements_resolve_for_binders_python"
-    )
+    """The course's pinned environment (requirements.txt) and `make test`, here: the
+    fast tier of the tests and strict nbval over every chapter (the slow tiers, Binder's
+    resolve among them, which does not depend on this session's Python, run once, in
+    `make test-all`)."""
     with _Timer(session):
         session.run(
             "make",
@@ -129,7 +126,6 @@ def course(session):
             f"VENV={session.virtualenv.location}",
             f"PYTHON={session.virtualenv.location}/bin/python",
             external=True,
-            env={"PYTEST_ADDOPTS": f"--deselect {binder}"},
         )
 
 
