@@ -24,12 +24,22 @@ $(STAMP): requirements.txt pyproject.toml
 PYTEST := $(BIN)/python -m pytest
 NBVAL  := $(PYTEST) --nbval notebooks --nbval-sanitize-with .nbval_sanitize.cfg -p no:cacheprovider
 
+# $(call beside_nbval,COMMAND): strict nbval over every notebook in the background (its output
+# kept, printed after), COMMAND in the foreground, one per core; fails if either failed.
+define beside_nbval
+@log=$$(mktemp); $(NBVAL) >"$$log" 2>&1 & nbval=$$!; \
+echo "== strict nbval over every notebook runs beside these tests (its report follows them)"; \
+$(1); tests=$$?; \
+wait $$nbval; notebooks=$$?; \
+echo "== strict nbval over every notebook:"; cat "$$log"; rm -f "$$log"; \
+test $$tests -eq 0 && test $$notebooks -eq 0
+endef
+
 ## make test: pytest over tests/ and screwkit's doctests, the fast tier (the slow tiers of
-## tests/conftest.py, SLOW_TIERS, are left out and counted at the end), and strict nbval over
-## every notebook
+## tests/conftest.py, SLOW_TIERS, are left out and counted at the end), and beside it strict
+## nbval over every notebook
 test: $(STAMP)
-	$(PYTEST) tests screwkit --doctest-modules --tier fast
-	$(NBVAL)
+	$(call beside_nbval,$(PYTEST) tests screwkit --doctest-modules --tier fast)
 
 ## make test-all: every test: `make test` and the slow tiers (60-digit ranks, certificates,
 ## Binder's pip resolve, which needs PyPI, the reference packages, Chromium's checks, slow
@@ -43,9 +53,9 @@ test-all: $(STAMP)
 	  --requirement .ci/requirements.txt
 	$(BIN)/python -m pip install --quiet --no-deps --upgrade --target .ci-nodeps \
 	  --requirement .ci/nodeps-requirements.txt
-	PYTHONPATH=.ci-nodeps SCREWKIT_REFERENCES=required SCREWKIT_PROOF=required \
-	  SCREWKIT_SLOW_TESTS=1 $(PYTEST) tests screwkit --doctest-modules --tier all
-	$(NBVAL)
+	$(call beside_nbval,PYTHONPATH=.ci-nodeps SCREWKIT_REFERENCES=required \
+	  SCREWKIT_PROOF=required SCREWKIT_SLOW_TESTS=1 \
+	  $(PYTEST) tests screwkit --doctest-modules --tier all)
 
 ## make book: the HTML book in _build/html (fails on any cell error or Sphinx warning)
 ## make book EDITION=course: the course edition in _build/course/html, with no solution and no
