@@ -78,9 +78,12 @@ else
 endif
 
 ## make answers: every exercise's statement, answer key and solution for the teacher, in
-## _build/answers/answers.md and answers.html (the course edition has none of them)
+## _build/answers/answers.md and answers.html (the course edition has none of them);
+## make answers SEEDS=class.csv (columns student,seed) also writes one sheet per student
+## with their numbers of the parametrised exercises, _build/answers/sheets/STUDENT.md,
+## and the teacher's keys of them all, _build/answers/keys.csv
 answers: $(STAMP)
-	$(BIN)/python tools/teacher_answers.py _build/answers
+	$(BIN)/python tools/teacher_answers.py _build/answers $(if $(SEEDS),--seeds $(SEEDS))
 
 ## make site-check: serve _build/html on 127.0.0.1 and check every page in headless Chromium
 ## (Playwright for Python from .ci/requirements.txt; it drives the system Chromium, downloads none)

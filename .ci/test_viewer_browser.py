@@ -613,15 +613,15 @@ def puma_paths(samples=31, duration=3.0):
     puma = sk.robots.puma560()
     q_start = np.radians([0, -30, 20, 0, 40, 0])
     T0, T1 = puma.fk(q_start), puma.fk(np.radians([90, -10, -10, 60, 60, 30]))
-    timing = sk.trajectory.quintic(duration)
+    timing = sk.motion.trajectory.quintic(duration)
     times = timing.times(samples)
     s = timing(times)
     paths = {
-        "screw motion": sk.trajectory.follow_path(
-            puma, sk.trajectory.screw_path(T0, T1, s), q_start=q_start
+        "screw motion": sk.motion.trajectory.follow_path(
+            puma, sk.motion.trajectory.screw_path(T0, T1, s), q_start=q_start
         ),
-        "straight line": sk.trajectory.follow_path(
-            puma, sk.trajectory.cartesian_path(T0, T1, s), q_start=q_start
+        "straight line": sk.motion.trajectory.follow_path(
+            puma, sk.motion.trajectory.cartesian_path(T0, T1, s), q_start=q_start
         ),
     }
     return puma, paths, times

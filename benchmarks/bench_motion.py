@@ -15,7 +15,7 @@ import numpy as np
 from _report import best, ms
 
 import screwkit as sk
-from screwkit import trajectory as tr
+from screwkit.motion import trajectory as tr
 
 warnings.filterwarnings("ignore")
 import roboticstoolbox as rtb  # noqa: E402

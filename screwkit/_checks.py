@@ -32,6 +32,69 @@ ORTHONORMAL_TOL = ROTATION_TOL
 _INFINITE = {sp.nan, sp.zoo, sp.oo, -sp.oo}
 
 
+#: The most characters of an input that an error message quotes (:func:`quoted`):
+#: a message names what was wrong, it does not print the input back.
+QUOTE_CHARS = 80
+
+#: The largest array (bytes) a batched function builds in one piece before it refuses,
+#: naming the size: 10^9 bytes (as ``screwkit.workspace``'s ``MAX_RESULT_BYTES``).
+MAX_RESULT_BYTES = 1_000_000_000
+
+
+def quoted(value, limit=QUOTE_CHARS):
+    """``value`` as an error message quotes it: at most ``limit`` characters.
+
+    The one way a message shows an input's value: an array is summarised by NumPy
+    (its first and last entries) and anything longer than ``limit`` is cut, with
+    "..." and, for an array, its shape.
+
+    Parameters
+    ----------
+    value : object
+        The value to quote.
+    limit : int
+        The most characters of the quote.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> quoted([1.5, 2.0])
+    '[1.5, 2.0]'
+    >>> quoted(np.arange(10**6.0))
+    '[0.0, 1.0, 2.0, ..., 999997.0, 999998.0, 999999.0] (shape (1000000,))'
+    >>> len(quoted(list(range(10**6))))
+    80
+    """
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, np.ndarray) and value.size > 6:
+        ends = value.ravel()
+        ends = [*map(repr, ends[:3].tolist()), "...", *map(repr, ends[-3:].tolist())]
+        shape = f" (shape {value.shape})"
+        text = "[" + ", ".join(ends) + "]"
+        cut = max(limit - len(shape), 10)
+        text = (text if len(text) <= cut else text[: cut - 3] + "...") + shape
+    else:
+        text = repr(value.tolist() if isinstance(value, np.ndarray) else value)
+    if len(text) > limit:
+        text = text[: limit - 3] + "..."
+    return text
+
+
+def check_result_bytes(nbytes, what, advice):
+    """Refuse, before anything is allocated, a result of more than
+    :data:`MAX_RESULT_BYTES` bytes: a ``ValueError`` that says what would be built,
+    its size and what to do (``advice``)."""
+    if nbytes > MAX_RESULT_BYTES:
+        raise ValueError(
+            f"{what} would build an array of {nbytes / 1e9:.3g} GB, but must stay "
+            f"within the limit of {MAX_RESULT_BYTES / 1e9:g} GB; {advice}"
+        )
+
+
 def describe(value):
     """A short description of ``value`` for error messages: its shape or type."""
     if isinstance(value, sp.MatrixBase):
@@ -40,10 +103,7 @@ def describe(value):
         return f"an array of shape {value.shape} and dtype {value.dtype}"
     if isinstance(value, (list, tuple)):
         return f"a {type(value).__name__} of length {len(value)}"
-    text = repr(value)
-    if len(text) > 80:
-        text = text[:77] + "..."
-    return f"{text} ({type(value).__name__})"
+    return f"{quoted(value)} ({type(value).__name__})"
 
 
 def is_symbolic(value):
@@ -70,19 +130,19 @@ def _not_real(entry):
     if isinstance(entry, (bool, np.bool_)):
         return f"a boolean {entry!r}"
     if isinstance(entry, (str, bytes, np.str_, np.bytes_)):
-        return f"a string {str(entry)!r}"
+        return f"a string {quoted(str(entry))}"
     if isinstance(entry, sp.Basic):
         if not isinstance(entry, sp.Expr) or entry.is_Boolean:
-            return f"{entry!r} ({type(entry).__name__})"
+            return f"{quoted(entry)} ({type(entry).__name__})"
         if entry.free_symbols:
-            return f"the symbolic expression {entry}"
+            return f"the symbolic expression {quoted(entry)}"
         if entry.is_extended_real is False:
-            return f"the complex number {entry}"
+            return f"the complex number {quoted(entry)}"
         return None
     if isinstance(entry, numbers.Real):
         return None
     if isinstance(entry, numbers.Complex):
-        return f"the complex number {entry!r}"
+        return f"the complex number {quoted(entry)}"
     return f"{describe(entry)}"
 
 
@@ -234,7 +294,9 @@ def check_integer(value, name, minimum=None):
     ):
         raise TypeError(f"{name} must be an integer, got {describe(value)}")
     if minimum is not None and value < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {int(value)}")
+        raise ValueError(
+            f"{name} must be an integer >= {minimum}, got {quoted(int(value))}"
+        )
     return int(value)
 
 
@@ -315,11 +377,12 @@ def as_sympy_matrix(value, name, shape):
         if _contains_string(value):
             raise TypeError(
                 f"{name} must hold numbers or SymPy expressions, not strings, got "
-                f"{value!r}"
+                f"{quoted(value)}"
             )
         if _contains_none(value):
             raise TypeError(
-                f"{name} must hold numbers or SymPy expressions, got None in {value!r}"
+                f"{name} must hold numbers or SymPy expressions, got None in "
+                f"{quoted(value)}"
             )
         try:
             matrix = sp.Matrix(value)
@@ -339,15 +402,19 @@ def _check_exact_entry(entry, name, what="an entry equal to"):
     """A finite, real SymPy expression; ``what`` introduces it in the messages."""
     what = f"{what} " if what else ""
     if not isinstance(entry, sp.Expr) or entry.is_Boolean:
-        raise TypeError(f"{name} must hold numbers or SymPy expressions, got {entry!r}")
+        raise TypeError(
+            f"{name} must hold numbers or SymPy expressions, got {quoted(entry)}"
+        )
     if (
         entry in _INFINITE
         or not entry.is_Atom
         and entry.has(sp.nan, sp.zoo, sp.oo, -sp.oo)
     ):
-        raise ValueError(f"{name} must be finite, got {what}{entry}")
+        raise ValueError(f"{name} must be finite, got {what}{quoted(entry)}")
     if entry.is_number and entry.is_extended_real is False:
-        raise TypeError(f"{name} must be real, got {what}the complex number {entry}")
+        raise TypeError(
+            f"{name} must be real, got {what}the complex number {quoted(entry)}"
+        )
 
 
 def as_sympy_scalar(value, name):

@@ -5,13 +5,24 @@ is the notebook's stem, e.g. ``puma_ik``)::
 
     [exercise.4]
     answer = "atan2(0.4318, 0.0203)"   # a SymPy expression, or a list of them
-    unit = "rad"                       # "rad", "deg", "m", "mm", "m/s", "" ...
+    unit = "rad"                       # "rad", "deg", "m", "mm", "m/s", "" ...,
+                                       # or one per number: ["rad/s", "m/s"]
     tolerance = 1e-3                   # absolute, in the answer's unit
     rtol = 0.0                         # optional, relative
     hint = "The elbow angle is measured from the forearm's line."
     forms = ["modulo 2pi"]             # optional: "modulo 2pi", "either sign",
                                        # "any order"
     alternatives = ["-pi/2"]           # optional: other accepted answers
+    per = "N m"                        # optional: the answer per unit of this is
+                                       # accepted too (a force per N m of torque)
+
+A parametrised exercise has ``parametrised = true`` instead of ``answer``: its
+numbers come from a seed and its key is computed by screwkit (:func:`variant`; seed 0
+is the chapter's statement). An assessed exercise (book/assessed.yml) has only
+``assessed = true``: its key is the teacher's, in book/teacher_keys/CHAPTER.toml
+outside the package, read from a checkout of the course (the self-study book is built
+there) or from the folder SCREWKIT_TEACHER_KEYS names; an installed screwkit has none,
+and :func:`check` and :func:`answer_box` say that the teacher marks it.
 
 ``check(chapter, number, answer)`` returns a :class:`Verdict` (right or wrong, and
 why); ``answer_box(chapter, number)`` returns a field and a Check button for the
@@ -25,19 +36,32 @@ import html
 import itertools
 import json
 import math
+import os
 import re
 import tomllib
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
+from pathlib import Path
 
 import numpy as np
 import sympy as sp
 
+from .motion import trajectory
 from ._checks import describe
+from .screws import Screw, Twist, Wrench
 from .tolerances import ZERO_TOL
+from .transforms import screw_motion
 
-__all__ = ["Verdict", "AnswerBox", "check", "answer_box", "answer_key", "parse_answer"]
+__all__ = [
+    "Verdict",
+    "AnswerBox",
+    "check",
+    "answer_box",
+    "answer_key",
+    "parse_answer",
+    "variant",
+]
 
 FORMS = ("modulo 2pi", "either sign", "any order")
 
@@ -56,6 +80,14 @@ _UNITS = {
     "N": (1.0, (1, 1, -2, 0)),
     "Nm": (1.0, (1, 2, -2, 0)),
     "W": (1.0, (1, 2, -3, 0)),
+    "J": (1.0, (1, 2, -2, 0)),
+    "Hz": (1.0, (0, 0, -1, 0)),
+    "ms": (1e-3, (0, 0, 1, 0)),
+    "min": (60.0, (0, 0, 1, 0)),
+    "kN": (1e3, (1, 1, -2, 0)),
+    "kW": (1e3, (1, 2, -3, 0)),
+    "mrad": (1e-3, (0, 0, 0, 1)),
+    "km": (1e3, (0, 1, 0, 0)),
 }
 _UNIT_NAMES = {"degree": "deg", "degrees": "deg", "radian": "rad", "radians": "rad"}
 # what a dimension is called in a message ("expected a torque (N m), found a force (N)")
@@ -191,31 +223,84 @@ class _Parser:
 
     def items(self):
         """Items separated by commas, semicolons or whitespace (as NumPy prints arrays);
-        brackets group and are flattened."""
-        values = self.item()
+        brackets and parentheses around several items group them and are flattened.
+        Each item is a pair (value in SI, its _Unit or None). A unit written after the
+        last item only applies to all of them (``2000, 0, 0 mm``)."""
+        pairs = self.item()
         while True:
             if self.peek()[1] in (",", ";"):
                 self.take()
             elif not (self.space_before() and self.starts_item()):
-                return values
-            values += self.item()
+                break
+            pairs += self.item()
+        if len(pairs) > 1 and pairs[-1][1] is not None:
+            if all(unit is None for _, unit in pairs[:-1]):
+                unit = pairs[-1][1]
+                pairs = [(value * unit.factor, unit) for value, _ in pairs[:-1]] + [
+                    pairs[-1]
+                ]
+        return pairs
+
+    def is_group(self):
+        """A parenthesis that holds a list: a comma or semicolon inside it, outside
+        any inner parenthesis (``(2, 0, 0)``; ``(1 + 2)/3`` and ``(atan2(1, 2))`` are
+        expressions). Decided by looking ahead, so nothing is parsed twice."""
+        depth = 0
+        for _, token in self.tokens[self.at :]:
+            if token in ("(", "["):
+                depth += 1
+            elif token in (")", "]"):
+                depth -= 1
+                if depth == 0:
+                    return False
+            elif token in (",", ";") and depth == 1:
+                return True
+        return False
+
+    def group(self):
+        """The pairs of a bracketed list, ``[1, 2]`` or ``(2, 0, 0)``."""
+        closing = "]" if self.take()[1] == "[" else ")"
+        pairs = self.items()
+        self.take(closing)
+        return pairs
 
     def item(self):
-        if self.peek()[1] == "[":
-            self.take("[")
-            values = self.items()
-            self.take("]")
-            return values
+        if self.peek()[1] == "[" or self.peek()[1] == "(" and self.is_group():
+            pairs = self.group()
+            unit = self.unit()  # "(2, 0, 0) m": the unit of every entry
+            if unit is not None:
+                if any(u is not None for _, u in pairs):
+                    raise ValueError("a unit is written twice for one number")
+                pairs = [(value * unit.factor, unit) for value, _ in pairs]
+            return pairs
         value = self.expression()
-        return [value * self.unit()]
+        unit = self.unit()
+        return [(value if unit is None else value * unit.factor, unit)]
+
+    def unit_starts(self):
+        """A unit at the current token: a unit word, ``/s`` or ``1/s`` after a space."""
+        if self.unit_next() or self.peek()[1] == "/" and self.unit_after():
+            return True
+        kind, token = self.peek()
+        return (
+            kind == "number"
+            and token == "1"
+            and self.space_before()
+            and self.at + 2 < len(self.tokens)
+            and self.tokens[self.at + 1][1] == "/"
+            and not self.spaced[self.at + 1]
+            and self.tokens[self.at + 2][0] == "name"
+            and _is_unit(self.tokens[self.at + 2][1])
+        )
 
     def unit(self):
-        """The unit written after a value (``N m``, ``N*m``, ``m/s^2``, ``/s``), as a
-        :class:`_Unit`, or None where none is written."""
-        if not (self.unit_next() or self.peek()[1] == "/" and self.unit_after()):
-            self.units.append(None)
-            return 1.0
+        """The unit written after a value (``N m``, ``N*m``, ``m/s^2``, ``/s``,
+        ``1/s``), as a :class:`_Unit`, or None where none is written."""
+        if not self.unit_starts():
+            return None
         factor, dimension, text = 1.0, (0, 0, 0, 0), ""
+        if self.peek()[0] == "number":
+            self.take()  # the 1 of "1/s"
         if self.peek()[1] == "/":
             text = "1"
         while True:
@@ -246,8 +331,7 @@ class _Parser:
                 text += f"^{power}"
             factor *= f ** (sign * power)
             dimension = tuple(a + sign * power * b for a, b in zip(dimension, d))
-        self.units.append(_Unit(factor, dimension, text))
-        return factor
+        return _Unit(factor, dimension, text)
 
     def unit_next(self):
         kind, word = self.peek()
@@ -270,11 +354,18 @@ class _Parser:
         return value
 
     def term(self):
+        start = self.at
         value = self.signed()
+        literal = self.at == start + 1 and self.tokens[start][0] == "number"
         while True:
             kind, token = self.peek()
             if token in ("*", "/") and self.unit_after():
                 return value  # a unit follows: "10 N*m", "200/s"
+            if literal and token in ("pi", "π"):
+                self.take()
+                value = value * math.pi  # "0.6667 pi", a number times pi
+                literal = False
+                continue
             if token in ("*", "/"):
                 self.take()
                 right = self.signed()
@@ -336,20 +427,20 @@ def _parse(text):
     if not isinstance(text, str):
         raise TypeError(f"the answer text must be a string, got {describe(text)}")
     parser = _Parser(text)
-    parser.units = []
     if not parser.tokens:
         raise ValueError("the answer is empty")
     try:
-        values = parser.items()
+        pairs = parser.items()
     except RecursionError:
         raise ValueError("it is nested too deeply") from None
     except (ZeroDivisionError, OverflowError, TypeError) as error:
         raise ValueError(f"cannot evaluate it ({error})") from None
     if parser.peek()[0] is not None:
         raise ValueError(f"unexpected {parser.peek()[1]!r}")
+    values = [value for value, _ in pairs]
     if any(isinstance(v, complex) or not math.isfinite(v) for v in values):
         raise ValueError("it is not a finite real number")
-    return [float(v) for v in values], parser.units
+    return [float(v) for v in values], [unit for _, unit in pairs]
 
 
 def parse_answer(text):
@@ -357,10 +448,14 @@ def parse_answer(text):
 
     Numbers are separated by commas, semicolons or whitespace (``"[0.5 -1.2 0.]"``, as
     NumPy prints an array; ``"1 - 2"`` with spaces on both sides is a subtraction).
-    A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"2 pi"`` two
-    numbers. A unit follows its number: rad, deg (or °), m, cm, mm, s, kg, N, W and
-    their products, quotients and integer powers (``N m``, ``N*m``, ``Nm``, ``N·m``,
-    ``m/s``, ``rad/s``, ``m/rad``, ``m^2``, ``200/s``).
+    A product without ``*`` must be written glued: ``"2pi"`` is 2 pi, ``"pi/6 pi/6"``
+    two numbers; a number followed by ``pi`` is a product (``"0.6667 pi"``). A unit
+    follows its number: rad, deg (or °), mrad, m, cm, mm, km, s, ms, min, kg, N, kN,
+    J, W, kW, Hz and their products, quotients and integer powers (``N m``, ``N*m``,
+    ``Nm``, ``N·m``, ``m/s``, ``rad/s``, ``m/rad``, ``m^2``, ``200/s``, ``200 1/s``).
+    Brackets or parentheses around a list group it (``(2, 0, 0) m``: the unit after
+    them is every entry's), and a unit after the last number of a list where no other
+    has one is every number's (``2000, 0, 0 mm``).
 
     Parameters
     ----------
@@ -384,7 +479,7 @@ def parse_answer(text):
 
     Examples
     --------
-    >>> parse_answer("pi/2, 90 deg")[0]
+    >>> parse_answer("pi/2 rad, 90 deg")[0]
     [1.5707963267948966, 1.5707963267948966]
     >>> parse_answer("-5 N m")
     ([-5.0], ['torque'])
@@ -412,6 +507,20 @@ def _unit_of_key(text, where):
 # ---- answer keys -------------------------------------------------------------------
 
 
+def _teacher_keys():
+    """The folder of the teacher's keys of the assessed exercises, or None: the
+    environment variable SCREWKIT_TEACHER_KEYS, else book/teacher_keys of the checkout
+    this screwkit runs from (the self-study book is built there). An installed
+    screwkit (a wheel) has neither, and no key of an assessed exercise."""
+    folder = os.environ.get("SCREWKIT_TEACHER_KEYS")
+    if folder:
+        return Path(folder)
+    root = Path(__file__).resolve().parents[1]
+    if (root / "book" / "assessed.yml").is_file():
+        return root / "book" / "teacher_keys"
+    return None
+
+
 @cache
 def _key_file(chapter):
     if not isinstance(chapter, str) or not re.fullmatch(r"[a-z0-9_]+", chapter):
@@ -425,7 +534,61 @@ def _key_file(chapter):
             f"chapter must be one with an answer key, got {chapter!r} "
             f"(no screwkit/answers/{chapter}.toml)"
         )
-    return tomllib.loads(path.read_text(encoding="utf-8")).get("exercise", {})
+    exercises = tomllib.loads(path.read_text(encoding="utf-8")).get("exercise", {})
+    folder = _teacher_keys()
+    teacher = folder / f"{chapter}.toml" if folder is not None else None
+    if teacher is not None and teacher.is_file():
+        keys = tomllib.loads(teacher.read_text(encoding="utf-8")).get("exercise", {})
+        for number, entry in exercises.items():
+            if entry.get("assessed") and number in keys:
+                exercises[number] = keys[number] | {"assessed": True}
+    return exercises
+
+
+def is_assessed(chapter, number):
+    """Whether the teacher marks an exercise (book/assessed.yml): its key is not in
+    the package, and :func:`check` and :func:`answer_box` say so.
+
+    Parameters
+    ----------
+    chapter, number : str, int
+        The chapter's notebook name and the exercise's number.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> is_assessed("rigid_motions", 10), is_assessed("rigid_motions", 2)
+    (True, False)
+    """
+    return bool(_entry(chapter, number).get("assessed", False))
+
+
+def _entry(chapter, number):
+    exercises = _key_file(chapter)
+    if isinstance(number, bool) or not isinstance(number, (int, np.integer)):
+        raise TypeError(
+            f"number must be an exercise number (int), got {describe(number)}"
+        )
+    if str(number) not in exercises:
+        raise ValueError(
+            f"number must be a self-checking exercise of {chapter!r} "
+            f"(one of {sorted(int(k) for k in exercises)}), got {number}"
+        )
+    return exercises[str(number)]
+
+
+class AssessedError(LookupError):
+    """The key of an assessed exercise, asked of a screwkit that has none."""
+
+
+def _assessed_sentence(chapter, number):
+    return (
+        f"{chapter} exercise {number} is assessed: your teacher marks it. Hand your "
+        f"answer to your teacher; this copy of screwkit has no key for it."
+    )
 
 
 def _numbers(answer):
@@ -462,57 +625,271 @@ def _range(bounds, key_unit, where):
     }
 
 
-def answer_key(chapter, number):
+def _per_text(per, key_unit, where):
+    """A key's ``per = "N m"``, checked: a unit other than the key's."""
+    if per == "":
+        return ""
+    if not isinstance(per, str) or _unit_of_key(per, where) == key_unit:
+        raise ValueError(f"per of {where} must be a unit other than the key's")
+    return per
+
+
+def answer_key(chapter, number, seed=0):
     """The checked answer of an exercise, as a dict of floats, ready for the page.
 
     Parameters
     ----------
     chapter, number : str, int
         The chapter's notebook name (e.g. ``"puma_ik"``) and the exercise's number.
+    seed : int, optional
+        A parametrised exercise's seed (see :func:`variant`); 0 for the others.
 
     Returns
     -------
     dict
         ``values`` (list of float, row-major, in ``unit``), ``shape``, ``exact`` (the
         key's expression text), ``unit`` (its text: ``"rad"``, ``"N m"``, ``"1/s"``;
-        ``""`` for a pure number or a vector of mixed units), ``tolerance``, ``rtol``,
-        ``hint``, ``forms``, ``alternatives`` (lists of float lists) and ``range``
-        (None, or ``low``, ``high`` in ``unit`` and the ``text`` the box shows).
+        ``""`` for a pure number or a vector of mixed units), ``dimension`` (its
+        exponents of kg, m, s and rad) and ``quantity`` (its name, ``"torque"``),
+        ``tolerance``, ``rtol``, ``hint``, ``forms``, ``alternatives`` (lists of
+        float lists) and ``range`` (None, or ``low``, ``high`` in ``unit`` and the
+        ``text`` the box shows),
+        ``per`` (a unit: the answer per one of it is accepted too, or ``""``),
+        ``assessed`` (the teacher marks it) and, for a vector of mixed units only,
+        ``units`` (one per number; ``unit`` is then ``""``).
+
+    Raises
+    ------
+    AssessedError
+        For an assessed exercise (book/assessed.yml) where this screwkit has no key:
+        an installed package holds none (see :func:`is_assessed`).
     """
-    exercises = _key_file(chapter)
-    if isinstance(number, bool) or not isinstance(number, (int, np.integer)):
-        raise TypeError(
-            f"number must be an exercise number (int), got {describe(number)}"
-        )
-    if str(number) not in exercises:
-        raise ValueError(
-            f"number must be a self-checking exercise of {chapter!r} "
-            f"(one of {sorted(int(k) for k in exercises)}), got {number}"
-        )
-    entry = exercises[str(number)]
+    entry = _entry(chapter, number)
+    if "answer" not in entry and entry.get("assessed"):
+        raise AssessedError(_assessed_sentence(chapter, number))
     where = f"{chapter} exercise {number}"
-    values, shape = _numbers(entry["answer"])
+    seed = _seed(seed)
+    if entry.get("parametrised"):
+        if (chapter, int(number)) not in _PARAMETRISED:
+            raise ValueError(f"{where} is parametrised but has no generator")
+        numbers, _, answer = _PARAMETRISED[chapter, int(number)](_draw(seed))
+        # rounded far inside any tolerance, so that a zero prints as 0 in the page
+        values = [round(float(v), 12) + 0.0 for v in np.ravel(answer)]
+        shape = list(np.shape(answer))
+        exact = f"computed by screwkit for seed {seed}: " + ", ".join(
+            f"{name} = {value:g}" for name, (value, _) in numbers.items()
+        )
+        entry = entry | {"answer": exact}
+    elif seed != 0:
+        raise ValueError(
+            f"seed must be 0 for {where}, which is not parametrised, got {seed}"
+        )
+    else:
+        values, shape = _numbers(entry["answer"])
     forms = list(entry.get("forms", []))
     unknown = [form for form in forms if form not in FORMS]
     if unknown:
         raise ValueError(f"forms of {where} must be among {FORMS}, got {unknown}")
-    unit = entry.get("unit", "")
+    unit, units = entry.get("unit", ""), None
+    if isinstance(unit, list):  # a vector of mixed units: a twist in rad/s and m/s
+        if len(unit) != len(values):
+            raise ValueError(
+                f"unit of {where} must be one unit or one per number "
+                f"({len(values)}), got {len(unit)}"
+            )
+        units = [str(u) for u in unit]
+        for u in units:
+            _unit_of_key(u, where)
+        unit = ""
     key_unit = _unit_of_key(unit, where)
     bounds = entry.get("range")
-    return {
+    key = {
         "chapter": chapter,
         "number": int(number),
         "values": values,
         "shape": shape,
         "exact": entry["answer"],
         "unit": unit,
+        "dimension": list(key_unit.dimension),
+        "quantity": _QUANTITIES.get(key_unit.dimension, "quantity"),
         "tolerance": float(entry["tolerance"]),
         "rtol": float(entry.get("rtol", 0.0)),
         "hint": entry.get("hint", ""),
         "forms": forms,
         "alternatives": [_numbers(a)[0] for a in entry.get("alternatives", [])],
         "range": None if bounds is None else _range(bounds, key_unit, where),
+        "per": _per_text(entry.get("per", ""), key_unit, where),
+        "assessed": bool(entry.get("assessed", False)),
     }
+    if units is not None:
+        key["units"] = units  # only where set: other boxes unchanged
+    return key
+
+
+# ---- parametrised exercises -------------------------------------------------------
+
+#: (chapter, number) -> a generator: given a random generator (None for seed 0, the
+#: chapter's own numbers), it returns the statement's numbers ({name: (value, unit)}),
+#: the statement with them, and the key, computed by screwkit (never stored).
+_PARAMETRISED = {}
+
+
+def _parametrised(chapter, number):
+    def register(generator):
+        _PARAMETRISED[chapter, number] = generator
+        return generator
+
+    return register
+
+
+def _seed(seed):
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise ValueError(f"seed must be a whole number >= 0, got {describe(seed)}")
+    return int(seed)
+
+
+def _draw(seed):
+    """None for seed 0 (the numbers the chapter prints), else NumPy's generator."""
+    return None if seed == 0 else np.random.default_rng([42, seed])
+
+
+def _pick(rng, choices, default):
+    return default if rng is None else choices[int(rng.integers(len(choices)))]
+
+
+@_parametrised("rigid_motions", 2)
+def _turn_about_a_vertical_line(rng):
+    a = _pick(rng, [-2, -1, 1, 2, 3], 1)
+    b = _pick(rng, [-2, -1, 0, 1, 2], 0)
+    angle = _pick(rng, [90, 180, 270], 180)
+    origin = screw_motion([0, 0, 1], [a, b, 0], 0, math.radians(angle))[:3, 3]
+    numbers = {"a": (a, "m"), "b": (b, "m"), "angle": (angle, "deg")}
+    statement = (
+        f"A revolute joint turns about the vertical line through ({a}, {b}, 0) m. "
+        f"Where does the origin go when the joint turns by {angle} deg?"
+    )
+    return numbers, statement, [float(v) for v in origin]
+
+
+@_parametrised("screws", 6)
+def _power_of_a_force_on_a_spinning_body(rng):
+    force = _pick(rng, [5, 10, 20, 40], 10)
+    arm = _pick(rng, [0.25, 0.5, 0.75, 1.5], 0.5)
+    spin = _pick(rng, [1, 2, 3, 4], 2)
+    line = Screw.from_axis([0, 1, 0], [arm, 0, 0], 0).vector
+    power = Twist.from_vector([0, 0, spin, 0, 0, 0]) @ Wrench.from_vector(force * line)
+    numbers = {"F": (force, "N"), "x": (arm, "m"), "omega": (spin, "rad/s")}
+    statement = (
+        f"A force of {force} N along y acts through the point ({arm}, 0, 0) m on a "
+        f"body that spins at {spin} rad/s about the z axis through the origin. What "
+        f"power (W) does the force deliver?"
+    )
+    return numbers, statement, float(power)
+
+
+@_parametrised("motion_in_time", 3)
+def _peak_speed_of_a_quintic(rng):
+    duration = _pick(rng, [1.0, 1.5, 2.5, 3.0, 4.0, 5.0], 2.0)
+    numbers = {"T": (duration, "s")}
+    statement = (
+        f"The quintic time scaling of duration T = {duration:g} s: what is its "
+        f"largest ds/dt (1/s)?"
+    )
+    return numbers, statement, float(trajectory.quintic(duration).peak_velocity)
+
+
+@dataclass(frozen=True)
+class Variant:
+    """One student's version of a parametrised exercise (see :func:`variant`).
+
+    Parameters
+    ----------
+    chapter : str
+        The chapter's notebook name.
+    number : int
+        The exercise's number.
+    seed : int
+        The seed; 0 gives the numbers the chapter prints.
+    numbers : dict
+        The statement's numbers, ``{name: (value, unit)}``.
+    statement : str
+        The statement with these numbers, in plain text.
+    key : dict
+        The key, as :func:`answer_key` gives it, computed by screwkit.
+    """
+
+    chapter: str
+    number: int
+    seed: int
+    numbers: dict
+    statement: str
+    key: dict
+
+    def __repr__(self):
+        shown = ", ".join(
+            f"{name} = {value:g}" + (f" {unit}" if unit else "")
+            for name, (value, unit) in self.numbers.items()
+        )
+        return f"{self.chapter} exercise {self.number}, seed {self.seed}: {shown}"
+
+
+def variant(chapter, number, seed=0):
+    """A parametrised exercise's numbers and key for one seed.
+
+    The numbers are drawn from the seed (seed 0 gives those the chapter prints) and
+    the key is computed by screwkit from them, never stored: a teacher gives each
+    student a seed (``make answers SEEDS=class.csv`` writes each student's sheet and
+    the teacher's keys), and ``check(chapter, number, answer, seed=seed)`` and
+    ``answer_box(chapter, number, seed=seed)`` check that student's answer.
+
+    Parameters
+    ----------
+    chapter, number : str, int
+        The chapter's notebook name and the exercise's number.
+    seed : int, optional
+        A whole number >= 0.
+
+    Returns
+    -------
+    Variant
+        ``numbers`` ({name: (value, unit)}), ``statement`` (plain text) and ``key``.
+
+    Examples
+    --------
+    >>> variant("motion_in_time", 3, seed=0).numbers
+    {'T': (2.0, 's')}
+    >>> variant("motion_in_time", 3, seed=0).key["values"]
+    [0.9375]
+    """
+    seed = _seed(seed)
+    if not _entry(chapter, number).get("parametrised"):
+        raise ValueError(
+            f"number must be a parametrised exercise of {chapter!r} (one of "
+            f"{parametrised(chapter)}), got {number}"
+        )
+    numbers, statement, _ = _PARAMETRISED[chapter, int(number)](_draw(seed))
+    key = answer_key(chapter, number, seed)
+    return Variant(chapter, int(number), seed, numbers, statement, key)
+
+
+def parametrised(chapter=None):
+    """The parametrised exercises: of one chapter, a sorted list of numbers; of all
+    (no chapter), a sorted list of (chapter, number).
+
+    Parameters
+    ----------
+    chapter : str, optional
+        A chapter's notebook name.
+
+    Returns
+    -------
+    list
+    """
+    if chapter is None:
+        return sorted(_PARAMETRISED)
+    return sorted(
+        int(n) for n, e in _key_file(chapter).items() if e.get("parametrised")
+    )
 
 
 # ---- checking ----------------------------------------------------------------------
@@ -665,29 +1042,71 @@ def _in_range(x, key):
     )
 
 
+def _per_unit(key):
+    """The unit an answer "per unit of ``key['per']``" is in (a force per N m of
+    torque: 1/m), or None where the key has no ``per``."""
+    if not key.get("per"):
+        return None
+    where = f"{key['chapter']} exercise {key['number']}"
+    key_unit = _unit_of_key(key["unit"], where)
+    per = _unit_of_key(key["per"], where)
+    return _Unit(
+        key_unit.factor / per.factor,
+        tuple(a - b for a, b in zip(key_unit.dimension, per.dimension)),
+        f"{key['unit']}/({key['per']})",
+    )
+
+
 def _to_key_unit(x, units, key):
-    """The values in the key's unit, or the sentence saying which unit does not fit."""
-    key_unit = _unit_of_key(key["unit"], f"{key['chapter']} exercise {key['number']}")
+    """The values in the key's unit, or the sentence saying which unit does not fit.
+    A key with ``per`` (the statement's bound is one of that unit) also takes the
+    answer per unit of it: 4.05 N per N m of torque is 4.05 1/m."""
+    where = f"{key['chapter']} exercise {key['number']}"
+    texts = key.get("units") or [key["unit"]] * len(x)
+    if len(texts) != len(x):
+        return list(x)  # the wrong count is the answer's fault, said next
+    per = _per_unit(key)
     converted = []
-    for value, unit in zip(x, units):
+    for value, unit, text in zip(x, units, texts):
         if unit is None:
             converted.append(value)
             continue
+        key_unit = _unit_of_key(text, where)
         factor = _convert(unit, key_unit)
+        if factor is None and per is not None:
+            factor = _convert(unit, per)
+            factor = None if factor is None else factor * per.factor / key_unit.factor
         if factor is None:
             expected = _quantity(key_unit.dimension)
-            expected += f" ({key['unit']})" if key["unit"] else " (no unit)"
+            expected += f" ({text})" if text else " (no unit)"
             found = f"{_quantity(unit.dimension)} ({unit.text})"
             return f"Expected {expected}, found {found}."
         converted.append(value / unit.factor * factor)
     return converted
 
 
-def _decimal_comma(text):
-    """A hint for "4,05" (read as two numbers), else ""."""
+def _decimal_comma(text, n):
+    """A hint for "4,05" (read as two numbers), else "": only where the text with
+    decimal points has the ``n`` numbers the key asks for."""
     if not isinstance(text, str) or not re.search(r"\d,\d", text):
         return ""
-    return " Use a decimal point: " + re.sub(r"(\d),(\d)", r"\1.\2", text) + "."
+    fixed = re.sub(r"(\d),(\d)", r"\1.\2", text)
+    try:
+        if len(_parse(fixed)[0]) != n:
+            return ""
+    except ValueError:
+        return ""
+    return " Use a decimal point: " + fixed + "."
+
+
+def _in_radians(x, units, key):
+    """A box in degrees answered in radians without a unit (``pi/2``, ``1.5708``)
+    is right when the radians are: no slip gives the radian measure of the answer."""
+    nonzero = any(abs(v) > key["tolerance"] for v in key["values"])
+    if key["unit"] != "deg" or not nonzero or any(u is not None for u in units):
+        return False
+    degrees = [math.degrees(v) for v in x]
+    return _in_range(degrees, key) and _matches(degrees, key)
 
 
 def _verdict(x, units, key, text=None):
@@ -699,16 +1118,19 @@ def _verdict(x, units, key, text=None):
     n = len(key["values"])
     if len(x) == n and _in_range(x, key) and _matches(x, key):
         return Verdict(True, f"Within {tolerance} of the answer.", chapter, number)
+    if len(x) == n and _in_radians(x, units, key):
+        message = f"Within {tolerance} of the answer (read as radians)."
+        return Verdict(True, message, chapter, number)
     if len(x) != n:
         what = "one number" if n == 1 else f"{n} numbers"
-        reason = f"expected {what}, got {len(x)}." + _decimal_comma(text)
+        reason = f"expected {what}, got {len(x)}." + _decimal_comma(text, n)
     else:
         reason = _diagnose(x, key) or f"not within {tolerance} of the answer."
     hint = f" Hint: {key['hint']}" if key["hint"] else ""
     return Verdict(False, reason[0].upper() + reason[1:] + hint, chapter, number)
 
 
-def check(chapter, number, answer):
+def check(chapter, number, answer, seed=0):
     """Check an answer to a self-checking exercise.
 
     Parameters
@@ -719,18 +1141,25 @@ def check(chapter, number, answer):
         A number, a SymPy expression, a text (``"pi/3"``, ``"60 deg"``,
         ``"0.1, 0.2"``), or a list or array (flattened row-major). Numbers without
         a unit are in the exercise's unit.
+    seed : int, optional
+        A parametrised exercise's seed (:func:`variant`); 0 for the others.
 
     Returns
     -------
     Verdict
         ``.correct`` and ``.message`` (why a wrong answer is wrong: units, sign,
         length, order, else the exercise's hint). Text that cannot be read gives a
-        wrong verdict saying so, never an exception.
+        wrong verdict saying so, never an exception. An assessed exercise whose key
+        this screwkit does not have (an installed package) gives a verdict saying
+        that the teacher marks it.
 
     >>> check("rigid_motions", 2, "2, 0, 0").correct
     True
     """
-    key = answer_key(chapter, number)
+    try:
+        key = answer_key(chapter, number, seed)
+    except AssessedError as error:
+        return Verdict(False, str(error), chapter, number)
     try:
         values, units = _as_values(answer)
     except (TypeError, ValueError) as error:
@@ -745,12 +1174,22 @@ _script_sent = False
 
 
 def exercises_script():
-    """The JavaScript of the answer boxes (package data ``static/exercises.js``)."""
-    return (
+    """The JavaScript of the answer boxes (package data ``static/exercises.js``), with
+    this module's table of units written into it (one table for both checkers)."""
+    script = (
         resources.files("screwkit")
         .joinpath("static/exercises.js")
         .read_text(encoding="utf-8")
     )
+    tables = {
+        "units": {name: [f, list(d)] for name, (f, d) in _UNITS.items()},
+        "names": _UNIT_NAMES,
+        "quantities": {",".join(map(str, d)): q for d, q in _QUANTITIES.items()},
+    }
+    slot = "/*SCREWKIT-UNIT-TABLES*/ {units: {}, names: {}, quantities: {}}"
+    if slot not in script:
+        raise RuntimeError("static/exercises.js has lost its slot for the unit tables")
+    return script.replace(slot, json.dumps(tables, ensure_ascii=False))
 
 
 class AnswerBox:
@@ -799,6 +1238,11 @@ class AnswerBox:
         if self.key["range"] is not None:
             key["range"] = self.key["range"]  # only where set: other boxes unchanged
             bounds = ", " + html.escape(self.key["range"]["text"])
+        if self.key.get("per"):
+            key["per"] = self.key["per"]
+        if self.key.get("units"):
+            key["units"] = self.key["units"]
+            unit = html.escape(", ".join(self.key["units"]))
         payload = json.dumps(key, sort_keys=True).replace("</", "<\\/")
         ident = self.id
         script = f"<script>\n{exercises_script()}</script>\n" if self.script else ""
@@ -820,7 +1264,34 @@ class AnswerBox:
         )
 
 
-def answer_box(chapter, number, script=None):
+class AssessedBox:
+    """The box of an assessed exercise where screwkit has no key: it says that the
+    teacher marks the answer, and has no key and no Check button.
+
+    Parameters
+    ----------
+    chapter, number : str, int
+        The chapter's notebook name and the exercise's number.
+    """
+
+    def __init__(self, chapter, number):
+        self.chapter, self.number = chapter, int(number)
+
+    def __repr__(self):
+        return (
+            f"Exercise {self.number} of {self.chapter} is assessed: hand your answer "
+            f"to your teacher, who marks it."
+        )
+
+    def _repr_html_(self):
+        return (
+            f'<div class="sk-assessed-box" style="font:14px sans-serif;margin:0.5em 0">'
+            f"<p><strong>Exercise {self.number} is assessed:</strong> hand your answer "
+            f"to your teacher; this edition of the book does not check it.</p></div>"
+        )
+
+
+def answer_box(chapter, number, script=None, seed=0):
     """A self-checking answer box for the page.
 
     Parameters
@@ -829,16 +1300,23 @@ def answer_box(chapter, number, script=None):
     script : bool, optional
         Inline ``exercises.js`` with this box; by default only the first box of the
         session carries it (once per page).
+    seed : int, optional
+        A parametrised exercise's seed (:func:`variant`); the page shows seed 0.
 
     Returns
     -------
-    AnswerBox
-        Displayed as an HTML field, a Check button and a verdict announced to
+    AnswerBox or AssessedBox
+        An assessed exercise whose key this screwkit does not have gives an
+        :class:`AssessedBox`, which says that the teacher marks it. Otherwise
+        displayed as an HTML field, a Check button and a verdict announced to
         screen readers; the check runs in the browser with the key's tolerance,
         forms and hint.
     """
     global _script_sent
-    key = answer_key(chapter, number)
+    try:
+        key = answer_key(chapter, number, seed)
+    except AssessedError:
+        return AssessedBox(chapter, number)
     if script is None:
         script, _script_sent = not _script_sent, True
     return AnswerBox(key, bool(script))

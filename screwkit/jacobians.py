@@ -30,14 +30,19 @@ The functions share their parameters, described here once:
 import numpy as np
 import sympy as sp
 
-from ._checks import as_sympy_matrix, check_chain, check_flag, describe
+from . import _compiled, _numeric
+from ._checks import (
+    as_sympy_matrix,
+    check_chain,
+    check_flag,
+    check_option,
+    describe,
+)
 from ._compiled import in_chunks
 from ._docstrings import fill
-
-# ROWS re-exported: sk.jacobians.ROWS
-from .chains import ROWS, check_rows  # noqa: F401
 from .links import Joint
 from .tolerances import FD_STEP
+from .transforms import _cross
 
 __all__ = [
     "joint_axes",
@@ -55,10 +60,6 @@ __all__ = [
 ]
 
 #: Docstring passages the functions share (filled in by :func:`_docstrings.fill`).
-_CHAIN_Q = """Parameters
-----------
-chain, q
-    The chain and its joint values (module docstring)."""
 _CHAIN_Q_ROWS = """Parameters
 ----------
 chain, q, rows
@@ -67,68 +68,251 @@ _CHAIN_ONE_Q = """chain : Chain
     The serial chain.
 q : array-like, shape (n,)
     One configuration (rad or m)."""
-_JACOBIAN_SECTIONS = f"""{_CHAIN_Q}
 
-Returns
--------
-ndarray, shape (6, n) or (N, 6, n)
-    The Jacobian(s)."""
-_GEOMETRIC_SECTIONS = _JACOBIAN_SECTIONS.replace(
-    "Jacobian(s).", "Jacobian(s), base frame, end-effector point."
-)
+#: Rows of the geometric Jacobian, by name.
+#: 'planar' is (v_x, v_y) in the chain's base frame, the 2 x n Jacobian of an arm that
+#: moves in its base's x-y plane.
+ROWS = {
+    "all": slice(0, 6),
+    "position": slice(0, 3),
+    "orientation": slice(3, 6),
+    "planar": slice(0, 2),
+}
+
+#: The Parameters section of the functions taking a chain and its joint values only
+#: (they are the Chain's methods of the same names).
+_CHAIN_Q_PARAMETERS = """Parameters
+----------
+chain : Chain
+    The serial chain.
+q : array-like, shape (n,) or (N, n)
+    Joint values (rad or m)."""
 
 
-@fill(parameters=_CHAIN_Q)
+def check_rows(rows):
+    """The slice of the geometric Jacobian's rows named ``rows``
+    (one of :data:`ROWS`)."""
+    return ROWS[check_option(rows, "rows", tuple(ROWS))]
+
+
+# ---- the Jacobians, outputs of the chain's generated program (Chain's methods) -----
+
+
+@fill(parameters=_CHAIN_Q_PARAMETERS)
 def joint_axes(chain, q):
     """Direction z_i and a point o_i of every joint axis in the base frame.
+
+    DH: joint i moves about z of frame i-1 (standard) or of frame i (modified),
+    through its origin. A prismatic joint's direction is its translation; its point
+    is for drawing.
 
     {parameters}
 
     Returns
     -------
     z, o : ndarray, shape (n, 3) or (N, n, 3)
-        Unit directions and points (m) of the axes.
+        Unit directions and points (m).
     """
-    return check_chain(chain).joint_axes(q)
+    check_chain(chain)
+    q = chain.check_q(q)
+    omega, v, point, _ = chain._twists_and_pose(q)
+    prismatic = np.array([j is Joint.PRISMATIC for j in chain.joints])
+    z = np.where(prismatic if q.ndim == 1 else prismatic[:, None], v, omega)
+    z, point = np.moveaxis(z, 0, -1), np.moveaxis(point, 0, -1)  # (n[, N], 3)
+    if q.ndim == 1:
+        return z, point
+    return np.swapaxes(z, 0, 1), np.swapaxes(point, 0, 1)
 
 
-@fill(sections=_JACOBIAN_SECTIONS)
+def _generated_jacobian(chain, q, outputs):
+    """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n)
+    or (N, 6, n)."""
+    q = chain.check_q(q)
+    n, rows = chain.n, 6 * chain.n
+    if q.ndim == 1:
+        return np.reshape(chain._run(outputs, q), (6, n))
+
+    def part(q_part):
+        values = chain._run(
+            outputs, q_part, range(rows), np.empty((rows, q_part.shape[0]))
+        )
+        return values.reshape(6, n, -1).transpose(2, 0, 1)
+
+    return _compiled.in_chunks(q, part, np.empty((q.shape[0], 6, n)))
+
+
+@fill(parameters=_CHAIN_Q_PARAMETERS)
 def space_jacobian(chain, q):
     """The space Jacobian, columns [omega; v].
 
-    Column i is the twist of joint i in the base frame, Ad(G_i) X_i: (z_i; o_i x z_i)
-    for a revolute joint about z_i through o_i (v is the velocity of the body point at
-    the base origin), (0; z_i) for a prismatic one, (z_i; o_i x z_i + h z_i) for a
-    helical one of pitch h.
+    Column i is the twist of joint i in the base frame, Ad(G_i) X_i:
+    (z_i; o_i x z_i) for a revolute joint about z_i through o_i
+    (v is the velocity of the body point at the base origin), (0; z_i) for a
+    prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
 
-    {sections}
+    {parameters}
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n)
+        The Jacobian(s).
     """
-    return check_chain(chain).space_jacobian(q)
+    check_chain(chain)
+    return chain._generated_jacobian(q, "space")
 
 
-@fill(sections=_GEOMETRIC_SECTIONS)
+@fill(parameters=_CHAIN_Q_PARAMETERS)
 def geometric_jacobian(chain, q):
     """The geometric Jacobian, rows [v; omega].
 
     Column i is the space twist moved to the end-effector point p:
-    (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint and
-    (z_i; 0) for a prismatic one.
+    (v_i + omega_i x p; omega_i), i.e. (z_i x (p - o_i); z_i) for a revolute joint
+    and (z_i; 0) for a prismatic one.
 
-    {sections}
+    {parameters}
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n)
+        The Jacobian(s), base frame, end-effector point.
     """
-    return check_chain(chain).geometric_jacobian(q)
+    check_chain(chain)
+    return chain._generated_jacobian(q, "geometric")
 
 
-@fill(sections=_JACOBIAN_SECTIONS)
+@fill(parameters=_CHAIN_Q_PARAMETERS)
 def body_jacobian(chain, q):
     """The body Jacobian, columns [omega; v].
 
     Column i is joint i's twist in the end-effector frame, J_b = Ad(T^-1) J_s:
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
 
-    {sections}
+    {parameters}
+
+    Returns
+    -------
+    ndarray, shape (6, n) or (N, 6, n)
+        The Jacobian(s).
     """
-    return check_chain(chain).body_jacobian(q)
+
+    check_chain(chain)
+
+    def columns(q_part):
+        omega, v, _, T = chain._twists_and_pose(q_part)
+        R, linear = T[:, :3], v + _cross(omega, T[:, 3][:, None])
+        rotate = "ji...,jk...->ik..."  # R^T x, column by column, batch last
+        J = np.concatenate([np.einsum(rotate, R, omega), np.einsum(rotate, R, linear)])
+        return J if q_part.ndim == 1 else J.transpose(2, 0, 1)
+
+    q = chain.check_q(q)
+    if q.ndim == 1:
+        return columns(q)
+    return _compiled.in_chunks(q, columns, np.empty((q.shape[0], 6, chain.n)))
+
+
+def jacobian_rows(chain, q, rows="all"):
+    """Some rows of the geometric Jacobian.
+
+    'planar' reads v_x, v_y in the chain's base frame.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        A key of :data:`ROWS`.
+
+    Returns
+    -------
+    ndarray, shape (m, n) or (N, m, n)
+        The m rows (6, 3, 3 or 2).
+    """
+    check_chain(chain)
+    selected = check_rows(rows)
+    J = chain.geometric_jacobian(q)
+    if rows == "planar":
+        R = np.asarray(chain.base)[:3, :3]
+        return np.einsum("ji,...jk->...ik", R, J[..., :3, :])[..., selected, :]
+    return J[..., selected, :]
+
+
+def singular_values(chain, q, rows="all"):
+    """Singular values of the geometric Jacobian's rows, largest first.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        The rows of J used.
+
+    Returns
+    -------
+    ndarray, shape (k,) or (N, k)
+        k = min(rows, n) singular values.
+    """
+    check_chain(chain)
+    check_rows(rows)
+    q = chain.check_q(q)
+
+    def part(q_part):
+        return np.linalg.svd(chain.jacobian_rows(q_part, rows), compute_uv=False)
+
+    return part(q) if q.ndim == 1 else _compiled.in_chunks(q, part)
+
+
+def lost_rank(chain, sigma, rows="all"):
+    """Whether Jacobian rows have lost rank, by NumPy's rule on the smallest
+    singular value.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    sigma : ndarray, shape (..., k)
+        Singular values, largest first, as :meth:`singular_values` returns them.
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        The rows they are of.
+
+    Returns
+    -------
+    bool or ndarray of bool, shape (...)
+        True where the rank is below k.
+    """
+    return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), chain.n)
+
+
+def manipulability(chain, q, rows="all"):
+    """Yoshikawa's manipulability, the product of the singular values: () or (N,).
+
+    That is sqrt(det(J J^T)) for J with no more rows than columns
+    (sqrt(det(J^T J)) otherwise). Exactly 0.0 where J has lost rank
+    (by NumPy's rank tolerance), so a singular configuration is an answer, not
+    noise. With rows='all' the product mixes metres and radians; 'position' gives
+    the volume factor of the velocity ellipsoid in m/s.
+
+    Parameters
+    ----------
+    chain : Chain
+        The serial chain.
+    q : array-like, shape (n,) or (N, n)
+        Joint values (rad or m).
+    rows : {'all', 'position', 'orientation', 'planar'}, optional
+        'position' (the rows v), 'orientation' (the rows omega) or 'planar'
+        (v_x, v_y in the chain's base frame).
+
+    Returns
+    -------
+    float or ndarray, shape (N,)
+        The manipulability.
+    """
+    check_chain(chain)
+    sigma = chain.singular_values(q, rows)
+    return np.where(chain.lost_rank(sigma, rows), 0.0, np.prod(sigma, axis=-1))[()]
 
 
 @fill(chain_q=_CHAIN_ONE_Q)
@@ -284,42 +468,6 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
 
 
 # ---- numbers from the Jacobian -------------------------------------------------------
-
-
-@fill(parameters=_CHAIN_Q)
-def singular_values(chain, q, rows="all"):
-    """Singular values of the geometric Jacobian's rows, largest first.
-
-    {parameters}
-    rows : {'all', 'position', 'orientation', 'planar'}, optional
-        The rows of J used (see the module's docstring).
-
-    Returns
-    -------
-    ndarray, shape (k,) or (N, k)
-        k = min(rows, n) singular values.
-    """
-    return check_chain(chain).singular_values(q, rows)
-
-
-@fill(parameters=_CHAIN_Q_ROWS)
-def manipulability(chain, q, rows="all"):
-    """Yoshikawa's manipulability, the product of the singular values: () or (N,).
-
-    That is sqrt(det(J J^T)) for J with no more rows than columns
-    (sqrt(det(J^T J)) otherwise). Exactly 0.0 where J has lost rank
-    (by NumPy's rank tolerance), so a singular configuration is an answer, not noise.
-    With rows='all' the product mixes metres and radians; 'position' gives the volume
-    factor of the velocity ellipsoid in m/s.
-
-    {parameters}
-
-    Returns
-    -------
-    float or ndarray, shape (N,)
-        The manipulability.
-    """
-    return check_chain(chain).manipulability(q, rows)
 
 
 @fill(parameters=_CHAIN_Q_ROWS)

@@ -1,8 +1,7 @@
 """Limbs for the mobility zeroth step: each builder returns a list of (s, r, h) triples.
 
-(The builders were :mod:`screwkit.joints`, a name that also meant the joint kinds
-:class:`screwkit.Joint`, a chain's ``joints`` and the DH rows ``Link.revolute``; that
-module stays as an alias of this one for one release.)
+(The module is not called ``joints``: that name means the joint kinds
+:class:`screwkit.Joint`, a chain's ``joints`` and the DH rows ``Link.revolute``.)
 
 A limb reads like its name: ``prismatic(x) + revolute(x, A) + universal(y, z, B)`` is a
 PRU limb. Multi-freedom joints are sets of 1-freedom screws through one point: C = R + P

@@ -454,3 +454,57 @@ def limits_table(qlim, n):
     if limits.shape != (n, 2):
         raise ValueError(f"qlim must have shape ({n}, 2), got shape {limits.shape}")
     return [_check_qlim(row, f"qlim[{i}]") for i, row in enumerate(limits)]
+
+
+def links_from_table(table, joints=None, qlim=None):
+    """The links of a DH table: :meth:`screwkit.Chain.from_table`'s rows, checked.
+
+    Parameters
+    ----------
+    table : array-like, shape (n, 4)
+        Columns (theta, d, a, alpha), in rad and m; theta is a revolute joint's
+        offset, d a prismatic joint's.
+    joints : sequence of Joint, or str, optional
+        A string such as 'RRP'; all revolute by default.
+    qlim : array-like, shape (n, 2), or None, optional
+        Joint limits (rad or m; +-inf: no limit).
+
+    Returns
+    -------
+    list of Link
+        One link per row.
+    """
+    rows = as_float_array(table, "table")
+    if rows.ndim != 2 or rows.shape[1] != 4 or rows.shape[0] < 1:
+        raise ValueError(
+            "table must have shape (n, 4), columns (theta, d, a, alpha), got "
+            f"shape {rows.shape}"
+        )
+    n = rows.shape[0]
+    try:
+        kinds = (
+            [Joint.REVOLUTE] * n
+            if joints is None
+            else [Joint(j) if isinstance(j, str) else j for j in joints]
+        )
+    except (ValueError, TypeError):
+        kinds = None
+    if (
+        kinds is None
+        or len(kinds) != n
+        or not all(k in (Joint.REVOLUTE, Joint.PRISMATIC) for k in kinds)
+    ):
+        raise ValueError(
+            f"joints must name {n} joints ('R' or 'P', or Joint members), got "
+            f"{joints!r}"
+        )
+    limits = [None] * n if qlim is None else limits_table(qlim, n)
+    links = []
+    for (theta, d, a, alpha), kind, limit in zip(rows, kinds, limits):
+        if kind is Joint.REVOLUTE:
+            links.append(Link.revolute(d=d, a=a, alpha=alpha, offset=theta, qlim=limit))
+        else:
+            links.append(
+                Link.prismatic(theta=theta, a=a, alpha=alpha, offset=d, qlim=limit)
+            )
+    return links

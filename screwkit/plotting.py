@@ -32,6 +32,7 @@ from ._checks import (
 )
 
 # re-exported: sk.plotting.draw_mechanism
+from ._line_plots import draw_configuration, draw_cylindroid, draw_lines  # noqa: F401
 from ._mechanism_plot import draw_mechanism  # noqa: F401
 from .tolerances import DRAWING_TOL, ZERO_TOL, length_scale
 
@@ -49,6 +50,9 @@ __all__ = [
     "draw_planar",
     "animation_html",
     "draw_mechanism",
+    "draw_lines",
+    "draw_configuration",
+    "draw_cylindroid",
 ]
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")  # x, y, z

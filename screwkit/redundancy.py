@@ -9,7 +9,9 @@ A planar arm (``sk.robots.planar(lengths)``) has n joints and a 2D task, the poi
 
 follow the path (first term; K e corrects the drift of Euler integration) and, without
 disturbing the end effector, move the arm so that w = sqrt(det(J J^T)) grows
-(second term). Lengths in metres, angles in radians, time in seconds.
+(second term). Lengths in metres, angles in radians, time in seconds. The smooth
+timing is the quintic of :mod:`screwkit.motion.trajectory`, and J+ the damped
+pseudo-inverse of :mod:`screwkit.motion.differential_ik`.
 
 >>> import numpy as np, screwkit as sk
 >>> arm = sk.robots.planar([0.4, 0.3, 0.2])
@@ -36,8 +38,9 @@ from ._checks import (
 )
 from ._docstrings import fill
 from .chains import Joint
+from .motion.differential_ik import _damped_pseudo_inverse
+from .motion.trajectory import quintic
 from .tolerances import (
-    DIVISION_FLOOR,
     LIMIT_MARGIN,
     POSITION_TOL,
     STEP_TOL,
@@ -148,13 +151,11 @@ def timing(t, duration, kind="smooth"):
             f"t must lie in [0, duration] = [0, {duration:g}] s, "
             f"got values from {t.min():g} to {t.max():g} s"
         )
-    u = t / duration
-    if kind == "smooth":
-        return 10 * u**3 - 15 * u**4 + 6 * u**5, (
-            30 * u**2 - 60 * u**3 + 30 * u**4
-        ) / duration
-    if kind == "constant":
-        return u, np.full_like(u, 1.0 / duration)
+    if kind == "smooth":  # the quintic of the trajectories; a last sample rounded
+        # past the duration is its end
+        s, ds, _ = quintic(duration).evaluate(np.minimum(t, duration))
+        return s, ds
+    return t / duration, np.full_like(t, 1.0 / duration)
 
 
 #: The most time steps a path may have (its arrays then take about 0.5 GB).
@@ -423,20 +424,17 @@ def pseudo_inverse(J, damping=0.0, singular_region=0.05):
         )
     damping = check_positive(damping, "damping", allow_zero=True)
     singular_region = check_positive(singular_region, "singular_region")
-    A = J @ J.T
+    damping_squared = 0.0
     if damping > 0:
+        A = J @ J.T
         half_trace, det = (
             0.5 * (A[0, 0] + A[1, 1]),
             A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0],
         )
         sigma_min2 = half_trace - np.sqrt(max(half_trace**2 - det, 0.0))
         if sigma_min2 < singular_region**2:
-            A = A + damping**2 * (1 - sigma_min2 / singular_region**2) * np.eye(2)
-    det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
-    if det <= DIVISION_FLOOR:
-        return np.linalg.pinv(J)
-    inverse = np.array([[A[1, 1], -A[0, 1]], [-A[1, 0], A[0, 0]]]) / det
-    return J.T @ inverse
+            damping_squared = damping**2 * (1 - sigma_min2 / singular_region**2)
+    return _damped_pseudo_inverse(J, damping_squared)
 
 
 # ---- resolution ----------------------------------------------------------------------

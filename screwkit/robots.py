@@ -520,7 +520,7 @@ def ur5e():
     d4 = 0.1333, d5 = 0.0997, d6 = 0.0996 m; alpha = (pi/2, 0, 0, pi/2, -pi/2, 0).
     Frame 6 is the tool flange. Joint limits +-360 deg (the UR5e data sheet). Joints
     2, 3 and 4 are parallel: a UR-type arm, solved in closed form by
-    :mod:`screwkit.ur_ik`.
+    :mod:`screwkit.ik.ur`.
 
     Returns
     -------

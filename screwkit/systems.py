@@ -22,7 +22,7 @@ exactly.
 
 import sympy as sp
 
-from . import _certificates, _exact, _numeric
+from . import _certificates, _exact, _numeric, _system_geometry
 from ._checks import describe
 from ._docstrings import fill
 from .screws import Screw, Twist, Wrench
@@ -293,6 +293,79 @@ class ScrewSystem:
                 f"the exact check contradicts the sampled rank {len(rows)}: {reason}"
             )
         return _certificates.RankCertificate(rows, cols, kernel, bool(verdict), reason)
+
+    def principal_screws(self):
+        """The principal screws and pitches of a 1-, 2- or 3-system.
+
+        The pitch of a member x = B c is (c^T A c) / (c^T D c) with D = W^T W (W the
+        direction rows of the basis B) and A the symmetric part of W^T V (V the moment
+        rows); the principal screws are the generalised eigenvectors of A c = h D c
+        (:mod:`screwkit._system_geometry`), exact for exact screws.
+
+        Returns
+        -------
+        PrincipalScrews
+            ``screws``, ``pitches`` (m/rad; ``sympy.oo`` or ``inf`` for a
+            translation), ``unique`` and ``reason`` (why not unique).
+
+        Raises
+        ------
+        ValueError
+            For a system of order 0, 4, 5 or 6 (take the reciprocal of a 4- or
+            5-system).
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> planar = ScrewSystem([([0, 0, 1], [0, 0, 0], 0), ([1, 0, 0], [0, 0, 0],
+        ...                       sp.oo), ([0, 1, 0], [0, 0, 0], sp.oo)])
+        >>> planar.principal_screws().pitches
+        [0, oo, oo]
+        """
+        return _system_geometry.principal_screws(self)
+
+    def pitch_of(self, x):
+        """The pitch of a member of the span.
+
+        Parameters
+        ----------
+        x : Screw or 6-vector
+            A member of the system (not zero).
+
+        Returns
+        -------
+        number
+            (s . s0) / (s . s) (m/rad); ``sympy.oo`` (exact) or ``inf`` (float) for
+            a translation.
+
+        Examples
+        --------
+        >>> ScrewSystem([[0, 0, 1, 0, 0, 0], [0, 0, 0, 0, 0, 1]]).pitch_of(
+        ...     [0, 0, 2, 0, 0, 1])
+        1/2
+        """
+        return _system_geometry.pitch_of(self, x)
+
+    def classify(self):
+        """The type of the system and its invariants (unchanged by any rigid motion and
+        any change of basis).
+
+        Returns
+        -------
+        Classification
+            ``order``, ``type`` (such as '3-IIIA', see
+            :class:`~screwkit._system_geometry.Classification`), ``translations``,
+            ``pitches``, ``name`` ('planar motion', 'spherical motion', ...) and
+            ``description``.
+
+        Examples
+        --------
+        >>> origin = [0, 0, 0]
+        >>> ScrewSystem([(d, origin, 0) for d in ([1, 0, 0], [0, 1, 0], [0, 0, 1])]
+        ...             ).classify().name
+        'spherical motion'
+        """
+        return _system_geometry.classify(self)
 
     def _from_field(self, row):
         return self.kind._checked(

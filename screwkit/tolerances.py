@@ -108,6 +108,29 @@ LIMIT_MARGIN = 1e-9
 FD_STEP = 1e-6
 
 
+# ---- lines and screw systems ---------------------------------------------------------
+
+#: Relative. A float line's coordinates (w; m) must satisfy |w . m| <= KLEIN_TOL |w| |m|
+#: (the cosine of the angle between w and m): lines typed to 6 or 7 digits pass, a
+#: screw of pitch h != 0 (w . m = h |w|^2) is refused; the excess is then removed.
+KLEIN_TOL = 1e-6
+
+#: Unitless. Two float lines are parallel when the sine of the angle between their
+#: unit directions, |u_a x u_b|, is below this: round-off of a few 1e-16 per operation
+#: is far below, a genuine angle of a micro-radian far above.
+LINE_ANGLE_TOL = 1e-9
+
+#: Relative. The rank of a set of float lines, and the zero tests of the quadratic form
+#: w . m on their span, after every direction is made unit and every moment divided by
+#: the lines' size (so the test is the same in m and mm): as RANK_TOL for screws.
+LINE_RANK_TOL = 1e-9
+
+#: Relative. Two principal pitches of a float screw system are equal, and a direction
+#: part is singular, below this fraction of the system's size (the largest of its
+#: lengths: moments over unit directions and pitches); the same in m and mm.
+PITCH_TOL = 1e-9
+
+
 def length_scale(*lengths):
     """The size of an instance, for length tolerances used as ``LENGTH_TOL * scale``.
 
@@ -255,6 +278,19 @@ IK_GENERAL_NULL_TOL = 1e-8
 #: complex root or a spurious one stays far above.
 IK_GENERAL_ACCEPT_TOL = 1e-10
 
+#: A real root of the eigenvalue problem is accounted for when a solution's angle of
+#: the eigenvalue joint is within this of it (rad): a simple root is computed to
+#: 1e-12, a double one to about sqrt(eps); a root no solution accounts for makes the
+#: answer say that it may be incomplete.
+IK_GENERAL_EXPLAINED_TOL = 1e-4
+
+#: A root's candidate is consistent (a solution must then account for the root) when
+#: the 8 products (1, c1, s1) x (1, c2, s2) it gives for joints 1 and 2 are those of
+#: two angles to this (c^2 + s^2 = 1, products of the factors): a genuine root's are
+#: to 1e-10, a spurious root's (special geometry: extra factors of the determinant,
+#: e.g. the PUMA's q = 0 and pi) are off by 0.5 or more.
+IK_GENERAL_CONSISTENT_TOL = 1e-4
+
 #: Two solutions are one when no joint angle differs by more than this (rad, modulo a
 #: turn): polished solutions agree to 1e-12, distinct ones of a generic pose differ by
 #: far more.
@@ -389,3 +425,30 @@ PROXIMAL_WEIGHT = 1e-2
 #: DAQP stops its proximal iterations when the iterate moves less than this (rad/s):
 #: J dq then meets V to round-off (about 1e-15 on the chapter's arms).
 PROXIMAL_STOP = 1e-12
+
+# ---- statics and contact: joint torques, stiffness, closure -------------------------
+# Wrenches mix forces (N) and moments (N m): before a rank, an LP or a singularity test
+# the moment rows are divided by the instance's size (length_scale of its points or
+# frames), so that the same instance in millimetres gets the same answers.
+
+#: Relative. A contact set's wrench matrix (moments divided by the size) has full rank
+#: when its smallest singular value exceeds this times its largest: as RANK_TOL, between
+#: round-off (1e-16) and any contact placement a user means.
+CONTACT_RANK_TOL = 1e-9
+
+#: Relative. A closure certificate balances when |W k| <= CLOSURE_TOL |W| |k| (the
+#: contact forces k) and separates when w_i . y >= -CLOSURE_TOL |w_i| |y|: HiGHS meets
+#: its constraints to about 1e-9 relative (its default feasibility tolerance), and a
+#: genuine imbalance of a random contact set is orders of magnitude larger.
+CLOSURE_TOL = 1e-7
+
+#: Relative. A Jacobian (moment rows divided by the size) is singular for the statics
+#: (no stiffness at the tool, no output twist of a leg) when its smallest singular
+#: value is below this times its largest: a condition number above 1e9.
+STATICS_SINGULAR_TOL = 1e-9
+
+#: Relative. Eigenvalues of a stiffness or compliance matrix are real (Patterson and
+#: Lipkin: a symmetric positive semi-definite matrix times the swap Pi) up to round-off:
+#: an imaginary part above this times the largest |eigenvalue| means the matrix is not
+#: one.
+EIGEN_IMAGINARY_TOL = 1e-8

@@ -1,14 +1,15 @@
-"""Second-order kinematics (screwkit.acceleration, Chain.*_jacobian_dot/*_hessian):
-against central differences of the Jacobians and of FK (independent of the brackets),
-the Hessian against differences of the Jacobian, exact against float, the bracket
-formula against SymPy's own time derivative, batches against loops, bad input."""
+"""Second-order kinematics (screwkit.motion.acceleration,
+Chain.*_jacobian_dot/*_hessian): against central differences of the Jacobians and of
+FK (independent of the brackets), the Hessian against differences of the Jacobian,
+exact against float, the bracket formula against SymPy's own time derivative, batches
+against loops, bad input."""
 
 import numpy as np
 import pytest
 import sympy as sp
 
 import screwkit as sk
-from screwkit import acceleration
+from screwkit.motion import acceleration
 
 #: central differences with step H: error about H^2 |J'''| + eps / H, near 1e-10
 H = 1e-5
@@ -284,3 +285,49 @@ def test_bad_input_is_a_clear_error():
         acceleration.space_jacobian_dot(puma, [sp.S(0)] * 6, [1, 2])
     with pytest.raises(TypeError, match="dq must be a joint vector"):
         acceleration.space_jacobian_dot(puma, [sp.S(0)] * 6, sp.S(1))
+
+
+# ---- batches too large for memory (issue 43) ----------------------------------------
+
+SECOND_ORDER = {
+    "space_hessian": 1,
+    "body_hessian": 1,
+    "geometric_hessian": 1,
+    "space_jacobian_dot": 2,
+    "body_jacobian_dot": 2,
+    "geometric_jacobian_dot": 2,
+    "space_acceleration": 3,
+    "body_acceleration": 3,
+    "geometric_acceleration": 3,
+}
+
+
+@pytest.mark.parametrize("name", sorted(SECOND_ORDER))
+def test_a_batch_past_the_memory_limit_is_refused_before_any_work(name):
+    # 10^8 configurations (a broadcast view, no memory): a Hessian alone would be
+    # 10^8 x 6 x 6 x 6 floats, 173 GB; refused at once, naming q and what fits
+    puma = sk.robots.puma560()
+    q = np.broadcast_to(np.full(6, 0.3), (10**8, 6))
+    function = getattr(acceleration, name)
+    with pytest.raises(ValueError, match=r"q's 100000000 configurations.*at most \d+"):
+        function(puma, *[q] * SECOND_ORDER[name])
+
+
+@pytest.mark.parametrize("name", sorted(SECOND_ORDER))
+def test_the_limit_counts_the_work_of_each_kind(name, monkeypatch):
+    # with the limit lowered to 10^6 bytes, 2000 configurations of 6 joints need more
+    # (a Hessian 2000 x 216 x 8 = 3.5 MB, a Jacobian derivative 2000 x 36 x 8 = 0.6 MB
+    # plus its temporaries) and 10 configurations fit: the chain's own methods, which
+    # compute the Jacobians first, are refused as well
+    monkeypatch.setattr(sk._checks, "MAX_RESULT_BYTES", 10**6)
+    puma = sk.robots.puma560()
+    function = getattr(acceleration, name)
+    large = np.full((2000, 6), 0.3)
+    with pytest.raises(ValueError, match="must stay within the limit"):
+        function(puma, *[large] * SECOND_ORDER[name])
+    method = getattr(puma, name, None)
+    if method is not None:
+        with pytest.raises(ValueError, match="must stay within the limit"):
+            method(*[large.tolist()] * SECOND_ORDER[name])
+    small = np.full((10, 6), 0.3)
+    assert function(puma, *[small] * SECOND_ORDER[name]).shape[0] == 10

@@ -1,13 +1,13 @@
-"""Differential IK with limits (screwkit.differential_ik): the QP equals the (damped)
-pseudo-inverse when no limit binds, keeps the limits when one does (checked by the
-optimality conditions of the box-constrained least squares, not by the solver's own
-output), says why a step is infeasible, and refuses bad input."""
+"""Differential IK with limits (screwkit.motion.differential_ik): the QP equals the
+(damped) pseudo-inverse when no limit binds, keeps the limits when one does (checked
+by the optimality conditions of the box-constrained least squares, not by the
+solver's own output), says why a step is infeasible, and refuses bad input."""
 
 import numpy as np
 import pytest
 
 import screwkit as sk
-from screwkit import differential_ik as dik
+from screwkit.motion import differential_ik as dik
 
 
 def redundant():

@@ -96,7 +96,9 @@ CASES = [
     (1, "12 mm", False, "expected an angle (rad), found a length (mm)"),
     (2, 60, True, ""),
     (2, "pi/3 rad", True, ""),
-    (2, math.pi / 3, False, "looks like radians, degrees expected"),
+    # radians in a box in degrees are right (issue 42): pi/3 is 60 deg
+    (2, math.pi / 3, True, "read as radians"),
+    (2, "2pi/3", False, "not within"),
     (3, 150, False, "looks like millimetres, metres expected"),
     (3, "150 mm", True, ""),
     (3, "15 cm", True, ""),
@@ -129,7 +131,8 @@ CASES = [
     (6, "0.1 0.7 -2.1", True, ""),
     (6, "0.1 0.7 - 2.1", False, "expected 3 numbers, got 2"),
     (1, "2pi/6", True, ""),
-    (1, "2 pi/6", False, "expected one number, got 2"),
+    (1, "2 pi/6", True, ""),  # a number times pi, spaced (issue 42)
+    (1, "pi/6 pi/6", False, "expected one number, got 2"),
     (5, "-pi/2", True, ""),
     (5, "- pi/2", True, ""),
     # a torque in every spelling, converted; a unit of another dimension named as such
@@ -174,7 +177,8 @@ CASES = [
     (14, "-1 rad", False, "not within ±0.001 rad"),
     (15, "200", True, "within ±0.5 1/s"),
     (15, "200/s", True, ""),
-    (15, "200 1/s", False, "expected one number, got 2"),
+    (15, "200 1/s", True, ""),  # "1/s" after a space is the unit (issue 42)
+    (15, "200 1", False, "expected one number, got 2"),
     (15, "200 s^-1", True, ""),
     (15, "200 rad/s", True, ""),
     (15, "200 s", False, "expected a rate (1/s), found a time (s)"),
@@ -262,7 +266,7 @@ def test_odd_python_values_never_crash(fake, answer):
 
 
 UNITS_OF_KEYS = ("", "rad", "deg", "m", "mm", "m/s", "rad/s", "N", "N m", "W")
-UNITS_OF_KEYS += ("m/rad", "m^2", "1/s")
+UNITS_OF_KEYS += ("m/rad", "m^2", "1/s", "s", "m/s^2")
 
 
 def test_parser_reads_units_and_their_combinations():

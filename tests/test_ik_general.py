@@ -383,29 +383,103 @@ def test_analytic_ik_solves_a_general_arm_with_every_solution():
     assert contains(Q, np.asarray(SIXTEEN_Q))
 
 
-def test_a_pose_the_elimination_misses_is_found_by_the_search():
-    # three parallel axes at the base and a wrist of right angles: the elimination
-    # finds no real root for poses the arm reaches (special geometry); the Newton
-    # search that follows finds them, and the reason says what was done
-    table = np.array(
-        [
-            [0.4, 0.5, 0.0],
-            [0.3, 0.5, 0.0],
-            [0.0, 0.0, -np.pi / 2],
-            [0.0, 0.0, -np.pi / 2],
-            [0.0, 0.5, 0.0],
-            [0.0, 0.0, np.pi / 2],
-        ]
-    )
-    chain = sk.Chain.from_table(np.column_stack([np.zeros(6), table]))
-    q = np.array([2.077, 0.441, -2.491, -2.131, -0.065, -0.505])
+#: The issue's arm: three parallel axes at the base and a wrist of right angles
+#: (standard DH rows d, a, alpha).
+PARALLEL_BASE_TABLE = np.array(
+    [
+        [0.4, 0.5, 0.0],
+        [0.3, 0.5, 0.0],
+        [0.0, 0.0, -np.pi / 2],
+        [0.0, 0.0, -np.pi / 2],
+        [0.0, 0.5, 0.0],
+        [0.0, 0.0, np.pi / 2],
+    ]
+)
+
+
+def parallel_base_arm():
+    table = PARALLEL_BASE_TABLE
+    return table, sk.Chain.from_table(np.column_stack([np.zeros(6), table]))
+
+
+def test_the_issues_parallel_base_pose_gets_all_eight_solutions():
+    # issue 43: 4 of 8 with reason None (the backward forms of the loop gave every
+    # candidate negated, and Newton polished those onto the wrong solutions)
+    table, chain = parallel_base_arm()
+    q = np.array([0.864816, -2.942255, -2.991873, -1.501858, -1.792111, 2.38058])
     T = dh_fk(table, q)[0]
     result = general_6r_ik(chain, T)
-    assert result.formulation == "Newton search"
-    assert "Newton search" in result.reason and "may be other" in result.reason
+    check_answer(result, table, T)
     assert contains(result.Q, q)
-    assert np.all(result.residuals <= RESIDUAL)
-    assert np.all(pose_gap(dh_fk(table, result.Q), T) < 1e-8)
-    searched = multistart(table, T, seed=3)
+    searched = multistart(table, T, seed=4)
+    assert len(searched) == 8 and len(result.Q) == 8
     for s in searched:
-        assert contains(result.Q, s), f"the test's search found {s}, missing"
+        assert contains(result.Q, s)
+    solutions = sk.ik.analytic_ik(chain, T)
+    assert len(solutions) == 8 and solutions.reason is None
+
+
+def test_no_pose_of_the_parallel_base_arm_is_short():
+    # 60 random poses in one batch: the generating q is always found, and every
+    # solution of an independent 300-start search is among the answer's, with the
+    # same count (or the answer says it may be incomplete)
+    table, chain = parallel_base_arm()
+    rng = np.random.default_rng(43)
+    qs = rng.uniform(-np.pi, np.pi, (60, 6))
+    targets = dh_fk(table, qs)
+    for q, T, result in zip(qs, targets, general_6r_ik(chain, targets)):
+        assert contains(result.Q, q)
+        assert np.all(pose_gap(dh_fk(table, result.Q), T) < 1e-8)
+        searched = multistart(table, T, seed=5, iterations=60)
+        for s in searched:
+            assert contains(result.Q, s), f"the search found {s}, missing"
+        if result.reason is None:
+            assert len(result.Q) == len(searched)
+        else:
+            assert "singular" in result.reason or "may be" in result.reason
+
+
+def test_a_root_that_gives_no_solution_makes_the_answer_say_so(monkeypatch):
+    # the old fault, put back: every candidate negated (Newton then polishes them onto
+    # 4 of the 8 solutions); the roots left over must make the reason say so
+    from screwkit.ik import general
+
+    original = general._candidates
+
+    def negated(*args):
+        q, pose, consistent = original(*args)
+        return -q, pose, consistent
+
+    monkeypatch.setattr(general, "_candidates", negated)
+    general._LAST_FORM.clear()
+    table, chain = parallel_base_arm()
+    q = np.array([0.864816, -2.942255, -2.991873, -1.501858, -1.792111, 2.38058])
+    result = general_6r_ik(chain, dh_fk(table, q)[0])
+    assert len(result.Q) < 8 and "may be incomplete" in result.reason
+
+
+def test_singular_solutions_are_flagged_one_by_one():
+    # issue 43: the reason said "singular" but no solution said which
+    puma = sk.robots.puma560()
+    q = np.array([0.3, -0.5, 0.8, 0.4, 0.0, 0.2])
+    result = general_6r_ik(puma, puma.fk(q))
+    assert result.singular.shape == (len(result.Q),)
+    on_wrist = np.abs(wrap(result.Q[:, 4])) < SAME  # axes 4 and 6 aligned
+    assert np.array_equal(result.singular, on_wrist) and on_wrist.any()
+    regular = general_6r_ik(puma, puma.fk(np.array([0.3, -0.5, 0.8, 0.4, 0.6, 0.2])))
+    assert regular.reason is None and not regular.singular.any()
+
+
+def test_analytic_ik_of_a_general_arm_flags_its_singular_solutions():
+    # issue 43: IKSolution.singular was always () in the general engine
+    table, chain = parallel_base_arm()
+    q = np.array([0.3, -0.5, 0.8, 0.4, 0.0, 0.2])  # q5 = 0: the Jacobian loses rank
+    F = dh_frames(table, q)[0]
+    z, o, p = F[:-1, :3, 2], F[:-1, :3, 3], F[-1, :3, 3]
+    J = np.concatenate([np.cross(z, p - o), z], axis=1).T
+    sigma = np.linalg.svd(J, compute_uv=False)
+    assert sigma[-1] < 1e-12 * sigma[0]  # singular, by the DH Jacobian
+    solutions = sk.ik.analytic_ik(chain, dh_fk(table, q)[0])
+    flagged = [s for s in solutions if s.singular]
+    assert flagged and all(s.singular == ("singular",) for s in flagged)
+    assert "singular configuration" in solutions.reason

@@ -42,18 +42,39 @@ ORDER = [
     ),
     # _compiled (an engine) builds its exponentials with the rigid-motion kernels (skew)
     ("rigid motions", ["transforms", "orientation", "_compiled"]),
-    ("Lie algebra", ["lie", "ik._quartic", "ik.subproblems", "_second_order"]),
-    ("screws", ["screws", "systems"]),
+    # motion's entry point loads its modules on first use (its LAZY table), so the
+    # chains can compute their second order with motion._second_order
+    (
+        "Lie algebra",
+        ["lie", "ik._quartic", "ik.subproblems", "motion", "motion._second_order"],
+    ),
+    # lines reads screw systems (a ScrewSystem of lines); _system_geometry is the
+    # kernel of ScrewSystem's principal screws and classification
+    ("screws", ["screws", "_system_geometry", "systems", "_line_geometry", "lines"]),
     # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
     # it; the entry point of screwkit.ik loads only it and the subproblems at the top
     # (the closed form on first use), so chains can import it; urdf is read by
-    # Chain.from_urdf
-    ("chains", ["links", "urdf", "ik.newton", "ik", "chains"]),
+    # Chain.from_urdf; the computations on a chain (jacobians, motion.acceleration and
+    # the exact and fast kinematics) take it as their first argument and import no
+    # chain: the Chain's methods are these functions
+    (
+        "chains",
+        [
+            "links",
+            "urdf",
+            "ik.newton",
+            "ik",
+            "jacobians",
+            "motion.acceleration",
+            "_exact_kinematics",
+            "_fast_kinematics",
+            "chains",
+        ],
+    ),
     (
         "catalogue",
         [
             "limbs",
-            "joints",
             "parallel.legs",
             "parallel.numeric",
             "parallel.search",
@@ -67,7 +88,6 @@ ORDER = [
     (
         "algorithms",
         [
-            "jacobians",
             "ik._closed_form",
             "ik.spherical_wrist",
             "ik.ur",
@@ -75,12 +95,13 @@ ORDER = [
             "ik.general",
             "ik.decomposed",
             "ik.dispatch",
-            "acceleration",
-            "trajectory",
-            "differential_ik",
+            "motion.trajectory",
+            "motion.differential_ik",
             "workspace",
             "redundancy",
             "mobility_analysis",
+            "statics",
+            "contact",
         ],
     ),
     (
@@ -88,17 +109,16 @@ ORDER = [
         [
             "_sliders",
             "_mechanism_plot",
+            "_line_plots",
             "parallel.plotting",
             "plotting",
+            "_viewer_page",
+            "_viewer_mechanisms",
+            "_stepped_figure",
             "viewer",
             "widgets",
             "exercises",
         ],
-    ),
-    # old module paths kept one release: each warns and re-exports its new module
-    (
-        "deprecated aliases",
-        ["subproblems", "spherical_wrist", "ur_ik", "stanford_ik"],
     ),
 ]
 
@@ -293,7 +313,7 @@ def test_the_entry_point_imports_only_listed_modules():
     "module, source",
     [
         ("_checks", "def check_chain(value):\n    from .chains import Chain\n"),
-        ("chains", "from .jacobians import geometric_jacobian\n"),
+        ("chains", "from .workspace import sweep\n"),
         ("transforms", "from .screws import axis_coordinates\n"),
         ("screws", "import screwkit.chains\n"),
         ("lie", "from . import lie\n"),  # itself
@@ -338,13 +358,3 @@ def test_the_checker_sees_a_lazy_import(module, source, flagged):
 )
 def test_the_checker_lets_a_downward_import_of_a_folder_pass(module, source):
     assert not upward(module, imports(module, source))
-
-
-def test_the_old_module_path_of_the_limb_builders_still_works_and_warns():
-    import screwkit as sk
-    from screwkit import limbs
-
-    with pytest.deprecated_call(match="use screwkit.limbs"):
-        revolute, spherical = sk.joints.revolute, sk.joints.spherical
-        assert sorted(sk.joints.__all__) == sorted(limbs.__all__)
-    assert revolute is limbs.revolute and spherical is limbs.spherical

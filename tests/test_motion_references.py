@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import screwkit as sk
-from screwkit import trajectory as tr
+from screwkit.motion import trajectory as tr
 
 REQUIRED = os.environ.get("SCREWKIT_REFERENCES") == "required"
 INSTALL = "pip install -r tests/reference-requirements.txt"

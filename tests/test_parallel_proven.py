@@ -56,8 +56,11 @@ needs_msolve = pytest.mark.skipif(
 
 @functools.cache
 def dietmaier_modes():
-    """stewart_fk_proven on Dietmaier's platform, once for the tests that use it."""
-    return stewart_fk_proven(DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO)
+    """stewart_fk_proven on Dietmaier's platform, once for the tests that use it: the
+    decimals printed in the paper, exactly (rationals="decimal")."""
+    return stewart_fk_proven(
+        DIETMAIER_BASE, DIETMAIER_PLATFORM, DIETMAIER_RHO, rationals="decimal"
+    )
 
 
 def leg_error(T, base, platform, lengths):
@@ -113,7 +116,7 @@ def test_dietmaier_in_mm_and_cm_same_modes_scaled(factor):
     base = in_decimal_units(DIETMAIER_BASE, factor)
     platform = in_decimal_units(DIETMAIER_PLATFORM, factor)
     lengths = in_decimal_units(DIETMAIER_RHO, factor)[0]
-    poses, complete, _ = stewart_fk_proven(base, platform, lengths)
+    poses, complete, _ = stewart_fk_proven(base, platform, lengths, rationals="decimal")
     assert (len(poses), complete) == (40, True)
     check_modes(poses, base, platform, lengths)
     metres, _, _ = dietmaier_modes()
@@ -156,7 +159,7 @@ def short_decimal_platform(seed):
 )
 def test_random_platforms_contain_the_search_and_the_pose(seed):
     base, platform, lengths, T0 = short_decimal_platform(seed)
-    poses, complete, _ = stewart_fk_proven(base, platform, lengths)
+    poses, complete, _ = stewart_fk_proven(base, platform, lengths, rationals="decimal")
     assert complete and 1 <= len(poses) <= 40
     check_modes(poses, base, platform, lengths)
     # the legs were rounded to 1e-4 m: a mode within a few times that of T0
@@ -198,7 +201,8 @@ def rotation_matrix_count(base, platform, lengths):
 @pytest.mark.parametrize("seed", range(10))
 def test_random_platforms_count_equals_independent_exact_count(seed):
     base, platform, lengths, _ = short_decimal_platform(100 + seed)
-    poses, complete, _ = stewart_fk_proven(base, platform, lengths)
+    # the decimals, as rotation_matrix_count reads them
+    poses, complete, _ = stewart_fk_proven(base, platform, lengths, rationals="decimal")
     assert complete
     assert len(poses) == rotation_matrix_count(base, platform, lengths)
     for T in stewart_of(base, platform).fk_all(lengths, starts=2000, seed=seed):
@@ -244,6 +248,84 @@ def test_a_continuum_is_reported_not_listed():
     )
     assert (poses, complete) == ([], False)
     assert "positive-dimensional" in reason
+
+
+def similar_hexagons():
+    """A platform 0.5 times its base (similar hexagons, the floats of STEWART_BASE
+    halved, exactly), legs of 1.2 m: architecture-singular. The platform parallel to
+    the base above its centre, R = I, at z = sqrt(1.2^2 - 0.5^2) has every leg of
+    1.2 m (each platform point is 0.5 m horizontally from its base point, as
+    |b_i - b_i / 2| = |b_i| / 2 with |b_i| = 1), and it moves with one degree of
+    freedom (a self-motion) from there."""
+    base = np.array(sk.parallel.STEWART_BASE, dtype=float)
+    return base, 0.5 * base, np.full(6, 1.2)
+
+
+@needs_msolve
+def test_similar_hexagons_are_a_continuum_not_a_proof_of_isolated_modes():
+    # issue 43: the decimals of the floats are not similar hexagons, and the proof of
+    # that other problem said complete=True with 4 modes at z = 0
+    base, platform, lengths = similar_hexagons()
+    T = np.eye(4)
+    T[2, 3] = np.sqrt(1.2**2 - 0.5**2)
+    assert leg_error(T, base, platform, lengths) < 1e-15  # on the continuum
+    poses, complete, reason = stewart_fk_proven(base, platform, lengths)
+    assert (poses, complete) == ([], False)
+    assert reason.startswith(proven.POSITIVE_DIMENSIONAL)
+    pm = stewart_of(base, platform)
+    modes = pm.fk_all(lengths, proof=True)
+    assert not modes.complete and modes.continuum
+    assert proven.POSITIVE_DIMENSIONAL in modes.reason and "msolve" in modes.method
+    assert modes, "a pose of the continuum is listed"
+    check_modes(modes, base, platform, lengths)
+
+
+def scaled_home_legs():
+    """The default platform's points and the legs of a pose near home (8 real
+    modes)."""
+    pm = sk.parallel.stewart_gough()
+    T = pm.home()
+    T[:3, 3] += [0.05, -0.03, 0.1]
+    return pm.base_points, pm.platform_points, pm.ik(T)
+
+
+@functools.cache
+def home_legs_modes():
+    """stewart_fk_proven of :func:`scaled_home_legs` in m, once."""
+    return stewart_fk_proven(*scaled_home_legs())
+
+
+@needs_msolve
+def test_scaled_by_a_power_of_two_the_same_exact_problem_the_same_bits():
+    # 2^k times a float is exact, so 2^k times the geometry is the same exact problem
+    # in a unit 2^k times larger: the modes are the same to the last bit, scaled
+    base, platform, lengths = scaled_home_legs()
+    metres, complete, _ = home_legs_modes()
+    assert complete and len(metres) >= 1
+    f = 2.0**-20  # about 1e-6 m
+    poses, complete, _ = stewart_fk_proven(f * base, f * platform, f * lengths)
+    assert complete and len(poses) == len(metres)
+    for T, U in zip(poses, metres):
+        assert np.array_equal(T[:3, :3], U[:3, :3])
+        assert np.array_equal(T[:3, 3], f * U[:3, 3])
+
+
+@needs_msolve
+@pytest.mark.parametrize("factor", [100.0, 1e-6])
+def test_in_other_units_the_same_modes_scaled(factor):
+    # 100 m and 1 micrometre: floats of another problem, each entry within round-off
+    # of the scaled one, so the same modes to round-off (issue 43: right, but slow)
+    base, platform, lengths = scaled_home_legs()
+    metres, _, _ = home_legs_modes()
+    poses, complete, _ = stewart_fk_proven(
+        factor * base, factor * platform, factor * lengths
+    )
+    assert complete and len(poses) == len(metres)
+    check_modes(poses, factor * base, factor * platform, factor * lengths)
+    for T in poses:
+        U = T.copy()
+        U[:3, 3] /= factor
+        assert any(same_pose(U, V, 1.0) for V in metres)
 
 
 @needs_msolve

@@ -1,6 +1,6 @@
 """screwkit's public names: ``__all__`` lists every public submodule and name, each
-resolves, ``import screwkit`` warns of nothing, and the moved paths (``sk.joints``,
-``screwkit.mobility`` the module) still work with a DeprecationWarning."""
+resolves, ``import screwkit`` warns of nothing, and a moved module's old path is gone
+(no release was tagged, so a moved module moves)."""
 
 import importlib
 import pkgutil
@@ -12,10 +12,6 @@ import pytest
 
 import screwkit as sk
 
-#: The ik family's old flat paths, kept one release as deprecated aliases of the
-#: modules of screwkit/ik/ (each warns on import): not public names.
-IK_FAMILY_FLAT = {"subproblems", "spherical_wrist", "ur_ik", "stanford_ik"}
-
 
 def public_submodules():
     return {
@@ -26,7 +22,7 @@ def public_submodules():
 
 
 def test_every_public_submodule_is_in_all():
-    expected = public_submodules() - set(sk._DEPRECATED_MODULES) - IK_FAMILY_FLAT
+    expected = public_submodules()
     assert expected - set(sk.__all__) == set()
     assert "mobility_analysis" in expected and "tolerances" in expected
 
@@ -42,10 +38,9 @@ def test_every_public_attribute_is_in_all():
     public = {
         name
         for name in vars(sk)
-        if not name.startswith("_")
-        and name not in {"importlib", "sys", "types", "warnings"}
+        if not name.startswith("_") and name not in {"importlib"}
     }
-    missing = public - set(sk.__all__) - IK_FAMILY_FLAT - {"joints"}
+    missing = public - set(sk.__all__)
     assert missing == set()
 
 
@@ -64,41 +59,23 @@ def test_sk_mobility_is_the_function_and_the_module_has_its_own_name():
     assert sk.mobility([[([0, 0, 1], [0, 0, 0], 0)]]).number == 1
 
 
-def test_the_old_module_path_of_mobility_works_and_warns():
-    with pytest.deprecated_call(match="use screwkit.mobility_analysis"):
-        from screwkit.mobility import Mobility, grubler_kutzbach
-    assert Mobility is sk.Mobility and grubler_kutzbach is sk.grubler_kutzbach
-    import screwkit.mobility  # noqa: F401 (the import must not rebind sk.mobility)
-
-    assert sk.mobility is sk.mobility_analysis.mobility
-
-
-def test_every_name_read_from_sk_joints_warns_and_is_the_limb_builder():
-    for _ in range(2):
-        with pytest.deprecated_call(match="use screwkit.limbs"):
-            prismatic = sk.joints.prismatic
-        assert prismatic is sk.limbs.prismatic
-    with pytest.raises(AttributeError, match="no attribute 'nothing'"):
-        sk.joints.nothing  # noqa: B018 (the read is the test)
-
-
-def test_importing_the_joints_module_warns():
-    code = (
-        "import warnings, screwkit\n"
-        "with warnings.catch_warnings(record=True) as caught:\n"
-        "    warnings.simplefilter('always')\n"
-        "    import screwkit.joints\n"
-        "assert any(issubclass(w.category, DeprecationWarning) "
-        "and 'screwkit.limbs' in str(w.message) for w in caught), caught\n"
-        "with warnings.catch_warnings(record=True) as caught:\n"
-        "    warnings.simplefilter('always')\n"
-        "    screwkit.joints.revolute\n"
-        "assert [w.category for w in caught] == [DeprecationWarning], caught\n"
+@pytest.mark.parametrize(
+    "old",
+    ["joints", "mobility", "subproblems", "spherical_wrist", "ur_ik", "stanford_ik"],
+)
+def test_the_old_module_paths_are_gone(old):
+    """sk.joints, screwkit.mobility (the module; sk.mobility is the function) and the
+    ik family's flat paths moved before any release: no alias stays behind."""
+    assert (
+        importlib.machinery.PathFinder.find_spec(f"screwkit.{old}", sk.__path__) is None
     )
-    subprocess.run([sys.executable, "-c", code], check=True)
+    assert callable(sk.mobility)
+    if old != "mobility":
+        with pytest.raises(AttributeError):
+            getattr(sk, old)
 
 
-def test_a_deprecated_name_is_not_exported_by_star():
+def test_star_import_exports_no_module_alias():
     namespace = {}
     with warnings.catch_warnings():
         warnings.simplefilter("error", DeprecationWarning)

@@ -1,5 +1,5 @@
-"""Trajectories (screwkit.trajectory): time scalings against their closed forms and
-limits, derivatives against differences, screw and Cartesian paths by their
+"""Trajectories (screwkit.motion.trajectory): time scalings against their closed forms
+and limits, derivatives against differences, screw and Cartesian paths by their
 properties (ends, constant twist, straight line), SE(2) against SE(3), slerp, via
 points, a path through the IK, bad input. Modern Robotics and SciPy are compared in
 tests/test_motion_references.py."""
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import screwkit as sk
-from screwkit import trajectory as tr
+from screwkit.motion import trajectory as tr
 
 PROFILES = [tr.cubic, tr.quintic]
 
@@ -205,7 +205,7 @@ def test_a_line_through_the_pumas_wrist_singularity_is_named():
 def test_bad_input_is_a_clear_error():
     with pytest.raises(ValueError, match="v_max must be a positive number"):
         tr.cubic(v_max=-1.0)
-    with pytest.raises(ValueError, match="duration 0.5 s is below"):
+    with pytest.raises(ValueError, match="duration must be at least the 1.875 s"):
         tr.quintic(0.5, v_max=1.0)
     with pytest.raises(ValueError, match="needs a duration or a limit"):
         tr.cubic()
@@ -235,3 +235,51 @@ def test_bad_input_is_a_clear_error():
         tr.joint_path([0.0], [1.0], 2.0, 0.5)
     with pytest.raises(ValueError, match="q_start is needed"):
         tr.follow_path(sk.robots.puma560(), np.eye(4)[None], method="numeric")
+
+
+# ---- sizes and shapes refused clearly (issue 43) -------------------------------------
+
+
+def test_too_many_times_are_refused_before_the_array_is_built():
+    # 10^10 times are 80 GB of floats (NumPy's MemoryError before)
+    with pytest.raises(ValueError, match=r"count=10000000000 times.*80 GB.*fewer"):
+        tr.quintic(2.0).times(10**10)
+    assert tr.quintic(2.0).times(5).tolist() == [0.0, 0.5, 1.0, 1.5, 2.0]
+
+
+def test_too_many_path_samples_are_refused_before_the_poses_are_built():
+    # 2 x 10^8 samples (a broadcast view, no memory) would be 25.6 GB of 4 x 4 poses
+    s = np.broadcast_to(0.5, (2 * 10**8,))
+    for path in (tr.screw_path, tr.cartesian_path):
+        with pytest.raises(ValueError, match="200000000 samples of s.*fewer s"):
+            path(np.eye(4), pose(1), s)
+    with pytest.raises(ValueError, match="200000000 samples"):
+        tr.slerp([1.0, 0, 0, 0], [0.0, 1.0, 0, 0], s)
+    with pytest.raises(ValueError, match="200000000 times t"):
+        tr.joint_path([0.0] * 6, [1.0] * 6, tr.cubic(1.0), s)
+    motion = tr.via_points([0.0, 1.0], [[0.0] * 6, [1.0] * 6])
+    with pytest.raises(ValueError, match="200000000 times t"):
+        motion.evaluate(s)
+
+
+def test_via_point_velocities_must_have_the_shape_of_the_points():
+    times, points = [0.0, 1.0, 2.0], np.zeros((3, 2))
+    # the wrong size: NumPy's "cannot reshape array of size 3 into shape (3,2)" before
+    with pytest.raises(ValueError, match=r"velocities must have the shape of points"):
+        tr.via_points(times, points, velocities=[1.0, 2.0, 3.0])
+    # the same size, another shape: each velocity went to the wrong point before
+    with pytest.raises(ValueError, match=r"\(3, 2\).*got shape \(2, 3\)"):
+        tr.via_points(times, points, velocities=np.ones((2, 3)))
+    # one coordinate: the shape of the points, (M,)
+    motion = tr.via_points(times, [0.0, 1.0, 0.0], velocities=[0.0, 0.5, 0.0])
+    assert motion.evaluate(1.0)[1].tolist() == [0.5]
+
+
+def test_an_out_of_range_time_is_named_not_printed_with_the_whole_array():
+    # the message quoted every time given before (some MB here); t[k] = 2 k / 999999
+    # passes 1 first at k = 500000, and k = 500000 ... 999999 are outside
+    motion = tr.via_points([0.0, 1.0], [0.0, 1.0])
+    t = np.linspace(0.0, 2.0, 10**6)
+    with pytest.raises(ValueError, match=r"t\[500000\] = 1\.000001") as e:
+        motion.evaluate(t)
+    assert len(str(e.value)) < 200 and "500000 of 1000000 outside" in str(e.value)

@@ -701,7 +701,7 @@ def test_trajectory_takes_a_dict_or_follow_path_results_and_unwraps_turns():
     # a prismatic joint is sent as it is.
     arm = sk.robots.planar([0.3, 0.2])
     q = np.array([[3.0, 0.1], [-3.0, 0.2], [-2.9, 0.3]])
-    path = sk.trajectory.PathIK(q, np.ones(3, bool), np.zeros(3, bool), np.ones(3), [])
+    path = sk.motion.PathIK(q, np.ones(3, bool), np.zeros(3, bool), np.ones(3), [])
     model = model_of(viewer.trajectory_viewer(arm, {"wrapped": path}))
     sent = np.array(model["paths"][0]["q"])
     np.testing.assert_allclose(sent[:, 0], [3.0, 2 * np.pi - 3.0, 2 * np.pi - 2.9])

@@ -8,12 +8,25 @@ it (the self-contained TeX-to-SVG build, every TeX extension, from the same
 sphinx-mathjax-offline package the book serves MathJax from), so its formulas show
 wherever the file is copied or mailed, with no network and no book beside it.
 
-Usage: python tools/teacher_answers.py [OUTPUT_DIR]   (default _build/answers)
+The keys of the assessed exercises are not in the package (a student's screwkit has
+none): they live in book/teacher_keys/, which screwkit reads from this checkout.
+
+With ``--seeds class.csv`` (columns ``student,seed``; ``make answers SEEDS=class.csv``)
+it also writes, for the parametrised exercises (``sk.exercises.variant``), one sheet
+per student with their numbers, ``OUTPUT_DIR/sheets/STUDENT.md``, and the teacher's
+keys of every student, ``OUTPUT_DIR/keys.csv`` (student, seed, chapter, number, key,
+unit), computed by screwkit from the seeds.
+
+Usage: python tools/teacher_answers.py [OUTPUT_DIR] [--seeds CSV]
+(default _build/answers)
 """
 
+import argparse
+import csv
 import html
 import importlib.util
 import os
+import re
 import sys
 
 import yaml
@@ -25,6 +38,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from convert_exercises import read_exercises  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# the keys of the assessed exercises, which the package does not hold
+os.environ.setdefault(
+    "SCREWKIT_TEACHER_KEYS", os.path.join(ROOT, "book", "teacher_keys")
+)
 
 
 def chapters():
@@ -53,8 +70,13 @@ def key_text(chapter, number):
     from screwkit import exercises
 
     key = exercises.answer_key(chapter, number)
+    if number in exercises.parametrised(chapter):
+        key["exact"] = "parametrised (sk.exercises.variant): seed 0, " + key["exact"]
     lines = [f"- answer: `{key['exact']}` = {key['values']} (shape {key['shape']})"]
-    lines.append(f"- unit: {key['unit'] or '(none)'}")
+    if key.get("units"):
+        lines.append(f"- units: {', '.join(key['units'])}")
+    else:
+        lines.append(f"- unit: {key['unit'] or '(none)'} ({key['quantity']})")
     lines.append(f"- tolerance: {key['tolerance']} (relative {key.get('rtol', 0)})")
     for name in ("forms", "alternatives", "hint"):
         if key.get(name):
@@ -130,7 +152,57 @@ def mathjax_script():
     return text
 
 
-def main(folder):
+def read_seeds(path):
+    """[(student, seed)] from a CSV with columns student and seed."""
+    with open(path, encoding="utf-8", newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows or not {"student", "seed"} <= set(rows[0]):
+        raise ValueError(f"{path} must have the columns student and seed")
+    out, seen = [], set()
+    for row in rows:
+        student, seed = row["student"].strip(), row["seed"].strip()
+        if not re.fullmatch(r"[A-Za-z0-9_.-]+", student) or student in seen:
+            raise ValueError(
+                f"{path}: student names must be unique file names, got {student!r}"
+            )
+        if not seed.isdigit():
+            raise ValueError(
+                f"{path}: {student}'s seed must be a whole number >= 0, got {seed!r}"
+            )
+        seen.add(student)
+        out.append((student, int(seed)))
+    return out
+
+
+def sheets(folder, seeds):
+    """One sheet per student (their numbers) and keys.csv (every student's keys)."""
+    from screwkit import exercises
+
+    os.makedirs(os.path.join(folder, "sheets"), exist_ok=True)
+    found = exercises.parametrised()
+    with open(os.path.join(folder, "keys.csv"), "w", encoding="utf-8", newline="") as f:
+        table = csv.writer(f)
+        table.writerow(["student", "seed", "chapter", "number", "key", "unit"])
+        for student, seed in seeds:
+            lines = [f"# Your exercises ({student}, seed {seed})", ""]
+            for chapter, number in found:
+                v = exercises.variant(chapter, number, seed)
+                lines += [f"## {title(chapter)}, exercise {number}", "", v.statement]
+                lines += [
+                    "",
+                    f"Check it: `sk.exercises.check({chapter!r}, {number}, "
+                    f"answer, seed={seed})`",
+                    "",
+                ]
+                values = ", ".join(f"{x:.6g}" for x in v.key["values"])
+                table.writerow([student, seed, chapter, number, values, v.key["unit"]])
+            path = os.path.join(folder, "sheets", f"{student}.md")
+            with open(path, "w", encoding="utf-8") as sheet:
+                sheet.write("\n".join(lines))
+    return len(seeds) * len(found)
+
+
+def main(folder, seeds=None):
     os.makedirs(folder, exist_ok=True)
     markdown = answers_markdown()
     with open(os.path.join(folder, "answers.md"), "w", encoding="utf-8") as f:
@@ -138,7 +210,19 @@ def main(folder):
     with open(os.path.join(folder, "answers.html"), "w", encoding="utf-8") as f:
         f.write(answers_html(markdown, mathjax_script()))
     print(f"The teacher's answers: {folder}/answers.md and answers.html")
+    if seeds:
+        count = sheets(folder, read_seeds(seeds))
+        print(
+            f"The students' sheets: {folder}/sheets/, their keys ({count}): "
+            f"{folder}/keys.csv"
+        )
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "_build", "answers"))
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument(
+        "folder", nargs="?", default=os.path.join(ROOT, "_build", "answers")
+    )
+    parser.add_argument("--seeds", help="a CSV with columns student,seed")
+    arguments = parser.parse_args()
+    main(arguments.folder, arguments.seeds)

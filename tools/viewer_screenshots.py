@@ -107,7 +107,7 @@ def figures():
 def motion_paths(puma):
     """The motion chapter's PUMA on the screw motion and the straight line + slerp
     between two poses, over a 3 s quintic (joint paths from the closed-form IK)."""
-    from screwkit import trajectory as tr
+    from screwkit.motion import trajectory as tr
 
     q_first = np.radians([0, -30, 20, 0, 40, 0])
     T0, T1 = puma.fk(q_first), puma.fk(np.radians([90, -10, -10, 60, 60, 30]))

@@ -12,10 +12,12 @@ The chapters write their exercises with sphinx-exercise's directives
   exercise listed in ``book/assessed.yml`` loses its key (the JSON the page checks
   with) and its Check button: the page says that the teacher marks it. The other boxes
   still check. The copies of the notebooks offered for download (``_sources``) get the
-  same treatment, and the pages have no launch buttons (Binder, Colab, a hub), which
-  would open the repository's notebooks with their solutions. The notebooks' stored
-  outputs are the same for both editions; the course edition reuses the self-study
-  build's execution cache.
+  same treatment (an assessed box's plain text no longer says how to check it), and
+  the pages have no launch buttons (Binder, Colab, a hub), which would open the
+  repository's notebooks with their solutions, and no button to the repository (nor
+  its issues, a page's source), which holds the solutions and the teacher's keys.
+  The notebooks' stored outputs are the same for both editions; the course edition
+  reuses the self-study build's execution cache.
 """
 
 import json
@@ -33,6 +35,15 @@ BOX = re.compile(
     re.S,
 )
 SOLUTION = re.compile(r"^(:{3,})\{solution(?:-start)?\}")
+#: sphinx-book-theme's options of the buttons that link to the repository
+REPOSITORY_BUTTONS = (
+    "use_repository_button",
+    "use_issues_button",
+    "use_edit_page_button",
+    "use_source_button",
+)
+#: the plain text of an assessed box (AnswerBox's repr says how to check it)
+PLAIN_BOX = re.compile(r"^Answer box for ([a-z0-9_]+) exercise (\d+) \(.*\)$", re.S)
 
 
 def edition():
@@ -103,7 +114,21 @@ def course_notebook(notebook, marked):
             if "text/html" in data:
                 html = "".join(data["text/html"])
                 data["text/html"] = strip_keys(html, marked)
+            if "text/plain" in data:
+                data["text/plain"] = strip_plain("".join(data["text/plain"]), marked)
     return notebook
+
+
+def strip_plain(text, marked):
+    """The plain text of an answer box (its repr), with an assessed one's way to
+    check it replaced by a note that the teacher marks it."""
+    match = PLAIN_BOX.match(text.strip())
+    if match is None or (match.group(1), int(match.group(2))) not in marked:
+        return text
+    return (
+        f"Exercise {match.group(2)} of {match.group(1)} is assessed: hand your "
+        f"answer to your teacher, who marks it."
+    )
 
 
 def numbers_from_labels(app, env):
@@ -127,6 +152,10 @@ def course_config(app, config):
     # offers the notebook with the solutions taken out (course_sources)
     options = dict(config.html_theme_options or {})
     options["launch_buttons"] = {}
+    # nor a button to the repository (its issues, a page's source or an edit of it):
+    # the repository holds the solutions and the teacher's keys (book/teacher_keys)
+    for button in REPOSITORY_BUTTONS:
+        options[button] = False
     config.html_theme_options = options
     # the same stored outputs: the self-study build's execution cache
     cache = os.path.join(app.srcdir, "_build", ".jupyter_cache")

@@ -95,7 +95,10 @@ class IKSolution:
         Its label, one of :data:`CONFIGURATIONS` ('lun' ... 'rdf').
     singular : tuple of str
         The singularities it sits on: ``'shoulder'``, ``'elbow'``, ``'wrist'`` (the
-        Stanford arm's boom counts as its elbow); empty for a regular solution.
+        Stanford arm's boom counts as its elbow); ``'continuum'`` (a decomposable 6R:
+        an angle free) or ``'singular'`` (a general 6R: the Jacobian loses rank);
+        empty for a regular solution. The answer's ``reason`` says so whenever one
+        solution has any.
     within_limits : bool
         Whether q, or q moved by whole turns, respects the joint limits.
     residual : float
@@ -125,8 +128,10 @@ class IKSolutions(list):
     ----------
     solutions : iterable of IKSolution
     reason : str or None
-        Why the list is empty (out of reach, or outside the joint limits); None when it
-        is not.
+        Why the list is empty (out of reach, or outside the joint limits), or what is
+        special about its solutions (some at a singular configuration or on a
+        continuum, or the list possibly incomplete); None for isolated, regular
+        solutions.
     structure : str or None
         The structure the closed form recognised (a key of :data:`STRUCTURES`).
     """
@@ -518,8 +523,10 @@ def _decomposed_answers(arm, chain, batch, within_limits, near):
 def _general_answer(arm, chain, found, within_limits, near):
     """The IKSolutions of a general 6R arm from its solver's answer for one pose."""
     solutions = [
-        (q, f"s{i}", res, ())
-        for i, (q, res) in enumerate(zip(found.Q, found.residuals))
+        (q, f"s{i}", res, ("singular",) if flag else ())
+        for i, (q, res, flag) in enumerate(
+            zip(found.Q, found.residuals, found.singular)
+        )
     ]
     reason = found.reason or (None if solutions else "out of reach: no real solution")
     return _listed(solutions, chain.qlim, within_limits, near, arm.structure, reason)
@@ -552,11 +559,34 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near, chain=None):
     if within_limits:
         solutions = [s for s in solutions if s.within_limits]
     result = _nearest_first(IKSolutions(solutions, structure=_name(arm)), near)
+    result.reason = _singular_reason(result)
     if not result:
         result.reason = _outside_limits(
             _answer(arm, T, Q, flags, code, limits, False, None)
         )
     return result
+
+
+def _singular_reason(solutions):
+    """The reason of a named structure's solutions at a singularity (None if none is):
+    a wrist or shoulder singularity is a continuum, an elbow one a double solution."""
+    kinds = {name for s in solutions for name in s.singular}
+    if not kinds:
+        return None
+    count = sum(1 for s in solutions if s.singular)
+    said = []
+    if kinds & {"wrist", "shoulder"}:
+        said.append(
+            "at a wrist or shoulder singularity a joint angle is free (a continuum): "
+            "each listed solution is one of a family"
+        )
+    if "elbow" in kinds:
+        said.append("at an elbow singularity solutions coincide in pairs")
+    return (
+        f"{count} of the {len(solutions)} solutions are at a singular configuration "
+        f"({', '.join(sorted(kinds))}; see each solution's singular): "
+        + "; ".join(said)
+    )
 
 
 def _into_limits(Q, qlim, revolute=None):

@@ -69,6 +69,8 @@ from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
     IK_GENERAL_CLUSTER_TOL,
     IK_GENERAL_COMFORT_TOL,
+    IK_GENERAL_CONSISTENT_TOL,
+    IK_GENERAL_EXPLAINED_TOL,
     IK_GENERAL_LEADING_TOL,
     IK_GENERAL_NULL_TOL,
     IK_GENERAL_RANK_TOL,
@@ -137,12 +139,20 @@ class GeneralIK:
     formulation : str
         The form of the loop that was solved, e.g. 'joints 1..6' or
         'joints 6..1 shifted by 2' (for the record; '' when none worked).
+    singular : ndarray of bool, shape (k,)
+        Whether the Jacobian loses rank at each solution (``reason`` then says so):
+        solutions may coincide there, or the solution be a point of a continuum.
     """
 
     Q: np.ndarray
     residuals: np.ndarray
     reason: str | None = None
     formulation: str = ""
+    singular: np.ndarray = None
+
+    def __post_init__(self):
+        if self.singular is None:
+            self.singular = np.zeros(len(self.Q), bool)
 
 
 def _cross3(a, b):
@@ -347,7 +357,9 @@ def _repeated_roots(M, x3, V):
 
 def _candidates(w, r, G, shift, found):
     """Joint vectors (k, 6) of the loops E1 ... E6 = G_j from the eigenvalue problems
-    of ``found`` (an :class:`_Eliminated`), and the pose j (k,) of each."""
+    of ``found`` (an :class:`_Eliminated`), the pose j (k,) of each, and whether each
+    is consistent (k,): its joints 1 and 2 products those of two angles, so that its
+    root (its q3) is genuine and a solution must account for it."""
     values, vectors = np.linalg.eig(found.A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
@@ -373,11 +385,21 @@ def _candidates(w, r, G, shift, found):
     values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0]
     b = np.einsum("kij,kj->ki", found.pinv[pose], values.T - found.C0[pose])
     # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
-    q1 = np.arctan2(b[:, 5], b[:, 2]) + shift[0]
-    q2 = np.arctan2(b[:, 1], b[:, 0]) + shift[1]
+    c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 = b.T
+    q1 = np.arctan2(s1, c1) + shift[0]
+    q2 = np.arctan2(s2, c2) + shift[1]
     q = np.stack([q1, q2, q3, q4, q5, np.zeros_like(q1)], axis=1)
     q[:, 5] = _last_angle(wk, rk, G[pose], q)
-    return q, pose
+    gaps = [
+        c1 * c1 + s1 * s1 - 1,
+        c2 * c2 + s2 * s2 - 1,
+        c1c2 - c1 * c2,
+        c1s2 - c1 * s2,
+        s1c2 - s1 * c2,
+        s1s2 - s1 * s2,
+    ]
+    consistent = np.max(np.abs(gaps), axis=0) <= IK_GENERAL_CONSISTENT_TOL
+    return q, pose, consistent
 
 
 def _with_repeated_roots(M, x3, V, which):
@@ -445,10 +467,12 @@ def _adjoint_inverse(G, S):
 
 
 def _formulation(S, G, index):
-    """(name, w, r, target, joint order, sign) of form ``index`` (0 to 11) of the
-    loop for poses G (n, 4, 4): joints 1..6 (index < 6) or 6..1, cyclically shifted by
+    """(name, w, r, target, joint order) of form ``index`` (0 to 11) of the loop for
+    poses G (n, 4, 4): joints 1..6 (index < 6) or 6..1, cyclically shifted by
     index % 6; w, r (6, 3, n, 1) the axes (n = 1 when they do not depend on the pose),
-    r the point of each axis nearest the origin."""
+    r the point of each axis nearest the origin. The form's angle phi_i is the angle
+    of joint order[i] itself: backwards, E(S6, q6)^-1 ... E(S1, q1)^-1 = G^-1 is
+    E(-S6, q6) ... E(-S1, q1) = G^-1, the screws negated and the angles kept."""
     backwards, k = divmod(index, 6)
     screws, target = (-S[::-1], _inverse(G)) if backwards else (S, G)
     order = np.arange(6)[::-1] if backwards else np.arange(6)
@@ -467,7 +491,6 @@ def _formulation(S, G, index):
         r.transpose(1, 2, 0)[..., None],
         target,
         np.roll(order, -k),
-        -1.0 if backwards else 1.0,
     )
 
 
@@ -583,10 +606,20 @@ def _singular(w, r, home, Q):
     return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
 
 
-def _say(singular):
-    """The reason of an answer from the singular flags (k,) of its solutions: None for
-    isolated solutions; a sentence for none or for a solution where the Jacobian loses
-    rank."""
+def _say(singular, unexplained=()):
+    """The reason of an answer from the singular flags (k,) of its solutions and the
+    real roots of the eigenvalue problem (rad) that no solution accounts for: None
+    for isolated solutions that account for every root; a sentence for none, for a
+    solution where the Jacobian loses rank, or for a root left over (there may be a
+    solution that Newton did not bring to the pose)."""
+    if len(unexplained):
+        angles = ", ".join(f"{a:.4f}" for a in unexplained[:4])
+        missing = (
+            f"{len(unexplained)} real root(s) of the eigenvalue problem (its joint at "
+            f"{angles} rad) gave no solution of the pose: the list may be incomplete"
+        )
+        other = _say(singular)
+        return missing if other is None or not len(singular) else f"{missing}; {other}"
     if not len(singular):
         return "no real solution: the pose is out of reach"
     if not np.any(singular):
@@ -673,14 +706,18 @@ def _solve(chain, T):
     n = len(T)
     answers, reasons, fallback = [None] * n, [[] for _ in range(n)], {}
 
-    def finish(phi, pose, poses, name, order, sign):
+    def finish(phi, pose, poses, name, order, claims=None):
         """The answers of ``poses`` from the candidates phi (k, 6) of the form
-        ``name``, pose (k,) naming each candidate's pose."""
+        ``name``, pose (k,) naming each candidate's pose; ``claims`` (k,) which
+        candidates' third angles are genuine real roots of the eigenvalue problem,
+        each of which a solution must account for (None, a search: none)."""
         q = np.empty_like(phi)
-        q[:, order] = sign * phi
+        q[:, order] = phi
         q = _polish(z, o / scale, home, T_scaled[pose], q)
         residuals = _residuals(chain, T[pose], q, scale)
         good = residuals <= IK_GENERAL_ACCEPT_TOL
+        claims = np.zeros(len(phi), bool) if claims is None else claims
+        root, root_pose = phi[claims, 2], pose[claims]
         q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
         by_pose = np.argsort(pose, kind="stable")
         q, pose, residuals = q[by_pose], pose[by_pose], residuals[by_pose]
@@ -688,10 +725,17 @@ def _solve(chain, T):
         ends = np.searchsorted(pose, poses, "right")
         kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
         singular = _singular(z, o / scale, home, np.concatenate([Q for Q, _ in kept]))
+        by_pose = np.argsort(root_pose, kind="stable")
+        root, root_pose = root[by_pose], root_pose[by_pose]
+        root_starts = np.searchsorted(root_pose, poses, "left")
+        root_ends = np.searchsorted(root_pose, poses, "right")
         start = 0
-        for j, (Q, res) in zip(poses, kept):
+        for j, (Q, res), a, b in zip(poses, kept, root_starts, root_ends):
             flags = singular[start : start + len(Q)]
-            answers[j] = GeneralIK(Q, res, _say(flags), name)
+            gaps = np.abs(_wrap_angle(root[a:b, None] - Q[None, :, order[2]]))
+            left = root[a:b][~np.any(gaps <= IK_GENERAL_EXPLAINED_TOL, axis=1)]
+            left = np.unique(np.round(_wrap_angle(left), 4))
+            answers[j] = GeneralIK(Q, res, _say(flags, left), name, flags)
             start += len(Q)
 
     # a singular leading matrix from special geometry stays singular at any shift:
@@ -706,22 +750,27 @@ def _solve(chain, T):
         if not len(pending):
             break
         shift = _SHIFTS[attempt[0]]
-        name, w, r, target, order, sign = _formulation(Sn, G[pending], attempt[1])
+        name, w, r, target, order = _formulation(Sn, G[pending], attempt[1])
         found = _eliminate(w, r, target, shift)
         for j, why in zip(pending, found.reason):
             if why is not None:
                 reasons[j].append(f"{name}: {why}")
-        phi, which = _candidates(w, r, target, shift, found)
+        phi, which, claims = _candidates(w, r, target, shift, found)
         comfortable = found.usable & (found.quality >= IK_GENERAL_COMFORT_TOL)
         for i in np.nonzero(found.usable & ~comfortable)[0]:  # nearly degenerate
             j = pending[i]
             if j not in fallback or found.quality[i] > fallback[j][0]:
                 mine = which == i
-                fallback[j] = (found.quality[i], phi[mine], name, order, sign)
+                fallback[j] = (found.quality[i], phi[mine], name, order, claims[mine])
         if np.any(comfortable):
             take = comfortable[which]
             finish(
-                phi[take], pending[which[take]], pending[comfortable], name, order, sign
+                phi[take],
+                pending[which[take]],
+                pending[comfortable],
+                name,
+                order,
+                claims[take],
             )
             if len(_LAST_FORM) >= _LAST_FORM_SIZE:
                 _LAST_FORM.clear()
@@ -729,8 +778,8 @@ def _solve(chain, T):
         pending = pending[~comfortable]
     for j in pending:
         if j in fallback:
-            _, phi, name, order, sign = fallback[j]
-            finish(phi, np.full(len(phi), j), [j], name, order, sign)
+            _, phi, name, order, mine = fallback[j]
+            finish(phi, np.full(len(phi), j), [j], name, order, mine)
         else:
             answers[j] = GeneralIK(
                 np.zeros((0, 6)),
@@ -743,9 +792,7 @@ def _solve(chain, T):
     if empty:  # special geometry can hide roots from a form that looks well posed
         q, pose = _search(z, o / scale, home, T_scaled[empty])
         before = [answers[j] for j in empty]
-        finish(
-            q, np.asarray(empty)[pose], empty, "Newton search", [0, 1, 2, 3, 4, 5], 1
-        )
+        finish(q, np.asarray(empty)[pose], empty, "Newton search", [0, 1, 2, 3, 4, 5])
         for j, old in zip(empty, before):
             if not len(answers[j].Q):
                 answers[j] = old

@@ -730,8 +730,13 @@ class ParallelManipulator:
         With ``proof=True`` the Stewart-Gough platform (six prismatic legs, spatial),
         the 3-RPR and the 3-RRR are solved exactly instead, with certified real roots
         (:func:`~screwkit.parallel.stewart_fk_proven`, which needs the optional
-        package of ``screwkit[proof]``, and :func:`~screwkit.parallel.rpr_fk_proven`):
-        ``complete`` is then True unless the solver says why not.
+        package of ``screwkit[proof]``, and :func:`~screwkit.parallel.rpr_fk_proven`)
+        for the floats given, exactly (each a binary rational): ``complete`` True
+        proves that the list holds every real assembly mode of those numbers (each
+        pose rounded to floats). A continuum of solutions that the exact solver
+        proves (positive-dimensional: a self-motion, an architecture singularity) is
+        reported with ``complete`` False, its reason, and what the usual search finds
+        (``continuum`` True and a pose on it when the continuum has real poses).
 
         Parameters
         ----------
@@ -777,7 +782,7 @@ class ParallelManipulator:
         if self.planar and isinstance(self._legs, Revolute):
             return self._rrr_modes(values, proof)
         if proof and isinstance(self._legs, Prismatic):
-            proven = self._fk_proven(values)
+            proven = self._fk_proven(values, starts, seed)
             if proven is not None:
                 return proven
         closed = None
@@ -855,7 +860,7 @@ class ParallelManipulator:
             continuum=modes.continuum,
         )
 
-    def _fk_proven(self, values):
+    def _fk_proven(self, values, starts, seed):
         """fk_all by an exact solver with certified roots, or None if there is none."""
         if self.planar:
             method = "sextic, real roots isolated exactly (SymPy)"
@@ -870,6 +875,17 @@ class ParallelManipulator:
         else:
             return None
         poses, complete, reason = solved
+        if not complete and reason.startswith(_proven.POSITIVE_DIMENSIONAL):
+            # a continuum of complex solutions, proven: the search says whether it
+            # has real poses (and lists one of them, and the isolated modes it finds)
+            found = self.fk_all(values, starts=starts, seed=seed)
+            return AssemblyModes(
+                found,
+                complete=False,
+                method=f"{method}, then {found.method}",
+                reason=f"{reason}; {found.method}: {found.reason}",
+                continuum=found.continuum,
+            )
         return AssemblyModes(
             _search.sort_modes(self, poses),
             complete=complete,

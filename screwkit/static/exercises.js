@@ -8,21 +8,13 @@
   if (window.screwkitExercises) return;
 
   const DEG = Math.PI / 180;
-  // A factor to SI and a dimension, the exponents of (kg, m, s, rad), as in exercises.py
-  const UNITS = {
-    rad: [1, [0, 0, 0, 1]], deg: [DEG, [0, 0, 0, 1]], "°": [DEG, [0, 0, 0, 1]],
-    m: [1, [0, 1, 0, 0]], cm: [1e-2, [0, 1, 0, 0]], mm: [1e-3, [0, 1, 0, 0]],
-    s: [1, [0, 0, 1, 0]], kg: [1, [1, 0, 0, 0]], N: [1, [1, 1, -2, 0]],
-    Nm: [1, [1, 2, -2, 0]], W: [1, [1, 2, -3, 0]],
-  };
-  const UNIT_NAMES = { degree: "deg", degrees: "deg", radian: "rad", radians: "rad" };
-  const QUANTITIES = {
-    "0,0,0,0": "pure number", "0,0,0,1": "angle", "0,1,0,0": "length",
-    "0,2,0,0": "area", "0,0,1,0": "time", "1,0,0,0": "mass", "0,1,-1,0": "speed",
-    "0,0,-1,1": "angular speed", "0,0,-1,0": "rate", "0,1,-2,0": "acceleration",
-    "0,0,-2,1": "angular acceleration", "1,1,-2,0": "force", "1,2,-2,0": "torque",
-    "1,2,-3,0": "power", "0,1,0,-1": "pitch",
-  };
+  // The units (a factor to SI and a dimension, the exponents of (kg, m, s, rad)), their
+  // other names and what each dimension is called: one table, exercises.py's _UNITS,
+  // _UNIT_NAMES and _QUANTITIES, written here by sk.exercises.exercises_script()
+  const TABLES = /*SCREWKIT-UNIT-TABLES*/ {units: {}, names: {}, quantities: {}};
+  const UNITS = TABLES.units;
+  const UNIT_NAMES = TABLES.names;
+  const QUANTITIES = TABLES.quantities;
   const SLIPS = [
     ["rad", DEG, "looks like degrees, radians expected"],
     ["deg", 1 / DEG, "looks like radians, degrees expected"],
@@ -71,7 +63,6 @@
   function parse(text) {
     const tokens = tokenize(text);
     let at = 0;
-    const units = [];
     if (tokens.length === 0) throw new Error("the answer is empty");
     const peek = () => tokens[at] || [null, null];
     const take = (value) => {
@@ -96,35 +87,79 @@
     const signStartsItem = () =>
       spaceBefore() && at + 1 < tokens.length && !tokens[at + 1][2];
 
-    // items separated by commas, semicolons or whitespace (as NumPy prints arrays)
+    // items separated by commas, semicolons or whitespace (as NumPy prints arrays);
+    // brackets and parentheses around several items group them; each item is a pair
+    // [value in SI, unit or null]; a unit after the last item only applies to all
     function items() {
-      let values = item();
+      let pairs = item();
       for (;;) {
         if (peek()[1] === "," || peek()[1] === ";") {
           take();
         } else if (!(spaceBefore() && startsItem())) {
-          return values;
+          break;
         }
-        values = values.concat(item());
+        pairs = pairs.concat(item());
       }
+      const last = pairs[pairs.length - 1][1];
+      if (pairs.length > 1 && last !== null &&
+          pairs.slice(0, -1).every((p) => p[1] === null)) {
+        pairs = pairs.slice(0, -1).map((p) => [p[0] * last.factor, last])
+          .concat([pairs[pairs.length - 1]]);
+      }
+      return pairs;
+    }
+    // a parenthesis that holds a list: a comma or semicolon inside it, outside any
+    // inner parenthesis; decided by looking ahead, so nothing is parsed twice
+    function isGroup() {
+      let depth = 0;
+      for (let i = at; i < tokens.length; i++) {
+        const token = tokens[i][1];
+        if (token === "(" || token === "[") {
+          depth += 1;
+        } else if (token === ")" || token === "]") {
+          depth -= 1;
+          if (depth === 0) return false;
+        } else if ((token === "," || token === ";") && depth === 1) {
+          return true;
+        }
+      }
+      return false;
+    }
+    // the pairs of a bracketed list, [1, 2] or (2, 0, 0)
+    function group() {
+      const closing = take()[1] === "[" ? "]" : ")";
+      const pairs = items();
+      take(closing);
+      return pairs;
     }
     function item() {
-      if (peek()[1] === "[") {
-        take("[");
-        const values = items();
-        take("]");
-        return values;
+      if (peek()[1] === "[" || (peek()[1] === "(" && isGroup())) {
+        const pairs = group();
+        const u = unit(); // "(2, 0, 0) m": the unit of every entry
+        if (u === null) return pairs;
+        if (pairs.some((p) => p[1] !== null)) {
+          throw new Error("a unit is written twice for one number");
+        }
+        return pairs.map((p) => [p[0] * u.factor, u]);
       }
       const value = expression();
       const u = unit();
-      units.push(u);
-      return [u === null ? value : value * u.factor];
+      return [[u === null ? value : value * u.factor, u]];
     }
-    // the unit written after a value ("N m", "N*m", "m/s^2", "/s"), or null
+    // a unit at the current token: a unit word, "/s", or "1/s" after a space
+    function unitStarts() {
+      if (isUnit(peek()) || (peek()[1] === "/" && unitAfter())) return true;
+      const [kind, token] = peek();
+      return kind === "number" && token === "1" && spaceBefore() &&
+        at + 2 < tokens.length && tokens[at + 1][1] === "/" && !tokens[at + 1][2] &&
+        isUnit(tokens[at + 2]);
+    }
+    // the unit written after a value ("N m", "N*m", "m/s^2", "/s", "1/s"), or null
     function unit() {
-      if (!(isUnit(peek()) || (peek()[1] === "/" && unitAfter()))) return null;
+      if (!unitStarts()) return null;
       let factor = 1;
       let dimension = [0, 0, 0, 0];
+      if (peek()[0] === "number") take(); // the 1 of "1/s"
       let text = peek()[1] === "/" ? "1" : "";
       for (;;) {
         let sign = 1;
@@ -167,11 +202,19 @@
       return value;
     }
     function term() {
+      const start = at;
       let value = signed();
+      let literal = at === start + 1 && tokens[start][0] === "number";
       for (;;) {
         const token = peek();
         if ((token[1] === "*" || token[1] === "/") && unitAfter()) {
           return value; // a unit follows: "10 N*m", "200/s"
+        }
+        if (literal && (token[1] === "pi" || token[1] === "π")) {
+          take();
+          value *= Math.PI; // "0.6667 pi", a number times pi
+          literal = false;
+          continue;
         }
         if (token[1] === "*" || token[1] === "/") {
           take();
@@ -232,7 +275,9 @@
       throw new Error("expected a number, found " + found);
     }
 
-    const values = items();
+    const pairs = items();
+    const values = pairs.map((p) => p[0]);
+    const units = pairs.map((p) => p[1]);
     if (peek()[0] !== null) throw new Error("unexpected '" + peek()[1] + "'");
     if (values.some((v) => !Number.isFinite(v))) {
       throw new Error("it is not a finite real number");
@@ -323,10 +368,19 @@
     return null;
   }
 
-  function decimalComma(text) {
+  // a hint for "4,05" (read as two numbers): only where the text with decimal
+  // points has the n numbers the key asks for
+  function decimalComma(text, n) {
     if (!/\d,\d/.test(text)) return "";
-    return " Use a decimal point: " + text.replace(/(\d),(\d)/g, "$1.$2") + ".";
+    const fixed = text.replace(/(\d),(\d)/g, "$1.$2");
+    try {
+      if (parse(fixed).values.length !== n) return "";
+    } catch (error) {
+      return "";
+    }
+    return " Use a decimal point: " + fixed + ".";
   }
+
 
   function formatG(v) {
     // Python's "{:g}": six significant digits, no trailing zeros
@@ -349,17 +403,31 @@
       return { correct: false, message: "Could not read the answer: " + error.message };
     }
     const target = keyUnit(key.unit);
+    // a key with "per" also takes the answer per unit of it (4.05 N per N m: 1/m)
+    let per = null;
+    if (key.per) {
+      const of = keyUnit(key.per);
+      per = { factor: target.factor / of.factor,
+              dimension: target.dimension.map((v, i) => v - of.dimension[i]) };
+    }
+    // a vector of mixed units has one unit per number (a twist: rad/s and m/s)
+    const texts = key.units || parsed.values.map(() => key.unit);
     const x = [];
     for (let i = 0; i < parsed.values.length; i++) {
       const unit = parsed.units[i];
-      if (unit === null) {
+      if (unit === null || texts.length !== parsed.values.length) {
         x.push(parsed.values[i]);
         continue;
       }
-      const factor = convert(unit, target);
+      const own = keyUnit(texts[i]);
+      let factor = convert(unit, own);
+      if (factor === null && per !== null) {
+        factor = convert(unit, per);
+        if (factor !== null) factor *= per.factor / own.factor;
+      }
       if (factor === null) {
-        const expected = quantity(target.dimension) +
-          (key.unit ? " (" + key.unit + ")" : " (no unit)");
+        const expected = quantity(own.dimension) +
+          (texts[i] ? " (" + texts[i] + ")" : " (no unit)");
         const found = quantity(unit.dimension) + " (" + unit.text + ")";
         return { correct: false, message: "Expected " + expected + ", found " +
                  found + "." };
@@ -372,10 +440,20 @@
     if (x.length === n && inRange(x, key) && matches(x, key)) {
       return { correct: true, message: "Within " + tolerance + " of the answer." };
     }
+    // a box in degrees answered in radians without a unit (pi/2, 1.5708)
+    const nonzero = key.values.some((v) => Math.abs(v) > key.tolerance);
+    if (x.length === n && key.unit === "deg" && nonzero &&
+        parsed.units.every((u) => u === null)) {
+      const degrees = x.map((v) => v / DEG);
+      if (inRange(degrees, key) && matches(degrees, key)) {
+        return { correct: true,
+                 message: "Within " + tolerance + " of the answer (read as radians)." };
+      }
+    }
     let reason;
     if (x.length !== n) {
       const what = n === 1 ? "one number" : n + " numbers";
-      reason = "expected " + what + ", got " + x.length + "." + decimalComma(String(text));
+      reason = "expected " + what + ", got " + x.length + "." + decimalComma(String(text), n);
     } else {
       reason = diagnose(x, key) || "not within " + tolerance + " of the answer.";
     }

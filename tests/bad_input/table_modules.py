@@ -132,6 +132,74 @@ PARALLEL = [
         ValueError,
         "lengths",
     ),
+    row(
+        "stewart_fk_proven-platform-nan",
+        lambda: parallel.stewart_fk_proven(
+            np.eye(6, 3), np.full((6, 3), np.nan), [1] * 6
+        ),
+        ValueError,
+        "platform",
+    ),
+    row(
+        "stewart_fk_proven-lengths-shape",
+        lambda: parallel.stewart_fk_proven(np.eye(6, 3), np.eye(6, 3), [1] * 5),
+        ValueError,
+        "lengths",
+    ),
+    row(
+        "stewart_fk_proven-timeout-negative",
+        lambda: parallel.stewart_fk_proven(
+            np.eye(6, 3), np.eye(6, 3), [1] * 6, timeout=-1.0
+        ),
+        ValueError,
+        "timeout",
+    ),
+    row(
+        "stewart_fk_proven-rationals-not-str",
+        lambda: parallel.stewart_fk_proven(
+            np.eye(6, 3), np.eye(6, 3), [1] * 6, rationals=2
+        ),
+        TypeError,
+        "rationals",
+    ),
+    row(
+        "rpr_fk_proven-base-shape",
+        lambda: parallel.rpr_fk_proven(np.eye(3), np.eye(3, 2), [1, 1, 1]),
+        ValueError,
+        "base",
+    ),
+    row(
+        "rpr_fk_proven-lengths-zero",
+        lambda: parallel.rpr_fk_proven(np.eye(3, 2), np.eye(3, 2), [1, 0, 1]),
+        ValueError,
+        "lengths",
+    ),
+    row(
+        "rpr_fk_proven-rationals",
+        lambda: parallel.rpr_fk_proven(
+            np.eye(3, 2), np.eye(3, 2), [1, 1, 1], rationals="exact"
+        ),
+        ValueError,
+        "rationals",
+    ),
+    row(  # a thousand digits, quoted in 80 characters
+        "fk_all-starts-thousand-digits",
+        lambda: stewart().fk_all([1.2] * 6, starts=-(10**1000)),
+        ValueError,
+        "starts",
+    ),
+    row(
+        "fk_all-proof-str",
+        lambda: stewart().fk_all([1.2] * 6, proof="yes"),
+        TypeError,
+        "proof",
+    ),
+    row(
+        "fk_all-proof-rho-shape",
+        lambda: stewart().fk_all(np.ones((2, 6)), proof=True),
+        ValueError,
+        "rho",
+    ),
     row("planar_3rrr-l1", lambda: parallel.planar_3rrr(l1=-1), ValueError, "l1"),
     row("tripteron-L", lambda: parallel.tripteron(L="x"), TypeError, "L"),
     row(
@@ -315,6 +383,13 @@ URDF_AND_EXERCISES = [
         "number",
     ),
     row("parse_answer-int", lambda: exercises.parse_answer(3), TypeError, "text"),
+    row("variant-seed", lambda: exercises.variant("screws", 6, -1), ValueError, "seed"),
+    row(
+        "variant-number",
+        lambda: exercises.variant("screws", 4, 1),
+        ValueError,
+        "number",
+    ),
 ]
 
 IK_ENGINES = [

@@ -81,6 +81,13 @@ OTHER_WORDING = {
 }
 SENTENCE_WORDS = ("got", "must", "undefined", "cannot")
 
+#: The longest message a row may raise (characters): a message names the argument and
+#: says what was wrong; it quotes an input only through screwkit._checks.quoted (at
+#: most QUOTE_CHARS characters), never the whole input (issue 43: 19.8 MB for an
+#: array of out-of-range times). The longest today, about 450, explain a choice of
+#: IK engines.
+MAX_MESSAGE_CHARS = 600
+
 
 def param(table, r):
     case_id = f"{table}:{r.id}"
@@ -94,6 +101,9 @@ def test_bad_input_is_a_clear_error_naming_the_argument(r, case_id):
         r.call()
     message = str(raised.value)
     assert type(raised.value) is r.error  # not a subclass from deep inside NumPy
+    assert len(message) <= MAX_MESSAGE_CHARS, (
+        f"a message of {len(message)} characters: {message[:300]}..."
+    )
     assert re.search(rf"(?<![\w.]){re.escape(r.name)}(?!\w)", message), (
         f"{r.name!r} not named in: {message}"
     )
@@ -147,12 +157,15 @@ def public_functions():
     in ``__all__``, each once (wherever it is defined): {function: dotted name}."""
     found = {}
 
-    def add(function, name):
-        function = function.__func__ if isinstance(function, classmethod) else function
+    def add(function, name, method=False):
+        # a method's first parameter is its instance (or class), whatever its name: a
+        # Chain method that is a function of the chain names it ``chain``
+        if isinstance(function, classmethod):
+            function = function.__func__
         if not inspect.isfunction(function):
             return
-        parameters = inspect.signature(function).parameters
-        if [p for p in parameters if p not in ("self", "cls")]:
+        parameters = list(inspect.signature(function).parameters)
+        if parameters[1 if method else 0 :]:
             found.setdefault(function, name)
 
     for module in public_modules():
@@ -163,7 +176,11 @@ def public_functions():
             if inspect.isclass(item):
                 for key, value in vars(item).items():
                     if not key.startswith("_"):
-                        add(value, f"{item.__module__}.{item.__qualname__}.{key}")
+                        add(
+                            value,
+                            f"{item.__module__}.{item.__qualname__}.{key}",
+                            method=not isinstance(value, staticmethod),
+                        )
             else:
                 add(item, f"{item.__module__}.{name}")
     return found

@@ -28,7 +28,8 @@ def test_every_key_has_an_independent_reference():
 
 #: The units the chapters' keys are written in (exercises.py reads more).
 UNITS_OF_KEYS = ("", "rad", "deg", "m", "mm", "m/s", "rad/s", "N", "N m", "W")
-UNITS_OF_KEYS += ("m/rad", "m^2", "1/s")
+UNITS_OF_KEYS += ("m/rad", "m^2", "1/s", "s", "m/s^2", "N/m", "N m/rad")
+#: a vector of mixed units (a twist) carries one per number, its unit text is ""
 
 
 def test_every_reference_has_a_key():

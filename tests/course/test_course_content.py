@@ -15,7 +15,14 @@ from exercise_syntax import SOLUTION, old_syntax
 from screwkit import exercises
 
 NOTEBOOKS = Path(__file__).resolve().parents[2] / "notebooks"
-CHAPTERS = ["rigid_motions", "screws", "poe", "puma_fk", "puma_ik"]
+CHAPTERS = [
+    "configuration_space",
+    "rigid_motions",
+    "screws",
+    "poe",
+    "puma_fk",
+    "puma_ik",
+]
 
 
 def source(name):

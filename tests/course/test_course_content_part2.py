@@ -14,6 +14,7 @@ from pybtex.database import parse_file
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CHAPTERS = [
+    "configuration_space",
     "jacobians",
     "kawasaki_workspace",
     "redundancy",

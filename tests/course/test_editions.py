@@ -251,6 +251,9 @@ def test_the_course_edition_has_no_launch_buttons(monkeypatch, tmp_path):
     editions.course_config(course_app, course)
     assert course.html_theme_options["launch_buttons"] == {}
     assert course.html_theme_options["repository_url"] == "r"
+    for button in ("use_repository_button", "use_issues_button", "use_source_button"):
+        assert course.html_theme_options[button] is False  # no way to the repository
+    assert "use_repository_button" not in study.html_theme_options
     assert course.hide_solutions
     assert "course" in course_app.tags  # how_to_use.md's {only} course
 
@@ -272,3 +275,158 @@ def test_the_launch_check_tells_a_button_from_a_mention():
     ]
     assert all(LAUNCH.search(text) for text in buttons)
     assert not any(LAUNCH.search(text) for text in mentions)
+
+
+# ---- issue 42: the course edition keeps its secrets ---------------------------------
+
+sys.path.insert(0, str(ROOT / ".ci"))
+import check_course_edition as checker  # noqa: E402
+
+
+def test_the_repository_check_tells_a_button_from_a_mention():
+    url = "https://github.com/screwkit/robot-kinematics-with-screws"
+    assert checker.repository_url() == url
+    buttons = {
+        "a": f'<a href="{url}" class="btn btn-sm btn-source-repository-button">',
+        "b": f'<a href="{url}/issues/new?title=x" class="btn btn-sm">',
+        "c": '<div class="dropdown dropdown-source-buttons">',
+        "d": f'<a href="{url}.git">clone</a>',
+    }
+    mentions = {
+        "e": f'%pip install --quiet "git+{url}"',  # the install cell's code, no link
+        "f": '<a href="https://github.com/other/project">another</a>',
+        "g": f'<a href="{url}-fork">a fork</a>',
+    }
+    assert sorted(checker.repository_links(buttons, url)) == ["a", "b", "c", "d"]
+    assert checker.repository_links(mentions, url) == []
+
+
+def test_the_assessed_keys_are_outside_the_package():
+    marked = editions.assessed()
+    keys = checker.teacher_keys()
+    assert set(keys) == marked  # one teacher's key per assessed exercise, no other
+    files = checker.package_files()
+    assert "screwkit/exercises.py" in files and "screwkit/static/exercises.js" in files
+    assert "screwkit/answers/screws.toml" in files
+    assert checker.package_leaks(files, marked, keys) == []
+    for chapter, number in marked:  # the package says which ones the teacher marks
+        assert exercises.is_assessed(chapter, number)
+    for chapter in {c for c, _ in marked}:
+        table = exercises._key_file(chapter)
+        stubs = {int(n) for n, e in table.items() if e.get("assessed")}
+        assert stubs == {n for c, n in marked if c == chapter}
+
+
+def test_the_package_files_are_the_wheel_files():
+    # the tests below read the package's files from the source tree; the check reads
+    # the wheel pip builds: the two are the same files with the same text
+    wheel, source = checker.wheel_files(), checker.package_files()
+    assert set(wheel) == set(source)
+    assert all(wheel[name] == source[name] for name in source if name.endswith(".toml"))
+    assert (
+        checker.package_leaks(wheel, editions.assessed(), checker.teacher_keys()) == []
+    )
+
+
+def test_the_package_check_tells_a_leak_from_a_non_leak():
+    marked, keys = editions.assessed(), checker.teacher_keys()
+    files = checker.package_files()
+    name = "screwkit/answers/screws.toml"
+    leaked = dict(files)
+    leaked[name] = files[name].replace(
+        "[exercise.10]\n", '[exercise.10]\nanswer = "4"\n', 1
+    )
+    assert any("screws 10" in p for p in checker.package_leaks(leaked, marked, keys))
+    # the key's answer line copied into any packaged file is a leak too
+    copied = dict(files)
+    line = f"answer = {json.dumps(keys['rigid_motions', 10]['answer'])}"
+    copied["screwkit/robots.py"] = files["screwkit/robots.py"] + f"\n# {line}\n"
+    found = checker.package_leaks(copied, marked, keys)
+    assert found and "rigid_motions 10" in found[0] and "robots.py" in found[0]
+    withkeys = dict(files) | {"screwkit/teacher_keys/x.toml": "[exercise.1]"}
+    assert any("teacher" in p for p in checker.package_leaks(withkeys, marked, keys))
+
+
+def live_trials():
+    keys = checker.teacher_keys()
+    trials = []
+    for (chapter, number), key in sorted(keys.items())[:3]:
+        answer = key["answer"]
+        trials.append(
+            [chapter, number, ", ".join(answer) if isinstance(answer, list) else answer]
+        )
+    return trials
+
+
+def test_the_live_trials_are_right_answers_where_the_keys_are():
+    # from this checkout screwkit reads book/teacher_keys: the trials are right, so a
+    # live check that grades them (a leak) would call them right
+    for chapter, number, answer in live_trials():
+        assert exercises.check(chapter, number, answer).correct, (chapter, number)
+
+
+def test_the_live_check_tells_a_leak_from_a_non_leak():
+    files, trials = checker.package_files(), live_trials()
+    control = ["screws", 4, "0.5"]
+    assert checker.live_problems(files, trials, control) == []
+    leaked = dict(files)
+    chapter, number, _ = trials[0]
+    teacher = (ROOT / "book" / "teacher_keys" / f"{chapter}.toml").read_text()
+    name = f"screwkit/answers/{chapter}.toml"
+    body = teacher.split(f"[exercise.{number}]", 1)[1].split("\n[exercise.")[0]
+    leaked[name] = files[name].replace(
+        f"[exercise.{number}]\n", f"[exercise.{number}]\n{body.strip()}\n", 1
+    )
+    problems = checker.live_problems(leaked, trials, control)
+    assert any("the live check grades it" in p for p in problems), problems
+    assert any("carries its key" in p for p in problems), problems
+
+
+def test_an_assessed_box_without_its_key_says_the_teacher_marks_it(monkeypatch):
+    # an installed screwkit: no teacher's keys
+    monkeypatch.setenv("SCREWKIT_TEACHER_KEYS", "/nonexistent")
+    exercises._key_file.cache_clear()
+    try:
+        verdict = exercises.check("screws", 10, "4")
+        assert not verdict.correct and "teacher marks it" in verdict.message
+        box = exercises.answer_box("screws", 10)
+        assert "application/json" not in box._repr_html_()
+        assert "sk.exercises.check" not in repr(box) and "assessed" in repr(box)
+        with pytest.raises(exercises.AssessedError, match="teacher marks it"):
+            exercises.answer_key("screws", 10)
+        assert exercises.check("screws", 4, "0.5").correct  # the others still check
+    finally:
+        monkeypatch.delenv("SCREWKIT_TEACHER_KEYS")
+        exercises._key_file.cache_clear()
+
+
+def test_the_course_notebook_drops_an_assessed_box_way_to_check_it():
+    plain = repr(exercises.answer_box("screws", 10, script=False))
+    assert "sk.exercises.check" in plain  # from this checkout, with its key
+    notebook = {
+        "cells": [
+            {
+                "cell_type": "code",
+                "source": 'sk.exercises.answer_box("screws", 10)',
+                "outputs": [{"data": {"text/plain": [plain]}}],
+            },
+            {
+                "cell_type": "code",
+                "source": 'sk.exercises.answer_box("screws", 4)',
+                "outputs": [
+                    {
+                        "data": {
+                            "text/plain": [
+                                repr(exercises.answer_box("screws", 4, script=False))
+                            ]
+                        }
+                    }
+                ],
+            },
+        ]
+    }
+    course = editions.course_notebook(notebook, {("screws", 10)})
+    text = course["cells"][0]["outputs"][0]["data"]["text/plain"]
+    assert "sk.exercises.check" not in text and "assessed" in text
+    kept = course["cells"][1]["outputs"][0]["data"]["text/plain"]
+    assert "sk.exercises.check" in kept

@@ -1,16 +1,25 @@
 """Independent recomputations of every exercise's answer key, one module per group of
 chapters; importing the package registers them all in ``REFERENCES``."""
 
-from . import first_chapters, later_chapters, motion_in_time, parallel_kinematics
+from . import (
+    configuration_space,
+    first_chapters,
+    later_chapters,
+    motion_in_time,
+    parallel_kinematics,
+    statics,
+)
 from .registry import REFERENCES, all_keys, key, value
 
 __all__ = [
     "REFERENCES",
     "all_keys",
+    "configuration_space",
     "first_chapters",
     "key",
     "later_chapters",
     "motion_in_time",
     "parallel_kinematics",
+    "statics",
     "value",
 ]

@@ -171,18 +171,25 @@ def _():
     return math.hypot(x, y)
 
 
-@reference("puma_fk", 4)
+@reference("puma_fk", 3)
+def _():
+    ready = [0, math.pi / 2, -math.pi / 2, 0, 0, 0]
+    x, y, _ = dh_fk(PUMA_TABLE, ready)[:3, 3]
+    return (math.hypot(x, y) - D3) * 1000
+
+
+@reference("puma_fk", 5)
 def _():
     return dh_fk(PUMA_TABLE, np.zeros(6))[:3, 3]
 
 
-@reference("puma_fk", 8)
+@reference("puma_fk", 9)
 def _():
     table = [(0.4, 0.1, -math.pi / 2), (0, 0.4, 0), (0, 0.3, 0)]
     return dh_fk(table, [0, -math.pi / 2, 0])[:3, 3]
 
 
-@reference("puma_fk", 9)
+@reference("puma_fk", 10)
 def _():
     # the distance between the elbow and forearm-roll axes, from screwkit's joint screws
     axes = puma().screw_axes()

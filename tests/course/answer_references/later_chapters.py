@@ -47,7 +47,8 @@ def j_two_link():
 
 @reference("jacobians", 5)
 def _():
-    return (j_two_link().T @ np.array([0.0, -10.0]))[0]
+    # the force the tip applies to hold up a 10 N weight: 10 N up
+    return (j_two_link().T @ np.array([0.0, 10.0]))[0]
 
 
 @reference("jacobians", 6)
@@ -167,12 +168,20 @@ def _():
 
 @reference("mobility", 5)
 def _():
+    # the planar 3-RRR's links and joints, counted here: base, platform, two per limb
+    counted = sk.grubler_kutzbach(links=2 + 3 * 2, joints=3 * 3, freedoms=3 * 3)
+    assert counted == sk.mobility(sk.robots.planar_3rrr()).grubler_kutzbach
+    return counted
+
+
+@reference("mobility", 6)
+def _():
     m = sk.mobility(sk.robots.planar_3rrr())
     assert m.grubler_kutzbach + m.redundant_constraints - m.idle_mobility == m.number
     return m.redundant_constraints
 
 
-@reference("mobility", 6)
+@reference("mobility", 7)
 def _():
     ranks = {s.rank for s in sk.mobility(sk.robots.pm_3prrr()).limb_wrench_systems}
     assert len(ranks) == 1

@@ -29,20 +29,22 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import ik
-from ._checks import (
+from .. import ik
+from .._checks import (
     as_float_array,
     check_chain,
     check_option,
     check_poses,
+    check_result_bytes,
     check_rotation,
     describe,
+    quoted,
 )
-from ._docstrings import fill
-from .lie import log_rotation, log_transform
-from .links import Joint
-from .tolerances import NEAR_SINGULAR, SERIES_BELOW, SLERP_LINEAR_BELOW
-from .transforms import _wrap_angle, exp_twist
+from .._docstrings import fill
+from ..lie import log_rotation, log_transform
+from ..links import Joint
+from ..tolerances import NEAR_SINGULAR, SERIES_BELOW, SLERP_LINEAR_BELOW
+from ..transforms import _wrap_angle, exp_twist
 
 __all__ = [
     "TimeScaling",
@@ -175,7 +177,10 @@ class TimeScaling:
         if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
             raise TypeError(f"count must be an integer, got {describe(count)}")
         if count < 2:
-            raise ValueError(f"count must be at least 2, got {count}")
+            raise ValueError(f"count must be at least 2, got {quoted(count)}")
+        check_result_bytes(
+            8 * count, f"count={quoted(count)} times", "ask for fewer times"
+        )
         return np.linspace(0.0, self.duration, count)
 
 
@@ -198,8 +203,8 @@ def _polynomial(kind, duration, v_max, a_max):
         duration = _limit(duration, "duration")
         if duration < fastest:
             raise ValueError(
-                f"duration {duration:g} s is below the {fastest:g} s that v_max and "
-                f"a_max allow for a {kind} scaling"
+                f"duration must be at least the {fastest:g} s that v_max and a_max "
+                f"allow for a {kind} scaling, got {duration:g} s"
             )
     return TimeScaling(kind, duration, peak_v / duration, peak_a / duration**2)
 
@@ -301,8 +306,8 @@ def fastest_joint_scaling(profile, q_start, q_end, v_max, a_max):
     """
     if profile not in (cubic, quintic, trapezoidal):
         raise TypeError(
-            "profile must be screwkit.trajectory.cubic, quintic or trapezoidal, got "
-            f"{describe(profile)}"
+            "profile must be screwkit.motion.trajectory.cubic, quintic or "
+            f"trapezoidal, got {describe(profile)}"
         )
     q_start, q_end = _joint_pair(q_start, q_end)
     distance = np.abs(q_end - q_start)
@@ -315,12 +320,14 @@ def fastest_joint_scaling(profile, q_start, q_end, v_max, a_max):
                 f"{value.shape}"
             )
         if np.any(value <= 0):
-            raise ValueError(f"{name} must be positive, got {value.tolist()}")
+            raise ValueError(f"{name} must be positive, got {quoted(value)}")
         moving = distance > 0
         ratio = np.broadcast_to(value, distance.shape)[moving] / distance[moving]
         bounds.append(float(ratio.min()) if ratio.size else None)
     if bounds[0] is None:
-        raise ValueError("q_start and q_end are equal: there is no motion to time")
+        raise ValueError(
+            "q_start and q_end must differ (a motion to time), got equal vectors"
+        )
     return profile(v_max=bounds[0], a_max=bounds[1])
 
 
@@ -338,10 +345,15 @@ def _joint_pair(q_start, q_end):
     return q_start, q_end
 
 
-def _path_parameter(s):
+def _path_parameter(s, size, what):
+    """The path parameter s, one number or (K,), with K results of ``size`` floats
+    each refused before they are built if they exceed the memory limit."""
     s = as_float_array(s, "s")
     if s.ndim > 1:
         raise ValueError(f"s must be one number or shape (K,), got shape {s.shape}")
+    check_result_bytes(
+        8 * size * s.size, f"{what} at the {s.size} samples of s", "pass fewer s"
+    )
     return s
 
 
@@ -361,6 +373,12 @@ def joint_path(q_start, q_end, scaling, t):
     q_start, q_end = _joint_pair(q_start, q_end)
     if not isinstance(scaling, TimeScaling):
         raise TypeError(f"scaling must be a TimeScaling, got {describe(scaling)}")
+    samples = np.size(t)  # q, dq and ddq, each (K, n)
+    check_result_bytes(
+        24 * samples * q_start.size,
+        f"joint_path at the {samples} times t",
+        "pass fewer t",
+    )
     s, ds, dds = (x[..., None] for x in scaling.evaluate(t))
     d = q_end - q_start
     return q_start + s * d, ds * d, dds * d
@@ -438,7 +456,7 @@ def screw_path(T_start, T_end, s):
     {sections}
     """
     T_start, T_end = _pose_pair(T_start, T_end)
-    s = _path_parameter(s)
+    s = _path_parameter(s, T_start.size, "screw_path")
     samples = np.atleast_1d(s)
     if T_start.shape == (3, 3):
         relative = np.linalg.solve(T_start, T_end)
@@ -502,7 +520,8 @@ def cartesian_path(T_start, T_end, s):
     {sections}
     """
     T_start, T_end = _pose_pair(T_start, T_end)
-    s = _path_parameter(s)
+    # the rotations are built twice (the turn, then the poses)
+    s = _path_parameter(s, 2 * T_start.size, "cartesian_path")
     samples = np.atleast_1d(s)
     size = T_start.shape[0] - 1
     p0, p1 = T_start[:size, size], T_end[:size, size]
@@ -541,7 +560,7 @@ def slerp(q_start, q_end, s):
     """
     q0 = _unit_quaternion(q_start, "q_start")
     q1 = _unit_quaternion(q_end, "q_end")
-    s = _path_parameter(s)
+    s = _path_parameter(s, 4, "slerp")
     samples = np.atleast_1d(s)[:, None]
     dot = float(q0 @ q1)
     if dot < 0:
@@ -604,8 +623,19 @@ class ViaPoints:
         """
         t = as_float_array(t, "t")
         first, last = self.times[0], self.times[-1]
-        if np.any(t < first) or np.any(t > last):
-            raise ValueError(f"t must lie in [{first:g}, {last:g}] s, got {t.tolist()}")
+        outside = (t < first) | (t > last)
+        if np.any(outside):
+            index = tuple(int(i) for i in np.argwhere(outside)[0])
+            where = f"t[{', '.join(map(str, index))}] = " if index else ""
+            raise ValueError(
+                f"t must lie in [{first:g}, {last:g}] s, got {where}"
+                f"{quoted(t[index])} ({int(outside.sum())} of {t.size} outside)"
+            )
+        check_result_bytes(  # q, dq and ddq, each (K, n)
+            24 * t.size * self.points.shape[1],
+            f"ViaPoints.evaluate at the {t.size} times t",
+            "pass fewer t",
+        )
         k = np.clip(np.searchsorted(self.times, t, side="right") - 1, 0, None)
         k = np.minimum(k, len(self.times) - 2)
         h = (self.times[k + 1] - self.times[k])[..., None]
@@ -644,7 +674,8 @@ def via_points(times, points, velocities=None):
     ----------
     times : array-like, shape (M,), M >= 2, strictly increasing (s)
     points : array-like, shape (M,) or (M, n)
-    velocities : array-like, optional, the shape of points
+    velocities : array-like, optional, the shape of points (an exact match: not
+        reshaped)
 
     Returns
     -------
@@ -660,6 +691,7 @@ def via_points(times, points, velocities=None):
             f"times must increase strictly, got times[{k}] = {times[k]:g} then "
             f"times[{k + 1}] = {times[k + 1]:g}"
         )
+    shape = points.shape
     points = points[:, None] if points.ndim == 1 else points
     if points.ndim != 2 or points.shape[0] != times.size:
         raise ValueError(
@@ -672,7 +704,13 @@ def via_points(times, points, velocities=None):
         same_sign = slopes[:-1] * slopes[1:] > 0
         velocities[1:-1] = np.where(same_sign, (slopes[:-1] + slopes[1:]) / 2, 0.0)
     else:
-        velocities = as_float_array(velocities, "velocities").reshape(points.shape)
+        given = as_float_array(velocities, "velocities")
+        if given.shape != shape:
+            raise ValueError(
+                f"velocities must have the shape of points, {shape} (one velocity per "
+                f"point and coordinate), got shape {given.shape}"
+            )
+        velocities = given.reshape(points.shape)
     return ViaPoints(times, points, velocities)
 
 

@@ -29,8 +29,8 @@ from dataclasses import dataclass
 import daqp
 import numpy as np
 
-from ._checks import as_float_array, check_chain, check_positive, describe
-from .tolerances import PROXIMAL_STOP, PROXIMAL_WEIGHT, TRACKING_RTOL
+from .._checks import as_float_array, check_chain, check_positive, describe
+from ..tolerances import PROXIMAL_STOP, PROXIMAL_WEIGHT, TRACKING_RTOL
 
 __all__ = ["Step", "pseudo_inverse_step", "qp_step"]
 
@@ -123,6 +123,14 @@ def _named(dq, v, lower, upper):
     return tuple(names)
 
 
+def _damped_pseudo_inverse(J, damping_squared):
+    """J^T (J J^T + lambda^2 I)^-1 of J (m, n), (n, m); lambda^2 = 0 gives the
+    Moore-Penrose pseudo-inverse (by the SVD, so a rank-deficient J is safe too)."""
+    if damping_squared == 0:
+        return np.linalg.pinv(J)
+    return J.T @ np.linalg.inv(J @ J.T + damping_squared * np.eye(J.shape[0]))
+
+
 def pseudo_inverse_step(chain, q, twist, dt, rows="all", damping=0.0, v_max=None):
     """The (damped) least-squares rates dq = J^T (J J^T + damping^2 I)^-1 V, unclipped.
 
@@ -143,10 +151,7 @@ def pseudo_inverse_step(chain, q, twist, dt, rows="all", damping=0.0, v_max=None
     """
     q, J, V, dt, damping = _problem(chain, q, twist, dt, rows, damping)
     v = _velocity_limits(chain, v_max)
-    if damping == 0:
-        dq = np.linalg.pinv(J) @ V
-    else:
-        dq = J.T @ np.linalg.solve(J @ J.T + damping**2 * np.eye(J.shape[0]), V)
+    dq = _damped_pseudo_inverse(J, damping**2) @ V
     lower, upper = _bounds(chain, q, dt, v)
     broken = (dq < lower) | (dq > upper)
     error, tracked = _tracking(J, dq, V)

@@ -26,17 +26,17 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from . import _second_order
-from ._checks import (
+from .._checks import (
     as_sympy_scalar,
     check_chain,
     describe,
     is_symbolic,
 )
-from ._docstrings import fill
-from .lie import adjoint
-from .links import decimal
-from .transforms import inv
+from .._docstrings import fill
+from ..lie import adjoint
+from ..links import decimal
+from ..transforms import inv
+from . import _second_order
 
 __all__ = [
     "space_jacobian_dot",
@@ -111,8 +111,58 @@ def _body_exact(Js, T):
     return (adjoint(inv(T)) * Js).applyfunc(lambda e: TR10i(sp.expand(e)))
 
 
+def _rates(chain, q, dq):
+    """q and the joint rates dq as float64 of one shape, (n,) or (N, n)."""
+    q, dq = chain.check_q(q), chain.check_q(dq, "dq")
+    if dq.shape != q.shape:
+        raise ValueError(
+            f"dq must have the shape of q, {q.shape}, got shape {dq.shape}"
+        )
+    return q, dq
+
+
+def _generated_jacobian_dot(chain, outputs, q, dq):
+    """dJ/dt of a generated Jacobian, 'space' or 'geometric', at rates dq.
+
+    A batch q (N, n) is worked on laid out (6, n, N) as the generated code computes
+    it, each entry contiguous over the batch (no transpose, no copy)."""
+    q, dq = _rates(chain, q, dq)
+    dot = getattr(_second_order, f"{outputs}_dot")  # space_dot, geometric_dot
+    dot_rows = getattr(_second_order, f"{outputs}_dot_rows")
+    if q.ndim == 1:
+        return dot(chain._generated_jacobian(q, outputs), dq)
+    values = np.empty((6 * chain.n, q.shape[0]))
+    chain._run(outputs, q, range(6 * chain.n), values)
+    rows = values.reshape(6, chain.n, -1)
+    return _second_order.batch_first(dot_rows(rows, np.ascontiguousarray(dq.T)))
+
+
+def _float_dot(chain, form, q, dq):
+    """dJ/dt of a form at float q and dq: the generated Jacobian's brackets for the
+    space and geometric forms, the body Jacobian's for the body form."""
+    if form != "body":
+        return _generated_jacobian_dot(chain, form, q, dq)
+    q, dq = _rates(chain, q, dq)
+    return _second_order.body_dot(chain.body_jacobian(q), dq)
+
+
+def _float_hessian(chain, form, q):
+    """The Hessian of a form at float q, from the chain's Jacobian of that form."""
+    J = getattr(chain, f"{form}_jacobian")(chain.check_q(q))
+    return _HESSIAN[form](J)
+
+
+def _check_batch(chain, q, kind):
+    """Refuse a batch q (N, n) (a NumPy array; a list is checked by the kernel, once
+    converted) whose ``kind`` of results would pass the memory limit, before its
+    entries are checked or its Jacobians computed."""
+    shape = q.shape if isinstance(q, np.ndarray) else ()
+    count = int(np.prod(shape[:-1])) if len(shape) == 2 else 1
+    _second_order.check_batch(count, chain.n, kind)
+
+
 def _float_rates(chain, q, dq, ddq=None):
-    q, dq = chain._rates(q, dq)
+    q, dq = _rates(chain, q, dq)
     if ddq is None:
         return q, dq
     ddq = chain.check_q(ddq, "ddq")
@@ -189,22 +239,24 @@ _HESSIAN = {
 
 
 def _jacobian_dot(chain, form, q, dq):
-    """dJ/dt of a form, exact for SymPy input, else the chain's own (float) method."""
+    """dJ/dt of a form, exact for SymPy input, else in floats."""
     check_chain(chain)
     if _exact(q, dq):
         Js, T, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
         return _at(_DOT[form](_exact_jacobian(Js, T, form), dq), values)
-    return getattr(chain, f"{form}_jacobian_dot")(q, dq)
+    _check_batch(chain, q, "Jacobian derivatives")
+    return _float_dot(chain, form, q, dq)
 
 
 def _hessian(chain, form, q):
-    """The Hessian of a form, exact for SymPy input, else the chain's own method."""
+    """The Hessian of a form, exact for SymPy input, else in floats."""
     check_chain(chain)
     if _exact(q):
         Js, T, values = _exact_parts(chain, q)
         return _at(_HESSIAN[form](_exact_jacobian(Js, T, form)), values)
-    return getattr(chain, f"{form}_hessian")(q)
+    _check_batch(chain, q, "Hessians")
+    return _float_hessian(chain, form, q)
 
 
 def _end_acceleration(chain, form, q, dq, ddq):
@@ -217,9 +269,10 @@ def _end_acceleration(chain, form, q, dq, ddq):
         ddq = sp.Matrix(_exact_vector(chain, ddq, "ddq"))
         J = _exact_jacobian(Js, T, form)
         return _at(J * ddq + _DOT[form](J, dq) * sp.Matrix(dq), values)
+    _check_batch(chain, q, "accelerations")
     q, dq, ddq = _float_rates(chain, q, dq, ddq)
     J = getattr(chain, f"{form}_jacobian")(q)
-    dJ = getattr(chain, f"{form}_jacobian_dot")(q, dq)
+    dJ = _float_dot(chain, form, q, dq)
     product = "...ij,...j->...i"
     return np.einsum(product, J, ddq) + np.einsum(product, dJ, dq)
 

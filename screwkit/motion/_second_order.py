@@ -1,6 +1,6 @@
 """Second-order kinematics from the joint twists: Lie brackets, no chain needed.
 
-The kernels behind :mod:`screwkit.acceleration` and the Chain methods
+The kernels behind :mod:`screwkit.motion.acceleration` and the Chain methods
 ``space_jacobian_dot`` and friends. Each takes Jacobians that are already computed
 (columns [omega; v], the screw order) and joint rates, float64 arrays with any leading
 batch axes, or SymPy matrices for one exact configuration. Nothing here checks its
@@ -19,9 +19,37 @@ dJb_i/dq_j = [Jb_i, Jb_j] for j > i.
 import numpy as np
 import sympy as sp
 
-from . import transforms
+from .. import _checks, transforms
 
 __all__ = []
+
+#: Bytes per configuration while each kind of result is computed, the result and its
+#: temporaries (measured peaks, rounded up: the Hessians 2.2-2.7 times their n x 6 x n
+#: floats, the Jacobians' derivatives 3.3-4.3 times their 6 x n, the accelerations
+#: J, dJ and their products about 6 times 6 x n), as a function of n.
+WORK_BYTES = {
+    "Hessians": lambda n: 3 * 8 * 6 * n * n,
+    "Jacobian derivatives": lambda n: 5 * 8 * 6 * n,
+    "accelerations": lambda n: 6 * 8 * 6 * n,
+}
+
+
+def check_batch(count, n, kind):
+    """Refuse before computing ``kind`` (a key of :data:`WORK_BYTES`) for ``count``
+    configurations of an n-joint chain when its arrays would pass the memory limit
+    (:data:`screwkit._checks.MAX_RESULT_BYTES`), saying how many fit."""
+    per = WORK_BYTES[kind](n)
+    fits = max(1, int(_checks.MAX_RESULT_BYTES // per))
+    _checks.check_result_bytes(
+        count * per,
+        f"the {kind} of q's {count} configurations",
+        f"pass at most {fits} configurations at once (a loop over chunks of q)",
+    )
+
+
+def _check_jacobians(J, kind):
+    """:func:`check_batch` for the Jacobians J (..., 6, n) a kernel is given."""
+    check_batch(int(np.prod(J.shape[:-2])), J.shape[-1], kind)
 
 
 def bracket(a, b):
@@ -114,6 +142,7 @@ def space_dot(Js, dq):
 
 def space_dot_rows(C, rates):
     """:func:`space_dot` laid out batch last: C (6, n, ...), rates (n, ...)."""
+    check_batch(int(np.prod(C.shape[2:])), C.shape[1], "Jacobian derivatives")
     W = _before(C, rates)
     out = np.empty_like(C)
     _cross_into(out[:3], W[:3], C[:3])
@@ -130,6 +159,7 @@ def body_dot(Jb, dq):
             columns.insert(0, bracket(Jb[:, i], W))
             W = W + V[i]
         return sp.Matrix.hstack(*columns)
+    _check_jacobians(Jb, "Jacobian derivatives")
     C, rates = _components(Jb), _rates(dq)
     W = _from(C, rates) - C * rates  # the sums over j > i
     out = np.empty_like(C)
@@ -158,6 +188,7 @@ def geometric_dot(Jg, dq):
 
 def geometric_dot_rows(C, rates):
     """:func:`geometric_dot` laid out batch last: C (6, n, ...), rates (n, ...)."""
+    check_batch(int(np.prod(C.shape[2:])), C.shape[1], "Jacobian derivatives")
     W, S = _before(C[3:], rates), _from(C[:3], rates)
     out = np.empty_like(C)
     _cross_into(out[:3], W, C[:3])
@@ -184,6 +215,7 @@ def _ordered_brackets(J, after):
             )
             for j in range(n)
         ]
+    _check_jacobians(J, "Hessians")
     n = J.shape[-1]
     shape = J.shape[:-2] + (n, 6, n)
     row_j = np.broadcast_to(J.swapaxes(-1, -2)[..., :, :, None], shape)
@@ -212,6 +244,7 @@ def geometric_hessian(Jg):
         return [
             geometric_dot(Jg, [1 if k == j else 0 for k in range(n)]) for j in range(n)
         ]
+    _check_jacobians(Jg, "Hessians")
     n = Jg.shape[-1]
     shape = Jg.shape[:-2] + (n, 3, n)
     u, w = Jg[..., :3, :], Jg[..., 3:, :]

@@ -1,0 +1,143 @@
+"""Parametrised exercises (``sk.exercises.variant``): each seed's key, computed by
+screwkit, against a formula written here from the statement's numbers; seed 0 is the
+chapter's own statement; the box and the check take the seed; ``make answers
+SEEDS=class.csv`` writes each student's sheet and the teacher's keys."""
+
+import csv
+import math
+import re
+import sys
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from screwkit import exercises
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+
+from convert_exercises import read_exercises  # noqa: E402
+
+
+def turn_about_a_vertical_line(a, b, angle):
+    # the origin is at (-a, -b) from the axis's foot (a, b): turn that arrow by the
+    # angle about z and add it to the foot
+    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    return [a + (-a * c + b * s), b + (-a * s - b * c), 0.0]
+
+
+def power_of_the_force(F, x, omega):
+    # the force's moment about the origin is x F along z; the body turns at omega
+    # about z through the origin, so every point of the z axis is at rest: P = x F omega
+    return x * F * omega
+
+
+def peak_of_the_quintic(T):
+    # ds/dt = 30 tau^2 (1 - tau)^2 / T is largest at tau = 1/2: 30/16/T
+    return 15 / (8 * T)
+
+
+INDEPENDENT = {
+    ("rigid_motions", 2): lambda n: turn_about_a_vertical_line(
+        n["a"][0], n["b"][0], n["angle"][0]
+    ),
+    ("screws", 6): lambda n: power_of_the_force(n["F"][0], n["x"][0], n["omega"][0]),
+    ("motion_in_time", 3): lambda n: peak_of_the_quintic(n["T"][0]),
+}
+SEEDS = range(21)
+
+
+def test_the_parametrised_exercises_are_the_examples():
+    assert exercises.parametrised() == sorted(INDEPENDENT)
+    # three chapters, and not the two boxes another change splits
+    assert len({c for c, _ in INDEPENDENT}) == 3
+    assert ("mobility", 5) not in INDEPENDENT and ("puma_fk", 2) not in INDEPENDENT
+    for chapter, number in INDEPENDENT:
+        assert exercises.parametrised(chapter) == [number]
+        assert not exercises.is_assessed(chapter, number)
+
+
+@pytest.mark.parametrize("chapter, number", sorted(INDEPENDENT))
+def test_each_seed_key_equals_an_independent_computation(chapter, number):
+    keys = []
+    for seed in SEEDS:
+        v = exercises.variant(chapter, number, seed)
+        expected = np.ravel(INDEPENDENT[chapter, number](v.numbers))
+        np.testing.assert_allclose(v.key["values"], expected, rtol=0, atol=1e-9)
+        assert exercises.check(chapter, number, list(expected), seed=seed).correct
+        keys.append(tuple(np.round(expected, 9)))
+    # the seeds draw different numbers: a class gets many different keys
+    assert len(set(keys)) >= 6
+    assert max(Counter(keys).values()) <= 8
+
+
+@pytest.mark.parametrize("chapter, number", sorted(INDEPENDENT))
+def test_seed_zero_is_the_chapter_statement(chapter, number):
+    source = (ROOT / "notebooks" / f"{chapter}.md").read_text(encoding="utf-8")
+    found = {e["number"]: e for e in read_exercises(source, chapter)}[number]
+    statement = found["statement"].split("*Parametrised*")[0]
+    v = exercises.variant(chapter, number, 0)
+    numbers = re.compile(r"(?<![\w.])\d+(?:\.\d+)?")
+    assert Counter(numbers.findall(statement)) == Counter(
+        numbers.findall(v.statement)
+    ), (statement, v.statement)
+    assert f'sk.exercises.variant("{chapter}", {number}, seed)' in found["statement"]
+    # the page's box checks seed 0
+    assert exercises.answer_key(chapter, number)["values"] == v.key["values"]
+
+
+def test_a_seed_checks_its_own_numbers_only():
+    own = exercises.variant("screws", 6, 1).key["values"][0]
+    zero = exercises.variant("screws", 6, 0).key["values"][0]
+    assert own != zero
+    assert exercises.check("screws", 6, f"{own} W", seed=1).correct
+    assert not exercises.check("screws", 6, f"{zero} W", seed=1).correct
+    box = exercises.answer_box("screws", 6, script=False, seed=1)._repr_html_()
+    assert f'"values": [{own}]' in box
+    assert "seed 1" in repr(exercises.variant("screws", 6, 1))
+    assert str(own) not in repr(exercises.variant("screws", 6, 1))  # no key shown
+
+
+@pytest.mark.parametrize(
+    "call, error, phrase",
+    [
+        (lambda: exercises.variant("screws", 4, 1), ValueError, "parametrised"),
+        (lambda: exercises.variant("screws", 6, -1), ValueError, "seed must be"),
+        (lambda: exercises.variant("screws", 6, 1.5), ValueError, "seed must be"),
+        (lambda: exercises.answer_key("screws", 4, 3), ValueError, "seed must be 0"),
+        (lambda: exercises.variant("nope", 1, 0), ValueError, "chapter must be"),
+    ],
+)
+def test_bad_variants_are_refused_with_a_sentence(call, error, phrase):
+    with pytest.raises(error, match=phrase):
+        call()
+
+
+def test_make_answers_writes_a_sheet_per_student_and_the_keys(tmp_path):
+    import teacher_answers
+
+    seeds = tmp_path / "class.csv"
+    seeds.write_text("student,seed\nada,0\nbob,7\ncleo,12\n", encoding="utf-8")
+    count = teacher_answers.sheets(tmp_path, teacher_answers.read_seeds(seeds))
+    assert count == 3 * len(INDEPENDENT)
+    for student in ("ada", "bob", "cleo"):
+        sheet = (tmp_path / "sheets" / f"{student}.md").read_text(encoding="utf-8")
+        assert sheet.count("sk.exercises.check(") == len(INDEPENDENT)
+    with open(tmp_path / "keys.csv", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == count
+    for row in rows:
+        chapter, number, seed = row["chapter"], int(row["number"]), int(row["seed"])
+        v = exercises.variant(chapter, number, seed)
+        expected = np.ravel(INDEPENDENT[chapter, number](v.numbers))
+        got = [float(x) for x in row["key"].split(",")]
+        np.testing.assert_allclose(got, expected, rtol=1e-5, atol=1e-9)
+        assert v.statement in (tmp_path / "sheets" / f"{row['student']}.md").read_text(
+            encoding="utf-8"
+        )
+    bad = tmp_path / "bad.csv"
+    bad.write_text("student,seed\nada,x\n", encoding="utf-8")
+    with pytest.raises(ValueError, match="seed must be a whole number"):
+        teacher_answers.read_seeds(bad)
