@@ -21,7 +21,7 @@ while the modules of the family take a chain, above them; loading those here wou
 close an import circle through the chains.
 """
 
-import importlib
+from .. import _lazy
 
 #: What loads on first use: each module of the family, with the names of ``sk.motion``
 #: it defines.
@@ -59,16 +59,4 @@ LAZY = {
 __all__ = [name for names in LAZY.values() for name in names]
 
 
-def __getattr__(name):
-    if name in LAZY:
-        return importlib.import_module(f".{name}", __name__)
-    for module, names in LAZY.items():
-        if name in names:
-            value = getattr(importlib.import_module(f".{module}", __name__), name)
-            globals()[name] = value  # found once, then an ordinary attribute
-            return value
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted({*globals(), *__all__, *LAZY})
+__getattr__, __dir__ = _lazy.attach(__name__, LAZY, globals())
