@@ -1,4 +1,4 @@
-# The two commands of the course: `make book` and `make test`.
+# The two commands of the course: `make book` and `make test` (`make test-all`: every test).
 # Both create .venv on first use and install requirements.txt (which installs screwkit).
 
 # The course supports Python 3.11 to 3.13 (pyproject.toml): the first of python3.11, python3.12,
@@ -12,7 +12,7 @@ STAMP  := $(VENV)/.installed
 export PATH := $(abspath $(BIN)):$(PATH)
 export PIP_DISABLE_PIP_VERSION_CHECK := 1
 
-.PHONY: book answers test lab site-check bench notebooks check-sources lint clean
+.PHONY: book answers test test-all lab site-check bench notebooks check-sources lint clean
 
 $(STAMP): requirements.txt pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -c '$(SUPPORTED)' 2>/dev/null || { echo "make: .venv needs\
@@ -21,10 +21,41 @@ $(STAMP): requirements.txt pyproject.toml
 	$(BIN)/python -m pip install --quiet --requirement requirements.txt
 	@touch $(STAMP)
 
-## make test: pytest over tests/, screwkit's doctests and strict nbval over every notebook
+PYTEST := $(BIN)/python -m pytest
+NBVAL  := $(PYTEST) --nbval notebooks --nbval-sanitize-with .nbval_sanitize.cfg -p no:cacheprovider
+
+# $(call beside_nbval,COMMAND): strict nbval over every notebook in the background (its output
+# kept, printed after), COMMAND in the foreground, one per core; fails if either failed.
+define beside_nbval
+@log=$$(mktemp); $(NBVAL) >"$$log" 2>&1 & nbval=$$!; \
+echo "== strict nbval over every notebook runs beside these tests (its report follows them)"; \
+$(1); tests=$$?; \
+wait $$nbval; notebooks=$$?; \
+echo "== strict nbval over every notebook:"; cat "$$log"; rm -f "$$log"; \
+test $$tests -eq 0 && test $$notebooks -eq 0
+endef
+
+## make test: pytest over tests/ and screwkit's doctests, the fast tier (the slow tiers of
+## tests/conftest.py, SLOW_TIERS, are left out and counted at the end), and beside it strict
+## nbval over every notebook
 test: $(STAMP)
-	$(BIN)/python -m pytest tests screwkit --doctest-modules
-	$(BIN)/python -m pytest --nbval notebooks --nbval-sanitize-with .nbval_sanitize.cfg -p no:cacheprovider
+	$(call beside_nbval,$(PYTEST) tests screwkit --doctest-modules --tier fast)
+
+## make test-all: every test: `make test` and the slow tiers (60-digit ranks, certificates,
+## Binder's pip resolve, which needs PyPI, the reference packages, Chromium's checks, slow
+## sweeps). It installs the reference packages (tests/reference-requirements.txt into .venv;
+## msolve and EAIK without their dependencies into .ci-nodeps, .ci/nodeps-requirements.txt
+## says why) and Playwright (.ci/requirements.txt); a missing reference fails, never skips.
+## Chromium's checks need the system Chromium (apt-get install chromium), else they skip
+## and say so. CI runs it.
+test-all: $(STAMP)
+	$(BIN)/python -m pip install --quiet --requirement tests/reference-requirements.txt \
+	  --requirement .ci/requirements.txt
+	$(BIN)/python -m pip install --quiet --no-deps --upgrade --target .ci-nodeps \
+	  --requirement .ci/nodeps-requirements.txt
+	$(call beside_nbval,PYTHONPATH=.ci-nodeps SCREWKIT_REFERENCES=required \
+	  SCREWKIT_PROOF=required SCREWKIT_SLOW_TESTS=1 \
+	  $(PYTEST) tests screwkit --doctest-modules --tier all)
 
 ## make book: the HTML book in _build/html (fails on any cell error or Sphinx warning)
 ## make book EDITION=course: the course edition in _build/course/html, with no solution and no

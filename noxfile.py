@@ -3,7 +3,7 @@
     nox -s course-3.11 course-3.13   the course's pinned environment and `make test`
     nox -s unit_lowest               screwkit alone (`pip install .`) at the lowest
                                      versions its dependency bounds admit, with its unit
-                                     tests and doctests
+                                     tests (the fast tier) and doctests
     nox -l                           every session (`course` runs on each supported
                                      version)
 
@@ -115,13 +115,10 @@ class _Timer:
 
 @nox.session(python=SUPPORTED, venv_backend="venv")
 def course(session):
-    """The course's pinned environment (requirements.txt) and `make test`, here."""
-    # Binder's resolution does not depend on this session's Python: `make test` checks
-    # it once
-    binder = (
-        "tests/course/test_binder.py"
-        "::test_binder_requirements_resolve_for_binders_python"
-    )
+    """The course's pinned environment (requirements.txt) and `make test`, here: the
+    fast tier of the tests and strict nbval over every chapter (the slow tiers, Binder's
+    resolve among them, which does not depend on this session's Python, run once, in
+    `make test-all`)."""
     with _Timer(session):
         session.run(
             "make",
@@ -129,7 +126,6 @@ def course(session):
             f"VENV={session.virtualenv.location}",
             f"PYTHON={session.virtualenv.location}/bin/python",
             external=True,
-            env={"PYTEST_ADDOPTS": f"--deselect {binder}"},
         )
 
 
@@ -184,8 +180,13 @@ def unit_lowest(session):
         )
         ignores = [f"--ignore={path}" for path in course_only]
         # `pytest`, not `python -m pytest`, so that the tests import the installed
-        # screwkit
-        session.run("pytest", "tests", *ignores, "-q", *session.posargs)
+        # screwkit. The fast tier (tests/conftest.py): every module at its lowest
+        # bounds; the slow tiers (the same code on heavier inputs, and the references)
+        # run once, on the course's pins, in `make test-all`; `nox -s unit_lowest --
+        # --tier all` runs them here too.
+        session.run(
+            "pytest", "tests", *ignores, "-q", *(session.posargs or ["--tier", "fast"])
+        )
         # the deprecated alias modules warn on import (an error under the tests'
         # filterwarnings) and hold no doctest: not collected, as conftest.py does in
         # the working tree

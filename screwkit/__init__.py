@@ -6,9 +6,8 @@ gives float64 arrays, vectorised over a leading batch axis). SI units:
 metres and radians. Screws and twists are ordered [angular; linear].
 """
 
-import importlib
-
 from . import (
+    _lazy,
     chains,
     ik,
     jacobians,
@@ -71,10 +70,7 @@ __version__ = "0.1.0"
 _LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises", "contact")
 
 
-def __getattr__(name):
-    if name in _LAZY_SUBMODULES:
-        return importlib.import_module(f".{name}", __name__)
-    raise AttributeError(f"module 'screwkit' has no attribute {name!r}")
+__getattr__ = _lazy.attach(__name__, dict.fromkeys(_LAZY_SUBMODULES, ()), globals())[0]
 
 
 __all__ = [

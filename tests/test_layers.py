@@ -32,6 +32,7 @@ ORDER = [
         "checks and engines",
         [
             "tolerances",
+            "_lazy",
             "_docstrings",
             "_checks",
             "_numeric",

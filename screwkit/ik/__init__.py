@@ -24,8 +24,7 @@ names: its dispatcher takes the default PUMA from :mod:`screwkit.robots`, above 
 chains, so loading it here would close an import circle through ``Chain.numeric_ik``.
 """
 
-import importlib
-
+from .. import _lazy
 from . import subproblems
 from .newton import NumericIKResult, numeric_ik, pose_error
 from .subproblems import *  # noqa: F403 (the Paden-Kahan subproblems, as sk.ik.*)
@@ -65,16 +64,4 @@ __all__ = [
 ]
 
 
-def __getattr__(name):
-    if name in LAZY:
-        return importlib.import_module(f".{name}", __name__)
-    for module, names in LAZY.items():
-        if name in names:
-            value = getattr(importlib.import_module(f".{module}", __name__), name)
-            globals()[name] = value  # found once, then an ordinary attribute
-            return value
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted({*globals(), *__all__, *LAZY})
+__getattr__, __dir__ = _lazy.attach(__name__, LAZY, globals())

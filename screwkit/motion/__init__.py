@@ -21,34 +21,42 @@ while the modules of the family take a chain, above them; loading those here wou
 close an import circle through the chains.
 """
 
-import importlib
+from .. import _lazy
 
-#: The modules of the family, loaded on first use; the public ones give ``sk.motion``
-#: the names of their ``__all__``.
+#: What loads on first use: each module of the family, with the names of ``sk.motion``
+#: it defines.
 LAZY = {
-    "acceleration": (),
-    "trajectory": (),
-    "differential_ik": (),
+    "acceleration": (
+        "space_jacobian_dot",
+        "body_jacobian_dot",
+        "geometric_jacobian_dot",
+        "space_hessian",
+        "body_hessian",
+        "geometric_hessian",
+        "space_acceleration",
+        "body_acceleration",
+        "geometric_acceleration",
+    ),
+    "trajectory": (
+        "TimeScaling",
+        "cubic",
+        "quintic",
+        "trapezoidal",
+        "fastest_joint_scaling",
+        "joint_path",
+        "screw_path",
+        "cartesian_path",
+        "slerp",
+        "via_points",
+        "ViaPoints",
+        "follow_path",
+        "PathIK",
+    ),
+    "differential_ik": ("Step", "pseudo_inverse_step", "qp_step"),
     "_second_order": (),
 }
-PUBLIC = ("acceleration", "trajectory", "differential_ik")
+
+__all__ = [name for names in LAZY.values() for name in names]
 
 
-def _modules():
-    return [importlib.import_module(f".{name}", __name__) for name in PUBLIC]
-
-
-def __getattr__(name):
-    if name in LAZY:
-        return importlib.import_module(f".{name}", __name__)
-    if name == "__all__":  # every public name of the family
-        return [n for module in _modules() for n in module.__all__]
-    for module in _modules():
-        if name in module.__all__:
-            value = globals()[name] = getattr(module, name)  # then an attribute
-            return value
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted({*globals(), *LAZY, *__getattr__("__all__")})
+__getattr__, __dir__ = _lazy.attach(__name__, LAZY, globals())

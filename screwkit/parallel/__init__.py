@@ -18,8 +18,7 @@ The folder, one idea a module, bottom up:
   ``sk.parallel.plotting`` or ``from screwkit.parallel.plotting import ...``).
 """
 
-import importlib
-
+from .. import _lazy
 from .catalogue import (
     DIETMAIER_BASE,
     DIETMAIER_PLATFORM,
@@ -73,8 +72,5 @@ __all__ = [
 ]
 
 
-def __getattr__(name):
-    # the drawings load matplotlib: imported on first use, as sk.plotting is
-    if name == "plotting":
-        return importlib.import_module(f".{name}", __name__)
-    raise AttributeError(f"module 'screwkit.parallel' has no attribute {name!r}")
+# the drawings load matplotlib: imported on first use, as sk.plotting is
+__getattr__ = _lazy.attach(__name__, {"plotting": ()}, globals())[0]
