@@ -606,6 +606,59 @@ def _singular(w, r, home, Q):
     return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
 
 
+#: Fixed pseudo-random configurations at which an arm's mobility is measured.
+_MOBILITY_Q = np.random.default_rng(43).uniform(-np.pi, np.pi, (4, 6))
+
+
+def _mobility(chain):
+    """The rank of a 6R chain's Jacobian at a generic configuration: 6 for an arm
+    whose poses have isolated solutions; less when its axes leave it fewer degrees
+    of freedom (all parallel: 3; two coincident: at most 5), so that every pose it
+    reaches has a continuum of solutions.
+
+    Parameters
+    ----------
+    chain : Chain
+        A serial chain of 6 revolute joints.
+
+    Returns
+    -------
+    int
+        The largest rank of the space Jacobian (lengths divided by the chain's
+        size, rank to IK_GENERAL_SINGULAR_TOL) at four fixed pseudo-random
+        configurations.
+    """
+    if chain not in _MOBILITY:
+        z, o, M = _geometry(chain)
+        scale = length_scale(o, M[:3, 3])
+        home = M.copy()
+        home[:3, 3] /= scale
+        J = _poe(z, o / scale, home, _MOBILITY_Q)[2]
+        sigma = np.linalg.svd(J, compute_uv=False)
+        ranks = np.sum(sigma > IK_GENERAL_SINGULAR_TOL * sigma[:, :1], axis=1)
+        _MOBILITY[chain] = int(np.max(ranks))
+    return _MOBILITY[chain]
+
+
+_MOBILITY = weakref.WeakKeyDictionary()
+
+
+def _mobility_reason(rank, reason, found):
+    """The reason of an answer of an arm of mobility ``rank`` < 6."""
+    said = (
+        f"the arm's axes leave it {rank} degrees of freedom (its Jacobian has rank "
+        f"{rank} < 6 at every configuration): "
+    )
+    if found:
+        said += (
+            f"the solutions form a continuum (of dimension {6 - rank} or more), of "
+            "which Q holds points only"
+        )
+    else:
+        said += "no point of a solution was found; the pose is likely out of its reach"
+    return said + (f"; {reason}" if reason else "")
+
+
 def _say(singular, unexplained=()):
     """The reason of an answer from the singular flags (k,) of its solutions and the
     real roots of the eigenvalue problem (rad) that no solution accounts for: None
@@ -687,9 +740,34 @@ def general_6r_ik(chain, T):
         raise ValueError(
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
+    _check_batch_size(T, "T", MAX_POSES, "general_6r_ik")
     T = check_poses(T, "T")
-    answers = _solve(chain, T[None] if T.ndim == 2 else T)
+    batch = T[None] if T.ndim == 2 else T
+    answers = []
+    for start in range(0, len(batch), CHUNK):  # memory bounded: ~10 kB a pose
+        answers += _solve(chain, batch[start : start + CHUNK])
     return answers[0] if T.ndim == 2 else answers
+
+
+#: The largest batch of poses :func:`general_6r_ik` solves in one call (about a
+#: millisecond of CPU a pose: 100,000 poses take minutes); it solves a batch in
+#: chunks of CHUNK poses.
+MAX_POSES = 100_000
+CHUNK = 4096
+
+
+def _check_batch_size(T, name, limit, what):
+    """Refuse a batch of poses T (an array's shape is read, nothing is converted)
+    larger than ``limit``, before any work on it, with a message that says so."""
+    shape = np.shape(T) if isinstance(T, np.ndarray) else None
+    if shape is None and isinstance(T, (list, tuple)) and len(T) > limit:
+        shape = (len(T),)
+    if shape is not None and len(shape) >= 3 and int(np.prod(shape[:-2])) > limit:
+        count = int(np.prod(shape[:-2]))
+        raise ValueError(
+            f"{name} must be a batch of at most {limit:,} poses for {what}, got "
+            f"{count:,} (shape {shape}): solve it in parts"
+        )
 
 
 def _solve(chain, T):
@@ -803,4 +881,8 @@ def _solve(chain, T):
                 "the pose is reachable, and there may be other solutions"
                 + ("; " + answers[j].reason if answers[j].reason else "")
             )
+    rank = _mobility(chain)
+    if rank < 6:
+        for answer in answers:
+            answer.reason = _mobility_reason(rank, answer.reason, len(answer.Q))
     return answers
