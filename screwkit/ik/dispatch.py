@@ -317,14 +317,15 @@ def analytic_ik_all(chain, T):
     batch = T[None] if T.ndim == 2 else T
     if isinstance(arm, _GeneralArm):
         raise ValueError(
-            f"chain is a general 6R ({arm.structure}): its solutions are not a fixed "
-            "array of eight; use analytic_ik"
+            "chain must be an arm whose solutions are a fixed array of eight, got a "
+            f"general 6R ({arm.structure}, up to 16 solutions): use analytic_ik"
         )
     if isinstance(arm, DecomposedArm) and _mobility(chain) < 6:
         raise ValueError(
-            f"chain has {_mobility(chain)} degrees of freedom (its Jacobian's rank "
-            "at every configuration): the solutions of a pose it reaches form a "
-            "continuum, not a fixed array of eight; use analytic_ik"
+            "chain must have 6 degrees of freedom for a fixed array of eight "
+            f"solutions, got {_mobility(chain)} (its Jacobian's rank at every "
+            "configuration: the solutions of a pose it reaches form a continuum); "
+            "use analytic_ik"
         )
     Q = (
         arm.solve(batch)[0]

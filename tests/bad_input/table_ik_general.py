@@ -141,6 +141,6 @@ ROWS = [
         lambda: ik.analytic_ik_all(general_arm(), t0()),
         ValueError,
         "chain",
-        match="chain is a general 6R",
+        match="chain must be an arm whose solutions are a fixed array of eight",
     ),
 ]
