@@ -335,3 +335,77 @@ def test_solutions_sharing_an_angle_are_ordered_by_the_next_one_not_by_round_off
         order = _angle_order(flipped[None])[0]
         assert np.allclose(flipped[order][:3, 3], [0.3, -1.9, 1.242])
         assert np.isnan(flipped[order][3]).all()
+
+
+def dh_chain(rows):
+    """A chain of standard DH rows (d, a, alpha), no joint offsets."""
+    return sk.Chain.from_table([[0.0, d, a, alpha] for d, a, alpha in rows])
+
+
+#: Arms whose axes leave them fewer than six degrees of freedom (issue 43): every
+#: pose they reach has a continuum of solutions. (rows, degrees of freedom)
+FEWER_FREEDOMS = {
+    # all six axes parallel: a planar arm, 3 freedoms (the issue's reproducer)
+    "planar": ([(0, 0.3, 0)] * 6, 3),
+    # axes 5 and 6 on one line (a5 = d6 = alpha5 = 0): 5 freedoms
+    "coincident 5, 6": (
+        [
+            (0.3, 0, np.pi / 2),
+            (0, 0.4, 0),
+            (0, 0.1, np.pi / 2),
+            (0.35, 0, -np.pi / 2),
+            (0, 0, 0),
+            (0, 0, 0),
+        ],
+        5,
+    ),
+    # axes 2, 3, 4, 5 parallel: 5 freedoms
+    "four parallel": (
+        [
+            (0.3, 0, np.pi / 2),
+            (0, 0.4, 0),
+            (0, 0.35, 0),
+            (0, 0.2, 0),
+            (0, 0.15, np.pi / 2),
+            (0.1, 0, 0),
+        ],
+        5,
+    ),
+}
+
+
+@pytest.mark.parametrize("name", list(FEWER_FREEDOMS))
+def test_a_continuum_is_never_called_out_of_reach(name):
+    rows, freedoms = FEWER_FREEDOMS[name]
+    chain = dh_chain(rows)
+    # an independent count of the freedoms: the rank of central-difference
+    # Jacobians of the pose at random configurations
+    rng = np.random.default_rng(7)
+    ranks = []
+    for q in rng.uniform(-np.pi, np.pi, (3, 6)):
+        columns = []
+        for i in range(6):
+            dq = np.zeros(6)
+            dq[i] = 1e-6
+            columns.append((chain.fk(q + dq) - chain.fk(q - dq))[:3].ravel() / 2e-6)
+        sigma = np.linalg.svd(np.array(columns), compute_uv=False)
+        ranks.append(int(np.sum(sigma > 1e-6 * sigma[0])))
+    assert max(ranks) == freedoms
+    assert f"{freedoms} degrees of freedom" in ik.structure(chain)
+    if not ik.structure(chain).startswith("general"):
+        with pytest.raises(ValueError, match="continuum"):
+            ik.analytic_ik_all(chain, chain.fk(np.zeros(6)))
+    for q in rng.uniform(-np.pi, np.pi, (3, 6)):
+        T = chain.fk(q)
+        solutions = ik.analytic_ik(chain, T)
+        assert "out of reach" not in (solutions.reason or "")
+        assert len(solutions) >= 2 and "continuum" in solutions.reason
+        for s in solutions:
+            np.testing.assert_allclose(chain.fk(s.q), T, atol=1e-9)
+
+
+def test_a_pose_off_a_planar_arms_plane_has_no_solution():
+    chain = dh_chain([(0, 0.3, 0)] * 6)
+    solutions = ik.analytic_ik(chain, sk.transforms.transl(0.0, 0.0, 0.5))
+    assert not solutions and "3 degrees of freedom" in solutions.reason
+    assert "likely out of its reach" in solutions.reason

@@ -62,7 +62,12 @@ from ..tolerances import IK_SINGULAR_TOL as SINGULAR_TOL
 from ..transforms import _wrap_angle
 from ._closed_form import pose_residual
 from .decomposed import DecomposedArm, _motions, classify
-from .general import general_6r_ik
+from .general import (
+    _check_batch_size,
+    _mobility,
+    _mobility_reason,
+    general_6r_ik,
+)
 from .spherical_wrist import CONFIGURATIONS, SphericalWristArm
 from .stanford import StanfordArm
 from .ur import URArm
@@ -197,6 +202,12 @@ _ARMS = (
     weakref.WeakKeyDictionary()
 )  # chains are immutable: their geometry is found once
 
+#: The largest batches of poses: analytic_ik answers each pose with Python objects
+#: (a list of IKSolutions), analytic_ik_all with an array of 8 x 6 angles a pose
+#: (384 bytes: 10^6 poses are 384 MB); larger ones are refused before any work.
+MAX_POSES = 100_000
+MAX_POSES_ALL = 1_000_000
+
 #: The structures solved in closed form, in the order they are tried: {name: solver}.
 STRUCTURES = {
     "spherical wrist (joints 2, 3 parallel)": SphericalWristArm,
@@ -268,11 +279,16 @@ def structure(chain):
     """
     check_chain(chain)
     try:
-        return _name(_arm(chain))
+        name = _name(_arm(chain))
     except ValueError:
         if chain.n == 6 and all(j is Joint.REVOLUTE for j in chain.joints):
             return classify(chain).name
         raise
+    if chain.n == 6 and all(j is Joint.REVOLUTE for j in chain.joints):
+        rank = _mobility(chain)
+        if rank < 6:
+            name += f"; {rank} degrees of freedom (a continuum at every pose)"
+    return name
 
 
 def analytic_ik_all(chain, T):
@@ -296,12 +312,20 @@ def analytic_ik_all(chain, T):
         Computed in chunks, so memory stays bounded for large batches.
     """
     arm = _arm(chain)
+    _check_batch_size(T, "T", MAX_POSES_ALL, "analytic_ik_all")
     T = check_poses(T, "T")
     batch = T[None] if T.ndim == 2 else T
     if isinstance(arm, _GeneralArm):
         raise ValueError(
-            f"chain is a general 6R ({arm.structure}): its solutions are not a fixed "
-            "array of eight; use analytic_ik"
+            "chain must be an arm whose solutions are a fixed array of eight, got a "
+            f"general 6R ({arm.structure}, up to 16 solutions): use analytic_ik"
+        )
+    if isinstance(arm, DecomposedArm) and _mobility(chain) < 6:
+        raise ValueError(
+            "chain must have 6 degrees of freedom for a fixed array of eight "
+            f"solutions, got {_mobility(chain)} (its Jacobian's rank at every "
+            "configuration: the solutions of a pose it reaches form a continuum); "
+            "use analytic_ik"
         )
     Q = (
         arm.solve(batch)[0]
@@ -344,6 +368,7 @@ def analytic_ik(chain, T, within_limits=False, near=None, fixed=None):
         the class. For a batch, a list of IKSolutions.
     """
     check_chain(chain)
+    _check_batch_size(T, "T", MAX_POSES, "analytic_ik (a list of answers)")
     if fixed is not None or chain.n == 7:
         return _fixed_ik(chain, T, within_limits, near, fixed)
     return _analytic_ik(_arm(chain), chain, check_poses(T, "T"), within_limits, near)
@@ -371,7 +396,13 @@ def _fixed_ik(chain, T, within_limits, near, fixed):
     j = check_integer(j, "fixed", minimum=0)
     if j > 6:
         raise ValueError(f"fixed must name a joint index 0 ... 6, got {j}")
-    value = float(as_float_array(value, "fixed"))
+    value = as_float_array(value, "fixed")
+    if value.ndim != 0:
+        raise ValueError(
+            f"fixed must map the joint index to one angle (rad), got an array of "
+            f"shape {value.shape} for joint {j}"
+        )
+    value = float(value)
     if chain.joints[j] is not Joint.REVOLUTE:
         raise ValueError(f"fixed must name a revolute joint, joint {j} is not")
     S, M = chain.screw_axes(), chain.home()
@@ -517,6 +548,15 @@ def _decomposed_answers(arm, chain, batch, within_limits, near):
         answers.append(
             _listed(solutions, chain.qlim, within_limits, near, arm.structure, reason)
         )
+    rank = _mobility(chain)
+    if rank < 6:  # a continuum wherever it reaches: the subproblems may miss it
+        for k, answer in enumerate(answers):
+            if not answer and answer.reason.startswith("out of reach"):
+                found = general_6r_ik(chain, batch[k])
+                general = _GeneralArm(chain, general_6r_ik, arm.structure)
+                answers[k] = _general_answer(general, chain, found, within_limits, near)
+            elif answer and not any(s.singular for s in answer):
+                answer.reason = _mobility_reason(rank, answer.reason, True)
     return answers
 
 

@@ -43,18 +43,23 @@ the other poses that did.
 What the answer claims: every real root of the eigenvalue problem whose imaginary
 part is below IK_GENERAL_REAL_TOL becomes a candidate, and every candidate that
 Newton brings to the pose (residual at most IK_GENERAL_ACCEPT_TOL) is returned once.
-A solution is missed only if the eigenvalue solver's error on its root exceeds
-Newton's basin, which round-off does not do for a well-conditioned form (the tests
-find nothing missing against a 300-start search on random arms). A solution where
-the Jacobian loses rank (solutions coinciding, or a continuum along aligned axes) is
-returned with a reason saying so: of a continuum, Q holds points only.
+Every genuine real root (its joints 1 and 2 consistent, IK_GENERAL_CONSISTENT_TOL;
+special geometry adds spurious ones, e.g. the PUMA's q = 0 and pi) must be accounted
+for by a returned solution (its angle within IK_GENERAL_EXPLAINED_TOL): a root left
+over makes the reason say that the list may be incomplete, so a short list is never
+silent. A solution where the Jacobian loses rank (solutions coinciding, or a
+continuum along aligned axes) is flagged in ``singular`` and the reason says so: of
+a continuum, Q holds points only.
 
-Special geometry can also hide real roots from a form that looks well posed (three
-parallel axes at an end with a wrist of right angles is one such arm), and an arm
-whose axes leave it fewer than six degrees of freedom has continua where the
-elimination is degenerate. So where the elimination finds nothing, damped Newton
-steps from SEARCH_STARTS fixed starts look for solutions; what they find is returned
-with a reason that says it came from a search, which may not find them all.
+An arm whose axes leave it fewer than six degrees of freedom (all parallel, two
+coincident; its Jacobian's rank below 6 at every configuration) has continua where
+the elimination is degenerate, and the reason says how many freedoms it has. Where
+the elimination finds nothing, damped Newton steps from SEARCH_STARTS fixed starts
+look for solutions; what they find is returned with a reason that says it came from
+a search, which may not find them all.
+
+A batch is solved in chunks of CHUNK poses (memory bounded); one of more than
+MAX_POSES poses is refused before any work.
 """
 
 import functools
@@ -598,6 +603,59 @@ def _singular(w, r, home, Q):
     return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
 
 
+#: Fixed pseudo-random configurations at which an arm's mobility is measured.
+_MOBILITY_Q = np.random.default_rng(43).uniform(-np.pi, np.pi, (4, 6))
+
+
+def _mobility(chain):
+    """The rank of a 6R chain's Jacobian at a generic configuration: 6 for an arm
+    whose poses have isolated solutions; less when its axes leave it fewer degrees
+    of freedom (all parallel: 3; two coincident: at most 5), so that every pose it
+    reaches has a continuum of solutions.
+
+    Parameters
+    ----------
+    chain : Chain
+        A serial chain of 6 revolute joints.
+
+    Returns
+    -------
+    int
+        The largest rank of the space Jacobian (lengths divided by the chain's
+        size, rank to IK_GENERAL_SINGULAR_TOL) at four fixed pseudo-random
+        configurations.
+    """
+    if chain not in _MOBILITY:
+        z, o, M = _geometry(chain)
+        scale = length_scale(o, M[:3, 3])
+        home = M.copy()
+        home[:3, 3] /= scale
+        J = _poe(z, o / scale, home, _MOBILITY_Q)[2]
+        sigma = np.linalg.svd(J, compute_uv=False)
+        ranks = np.sum(sigma > IK_GENERAL_SINGULAR_TOL * sigma[:, :1], axis=1)
+        _MOBILITY[chain] = int(np.max(ranks))
+    return _MOBILITY[chain]
+
+
+_MOBILITY = weakref.WeakKeyDictionary()
+
+
+def _mobility_reason(rank, reason, found):
+    """The reason of an answer of an arm of mobility ``rank`` < 6."""
+    said = (
+        f"the arm's axes leave it {rank} degrees of freedom (its Jacobian has rank "
+        f"{rank} < 6 at every configuration): "
+    )
+    if found:
+        said += (
+            f"the solutions form a continuum (of dimension {6 - rank} or more), of "
+            "which Q holds points only"
+        )
+    else:
+        said += "no point of a solution was found; the pose is likely out of its reach"
+    return said + (f"; {reason}" if reason else "")
+
+
 def _say(singular, unexplained=()):
     """The reason of an answer from the singular flags (k,) of its solutions and the
     real roots of the eigenvalue problem (rad) that no solution accounts for: None
@@ -621,6 +679,28 @@ def _say(singular, unexplained=()):
         "configuration (the Jacobian loses rank): solutions there may coincide or "
         "form a continuum (aligned axes), of which Q holds points only"
     )
+
+
+def _unexplained(root, root_pose, kept, poses, joint):
+    """The real roots (rad) that no solution accounts for, by pose: {pose: angles},
+    for the genuine roots ``root`` (k,) of poses ``root_pose`` (k,) and the solutions
+    ``kept`` (a (Q, residuals) pair for each of ``poses``), compared on ``joint``."""
+    if not len(root):
+        return {}
+    counts = np.array([len(Q) for Q, _ in kept])
+    width = max(int(counts.max()), 1)
+    angles = np.full((len(kept), width), np.nan)
+    rows = np.repeat(np.arange(len(kept)), counts)
+    columns = np.arange(len(rows)) - np.repeat(np.cumsum(counts) - counts, counts)
+    if len(rows):
+        angles[rows, columns] = np.concatenate([Q[:, joint] for Q, _ in kept])
+    where = np.searchsorted(poses, root_pose)  # poses is sorted
+    gaps = np.abs(_wrap_angle(root[:, None] - angles[where]))
+    left = ~np.any(gaps <= IK_GENERAL_EXPLAINED_TOL, axis=1)
+    return {
+        int(j): np.unique(np.round(_wrap_angle(root[left & (root_pose == j)]), 4))
+        for j in np.unique(root_pose[left])
+    }
 
 
 def _distinct(Q, residuals):
@@ -679,9 +759,36 @@ def general_6r_ik(chain, T):
         raise ValueError(
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
+    _check_batch_size(T, "T", MAX_POSES, "general_6r_ik")
     T = check_poses(T, "T")
-    answers = _solve(chain, T[None] if T.ndim == 2 else T)
+    batch = T[None] if T.ndim == 2 else T
+    answers = []
+    for start in range(0, len(batch), CHUNK):  # memory bounded: ~10 kB a pose
+        answers += _solve(chain, batch[start : start + CHUNK])
     return answers[0] if T.ndim == 2 else answers
+
+
+#: The largest batch of poses :func:`general_6r_ik` solves in one call (about a
+#: millisecond of CPU a pose: 100,000 poses take minutes); it solves a batch in
+#: chunks of CHUNK poses.
+MAX_POSES = 100_000
+CHUNK = 4096
+
+
+def _check_batch_size(T, name, limit, what):
+    """Refuse a batch of poses T (an array's shape is read, nothing is converted)
+    larger than ``limit``, before any work on it, with a message that says so."""
+    if isinstance(T, np.ndarray) and T.ndim >= 3:
+        count, given = int(np.prod(T.shape[:-2])), f"shape {T.shape}"
+    elif isinstance(T, (list, tuple)):
+        count, given = len(T), f"a {type(T).__name__} of {len(T):,} entries"
+    else:
+        return
+    if count > limit:
+        raise ValueError(
+            f"{name} must be a batch of at most {limit:,} poses for {what}, got "
+            f"{count:,} ({given}): solve it in parts"
+        )
 
 
 def _solve(chain, T):
@@ -718,17 +825,11 @@ def _solve(chain, T):
         ends = np.searchsorted(pose, poses, "right")
         kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
         singular = _singular(z, o / scale, home, np.concatenate([Q for Q, _ in kept]))
-        by_pose = np.argsort(root_pose, kind="stable")
-        root, root_pose = root[by_pose], root_pose[by_pose]
-        root_starts = np.searchsorted(root_pose, poses, "left")
-        root_ends = np.searchsorted(root_pose, poses, "right")
+        left = _unexplained(root, root_pose, kept, poses, order[2])
         start = 0
-        for j, (Q, res), a, b in zip(poses, kept, root_starts, root_ends):
+        for j, (Q, res) in zip(poses, kept):
             flags = singular[start : start + len(Q)]
-            gaps = np.abs(_wrap_angle(root[a:b, None] - Q[None, :, order[2]]))
-            left = root[a:b][~np.any(gaps <= IK_GENERAL_EXPLAINED_TOL, axis=1)]
-            left = np.unique(np.round(_wrap_angle(left), 4))
-            answers[j] = GeneralIK(Q, res, _say(flags, left), name, flags)
+            answers[j] = GeneralIK(Q, res, _say(flags, left.get(j, ())), name, flags)
             start += len(Q)
 
     # a singular leading matrix from special geometry stays singular at any shift:
@@ -796,4 +897,8 @@ def _solve(chain, T):
                 "the pose is reachable, and there may be other solutions"
                 + ("; " + answers[j].reason if answers[j].reason else "")
             )
+    rank = _mobility(chain)
+    if rank < 6:
+        for answer in answers:
+            answer.reason = _mobility_reason(rank, answer.reason, len(answer.Q))
     return answers

@@ -38,6 +38,12 @@ def shoulder_arm():
 
 
 @functools.cache
+def shoulder_chain():
+    """The iiwa's joints 2 ... 7: a decomposable 6R (a spherical shoulder)."""
+    return sk.Chain.from_screws(sk.robots.iiwa14().screw_axes()[1:], np.eye(4))
+
+
+@functools.cache
 def t7():
     return iiwa().fk(np.zeros(7))
 
@@ -168,5 +174,47 @@ ROWS = [
         ValueError,
         "chain",
         match="chain must be an arm of the STRUCTURES",
+    ),
+    row(
+        "fixed value an array",
+        lambda: ik.analytic_ik(iiwa(), t7(), fixed={0: [1, 2]}),
+        ValueError,
+        "fixed",
+        match=r"fixed must map the joint index to one angle .* shape \(2,\)",
+    ),
+    row(
+        "7R near wrong length",
+        lambda: ik.analytic_ik(iiwa(), t7(), fixed={2: 0.0}, near=np.zeros(6)),
+        ValueError,
+        "near",
+        match="near must be a joint vector of 7 entries",
+    ),
+    row(
+        "7R within_limits not bool",
+        lambda: ik.analytic_ik(iiwa(), t7(), fixed={2: 0.0}, within_limits="no"),
+        TypeError,
+        "within_limits",
+    ),
+    row(
+        "7R T not rigid",
+        lambda: ik.analytic_ik(iiwa(), np.diag([1.0, 2.0, 1.0, 1.0]), fixed={2: 0.0}),
+        ValueError,
+        "T",
+    ),
+    row(
+        "analytic_ik T 10^7 poses broadcast",
+        lambda: ik.analytic_ik(shoulder_chain(), np.broadcast_to(t7(), (10**7, 4, 4))),
+        ValueError,
+        "T",
+        match=r"T must be a batch of at most 100,000 poses .* got 10,000,000",
+    ),
+    row(
+        "analytic_ik_all T 10^8 poses broadcast",
+        lambda: ik.analytic_ik_all(
+            shoulder_chain(), np.broadcast_to(t7(), (10**8, 4, 4))
+        ),
+        ValueError,
+        "T",
+        match=r"T must be a batch of at most 1,000,000 poses .* got 100,000,000",
     ),
 ]

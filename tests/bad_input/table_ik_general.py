@@ -21,6 +21,21 @@ def prismatic():
     return sk.Chain([sk.Link.prismatic()] + list(puma().links[1:]))
 
 
+@functools.cache
+def general_arm():
+    """A 6R of no decomposable class (random DH rows)."""
+    return sk.Chain.from_table(
+        [
+            [0, 0.3, 0.2, 1.0],
+            [0, 0.1, 0.5, -0.7],
+            [0, 0.2, 0.4, 1.3],
+            [0, 0.25, 0.1, 0.9],
+            [0, 0.1, 0.3, -1.1],
+            [0, 0.2, 0.1, 0.4],
+        ]
+    )
+
+
 ROWS = [
     row(
         "general_6r_ik-chain-not-a-chain",
@@ -86,5 +101,46 @@ ROWS = [
         ValueError,
         "T",
         match=r"T must have shape \(4, 4\) or \(N, 4, 4\)",
+    ),
+    row(
+        "general_6r_ik-T-10^7-poses-broadcast",
+        lambda: ik.general_6r_ik(puma(), np.broadcast_to(t0(), (10**7, 4, 4))),
+        ValueError,
+        "T",
+        match=r"T must be a batch of at most 100,000 poses .* got 10,000,000",
+    ),
+    row(
+        "general_6r_ik-T-list-of-10^6-poses",
+        lambda: ik.general_6r_ik(puma(), [np.eye(4)] * 10**6),
+        ValueError,
+        "T",
+        match=r"T must be a batch of at most 100,000 poses",
+    ),
+    row(
+        "analytic_ik-general-arm-near-wrong-length",
+        lambda: ik.analytic_ik(general_arm(), t0(), near=[0.0] * 5),
+        ValueError,
+        "near",
+        match="near must be a joint vector of 6 entries",
+    ),
+    row(
+        "analytic_ik-general-arm-within_limits-not-bool",
+        lambda: ik.analytic_ik(general_arm(), t0(), within_limits=1.5),
+        TypeError,
+        "within_limits",
+    ),
+    row(
+        "analytic_ik-general-arm-T-10^8-poses-broadcast",
+        lambda: ik.analytic_ik(general_arm(), np.broadcast_to(t0(), (10**8, 4, 4))),
+        ValueError,
+        "T",
+        match=r"T must be a batch of at most 100,000 poses",
+    ),
+    row(
+        "analytic_ik_all-general-arm",
+        lambda: ik.analytic_ik_all(general_arm(), t0()),
+        ValueError,
+        "chain",
+        match="chain must be an arm whose solutions are a fixed array of eight",
     ),
 ]
