@@ -18,7 +18,7 @@ from screwkit import exercises
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 
-from convert_exercises import read_exercises  # noqa: E402
+from exercise_syntax import read_exercises  # noqa: E402
 
 
 def turn_about_a_vertical_line(a, b, angle):
