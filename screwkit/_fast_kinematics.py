@@ -83,7 +83,8 @@ def source(chain, outputs="pose"):
 
     Examples
     --------
-    >>> arm = Chain([Link.revolute(a=1.0)])
+    >>> import screwkit as sk
+    >>> arm = sk.Chain([sk.Link.revolute(a=1.0)])
     >>> print(arm.source())  # doctest: +NORMALIZE_WHITESPACE
     def kinematics(t, c, s):
         c1 = c[0]
