@@ -317,7 +317,13 @@ def test_keys_with_a_quantity_state_their_unit_and_range():
         ("redundancy", 7): "1/s",
     }
     for (chapter, number), unit in stated.items():
-        assert exercises.answer_key(chapter, number)["unit"] == unit
+        try:
+            key = exercises.answer_key(chapter, number)
+        except exercises.AssessedError:
+            # an installed screwkit holds no assessed key (jacobians 6): the teacher's
+            assert exercises.is_assessed(chapter, number)
+            continue
+        assert key["unit"] == unit
         label = exercises.answer_box(chapter, number, script=False)._repr_html_()
         assert f"your answer ({html.escape(unit)}):" in label
         assert "no unit" not in label

@@ -359,24 +359,3 @@ def test_the_checker_sees_a_lazy_import(module, source, flagged):
 )
 def test_the_checker_lets_a_downward_import_of_a_folder_pass(module, source):
     assert not upward(module, imports(module, source))
-
-
-def test_contributing_lists_every_chapter_of_the_table_of_contents():
-    """CONTRIBUTING's table "Chapters and the modules they use" has one row for each
-    chapter of _toc.yml (notebooks/...), and no row for a chapter the book lacks."""
-    root = PACKAGE.parent
-    toc = {
-        line.split("file:", 1)[1].strip()
-        for line in (root / "_toc.yml").read_text(encoding="utf-8").splitlines()
-        if "file: notebooks/" in line
-    }
-    text = (root / "CONTRIBUTING.md").read_text(encoding="utf-8")
-    rows = {
-        line.split("|")[1].strip().strip("`")
-        for line in text.splitlines()
-        if line.startswith("| `notebooks/")
-    }
-    assert toc and rows == toc, (
-        f"CONTRIBUTING.md's chapter table lacks {sorted(toc - rows)} and lists "
-        f"{sorted(rows - toc)}, which _toc.yml does not"
-    )

@@ -255,3 +255,24 @@ def test_the_lab_check_catches_the_labs_of_issue_30():
     assert lab_problems(week_1_as_lab) == [
         "rigid_motions exercise 1 is not to implement"
     ]
+
+
+def test_contributing_lists_every_chapter_of_the_table_of_contents():
+    """CONTRIBUTING's table "Chapters and the modules they use" has one row for each
+    chapter of _toc.yml (notebooks/...), and no row for a chapter the book lacks."""
+    root = ROOT
+    toc = {
+        line.split("file:", 1)[1].strip()
+        for line in (root / "_toc.yml").read_text(encoding="utf-8").splitlines()
+        if "file: notebooks/" in line
+    }
+    text = (root / "CONTRIBUTING.md").read_text(encoding="utf-8")
+    rows = {
+        line.split("|")[1].strip().strip("`")
+        for line in text.splitlines()
+        if line.startswith("| `notebooks/")
+    }
+    assert toc and rows == toc, (
+        f"CONTRIBUTING.md's chapter table lacks {sorted(toc - rows)} and lists "
+        f"{sorted(rows - toc)}, which _toc.yml does not"
+    )
