@@ -334,7 +334,11 @@ def test_keys_with_a_quantity_state_their_unit_and_range():
         ("kawasaki_workspace", 8): (-math.pi, 0),
     }
     for (chapter, number), (low, high) in ranged.items():
-        key = exercises.answer_key(chapter, number)
+        try:
+            key = exercises.answer_key(chapter, number)
+        except exercises.AssessedError:  # kawasaki_workspace 8, as above
+            assert exercises.is_assessed(chapter, number)
+            continue
         assert key["range"]["low"] == pytest.approx(low)
         assert key["range"]["high"] == pytest.approx(high)
         label = exercises.answer_box(chapter, number, script=False)._repr_html_()
