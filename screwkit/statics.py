@@ -503,7 +503,7 @@ def _check_pm(pm):
 
 
 def transmission_index(pm, T, mode=None):
-    """The output transmission index of each leg: |cos| of its pressure angle.
+    """The output transmission index of each leg: ``|cos|`` of its pressure angle.
 
     Leg i alone drives the platform with the twist V_i (rho'_i = 1, the other actuators
     locked; V_i = J^-1 e_i over the platform's freedoms). Its actuation wrench is a
