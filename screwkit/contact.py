@@ -6,8 +6,8 @@ apply (its wrench cone, a screw system with signs):
 
 * ``'frictionless'``: the force k n, k >= 0 (one line wrench);
 * ``'friction'`` (a point with Coulomb friction mu): any force in the cone
-  ``|f_t| <= mu f_n``, spanned in the plane by its two edges n +- mu t, in space inside by
-  ``facets`` edges (a pyramid inscribed in the circular cone);
+  ``|f_t| <= mu f_n``, spanned in the plane by its two edges n +- mu t, in space
+  inside by ``facets`` edges (a pyramid inscribed in the circular cone);
 * ``'soft_finger'`` (space only): a force in the friction cone and a moment about the
   normal up to ``torsion`` times the normal force.
 
