@@ -283,20 +283,19 @@ def scripts_to_files(app, doctree, docname):
 MAX_MEAN_ERROR = 1.0  # of 255, per channel, over the figure
 
 
-def shrink_png(path):
-    """Rewrite the PNG at `path` with a palette (see above); returns bytes saved."""
+def smaller_png(original):
+    """The PNG bytes `original` with a palette (see above), or None where that would
+    change the figure (transparency, too large an error) or not shrink it."""
     import numpy as np
     from PIL import Image
 
-    with open(path, "rb") as f:
-        original = f.read()
     image = Image.open(io.BytesIO(original))
     if image.mode not in ("RGB", "RGBA"):
-        return 0
+        return None
     pixels = np.asarray(image)
     if image.mode == "RGBA":
         if pixels[..., 3].min() < 255:
-            return 0  # transparency: kept as it is
+            return None  # transparency: kept as it is
         image = image.convert("RGB")
         pixels = pixels[..., :3]
     exact = image.getcolors(256) is not None
@@ -306,11 +305,19 @@ def shrink_png(path):
     if not exact:
         error = np.abs(np.asarray(palette.convert("RGB"), dtype=float) - pixels).mean()
         if error > MAX_MEAN_ERROR:
-            return 0
+            return None
     buffer = io.BytesIO()
     palette.save(buffer, format="png", optimize=True)
     smaller = buffer.getvalue()
-    if len(smaller) >= len(original):
+    return smaller if len(smaller) < len(original) else None
+
+
+def shrink_png(path):
+    """Rewrite the PNG at `path` with a palette (see above); returns bytes saved."""
+    with open(path, "rb") as f:
+        original = f.read()
+    smaller = smaller_png(original)
+    if smaller is None:
         return 0
     with open(path, "wb") as f:
         f.write(smaller)
