@@ -57,10 +57,10 @@ test-all: $(STAMP)
 	  SCREWKIT_PROOF=required SCREWKIT_SLOW_TESTS=1 \
 	  $(PYTEST) tests screwkit --doctest-modules --tier all)
 
-## make book: the HTML book in _build/html (fails on any cell error or Sphinx warning)
+## make book: the HTML book in _build/html, from the notebooks' stored outputs (`make test`
+## checks them; `make notebooks` writes them); fails on any Sphinx warning
 ## make book EDITION=course: the course edition in _build/course/html, with no solution and no
-## answer key of the exercises book/assessed.yml lists (book/_ext/editions.py); build the
-## self-study book first and the course edition reuses its executed notebooks
+## answer key of the exercises book/assessed.yml lists (book/_ext/editions.py)
 EDITION ?= self-study
 JB_BUILD = $(BIN)/jupyter-book build . --builder html --warningiserror --nitpick --keep-going
 book: $(STAMP)

@@ -4,7 +4,7 @@ NumPy compiles some loops (sin, cos, exp, log, reductions, ...) several times, o
 SIMD set, and picks the widest the CPU has at import; the last digits of a result can
 depend on that choice. ``NPY_DISABLE_CPU_FEATURES`` turns sets off. The course's stored
 outputs must not depend on it, so CI runs strict nbval a second time with the widest set
-this CPU has turned off (``.ci/nbval_other_fp_path.sh``): on a machine with AVX-512 the
+this CPU has turned off (``.ci/other_fp_path.sh``): on a machine with AVX-512 the
 AVX-512 loops are replaced by the AVX2 ones (an AMD laptop's), on a machine with AVX2
 and no AVX-512 the AVX2/FMA3 loops by the SSE4.2 baseline.
 

@@ -16,8 +16,7 @@ The chapters write their exercises with sphinx-exercise's directives
   the pages have no launch buttons (Binder, Colab, a hub), which would open the
   repository's notebooks with their solutions, and no button to the repository (nor
   its issues, a page's source), which holds the solutions and the teacher's keys.
-  The notebooks' stored outputs are the same for both editions; the course edition
-  reuses the self-study build's execution cache.
+  Both editions show the notebooks' stored outputs (the book executes nothing).
 """
 
 import json
@@ -157,10 +156,6 @@ def course_config(app, config):
     for button in REPOSITORY_BUTTONS:
         options[button] = False
     config.html_theme_options = options
-    # the same stored outputs: the self-study build's execution cache
-    cache = os.path.join(app.srcdir, "_build", ".jupyter_cache")
-    if os.path.isdir(cache):
-        config.nb_execution_cache_path = cache
 
 
 def course_page(app, pagename, templatename, context, doctree):
