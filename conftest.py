@@ -1,22 +1,30 @@
 """pytest for the whole repository (``make test`` collects ``tests`` and screwkit's
-doctests).
+doctests; ``make site-check`` the browser tests of ``.ci/``).
 
-screwkit's deprecated alias modules (their docstring begins "Deprecated alias") warn
-when imported, and the tests turn screwkit's DeprecationWarnings into errors: their
-doctests (they have none) are not collected. ``tests/`` checks that each alias warns.
+The browser tests use pytest-playwright's fixtures (``browser``, ``page``), installed
+with ``.ci/requirements.txt``; here they are pointed at the project's one browser: the
+system Chromium with the fence of ``.ci/harness.py`` (no host but 127.0.0.1, no
+background requests, nothing downloaded). Without pytest-playwright (``make test``,
+screwkit's tests alone) the browser tests skip and say why.
 """
 
-import ast
+import importlib.util
 from pathlib import Path
 
+import pytest
 
-def _is_deprecated_alias(path):
-    docstring = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8"))) or ""
-    return docstring.startswith("Deprecated alias")
+_HARNESS = Path(__file__).resolve().parent / ".ci" / "harness.py"
 
+if importlib.util.find_spec("pytest_playwright") and _HARNESS.exists():
+    _spec = importlib.util.spec_from_file_location("harness", _HARNESS)
+    _harness = importlib.util.module_from_spec(_spec)
+    _spec.loader.exec_module(_harness)
 
-collect_ignore = [
-    str(path.relative_to(Path(__file__).parent))
-    for path in sorted((Path(__file__).parent / "screwkit").glob("*.py"))
-    if _is_deprecated_alias(path)
-]
+    @pytest.fixture(scope="session")
+    def browser_type_launch_args(browser_type_launch_args):
+        """pytest-playwright's launch options: the system Chromium, fenced."""
+        return {
+            **browser_type_launch_args,
+            "executable_path": _harness.executable(),
+            "args": _harness.FLAGS,
+        }

@@ -7,7 +7,7 @@ import harness
 import pytest
 from site_check import CLIPPED_MATH
 
-pytest.importorskip("playwright.sync_api")
+pytest.importorskip("pytest_playwright")
 pytestmark = pytest.mark.skipif(
     harness.CHROMIUM is None, reason="needs Chromium (apt-get install chromium)"
 )
@@ -19,10 +19,11 @@ WIDE = (
 
 
 @pytest.fixture(scope="module")
-def page():
-    with harness.launch() as browser:
-        page = browser.new_page(viewport={"width": 390, "height": 800})
-        yield page
+def page(browser):
+    """A phone-wide page of pytest-playwright's browser (the system Chromium)."""
+    page = browser.new_page(viewport={"width": 390, "height": 800})
+    yield page
+    page.close()
 
 
 def clipped(page, body):

@@ -2,7 +2,7 @@
 Chromium.
 
 Each figure is rendered into a page of headless Chromium (system Chromium driven by
-Playwright, no network, WebGL by SwiftShader); the page's forward kinematics,
+pytest-playwright's fixtures, no network, WebGL by SwiftShader); the page's forward kinematics,
 exponential of a twist, manipulability ellipsoid and platform leg lengths are compared
 with screwkit's (or with the formula written here) on random configurations; the page's
 layout, scrolling, keyboard and accessible names are checked as a reader would meet
@@ -19,18 +19,18 @@ import pytest
 import screwkit as sk
 from screwkit import viewer
 
-pytest.importorskip("playwright.sync_api")
+pytest.importorskip("pytest_playwright")
 pytestmark = pytest.mark.skipif(
     harness.CHROMIUM is None, reason="needs Chromium (apt-get install chromium)"
 )
 
 
-@pytest.fixture(scope="module")
-def page():
-    with harness.launch() as browser:
-        page = browser.new_page()
-        harness.collect_errors(page)
-        yield page
+@pytest.fixture
+def page(page):
+    """pytest-playwright's page (a fresh one per test, in the system Chromium: the
+    repository's conftest.py), keeping its errors in ``page.errors``."""
+    harness.collect_errors(page)
+    return page
 
 
 def show(page, figure, width=760):
@@ -654,8 +654,23 @@ def test_the_drawn_arms_are_the_paths_poses_at_the_sliders_time(page):
     assert page.errors == []
 
 
+# What the player shows while it plays, recorded in the page as it changes (a check
+# made from here after the click could come after a short animation has ended, on a
+# loaded machine): the play button's label and the caption's aria-live.
+RECORD_TRANSITIONS = """id => {
+  const root = document.getElementById(id);
+  const button = root.querySelector('button.screwkit-play');
+  const caption = root.querySelector('.screwkit-caption');
+  window.seen = {labels: [], live: []};
+  new MutationObserver(() => window.seen.labels.push(button.textContent.trim()))
+    .observe(button, {childList: true, characterData: true, subtree: true});
+  new MutationObserver(() => window.seen.live.push(caption.getAttribute('aria-live')))
+    .observe(caption, {attributes: true, attributeFilter: ['aria-live']});
+}"""
+
+
 def test_play_moves_the_arms_and_stops_at_the_end(page):
-    puma, paths, times = puma_paths(duration=1.0)
+    puma, paths, times = puma_paths(duration=3.0)
     figure_id = show(page, viewer.trajectory_viewer(puma, paths, times=times))
     root = page.locator(f"[id='{figure_id}']")
     button = root.locator("button.screwkit-play")
@@ -669,26 +684,46 @@ def test_play_moves_the_arms_and_stops_at_the_end(page):
         button.inner_text().endswith("Play")
         and root.get_attribute("data-time") == "0.000"
     )
+    page.evaluate(RECORD_TRANSITIONS, figure_id)
     button.click()
-    assert button.inner_text().endswith("Pause")
-    assert caption.get_attribute("aria-live") == "off"  # no announcement per frame
+    page.wait_for_function(
+        f"() => !document.getElementById('{figure_id}').dataset.playing", timeout=30000
+    )
+    seen = page.evaluate("window.seen")
+    # Pause while it played, Play at the end; no announcement per frame while it played
+    assert [label[-5:].strip() for label in seen["labels"]] == ["Pause", "Play"]
+    assert seen["live"] == ["off", "polite"]
+    assert root.get_attribute("data-time") == "3.000"
+    assert page.evaluate(snapshot) != before and caption.inner_text() != text
+    assert caption.inner_text().startswith("t = 3.00 s. screw motion: tool at")
+    button.click()  # at the end, play starts again from the first time
+    page.wait_for_function(
+        f"() => +document.getElementById('{figure_id}').dataset.time < 2",
+        timeout=5000,
+    )
+    assert page.errors == []
+
+
+def test_pause_stops_the_arms_where_they_are(page):
+    # a long motion, so that the pause always comes before its end, however slowly
+    # a loaded machine delivers the clicks
+    puma, paths, times = puma_paths(duration=60.0)
+    figure_id = show(page, viewer.trajectory_viewer(puma, paths, times=times))
+    root = page.locator(f"[id='{figure_id}']")
+    button = root.locator("button.screwkit-play")
+    button.click()  # play
+    page.wait_for_function(
+        f"() => +document.getElementById('{figure_id}').dataset.time > 0",
+        timeout=10000,
+    )
+    button.click()  # pause
     page.wait_for_function(
         f"() => !document.getElementById('{figure_id}').dataset.playing", timeout=10000
     )
-    assert root.get_attribute("data-time") == "1.000"
-    assert page.evaluate(snapshot) != before and caption.inner_text() != text
-    assert caption.inner_text().startswith("t = 1.00 s. screw motion: tool at")
-    assert button.inner_text().endswith("Play")
-    assert caption.get_attribute("aria-live") == "polite"
-    button.click()  # at the end, play starts again from the first time
-    page.wait_for_function(
-        f"() => +document.getElementById('{figure_id}').dataset.time < 0.9",
-        timeout=5000,
-    )
-    button.click()  # pause
     paused = root.get_attribute("data-time")
-    page.wait_for_timeout(200)
-    assert root.get_attribute("data-time") == paused and float(paused) < 1
+    page.wait_for_timeout(300)
+    assert root.get_attribute("data-time") == paused and 0 < float(paused) < 60
+    assert button.inner_text().endswith("Play")
     assert page.errors == []
 
 

@@ -36,6 +36,21 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 # ---- robots: chains are immutable, so one of each serves the whole session -----------
 
 
+@pytest.fixture
+def chromium(request):
+    """The system Chromium, fenced (conftest.py at the top): pytest-playwright's
+    ``browser`` fixture, or a skip that says what is missing."""
+    import importlib.util
+
+    import browser
+
+    if importlib.util.find_spec("pytest_playwright") is None:
+        pytest.skip("needs pytest-playwright (.ci/requirements.txt, make test-all)")
+    if browser.CHROMIUM is None:
+        pytest.skip("needs Chromium (apt-get install chromium)")
+    return request.getfixturevalue("browser")
+
+
 @pytest.fixture(scope="session")
 def puma():
     """The PUMA 560 of the catalogue (Corke's standard DH model, SI units)."""

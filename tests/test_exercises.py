@@ -8,11 +8,9 @@ import json
 import math
 import re
 
-import browser as harness
 import numpy as np
 import pytest
 import sympy as sp
-from browser import CHROMIUM
 from node_verdicts import NODE, node_verdicts
 
 from screwkit import exercises
@@ -434,9 +432,7 @@ def test_javascript_verdicts_equal_python_ones(fake):
             assert got[1] == want[1], (n, text)
 
 
-@pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
-def test_answer_boxes_answer_in_the_browser(fake):
-    pytest.importorskip("playwright.sync_api")
+def test_answer_boxes_answer_in_the_browser(fake, chromium):
     boxes = [
         exercises.answer_box("fake", 1, script=True),
         exercises.answer_box("fake", 4, script=False),
@@ -453,23 +449,22 @@ def test_answer_boxes_answer_in_the_browser(fake):
         (2, "120 deg", True),
         (2, "2pi", False),
     ]
-    with harness.launch() as browser:
-        page = browser.new_page()
-        errors = []
-        page.on("pageerror", lambda error: errors.append(str(error)))
-        page.set_content(content)
-        for index, text, correct in trials:
-            box = f"#{boxes[index].id}"
-            page.fill(f"{box} input", text)
-            page.click(f"{box} button")
-            shown = page.inner_text(f"{box} .sk-verdict")
-            assert shown.startswith("✓ Right" if correct else "✗ Not yet"), shown
-            expected = exercises.check(
-                "fake" if index < 2 else "rigid_motions", [1, 4, 5][index], text
-            ).message
-            if not expected.startswith("Could not read"):
-                assert expected in shown
-        page.fill(f"#{boxes[0].id} input", "60 deg")
-        page.press(f"#{boxes[0].id} input", "Enter")
-        assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
-        assert errors == []
+    page = chromium.new_page()
+    errors = []
+    page.on("pageerror", lambda error: errors.append(str(error)))
+    page.set_content(content)
+    for index, text, correct in trials:
+        box = f"#{boxes[index].id}"
+        page.fill(f"{box} input", text)
+        page.click(f"{box} button")
+        shown = page.inner_text(f"{box} .sk-verdict")
+        assert shown.startswith("✓ Right" if correct else "✗ Not yet"), shown
+        expected = exercises.check(
+            "fake" if index < 2 else "rigid_motions", [1, 4, 5][index], text
+        ).message
+        if not expected.startswith("Could not read"):
+            assert expected in shown
+    page.fill(f"#{boxes[0].id} input", "60 deg")
+    page.press(f"#{boxes[0].id} input", "Enter")
+    assert page.inner_text(f"#{boxes[0].id} .sk-verdict").startswith("✓")
+    assert errors == []

@@ -11,12 +11,10 @@ import math
 from pathlib import Path
 
 import answer_references
-import browser
 import builders
 import numpy as np
 import pytest
 from answer_references import REFERENCES, all_keys
-from browser import CHROMIUM
 
 from screwkit import exercises
 
@@ -80,12 +78,10 @@ def test_the_keys_match_the_chapter_geometry():
     )
 
 
-@pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
 @pytest.mark.parametrize("chapter", ["rigid_motions", "puma_ik"])
-def test_stored_chapter_boxes_answer_in_the_page(chapter):
+def test_stored_chapter_boxes_answer_in_the_page(chapter, chromium):
     # the chapter's stored HTML outputs, in order, as the book shows them: the script is
     # inlined once, in the first box, and every box answers without a kernel
-    pytest.importorskip("playwright.sync_api")
     path = Path(__file__).resolve().parents[2] / "notebooks" / f"{chapter}.ipynb"
     cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
     boxes = [
@@ -96,20 +92,19 @@ def test_stored_chapter_boxes_answer_in_the_page(chapter):
     ]
     assert len(boxes) >= 2
     assert sum("window.screwkitExercises = {" in b for b in boxes) == 1
-    with browser.launch() as chromium:
-        page = chromium.new_page()
-        errors = []
-        page.on("pageerror", lambda error: errors.append(str(error)))
-        page.set_content("<html><body>" + "".join(boxes) + "</body></html>")
-        ids = page.eval_on_selector_all(".sk-answer-box", "d => d.map(e => e.id)")
-        assert len(ids) == len(boxes)
-        for box in ids:
-            number = int(box.split("-")[-2])
-            key = exercises.answer_key(chapter, number)
-            right = ", ".join(repr(v) for v in key["values"])
-            for text, correct in ((right, True), ("1e6", False)):
-                page.fill(f"[id='{box}'] input", text)
-                page.click(f"[id='{box}'] button")
-                shown = page.inner_text(f"[id='{box}'] .sk-verdict")
-                assert shown.startswith("✓" if correct else "✗"), (box, shown)
-        assert errors == []
+    page = chromium.new_page()
+    errors = []
+    page.on("pageerror", lambda error: errors.append(str(error)))
+    page.set_content("<html><body>" + "".join(boxes) + "</body></html>")
+    ids = page.eval_on_selector_all(".sk-answer-box", "d => d.map(e => e.id)")
+    assert len(ids) == len(boxes)
+    for box in ids:
+        number = int(box.split("-")[-2])
+        key = exercises.answer_key(chapter, number)
+        right = ", ".join(repr(v) for v in key["values"])
+        for text, correct in ((right, True), ("1e6", False)):
+            page.fill(f"[id='{box}'] input", text)
+            page.click(f"[id='{box}'] button")
+            shown = page.inner_text(f"[id='{box}'] .sk-verdict")
+            assert shown.startswith("✓" if correct else "✗"), (box, shown)
+    assert errors == []

@@ -7,9 +7,7 @@ import re
 import sys
 from pathlib import Path
 
-import browser
 import pytest
-from browser import CHROMIUM
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -34,30 +32,27 @@ def test_answers_html_loads_nothing_from_elsewhere(answers):
     assert "\\(" in answers and "\\[" in answers  # formulas, inline and displayed
 
 
-@pytest.mark.skipif(CHROMIUM is None, reason="needs Chromium")
-def test_answers_html_typesets_its_formulas_alone(answers, tmp_path):
-    pytest.importorskip("playwright.sync_api")
+def test_answers_html_typesets_its_formulas_alone(answers, tmp_path, chromium):
     path = tmp_path / "copied" / "answers.html"  # copied alone, elsewhere
     path.parent.mkdir()
     path.write_text(answers, encoding="utf-8")
-    with browser.launch() as chromium:
-        page = chromium.new_page()
-        requests = []
-        page.on("request", lambda r: requests.append(r.url))
-        page.goto(path.as_uri())
-        page.wait_for_function(
-            "window.MathJax && MathJax.startup && MathJax.startup.promise",
-            timeout=60_000,
-        )
-        page.evaluate("MathJax.startup.promise")
-        typeset = page.locator("mjx-container svg").count()
-        errors = page.locator("mjx-merror").count()
-        # the text left untypeset, code aside (MathJax skips <pre> and <code>)
-        left = page.evaluate(
-            "() => { const body = document.body.cloneNode(true);"
-            " body.querySelectorAll('pre, code, mjx-container')"
-            ".forEach(e => e.remove()); return body.textContent; }"
-        )
+    page = chromium.new_page()
+    requests = []
+    page.on("request", lambda r: requests.append(r.url))
+    page.goto(path.as_uri(), timeout=120_000)  # MathJax inline: slow on a loaded machine
+    page.wait_for_function(
+        "window.MathJax && MathJax.startup && MathJax.startup.promise",
+        timeout=60_000,
+    )
+    page.evaluate("MathJax.startup.promise")
+    typeset = page.locator("mjx-container svg").count()
+    errors = page.locator("mjx-merror").count()
+    # the text left untypeset, code aside (MathJax skips <pre> and <code>)
+    left = page.evaluate(
+        "() => { const body = document.body.cloneNode(true);"
+        " body.querySelectorAll('pre, code, mjx-container')"
+        ".forEach(e => e.remove()); return body.textContent; }"
+    )
     assert [url for url in requests if url != path.as_uri()] == []
     assert typeset > 100 and errors == 0
     assert "\\(" not in left and "\\[" not in left
