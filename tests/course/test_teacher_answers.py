@@ -39,7 +39,7 @@ def test_answers_html_typesets_its_formulas_alone(answers, tmp_path, chromium):
     page = chromium.new_page()
     requests = []
     page.on("request", lambda r: requests.append(r.url))
-    page.goto(path.as_uri(), timeout=120_000)  # MathJax inline: slow on a loaded machine
+    page.goto(path.as_uri(), timeout=120_000)  # MathJax inline: slow under load
     page.wait_for_function(
         "window.MathJax && MathJax.startup && MathJax.startup.promise",
         timeout=60_000,
