@@ -5,8 +5,8 @@ Each figure is rendered into a page of headless Chromium (the system Chromium th
 pytest-playwright's fixtures, no network, WebGL by SwiftShader); the page's forward
 kinematics, exponential of a twist, manipulability ellipsoid and platform leg lengths
 are compared with screwkit's (or with the formula written here) on random
-configurations; the page's layout, scrolling, keyboard and accessible names are checked as a reader would meet
-them. Run by `make site-check` (it needs .ci/requirements.txt); skipped without
+configurations; the page's layout, scrolling, keyboard and accessible names are
+checked as a reader would meet them. Run by `make site-check` (it needs .ci/requirements.txt); skipped without
 Chromium.
 """
 
