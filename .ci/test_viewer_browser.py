@@ -6,8 +6,8 @@ pytest-playwright's fixtures, no network, WebGL by SwiftShader); the page's forw
 kinematics, exponential of a twist, manipulability ellipsoid and platform leg lengths
 are compared with screwkit's (or with the formula written here) on random
 configurations; the page's layout, scrolling, keyboard and accessible names are
-checked as a reader would meet them. Run by `make site-check` (it needs .ci/requirements.txt); skipped without
-Chromium.
+checked as a reader would meet them. Run by `make site-check` (it needs
+.ci/requirements.txt); skipped without Chromium.
 """
 
 import math
