@@ -59,3 +59,68 @@ def _():
     inward = -0.1 * tip / np.linalg.norm(tip)
     rates = np.linalg.solve(_numeric_jacobian([0.5, 0.3], q), inward)
     return rates[1]
+
+
+# --- kawasaki_workspace ---
+
+
+def _annulus_area(inner, outer, n=2001):
+    """The area between two circles by the midpoint rule on rings of width dr."""
+    edges = np.linspace(inner, outer, n)
+    middles = (edges[1:] + edges[:-1]) / 2
+    return float(np.sum(2 * np.pi * middles * np.diff(edges)))
+
+
+def _distances(lengths, q2):
+    """The tip's distance from the base of a planar arm for the elbow angles q2."""
+    Q = np.column_stack([np.zeros_like(q2), q2])
+    return np.linalg.norm(sk.robots.planar(lengths).fk(Q)[:, :2, 3], axis=1)
+
+
+@reference("kawasaki_workspace", 10)
+def _():
+    r = _distances([0.5, 0.3], np.linspace(0, np.pi, 100_001))
+    return _annulus_area(r.min(), r.max())
+
+
+@reference("kawasaki_workspace", 12)
+def _():
+    return _distances([0.5, 0.3], np.linspace(0, 2 * np.pi / 3, 100_001)).min()
+
+
+@reference("kawasaki_workspace", 13)
+def _():
+    # a tip distance r is dexterous when joint 3 lies in the two-link annulus for
+    # every orientation phi: bisect on r for where that starts and stops holding
+    r2 = _distances([0.5, 0.3], np.linspace(0, np.pi, 20_001))
+    phi = np.linspace(-np.pi, np.pi, 721)
+
+    def every_phi(r):
+        wrist = np.hypot(r - 0.1 * np.cos(phi), 0.1 * np.sin(phi))
+        return bool(np.all((wrist >= r2.min() - 1e-12) & (wrist <= r2.max() + 1e-12)))
+
+    def edge(outside, inside):
+        for _ in range(60):
+            mid = (outside + inside) / 2
+            outside, inside = (outside, mid) if every_phi(mid) else (mid, inside)
+        return inside
+
+    return _annulus_area(edge(0.0, 0.5), edge(1.0, 0.5))
+
+
+@reference("kawasaki_workspace", 15)
+def _():
+    # the elbow angle that puts the tip at the target's distance, by bisection
+    target = np.hypot(0.6, 0.2)
+    lo, hi = 0.0, np.pi
+    for _ in range(80):
+        mid = (lo + hi) / 2
+        farther = _distances([0.5, 0.3], np.array([mid]))[0] > target
+        lo, hi = (mid, hi) if farther else (lo, mid)
+    return (lo + hi) / 2
+
+
+@reference("kawasaki_workspace", 17)
+def _():
+    tool = sk.robots.kawasaki_cx210l().fk(np.radians([0, 90, 0, 0, 0, 0]))[:3, 3]
+    return tool[[0, 2]]
