@@ -124,3 +124,57 @@ def _():
 def _():
     tool = sk.robots.kawasaki_cx210l().fk(np.radians([0, 90, 0, 0, 0, 0]))[:3, 3]
     return tool[[0, 2]]
+
+
+# --- redundancy ---
+
+
+def _least_norm(J, xdot):
+    """The least-norm solution by minimising |qdot|^2 on J qdot = xdot through the
+    KKT system (no pseudo-inverse)."""
+    m, n = J.shape
+    kkt = np.block([[np.eye(n), J.T], [J, np.zeros((m, m))]])
+    return np.linalg.solve(kkt, np.r_[np.zeros(n), xdot])[:n]
+
+
+@reference("redundancy", 11)
+def _():
+    return _least_norm(_numeric_jacobian([1, 1, 1], np.radians([0, 90, -90])), [0.1, 0])
+
+
+@reference("redundancy", 13)
+def _():
+    angles = np.cumsum(np.radians([30, 60, -90]))
+    return np.array([0.5, 0.4, 0.3]) @ np.column_stack([np.cos(angles), np.sin(angles)])
+
+
+@reference("redundancy", 14)
+def _():
+    J = _numeric_jacobian([0.5, 0.4, 0.3], np.radians([0, 90, -90]))
+    return _least_norm(J, [0.1, 0])
+
+
+@reference("redundancy", 15)
+def _():
+    # q1 by bisection on the tip's miss, with q = (q1, 90 deg, 0)
+    def miss_angle(q1):
+        tip = _tip([1, 1, 1], [q1, np.pi / 2, 0])
+        return np.arctan2(tip[1], tip[0]) - np.arctan2(1, 2)
+
+    lo, hi = -np.pi / 2, 0.0
+    assert miss_angle(lo) < 0 < miss_angle(hi)
+    for _ in range(80):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if miss_angle(mid) < 0 else (lo, mid)
+    q1 = (lo + hi) / 2
+    assert np.allclose(_tip([1, 1, 1], [q1, np.pi / 2, 0]), [2, 1])
+    return q1
+
+
+@reference("redundancy", 22)
+def _():
+    # the largest reach over a grid of configurations, then where y = 0.6 m meets it
+    grid = np.radians(np.linspace(-20, 20, 41))
+    Q = np.array([[0.0, a, b] for a in grid for b in grid])
+    reach = np.linalg.norm(sk.robots.planar([0.4, 0.3, 0.2]).fk(Q)[:, :2, 3], axis=1)
+    return np.sqrt(reach.max() ** 2 - 0.6**2)
