@@ -25,9 +25,7 @@ def _tip_velocity(lengths, q, rates, h=1e-6):
 
 
 def _numeric_jacobian(lengths, q):
-    return np.column_stack(
-        [_tip_velocity(lengths, q, e) for e in np.eye(len(lengths))]
-    )
+    return np.column_stack([_tip_velocity(lengths, q, e) for e in np.eye(len(lengths))])
 
 
 # --- jacobians ---
