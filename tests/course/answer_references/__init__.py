@@ -2,6 +2,7 @@
 chapters; importing the package registers them all in ``REFERENCES``."""
 
 from . import (
+    bank_jacobians_workspace_redundancy,
     configuration_space,
     first_chapters,
     later_chapters,
@@ -15,6 +16,7 @@ from .registry import REFERENCES, all_keys, key, value
 __all__ = [
     "REFERENCES",
     "all_keys",
+    "bank_jacobians_workspace_redundancy",
     "configuration_space",
     "first_chapters",
     "key",
