@@ -26,6 +26,7 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
+from .. import _compiled
 from .._checks import (
     as_sympy_scalar,
     check_chain,
@@ -238,9 +239,116 @@ _HESSIAN = {
 }
 
 
+def _one_dot(chain, form, values, rates):
+    """dJ/dt of a form at one configuration, q and dq lists of n floats: the
+    Jacobian's entries from the generated code and the brackets in Python floats,
+    (6, n)."""
+    n = chain.n
+    if form == "body":
+        J = chain.body_jacobian(values).ravel().tolist()
+    else:
+        J = _compiled.scalar(chain, form)(values)
+    columns = [J[i::n] for i in range(n)]  # each column's six entries
+    dot = _SCALAR_DOT[form](columns, rates)
+    return np.array([column[r] for r in range(6) for column in dot]).reshape(6, n)
+
+
+def _prefix(columns, rates, rows):
+    """The sums over j < i of columns[j][rows] dq_j, for every i (a list of n lists),
+    in the order of :func:`_second_order._before`."""
+    W, sums = [0.0] * len(rows), []
+    for i in range(len(columns)):
+        if i:
+            previous, rate = columns[i - 1], rates[i - 1]
+            W = [W[k] + previous[r] * rate for k, r in enumerate(rows)]
+        sums.append(W)
+    return sums
+
+
+def _suffix(columns, rates, rows):
+    """The sums over j >= i of columns[j][rows] dq_j, for every i, in the order of
+    :func:`_second_order._from`."""
+    n = len(columns)
+    sums = [None] * n
+    last, rate = columns[n - 1], rates[n - 1]
+    S = [last[r] * rate for r in rows]
+    sums[n - 1] = S
+    for i in range(n - 2, -1, -1):
+        column, rate = columns[i], rates[i]
+        S = [S[k] + column[r] * rate for k, r in enumerate(rows)]
+        sums[i] = S
+    return sums
+
+
+def _cross3(a0, a1, a2, b0, b1, b2):
+    """a x b of two 3-vectors given by their components (floats), as
+    :func:`screwkit.transforms._cross_into` computes it."""
+    return (a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0)
+
+
+def _space_dot_one(columns, rates):
+    """:func:`_second_order.space_dot` of one configuration: columns (w; v), lists."""
+    out = []
+    for W, c in zip(_prefix(columns, rates, range(6)), columns):
+        angular = _cross3(*W[:3], *c[:3])
+        a, b, e = W[0], W[1], W[2]
+        linear = [
+            (b * c[5] - e * c[4]) + W[4] * c[2] - W[5] * c[1],
+            (e * c[3] - a * c[5]) + W[5] * c[0] - W[3] * c[2],
+            (a * c[4] - b * c[3]) + W[3] * c[1] - W[4] * c[0],
+        ]
+        out.append([*angular, *linear])
+    return out
+
+
+def _body_dot_one(columns, rates):
+    """:func:`_second_order.body_dot` of one configuration: columns (w; v), lists;
+    W_i the sum over j > i (the sum over j >= i less column i's own term)."""
+    out = []
+    for S, c, rate in zip(_suffix(columns, rates, range(6)), columns, rates):
+        W = [S[k] - c[k] * rate for k in range(6)]
+        angular = _cross3(*c[:3], *W[:3])
+        a, b, e = c[0], c[1], c[2]
+        linear = [
+            (b * W[5] - e * W[4]) + c[4] * W[2] - c[5] * W[1],
+            (e * W[3] - a * W[5]) + c[5] * W[0] - c[3] * W[2],
+            (a * W[4] - b * W[3]) + c[3] * W[1] - c[4] * W[0],
+        ]
+        out.append([*angular, *linear])
+    return out
+
+
+def _geometric_dot_one(columns, rates):
+    """:func:`_second_order.geometric_dot` of one configuration: columns (u; w),
+    lists."""
+    W_all = _prefix(columns, rates, (3, 4, 5))
+    S_all = _suffix(columns, rates, (0, 1, 2))
+    out = []
+    for W, S, c in zip(W_all, S_all, columns):
+        a, b, e = W
+        linear = [
+            (b * c[2] - e * c[1]) + c[4] * S[2] - c[5] * S[1],
+            (e * c[0] - a * c[2]) + c[5] * S[0] - c[3] * S[2],
+            (a * c[1] - b * c[0]) + c[3] * S[1] - c[4] * S[0],
+        ]
+        out.append([*linear, *_cross3(a, b, e, *c[3:])])
+    return out
+
+
+_SCALAR_DOT = {
+    "space": _space_dot_one,
+    "body": _body_dot_one,
+    "geometric": _geometric_dot_one,
+}
+
+
 def _jacobian_dot(chain, form, q, dq):
-    """dJ/dt of a form, exact for SymPy input, else in floats."""
+    """dJ/dt of a form, exact for SymPy input, else in floats (one plain
+    configuration by the scalar path)."""
     check_chain(chain)
+    values, rates = _compiled.one(q, chain.n), _compiled.one(dq, chain.n)
+    if values is not None and rates is not None:
+        return _one_dot(chain, form, values, rates)
     if _exact(q, dq):
         Js, T, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
