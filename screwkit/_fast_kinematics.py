@@ -124,9 +124,8 @@ def fk(chain, q):
     """
     values = _compiled.one(q, chain.n)
     if values is not None:  # one configuration: the scalar path
-        return np.array(_compiled.scalar(chain, "pose")(values) + _LAST_ROW).reshape(
-            4, 4
-        )
+        entries = _compiled.scalar(chain, "pose")(values) + _LAST_ROW
+        return np.array(entries, float).reshape(4, 4)
     q = chain.check_q(q)
     if q.ndim == 1:
         T = np.eye(4)

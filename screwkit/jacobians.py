@@ -135,7 +135,7 @@ def _generated_jacobian(chain, q, outputs):
     values = _compiled.one(q, chain.n)
     if values is not None:  # one configuration: the scalar path
         entries = _compiled.scalar(chain, outputs)(values)
-        return np.array(entries).reshape(6, chain.n)
+        return np.array(entries, float).reshape(6, chain.n)
     q = chain.check_q(q)
     n, rows = chain.n, 6 * chain.n
     if q.ndim == 1:
@@ -198,7 +198,7 @@ def _body_columns(chain, values):
         J[3 * n + i] = r00 * u0 + r10 * u1 + r20 * u2
         J[4 * n + i] = r01 * u0 + r11 * u1 + r21 * u2
         J[5 * n + i] = r02 * u0 + r12 * u1 + r22 * u2
-    return np.array(J).reshape(6, n)
+    return np.array(J, float).reshape(6, n)
 
 
 @fill(sections=_JACOBIAN_SECTIONS)
