@@ -1,0 +1,301 @@
+"""The closed forms of one pose in Python floats: the scalar path of ``analytic_ik``.
+
+For one pose the vectorised engines (:mod:`.spherical_wrist`, :mod:`.ur`) pay NumPy's
+cost per call hundreds of times on arrays of a few numbers; here the same steps, in
+the same order, run on floats with :mod:`math`, the arm's constant vectors computed
+once per arm and cached on it. Each function returns what the engine's ``_solve``
+returns for a batch of one pose: Q (8, 6) in the order of CONFIGURATIONS (NaN rows
+where a branch does not reach), the singularity flags (8, 3) and the reason code.
+The tests hold the two paths to the same numbers (tests/test_single_call_ik.py).
+"""
+
+import math
+
+import numpy as np
+
+from ..tolerances import IK_CLIP_TOL, IK_SINGULAR_TOL
+from ..tolerances import IK_LABEL_TOL as WRIST_TOL
+
+__all__ = []
+
+_NAN_ROW = [math.nan] * 6
+
+
+def _dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def _cross(a, b):
+    return (
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    )
+
+
+def _wrap(angle):
+    """An angle in (-pi, pi], as :func:`screwkit.transforms._wrap_angle`."""
+    return math.pi - (math.pi - angle) % (2 * math.pi)
+
+
+def _polar(y, x):
+    """atan2(y, x) with its cosine and sine (1, y where x = y = 0), as the engines'
+    ``_polar``."""
+    h = math.hypot(x, y)
+    if h > 0:
+        return math.atan2(y, x), x / h, y / h
+    return math.atan2(y, x), 1.0, y
+
+
+def _turn(w, x, c, s):
+    """x turned about the unit axis w by the angle of cosine c and sine s
+    (:meth:`._closed_form.Turn.first`: x c + (w x x) s + w ((w . x)(1 - c)))."""
+    along = _dot(w, x) * (1 - c)
+    k = _cross(w, x)
+    return (
+        x[0] * c + k[0] * s + w[0] * along,
+        x[1] * c + k[1] * s + w[1] * along,
+        x[2] * c + k[2] * s + w[2] * along,
+    )
+
+
+def _rows(T):
+    """The rotation (3 rows) and position of a pose (4, 4) as floats."""
+    rows = T.tolist()
+    return [row[:3] for row in rows[:3]], [row[3] for row in rows[:3]]
+
+
+def _apply(R, x):
+    return (_dot(R[0], x), _dot(R[1], x), _dot(R[2], x))
+
+
+def _vector(array):
+    return tuple(float(x) for x in array)
+
+
+# ---- a spherical wrist, joints 2 and 3 parallel (SphericalWristArm) ------------------
+
+
+def _wrist_constants(arm):
+    """The arm's constant vectors and numbers, computed once (floats)."""
+    w, p, c = arm.w, arm.p, arm.c
+    Hinv = np.linalg.inv(arm.home)
+    a1, a2, w4, w5, w6 = (_vector(w[i]) for i in (0, 1, 3, 4, 5))
+    u3 = c - p[2] - w[1] * (w[1] @ (c - p[2]))
+    v3 = p[1] - p[2] - w[1] * (w[1] @ (p[1] - p[2]))
+    lu, lv = np.linalg.norm(u3), np.linalg.norm(v3)
+    x6 = np.cross(w[4], w[5])
+    x6 = x6 / np.linalg.norm(x6)
+    n45, n56 = np.cross(w[3], w[4]), np.cross(w[4], w[5])
+    e = p[2] - p[1] - w[1] * (w[1] @ (p[2] - p[1]))
+    k0 = p[2] - p[1] + w[1] * (w[1] @ (c - p[2]))
+    w6x6 = np.cross(w[5], x6)
+    fs = [x6, np.cross(w[4], x6), w6x6, np.cross(w[4], w6x6), w[4]]  # joint 6's
+    fs = [_vector(f) for f in fs]
+    return dict(
+        a1=a1,
+        a2=a2,
+        a1a2=float(w[0] @ w[1]),
+        n21=_vector(np.cross(w[1], w[0])),
+        h=float(w[1] @ (c - p[0])),
+        centre=_vector(Hinv[:3, :3] @ c + Hinv[:3, 3]),  # c in the home's frame
+        p0=_vector(p[0]),
+        p01=_vector(p[0] - p[1]),
+        s3=1.0 if w[1] @ w[2] > 0 else -1.0,
+        offset2=float((w[1] @ (c - p[1])) ** 2),
+        lu2v2=float(lu**2 + lv**2),
+        lulv2=float(2 * lu * lv),
+        theta0=float(np.arctan2(np.cross(u3, v3) @ w[1], u3 @ v3)),
+        k=(_vector(k0), _vector(u3), _vector(np.cross(w[1], u3))),
+        k0a2=float(k0 @ w[1]),
+        e=_vector(e),
+        a2e=_vector(np.cross(w[1], e)),
+        g6=_vector(Hinv[:3, :3] @ w[5]),  # RG w6 = R_T (Rh^T w6)
+        gx6=_vector(Hinv[:3, :3] @ x6),
+        w4=w4,
+        w5=w5,
+        w6=w6,
+        c45=float(w[3] @ w[4]),
+        c46=float(w[3] @ w[5]),
+        c56=float(w[4] @ w[5]),
+        n45=_vector(n45),
+        m45=_vector(np.cross(w[3], n45)),
+        nn45=float(n45 @ n45),
+        norm45=float(np.linalg.norm(n45)),
+        n56=_vector(n56),
+        w4n56=float(w[3] @ n56),
+        n45n56=float(n45 @ n56),
+        n45w6=float(n45 @ w[5]),
+        fs=fs,
+        w4fs=[_vector(np.cross(w[3], f)) for f in fs],
+        w4f=[float(w[3] @ f) for f in fs],
+        w5x6=float(w[4] @ x6),
+        w5w6x6=float(w[4] @ fs[2]),
+        scale=float(arm.scale),
+    )
+
+
+def _constants(arm, build):
+    found = arm.__dict__.get("_one_pose")
+    if found is None:
+        found = build(arm)
+        object.__setattr__(arm, "_one_pose", found)  # a frozen dataclass: cached once
+    return found
+
+
+def solve_wrist(arm, T):
+    """:meth:`SphericalWristArm._solve` of one checked pose T (4, 4): Q (8, 6) as
+    lists, flags (8, 3) as tuples of bool, the reason code."""
+    k = _constants(arm, _wrist_constants)
+    R, t = _rows(T)
+    centre = _apply(R, k["centre"])
+    p0 = k["p0"]
+    d = (centre[0] + t[0] - p0[0], centre[1] + t[1] - p0[1], centre[2] + t[2] - p0[2])
+    # joint 1: subproblem 4 (plane_angles and sinusoid_angles)
+    a1, a2, scale = k["a1"], k["a2"], k["scale"]
+    along = _dot(a1, d)
+    A = _dot(a2, d) - along * k["a1a2"]
+    B = _dot(k["n21"], d)
+    C = k["h"] - along * k["a1a2"]
+    radius2 = A**2 + B**2
+    excess = radius2 - C**2
+    phi = math.atan2(B, A)
+    half = math.atan2(math.sqrt(max(excess, 0.0)), C)
+    shoulder_ok = excess >= -IK_CLIP_TOL * scale**2
+    forward = math.sqrt(max(excess, 0.0))
+    thetas = (phi - half, phi + half)
+    if radius2 < (IK_CLIP_TOL * scale) ** 2:  # the wrist centre on axis 1: q1 free
+        thetas = (0.0, 0.0)
+    p01 = k["p01"]
+    g6, gx6 = _apply(R, k["g6"]), _apply(R, k["gx6"])
+    rows, flags = [], []
+    elbow_any = False
+    shoulder_flag = forward**2 < IK_SINGULAR_TOL * scale**2
+    for sigma, theta in ((-1.0, thetas[0]), (1.0, thetas[1])):  # the arm l, r
+        ct, st = math.cos(theta), math.sin(theta)
+        b = _turn(a1, d, ct, st)
+        b1 = (b[0] + p01[0], b[1] + p01[1], b[2] + p01[2])
+        q1 = _wrap(-theta)
+        # joint 3: subproblem 3
+        delta2 = (b1[0] ** 2 + b1[1] ** 2 + b1[2] ** 2) - k["offset2"]
+        cosine = (k["lu2v2"] - delta2) / k["lulv2"]
+        elbow_ok = abs(cosine) <= 1 + IK_CLIP_TOL
+        elbow_any = elbow_any or elbow_ok
+        cosine = min(max(cosine, -1.0), 1.0)
+        beta = math.acos(cosine)
+        s3 = k["s3"]
+        theta0 = s3 * k["theta0"]
+        elbows = []
+        m = _cross(a2, b1)
+        dots = [_dot(v, b1) for v in k["k"]]
+        crosses = [-_dot(v, m) for v in k["k"]]
+        along2 = _dot(a2, b1) * k["k0a2"]
+        em, a2em = _dot(k["e"], m), _dot(k["a2e"], m)
+        for q3 in (theta0 + s3 * -beta, theta0 + s3 * beta):
+            c3, s3q = math.cos(s3 * q3), math.sin(s3 * q3)
+            q2, c2, s2 = _polar(
+                crosses[0] + c3 * crosses[1] + s3q * crosses[2],
+                dots[0] + c3 * dots[1] + s3q * dots[2] - along2,
+            )
+            elbows.append((q2, c2, s2, q3, c3, s3q, c2 * em + s2 * a2em))
+        if sigma * elbows[0][6] < sigma * elbows[1][6]:
+            elbows.reverse()  # u first, then d
+        elbow_flag = 1 - abs(cosine) < IK_SINGULAR_TOL
+        turned = [_turn(a1, g, ct, st) for g in (g6, gx6)]
+        for q2, c2, s2, q3, c3, s3q, _ in elbows:
+            c23, s23 = c2 * c3 - s2 * s3q, s2 * c3 + c2 * s3q
+            t6, b = (_turn(a2, g, c23, -s23) for g in turned)
+            wrists, wrist_ok, wrist_flag = _wrist(k, t6, b)
+            reached = shoulder_ok and elbow_ok and wrist_ok
+            for q4, q5, q6 in wrists:
+                rows.append([q1, q2, _wrap(q3), q4, q5, q6] if reached else _NAN_ROW)
+                flags.append((shoulder_flag, elbow_flag, wrist_flag))
+    if not shoulder_ok:
+        code = 1
+    elif not elbow_any:
+        code = 2
+    else:
+        code = 0 if any(row is not _NAN_ROW for row in rows) else 3
+    return rows, flags, code
+
+
+def _wrist(k, t, b):
+    """Joints 4, 5 (subproblem 2) and 6 (subproblem 1) of one arm and elbow: the two
+    (q4, q5, q6), n and f, whether real, and the wrist's singularity flag."""
+    w4, w5, w6, c45, c56 = k["w4"], k["w5"], k["w6"], k["c45"], k["c56"]
+    t4, t5, tn, tm = _dot(w4, t), _dot(w5, t), _dot(k["n45"], t), _dot(k["m45"], t)
+    a = (c45 * c56 - t4) / (c45**2 - 1)
+    bb = (c45 * t4 - c56) / (c45**2 - 1)
+    gamma2 = (tn**2 + tm**2) / k["nn45"] ** 2 - bb**2
+    sine46 = math.sqrt(tn**2 + tm**2) / math.sqrt(k["nn45"])
+    ok = gamma2 >= -IK_CLIP_TOL
+    root = math.sqrt(max(gamma2, 0.0))
+    flag = root * k["norm45"] < IK_SINGULAR_TOL
+    singular = sine46 <= WRIST_TOL
+    if singular:
+        free5 = _polar(_dot(k["n56"], t), _dot(w6, t) - c56 * t5)
+    # joint 6: b . R4 f for the fixed f of "fs" is fb c4 + kb s4 + (w4 . b)(w4 . f)
+    # (1 - c4), with fb = f . b and kb = (w4 x f) . b computed once per arm and elbow
+    w4b = _dot(w4, b)
+    fb = [_dot(f, b) for f in k["fs"]]
+    kb = [_dot(f, b) for f in k["w4fs"]]
+    w4f, w5x6, w5w6x6 = k["w4f"], k["w5x6"], k["w5w6x6"]
+    out = []
+    for gamma, q4_free, c4_free in (
+        (root * 1.0, math.pi, -1.0),
+        (root * -1.0, 0.0, 1.0),
+    ):
+        if singular:
+            (q5, c5, s5), (q4, c4, s4) = free5, (q4_free, c4_free, 0.0)
+        else:
+            q5, c5, s5 = _polar(
+                a * k["w4n56"] + gamma * k["n45n56"],
+                a * (k["c46"] - c45 * c56) + gamma * k["n45w6"],
+            )
+            q4, c4, s4 = _polar(bb * tn + gamma * tm, bb * (t5 - c45 * t4) + gamma * tn)
+        x, y, z, u, v = (
+            fb[m] * c4 + kb[m] * s4 + w4b * w4f[m] * (1 - c4) for m in range(5)
+        )  # b . R4 f for f = x6, w5 x x6, w6 x x6, w5 x (w6 x x6), w5
+        along_x6 = x * c5 + y * s5 + v * w5x6 * (1 - c5)
+        along_w6x6 = z * c5 + u * s5 + v * w5w6x6 * (1 - c5)
+        out.append((q4, q5, math.atan2(along_w6x6, along_x6)))
+    return out, ok, flag
+
+
+# ---- the answer's numbers: limits and residuals of one solution ----------------------
+
+
+def into_limits(q, limits, slack):
+    """One solution q (6 floats) with each angle moved by a multiple of 2 pi into its
+    limits (the candidate nearest to q of q + 2 pi k, k = -3 ... 3; the first of a
+    tie), and whether every angle could be moved there: the arithmetic of
+    ``dispatch._into_limits`` on floats (revolute joints)."""
+    moved, ok = list(q), True
+    for j, (x, (low, high)) in enumerate(zip(q, limits)):
+        if low <= x <= high:
+            continue
+        best = math.inf
+        for turn in range(-3, 4):
+            candidate = x + 2 * math.pi * turn
+            if low - slack <= candidate <= high + slack:
+                distance = abs(candidate - x)
+                if distance < best:
+                    best, moved[j] = distance, candidate
+        if best == math.inf:
+            ok = False
+    return moved, ok
+
+
+def residual(entries, target, scale):
+    """The pose residual (:func:`._closed_form.pose_residual`) of one solution: the
+    largest entry of the rotation's difference and of the position's divided by
+    ``scale``, from the 12 entries of the chain's pose at q and of the target's top
+    rows."""
+    rotation = position = 0.0
+    for k in range(12):
+        difference = abs(entries[k] - target[k])
+        if k % 4 == 3:
+            position = max(position, difference)
+        else:
+            rotation = max(rotation, difference)
+    return max(rotation, position / scale)
