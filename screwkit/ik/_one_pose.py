@@ -262,6 +262,185 @@ def _wrist(k, t, b):
     return out, ok, flag
 
 
+# ---- UR-type: joints 2, 3, 4 parallel, axes 5 and 6 meeting (URArm) ------------------
+
+
+def _fixed(w, v, c, s):
+    """One vector v turned about w (:meth:`._closed_form.Turn.fixed`):
+    (v - w (v . w)) c + (w x v) s + w (v . w)."""
+    along = _dot(v, w)
+    k = _cross(w, v)
+    return tuple((v[i] - w[i] * along) * c + k[i] * s + w[i] * along for i in range(3))
+
+
+def _between(w, a, b):
+    """Subproblem 1 (:func:`.subproblems.rotation_angles`): the angle about w from a
+    to b, their parts across w."""
+    aw, bw = _dot(a, w), _dot(b, w)
+    a_ = (a[0] - w[0] * aw, a[1] - w[1] * aw, a[2] - w[2] * aw)
+    b_ = (b[0] - w[0] * bw, b[1] - w[1] * bw, b[2] - w[2] * bw)
+    return math.atan2(_dot(_cross(a_, b_), w), _dot(a_, b_))
+
+
+def _roots(A, B, C):
+    """The two angles of A cos + B sin = C, whether real, and the excess
+    (``ur._roots``)."""
+    radius2 = A**2 + B**2
+    excess = radius2 - C**2
+    phi = math.atan2(B, A)
+    half = math.atan2(math.sqrt(max(excess, 0.0)), C)
+    return [phi - half, phi + half], excess >= -IK_CLIP_TOL * radius2, excess
+
+
+def _add(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def _sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def _ur_constants(arm):
+    w, p, c = arm.w, arm.p, arm.c
+    u = w[1]
+    x = np.cross(u, w[0])
+    x = x / np.linalg.norm(x)
+
+    def across(v):
+        return v - u * (v @ u)
+
+    r2, r3 = across(p[2] - p[1]), across(p[3] - p[2])
+    s3 = float(np.sign(w[2] @ u))
+    return dict(
+        w=[_vector(v) for v in w],
+        p=[_vector(v) for v in p],
+        c=_vector(c),
+        Hinv=np.linalg.inv(arm.home).tolist(),
+        h=float(u @ (c - p[0])),
+        w1u=float(w[0] @ u),
+        uw1=_vector(np.cross(u, w[0])),
+        w1u_cross=_vector(np.cross(w[0], u)),
+        A5=float(u @ w[5] - (w[4] @ w[5]) * (u @ w[4])),
+        B5=float(u @ np.cross(w[4], w[5])),
+        c56u5=float((w[4] @ w[5]) * (u @ w[4])),
+        w6n54=float(w[5] @ np.cross(w[4], w[3])),
+        w56n54=float(np.cross(w[4], w[5]) @ np.cross(w[4], w[3])),
+        x=_vector(x),
+        r2=_vector(r2),
+        r3=_vector(r3),
+        A3=float(r2 @ r3),
+        B3=float(r2 @ np.cross(s3 * u, r3)),
+        r2r3=(float(r2 @ r2), float(r3 @ r3)),
+        s3=s3,
+        s4=float(np.sign(w[3] @ u)),
+        p43=_vector(p[3] - p[4]),
+        scale=float(arm.scale),
+    )
+
+
+def solve_ur(arm, T):
+    """:meth:`URArm._solve` of one checked pose T (4, 4): Q (8, 6) as lists, flags
+    (8, 3) as tuples of bool, the reason code."""
+    k = _constants(arm, _ur_constants)
+    w, p, scale = k["w"], k["p"], k["scale"]
+    u, w1, w5, w6 = w[1], w[0], w[4], w[5]
+    rows = T.tolist()
+    Hinv = k["Hinv"]
+    G = [
+        [sum(rows[i][m] * Hinv[m][j] for m in range(4)) for j in range(4)]
+        for i in range(3)
+    ]
+    RG = [G[i][:3] for i in range(3)]
+    tG = (G[0][3], G[1][3], G[2][3])
+    RGt = [[RG[j][i] for j in range(3)] for i in range(3)]
+    # joint 1
+    d = _sub(_add(_apply(RG, k["c"]), tG), p[0])
+    along = _dot(w1, d)
+    A = _dot(u, d) - along * k["w1u"]
+    B = _dot(k["uw1"], d)
+    C = k["h"] - along * k["w1u"]
+    radius1 = A**2 + B**2
+    excess1 = radius1 - C**2
+    phi = math.atan2(B, A)
+    half = math.atan2(math.sqrt(max(excess1, 0.0)), C)
+    shoulder_ok = excess1 >= -IK_CLIP_TOL * radius1
+    thetas = [phi - half, phi + half]
+    if radius1 < (IK_CLIP_TOL * scale) ** 2:
+        thetas = [0.0, 0.0]
+    arms = []
+    for theta in thetas:
+        ct, st = math.cos(theta), math.sin(theta)
+        x1 = _add(p[0], _turn(w1, d, ct, st))
+        arms.append((_dot(_sub(x1, p[0]), k["w1u_cross"]), theta, ct, st))
+    if arms[1][0] < arms[0][0]:
+        arms.reverse()  # l first, then r
+    g6 = _apply(RG, w6)
+    out, flags, wrist_any = [None] * 8, [None] * 8, False
+    shoulder_flag = abs(excess1) < IK_SINGULAR_TOL * radius1
+    for arm_index, (_, theta, ct, st) in enumerate(arms):
+        sigma = -1.0 if arm_index == 0 else 1.0
+        q1 = _wrap(-theta)
+        # joint 5
+        C5 = _dot(_turn(w1, g6, ct, st), u) - k["c56u5"]
+        q5s, wrist_ok, _ = _roots(k["A5"], k["B5"], C5)
+        wrist_any = wrist_any or wrist_ok
+        flip = [math.cos(q) * k["w6n54"] + math.sin(q) * k["w56n54"] for q in q5s]
+        if flip[1] < flip[0]:
+            q5s.reverse()  # n first, then f
+        R1u = _fixed(w1, u, ct, -st)
+        a = _apply(RGt, R1u)
+        aw6 = _dot(a, w6)
+        a_perp = (a[0] - w6[0] * aw6, a[1] - w6[1] * aw6, a[2] - w6[2] * aw6)
+        perp2 = a_perp[0] ** 2 + a_perp[1] ** 2 + a_perp[2] ** 2
+        on_axis = perp2 < IK_CLIP_TOL**2
+        wrist_flag = on_axis or perp2 < IK_SINGULAR_TOL
+        for wrist_index, q5 in enumerate(q5s):
+            c5, s5 = math.cos(q5), math.sin(q5)
+            b = _fixed(w5, u, c5, -s5)
+            q6 = 0.0 if on_axis else _between(w6, a, b)
+            c6, s6 = math.cos(q6), math.sin(q6)
+            # joints 2-4
+            y = _add(p[4], _fixed(w5, k["p43"], c5, -s5))
+            z = _add(p[5], _turn(w6, _sub(y, p[5]), c6, -s6))
+            g = _add(_apply(RG, z), tG)
+            P = _add(p[0], _turn(w1, _sub(g, p[0]), ct, st))
+            rx = _turn(w6, _fixed(w5, k["x"], c5, -s5), c6, -s6)
+            rx = _turn(w1, _apply(RG, rx), ct, st)
+            phi4 = _between(u, k["x"], rx)
+            v = _sub(P, p[1])
+            vu = _dot(v, u)
+            ys = (v[0] - u[0] * vu, v[1] - u[1] * vu, v[2] - u[2] * vu)
+            delta2 = ys[0] ** 2 + ys[1] ** 2 + ys[2] ** 2
+            r22, r33 = k["r2r3"]
+            C3 = (delta2 - r22 - r33) / 2
+            q3s, elbow_ok, excess3 = _roots(k["A3"], k["B3"], C3)
+            elbows = []
+            for q3 in q3s:
+                xs = _add(k["r2"], _fixed(w[2], k["r3"], math.cos(q3), math.sin(q3)))
+                q2 = _between(u, xs, ys)
+                above = math.cos(q2) * _dot(_cross(ys, k["r2"]), u) + math.sin(
+                    q2
+                ) * _dot(ys, k["r2"])
+                elbows.append((-sigma * above, q2, q3))
+            if elbows[1][0] < elbows[0][0]:
+                elbows.reverse()  # u first, then d
+            reached = shoulder_ok and wrist_ok and elbow_ok
+            elbow_flag = abs(excess3) < IK_SINGULAR_TOL * (k["A3"] ** 2 + k["B3"] ** 2)
+            for elbow_index, (_, q2, q3) in enumerate(elbows):
+                q4 = k["s4"] * (phi4 - q2 - k["s3"] * q3)
+                row = [q1, _wrap(q2), _wrap(q3), _wrap(q4), _wrap(q5), _wrap(q6)]
+                index = 4 * arm_index + 2 * elbow_index + wrist_index
+                out[index] = row if reached else _NAN_ROW
+                flags[index] = (shoulder_flag, elbow_flag, wrist_flag)
+    if not shoulder_ok:
+        code = 1
+    elif all(row is _NAN_ROW for row in out):
+        code = 2 if wrist_any else 3
+    else:
+        code = 0
+    return out, flags, code
+
+
 # ---- the answer's numbers: limits and residuals of one solution ----------------------
 
 

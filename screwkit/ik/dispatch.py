@@ -220,7 +220,7 @@ STRUCTURES = {
 
 
 #: The engines with a scalar path for one pose (:mod:`._one_pose`): {engine: solver}.
-_ONE_POSE = {SphericalWristArm: _one_pose.solve_wrist}
+_ONE_POSE = {SphericalWristArm: _one_pose.solve_wrist, URArm: _one_pose.solve_ur}
 
 
 class _GeneralArm:
