@@ -65,6 +65,23 @@ def _rows(T):
     return [row[:3] for row in rows[:3]], [row[3] for row in rows[:3]]
 
 
+def _times_inverse_home(R, t, Hinv):
+    """G = T M^-1 of a pose (R, t) and the inverse home pose's columns: its rotation
+    (3 rows) and position."""
+    (h00, h01, h02, h03), (h10, h11, h12, h13), (h20, h21, h22, h23) = Hinv[:3]
+    RG, tG = [], []
+    for (r0, r1, r2), ti in zip(R, t):
+        RG.append(
+            (
+                r0 * h00 + r1 * h10 + r2 * h20,
+                r0 * h01 + r1 * h11 + r2 * h21,
+                r0 * h02 + r1 * h12 + r2 * h22,
+            )
+        )
+        tG.append(r0 * h03 + r1 * h13 + r2 * h23 + ti)
+    return RG, tG
+
+
 def _apply(R, x):
     return (_dot(R[0], x), _dot(R[1], x), _dot(R[2], x))
 
@@ -253,9 +270,13 @@ def _wrist(k, t, b):
                 a * (k["c46"] - c45 * c56) + gamma * k["n45w6"],
             )
             q4, c4, s4 = _polar(bb * tn + gamma * tm, bb * (t5 - c45 * t4) + gamma * tn)
-        x, y, z, u, v = (
-            fb[m] * c4 + kb[m] * s4 + w4b * w4f[m] * (1 - c4) for m in range(5)
-        )  # b . R4 f for f = x6, w5 x x6, w6 x x6, w5 x (w6 x x6), w5
+        # b . R4 f for f = x6, w5 x x6, w6 x x6, w5 x (w6 x x6), w5
+        c4_ = 1 - c4
+        x = fb[0] * c4 + kb[0] * s4 + w4b * w4f[0] * c4_
+        y = fb[1] * c4 + kb[1] * s4 + w4b * w4f[1] * c4_
+        z = fb[2] * c4 + kb[2] * s4 + w4b * w4f[2] * c4_
+        u = fb[3] * c4 + kb[3] * s4 + w4b * w4f[3] * c4_
+        v = fb[4] * c4 + kb[4] * s4 + w4b * w4f[4] * c4_
         along_x6 = x * c5 + y * s5 + v * w5x6 * (1 - c5)
         along_w6x6 = z * c5 + u * s5 + v * w5w6x6 * (1 - c5)
         out.append((q4, q5, math.atan2(along_w6x6, along_x6)))
@@ -269,8 +290,12 @@ def _fixed(w, v, c, s):
     """One vector v turned about w (:meth:`._closed_form.Turn.fixed`):
     (v - w (v . w)) c + (w x v) s + w (v . w)."""
     along = _dot(v, w)
-    k = _cross(w, v)
-    return tuple((v[i] - w[i] * along) * c + k[i] * s + w[i] * along for i in range(3))
+    k0, k1, k2 = _cross(w, v)
+    return (
+        (v[0] - w[0] * along) * c + k0 * s + w[0] * along,
+        (v[1] - w[1] * along) * c + k1 * s + w[1] * along,
+        (v[2] - w[2] * along) * c + k2 * s + w[2] * along,
+    )
 
 
 def _between(w, a, b):
@@ -344,15 +369,9 @@ def solve_ur(arm, T):
     k = _constants(arm, _ur_constants)
     w, p, scale = k["w"], k["p"], k["scale"]
     u, w1, w5, w6 = w[1], w[0], w[4], w[5]
-    rows = T.tolist()
-    Hinv = k["Hinv"]
-    G = [
-        [sum(rows[i][m] * Hinv[m][j] for m in range(4)) for j in range(4)]
-        for i in range(3)
-    ]
-    RG = [G[i][:3] for i in range(3)]
-    tG = (G[0][3], G[1][3], G[2][3])
-    RGt = [[RG[j][i] for j in range(3)] for i in range(3)]
+    R, t = _rows(T)
+    RG, tG = _times_inverse_home(R, t, k["Hinv"])
+    RGt = list(zip(*RG))
     # joint 1
     d = _sub(_add(_apply(RG, k["c"]), tG), p[0])
     along = _dot(w1, d)
@@ -449,14 +468,19 @@ def into_limits(q, limits, slack):
     limits (the candidate nearest to q of q + 2 pi k, k = -3 ... 3; the first of a
     tie), and whether every angle could be moved there: the arithmetic of
     ``dispatch._into_limits`` on floats (revolute joints)."""
+    for x, (low, high) in zip(q, limits):
+        if not low <= x <= high:
+            break
+    else:
+        return q, True  # all within their limits already
     moved, ok = list(q), True
     for j, (x, (low, high)) in enumerate(zip(q, limits)):
         if low <= x <= high:
             continue
-        best = math.inf
-        for turn in range(-3, 4):
-            candidate = x + 2 * math.pi * turn
-            if low - slack <= candidate <= high + slack:
+        best, low, high = math.inf, low - slack, high + slack
+        for step in _TURNS:
+            candidate = x + step
+            if low <= candidate <= high:
                 distance = abs(candidate - x)
                 if distance < best:
                     best, moved[j] = distance, candidate
@@ -465,16 +489,19 @@ def into_limits(q, limits, slack):
     return moved, ok
 
 
+#: The whole turns tried, 2 pi k for k = -3 ... 3, as ``dispatch._into_limits``.
+_TURNS = tuple(2 * math.pi * turn for turn in range(-3, 4))
+
+
 def residual(entries, target, scale):
     """The pose residual (:func:`._closed_form.pose_residual`) of one solution: the
     largest entry of the rotation's difference and of the position's divided by
     ``scale``, from the 12 entries of the chain's pose at q and of the target's top
     rows."""
-    rotation = position = 0.0
-    for k in range(12):
-        difference = abs(entries[k] - target[k])
-        if k % 4 == 3:
-            position = max(position, difference)
-        else:
-            rotation = max(rotation, difference)
-    return max(rotation, position / scale)
+    a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11 = entries
+    b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10, b11 = target
+    rotation = max(
+        abs(a0 - b0), abs(a1 - b1), abs(a2 - b2), abs(a4 - b4), abs(a5 - b5),
+        abs(a6 - b6), abs(a8 - b8), abs(a9 - b9), abs(a10 - b10),
+    )  # fmt: skip
+    return max(rotation, max(abs(a3 - b3), abs(a7 - b7), abs(a11 - b11)) / scale)

@@ -642,15 +642,15 @@ def _one_answer(arm, chain, T, found, within_limits, near):
         moved, ok = _one_pose.into_limits(q, limits, IK_JOINT_LIMIT_SLACK)
         if within_limits and not ok:
             continue
-        solutions.append(
-            IKSolution(
-                q=np.array(moved if within_limits else q, float),
-                config=config,
-                within_limits=ok,
-                singular=tuple(n for n, f in zip(names, flag) if f),
-                residual=_one_pose.residual(pose(q), target, arm.scale),
-            )
+        solution = object.__new__(IKSolution)  # frozen: its fields set at once
+        solution.__dict__.update(
+            q=np.array(moved if within_limits else q, float),
+            config=config,
+            within_limits=ok,
+            singular=tuple(n for n, f in zip(names, flag) if f) if any(flag) else (),
+            residual=_one_pose.residual(pose(q), target, arm.scale),
         )
+        solutions.append(solution)
     result = _nearest_first(IKSolutions(solutions, structure=_name(arm)), near)
     result.reason = _singular_reason(result)
     if not result:
