@@ -1,8 +1,8 @@
-"""One configuration at a time, as a student calls in a loop or a slider, beside Pinocchio and EAIK.
+"""One configuration per call, as in a student's loop or slider, beside Pinocchio, EAIK.
 
-Per call: the end-effector pose (FK), the geometric Jacobian (rows [v; omega] of the tool
-point, base axes), its time derivative dJ/dt at joint rates dq, and every closed-form IK
-solution of one pose. Both sides do the same work and return an array: Pinocchio
+Per call: the end-effector pose (FK), the geometric Jacobian (rows [v; omega] of the
+tool point, base axes), its time derivative dJ/dt at joint rates dq, and every
+closed-form IK solution of one pose. Both sides do the same work and return an array: Pinocchio
 (Carpentier et al. 2019, C++ behind Python bindings) runs forwardKinematics and
 updateFramePlacement to the tool (its 4 x 4 matrix taken), computeFrameJacobian in
 LOCAL_WORLD_ALIGNED, and computeJointJacobiansTimeVariation with
@@ -54,7 +54,7 @@ def first(build, call):
     return time.perf_counter() - start, built
 
 
-# ---- Pinocchio: a model from the chain's screws ---------------------------------------
+# ---- Pinocchio: a model from the chain's screws -------------------------------------
 
 
 def _frame(z, point):
@@ -120,7 +120,7 @@ def wrapped(a):
     return np.angle(np.exp(1j * a))
 
 
-# ---- the table -------------------------------------------------------------------------
+# ---- the table -----------------------------------------------------------------------
 
 
 def us(seconds):

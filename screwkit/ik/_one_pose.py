@@ -286,16 +286,19 @@ def _wrist(k, t, b):
 # ---- UR-type: joints 2, 3, 4 parallel, axes 5 and 6 meeting (URArm) ------------------
 
 
-def _fixed(w, v, c, s):
-    """One vector v turned about w (:meth:`._closed_form.Turn.fixed`):
-    (v - w (v . w)) c + (w x v) s + w (v . w)."""
+def _fixed_parts(w, v):
+    """The parts of a fixed vector v for turning it about w (:meth:`._closed_form.Turn.
+    fixed`): its part across w, w x v and its part along w."""
     along = _dot(v, w)
-    k0, k1, k2 = _cross(w, v)
-    return (
-        (v[0] - w[0] * along) * c + k0 * s + w[0] * along,
-        (v[1] - w[1] * along) * c + k1 * s + w[1] * along,
-        (v[2] - w[2] * along) * c + k2 * s + w[2] * along,
-    )
+    v_along = (w[0] * along, w[1] * along, w[2] * along)
+    return (_sub(v, v_along), _cross(w, v), v_along)
+
+
+def _fixed(parts, c, s):
+    """The fixed vector of ``parts`` turned by the angle of cosine c and sine s:
+    (v - w (v . w)) c + (w x v) s + w (v . w)."""
+    (a0, a1, a2), (k0, k1, k2), (b0, b1, b2) = parts
+    return (a0 * c + k0 * s + b0, a1 * c + k1 * s + b1, a2 * c + k2 * s + b2)
 
 
 def _between(w, a, b):
@@ -359,6 +362,13 @@ def _ur_constants(arm):
         s3=s3,
         s4=float(np.sign(w[3] @ u)),
         p43=_vector(p[3] - p[4]),
+        **{
+            "u about w1": _fixed_parts(_vector(w[0]), _vector(u)),
+            "u about w5": _fixed_parts(_vector(w[4]), _vector(u)),
+            "p43 about w5": _fixed_parts(_vector(w[4]), _vector(p[3] - p[4])),
+            "x about w5": _fixed_parts(_vector(w[4]), _vector(x)),
+            "r3 about w3": _fixed_parts(_vector(w[2]), _vector(r3)),
+        },
         scale=float(arm.scale),
     )
 
@@ -368,7 +378,7 @@ def solve_ur(arm, T):
     (8, 3) as tuples of bool, the reason code."""
     k = _constants(arm, _ur_constants)
     w, p, scale = k["w"], k["p"], k["scale"]
-    u, w1, w5, w6 = w[1], w[0], w[4], w[5]
+    u, w1, w6 = w[1], w[0], w[5]
     R, t = _rows(T)
     RG, tG = _times_inverse_home(R, t, k["Hinv"])
     RGt = list(zip(*RG))
@@ -406,7 +416,7 @@ def solve_ur(arm, T):
         flip = [math.cos(q) * k["w6n54"] + math.sin(q) * k["w56n54"] for q in q5s]
         if flip[1] < flip[0]:
             q5s.reverse()  # n first, then f
-        R1u = _fixed(w1, u, ct, -st)
+        R1u = _fixed(k["u about w1"], ct, -st)
         a = _apply(RGt, R1u)
         aw6 = _dot(a, w6)
         a_perp = (a[0] - w6[0] * aw6, a[1] - w6[1] * aw6, a[2] - w6[2] * aw6)
@@ -415,15 +425,15 @@ def solve_ur(arm, T):
         wrist_flag = on_axis or perp2 < IK_SINGULAR_TOL
         for wrist_index, q5 in enumerate(q5s):
             c5, s5 = math.cos(q5), math.sin(q5)
-            b = _fixed(w5, u, c5, -s5)
+            b = _fixed(k["u about w5"], c5, -s5)
             q6 = 0.0 if on_axis else _between(w6, a, b)
             c6, s6 = math.cos(q6), math.sin(q6)
             # joints 2-4
-            y = _add(p[4], _fixed(w5, k["p43"], c5, -s5))
+            y = _add(p[4], _fixed(k["p43 about w5"], c5, -s5))
             z = _add(p[5], _turn(w6, _sub(y, p[5]), c6, -s6))
             g = _add(_apply(RG, z), tG)
             P = _add(p[0], _turn(w1, _sub(g, p[0]), ct, st))
-            rx = _turn(w6, _fixed(w5, k["x"], c5, -s5), c6, -s6)
+            rx = _turn(w6, _fixed(k["x about w5"], c5, -s5), c6, -s6)
             rx = _turn(w1, _apply(RG, rx), ct, st)
             phi4 = _between(u, k["x"], rx)
             v = _sub(P, p[1])
@@ -434,12 +444,11 @@ def solve_ur(arm, T):
             C3 = (delta2 - r22 - r33) / 2
             q3s, elbow_ok, excess3 = _roots(k["A3"], k["B3"], C3)
             elbows = []
+            ys_r2_u, ys_r2 = _dot(_cross(ys, k["r2"]), u), _dot(ys, k["r2"])
             for q3 in q3s:
-                xs = _add(k["r2"], _fixed(w[2], k["r3"], math.cos(q3), math.sin(q3)))
+                xs = _add(k["r2"], _fixed(k["r3 about w3"], math.cos(q3), math.sin(q3)))
                 q2 = _between(u, xs, ys)
-                above = math.cos(q2) * _dot(_cross(ys, k["r2"]), u) + math.sin(
-                    q2
-                ) * _dot(ys, k["r2"])
+                above = math.cos(q2) * ys_r2_u + math.sin(q2) * ys_r2
                 elbows.append((-sigma * above, q2, q3))
             if elbows[1][0] < elbows[0][0]:
                 elbows.reverse()  # u first, then d

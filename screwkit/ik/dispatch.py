@@ -750,6 +750,8 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
     """
     robot = _default_puma() if robot is None else robot
     arm = _arm(robot, "robot")
+    if type(arm) in _ONE_POSE and one_pose(T) is not None:  # the scalar path
+        return analytic_ik(robot, T, within_limits, near)
     return _analytic_ik(
         arm, robot, check_poses(T, "T", single_only=True), within_limits, near
     )
