@@ -1,14 +1,14 @@
 """One configuration per call, as in a student's loop or slider, beside Pinocchio, EAIK.
 
 Per call: the end-effector pose (FK), the geometric Jacobian (rows [v; omega] of the
-tool point, base axes), its time derivative dJ/dt at joint rates dq, and every
-closed-form IK solution of one pose. Both sides do the same work and return an array: Pinocchio
+tool point, base axes), its time derivative dJ/dt at joint rates dq, and every closed-
+form IK solution of one pose. Both sides do the same work and return an array: Pinocchio
 (Carpentier et al. 2019, C++ behind Python bindings) runs forwardKinematics and
 updateFramePlacement to the tool (its 4 x 4 matrix taken), computeFrameJacobian in
 LOCAL_WORLD_ALIGNED, and computeJointJacobiansTimeVariation with
 getFrameJacobianTimeVariation; EAIK (Ostermeier et al. 2024) solves the pose by
-subproblems. Its model is built from the same screws, and the script asserts that the
-results agree before it times them. "first" is the first call on a chain built anew
+subproblems. Each reference is built from the same screws, and the script asserts that
+the results agree before it times them. "first" is the first call on a chain built anew
 (screwkit: the chain and its generated code; Pinocchio: the model and its data; EAIK:
 the robot and its decomposition), "steady" the best of several runs of many calls.
 Usage (from the top level): .venv/bin/python benchmarks/bench_single_call.py
