@@ -604,6 +604,38 @@ def check_poses(T, name="T", single_only=False):
     return check_transform(T, name)
 
 
+def one_pose(T):
+    """``T`` if it is plainly one rigid transform, else None: the scalar path's check.
+
+    A float64 array (4, 4), finite, with last row [0, 0, 0, 1] (within
+    :data:`~screwkit.tolerances.ZERO_TOL`), R^T R within
+    :data:`~screwkit.tolerances.ROTATION_TOL` of the identity and det R > 0: the tests
+    of :func:`check_poses`, on Python floats. None for anything else; the caller's
+    full check then runs and says what is wrong.
+    """
+    if type(T) is not np.ndarray or T.shape != (4, 4) or T.dtype.char != "d":
+        return None
+    (a, b, c, x), (d, e, f, y), (g, h, i, z), last = T.tolist()
+    total = a + b + c + x + d + e + f + y + g + h + i + z + sum(last)
+    if total - total != 0.0:  # a NaN or an infinity
+        return None
+    if max(abs(last[0]), abs(last[1]), abs(last[2]), abs(last[3] - 1.0)) > ZERO_TOL:
+        return None
+    gram = (
+        a * a + d * d + g * g - 1.0,
+        b * b + e * e + h * h - 1.0,
+        c * c + f * f + i * i - 1.0,
+        a * b + d * e + g * h,
+        a * c + d * f + g * i,
+        b * c + e * f + h * i,
+    )
+    if max(abs(v) for v in gram) > ROTATION_TOL:
+        return None
+    if a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) <= 0:
+        return None
+    return T
+
+
 #: Where R_ij sits in a flattened 4 x 4 pose, for i, j = 0, 1, 2.
 _ROTATION = [0, 1, 2, 4, 5, 6, 8, 9, 10]
 

@@ -284,8 +284,13 @@ class Program:
     def _text(entry):
         return repr(entry) if isinstance(entry, float) else entry.text()
 
-    def source(self, outputs):
+    def source(self, outputs, offsets=None):
         """Python source of ``kinematics(t, c, s)`` returning a tuple of entries.
+
+        With ``offsets`` (n floats), the scalar form ``kinematics(q)`` instead: q a
+        list of n floats (one configuration), t_k = q_k + offset_k and its cosine and
+        sine computed inside (``_cos``, ``_sin``: :func:`math.cos`, :func:`math.sin`),
+        the same entries as the first form at t = q + offsets.
 
         outputs : 'pose' (the 12 entries of T's top rows), 'axes' (per joint the twist
             [omega; v] and a point, 9 entries, then the pose), 'frames' (12 entries per
@@ -323,6 +328,8 @@ class Program:
         body = "\n".join(self._lines)
         returned = ", ".join(self._text(e) for e in result)
         used = sorted(set(re.findall(r"\b([tcs])(\d+)\b", body + " " + returned)))
+        if offsets is not None:
+            return self._scalar_source(used, offsets, body, returned)
         loads = [f"    {v}{k} = {v}[{int(k) - 1}]" for v, k in used]
         return (
             "def kinematics(t, c, s):\n"
@@ -330,11 +337,31 @@ class Program:
             + f"\n    return ({returned},)\n"
         )
 
-    def compile(self, outputs):
-        """The generated function for ``outputs`` (see :meth:`source`)."""
-        namespace = {}
+    @staticmethod
+    def _scalar_source(used, offsets, body, returned):
+        """The scalar form's source: each joint's t, c and s computed from q, as
+        floats (the joints the entries use)."""
+        joints = sorted({int(k) for _, k in used})
+        loads = []
+        for k in joints:
+            loads.append(f"    t{k} = q[{k - 1}] + {float(offsets[k - 1])!r}")
+            loads += [f"    c{k} = _cos(t{k})", f"    s{k} = _sin(t{k})"]
+        return (
+            "def kinematics(q):\n"
+            + "\n".join(loads + body.split("\n") if body else loads)
+            + f"\n    return ({returned},)\n"
+        )
+
+    def compile(self, outputs, offsets=None):
+        """The generated function for ``outputs`` (see :meth:`source`; with
+        ``offsets``, its scalar form for one configuration)."""
+        namespace = {"_cos": math.cos, "_sin": math.sin}
         exec(
-            compile(self.source(outputs), f"<screwkit kinematics: {outputs}>", "exec"),
+            compile(
+                self.source(outputs, offsets),
+                f"<screwkit kinematics: {outputs}>",
+                "exec",
+            ),
             namespace,
         )
         return namespace["kinematics"]
@@ -378,3 +405,51 @@ def evaluate_batch(function, angles, out, rows):
         for row, value in zip(rows, function(part, *cos_sin(part))):
             out[row, start:stop] = value
     return out
+
+
+#: The entry types of a list the scalar path takes as it is (bool, str and the rest go
+#: through the full check).
+_PLAIN = frozenset((float, int, np.float64))
+
+
+def one(q, n):
+    """One plain configuration as a list of n floats, or None.
+
+    The scalar path's check, cheaper than the work it guards: ``q`` a float64 array
+    (n,), or a list or tuple of n Python floats or ints, every entry finite. Anything
+    else (a batch, another type, a wrong length, a NaN) gives None, and the caller's
+    full check (``Chain.check_q``) runs and says what is wrong.
+    """
+    kind = type(q)
+    if kind is np.ndarray:
+        if q.shape != (n,) or q.dtype.char != "d":
+            return None
+        values = q.tolist()
+    elif kind is list or kind is tuple:
+        if len(q) != n:
+            return None
+        for x in q:
+            if type(x) not in _PLAIN:
+                return None
+        try:
+            values = [float(x) for x in q]
+        except OverflowError:
+            return None
+    else:
+        return None
+    total = sum(values)
+    if total - total != 0.0:  # a NaN or an infinity (or a sum past 1.8e308)
+        return None
+    return values
+
+
+def scalar(chain, outputs):
+    """The generated function of ``outputs`` in its scalar form, ``f(values)`` for one
+    configuration (a list of n floats) -> tuple of entries; compiled on first use."""
+    try:
+        return chain._functions[outputs, "one"]
+    except KeyError:
+        program, offsets = chain._program
+        function = program.compile(outputs, offsets.tolist())
+        chain._functions[outputs, "one"] = function
+        return function

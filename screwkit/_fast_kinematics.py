@@ -95,6 +95,10 @@ def source(chain, outputs="pose"):
     return chain._program[0].source(outputs)
 
 
+#: The last row of a pose, appended to the 12 entries the generated code computes.
+_LAST_ROW = (0.0, 0.0, 0.0, 1.0)
+
+
 def _run(chain, outputs, q, rows=None, out=None):
     """Generated code ``outputs`` at q: a list of entries for (n,), else
     ``out[rows[k]]`` filled."""
@@ -118,6 +122,10 @@ def fk(chain, q):
     ndarray, shape (4, 4) or (N, 4, 4)
         The pose(s) in the base's world frame (m).
     """
+    values = _compiled.one(q, chain.n)
+    if values is not None:  # one configuration: the scalar path
+        entries = _compiled.scalar(chain, "pose")(values) + _LAST_ROW
+        return np.array(entries, float).reshape(4, 4)
     q = chain.check_q(q)
     if q.ndim == 1:
         T = np.eye(4)

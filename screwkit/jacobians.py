@@ -132,6 +132,10 @@ def joint_axes(chain, q):
 def _generated_jacobian(chain, q, outputs):
     """A Jacobian generated as straight-line code ('space' or 'geometric'): (6, n)
     or (N, 6, n)."""
+    values = _compiled.one(q, chain.n)
+    if values is not None:  # one configuration: the scalar path
+        entries = _compiled.scalar(chain, outputs)(values)
+        return np.array(entries, float).reshape(6, chain.n)
     q = chain.check_q(q)
     n, rows = chain.n, 6 * chain.n
     if q.ndim == 1:
@@ -175,6 +179,28 @@ def geometric_jacobian(chain, q):
     return chain._generated_jacobian(q, "geometric")
 
 
+def _body_columns(chain, values):
+    """The body Jacobian (6, n) at one configuration (a list of n floats), in Python
+    floats: each joint's twist and the pose from the generated code, then
+    (R^T omega; R^T (v + omega x p)) column by column."""
+    entries = _compiled.scalar(chain, "axes")(values)
+    r00, r01, r02, p0, r10, r11, r12, p1, r20, r21, r22, p2 = entries[-12:]
+    n = chain.n
+    J = [0.0] * (6 * n)
+    for i in range(n):
+        w0, w1, w2, v0, v1, v2 = entries[9 * i : 9 * i + 6]
+        u0 = v0 + (w1 * p2 - w2 * p1)
+        u1 = v1 + (w2 * p0 - w0 * p2)
+        u2 = v2 + (w0 * p1 - w1 * p0)
+        J[i] = r00 * w0 + r10 * w1 + r20 * w2
+        J[n + i] = r01 * w0 + r11 * w1 + r21 * w2
+        J[2 * n + i] = r02 * w0 + r12 * w1 + r22 * w2
+        J[3 * n + i] = r00 * u0 + r10 * u1 + r20 * u2
+        J[4 * n + i] = r01 * u0 + r11 * u1 + r21 * u2
+        J[5 * n + i] = r02 * u0 + r12 * u1 + r22 * u2
+    return np.array(J, float).reshape(6, n)
+
+
 @fill(sections=_JACOBIAN_SECTIONS)
 def body_jacobian(chain, q):
     """The body Jacobian, columns [omega; v].
@@ -186,6 +212,9 @@ def body_jacobian(chain, q):
     """
 
     check_chain(chain)
+    values = _compiled.one(q, chain.n)
+    if values is not None:  # one configuration: the scalar path
+        return _body_columns(chain, values)
 
     def columns(q_part):
         omega, v, _, T = chain._twists_and_pose(q_part)

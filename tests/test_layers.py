@@ -90,6 +90,7 @@ ORDER = [
         "algorithms",
         [
             "ik._closed_form",
+            "ik._one_pose",
             "ik.spherical_wrist",
             "ik.ur",
             "ik.stanford",

@@ -47,6 +47,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from .. import _compiled
 from .._checks import (
     as_float_array,
     check_chain,
@@ -54,12 +55,14 @@ from .._checks import (
     check_integer,
     check_poses,
     describe,
+    one_pose,
 )
 from ..links import Joint
 from ..robots import puma560
 from ..tolerances import IK_JOINT_LIMIT_SLACK
 from ..tolerances import IK_SINGULAR_TOL as SINGULAR_TOL
 from ..transforms import _wrap_angle
+from . import _one_pose
 from ._closed_form import pose_residual
 from .decomposed import DecomposedArm, _motions, classify
 from .general import (
@@ -216,6 +219,10 @@ STRUCTURES = {
 }
 
 
+#: The engines with a scalar path for one pose (:mod:`._one_pose`): {engine: solver}.
+_ONE_POSE = {SphericalWristArm: _one_pose.solve_wrist, URArm: _one_pose.solve_ur}
+
+
 class _GeneralArm:
     """A 6R arm of no decomposable class, solved by :mod:`screwkit.ik.general`."""
 
@@ -368,6 +375,13 @@ def analytic_ik(chain, T, within_limits=False, near=None, fixed=None):
         the class. For a batch, a list of IKSolutions.
     """
     check_chain(chain)
+    if fixed is None and chain.n == 6 and one_pose(T) is not None:
+        arm = _arm(chain)
+        if type(arm) in _ONE_POSE:  # one pose of a named structure: the scalar path
+            within_limits = check_flag(within_limits, "within_limits")
+            near = _check_near(near)
+            found = _ONE_POSE[type(arm)](arm, T)
+            return _one_answer(arm, chain, T, found, within_limits, near)
     _check_batch_size(T, "T", MAX_POSES, "analytic_ik (a list of answers)")
     if fixed is not None or chain.n == 7:
         return _fixed_ik(chain, T, within_limits, near, fixed)
@@ -450,13 +464,7 @@ def _fixed_ik(chain, T, within_limits, near, fixed):
 
 def _analytic_ik(arm, chain, T, within_limits, near):
     """analytic_ik for poses T already checked."""
-    within_limits = check_flag(within_limits, "within_limits")
-    if near is not None:
-        near = as_float_array(near, "near")
-        if near.shape != (6,):
-            raise ValueError(
-                f"near must be a joint vector of 6 entries, got shape {near.shape}"
-            )
+    within_limits, near = check_flag(within_limits, "within_limits"), _check_near(near)
     batch = T if T.ndim == 3 else T[None]
     if isinstance(arm, DecomposedArm):
         answers = _decomposed_answers(arm, chain, batch, within_limits, near)
@@ -483,6 +491,17 @@ def _analytic_ik(arm, chain, T, within_limits, near):
             for k in range(batch.shape[0])
         ]
     return answers if T.ndim == 3 else answers[0]
+
+
+def _check_near(near):
+    """``near`` as a float array (6,), or None."""
+    if near is not None:
+        near = as_float_array(near, "near")
+        if near.shape != (6,):
+            raise ValueError(
+                f"near must be a joint vector of 6 entries, got shape {near.shape}"
+            )
+    return near
 
 
 def _listed(solutions, limits, within_limits, near, structure, reason=None):
@@ -607,6 +626,40 @@ def _answer(arm, T, Q, flags, code, limits, within_limits, near, chain=None):
     return result
 
 
+def _one_answer(arm, chain, T, found, within_limits, near):
+    """:func:`_answer` of one pose the scalar path solved, ``found`` = (rows, flags,
+    code) as lists (:mod:`._one_pose`): the same solutions, labels, flags and reason,
+    the limits and residuals computed on floats."""
+    rows, flags, code = found
+    if code != 0:
+        return IKSolutions([], reason=arm._reason(T, code), structure=_name(arm))
+    limits, target = chain.qlim.tolist(), T[:3].ravel().tolist()
+    pose, names = _compiled.scalar(chain, "pose"), ("shoulder", "elbow", "wrist")
+    solutions = []
+    for q, config, flag in zip(rows, CONFIGURATIONS, flags):
+        if q[0] != q[0]:  # NaN: the branch does not reach
+            continue
+        moved, ok = _one_pose.into_limits(q, limits, IK_JOINT_LIMIT_SLACK)
+        if within_limits and not ok:
+            continue
+        solution = object.__new__(IKSolution)  # frozen: its fields set at once
+        solution.__dict__.update(
+            q=np.array(moved if within_limits else q, float),
+            config=config,
+            within_limits=ok,
+            singular=tuple(n for n, f in zip(names, flag) if f) if any(flag) else (),
+            residual=_one_pose.residual(pose(q), target, arm.scale),
+        )
+        solutions.append(solution)
+    result = _nearest_first(IKSolutions(solutions, structure=_name(arm)), near)
+    result.reason = _singular_reason(result)
+    if not result:
+        Q, flags = np.array(rows, float), np.array(flags)
+        listed = _answer(arm, T, Q, flags, code, chain.qlim, False, None)
+        result.reason = _outside_limits(listed)
+    return result
+
+
 def _singular_reason(solutions):
     """The reason of a named structure's solutions at a singularity (None if none is):
     a wrist or shoulder singularity is a continuum, an elbow one a double solution."""
@@ -697,6 +750,8 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
     """
     robot = _default_puma() if robot is None else robot
     arm = _arm(robot, "robot")
+    if type(arm) in _ONE_POSE and one_pose(T) is not None:  # the scalar path
+        return analytic_ik(robot, T, within_limits, near)
     return _analytic_ik(
         arm, robot, check_poses(T, "T", single_only=True), within_limits, near
     )

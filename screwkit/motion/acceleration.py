@@ -26,6 +26,7 @@ import numpy as np
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
+from .. import _compiled
 from .._checks import (
     as_sympy_scalar,
     check_chain,
@@ -238,9 +239,132 @@ _HESSIAN = {
 }
 
 
+def _one_dot(chain, form, values, rates):
+    """dJ/dt of a form at one configuration, q and dq lists of n floats: the
+    Jacobian's entries from the generated code and the brackets in Python floats,
+    (6, n)."""
+    if form == "body":
+        J = chain.body_jacobian(values).ravel().tolist()
+    else:
+        J = _compiled.scalar(chain, form)(values)
+    return np.array(_SCALAR_DOT[form](J, chain.n, rates), float).reshape(6, chain.n)
+
+
+# The kernels of one configuration: J the Jacobian's 6 n entries row by row (entry
+# (r, i) at r n + i), rates a list of n floats; they return dJ/dt's entries in that
+# order, with the sums and products of :mod:`._second_order` in the same order (the
+# prefix sums of ``_before``, the suffix sums of ``_from``, the cross products of
+# ``transforms._cross_into``), so that one configuration gives the batch's numbers.
+
+
+def _space_dot_one(J, n, rates):
+    """:func:`_second_order.space_dot` of one configuration (columns [w; v])."""
+    out = [0.0] * (6 * n)
+    a0 = a1 = a2 = b0 = b1 = b2 = 0.0  # W_i = (a; b), the sum of J_j dq_j, j < i
+    for i in range(n):
+        if i:
+            k, rate = i - 1, rates[i - 1]
+            a0, a1, a2 = (
+                a0 + J[k] * rate,
+                a1 + J[n + k] * rate,
+                a2 + J[2 * n + k] * rate,
+            )
+            b0 = b0 + J[3 * n + k] * rate
+            b1 = b1 + J[4 * n + k] * rate
+            b2 = b2 + J[5 * n + k] * rate
+        w0, w1, w2 = J[i], J[n + i], J[2 * n + i]
+        v0, v1, v2 = J[3 * n + i], J[4 * n + i], J[5 * n + i]
+        out[i] = a1 * w2 - a2 * w1
+        out[n + i] = a2 * w0 - a0 * w2
+        out[2 * n + i] = a0 * w1 - a1 * w0
+        out[3 * n + i] = (a1 * v2 - a2 * v1) + b1 * w2 - b2 * w1
+        out[4 * n + i] = (a2 * v0 - a0 * v2) + b2 * w0 - b0 * w2
+        out[5 * n + i] = (a0 * v1 - a1 * v0) + b0 * w1 - b1 * w0
+    return out
+
+
+def _suffix_sums(J, n, rates):
+    """The sums over j >= i of the six rows of column j times dq_j, for every i: a
+    list of n lists."""
+    rows = range(6)
+    sums = [None] * n
+    last, rate = n - 1, rates[n - 1]
+    S = [J[r * n + last] * rate for r in rows]
+    sums[last] = S
+    for i in range(n - 2, -1, -1):
+        rate = rates[i]
+        S = [S[k] + J[r * n + i] * rate for k, r in enumerate(rows)]
+        sums[i] = S
+    return sums
+
+
+def _body_dot_one(J, n, rates):
+    """:func:`_second_order.body_dot` of one configuration (columns [w; v]); W_i the
+    sum over j > i, the sum over j >= i less column i's own term."""
+    out = [0.0] * (6 * n)
+    for i, S in enumerate(_suffix_sums(J, n, rates)):
+        w0, w1, w2 = J[i], J[n + i], J[2 * n + i]
+        v0, v1, v2 = J[3 * n + i], J[4 * n + i], J[5 * n + i]
+        rate = rates[i]
+        a0, a1, a2 = S[0] - w0 * rate, S[1] - w1 * rate, S[2] - w2 * rate
+        b0, b1, b2 = S[3] - v0 * rate, S[4] - v1 * rate, S[5] - v2 * rate
+        out[i] = w1 * a2 - w2 * a1
+        out[n + i] = w2 * a0 - w0 * a2
+        out[2 * n + i] = w0 * a1 - w1 * a0
+        out[3 * n + i] = (w1 * b2 - w2 * b1) + v1 * a2 - v2 * a1
+        out[4 * n + i] = (w2 * b0 - w0 * b2) + v2 * a0 - v0 * a2
+        out[5 * n + i] = (w0 * b1 - w1 * b0) + v0 * a1 - v1 * a0
+    return out
+
+
+def _geometric_dot_one(J, n, rates):
+    """:func:`_second_order.geometric_dot` of one configuration (rows [v; omega],
+    columns (u; w)): (W x u + w x S; W x w)."""
+    n2, n3, n4, n5 = 2 * n, 3 * n, 4 * n, 5 * n
+    S0, S1, S2 = [0.0] * n, [0.0] * n, [0.0] * n  # S_i, the sum of u_j dq_j, j >= i
+    k, rate = n - 1, rates[n - 1]
+    s0, s1, s2 = J[k] * rate, J[n + k] * rate, J[n2 + k] * rate
+    S0[k], S1[k], S2[k] = s0, s1, s2
+    for k in range(n - 2, -1, -1):
+        rate = rates[k]
+        s0, s1, s2 = s0 + J[k] * rate, s1 + J[n + k] * rate, s2 + J[n2 + k] * rate
+        S0[k], S1[k], S2[k] = s0, s1, s2
+    out = [0.0] * (6 * n)
+    a0 = a1 = a2 = 0.0  # W_i, the sum of w_j dq_j over j < i
+    for i in range(n):
+        if i:
+            k, rate = i - 1, rates[i - 1]
+            a0, a1, a2 = (
+                a0 + J[n3 + k] * rate,
+                a1 + J[n4 + k] * rate,
+                a2 + J[n5 + k] * rate,
+            )
+        u0, u1, u2 = J[i], J[n + i], J[n2 + i]
+        w0, w1, w2 = J[n3 + i], J[n4 + i], J[n5 + i]
+        s0, s1, s2 = S0[i], S1[i], S2[i]
+        out[i] = (a1 * u2 - a2 * u1) + w1 * s2 - w2 * s1
+        out[n + i] = (a2 * u0 - a0 * u2) + w2 * s0 - w0 * s2
+        out[n2 + i] = (a0 * u1 - a1 * u0) + w0 * s1 - w1 * s0
+        out[n3 + i] = a1 * w2 - a2 * w1
+        out[n4 + i] = a2 * w0 - a0 * w2
+        out[n5 + i] = a0 * w1 - a1 * w0
+    return out
+
+
+_SCALAR_DOT = {
+    "space": _space_dot_one,
+    "body": _body_dot_one,
+    "geometric": _geometric_dot_one,
+}
+
+
 def _jacobian_dot(chain, form, q, dq):
-    """dJ/dt of a form, exact for SymPy input, else in floats."""
+    """dJ/dt of a form, exact for SymPy input, else in floats (one plain
+    configuration by the scalar path)."""
     check_chain(chain)
+    values, rates = _compiled.one(q, chain.n), _compiled.one(dq, chain.n)
+    if values is not None and rates is not None:
+        return _one_dot(chain, form, values, rates)
     if _exact(q, dq):
         Js, T, values = _exact_parts(chain, q)
         dq = _exact_vector(chain, dq, "dq")
