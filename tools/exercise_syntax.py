@@ -137,13 +137,16 @@ def exam_parts(statement):
 
 
 def mark_scheme(solution):
-    """A solution's ``**Mark scheme** (N points)`` and the list after it:
+    """A solution's ``**Mark scheme** (N points)`` and the list after it, one item
+    per part, ``- (a) K points: ...`` (its text may wrap onto indented lines):
     ``(N, {part: points})``. Raises ValueError if it is missing or malformed."""
     match = _SCHEME.search(solution or "")
     if not match:
         raise ValueError("the solution has no line '**Mark scheme** (N points)'")
     points = {}
     for line in solution[match.end() :].lstrip("\n").split("\n"):
+        if points and line[:1] in (" ", "\t") and line.strip():
+            continue  # an item's text wrapped onto the next line
         if not line.startswith("- "):
             break
         item = _SCHEME_ITEM.match(line)
