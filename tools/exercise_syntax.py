@@ -152,7 +152,8 @@ def mark_scheme(solution):
         item = _SCHEME_ITEM.match(line)
         if not item:
             raise ValueError(
-                f"the mark scheme's item {line!r} is not '- (a) K points: what earns them'"
+                f"the mark scheme's item {line!r} is not "
+                "'- (a) K points: what earns them'"
             )
         if item.group(1) in points:
             raise ValueError(f"the mark scheme marks part ({item.group(1)}) twice")

@@ -32,7 +32,9 @@ FRAME_ASSIGNMENT_TARGET = 8
 FRAME_ASSIGNMENT = re.compile(
     r"\bDH\b[^.?]*\b(table|parameters|frames)\b|\bjoint screws\b|\bscrew axes\b", re.I
 )
-_IMAGE = re.compile(r"^:{3,}\{(figure|image)\}|^```\{(figure|image)\}|!\[[^\]]*\]\(", re.M)
+_IMAGE = re.compile(
+    r"^:{3,}\{(figure|image)\}|^```\{(figure|image)\}|!\[[^\]]*\]\(", re.M
+)
 
 
 def toc_chapters():
@@ -170,10 +172,13 @@ def test_the_complete_chapters_meet_the_targets_and_the_others_are_reported():
             untagged = sum(e["tag_error"] is not None for e in exercises_of(chapter))
             warnings.warn(
                 f"problem bank of {chapter}: {'; '.join(unmet)} "
-                f"({untagged} exercises without a well-formed tag)"
+                f"({untagged} exercises without a well-formed tag)",
+                stacklevel=1,
             )
         else:
-            warnings.warn(f"{chapter} meets the targets: add it to BANK_COMPLETE")
+            warnings.warn(
+                f"{chapter} meets the targets: add it to BANK_COMPLETE", stacklevel=1
+            )
 
 
 def test_frame_assignment_exercises_across_the_bank():
@@ -189,7 +194,8 @@ def test_frame_assignment_exercises_across_the_bank():
         met = "met: assert it" if len(found) >= FRAME_ASSIGNMENT_TARGET else "not met"
         warnings.warn(
             f"frame-assignment exercises: {len(found)} of {FRAME_ASSIGNMENT_TARGET} "
-            f"({met}): {found}"
+            f"({met}): {found}",
+            stacklevel=1,
         )
 
 
@@ -252,7 +258,8 @@ Words.
 
 
 def problems_of(text):
-    return [p for e in read_exercises(text, "demo") for p in exercise_problems(e, "demo")]
+    found = read_exercises(text, "demo")
+    return [p for e in found for p in exercise_problems(e, "demo")]
 
 
 def test_the_synthetic_chapter_passes():

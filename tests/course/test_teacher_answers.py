@@ -75,8 +75,11 @@ def test_an_exam_problem_shows_its_points(tool):
         {"number": 2, "title": "B", "chapter": "b", "exercises": [("a", [2])]},
     ]
     found = {"a": [{"number": 1}, {"number": 2}, {"number": 3}], "c": [{"number": 1}]}
-    grouped = tool.by_week(found, plan)
-    assert [(h, [(c, [e["number"] for e in es]) for c, es in g]) for h, g in grouped] == [
+    grouped = [
+        (heading, [(c, [e["number"] for e in es]) for c, es in groups])
+        for heading, groups in tool.by_week(found, plan)
+    ]
+    assert grouped == [
         ("Week 1: A", [("a", [1, 3])]),
         ("Week 2: B", [("a", [2])]),
         ("Not in the course plan", [("c", [1])]),
