@@ -117,10 +117,11 @@ def test_answers_html_typesets_its_formulas_alone(answers, tmp_path):
         page = chromium.new_page()
         requests = []
         page.on("request", lambda r: requests.append(r.url))
-        page.goto(path.as_uri())
+        # generous timeouts: the file grows with the bank, and the tier shares CPUs
+        page.goto(path.as_uri(), timeout=180_000)
         page.wait_for_function(
             "window.MathJax && MathJax.startup && MathJax.startup.promise",
-            timeout=60_000,
+            timeout=180_000,
         )
         page.evaluate("MathJax.startup.promise")
         typeset = page.locator("mjx-container svg").count()
