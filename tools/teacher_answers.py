@@ -140,6 +140,21 @@ def header(exercise):
     return "*" + " · ".join(words) + "*"
 
 
+def figure_code(cells):
+    """The code of an exercise's cells that draw (not its answer box), fenced."""
+    blocks, current = [], None
+    for line in cells:
+        if current is None:
+            current = [] if line.startswith("```{code-cell}") else None
+        elif line.startswith("```"):
+            if not any("answer_box(" in c for c in current):
+                blocks.append("```python\n" + "\n".join(current).strip() + "\n```")
+            current = None
+        elif not line.startswith(":"):  # the cell's options (tags, alt text)
+            current.append(line)
+    return "\n\n".join(blocks)
+
+
 def answers_markdown():
     marked = assessed()
     out = [
@@ -165,6 +180,9 @@ def answers_markdown():
                 flag = " (assessed)" if (chapter, number) in marked else ""
                 out += ["", f"#### Exercise {number}{flag}", "", header(exercise)]
                 out += ["", exercise["statement"]]
+                drawing = figure_code(exercise["cells"])
+                if drawing:
+                    out += ["", "**Figure** (drawn in the chapter by)", "", drawing]
                 if any("answer_box" in line for line in exercise["cells"]):
                     out += ["", "**Key**", "", key_text(chapter, number)]
                 solution = exercise["solution"] or "(none written)"

@@ -327,3 +327,18 @@ def test_the_targets_fail_when_missed():
     # an exam problem that is not at the end does not count
     moved = SYNTHETIC.replace("demo-exercise-3", "demo-exercise-0")
     assert counts(read_exercises(moved, "demo"))["exam at the end"] == 1
+
+
+def test_a_gated_solution_is_read_with_its_cells():
+    gated = SYNTHETIC.replace(
+        ":::{solution} demo-exercise-3\n:class: dropdown\n",
+        ":::{solution-start} demo-exercise-3\n:class: dropdown\n:::\n\n"
+        "```{code-cell} ipython3\nplt.plot([0, 1])\n```\n",
+    ).replace(
+        "  that wraps onto a second line\n:::",
+        "  that wraps onto a second line\n\n:::{solution-end}\n:::",
+    )
+    exam = read_exercises(gated, "demo")[2]
+    assert exam["solution"].startswith("```{code-cell} ipython3\nplt.plot([0, 1])")
+    assert mark_scheme(exam["solution"]) == (5, {"a": 2, "b": 3})
+    assert problems_of(gated) == []

@@ -51,6 +51,11 @@ def test_answers_go_week_by_week_with_their_tags(folder):
     exercise_3 = week_5.split("\n#### Exercise 3\n", 1)[1]
     assert exercise_3.startswith("\n*self-checking · difficulty 2 · practises: ")
     assert "\n#### Exercise 7 (assessed)\n" in week_5
+    # a figure exercise carries its drawing, an answer box's cell is left out
+    exercise_11 = week_5.split("\n#### Exercise 11\n", 1)[1].split("\n#### ", 1)[0]
+    drawing = exercise_11.split("**Figure** (drawn in the chapter by)", 1)[1]
+    assert "sketch([[O, A], [A, B], [B, C]]" in drawing
+    assert "answer_box" not in drawing and ":mystnb:" not in drawing
     # configuration space exercise 10 is assigned in week 2
     week_2 = text.split("\n## Week 2: ", 1)[1].split("\n## Week 3: ", 1)[0]
     assert "(`configuration_space`)\n\n#### Exercise 10\n" in week_2
