@@ -28,9 +28,12 @@ BANK_COMPLETE = {"mobility": 25}
 #: Assert the bank-wide count of frame-assignment exercises (else report it).
 FRAME_ASSIGNMENT_ASSERTED = False
 FRAME_ASSIGNMENT_TARGET = 8
-#: A statement that asks for a DH table or joint screws.
+#: A sentence that asks for a DH table (or frames) or joint screws: a verb, then the
+#: thing asked for.
 FRAME_ASSIGNMENT = re.compile(
-    r"\bDH\b[^.?]*\b(table|parameters|frames)\b|\bjoint screws\b|\bscrew axes\b", re.I
+    r"\b(assign|write|give|find|list|fill|draw|read)\b[^.?]*"
+    r"(\bDH\b[^.?]*\b(table|parameters|frames)\b|\bjoint screws\b|\bscrew axes\b)",
+    re.I,
 )
 _IMAGE = re.compile(
     r"^:{3,}\{(figure|image)\}|^```\{(figure|image)\}|!\[[^\]]*\]\(", re.M
@@ -270,6 +273,11 @@ def test_the_synthetic_chapter_passes():
     assert found[2]["kinds"] == ["exam", "by hand"]
     assert found[0]["statement"].startswith("Assign the\nDH frames")
     assert frame_assignment(found[0]) and not frame_assignment(found[2])
+    # a statement that only mentions joint screws does not ask for them
+    mentions = {**found[0], "statement": "A leg has seven joint screws. Find a motion."}
+    assert not frame_assignment(mentions)
+    asks = {**found[0], "statement": "Write the joint screws of the arm drawn."}
+    assert frame_assignment(asks)
     assert counts(found)["exam at the end"] == 1
 
 
