@@ -159,7 +159,8 @@ def frame_assignment(exercise):
 @pytest.mark.parametrize("chapter", toc_chapters())
 def test_every_exercise_is_tagged_and_true_to_its_tag(chapter):
     found = exercises_of(chapter)
-    assert [p for e in found for p in exercise_problems(e, chapter)] == []
+    problems = [p for e in found for p in exercise_problems(e, chapter)]
+    assert not problems, "\n".join(problems)
 
 
 def test_the_complete_chapters_meet_the_targets_and_the_others_are_reported():
