@@ -29,12 +29,14 @@ BANK_COMPLETE = {"mobility": 25}
 FRAME_ASSIGNMENT_ASSERTED = False
 FRAME_ASSIGNMENT_TARGET = 8
 #: A sentence that asks for a DH table (or frames) or joint screws: a verb, then the
-#: thing asked for.
+#: thing asked for; in a statement about an arm.
 FRAME_ASSIGNMENT = re.compile(
     r"\b(assign|write|give|find|list|fill|draw|read)\b[^.?]*"
-    r"(\bDH\b[^.?]*\b(table|parameters|frames)\b|\bjoint screws\b|\bscrew axes\b)",
+    r"(\bDH\b[^.?]*\b(table|parameters|frames)\b|\b(joint|space|body) screws\b"
+    r"|\bscrew axes\b|\b(two|three|four|five|six) screws\b|\\mathcal\s*\{?S\}?_\{?\d)",
     re.I,
 )
+ARM = re.compile(r"\b(arm|robot|gantry|manipulator)s?\b", re.I)
 _IMAGE = re.compile(
     r"^:{3,}\{(figure|image)\}|^```\{(figure|image)\}|!\[[^\]]*\]\(", re.M
 )
@@ -151,9 +153,9 @@ def unmet_targets(count):
 
 def frame_assignment(exercise):
     kinds = set(exercise["kinds"] or ())
-    return {"by hand", "figure"} <= kinds and bool(
-        FRAME_ASSIGNMENT.search(exercise["statement"])
-    )
+    statement = exercise["statement"]
+    asks = FRAME_ASSIGNMENT.search(statement) and ARM.search(statement)
+    return {"by hand", "figure"} <= kinds and bool(asks)
 
 
 @pytest.mark.parametrize("chapter", toc_chapters())
@@ -277,8 +279,11 @@ def test_the_synthetic_chapter_passes():
     # a statement that only mentions joint screws does not ask for them
     mentions = {**found[0], "statement": "A leg has seven joint screws. Find a motion."}
     assert not frame_assignment(mentions)
-    asks = {**found[0], "statement": "Write the joint screws of the arm drawn."}
-    assert frame_assignment(asks)
+    no_arm = {**found[0], "statement": "Write the two screws' coordinates."}
+    assert not frame_assignment(no_arm)
+    for asked in ("the joint screws", "the space screws and $M$", r"$\mathcal S_1$"):
+        asks = {**found[0], "statement": f"Write {asked} of the arm drawn."}
+        assert frame_assignment(asks), asked
     assert counts(found)["exam at the end"] == 1
 
 
