@@ -9,7 +9,9 @@ item per part, its points summing to the total; (d) ``self-checking`` exactly wh
 exercise has an answer box. The chapters of ``BANK_COMPLETE`` meet the targets (at
 least 25 exercises, a third by hand with a figure, 5 to implement, 6 self-checking,
 and 3 exam problems at the end); the other chapters' counts are reported as warnings,
-and so is the bank-wide count of frame-assignment exercises until it is asserted.
+and so is the bank-wide count of frame-assignment exercises (a drawing of an arm, its
+DH table or joint screws asked for, the expected frames drawn in the solution) until
+``FRAME_ASSIGNMENT_ASSERTED``.
 """
 
 import re
@@ -37,9 +39,8 @@ FRAME_ASSIGNMENT = re.compile(
     re.I,
 )
 ARM = re.compile(r"\b(arm|robot|gantry|manipulator)s?\b", re.I)
-_IMAGE = re.compile(
-    r"^:{3,}\{(figure|image)\}|^```\{(figure|image)\}|!\[[^\]]*\]\(", re.M
-)
+#: A figure in Markdown: a {figure}, {image} or {glue:figure} directive, an image.
+_IMAGE = re.compile(r"^(:{3,}|`{3,})\{(figure|image|glue:figure)\}|!\[[^\]]*\]\(", re.M)
 
 
 def toc_chapters():
@@ -187,20 +188,29 @@ def test_the_complete_chapters_meet_the_targets_and_the_others_are_reported():
             )
 
 
+def solution_draws(exercise):
+    """Whether an exercise's solution shows a figure (the expected frames)."""
+    solution = exercise["solution"] or ""
+    cells = code_cells(solution.split("\n"))
+    return any(map(draws, cells)) or bool(_IMAGE.search(solution))
+
+
 def test_frame_assignment_exercises_across_the_bank():
     found = [
-        (chapter, e["number"])
+        (chapter, e["number"], solution_draws(e))
         for chapter in toc_chapters()
         for e in exercises_of(chapter)
         if frame_assignment(e)
     ]
+    drawn = [(chapter, n) for chapter, n, shown in found if shown]
     if FRAME_ASSIGNMENT_ASSERTED:
-        assert len(found) >= FRAME_ASSIGNMENT_TARGET, found
+        assert len(drawn) >= FRAME_ASSIGNMENT_TARGET, found
     else:
-        met = "met: assert it" if len(found) >= FRAME_ASSIGNMENT_TARGET else "not met"
+        met = "met: assert it" if len(drawn) >= FRAME_ASSIGNMENT_TARGET else "not met"
         warnings.warn(
-            f"frame-assignment exercises: {len(found)} of {FRAME_ASSIGNMENT_TARGET} "
-            f"({met}): {found}",
+            f"frame-assignment exercises whose solution draws the frames: {len(drawn)} "
+            f"of {FRAME_ASSIGNMENT_TARGET} ({met}): {drawn}; without a drawing: "
+            f"{[(chapter, n) for chapter, n, shown in found if not shown]}",
             stacklevel=1,
         )
 
@@ -281,6 +291,12 @@ def test_the_synthetic_chapter_passes():
     assert not frame_assignment(mentions)
     no_arm = {**found[0], "statement": "Write the two screws' coordinates."}
     assert not frame_assignment(no_arm)
+    # the expected frames drawn in the solution: a cell, a glued figure, an image
+    assert not solution_draws(found[0]) and not solution_draws(found[2])
+    for shown in ("```{code-cell} ipython3\nplt.plot([0, 1])\n```", "![frames](f.png)"):
+        assert solution_draws({**found[0], "solution": f"The frames.\n{shown}"})
+    glued = "```{glue:figure} demo-frames\n:alt: the frames\n```"
+    assert solution_draws({**found[0], "solution": glued})
     for asked in ("the joint screws", "the space screws and $M$", r"$\mathcal S_1$"):
         asks = {**found[0], "statement": f"Write {asked} of the arm drawn."}
         assert frame_assignment(asks), asked
