@@ -1,5 +1,10 @@
 """The teacher's answers: each exercise's statement, answer key and solution, one file.
 
+The exercises are grouped by week of book/course_plan.md (the week whose Exercises line
+lists them, else the week of their chapter), each under a header with its kinds,
+difficulty and the sections it practises (its tag), an exam problem with its points;
+its solution carries the mark scheme, points per part.
+
 The course edition of the book (``make book EDITION=course``) has no solutions and no
 key of the assessed exercises (book/assessed.yml); this script (``make answers``)
 writes them for the teacher, chapter by chapter in the order of _toc.yml, to
@@ -35,7 +40,8 @@ from mdit_py_plugins.dollarmath import dollarmath_plugin
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from exercise_syntax import read_exercises  # noqa: E402
+from course_plan import weeks  # noqa: E402
+from exercise_syntax import mark_scheme, read_exercises  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # the keys of the assessed exercises, which the package does not hold
@@ -86,28 +92,101 @@ def key_text(chapter, number):
     return "\n".join(lines)
 
 
+def plan():
+    """The weeks of book/course_plan.md (tools/course_plan.py)."""
+    path = os.path.join(ROOT, "book", "course_plan.md")
+    with open(path, encoding="utf-8") as f:
+        return weeks(f.read())
+
+
+def by_week(found, plan_weeks):
+    """``found`` ({chapter: exercises}, in the book's order) grouped by week:
+    [(heading, [(chapter, [exercises])])], each exercise in the week whose Exercises
+    line lists it, else in its chapter's week; the week's own chapter first."""
+    listed, home = {}, {}
+    for week in plan_weeks:
+        home.setdefault(week["chapter"], week["number"])
+        for chapter, numbers in week["exercises"]:
+            for number in numbers:
+                listed.setdefault((chapter, number), week["number"])
+    headings = {w["number"]: f"Week {w['number']}: {w['title']}" for w in plan_weeks}
+    groups = {}
+    for chapter, exercises in found.items():
+        for exercise in exercises:
+            week = listed.get((chapter, exercise["number"]), home.get(chapter))
+            groups.setdefault(week, {}).setdefault(chapter, []).append(exercise)
+    out = []
+    for week in sorted(groups, key=lambda w: (w is None, w or 0)):
+        own = [w["chapter"] for w in plan_weeks if w["number"] == week]
+        chapters_of = sorted(groups[week], key=lambda c: c not in own)
+        heading = headings.get(week, "Not in the course plan")
+        out.append((heading, [(c, groups[week][c]) for c in chapters_of]))
+    return out
+
+
+def header(exercise):
+    """The line under an exercise's heading: its kinds, difficulty and sections."""
+    if exercise["kinds"] is None:
+        return "*(no tag)*"
+    words = [", ".join(exercise["kinds"]), f"difficulty {exercise['difficulty']}"]
+    if "exam" in exercise["kinds"]:
+        try:
+            total, points = mark_scheme(exercise["solution"])
+            parts = ", ".join(f"({p}) {k}" for p, k in points.items())
+            words.append(f"{total} points: {parts}")
+        except ValueError:
+            words.append("no mark scheme")
+    words.append("practises: " + " / ".join(exercise["sections"]))
+    return "*" + " · ".join(words) + "*"
+
+
+def figure_code(cells):
+    """The code of an exercise's cells that draw (not its answer box), fenced."""
+    blocks, current = [], None
+    for line in cells:
+        if current is None:
+            current = [] if line.startswith("```{code-cell}") else None
+        elif line.startswith("```"):
+            if not any("answer_box(" in c for c in current):
+                blocks.append("```python\n" + "\n".join(current).strip() + "\n```")
+            current = None
+        elif not line.startswith(":"):  # the cell's options (tags, alt text)
+            current.append(line)
+    return "\n\n".join(blocks)
+
+
 def answers_markdown():
     marked = assessed()
     out = [
         "# Answers and solutions (for the teacher)",
         "",
-        "Every exercise of the course, its answer key (self-checking exercises) and "
-        "its solution. Exercises marked **assessed** (book/assessed.yml) have no key "
-        "in the course edition of the book.",
+        "Every exercise of the course, week by week as book/course_plan.md assigns "
+        "them: its kinds, difficulty and sections, its answer key (self-checking "
+        "exercises) and its solution, with the mark scheme of each exam problem. "
+        "Exercises marked **assessed** (book/assessed.yml) have no key in the course "
+        "edition of the book.",
     ]
+    found = {}
     for chapter in chapters():
-        with open(
-            os.path.join(ROOT, "notebooks", f"{chapter}.md"), encoding="utf-8"
-        ) as f:
-            found = read_exercises(f.read(), chapter)
-        out += ["", f"## {title(chapter)} (`{chapter}`)"]
-        for exercise in found:
-            number = exercise["number"]
-            flag = " (assessed)" if (chapter, number) in marked else ""
-            out += ["", f"### Exercise {number}{flag}", "", exercise["statement"]]
-            if any("answer_box" in line for line in exercise["cells"]):
-                out += ["", "**Key**", "", key_text(chapter, number)]
-            out += ["", "**Solution**", "", exercise["solution"] or "(none written)"]
+        path = os.path.join(ROOT, "notebooks", f"{chapter}.md")
+        with open(path, encoding="utf-8") as f:
+            found[chapter] = read_exercises(f.read(), chapter)
+    for heading, groups in by_week(found, plan()):
+        out += ["", f"## {heading}"]
+        for chapter, exercises in groups:
+            out += ["", f"### {title(chapter)} (`{chapter}`)"]
+            for exercise in exercises:
+                number = exercise["number"]
+                flag = " (assessed)" if (chapter, number) in marked else ""
+                out += ["", f"#### Exercise {number}{flag}", "", header(exercise)]
+                out += ["", exercise["statement"]]
+                drawing = figure_code(exercise["cells"])
+                if drawing:
+                    out += ["", "**Figure** (drawn in the chapter by)", "", drawing]
+                if any("answer_box" in line for line in exercise["cells"]):
+                    out += ["", "**Key**", "", key_text(chapter, number)]
+                solution = exercise["solution"] or "(none written)"
+                out += ["", "**Solution**", "", solution]
     return "\n".join(out) + "\n"
 
 

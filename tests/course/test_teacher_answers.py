@@ -1,6 +1,8 @@
-"""tools/teacher_answers.py: answers.html stands alone. Its formulas are typeset by the
-MathJax it carries (no file beside it, no network), checked in headless Chromium where
-there is one (`make test-all`; the browser tier)."""
+"""tools/teacher_answers.py: the exercises grouped by week of the course plan, each with
+its tag and its solution's mark scheme; the students' sheets from seeds; answers.html
+stands alone. Its formulas are typeset by the MathJax it carries (no file beside it, no
+network), checked in headless Chromium where there is one (`make test-all`; the browser
+tier)."""
 
 import importlib.util
 import re
@@ -13,16 +15,92 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")
-def answers(tmp_path_factory):
+def tool():
     spec = importlib.util.spec_from_file_location(
         "teacher_answers", ROOT / "tools" / "teacher_answers.py"
     )
     module = importlib.util.module_from_spec(spec)
     sys.modules["teacher_answers"] = module
     spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="module")
+def folder(tool, tmp_path_factory):
     folder = tmp_path_factory.mktemp("answers")
-    module.main(str(folder))
+    seeds = folder / "class.csv"
+    seeds.write_text("student,seed\nada,3\nbob,7\n", encoding="utf-8")
+    tool.main(str(folder), str(seeds))
+    return folder
+
+
+@pytest.fixture(scope="module")
+def answers(folder):
     return (folder / "answers.html").read_text(encoding="utf-8")
+
+
+def test_answers_go_week_by_week_with_their_tags(folder):
+    text = (folder / "answers.md").read_text(encoding="utf-8")
+    weeks = re.findall(r"^## Week (\d+): ", text, re.M)
+    assert weeks == [str(n) for n in range(1, len(weeks) + 1)] and len(weeks) >= 14
+    week_5 = text.split("\n## Week 5: ", 1)[1].split("\n## Week 6: ", 1)[0]
+    assert "\n### Mobility of parallel manipulators (`mobility`)\n" in week_5
+    # mobility exercise 3's tag, from notebooks/mobility.md, as its header
+    exercise_3 = week_5.split("\n#### Exercise 3\n", 1)[1]
+    assert exercise_3.startswith("\n*self-checking · difficulty 2 · practises: ")
+    assert "\n#### Exercise 7 (assessed)\n" in week_5
+    # a figure exercise carries its drawing, an answer box's cell is left out
+    exercise_11 = week_5.split("\n#### Exercise 11\n", 1)[1].split("\n#### ", 1)[0]
+    drawing = exercise_11.split("**Figure** (drawn in the chapter by)", 1)[1]
+    assert "sketch([[O, A], [A, B], [B, C]]" in drawing
+    assert "answer_box" not in drawing and ":mystnb:" not in drawing
+    # configuration space exercise 10 is assigned in week 2
+    week_2 = text.split("\n## Week 2: ", 1)[1].split("\n## Week 3: ", 1)[0]
+    assert "(`configuration_space`)\n\n#### Exercise 10\n" in week_2
+
+
+def test_an_exam_problem_shows_its_points(tool):
+    exam = {
+        "number": 1,
+        "kinds": ["exam", "by hand"],
+        "difficulty": 3,
+        "sections": ["Rigid bodies"],
+        "solution": "Words.\n\n**Mark scheme** (5 points)\n- (a) 2 points: x\n"
+        "- (b) 3 points: y",
+    }
+    assert tool.header(exam) == (
+        "*exam, by hand · difficulty 3 · 5 points: (a) 2, (b) 3 · "
+        "practises: Rigid bodies*"
+    )
+    assert "no mark scheme" in tool.header({**exam, "solution": "Words."})
+    plan = [
+        {"number": 1, "title": "A", "chapter": "a", "exercises": [("a", [1])]},
+        {"number": 2, "title": "B", "chapter": "b", "exercises": [("a", [2])]},
+    ]
+    found = {"a": [{"number": 1}, {"number": 2}, {"number": 3}], "c": [{"number": 1}]}
+    grouped = [
+        (heading, [(c, [e["number"] for e in es]) for c, es in groups])
+        for heading, groups in tool.by_week(found, plan)
+    ]
+    assert grouped == [
+        ("Week 1: A", [("a", [1, 3])]),
+        ("Week 2: B", [("a", [2])]),
+        ("Not in the course plan", [("c", [1])]),
+    ]
+
+
+def test_seeds_give_each_student_a_sheet_and_the_teacher_every_key(folder):
+    from screwkit import exercises
+
+    found = exercises.parametrised()
+    assert found, "no parametrised exercise to put on a sheet"
+    rows = (folder / "keys.csv").read_text(encoding="utf-8").strip().split("\n")
+    assert len(rows) == 1 + 2 * len(found)
+    chapter, number = found[0]
+    for student, seed in (("ada", 3), ("bob", 7)):
+        sheet = (folder / "sheets" / f"{student}.md").read_text(encoding="utf-8")
+        assert exercises.variant(chapter, number, seed).statement in sheet
+        assert f"seed={seed})`" in sheet
 
 
 def test_answers_html_loads_nothing_from_elsewhere(answers):
@@ -39,10 +117,11 @@ def test_answers_html_typesets_its_formulas_alone(answers, tmp_path, chromium):
     page = chromium.new_page()
     requests = []
     page.on("request", lambda r: requests.append(r.url))
-    page.goto(path.as_uri(), timeout=120_000)  # MathJax inline: slow under load
+    # generous timeouts: the file grows with the bank, and the tier shares CPUs
+    page.goto(path.as_uri(), timeout=180_000)
     page.wait_for_function(
         "window.MathJax && MathJax.startup && MathJax.startup.promise",
-        timeout=60_000,
+        timeout=180_000,
     )
     page.evaluate("MathJax.startup.promise")
     typeset = page.locator("mjx-container svg").count()
