@@ -232,7 +232,7 @@ def test_a_wrench_system_is_named_with_couples_and_forces():
     assert schoenflies.name == "planar couples"
 
 
-# ---- Gibson and Hunt's names -----------------------------------------------------------
+# ---- Gibson and Hunt's names ---------------------------------------------------------
 #
 # Gibson and Hunt (Mech. Mach. Theory 25, 1990, parts 1 and 2; Davidson and Hunt, Robots
 # and Screw Theory, 2004) name an n-system by its order (Roman) and its projective type,
@@ -267,7 +267,7 @@ TEXTBOOK = {
     # a cylindric pair followed by a revolute about the x axis through (0, 0, 1): one
     # translation (along z) and two independent rotation directions: IIIB.
     "cylindric pair and revolute": ([Z6, TZ, [1, 0, 0, 0, 1, 0]], "IIIB"),
-    # the planar pair: rotation about z and slides along x and y (two translations): IIIC.
+    # the planar pair: rotation about z, slides along x and y (two translations): IIIC.
     "planar pair": ([Z6, TX, TY], "IIIC"),
     # three slides (a P-P-P chain, the Delta's platform): three translations: IIID.
     "three slides": ([TX, TY, TZ], "IIID"),
@@ -289,7 +289,7 @@ def test_gibson_hunt_letter_is_shared_with_the_reciprocal():
     its own reciprocal: a 3-system and its reciprocal hold equally many translations, a
     2-system's reciprocal one more (so Gibson and Hunt name order 4 and 5 by the
     reciprocal's letter)."""
-    for name, (rows, expected) in TEXTBOOK.items():
+    for rows, expected in TEXTBOOK.values():
         system = ScrewSystem([[sp.nsimplify(e) for e in r] for r in rows])
         reciprocal = system.reciprocal().classify()
         assert reciprocal.gibson_hunt == {2: "IV", 3: "III"}[system.rank] + expected[-1]
