@@ -60,10 +60,12 @@ class Classification(NamedTuple):
     order : int
         The number of independent screws.
     type : str
-        ``'<order>-<roman><letter>'``: the Roman numeral is I plus the number of
-        independent screws of infinite pitch in the system (for order 4 and 5, in its
-        reciprocal, which is classified instead); the letter says how many finite
-        principal pitches coincide: A none, B two, C three.
+        screwkit's own label, ``'<order>-<roman><letter>'``: the Roman numeral is I
+        plus the number of independent screws of infinite pitch in the system (for
+        order 4 and 5, in its reciprocal, which is classified instead); the letter
+        says how many finite principal pitches coincide: A none, B two, C three. It
+        is not Gibson and Hunt's name (see ``gibson_hunt``): '3-IIIA' (planar motion)
+        is their IIIC, '3-IC' (spherical motion) their IIIA.
     translations : int
         The number of independent infinite-pitch members (of the reciprocal for order
         4 and 5).
@@ -76,6 +78,16 @@ class Classification(NamedTuple):
         'planar-motion type').
     description : str
         The special geometry in words.
+    gibson_hunt : str
+        The type in Gibson and Hunt's naming (Mech. Mach. Theory 25, 1990; Davidson
+        and Hunt, *Robots and Screw Theory*, 2004): the order as a Roman numeral, then
+        the projective type, a letter for the number of independent screws of infinite
+        pitch, A none, B one, C two, D three (for order 4 and 5 the letter of the
+        reciprocal, so a system and its reciprocal share it): 'IIA' a cylindroid,
+        'IIC' planar translations, 'IIIA' spherical motion, 'IIIC' planar motion,
+        'IIID' spatial translations. Their finer subtypes (equal principal pitches,
+        a translation normal or not to the finite screws) are told by ``type`` and
+        ``description``.
     """
 
     order: int
@@ -84,6 +96,7 @@ class Classification(NamedTuple):
     pitches: list
     name: str
     description: str
+    gibson_hunt: str = ""
 
 
 # ---- the two forms -------------------------------------------------------------------
@@ -343,10 +356,18 @@ def classify(system):
     """The type of the system (ScrewSystem.classify)."""
     n = system.rank
     if n == 0:
-        return Classification(0, "0", 0, [], "zero system", "the zero system: no screw")
+        return Classification(
+            0, "0", 0, [], "zero system", "the zero system: no screw", "0"
+        )
     if n == 6:
         return Classification(
-            6, "6", 0, [], "every screw", "every screw: the whole six-dimensional space"
+            6,
+            "6",
+            0,
+            [],
+            "every screw",
+            "every screw: the whole six-dimensional space",
+            "VI",
         )
     target = system if n <= 3 else system.reciprocal()
     groups, translations, complete, _, _, exact = _analyse(target)
@@ -369,7 +390,8 @@ def classify(system):
         )
     if system.kind.noun == "wrench":
         name = _as_wrenches(name)
-    return Classification(n, type_, k, pitches, name, words)
+    gibson_hunt = ("I", "II", "III", "IV", "V")[n - 1] + "ABCD"[k]
+    return Classification(n, type_, k, pitches, name, words, gibson_hunt)
 
 
 def _as_wrenches(text):

@@ -182,12 +182,14 @@ def _line(point, force):
     return np.concatenate([force, np.cross(point, force)])
 
 
-def _generators(contact, facets):
-    """The columns whose nonnegative combinations are the contact's wrench cone."""
+def _generators(contact, facets, widen=1.0):
+    """The columns whose nonnegative combinations are the contact's wrench cone
+    (``widen`` times mu: 1 for the inscribed pyramid, 1 / cos(pi / facets) for the
+    circumscribed one)."""
     p, n = contact.point, contact.normal
     if contact.kind == "frictionless":
         return [_line(p, n)]
-    mu = contact.mu
+    mu = contact.mu * (widen if not contact.planar else 1.0)
     if contact.planar:
         t = np.array([-n[1], n[0]])
         return [_line(p, n + mu * t), _line(p, n - mu * t)]
@@ -259,6 +261,12 @@ def _move(W, frame, planar):
         return np.vstack([R.T @ f, m])
     f, m = W[:3], W[3:]
     return np.vstack([R.T @ f, R.T @ (m - np.cross(p, f, axis=0))])
+
+
+def _pyramid(contacts, facets, widen=1.0):
+    return np.array(
+        [g for c in contacts for g in _generators(c, facets, widen)], dtype=float
+    ).T
 
 
 def contact_wrenches(contacts, facets=8, frictionless=False):
@@ -464,7 +472,7 @@ def form_closure(contacts):
     return _closure(contacts, W)
 
 
-def force_closure(contacts, facets=8):
+def force_closure(contacts, facets=8, cone="pyramid", max_facets=4096):
     """Force closure: do the contacts' wrench cones (friction included) resist every
     wrench?
 
@@ -474,12 +482,26 @@ def force_closure(contacts, facets=8):
     span the wrench space. With the inscribed pyramid a closed answer is also closed
     for the exact cone; an open one may close with more facets.
 
+    With ``cone='exact'`` the answer is the exact circular Coulomb cone's (a
+    second-order cone problem), decided by two linear programs that bracket it: the
+    inscribed pyramid closed proves the cone closed (its edges lie in the cone), the
+    circumscribed pyramid (edges at mu / cos(pi / k)) open proves it open (its
+    separating wrench y separates the cone it contains: for every contact
+    ``n . g >= mu |g_t|`` with ``g = y_f + y_m x p``, plus ``torsion |y_m . n|``
+    for a soft finger); otherwise the facets double, up to ``max_facets``.
+
     Parameters
     ----------
     contacts : list of Contact
         At least 2, all planar or all spatial.
     facets : int, optional
-        Edges of each spatial friction cone's pyramid (>= 3).
+        Edges of each spatial friction cone's pyramid (>= 3); with ``cone='exact'``
+        the first pyramid tried.
+    cone : {'pyramid', 'exact'}, optional
+        The inscribed pyramid (default) or the exact circular cone.
+    max_facets : int, optional
+        With ``cone='exact'``, the most facets tried before the contacts are declared
+        on the boundary of closure (RuntimeError).
 
     Returns
     -------
@@ -495,5 +517,25 @@ def force_closure(contacts, facets=8):
     >>> sk.contact.force_closure(pinch).closed  # two opposite fingers with friction
     True
     """
+    cone = check_option(cone, "cone", ("pyramid", "exact"))
     W, _ = contact_wrenches(contacts, facets=facets)
-    return _closure(contacts, W)
+    if cone == "pyramid":
+        return _closure(contacts, W)
+    max_facets = check_integer(max_facets, "max_facets", minimum=3)
+    if contacts[0].planar or all(c.kind == "frictionless" for c in contacts):
+        return _closure(contacts, W)  # the planar cone's two edges are exact
+    k = check_integer(facets, "facets", minimum=3)
+    while True:
+        inner = _closure(contacts, _pyramid(contacts, k))
+        if inner.closed:
+            return inner
+        outer = _closure(contacts, _pyramid(contacts, k, 1.0 / np.cos(np.pi / k)))
+        if not outer.closed:
+            return outer
+        if 2 * k > max_facets:
+            raise RuntimeError(
+                f"the contacts sit on the boundary of force closure: the inscribed "
+                f"pyramid of {k} facets is open and the circumscribed one closed; "
+                f"raise max_facets (got {max_facets}) or move a contact"
+            )
+        k *= 2

@@ -355,17 +355,18 @@ class ScrewSystem:
         Returns
         -------
         Classification
-            ``order``, ``type`` (such as '3-IIIA', see
+            ``order``, ``type`` (screwkit's label, such as '3-IIIA', see
             :class:`Classification`), ``translations``,
-            ``pitches``, ``name`` ('planar motion', 'spherical motion', ...) and
-            ``description``.
+            ``pitches``, ``name`` ('planar motion', 'spherical motion', ...),
+            ``description`` and ``gibson_hunt`` (Gibson and Hunt's type, such as
+            'IIIC' for planar motion).
 
         Examples
         --------
         >>> origin = [0, 0, 0]
         >>> ScrewSystem([(d, origin, 0) for d in ([1, 0, 0], [0, 1, 0], [0, 0, 1])]
-        ...             ).classify().name
-        'spherical motion'
+        ...             ).classify()[4:]
+        ('spherical motion', 'every member a rotation about one point', 'IIIA')
         """
         return _system_geometry.classify(self)
 

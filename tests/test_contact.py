@@ -277,3 +277,101 @@ def test_planar_grasp_matrix_in_a_frame():
     np.testing.assert_allclose(G[2, :2], [0, 0], atol=1e-12)
     # the normal force (0, -1) in axes turned by 90 degrees: (-1, 0)
     np.testing.assert_allclose(G[:2, 0], [-1, 0], atol=1e-12)
+
+
+# ---- the exact Coulomb cone (cone='exact') -------------------------------------------
+
+
+def exact_cone_separates(y, contacts):
+    """The separating wrench y checked against the exact circular cones, without any
+    pyramid: y . w >= 0 for every w in contact i's cone iff g = y_f + y_m x p has
+    n . g >= mu |g_t| (+ torsion |y_m . n| for a soft finger), the dual cone's test."""
+    y_f, y_m = y[:3], y[3:]
+    for c in contacts:
+        g = y_f + np.cross(y_m, c.point)
+        g_n = g @ c.normal
+        g_t = np.linalg.norm(g - g_n * c.normal)
+        need = (c.mu or 0.0) * g_t
+        if c.kind == "soft_finger":
+            need += c.torsion * abs(y_m @ c.normal)
+        assert g_n >= need - TOL * np.linalg.norm(y) * (1 + np.linalg.norm(c.point))
+
+
+def in_exact_cones(W, owner, contacts):
+    """Every generator of a closed answer lies in its contact's exact cone."""
+    for w, i in zip(W.T, owner):
+        c, f = contacts[i], w[:3]
+        f_n = f @ c.normal
+        assert np.linalg.norm(f - f_n * c.normal) <= (c.mu or 0.0) * f_n * (1 + 1e-12)
+
+
+def soft_pair(beta_deg, mu, tilt_deg=22.5):
+    """Two soft fingers on the unit sphere: at (-1, 0, 0) and at the angle beta from
+    the point opposite it, in the plane through the x axis tilted by ``tilt`` from
+    z = 0, both pushing towards the centre. The chord between them makes beta / 2 with
+    each normal (the base angle of the isosceles triangle centre-p1-p2). The tilt of
+    22.5 deg puts the chord midway between two edges of the first contact's 8-facet
+    pyramid (its edges lie at multiples of 45 deg from the z axis about x)."""
+    b, t = np.radians(beta_deg), np.radians(tilt_deg)
+    p2 = np.array([np.cos(b), np.sin(b) * np.cos(t), np.sin(b) * np.sin(t)])
+    return [
+        Contact([-1, 0, 0], [1, 0, 0], "soft_finger", mu=mu, torsion=0.05),
+        Contact(p2, -p2, "soft_finger", mu=mu, torsion=0.05),
+    ]
+
+
+@pytest.mark.parametrize("mu, closed", [(0.37, True), (0.36, False)])
+def test_exact_cone_meets_the_two_soft_finger_criterion(mu, closed):
+    """Murray, Li and Sastry (ch. 5): two soft fingers force-close a body iff the line
+    joining the contacts lies strictly inside both friction cones. At beta = 40 deg the
+    line makes 20 deg with each normal: closed iff mu > tan 20 deg = 0.3640. The
+    8-facet inscribed pyramid narrows the cone by up to cos(pi / 8) and misses the
+    closed grasp; the exact cone does not."""
+    contacts = soft_pair(40.0, mu)
+    r = force_closure(contacts, facets=8, cone="exact")
+    assert r.closed is closed
+    check_certificate(r, contacts)
+    if closed:
+        assert not force_closure(contacts, facets=8).closed  # the pyramid's miss
+    else:
+        exact_cone_separates(r.wrench, contacts)
+
+
+def test_pyramids_converge_to_the_exact_cone():
+    """As the facets double, the inscribed pyramid's answer reaches the exact cone's
+    from below (closed at some k, and for every larger k), on the soft pair just above
+    the threshold."""
+    contacts = soft_pair(40.0, 0.37)
+    answers = [force_closure(contacts, facets=k).closed for k in (4, 8, 16, 32, 64)]
+    first = answers.index(True)
+    assert not answers[0] and all(answers[first:])
+
+
+def test_exact_cone_on_random_spatial_grasps():
+    """Closed answers: every generator lies in the exact cone and balances; open
+    answers: the separating wrench satisfies the exact dual-cone test. Whenever the
+    8-facet pyramid closes, so does the exact cone (it contains the pyramid)."""
+    rng = np.random.default_rng(7)
+    outcomes = []
+    for trial in range(40):
+        kind = ("friction", "soft_finger")[trial % 2]
+        contacts = random_contacts(rng, rng.integers(3, 5), False, kind, 0.3)
+        r = force_closure(contacts, facets=8, cone="exact")
+        check_certificate(r, contacts)
+        if r.closed:
+            each = r.wrenches.shape[1] // len(contacts)  # one kind a trial
+            owner = np.repeat(np.arange(len(contacts)), each)
+            in_exact_cones(r.wrenches, owner, contacts)
+        else:
+            exact_cone_separates(r.wrench, contacts)
+            assert not force_closure(contacts, facets=8).closed
+        outcomes.append(r.closed)
+    assert 5 < sum(outcomes) < len(outcomes) - 5
+
+
+def test_exact_cone_refuses_a_bad_option():
+    contacts = soft_pair(40.0, 0.5)
+    with pytest.raises(ValueError, match="cone must be one of"):
+        force_closure(contacts, cone="circle")
+    with pytest.raises(ValueError, match="max_facets"):
+        force_closure(contacts, cone="exact", max_facets=2)

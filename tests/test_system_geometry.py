@@ -230,3 +230,72 @@ def test_a_wrench_system_is_named_with_couples_and_forces():
     assert "forces along parallel axes and the couples" in kind.description
     schoenflies = ScrewSystem(CASES["Schoenflies motion"][0]).reciprocal().classify()
     assert schoenflies.name == "planar couples"
+
+
+# ---- Gibson and Hunt's names ---------------------------------------------------------
+#
+# Gibson and Hunt (Mech. Mach. Theory 25, 1990, parts 1 and 2; Davidson and Hunt, Robots
+# and Screw Theory, 2004) name an n-system by its order (Roman) and its projective type,
+# a letter for the number of independent screws of infinite pitch it holds: A none,
+# B one, C two, D three. The classes below are the textbook examples of each 2- and
+# 3-system type, with the class the literature gives them: the count of independent
+# translations in each is done by hand in the comment, never by screwkit.
+
+Z6 = [0, 0, 1, 0, 0, 0]  # rotation about the z axis through the origin
+TX, TY, TZ = [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, 1]
+
+TEXTBOOK = {
+    # Ball's cylindroid: two screws on perpendicular intersecting axes, pitches 0.1
+    # and 0.4, no translation in the span (both directions independent): IIA.
+    "cylindroid": (cylindroid_rows(0.1, 0.4), "IIA"),
+    # equal principal pitches: the planar pencil of screws of one pitch, still IIA
+    # (Gibson and Hunt's special IIA, h_alpha = h_beta).
+    "planar pencil": (cylindroid_rows(0.3, 0.3), "IIA"),
+    # a revolute about z and a slide along x (a planar R-P chain): one translation,
+    # normal to the axis; the members are parallel rotations in the plane y z: IIB.
+    "revolute and normal slide": ([Z6, TX], "IIB"),
+    # the cylindric pair: rotation about z and slide along z, coaxial screws of every
+    # pitch (one translation, along the axis): IIB.
+    "cylindric pair": ([Z6, TZ], "IIB"),
+    # two slides: every member a translation parallel to the plane x y: IIC.
+    "two slides": ([TX, TY], "IIC"),
+    # the spherical pair: rotations about three axes through one point, all pitch 0
+    # and no translation: IIIA (the special IIIA with three equal pitches).
+    "spherical pair": ([[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], Z6], "IIIA"),
+    # a general 3-system (principal pitches 0.1, 0.25, -0.3 on the axes): IIIA.
+    "general 3-system": (CASES["general 3-system"][0], "IIIA"),
+    # a cylindric pair followed by a revolute about the x axis through (0, 0, 1): one
+    # translation (along z) and two independent rotation directions: IIIB.
+    "cylindric pair and revolute": ([Z6, TZ, [1, 0, 0, 0, 1, 0]], "IIIB"),
+    # the planar pair: rotation about z, slides along x and y (two translations): IIIC.
+    "planar pair": ([Z6, TX, TY], "IIIC"),
+    # three slides (a P-P-P chain, the Delta's platform): three translations: IIID.
+    "three slides": ([TX, TY, TZ], "IIID"),
+}
+
+
+@pytest.mark.parametrize("name", TEXTBOOK)
+def test_gibson_hunt_names_of_the_textbook_systems(name):
+    rows, expected = TEXTBOOK[name]
+    exact = ScrewSystem([[sp.nsimplify(e) for e in r] for r in rows]).classify()
+    assert exact.gibson_hunt == expected
+    for scale in (1.0, 1000.0):  # any rigid motion, change of basis and unit
+        moved = ScrewSystem(moved_and_mixed(rows, RNG, scale)).classify()
+        assert moved.gibson_hunt == expected
+
+
+def test_gibson_hunt_letter_is_shared_with_the_reciprocal():
+    """dim(S^perp n T) = 3 - n + dim(S n T) for the 3-system T of translations, which is
+    its own reciprocal: a 3-system and its reciprocal hold equally many translations, a
+    2-system's reciprocal one more (so Gibson and Hunt name order 4 and 5 by the
+    reciprocal's letter)."""
+    for rows, expected in TEXTBOOK.values():
+        system = ScrewSystem([[sp.nsimplify(e) for e in r] for r in rows])
+        reciprocal = system.reciprocal().classify()
+        assert reciprocal.gibson_hunt == {2: "IV", 3: "III"}[system.rank] + expected[-1]
+        if system.rank == 3:
+            assert reciprocal.translations == system.classify().translations
+    schoenflies = ScrewSystem(CASES["Schoenflies motion"][0]).classify()
+    assert schoenflies.gibson_hunt == "IVC"  # its reciprocal: couples about x and y
+    assert ScrewSystem([[1, 0, 0, 0, 0, 0]]).classify().gibson_hunt == "IA"
+    assert ScrewSystem([TX]).classify().gibson_hunt == "IB"
