@@ -67,6 +67,65 @@ def _():
     return [V[2, 1], V[0, 2], V[1, 0], *V[:3, 3]]
 
 
+@reference("rigid_motions", 11)
+def _():
+    # {b}'s axes in {s} as drawn: x_b = y_s, y_b = -x_s, z_b = z_s; p_s = sum of
+    # p_b's coordinates times those axes, plus {b}'s origin
+    x_b, y_b, z_b = np.array([0, 1.0, 0]), np.array([-1.0, 0, 0]), np.array([0, 0, 1.0])
+    return np.array([1.0, 2, 0]) + 0.5 * x_b + 0 * y_b + 0.3 * z_b
+
+
+@reference("rigid_motions", 13)
+def _():
+    # the origin of {s} seen from {b}: project -p on {b}'s axes (at 30 deg)
+    p = np.array([2.0, 1.0])
+    a = math.radians(30)
+    x_b, y_b = (
+        np.array([math.cos(a), math.sin(a)]),
+        np.array([-math.sin(a), math.cos(a)]),
+    )
+    return [(-p) @ x_b, (-p) @ y_b]
+
+
+@reference("rigid_motions", 15)
+def _():
+    # the centre of the circle through nothing but equal distances: intersect the
+    # perpendicular bisectors of P1 -> P1' and P3 -> P3'
+    pairs = [((2.0, 1.0), (1.0, 2.0)), ((2.0, 1.5), (0.5, 2.0))]
+    A = np.array([np.subtract(q, p) for p, q in pairs])
+    b = np.array([np.subtract(q, p) @ np.add(p, q) / 2 for p, q in pairs])
+    c = np.linalg.solve(A, b)
+    # and it turns P2 = (3, 1) into (1, 3) by a quarter turn
+    np.testing.assert_allclose(c + rot("z", math.pi / 2)[:2, :2] @ ([3, 1] - c), [1, 3])
+    return c
+
+
+@reference("rigid_motions", 16)
+def _():
+    # body twist of the cart from T^-1 Tdot, T(t) = (Rz(t / 2 + 90 deg), 2 (cos, sin))
+    def pose(t):
+        T = np.eye(4)
+        T[:3, :3] = rot("z", t / 2 + math.pi / 2)
+        T[:3, 3] = [2 * math.cos(t / 2), 2 * math.sin(t / 2), 0]
+        return T
+
+    t, h = 0.7, 1e-6
+    V = np.linalg.inv(pose(t)) @ (pose(t + h) - pose(t - h)) / (2 * h)
+    return [V[2, 1], V[0, 2], V[1, 0], *V[:3, 3]]
+
+
+@reference("rigid_motions", 22)
+def _():
+    # the screw's pitch from the twist's log: h = omega . v / |omega|^2 for the twist
+    # of T01 = (Rz(90 deg), (0.5, -0.5, 0.2)), theta = pi / 2
+    T = np.eye(4)
+    T[:3, :3] = rot("z", math.pi / 2)
+    T[:3, 3] = [0.5, -0.5, 0.2]
+    log = sk.log_transform(T)
+    omega, v = log[:3], log[3:]
+    return omega @ v / (omega @ omega)
+
+
 # ---- screws ------------------------------------------------------------------------
 
 SCREW = np.array([0, 0, 1, 1, 2, 0.5])
