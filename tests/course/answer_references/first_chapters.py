@@ -166,6 +166,62 @@ def _():
     return 6 - rank
 
 
+@reference("screws", 11)
+def _():
+    # the line through two of its points, (-1, 1, 0.5) and (2, 1, 0.5); its moment from
+    # the second point (any point of the line gives the same), plus the pitch term
+    p1, p2 = np.array([-1.0, 1, 0.5]), np.array([2.0, 1, 0.5])
+    s = (p2 - p1) / np.linalg.norm(p2 - p1)
+    return [*s, *(np.cross(p2, s) + 0.2 * s)]
+
+
+@reference("screws", 12)
+def _():
+    # the moment from another point of the line of action, 5 m above the plate
+    f = np.array([0.0, 0, -20])
+    return [*f, *np.cross([0.4, 0.3, 5.0], f)]
+
+
+@reference("screws", 13)
+def _():
+    # a turn of 2 pi about z along a screw of pitch h lifts by 2 pi h: solve for the lead
+    h = 0.002 / (2 * math.pi)
+    lift = sk.screw_motion([0, 0, 1], [0, 0, 0], h, 2 * math.pi)[2, 3]
+    assert math.isclose(lift, 0.002, abs_tol=1e-15)
+    return h
+
+
+@reference("screws", 14)
+def _():
+    # the force times the velocity of its point of application, omega x r
+    f = 10 * np.array([0, math.cos(math.pi / 3), math.sin(math.pi / 3)])
+    return f @ np.cross([0, 0, 3.0], [0.2, 0, 0])
+
+
+@reference("screws", 16)
+def _():
+    # the four joint twists written out, their numerical rank
+    twists = np.array(
+        [
+            [0, 0, 1, 0, 0, 0],
+            [0, 0, 1, 0, -0.4, 0],
+            [0, 0, 0, 0, 0, 1],
+            [0, 0, 1, 0.25, -0.4, 0],
+        ]
+    )
+    return 6 - np.linalg.matrix_rank(twists)
+
+
+@reference("screws", 22)
+def _():
+    # move the wrench to a point c of its axis, where the moment is parallel to f
+    f, m = np.array([0.0, 0, 10]), np.array([0.0, -1, 2])
+    c = np.array([0.1, 0, 0])  # the drill's line
+    m_c = m - np.cross(c, f)
+    assert np.allclose(np.cross(m_c, f), 0)
+    return m_c @ f / (f @ f)
+
+
 # ---- poe ---------------------------------------------------------------------------
 
 
