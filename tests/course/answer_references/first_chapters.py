@@ -184,7 +184,7 @@ def _():
 
 @reference("screws", 13)
 def _():
-    # a turn of 2 pi about z along a screw of pitch h lifts by 2 pi h: solve for the lead
+    # a turn of 2 pi about z along a screw of pitch h lifts by 2 pi h: the lead
     h = 0.002 / (2 * math.pi)
     lift = sk.screw_motion([0, 0, 1], [0, 0, 0], h, 2 * math.pi)[2, 3]
     assert math.isclose(lift, 0.002, abs_tol=1e-15)
