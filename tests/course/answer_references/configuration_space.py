@@ -141,3 +141,19 @@ def _():
         for rod in (f"rod{i}a", f"rod{i}b"):
             joints += [(f"crank{i}", rod, 3), (rod, "platform", 2)]
     return _count(joints, order=6)
+
+
+@reference("configuration_space", 22)
+def _():
+    # the excavator arm as drawn: cab -R- boom -R- stick -R- bucket, and three
+    # cylinders, each body -R- barrel -P- rod -R- body
+    joints = [("cab", "boom", 1), ("boom", "stick", 1), ("stick", "bucket", 1)]
+    for k, (p, q) in enumerate(
+        (("cab", "boom"), ("boom", "stick"), ("stick", "bucket"))
+    ):
+        joints += [
+            (p, f"barrel{k}", 1),
+            (f"barrel{k}", f"rod{k}", 1),
+            (f"rod{k}", q, 1),
+        ]
+    return _count(joints, order=3)

@@ -67,6 +67,65 @@ def _():
     return [V[2, 1], V[0, 2], V[1, 0], *V[:3, 3]]
 
 
+@reference("rigid_motions", 11)
+def _():
+    # {b}'s axes in {s} as drawn: x_b = y_s, y_b = -x_s, z_b = z_s; p_s = sum of
+    # p_b's coordinates times those axes, plus {b}'s origin
+    x_b, y_b, z_b = np.array([0, 1.0, 0]), np.array([-1.0, 0, 0]), np.array([0, 0, 1.0])
+    return np.array([1.0, 2, 0]) + 0.5 * x_b + 0 * y_b + 0.3 * z_b
+
+
+@reference("rigid_motions", 13)
+def _():
+    # the origin of {s} seen from {b}: project -p on {b}'s axes (at 30 deg)
+    p = np.array([2.0, 1.0])
+    a = math.radians(30)
+    x_b, y_b = (
+        np.array([math.cos(a), math.sin(a)]),
+        np.array([-math.sin(a), math.cos(a)]),
+    )
+    return [(-p) @ x_b, (-p) @ y_b]
+
+
+@reference("rigid_motions", 15)
+def _():
+    # the centre of the circle through nothing but equal distances: intersect the
+    # perpendicular bisectors of P1 -> P1' and P3 -> P3'
+    pairs = [((2.0, 1.0), (1.0, 2.0)), ((2.0, 1.5), (0.5, 2.0))]
+    A = np.array([np.subtract(q, p) for p, q in pairs])
+    b = np.array([np.subtract(q, p) @ np.add(p, q) / 2 for p, q in pairs])
+    c = np.linalg.solve(A, b)
+    # and it turns P2 = (3, 1) into (1, 3) by a quarter turn
+    np.testing.assert_allclose(c + rot("z", math.pi / 2)[:2, :2] @ ([3, 1] - c), [1, 3])
+    return c
+
+
+@reference("rigid_motions", 16)
+def _():
+    # body twist of the cart from T^-1 Tdot, T(t) = (Rz(t / 2 + 90 deg), 2 (cos, sin))
+    def pose(t):
+        T = np.eye(4)
+        T[:3, :3] = rot("z", t / 2 + math.pi / 2)
+        T[:3, 3] = [2 * math.cos(t / 2), 2 * math.sin(t / 2), 0]
+        return T
+
+    t, h = 0.7, 1e-6
+    V = np.linalg.inv(pose(t)) @ (pose(t + h) - pose(t - h)) / (2 * h)
+    return [V[2, 1], V[0, 2], V[1, 0], *V[:3, 3]]
+
+
+@reference("rigid_motions", 22)
+def _():
+    # the screw's pitch from the twist's log: h = omega . v / |omega|^2 for the twist
+    # of T01 = (Rz(90 deg), (0.5, -0.5, 0.2)), theta = pi / 2
+    T = np.eye(4)
+    T[:3, :3] = rot("z", math.pi / 2)
+    T[:3, 3] = [0.5, -0.5, 0.2]
+    log = sk.log_transform(T)
+    omega, v = log[:3], log[3:]
+    return omega @ v / (omega @ omega)
+
+
 # ---- screws ------------------------------------------------------------------------
 
 SCREW = np.array([0, 0, 1, 1, 2, 0.5])
@@ -105,6 +164,62 @@ def _():
         sk.ScrewSystem([([1, 0, 0], [0, 0, 0], 0), ([0, 1, 0], [0, 0, 0], 0)]).rank == 2
     )
     return 6 - rank
+
+
+@reference("screws", 11)
+def _():
+    # the line through two of its points, (-1, 1, 0.5) and (2, 1, 0.5); its moment from
+    # the second point (any point of the line gives the same), plus the pitch term
+    p1, p2 = np.array([-1.0, 1, 0.5]), np.array([2.0, 1, 0.5])
+    s = (p2 - p1) / np.linalg.norm(p2 - p1)
+    return [*s, *(np.cross(p2, s) + 0.2 * s)]
+
+
+@reference("screws", 12)
+def _():
+    # the moment from another point of the line of action, 5 m above the plate
+    f = np.array([0.0, 0, -20])
+    return [*f, *np.cross([0.4, 0.3, 5.0], f)]
+
+
+@reference("screws", 13)
+def _():
+    # a turn of 2 pi about z along a screw of pitch h lifts by 2 pi h: the lead
+    h = 0.002 / (2 * math.pi)
+    lift = sk.screw_motion([0, 0, 1], [0, 0, 0], h, 2 * math.pi)[2, 3]
+    assert math.isclose(lift, 0.002, abs_tol=1e-15)
+    return h
+
+
+@reference("screws", 14)
+def _():
+    # the force times the velocity of its point of application, omega x r
+    f = 10 * np.array([0, math.cos(math.pi / 3), math.sin(math.pi / 3)])
+    return f @ np.cross([0, 0, 3.0], [0.2, 0, 0])
+
+
+@reference("screws", 16)
+def _():
+    # the four joint twists written out, their numerical rank
+    twists = np.array(
+        [
+            [0, 0, 1, 0, 0, 0],
+            [0, 0, 1, 0, -0.4, 0],
+            [0, 0, 0, 0, 0, 1],
+            [0, 0, 1, 0.25, -0.4, 0],
+        ]
+    )
+    return 6 - np.linalg.matrix_rank(twists)
+
+
+@reference("screws", 22)
+def _():
+    # move the wrench to a point c of its axis, where the moment is parallel to f
+    f, m = np.array([0.0, 0, 10]), np.array([0.0, -1, 2])
+    c = np.array([0.1, 0, 0])  # the drill's line
+    m_c = m - np.cross(c, f)
+    assert np.allclose(np.cross(m_c, f), 0)
+    return m_c @ f / (f @ f)
 
 
 # ---- poe ---------------------------------------------------------------------------
