@@ -1153,6 +1153,8 @@ def check(chapter, number, answer, seed=0):
         this screwkit does not have (an installed package) gives a verdict saying
         that the teacher marks it.
 
+    Examples
+    --------
     >>> check("rigid_motions", 2, "2, 0, 0").correct
     True
     """

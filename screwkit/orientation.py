@@ -97,6 +97,8 @@ def rotation_from_euler(angles, convention="ZYZ"):
     -------
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
 
+    Examples
+    --------
     >>> rotation_from_euler([0.0, np.pi / 2, 0.0])[:, 2].round(4)
     array([1., 0., 0.])
     """
@@ -124,6 +126,8 @@ def euler_from_rotation(R, convention="ZYZ"):
         carries the whole rotation about the aligned axes. Symbolic entries give the
         generic formula, valid away from the lock.
 
+    Examples
+    --------
     >>> euler_from_rotation(rotz(0.3) @ roty(0.0) @ rotz(0.4)).round(4)
     array([0. , 0. , 0.7])
     """
@@ -201,6 +205,8 @@ def gimbal_lock(R, convention="ZYZ"):
         ZYZ: sin(beta) = 0; ZYX: cos(beta) = 0 (to ``LOCK_TOL`` for floats, exactly
         for SymPy numbers; False for symbolic entries, which are generic).
 
+    Examples
+    --------
     >>> bool(gimbal_lock(roty(np.pi / 2), "ZYX")), bool(gimbal_lock(roty(0.2)))
     (True, False)
     """
@@ -287,6 +293,8 @@ def rotation_from_quaternion(q):
     -------
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
 
+    Examples
+    --------
     >>> rotation_from_quaternion([0.0, 0.0, 0.0, 1.0]).round(4)  # a half turn about z
     array([[-1.,  0.,  0.],
            [ 0., -1.,  0.],
@@ -441,6 +449,8 @@ def euler_rate_matrix(angles, convention="ZYZ", frame="space"):
         -sin(beta) for ZYZ, -cos(beta) for ZYX and cos(pitch) for RPY: B is singular
         at gimbal lock, where some angular velocities need infinite angle rates.
 
+    Examples
+    --------
     >>> euler_rate_matrix([0.0, 0.0, 0.0], "ZYZ") + 0.0
     array([[0., 0., 0.],
            [0., 1., 0.],

@@ -82,6 +82,8 @@ def swap(vector):
     ndarray, shape (6,) or (N, 6)
         The vector with its halves swapped.
 
+    Examples
+    --------
     >>> swap([1, 2, 3, 4, 5, 6]).tolist()
     [4.0, 5.0, 6.0, 1.0, 2.0, 3.0]
     """
@@ -135,10 +137,13 @@ def wrench_at(wrench, T):
     ndarray, shape (6,) or (N, 6)
         (f; m) in frame {b} (N, N m).
 
+    Examples
+    --------
     10 N down through x = 1 m: about the origin a moment of 10 N m about y; about
     the point itself none:
 
-    >>> import numpy as np, screwkit as sk
+    >>> import
+ numpy as np, screwkit as sk
     >>> w = wrench_at([0, 0, -10, 0, 10, 0], sk.transl(1, 0, 0))
     >>> np.round(w, 12).tolist()
     [0.0, 0.0, -10.0, 0.0, 0.0, 0.0]
