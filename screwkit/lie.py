@@ -285,7 +285,6 @@ def log_transform(T):
     >>> np.round(log_transform(T), 4) + 0.0
     array([ 0.    ,  0.    ,  1.5708,  0.    , -1.5708,  0.    ])
     """
-
     T = check_transform(T, "T")
     if isinstance(T, sp.MatrixBase):
         phi = log_rotation(T[:3, :3])

@@ -230,6 +230,13 @@ def rotation_from_rpy(rpy):
     Returns
     -------
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
+
+    Examples
+    --------
+    A yaw of 90 degrees alone is a quarter turn about z: x goes to y.
+
+    >>> (rotation_from_rpy([0.0, 0.0, np.pi / 2]) @ [1, 0, 0]).round(12) + 0.0
+    array([0., 1., 0.])
     """
     rpy = _triple(rpy, "rpy")
     if isinstance(rpy, sp.MatrixBase):
@@ -252,6 +259,13 @@ def rpy_from_rotation(R):
     -------
     ndarray, shape (3,) or (N, 3), or sympy.Matrix (3, 1)
         (roll, pitch, yaw) (rad).
+
+    Examples
+    --------
+    A turn about x is all roll:
+
+    >>> rpy_from_rotation(rotx(0.3)).round(4) + 0.0
+    array([0.3, 0. , 0. ])
     """
     angles = euler_from_rotation(R, "ZYX")
     if isinstance(angles, sp.MatrixBase):
@@ -328,6 +342,13 @@ def quaternion_from_rotation(R):
     Returns
     -------
     sympy.Matrix (4, 1) or ndarray, shape (4,) or (N, 4)
+
+    Examples
+    --------
+    A quarter turn about x: w = cos(45 deg), (x, y, z) = sin(45 deg) (1, 0, 0).
+
+    >>> quaternion_from_rotation(rotx(np.pi / 2)).round(4) + 0.0
+    array([0.7071, 0.7071, 0.    , 0.    ])
     """
     R = check_rotation(R, "R")
     if isinstance(R, sp.MatrixBase):
@@ -410,6 +431,14 @@ def quaternion_multiply(p, q):
     Returns
     -------
     sympy.Matrix (4, 1) or ndarray, shape (4,) or (N, 4)
+
+    Examples
+    --------
+    Two quarter turns about z make a half turn about z, q = (0, 0, 0, 1):
+
+    >>> q = [np.cos(np.pi / 4), 0.0, 0.0, np.sin(np.pi / 4)]
+    >>> quaternion_multiply(q, q).round(12) + 0.0
+    array([0., 0., 0., 1.])
     """
     if is_symbolic(p) or is_symbolic(q):
         p = as_sympy_matrix(p, "p", (4, 1))

@@ -142,8 +142,7 @@ def wrench_at(wrench, T):
     10 N down through x = 1 m: about the origin a moment of 10 N m about y; about
     the point itself none:
 
-    >>> import
- numpy as np, screwkit as sk
+    >>> import numpy as np, screwkit as sk
     >>> w = wrench_at([0, 0, -10, 0, 10, 0], sk.transl(1, 0, 0))
     >>> np.round(w, 12).tolist()
     [0.0, 0.0, -10.0, 0.0, 0.0, 0.0]

@@ -648,7 +648,6 @@ def exp_twist(twist, theta):
     >>> exp_twist([0, 0, 0, 1, 0, 0], 2.0)[:3, 3]
     array([2., 0., 0.])
     """
-
     if is_symbolic(twist) or is_symbolic(theta):
         xi = as_sympy_matrix(twist, "twist", (6, 1))
         return _exp_twist_symbolic(xi, _exact_angle(theta, "theta"))
