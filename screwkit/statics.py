@@ -597,6 +597,16 @@ class Eigenscrews:
         linear], its angular part a unit vector (its linear part, for pitch infinity).
     pitches : ndarray, shape (6,)
         Their pitches (m/rad); inf for a screw of pure translation.
+
+    Examples
+    --------
+    A unit spring in every direction, decoupled (f = dx, m = dtheta): the eigenscrews
+    have pitch +1 (lambda = 1) and -1 (lambda = -1) (see :func:`eigenscrews`).
+
+    >>> Z, I = np.zeros((3, 3)), np.eye(3)
+    >>> e = eigenscrews(np.block([[Z, I], [I, Z]]))
+    >>> np.round(e.values, 12).tolist(), np.round(e.pitches, 12).tolist()
+    ([1.0, 1.0, 1.0, -1.0, -1.0, -1.0], [1.0, 1.0, 1.0, -1.0, -1.0, -1.0])
     """
 
     values: np.ndarray
