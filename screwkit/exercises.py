@@ -1340,7 +1340,7 @@ def answer_box(chapter, number, script=None, seed=0):
     In a notebook the box shows as a field and a Check button; its text says how to
     check in Python:
 
-    >>> print(answer_box("rigid_motions", 5, script=False))  # doctest: +NORMALIZE_WHITESPACE
+    >>> print(answer_box("rigid_motions", 5, script=False))
     Answer box for rigid_motions exercise 5 (check it in the notebook with
     sk.exercises.check('rigid_motions', 5, answer))
     """
