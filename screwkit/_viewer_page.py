@@ -209,7 +209,8 @@ class Viewer:
         Returns
         -------
         str
-            The HTML.
+            The HTML: the figure's container, its parameters and the call that
+            mounts it, after three.js and ``viewer.js`` when they come with it.
 
         Examples
         --------

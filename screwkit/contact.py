@@ -379,7 +379,8 @@ class Closure:
         Returns
         -------
         bool
-            True when the certificate proves the answer.
+            True when the certificate proves the answer (closed: positive forces
+            that balance; open: a wrench that no contact force resists).
 
         Examples
         --------

@@ -217,7 +217,7 @@ def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
     Returns
     -------
     list of (s, r, h) triples
-        Three revolute joints (h = 0).
+        Three revolute joints (h = 0), each axis through the centre r.
 
     Examples
     --------

@@ -121,11 +121,14 @@ DRAWING_VALUES = {
 
 
 #: The Returns sections the mechanisms' limbs and the named arms share (filled in by
-#: :func:`_docstrings.fill`).
-_LIMBS_RETURNS = """Returns
+#: :func:`_docstrings.fill`); the mechanisms' ends with the heading of their Examples.
+_LIMBS_SECTIONS = """Returns
 -------
 list of limbs
-    In the zeroth-step format (module docstring)."""
+    In the zeroth-step format (module docstring).
+
+Examples
+--------"""
 _ARM_RETURNS = """Returns
 -------
 Chain
@@ -140,14 +143,12 @@ def _symbols(names, limbs, first, last):
     ]
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3prrr():
     """Tripteron, 3-PRRR: limb i has four parallel axes along X, Y, Z (paper §3.2.1).
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     Three limbs of four joints (P, R, R, R); the platform translates (the paper's
     3T), though Grübler-Kutzbach counts 0:
 
@@ -183,17 +184,15 @@ def pm_3prrr():
     return limbs
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3prpar():
     """STAR-like 3-PR(Pa)R: P and R along X, a parallelogram, and a last R along X
     (§3.2.2).
 
     Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     Each limb: P, R, the four hinges of the parallelogram, R (7 joints).
 
     >>> [len(limb) for limb in pm_3prpar()]
@@ -246,7 +245,7 @@ def _turn_about_z(angle):
     return turn
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_4prru():
     """4-PRRU with Schönflies motion (§3.2.3, after Kong and Gosselin).
 
@@ -256,10 +255,8 @@ def pm_4prru():
     and never uses theta_i3; here B and C follow theta_i2 and theta_i3 about the tilted
     axis.
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     Schönflies motion: three translations and the turn about the vertical.
 
     >>> from screwkit import mobility
@@ -290,15 +287,13 @@ def pm_4prru():
     return _around_z(limb, 4)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_6ups():
     """6-UPS (Gough–Stewart type): U at A, P along the leg, S at B; limbs turned by 60
     degrees (§3.2.4).
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     Six legs of 2 + 1 + 3 joints: the platform moves freely (3T3R).
 
     >>> from screwkit import mobility
@@ -325,15 +320,13 @@ def pm_6ups():
     return _around_z(limb, 6)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def planar_3rrr():
     """Planar 3-RRR: three RRR limbs with all axes along Z
     (3 motions in the plane: 2T1R).
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     >>> from screwkit import mobility
     >>> mobility(planar_3rrr()).directions
     ['Tx', 'Ty', 'Rz']
@@ -350,15 +343,13 @@ def planar_3rrr():
     return _around_z(limb, 3)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3rps():
     """3-RPS: R tangent to the base circle, P along the leg, S on the platform
     (1T2R).
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     Each limb: R, P and the three revolutes of the ball joint.
 
     >>> [len(limb) for limb in pm_3rps()]
@@ -376,7 +367,7 @@ def pm_3rps():
     return _around_z(limb, 3)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3ruu():
     """Delta-type translational 3-RUU (3T): the kinematic equivalent of Clavel's Delta
     with a U-U link in place of each spatial parallelogram
@@ -386,10 +377,8 @@ def pm_3ruu():
     about u by theta_12); a U at C (axes v, then u). Each limb then constrains the one
     couple along u x v. Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     Each limb: R, then two U joints of two revolutes each.
 
     >>> [len(limb) for limb in pm_3ruu()]
@@ -408,15 +397,13 @@ def pm_3ruu():
     return _around_z(limb, 3)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def spherical_3rrr():
     """Spherical 3-RRR (agile eye type): every joint axis passes through the origin
     (3R).
 
-    {returns}
+    {sections}
 
-    Examples
-    --------
     Every axis passes through the origin, so the platform only turns about it:
 
     >>> from screwkit import mobility
@@ -626,7 +613,7 @@ def ur5e():
     Returns
     -------
     Chain
-        The arm.
+        The arm, with the named configurations 'zero' and 'home'.
 
     Examples
     --------
@@ -667,7 +654,7 @@ def panda():
     Returns
     -------
     Chain
-        The arm.
+        The arm to its flange (the tool), with the named configuration 'ready'.
 
     Examples
     --------
@@ -713,7 +700,7 @@ def stanford():
     Returns
     -------
     Chain
-        The arm.
+        The arm, with the named configuration 'nominal'.
 
     Examples
     --------
@@ -756,7 +743,7 @@ def iiwa14():
     Returns
     -------
     Chain
-        The arm.
+        The arm, to its flange; no named configurations.
 
     Examples
     --------

@@ -114,7 +114,7 @@ class Screw:
         Returns
         -------
         Screw
-            A screw of this class (Screw, Twist or Wrench).
+            A screw of this class (Screw, Twist or Wrench) holding ``vector``.
 
         Examples
         --------

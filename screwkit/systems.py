@@ -480,7 +480,7 @@ class ScrewSystem:
         Returns
         -------
         bool
-            True if adding it does not raise the rank.
+            True if adding it does not raise the rank (generically, for symbols).
 
         Examples
         --------

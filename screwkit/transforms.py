@@ -255,7 +255,8 @@ def _elementary_rotation(theta, axis):
     return R
 
 
-#: The sections rotx, roty and rotz share (filled in by :func:`_docstrings.fill`).
+#: The sections rotx, roty and rotz share, to their Examples heading (filled in by
+#: :func:`_docstrings.fill`).
 _ELEMENTARY_SECTIONS = """Parameters
 ----------
 theta : float, array-like of shape (N,), or a SymPy expression
@@ -264,7 +265,10 @@ theta : float, array-like of shape (N,), or a SymPy expression
 Returns
 -------
 ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
-    The rotation matrix (exact when ``theta`` is symbolic)."""
+    The rotation matrix (exact when ``theta`` is symbolic).
+
+Examples
+--------"""
 
 
 @fill(sections=_ELEMENTARY_SECTIONS)
@@ -273,8 +277,6 @@ def rotx(theta):
 
     {sections}
 
-    Examples
-    --------
     >>> rotx(0.5)[1:, 1:].round(4)
     array([[ 0.8776, -0.4794],
            [ 0.4794,  0.8776]])
@@ -288,8 +290,6 @@ def roty(theta):
 
     {sections}
 
-    Examples
-    --------
     A quarter turn about y carries z to x.
 
     >>> (roty(np.pi / 2) @ [0, 0, 1]).round(12) + 0.0
@@ -304,12 +304,13 @@ def rotz(theta):
 
     {sections}
 
-    Examples
-    --------
-    A quarter turn about z carries x to y.
+    A quarter turn about z carries x to y and y to -x (the columns of R are the
+    images of x, y, z):
 
-    >>> (rotz(np.pi / 2) @ [1, 0, 0]).round(12) + 0.0
-    array([0., 1., 0.])
+    >>> rotz(np.pi / 2)[:, :2].round(12) + 0.0
+    array([[ 0., -1.],
+           [ 1.,  0.],
+           [ 0.,  0.]])
     """
     return _elementary_rotation(theta, 2)
 

@@ -167,7 +167,7 @@ def planar_3rpr(base=None, platform=None, home=None, leg_limits=None):
     Returns
     -------
     ParallelManipulator
-        Planar (2T1R), three legs.
+        Planar (2T1R), three legs of actuated length (m).
 
     Examples
     --------
@@ -276,7 +276,7 @@ def delta(
     Returns
     -------
     ParallelManipulator
-        Translational (3T), three legs; the actuated values are crank angles (rad).
+        Translational (3T), three legs driven by crank angles (rad).
 
     Examples
     --------

@@ -181,7 +181,7 @@ def draw_workspace(workspace, ax=None, color="tab:green"):
     Returns
     -------
     matplotlib Axes
-        The axes drawn on, x and y in m, equal aspect.
+        The axes drawn on (x and y in m, equal aspect), the region shaded.
 
     Examples
     --------
