@@ -503,7 +503,8 @@ def force_closure(contacts, facets=8):
     Returns
     -------
     Closure
-        ``closed``, ``rank`` and the certificate; ``verify()`` checks it.
+        ``closed`` (for the cones' pyramids in space), ``rank`` and the certificate;
+        ``verify()`` checks it.
 
     Examples
     --------

@@ -606,7 +606,8 @@ def common_normal(a, b):
     Parameters
     ----------
     a, b : Line, 6-vector, or (N, 6) array of lines
-        The lines.
+        The lines, the normal running from a to b (a batch pairs as in
+        :func:`mutual_moment`).
 
     Returns
     -------
@@ -633,7 +634,7 @@ def distance(a, b):
     Parameters
     ----------
     a, b : Line, 6-vector, or (N, 6) array of lines
-        The lines.
+        The lines (a batch pairs as in :func:`mutual_moment`).
 
     Returns
     -------
