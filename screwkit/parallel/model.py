@@ -94,6 +94,7 @@ class ParallelIK:
     A 3-RPR whose home pose has legs of 5, 4 and 4 m (A = (0, 0), (4, 0), (3, 9);
     C = (3, 4), (4, 4), (3, 5)); the passive angles of the legs are atan2(4, 3),
     90 and -90 degrees.
+
     >>> from screwkit.parallel import planar_3rpr
     >>> from screwkit.transforms import transl
     >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
@@ -164,6 +165,7 @@ class Workspace:
     --------
     One grid point, the home of a 3-RPR with legs of 5, 4 and 4 m there; the
     determinant of J's free columns (w_z, v_x, v_y) is 0.6 by hand.
+
     >>> from screwkit.parallel import planar_3rpr
     >>> from screwkit.transforms import transl
     >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
@@ -456,6 +458,7 @@ class ParallelManipulator:
         --------
         By Pythagoras: from (0, 0) to (3, 4) is 5, from (4, 0) to (4, 4) is 4, from
         (3, 9) to (3, 5) is 4.
+
         >>> from screwkit.parallel import planar_3rpr
         >>> from screwkit.transforms import transl
         >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
@@ -566,6 +569,7 @@ class ParallelManipulator:
         Row i is [C_i x n_i, n_i], n_i the unit leg direction: for the leg from (0, 0)
         to (3, 4), n = (0.6, 0.8) and C x n = 0; for (4, 0) to (4, 4), n = y and
         C x n = 4 z; for (3, 9) to (3, 5), n = -y and C x n = -3 z.
+
         >>> from screwkit.parallel import planar_3rpr
         >>> from screwkit.transforms import transl
         >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
@@ -637,6 +641,7 @@ class ParallelManipulator:
         Examples
         --------
         Each R-P-R limb: pitches 0, oo, 0, the slide (index 1) actuated.
+
         >>> from screwkit.parallel import planar_3rpr
         >>> from screwkit.transforms import transl
         >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
@@ -739,6 +744,7 @@ class ParallelManipulator:
         --------
         The 3-RPR's legs at home are not concurrent (two are parallel, the third is
         not): a regular pose.
+
         >>> from screwkit.parallel import planar_3rpr
         >>> from screwkit.transforms import transl
         >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
@@ -813,6 +819,7 @@ class ParallelManipulator:
         Examples
         --------
         From a guess 0.1 m off, Newton finds the pose whose legs are 5, 4 and 4 m:
+
         >>> from screwkit.parallel import planar_3rpr
         >>> from screwkit.transforms import transl
         >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
@@ -1077,6 +1084,7 @@ class ParallelManipulator:
         Examples
         --------
         Without leg limits a 3-RPR reaches every point of a small grid:
+
         >>> from screwkit.parallel import planar_3rpr
         >>> from screwkit.transforms import transl
         >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
