@@ -45,22 +45,10 @@ from ..lie import log_rotation, log_transform
 from ..links import Joint
 from ..tolerances import NEAR_SINGULAR, SERIES_BELOW, SLERP_LINEAR_BELOW
 from ..transforms import _wrap_angle, exp_twist
+from . import LAZY
 
-__all__ = [
-    "TimeScaling",
-    "cubic",
-    "quintic",
-    "trapezoidal",
-    "fastest_joint_scaling",
-    "joint_path",
-    "screw_path",
-    "cartesian_path",
-    "slerp",
-    "via_points",
-    "ViaPoints",
-    "follow_path",
-    "PathIK",
-]
+# the names are listed once, in the family's table of what loads on first use
+__all__ = list(LAZY["trajectory"])
 
 
 # ---- time scalings ------------------------------------------------------------------
