@@ -94,6 +94,18 @@ def draw_lines(ax, lines, length=2.0, colors=None, labels=None, lw=1.5):
         One legend label a line.
     lw : float, optional
         Line width (points).
+
+    Examples
+    --------
+    The x axis, drawn 2 m long about the origin (its point nearest the origin):
+
+    >>> import matplotlib.pyplot as plt
+    >>> from screwkit.plotting import axes3d
+    >>> ax = axes3d()
+    >>> draw_lines(ax, [Line.through([0, 0, 0], [1, 0, 0])], length=2.0)
+    >>> np.array(ax.lines[0].get_data_3d()).round(12).tolist()
+    [[-1.0, 1.0], [0.0, 0.0], [0.0, 0.0]]
+    >>> plt.close(ax.figure)
     """
     _check_3d(ax)
     lines = _lines(lines)
@@ -135,6 +147,19 @@ def draw_configuration(ax, lines, length=2.0, size=1.0):
     -------
     screwkit.lines.Dependency
         The rank and the named configuration drawn.
+
+    Examples
+    --------
+    The three coordinate axes meet at the origin: a star of rank 3.
+
+    >>> import matplotlib.pyplot as plt
+    >>> from screwkit.plotting import axes3d
+    >>> ax = axes3d()
+    >>> axes = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
+    >>> found = draw_configuration(ax, [Line.through([0, 0, 0], d) for d in axes])
+    >>> found.rank, found.name
+    (3, 'star')
+    >>> plt.close(ax.figure)
     """
     _check_3d(ax)
     lines = _lines(lines)
@@ -196,6 +221,20 @@ def draw_cylindroid(ax, system, radius=1.0, steps=90, cmap="viridis"):
     matplotlib.collections.LineCollection
         The 3D lines drawn, a ``Line3DCollection`` (for a colorbar:
         ``ax.figure.colorbar(result, ax=ax)``).
+
+    Examples
+    --------
+    A rotation about x (pitch 0) and a screw of pitch 1 along y: the members'
+    pitches h1 cos^2 t + h2 sin^2 t run from 0 to 1.
+
+    >>> import matplotlib.pyplot as plt
+    >>> from screwkit.plotting import axes3d
+    >>> ax = axes3d()
+    >>> system = ScrewSystem([[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 1, 0]])
+    >>> pitches = draw_cylindroid(ax, system, steps=12).get_array()
+    >>> len(pitches), round(float(pitches.min()), 12), round(float(pitches.max()), 12)
+    (12, 0.0, 1.0)
+    >>> plt.close(ax.figure)
     """
     from matplotlib import colormaps  # noqa: PLC0415 (display layer)
     from mpl_toolkits.mplot3d.art3d import Line3DCollection  # noqa: PLC0415

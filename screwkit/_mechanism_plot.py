@@ -143,6 +143,19 @@ def draw_mechanism(limbs, values, ax=None, twists=None, axis_length=None, title=
     it is one rigid platform only when the values satisfy the loop-closure equations.
     The catalogue's :data:`screwkit.robots.DRAWING_VALUES` give every limb the same
     values, so the symmetric limbs close on a regular polygon.
+
+    Examples
+    --------
+    The planar 3-RRR: three limbs between one base and one platform.
+
+    >>> import matplotlib.pyplot as plt
+    >>> import screwkit as sk
+    >>> ax = draw_mechanism(sk.robots.planar_3rrr(),
+    ...                     sk.robots.DRAWING_VALUES["planar_3rrr"])
+    >>> gids = [artist.get_gid() for artist in ax.get_children()]
+    >>> gids.count("limb"), gids.count("base"), gids.count("platform")
+    (3, 1, 1)
+    >>> plt.close(ax.figure)
     """
     joints = evaluate(limbs, values)
     if axis_length is not None:

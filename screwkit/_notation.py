@@ -26,6 +26,12 @@ def textbook(expr, q_symbols=None, collect=True):
     -------
     SymPy expression or matrix
         ``expr`` with c1, s23, ... symbols in place of the cosines and sines.
+
+    Examples
+    --------
+    >>> q1, q2, q3 = sp.symbols("q1 q2 q3")
+    >>> textbook(sp.cos(q1) * sp.cos(q2 + q3) + sp.sin(q2))
+    c1*c_{23} + s2
     """
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(lambda e: textbook(e, q_symbols, collect))

@@ -55,6 +55,17 @@ def stepped_figure(
     -------
     Viewer
         The figures and their control, displayed as HTML.
+
+    Examples
+    --------
+    Three values of a slider, each with its text computed now:
+
+    >>> figure = stepped_figure(lambda k: f"k = {k:g}", "k", "1/s",
+    ...                         values=grid(0, 1, 0.5))
+    >>> figure
+    k (1/s): 3 precomputed values from 0 to 1, showing 0
+    >>> figure.model["values"]
+    [0.0, 0.5, 1.0]
     """
     if (values is None) == (choices is None):
         raise ValueError(
@@ -154,6 +165,11 @@ def grid(low, high, step):
     -------
     list of float
         The values.
+
+    Examples
+    --------
+    >>> grid(-1, 1, 0.5)
+    [-1.0, -0.5, 0.0, 0.5, 1.0]
     """
     values = _sliders.grid_values(low, high, step)
     if not _sliders.on_grid(values[0], values[1] - values[0]):

@@ -44,6 +44,16 @@ class PrincipalScrews(NamedTuple):
         Whether the principal screws are determined (up to sign).
     reason : str
         Why not, in words ('' when unique).
+
+    Examples
+    --------
+    A rotation about z and a screw of pitch 1 along z through the origin span the
+    screws along z of every pitch; the translation along z is the one of pitch oo:
+
+    >>> from screwkit.systems import ScrewSystem
+    >>> along_z = ScrewSystem([[0, 0, 1, 0, 0, 0], [0, 0, 1, 0, 0, 1]])
+    >>> along_z.principal_screws().screws, along_z.principal_screws().pitches
+    ([Twist([0, 0, 0, 0, 0, 1])], [oo])
     """
 
     screws: list
@@ -88,6 +98,17 @@ class Classification(NamedTuple):
         'IIID' spatial translations. Their finer subtypes (equal principal pitches,
         a translation normal or not to the finite screws) are told by ``type`` and
         ``description``.
+
+    Examples
+    --------
+    The rotations about the origin (a ball joint): order 3, no translation, every
+    principal pitch 0.
+
+    >>> from screwkit.systems import ScrewSystem
+    >>> axes = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
+    >>> c = ScrewSystem([(d, [0, 0, 0], 0) for d in axes]).classify()
+    >>> c.order, c.type, c.translations, c.pitches, c.name, c.gibson_hunt
+    (3, '3-IC', 0, [0, 0, 0], 'spherical motion', 'IIIA')
     """
 
     order: int

@@ -104,6 +104,16 @@ def show_platform(
     Rz(yaw) Ry(pitch) Rx(roll) (planar: Trans(x, y, z_home) Rz(phi), seen from
     above), draws leg i from a_i to p + R b_i, prints every length |p + R b_i - a_i|
     (m) and marks a leg outside its limits.
+
+    Examples
+    --------
+    A spatial platform gets six sliders, a planar one three (x, y and the turn phi):
+
+    >>> from screwkit.parallel import planar_3rpr, stewart_gough
+    >>> [s["label"] for s in show_platform(stewart_gough()).model["sliders"]]
+    ['x', 'y', 'z', 'roll', 'pitch', 'yaw']
+    >>> [s["label"] for s in show_platform(planar_3rpr()).model["sliders"]]
+    ['x', 'y', 'phi']
     """
     from .orientation import rpy_from_rotation
 
@@ -238,6 +248,14 @@ def show_mechanism(limbs, values=None, twists=None, title=None, size=(560, 480))
     the last joints), each limb through its joints (a parallelogram Pa as its closed
     loop), and each joint's axis, coloured as in the mobility figures: blue cylinders
     revolute, orange boxes prismatic, purple cylinders helical.
+
+    Examples
+    --------
+    A catalogue mechanism by its name, at its drawing values:
+
+    >>> show_mechanism("planar_3rrr")
+    planar_3rrr: 3 limbs of 3, 3, 3 joints (revolute). Joints: blue cylinders
+    revolute.
     """
     from . import robots
     from ._mechanism_plot import evaluate, twist_arrows

@@ -107,6 +107,13 @@ def library_script():
     -------
     str
         The script's JavaScript text.
+
+    Examples
+    --------
+    It defines three.js only where the page lacks it:
+
+    >>> library_script().startswith("if(!window.THREE)")
+    True
     """
     if _library["script"] is None:
         text = _classic_three().encode("utf-8")
@@ -130,7 +137,15 @@ def library_script():
 
 def resend_library():
     """Ship three.js again with the next viewer (after the output that carried it was
-    cleared)."""
+    cleared).
+
+    Examples
+    --------
+    >>> import screwkit as sk
+    >>> resend_library()
+    >>> library_script() in sk.viewer.robot_viewer(sk.robots.planar([1.0, 0.5])).html()
+    True
+    """
     _library["shipped"] = False
 
 
@@ -151,6 +166,15 @@ class Viewer:
         The figure's parameters, JSON-ready.
     summary : str
         Its plain-text form (what a terminal or a text-only output shows).
+
+    Examples
+    --------
+    What the viewers return: a model for ``viewer.js`` and its text.
+
+    >>> import screwkit as sk
+    >>> figure = sk.viewer.screw_motion_viewer([0, 0, 1], [1, 0, 0], 0)
+    >>> isinstance(figure, Viewer), figure.model["kind"], figure.model["h"]
+    (True, 'screw', 0.0)
     """
 
     def __init__(self, model, summary):
@@ -185,7 +209,18 @@ class Viewer:
         Returns
         -------
         str
-            The HTML.
+            The HTML: the figure's container, its parameters and the call that
+            mounts it, after three.js and ``viewer.js`` when they come with it.
+
+        Examples
+        --------
+        Without the library a figure is its parameters and one call to mount it:
+
+        >>> import screwkit as sk
+        >>> figure = sk.viewer.screw_motion_viewer([0, 0, 1], [1, 0, 0], 0)
+        >>> text = figure.html(library=False)
+        >>> f'id="{figure.id}"' in text, library_script() in text
+        (True, False)
         """
         if library is not None:
             library = check_flag(library, "library")
@@ -237,6 +272,13 @@ class Viewer:
         -------
         str
             The page's HTML.
+
+        Examples
+        --------
+        >>> import screwkit as sk
+        >>> page = sk.viewer.screw_motion_viewer([0, 0, 1], [1, 0, 0], 0).page("A turn")
+        >>> page.startswith("<!DOCTYPE html>"), "<title>A turn</title>" in page
+        (True, True)
         """
         if title is not None and not isinstance(title, str):
             raise TypeError(f"title must be a str or None, got {describe(title)}")

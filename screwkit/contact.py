@@ -361,6 +361,17 @@ class Closure:
     twist : ndarray, shape (d,) or None
         Open: Pi y, a twist every contact allows (power V^T Pi w_i >= 0: each contact
         separates or slides).
+
+    Examples
+    --------
+    Two opposite fingers with friction pinch a body: closed, with strictly positive
+    forces on the four edges of the two friction cones.
+
+    >>> pinch = [Contact([1, 0], [-1, 0], "friction", mu=0.3),
+    ...          Contact([-1, 0], [1, 0], "friction", mu=0.3)]
+    >>> result = force_closure(pinch)
+    >>> result.closed, result.rank, bool((result.forces > 0).all())
+    (True, 3, True)
     """
 
     closed: bool
@@ -376,7 +387,15 @@ class Closure:
         Returns
         -------
         bool
-            True when the certificate proves the answer.
+            True when the certificate proves the answer (closed: positive forces
+            that balance; open: a wrench that no contact force resists).
+
+        Examples
+        --------
+        >>> pinch = [Contact([1, 0], [-1, 0], "friction", mu=0.3),
+        ...          Contact([-1, 0], [1, 0], "friction", mu=0.3)]
+        >>> force_closure(pinch).verify()
+        True
         """
         W = self.wrenches
         d = W.shape[0]
@@ -506,7 +525,8 @@ def force_closure(contacts, facets=8, cone="pyramid", max_facets=4096):
     Returns
     -------
     Closure
-        ``closed``, ``rank`` and the certificate; ``verify()`` checks it.
+        ``closed`` (for the cones' pyramids in space), ``rank`` and the certificate;
+        ``verify()`` checks it.
 
     Examples
     --------

@@ -663,6 +663,14 @@ def answer_key(chapter, number, seed=0):
     AssessedError
         For an assessed exercise (book/assessed.yml) where this screwkit has no key:
         an installed package holds none (see :func:`is_assessed`).
+
+    Examples
+    --------
+    The angle of a rotation whose trace is 0 (1 + 2 cos(theta) = 0): 2 pi / 3.
+
+    >>> key = answer_key("rigid_motions", 5)
+    >>> key["exact"], round(key["values"][0], 4), key["unit"]
+    ('2*pi/3', 2.0944, 'rad')
     """
     entry = _entry(chapter, number)
     if "answer" not in entry and entry.get("assessed"):
@@ -909,6 +917,13 @@ class Verdict:
         The chapter's name (the exercise's key), for the printed verdict.
     number : int, optional
         The exercise's number in its chapter.
+
+    Examples
+    --------
+    A verdict is true when the answer is right (2 pi / 3 is about 2.0944 rad):
+
+    >>> bool(check("rigid_motions", 5, "2*pi/3")), bool(check("rigid_motions", 5, "1"))
+    (True, False)
     """
 
     correct: bool
@@ -1153,6 +1168,8 @@ def check(chapter, number, answer, seed=0):
         this screwkit does not have (an installed package) gives a verdict saying
         that the teacher marks it.
 
+    Examples
+    --------
     >>> check("rigid_motions", 2, "2, 0, 0").correct
     True
     """
@@ -1205,6 +1222,12 @@ class AnswerBox:
         ``values``, ``shape``, ``unit``, ...).
     script : str
         The JavaScript of ``exercises.js``, inlined into the page.
+
+    Examples
+    --------
+    >>> box = answer_box("rigid_motions", 5, script=False)
+    >>> box.key["exact"], box.key["unit"]
+    ('2*pi/3', 'rad')
     """
 
     def __init__(self, key, script):
@@ -1311,6 +1334,15 @@ def answer_box(chapter, number, script=None, seed=0):
         displayed as an HTML field, a Check button and a verdict announced to
         screen readers; the check runs in the browser with the key's tolerance,
         forms and hint.
+
+    Examples
+    --------
+    In a notebook the box shows as a field and a Check button; its text says how to
+    check in Python:
+
+    >>> print(answer_box("rigid_motions", 5, script=False))
+    Answer box for rigid_motions exercise 5 (check it in the notebook with
+    sk.exercises.check('rigid_motions', 5, answer))
     """
     global _script_sent
     try:

@@ -54,6 +54,12 @@ def vee(W):
     -------
     ndarray, shape (3,) or (..., 3), or sympy.Matrix (3, 1)
         w = (W[2, 1], W[0, 2], W[1, 0]).
+
+    Examples
+    --------
+    >>> W = [[0, -3, 2], [3, 0, -1], [-2, 1, 0]]  # [w] of w = (1, 2, 3)
+    >>> vee(W)
+    array([1., 2., 3.])
     """
     if is_symbolic(W):
         W = as_sympy_matrix(W, "W", (3, 3))
@@ -80,8 +86,20 @@ def adjoint(T):
     -------
     ndarray, shape (6, 6) or (N, 6, 6); sympy.Matrix (6, 6) for SymPy input
 
+    Examples
+    --------
+    The identity pose changes nothing: Ad(I) is the 6x6 identity.
+
     >>> float(adjoint(np.eye(4)).trace())
     6.0
+
+    Frame {b} sits at p = (1, 0, 0) in {a}. A spin about {b}'s z axis, written in {a},
+    is a rotation about the line x = 1: its moment is p x z = -y.
+
+    >>> T = np.eye(4)
+    >>> T[0, 3] = 1.0
+    >>> adjoint(T) @ [0, 0, 1, 0, 0, 0]
+    array([ 0.,  0.,  1.,  0., -1.,  0.])
     """
     T = check_transform(T, "T")
     if isinstance(T, sp.MatrixBase):
@@ -155,8 +173,15 @@ def log_rotation(R):
     -------
     ndarray, shape (3,) or (N, 3) (rad); sympy.Matrix (3, 1) for SymPy input
 
+    Examples
+    --------
     >>> np.round(log_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]]), 6)   # Rz(90 deg)
     array([0.      , 0.      , 1.570796])
+
+    A half turn about x (theta = pi, where the skew part vanishes):
+
+    >>> np.round(log_rotation(np.diag([1.0, -1.0, -1.0])), 6)
+    array([3.141593, 0.      , 0.      ])
     """
     R = check_rotation(R, "R")
     if isinstance(R, sp.MatrixBase):
@@ -243,6 +268,22 @@ def log_transform(T):
     -------
     ndarray, shape (6,) or (N, 6), ordered [omega theta (rad); v theta (m)];
         sympy.Matrix (6, 1) for SymPy input
+
+    Examples
+    --------
+    A pure translation by p gives [0; p]:
+
+    >>> T = np.eye(4)
+    >>> T[:3, 3] = [1.0, 2.0, 3.0]
+    >>> log_transform(T)
+    array([0., 0., 0., 1., 2., 3.])
+
+    A quarter turn about the vertical line through (1, 0, 0) (so p = (1, -1, 0)):
+    omega = z, v = -omega x r = -y, both times theta = pi / 2.
+
+    >>> T = np.array([[0, -1, 0, 1], [1, 0, 0, -1], [0, 0, 1, 0], [0, 0, 0, 1]])
+    >>> np.round(log_transform(T), 4) + 0.0
+    array([ 0.    ,  0.    ,  1.5708,  0.    , -1.5708,  0.    ])
     """
     T = check_transform(T, "T")
     if isinstance(T, sp.MatrixBase):

@@ -81,6 +81,14 @@ def revolute(s, r):
     -------
     list of (sympy.Matrix, sympy.Matrix, int)
         One (s, r, h) triple, h = 0.
+
+    Examples
+    --------
+    The vertical axis through (1, 0, 0); its screw (s; r x s) has moment -y:
+
+    >>> [joint] = revolute([0, 0, 1], [1, 0, 0])
+    >>> [list(v) for v in joint[:2]], joint[2], Screw.from_axis(*joint)
+    ([[0, 0, 1], [1, 0, 0]], 0, Screw([0, 0, 1, 0, -1, 0]))
     """
     return [(_direction(s, "s"), _vec(r, "r"), 0)]
 
@@ -99,6 +107,14 @@ def prismatic(s, r=(0, 0, 0)):
     -------
     list of (sympy.Matrix, sympy.Matrix, sympy.oo)
         One (s, r, h) triple, h = oo.
+
+    Examples
+    --------
+    A slide along x: the screw (0; s), whatever the point.
+
+    >>> [joint] = prismatic([1, 0, 0])
+    >>> joint[2], Screw.from_axis(*joint)
+    (oo, Screw([0, 0, 0, 1, 0, 0]))
     """
     return [(_direction(s, "s"), _vec(r, "r"), sp.oo)]
 
@@ -117,6 +133,14 @@ def helical(s, r, h):
     -------
     list of (sympy.Matrix, sympy.Matrix, sympy.Expr)
         One (s, r, h) triple.
+
+    Examples
+    --------
+    A screw thread along z advancing 1 cm per radian: its screw is (z; h z).
+
+    >>> [joint] = helical([0, 0, 1], [0, 0, 0], sp.Rational(1, 100))
+    >>> Screw.from_axis(*joint)
+    Screw([0, 0, 1, 0, 0, 1/100])
     """
     if isinstance(h, (str, bytes)) or h is None or _is_infinite_pitch(h):
         raise TypeError(
@@ -138,6 +162,11 @@ def cylindrical(s, r):
     -------
     list of (s, r, h) triples
         R then P on the axis (h = 0, then h = oo).
+
+    Examples
+    --------
+    >>> [Screw.from_axis(*joint) for joint in cylindrical([0, 0, 1], [1, 0, 0])]
+    [Screw([0, 0, 1, 0, -1, 0]), Screw([0, 0, 0, 0, 0, 1])]
     """
     return revolute(s, r) + prismatic(s, r)
 
@@ -156,6 +185,14 @@ def universal(s1, s2, r):
     -------
     list of (s, r, h) triples
         Two revolute joints (h = 0).
+
+    Examples
+    --------
+    Axes x and y crossing at (0, 0, 1): moments r x s = z x x = y and z x y = -x.
+
+    >>> [Screw.from_axis(*joint) for joint in universal([1, 0, 0], [0, 1, 0],
+    ...                                                 [0, 0, 1])]
+    [Screw([1, 0, 0, 0, 1, 0]), Screw([0, 1, 0, -1, 0, 0])]
     """
     first, second = revolute(_vec(s1, "s1"), r), revolute(_vec(s2, "s2"), r)
     if _parallel(first[0][0], second[0][0]):
@@ -180,7 +217,14 @@ def spherical(r, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
     Returns
     -------
     list of (s, r, h) triples
-        Three revolute joints (h = 0).
+        Three revolute joints (h = 0), each axis through the centre r.
+
+    Examples
+    --------
+    A ball joint at the origin: rotations about x, y and z.
+
+    >>> [Screw.from_axis(*joint) for joint in spherical([0, 0, 0])]
+    [Screw([1, 0, 0, 0, 0, 0]), Screw([0, 1, 0, 0, 0, 0]), Screw([0, 0, 1, 0, 0, 0])]
     """
     if isinstance(axes, (str, bytes)) or not hasattr(axes, "__len__") or len(axes) != 3:
         raise ValueError(
@@ -220,6 +264,14 @@ def parallelogram(s, a1, a2, b1, b2):
     -------
     list of (s, r, h) triples
         Four revolute joints (h = 0), one at each corner.
+
+    Examples
+    --------
+    A unit square in the xz plane, hinged about y at its corners:
+
+    >>> limb = parallelogram([0, 1, 0], [0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1])
+    >>> [list(r) for _, r, _ in limb]
+    [[0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1]]
     """
     corners = [
         _vec(c, name) for c, name in ((a1, "a1"), (a2, "a2"), (b1, "b1"), (b2, "b2"))
@@ -271,6 +323,16 @@ def rotate_limb(limb, R):
     -------
     list of (s, r, h) triples
         (R s, R r, h) for each joint.
+
+    Examples
+    --------
+    A quarter turn about z carries the x axis through (1, 0, 0) to the y axis
+    through (0, 1, 0):
+
+    >>> quarter_turn = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
+    >>> [(s, r, h)] = rotate_limb(revolute([1, 0, 0], [1, 0, 0]), quarter_turn)
+    >>> list(s), list(r), h
+    ([0, 1, 0], [0, 1, 0], 0)
     """
     _check_limb(limb)
     if not (isinstance(R, sp.MatrixBase) and _exact_rotation(R)):
@@ -322,6 +384,12 @@ def translate_limb(limb, p):
     -------
     list of (s, r, h) triples
         (s, r + p, h) for each joint.
+
+    Examples
+    --------
+    >>> [(s, r, h)] = translate_limb(revolute([0, 0, 1], [0, 0, 0]), [1, 2, 0])
+    >>> list(s), list(r), h
+    ([0, 0, 1], [1, 2, 0], 0)
     """
     _check_limb(limb)
     p = _vec(p, "p")

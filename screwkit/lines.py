@@ -544,6 +544,16 @@ class CommonNormal(NamedTuple):
     unique : bool
         False for parallel lines (any foot on a, moved along the direction, gives
         another) and for the same line.
+
+    Examples
+    --------
+    The x axis and the line parallel to y at height 2: the normal is the z axis
+    from the origin up to (0, 0, 2).
+
+    >>> cn = common_normal(Line.through([0, 0, 0], [1, 0, 0]),
+    ...                    Line.through([0, 0, 2], [0, 1, 2]))
+    >>> cn.segment.T, cn.distance, cn.unique
+    (Matrix([[0, 0, 2]]), 2, True)
     """
 
     foot_a: object
@@ -596,7 +606,8 @@ def common_normal(a, b):
     Parameters
     ----------
     a, b : Line, 6-vector, or (N, 6) array of lines
-        The lines.
+        The lines, the normal running from a to b (a batch pairs as in
+        :func:`mutual_moment`).
 
     Returns
     -------
@@ -623,7 +634,7 @@ def distance(a, b):
     Parameters
     ----------
     a, b : Line, 6-vector, or (N, 6) array of lines
-        The lines.
+        The lines (a batch pairs as in :func:`mutual_moment`).
 
     Returns
     -------
@@ -698,6 +709,15 @@ class CentralAxis(NamedTuple):
         f (N).
     couple : SymPy 3-vector or ndarray (3,)
         The couple along the axis, h f (N m); the whole moment m for a pure couple.
+
+    Examples
+    --------
+    1 N along z with a moment of 1 N m about z: a force on the z axis and a couple
+    of pitch 1 m along it.
+
+    >>> ca = central_axis([0, 0, 1, 0, 0, 1])
+    >>> ca.line.point.T, ca.pitch, ca.force.T, ca.couple.T
+    (Matrix([[0, 0, 0]]), 1, Matrix([[0, 0, 1]]), Matrix([[0, 0, 1]]))
     """
 
     line: object
@@ -782,6 +802,17 @@ class Dependency(NamedTuple):
         where it applies.
     description : str
         The configuration in one sentence.
+
+    Examples
+    --------
+    Three lines in the plane z = 0 span a plane of lines (rank 3), whatever their
+    directions:
+
+    >>> plane = [Line.through([0, 0, 0], [1, 0, 0]), Line.through([0, 0, 0], [0, 1, 0]),
+    ...          Line.through([1, 0, 0], [0, 1, 0])]
+    >>> result = dependency(plane)
+    >>> result.rank, result.count, result.dependent, result.name
+    (3, 3, False, 'plane')
     """
 
     rank: int

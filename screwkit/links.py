@@ -32,7 +32,13 @@ UNIT_TOL = UNIT_SCREW_TOL
 
 class Joint(enum.Enum):
     """The kind of a joint: its variable q is an angle (revolute, helical) or a length
-    (prismatic)."""
+    (prismatic).
+
+    Examples
+    --------
+    >>> Joint("P"), Link.revolute(a=1).joint is Joint.REVOLUTE
+    (<Joint.PRISMATIC: 'P'>, True)
+    """
 
     REVOLUTE = "R"
     PRISMATIC = "P"
@@ -40,7 +46,19 @@ class Joint(enum.Enum):
 
 
 class Convention(enum.Enum):
-    """Which DH convention a chain's table follows."""
+    """Which DH convention a chain's table follows.
+
+    Examples
+    --------
+    A link of length a = 1 turned a quarter turn: the standard convention turns
+    before the length (its frame ends at y = 1), Craig's modified one after (x = 1).
+
+    >>> link = Link.revolute(a=1)
+    >>> link.transform(sp.pi / 2, Convention.STANDARD)[:3, 3].T
+    Matrix([[0, 1, 0]])
+    >>> link.transform(sp.pi / 2, Convention.MODIFIED)[:3, 3].T
+    Matrix([[1, 0, 0]])
+    """
 
     STANDARD = "standard"  # Rz(theta) Tz(d) Tx(a) Rx(alpha)
     MODIFIED = "modified"  # Craig: Rx(alpha) Tx(a) Rz(theta) Tz(d)
@@ -115,6 +133,11 @@ class Link:
         Added to the joint variable q (rad or m).
     qlim : (float, float) or None, optional
         (min, max) of q, or None for no limit.
+
+    Examples
+    --------
+    >>> Link(Joint.REVOLUTE, a=1)
+    Link(joint=<Joint.REVOLUTE: 'R'>, d=0, a=1, alpha=0, theta=0, offset=0, qlim=None)
     """
 
     joint: Joint
@@ -145,6 +168,13 @@ class Link:
         d, a : number or SymPy expression, optional
             The DH lengths (m).
         {rest}
+
+        Examples
+        --------
+        A 1 m link turned a quarter turn ends on the y axis:
+
+        >>> Link.revolute(a=1).transform(sp.pi / 2)[:3, 3].T
+        Matrix([[0, 1, 0]])
         """
         return cls(Joint.REVOLUTE, d=d, a=a, alpha=alpha, offset=offset, qlim=qlim)
 
@@ -160,6 +190,14 @@ class Link:
         a : number or SymPy expression, optional
             The DH length (m).
         {rest}
+
+        Examples
+        --------
+        A slide along z of at most 0.5 m, extended by half a metre:
+
+        >>> link = Link.prismatic(qlim=(0, 0.5))
+        >>> link.qlim, link.transform(sp.Rational(1, 2))[:3, 3].T
+        ((0.0, 0.5), Matrix([[0, 0, 1/2]]))
         """
         return cls(
             Joint.PRISMATIC, theta=theta, a=a, alpha=alpha, offset=offset, qlim=qlim
@@ -180,6 +218,13 @@ class Link:
         -------
         sympy.Matrix (4, 4)
             The homogeneous transform of the link.
+
+        Examples
+        --------
+        With alpha = pi / 2 the next z axis is the old -y (Rx(pi / 2) carries z to -y):
+
+        >>> Link.revolute(alpha=sp.pi / 2).transform(0)[:3, 2].T
+        Matrix([[0, -1, 0]])
         """
         check_convention(convention)
         theta, d = (

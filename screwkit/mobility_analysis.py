@@ -59,6 +59,14 @@ def grubler_kutzbach(links, joints, freedoms, order=6):
     -------
     int
         The count M.
+
+    Examples
+    --------
+    A planar four-bar (4 links, 4 revolutes) has one freedom; the Gough-Stewart
+    platform (14 links, 6 legs of a U, a P and an S joint) six:
+
+    >>> grubler_kutzbach(4, 4, 4, order=3), grubler_kutzbach(14, 18, 36)
+    (1, 6)
     """
     for name, value in (
         ("links", links),
@@ -100,6 +108,18 @@ class Mobility:
         The sum over limbs of joints minus twist rank.
     notes : list of str
         At a particular configuration (``at``): how it compares with the general answer.
+
+    Examples
+    --------
+    Two identical planar limbs (slide x, slide y, turn about z): the platform keeps
+    the 3 planar motions, though Grübler-Kutzbach counts 0 (6 links, 6 joints of one
+    freedom): 3 of the limbs' constraints repeat each other.
+
+    >>> x, y, z, origin = [1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]
+    >>> limb = [(x, origin, sp.oo), (y, origin, sp.oo), (z, origin, 0)]
+    >>> result = mobility([limb, limb])
+    >>> result.number, result.grubler_kutzbach, result.redundant_constraints
+    (3, 0, 3)
     """
 
     number: int
@@ -123,6 +143,15 @@ class Mobility:
         -------
         str
             One screw per line.
+
+        Examples
+        --------
+        The last line of the summary of the class example:
+
+        >>> x, y, z, origin = [1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]
+        >>> limb = [(x, origin, sp.oo), (y, origin, sp.oo), (z, origin, 0)]
+        >>> print(mobility([limb, limb]).summary().splitlines()[-1])
+        Mobility: 3 (2T1R) ['Tx', 'Ty', 'Rz']
         """
 
         def block(title, systems):
@@ -208,6 +237,15 @@ class Mobility:
         -------
         dict
             {'Number': ..., 'Type': ..., 'Direction': [...]}.
+
+        Examples
+        --------
+        A platform on three identical slide-x, slide-y, slide-z limbs translates:
+
+        >>> x, y, z, origin = [1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]
+        >>> limb = [(x, origin, sp.oo), (y, origin, sp.oo), (z, origin, sp.oo)]
+        >>> mobility([limb] * 3).as_dict()
+        {'Number': 3, 'Type': '3T', 'Direction': ['Tx', 'Ty', 'Tz']}
         """
         return {
             "Number": self.number,
@@ -293,6 +331,17 @@ def mobility(limbs, at=None, tol=None):
     values above ``tol * max(1, the largest)``, so axes that differ by round-off count
     as parallel (see :mod:`screwkit._numeric`). Floats together with symbols are refused
     with a ValueError that says how to write them exactly.
+
+    Examples
+    --------
+    Two limbs that each slide along x and y and turn about z: the platform moves in
+    the plane, two translations and one rotation.
+
+    >>> x, y, z, origin = [1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 0, 0]
+    >>> limb = [(x, origin, sp.oo), (y, origin, sp.oo), (z, origin, 0)]
+    >>> result = mobility([limb, limb])
+    >>> result.number, result.type, result.directions
+    (3, '2T1R', ['Tx', 'Ty', 'Rz'])
     """
     tol = _numeric.TOL if tol is None else _numeric.check_tol(tol)
     if at is not None:

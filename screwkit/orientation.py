@@ -97,6 +97,8 @@ def rotation_from_euler(angles, convention="ZYZ"):
     -------
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
 
+    Examples
+    --------
     >>> rotation_from_euler([0.0, np.pi / 2, 0.0])[:, 2].round(4)
     array([1., 0., 0.])
     """
@@ -124,6 +126,8 @@ def euler_from_rotation(R, convention="ZYZ"):
         carries the whole rotation about the aligned axes. Symbolic entries give the
         generic formula, valid away from the lock.
 
+    Examples
+    --------
     >>> euler_from_rotation(rotz(0.3) @ roty(0.0) @ rotz(0.4)).round(4)
     array([0. , 0. , 0.7])
     """
@@ -201,6 +205,8 @@ def gimbal_lock(R, convention="ZYZ"):
         ZYZ: sin(beta) = 0; ZYX: cos(beta) = 0 (to ``LOCK_TOL`` for floats, exactly
         for SymPy numbers; False for symbolic entries, which are generic).
 
+    Examples
+    --------
     >>> bool(gimbal_lock(roty(np.pi / 2), "ZYX")), bool(gimbal_lock(roty(0.2)))
     (True, False)
     """
@@ -224,6 +230,13 @@ def rotation_from_rpy(rpy):
     Returns
     -------
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
+
+    Examples
+    --------
+    A yaw of 90 degrees alone is a quarter turn about z: x goes to y.
+
+    >>> (rotation_from_rpy([0.0, 0.0, np.pi / 2]) @ [1, 0, 0]).round(12) + 0.0
+    array([0., 1., 0.])
     """
     rpy = _triple(rpy, "rpy")
     if isinstance(rpy, sp.MatrixBase):
@@ -246,6 +259,13 @@ def rpy_from_rotation(R):
     -------
     ndarray, shape (3,) or (N, 3), or sympy.Matrix (3, 1)
         (roll, pitch, yaw) (rad).
+
+    Examples
+    --------
+    A turn about x is all roll:
+
+    >>> rpy_from_rotation(rotx(0.3)).round(4) + 0.0
+    array([0.3, 0. , 0. ])
     """
     angles = euler_from_rotation(R, "ZYX")
     if isinstance(angles, sp.MatrixBase):
@@ -287,6 +307,8 @@ def rotation_from_quaternion(q):
     -------
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
 
+    Examples
+    --------
     >>> rotation_from_quaternion([0.0, 0.0, 0.0, 1.0]).round(4)  # a half turn about z
     array([[-1.,  0.,  0.],
            [ 0., -1.,  0.],
@@ -320,6 +342,13 @@ def quaternion_from_rotation(R):
     Returns
     -------
     sympy.Matrix (4, 1) or ndarray, shape (4,) or (N, 4)
+
+    Examples
+    --------
+    A quarter turn about x: w = cos(45 deg), (x, y, z) = sin(45 deg) (1, 0, 0).
+
+    >>> quaternion_from_rotation(rotx(np.pi / 2)).round(4) + 0.0
+    array([0.7071, 0.7071, 0.    , 0.    ])
     """
     R = check_rotation(R, "R")
     if isinstance(R, sp.MatrixBase):
@@ -402,6 +431,14 @@ def quaternion_multiply(p, q):
     Returns
     -------
     sympy.Matrix (4, 1) or ndarray, shape (4,) or (N, 4)
+
+    Examples
+    --------
+    Two quarter turns about z make a half turn about z, q = (0, 0, 0, 1):
+
+    >>> q = [np.cos(np.pi / 4), 0.0, 0.0, np.sin(np.pi / 4)]
+    >>> quaternion_multiply(q, q).round(12) + 0.0
+    array([0., 0., 0., 1.])
     """
     if is_symbolic(p) or is_symbolic(q):
         p = as_sympy_matrix(p, "p", (4, 1))
@@ -441,6 +478,8 @@ def euler_rate_matrix(angles, convention="ZYZ", frame="space"):
         -sin(beta) for ZYZ, -cos(beta) for ZYX and cos(pitch) for RPY: B is singular
         at gimbal lock, where some angular velocities need infinite angle rates.
 
+    Examples
+    --------
     >>> euler_rate_matrix([0.0, 0.0, 0.0], "ZYZ") + 0.0
     array([[0., 0., 0.],
            [0., 1., 0.],

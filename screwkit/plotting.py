@@ -89,6 +89,12 @@ def use_course_style():
 
     Called once per chapter, before its first figure (in the book, a live notebook or
     Colab).
+
+    Examples
+    --------
+    >>> use_course_style()
+    >>> plt.rcParams["font.size"] == COURSE_STYLE["font.size"]
+    True
     """
     plt.rcParams.update(COURSE_STYLE)
 
@@ -194,6 +200,13 @@ def axes3d(limits=((-1, 1), (-1, 1), (0, 2)), ax=None, figsize=(5, 5)):
     -------
     mpl_toolkits.mplot3d.Axes3D
         The axes.
+
+    Examples
+    --------
+    >>> ax = axes3d()
+    >>> [float(v) for v in ax.get_xlim() + ax.get_zlim()], ax.get_xlabel()
+    ([-1.0, 1.0, 0.0, 2.0], 'x (m)')
+    >>> plt.close(ax.figure)
     """
     limits = as_float_array(limits, "limits")
     if limits.shape != (3, 2):
@@ -240,6 +253,16 @@ def draw_frame(ax, T, label=None, length=0.3, alpha=1.0):
         The length of the axes drawn (m).
     alpha : float, optional
         Opacity.
+
+    Examples
+    --------
+    Three lines, the axes x, y, z in red, green, blue, and the label:
+
+    >>> ax = axes3d()
+    >>> draw_frame(ax, np.eye(4), label="0")
+    >>> [line.get_color() for line in ax.lines], len(ax.texts)
+    (['tab:red', 'tab:green', 'tab:blue'], 1)
+    >>> plt.close(ax.figure)
     """
     _check_axes(ax)
     T = check_transform(_numeric(T, "T"), "T")
@@ -287,6 +310,16 @@ def draw_screw_axis(ax, s, r, length=2.0, label=None, color="k"):
         The legend's label.
     color : str, optional
         A matplotlib colour.
+
+    Examples
+    --------
+    The vertical axis through (1, 0, 0), 2 m long, centred on that point:
+
+    >>> ax = axes3d()
+    >>> draw_screw_axis(ax, [0, 0, 1], [1, 0, 0], length=2.0)
+    >>> np.array(ax.lines[0].get_data_3d()).round(12).tolist()  # x, y, z of its ends
+    [[1.0, 1.0], [0.0, 0.0], [-1.0, 1.0]]
+    >>> plt.close(ax.figure)
     """
     _check_axes(ax)
     s, r = _vector(s, "s"), _vector(r, "r")
@@ -314,6 +347,19 @@ def draw_screw_motion(ax, Ts, every=1, length=0.2):
         k: draw the frame of every k-th transform.
     length : float, optional
         The length of the frames' axes (m).
+
+    Examples
+    --------
+    Five poses of a half turn about the line x = 1: one line for the path, and the
+    frames of poses 0, 2 and 4 (three lines each).
+
+    >>> import screwkit as sk
+    >>> ax = axes3d()
+    >>> poses = sk.exp_twist([0, 0, 1, 0, -1, 0], np.linspace(0, np.pi, 5))
+    >>> draw_screw_motion(ax, poses, every=2)
+    >>> len(ax.lines)
+    10
+    >>> plt.close(ax.figure)
     """
     _check_axes(ax)
     Ts = check_transform(as_float_array(Ts, "Ts"), "Ts")
@@ -369,6 +415,17 @@ def draw_chain(
     -------
     ndarray, shape (n + 1, 4, 4)
         The frames, as ``chain.frames(q)``.
+
+    Examples
+    --------
+    A planar 2R arm, elbow at 90 deg: its last frame is at the tip, (1, 1, 0).
+
+    >>> import screwkit as sk
+    >>> ax = axes3d()
+    >>> frames = draw_chain(ax, sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> frames.shape, frames[-1][:3, 3].round(12) + 0.0
+    ((3, 4, 4), array([1., 1., 0.]))
+    >>> plt.close(ax.figure)
     """
     _check_axes(ax)
     chain = check_chain(chain)
@@ -428,6 +485,14 @@ def draw_ellipsoid(ax, centre, radii, axes, scale=1.0, color="tab:orange", alpha
     -------
     mpl_toolkits.mplot3d.art3d.Poly3DCollection
         The surface.
+
+    Examples
+    --------
+    >>> ax = axes3d()
+    >>> surface = draw_ellipsoid(ax, [0, 0, 1], [0.5, 0.3, 0.2], np.eye(3))
+    >>> type(surface).__name__
+    'Poly3DCollection'
+    >>> plt.close(ax.figure)
     """
     _check_axes(ax)
     centre, radii = _vector(centre, "centre"), _vector(radii, "radii")
@@ -471,6 +536,17 @@ def draw_planar(ax, chain, q, color="tab:blue", alpha=1.0, label=None, base=(0.0
     -------
     matplotlib.lines.Line2D
         The line.
+
+    Examples
+    --------
+    Base, elbow (1, 0) and tip (1, 1) of a 2R arm with the elbow at 90 deg:
+
+    >>> import screwkit as sk
+    >>> figure, ax = plt.subplots()
+    >>> line = draw_planar(ax, sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> np.array(line.get_data()).T.round(12).tolist()
+    [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]
+    >>> plt.close(figure)
     """
     _check_axes(ax, three_d=False)
     chain = check_chain(chain)
@@ -571,6 +647,19 @@ def animation_html(animation, alt=None, label="Frame of the animation"):
     -------
     str
         The HTML.
+
+    Examples
+    --------
+    A dot moving in three frames: three PNG frames and a player that starts at 1 / 3.
+
+    >>> from matplotlib.animation import FuncAnimation
+    >>> figure, ax = plt.subplots(figsize=(2, 2))
+    >>> (dot,) = ax.plot([0], [0], "o")
+    >>> animation = FuncAnimation(figure, lambda k: dot.set_data([k], [k]), frames=3)
+    >>> html = animation_html(animation, alt="A dot moving")
+    >>> html.count("data:image/png"), "1 / 3" in html, "A dot moving" in html
+    (3, True, True)
+    >>> plt.close(figure)
     """
     from matplotlib.animation import Animation
 

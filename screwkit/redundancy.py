@@ -84,6 +84,17 @@ class Path:
         Their velocities (m/s).
     name : str
         Used in titles.
+
+    Examples
+    --------
+    A 0.2 m line up the line x = 0.5 in 1 s, sampled every 0.25 s (smooth timing,
+    so the middle sample is at the middle):
+
+    >>> path = line((0.5, 0.0), (0.5, 0.2), duration=1.0, dt=0.25)
+    >>> path.t.tolist(), path.dt
+    ([0.0, 0.25, 0.5, 0.75, 1.0], 0.25)
+    >>> path.position[[0, 2, 4]].round(12).tolist()
+    [[0.5, 0.0], [0.5, 0.1], [0.5, 0.2]]
     """
 
     t: np.ndarray
@@ -145,6 +156,16 @@ def timing(t, duration, kind="smooth"):
     -------
     s, ds_dt : ndarray, shaped like t
         The parameter (no unit) and its rate (1/s).
+
+    Examples
+    --------
+    The smooth timing starts and ends at rest and peaks at 15/8 per duration:
+
+    >>> s, ds_dt = timing([0.0, 0.5, 1.0], 1.0)
+    >>> s.tolist(), ds_dt.tolist()
+    ([0.0, 0.5, 1.0], [0.0, 1.875, 0.0])
+    >>> timing(0.5, 1.0, "constant")[1].tolist()
+    1.0
     """
     kind = check_option(kind, "kind", ("smooth", "constant"))
     duration = check_positive(duration, "duration")
@@ -208,6 +229,14 @@ def circle(center, radius, duration, dt, timing_kind="smooth"):
     radius : float
         The radius (m), positive.
     {sections}
+
+    Examples
+    --------
+    The unit circle at constant speed, sampled each quarter of its duration:
+
+    >>> path = circle((0, 0), 1.0, duration=1.0, dt=0.25, timing_kind="constant")
+    >>> (path.position.round(12) + 0.0).tolist()
+    [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0], [1.0, 0.0]]
     """
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     center = _point(center, "center")
@@ -234,6 +263,14 @@ def line(start, end, duration, dt, timing_kind="smooth"):
     start, end : array-like, shape (2,)
         The end points (m).
     {sections}
+
+    Examples
+    --------
+    1 m in 2 s at constant speed: 0.5 m/s all along.
+
+    >>> path = line((0, 0), (1, 0), duration=2.0, dt=1.0, timing_kind="constant")
+    >>> path.position.tolist(), path.velocity.tolist()
+    ([[0.0, 0.0], [0.5, 0.0], [1.0, 0.0]], [[0.5, 0.0], [0.5, 0.0], [0.5, 0.0]])
     """
     check_option(timing_kind, "timing_kind", ("smooth", "constant"))
     start, end = _point(start, "start"), _point(end, "end")
@@ -316,6 +353,15 @@ def planar_kinematics(lengths, q):
         The base, each joint and the end effector (m).
     J : ndarray, shape (2, n) or (N, 2, n)
         The planar Jacobian (m/rad).
+
+    Examples
+    --------
+    Two unit links, the elbow at a right angle: the elbow at (1, 0), the tip at
+    (1, 1); column i is z x (tip - joint i).
+
+    >>> points, J = planar_kinematics([1.0, 1.0], [0.0, np.pi / 2])
+    >>> (points.round(12) + 0.0).tolist(), (J.round(12) + 0.0).tolist()
+    ([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]], [[-1.0, -1.0], [1.0, 0.0]])
     """
     lengths, q = _lengths_and_q(lengths, q)
     angles = np.cumsum(q, axis=-1)
@@ -347,6 +393,15 @@ def manipulability_gradient(lengths, q):
         The manipulability.
     gradient : ndarray, shape (n,) or (N, n)
         dw/dq.
+
+    Examples
+    --------
+    For two links w = l1 l2 sin(q2), whose gradient is (0, l1 l2 cos(q2)): at
+    q2 = 60 deg, w = 0.866 and the gradient (0, 0.5).
+
+    >>> w, gradient = manipulability_gradient([1.0, 1.0], [0.0, np.pi / 3])
+    >>> round(float(w), 4), (gradient.round(4) + 0.0).tolist()
+    (0.866, [0.0, 0.5])
     """
     return _gradient(planar_kinematics(lengths, q)[0])
 
@@ -419,6 +474,14 @@ def pseudo_inverse(J, damping=0.0, singular_region=SINGULAR_REGION):
     -------
     ndarray, shape (n, 2)
         J+.
+
+    Examples
+    --------
+    A square, invertible J has J+ = J^-1:
+
+    >>> J = [[-1.0, -1.0], [1.0, 0.0]]
+    >>> (pseudo_inverse(J).round(12) + 0.0).tolist()
+    [[0.0, 1.0], [-1.0, -1.0]]
     """
     J = as_float_array(J, "J")
     if J.ndim != 2 or J.shape[0] != 2 or J.shape[1] < 1:
@@ -468,6 +531,15 @@ def start_configuration(arm, point, q_guess, tol=None, max_iterations=100):
     -------
     ndarray, shape (n,)
         The joint angles (rad).
+
+    Examples
+    --------
+    Two unit links reach (1, 1) with the shoulder at 0 and the elbow at 90 deg:
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> start_configuration(arm, (1.0, 1.0), [0.1, 1.4]).round(4) + 0.0
+    array([0.    , 1.5708])
     """
     lengths = _lengths(arm)
     q = np.array(arm.check_one(q_guess, "q_guess"))  # a copy: the caller's array stays
@@ -511,6 +583,16 @@ class Resolution:
         True where a joint limit clamped the step that led to row i.
     path : Path
         The path followed.
+
+    Examples
+    --------
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([0.4, 0.3, 0.2])
+    >>> path = line((0.5, 0.0), (0.5, 0.3), duration=1.0, dt=0.01)
+    >>> q0 = start_configuration(arm, path.position[0], [0.3, 0.6, 0.6])
+    >>> run = resolve(arm, path, q0)
+    >>> run.q.shape, bool(run.error.max() < 1e-3), bool(run.limited.any())
+    ((101, 3), True, False)
     """
 
     t: np.ndarray
@@ -577,6 +659,21 @@ def resolve(
     -------
     Resolution
         The joint path and its errors, one row per sample of the path.
+
+    Examples
+    --------
+    A 3R arm on a line: with a positive null-space gain it ends the path more
+    manipulable than without, on the same path.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([0.4, 0.3, 0.2])
+    >>> path = line((0.5, 0.0), (0.5, 0.3), duration=1.0, dt=0.01)
+    >>> q0 = start_configuration(arm, path.position[0], [0.3, 0.6, 0.6])
+    >>> plain, climbing = resolve(arm, path, q0), resolve(arm, path, q0, 1.0)
+    >>> bool(climbing.manipulability[-1] > plain.manipulability[-1])
+    True
+    >>> bool(plain.error.max() < 1e-3), bool(climbing.error.max() < 1e-3)
+    (True, True)
     """
     lengths = _lengths(arm)
     if not isinstance(path, Path):

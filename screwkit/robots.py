@@ -121,11 +121,14 @@ DRAWING_VALUES = {
 
 
 #: The Returns sections the mechanisms' limbs and the named arms share (filled in by
-#: :func:`_docstrings.fill`).
-_LIMBS_RETURNS = """Returns
+#: :func:`_docstrings.fill`); the mechanisms' ends with the heading of their Examples.
+_LIMBS_SECTIONS = """Returns
 -------
 list of limbs
-    In the zeroth-step format (module docstring)."""
+    In the zeroth-step format (module docstring).
+
+Examples
+--------"""
 _ARM_RETURNS = """Returns
 -------
 Chain
@@ -140,11 +143,21 @@ def _symbols(names, limbs, first, last):
     ]
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3prrr():
     """Tripteron, 3-PRRR: limb i has four parallel axes along X, Y, Z (paper §3.2.1).
 
-    {returns}
+    {sections}
+
+    Three limbs of four joints (P, R, R, R); the platform translates (the paper's
+    3T), though Grübler-Kutzbach counts 0:
+
+    >>> from screwkit import mobility
+    >>> limbs = pm_3prrr()
+    >>> [len(limb) for limb in limbs], mobility(limbs).type
+    ([4, 4, 4], '3T')
+    >>> PAPER_GRUBLER_KUTZBACH["3-PRRR"]["mobility"]
+    0
     """
     a, b, Ly, Lz = sp.symbols("a b L_y L_z")
     d = sp.symbols("d_1:4")
@@ -171,14 +184,19 @@ def pm_3prrr():
     return limbs
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3prpar():
     """STAR-like 3-PR(Pa)R: P and R along X, a parallelogram, and a last R along X
     (§3.2.2).
 
     Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
 
-    {returns}
+    {sections}
+
+    Each limb: P, R, the four hinges of the parallelogram, R (7 joints).
+
+    >>> [len(limb) for limb in pm_3prpar()]
+    [7, 7, 7]
     """
     L, b = sp.symbols("L b")
     d = sp.symbols("d_1:4")
@@ -227,7 +245,7 @@ def _turn_about_z(angle):
     return turn
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_4prru():
     """4-PRRU with Schönflies motion (§3.2.3, after Kong and Gosselin).
 
@@ -237,7 +255,13 @@ def pm_4prru():
     and never uses theta_i3; here B and C follow theta_i2 and theta_i3 about the tilted
     axis.
 
-    {returns}
+    {sections}
+
+    Schönflies motion: three translations and the turn about the vertical.
+
+    >>> from screwkit import mobility
+    >>> mobility(pm_4prru()).directions
+    ['Tx', 'Ty', 'Tz', 'Rz']
     """
     R, a, b, alpha = sp.symbols("R a b alpha")
     d = sp.symbols("d_1:5")
@@ -263,12 +287,19 @@ def pm_4prru():
     return _around_z(limb, 4)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_6ups():
     """6-UPS (Gough–Stewart type): U at A, P along the leg, S at B; limbs turned by 60
     degrees (§3.2.4).
 
-    {returns}
+    {sections}
+
+    Six legs of 2 + 1 + 3 joints: the platform moves freely (3T3R).
+
+    >>> from screwkit import mobility
+    >>> limbs = pm_6ups()
+    >>> [len(limb) for limb in limbs], mobility(limbs).type
+    ([6, 6, 6, 6, 6, 6], '3T3R')
     """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:7")
@@ -289,12 +320,16 @@ def pm_6ups():
     return _around_z(limb, 6)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def planar_3rrr():
     """Planar 3-RRR: three RRR limbs with all axes along Z
     (3 motions in the plane: 2T1R).
 
-    {returns}
+    {sections}
+
+    >>> from screwkit import mobility
+    >>> mobility(planar_3rrr()).directions
+    ['Tx', 'Ty', 'Rz']
     """
     a, b = sp.symbols("a b")
     theta = _symbols("theta", 3, 1, 2)
@@ -308,12 +343,17 @@ def planar_3rrr():
     return _around_z(limb, 3)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3rps():
     """3-RPS: R tangent to the base circle, P along the leg, S on the platform
     (1T2R).
 
-    {returns}
+    {sections}
+
+    Each limb: R, P and the three revolutes of the ball joint.
+
+    >>> [len(limb) for limb in pm_3rps()]
+    [5, 5, 5]
     """
     R = sp.Symbol("R")
     d = sp.symbols("d_1:4")
@@ -327,7 +367,7 @@ def pm_3rps():
     return _around_z(limb, 3)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def pm_3ruu():
     """Delta-type translational 3-RUU (3T): the kinematic equivalent of Clavel's Delta
     with a U-U link in place of each spatial parallelogram
@@ -337,7 +377,12 @@ def pm_3ruu():
     about u by theta_12); a U at C (axes v, then u). Each limb then constrains the one
     couple along u x v. Limbs 2 and 3 are limb 1 turned about Z by 120 and 240 degrees.
 
-    {returns}
+    {sections}
+
+    Each limb: R, then two U joints of two revolutes each.
+
+    >>> [len(limb) for limb in pm_3ruu()]
+    [5, 5, 5]
     """
     R, a, b = sp.symbols("R a b")
 
@@ -352,12 +397,21 @@ def pm_3ruu():
     return _around_z(limb, 3)
 
 
-@fill(returns=_LIMBS_RETURNS)
+@fill(sections=_LIMBS_SECTIONS)
 def spherical_3rrr():
     """Spherical 3-RRR (agile eye type): every joint axis passes through the origin
     (3R).
 
-    {returns}
+    {sections}
+
+    Every axis passes through the origin, so the platform only turns about it:
+
+    >>> from screwkit import mobility
+    >>> limbs = spherical_3rrr()
+    >>> all(list(r) == [0, 0, 0] for limb in limbs for _, r, _ in limb)
+    True
+    >>> mobility(limbs).type
+    '3R'
     """
     theta = _symbols("theta", 3, 1, 2)
 
@@ -383,6 +437,15 @@ def puma560():
     (the paper's eqs. 32-35).
 
     {returns}
+
+    Examples
+    --------
+    At the zero configuration the arm reaches out along x by a2 + a3 = 0.4521 m, is
+    offset by d3 = 0.15005 m along -y and lifted by d4 = 0.4318 m:
+
+    >>> arm = puma560()
+    >>> arm.fk(arm.configurations["zero"])[:3, 3].round(4)
+    array([ 0.4521, -0.15  ,  0.4318])
     """
     deg = np.pi / 180
     links = [
@@ -420,6 +483,14 @@ def kawasaki_cx210l():
     (q2 = 30, q3 = -90, -80, -70 deg).
 
     {returns}
+
+    Examples
+    --------
+    The DH lengths of the paper's Table 1 (m):
+
+    >>> arm = kawasaki_cx210l()
+    >>> [float(link.a) for link in arm.links], [float(link.d) for link in arm.links]
+    ([0.3, 1.19, 0.3, 0.0, 0.0, 0.0], [0.55, 0.0, 0.0, 1.19, 0.0, 0.235])
     """
     deg = sp.pi / 180
     links = [
@@ -456,6 +527,14 @@ def planar(lengths, qlim=None):
     -------
     Chain
         The arm, named "planar nR".
+
+    Examples
+    --------
+    Two unit links, the elbow bent a quarter turn: the tip is at (1, 1).
+
+    >>> arm = planar([1.0, 1.0])
+    >>> arm.fk([0.0, np.pi / 2])[:3, 3].round(12) + 0.0
+    array([1., 1., 0.])
     """
     if lengths is None or isinstance(lengths, (str, bytes)):
         raise TypeError(
@@ -497,6 +576,15 @@ def two_arm_planar(lengths=(0.3, 0.25, 0.2, 0.15, 0.1), separation=0.4, qlim=Non
     -------
     left, right : Chain
         The two arms.
+
+    Examples
+    --------
+    Stretched along x, each arm reaches 0.3 + 0.25 + 0.2 + 0.15 + 0.1 = 1 m past
+    its base at x = -0.2 or x = 0.2:
+
+    >>> left, right = two_arm_planar()
+    >>> left.fk(np.zeros(5))[:3, 3].round(4), right.fk(np.zeros(5))[:3, 3].round(4)
+    (array([0.8, 0. , 0. ]), array([1.2, 0. , 0. ]))
     """
     half = as_real_scalar(separation, "separation") / 2
     arms = []
@@ -525,7 +613,15 @@ def ur5e():
     Returns
     -------
     Chain
-        The arm.
+        The arm, with the named configurations 'zero' and 'home'.
+
+    Examples
+    --------
+    At zero the arm lies stretched along -x (a2 + a3 = -0.8172 m), offset along -y
+    by d4 + d6 = 0.2329 m, at height d1 - d5 = 0.0628 m:
+
+    >>> ur5e().fk(np.zeros(6))[:3, 3].round(4)
+    array([-0.8172, -0.2329,  0.0628])
     """
     turn = (-2 * np.pi, 2 * np.pi)
     links = [
@@ -558,7 +654,15 @@ def panda():
     Returns
     -------
     Chain
-        The arm.
+        The arm to its flange (the tool), with the named configuration 'ready'.
+
+    Examples
+    --------
+    At zero the flange is a6 = 0.088 m forward, at height
+    0.333 + 0.316 + 0.384 - 0.107 = 0.926 m (it points down):
+
+    >>> panda().fk(np.zeros(7))[:3, 3].round(4) + 0.0
+    array([0.088, 0.   , 0.926])
     """
     h = sp.pi / 2
     rows = [
@@ -596,7 +700,18 @@ def stanford():
     Returns
     -------
     Chain
-        The arm.
+        The arm, with the named configuration 'nominal'.
+
+    Examples
+    --------
+    At 'nominal' the boom (q2 = 90 deg) points along x, extended 0.5 m plus the
+    wrist's 0.263 m, offset d2 = 0.154 m along y, at height d1 = 0.412 m:
+
+    >>> arm = stanford()
+    >>> "".join(link.joint.value for link in arm.links)
+    'RRPRRR'
+    >>> arm.fk(arm.configurations["nominal"])[:3, 3].round(4)
+    array([0.763, 0.154, 0.412])
     """
     h = sp.pi / 2
     links = [
@@ -628,7 +743,14 @@ def iiwa14():
     Returns
     -------
     Chain
-        The arm.
+        The arm, to its flange; no named configurations.
+
+    Examples
+    --------
+    At zero the arm stands straight up: 0.36 + 0.42 + 0.4 + 0.126 = 1.306 m.
+
+    >>> iiwa14().fk(np.zeros(7))[:3, 3].round(4) + 0.0
+    array([0.   , 0.   , 1.306])
     """
     h, deg = sp.pi / 2, np.pi / 180
     rows = [

@@ -40,6 +40,15 @@ class Screw:
     ----------
     vector : array-like of 6 numbers or SymPy expressions, or a SymPy 6x1 matrix
         The coordinates [angular; linear], kept exact (``self.vector``).
+
+    Examples
+    --------
+    (s; s0) = (z; 2 z): an axis through the origin along z (s0 parallel to s) with
+    pitch s . s0 / s . s = 2.
+
+    >>> screw = Screw([0, 0, 1, 0, 0, 2])
+    >>> screw.pitch
+    2
     """
 
     #: the kind of screw as a word, for messages and captions
@@ -67,6 +76,15 @@ class Screw:
         -------
         Screw
             A screw of this class (Screw, Twist or Wrench).
+
+        Examples
+        --------
+        The z direction through (0, 1, 0): moment r x s = y x z = x, plus h s.
+
+        >>> Screw.from_axis([0, 0, 1], [0, 1, 0], 0)
+        Screw([0, 0, 1, 1, 0, 0])
+        >>> Screw.from_axis([0, 0, 1], [0, 1, 0], 2)
+        Screw([0, 0, 1, 1, 0, 2])
         """
         s = as_sympy_matrix(s, "s", (3, 1))
         if all(e == 0 for e in s):
@@ -96,7 +114,15 @@ class Screw:
         Returns
         -------
         Screw
-            A screw of this class (Screw, Twist or Wrench).
+            A screw of this class (Screw, Twist or Wrench) holding ``vector``.
+
+        Examples
+        --------
+        A pure translation along x, (0; x): its pitch is infinite.
+
+        >>> t = Twist.from_vector([0, 0, 0, 1, 0, 0])
+        >>> t, t.pitch
+        (Twist([0, 0, 0, 1, 0, 0]), oo)
         """
         return cls(vector)
 
@@ -237,6 +263,16 @@ class Screw:
         Screw
             A screw of the same class: exact for a SymPy T; a float T gives Float
             coordinates.
+
+        Examples
+        --------
+        A spin about the z axis of a frame placed at p = (1, 0, 0), written in the
+        base frame: a spin about the line x = 1, moment p x z = -y.
+
+        >>> import sympy as sp
+        >>> T = sp.Matrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
+        >>> Twist([0, 0, 1, 0, 0, 0]).transform(T)
+        Twist([0, 0, 1, 0, -1, 0])
         """
         T = check_transform(
             T if isinstance(T, sp.MatrixBase) else as_float_array(T, "T"), "T"
@@ -269,6 +305,15 @@ class Twist(Screw):
     ----------
     vector : array-like of 6 numbers or SymPy expressions
         The coordinates (w; v) (rad/s, m/s, or per unit joint rate).
+
+    Examples
+    --------
+    A spin about z does no work against a force along z (reciprocal: product 0),
+    and 10 W against a couple of 10 N m about z:
+
+    >>> spin = Twist([0, 0, 1, 0, 0, 0])
+    >>> spin @ Wrench.from_axis([0, 0, 1], [1, 0, 0], 0), spin @ Wrench([0] * 5 + [10])
+    (0, 10)
     """
 
     #: the kind of screw as a word, for messages and captions
@@ -307,6 +352,13 @@ class Wrench(Screw):
     ----------
     vector : array-like of 6 numbers or SymPy expressions
         The coordinates (f; m) (N, N m).
+
+    Examples
+    --------
+    10 N down through (1, 0, 0): its moment about the origin is r x f = 10 y.
+
+    >>> Wrench.from_axis([0, 0, -10], [1, 0, 0], 0)
+    Wrench([0, 0, -10, 0, 10, 0])
     """
 
     #: the kind of screw as a word, for messages and captions

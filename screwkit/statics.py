@@ -82,6 +82,8 @@ def swap(vector):
     ndarray, shape (6,) or (N, 6)
         The vector with its halves swapped.
 
+    Examples
+    --------
     >>> swap([1, 2, 3, 4, 5, 6]).tolist()
     [4.0, 5.0, 6.0, 1.0, 2.0, 3.0]
     """
@@ -135,6 +137,8 @@ def wrench_at(wrench, T):
     ndarray, shape (6,) or (N, 6)
         (f; m) in frame {b} (N, N m).
 
+    Examples
+    --------
     10 N down through x = 1 m: about the origin a moment of 10 N m about y; about
     the point itself none:
 
@@ -593,6 +597,16 @@ class Eigenscrews:
         linear], its angular part a unit vector (its linear part, for pitch infinity).
     pitches : ndarray, shape (6,)
         Their pitches (m/rad); inf for a screw of pure translation.
+
+    Examples
+    --------
+    A unit spring in every direction, decoupled (f = dx, m = dtheta): the eigenscrews
+    have pitch +1 (lambda = 1) and -1 (lambda = -1) (see :func:`eigenscrews`).
+
+    >>> Z, I = np.zeros((3, 3)), np.eye(3)
+    >>> e = eigenscrews(np.block([[Z, I], [I, Z]]))
+    >>> np.round(e.values, 12).tolist(), np.round(e.pitches, 12).tolist()
+    ([1.0, 1.0, 1.0, -1.0, -1.0, -1.0], [1.0, 1.0, 1.0, -1.0, -1.0, -1.0])
     """
 
     values: np.ndarray

@@ -58,6 +58,15 @@ class ScrewSystem:
         Relative tolerance of the rank when the screws hold floats (SVD; default
         ``RANK_TOL``, 1e-9, of :mod:`screwkit.tolerances`); exact screws ignore
         it.
+
+    Examples
+    --------
+    Two parallel revolute axes (z through the origin and through (1, 0, 0)) span a
+    2-system: their difference is a translation along y.
+
+    >>> x, z, origin = [1, 0, 0], [0, 0, 1], [0, 0, 0]
+    >>> ScrewSystem([(z, origin, 0), (z, x, 0)])
+    ScrewSystem(2 twists, rank 2)
     """
 
     def __init__(self, screws, kind=None, tol=None):
@@ -177,6 +186,15 @@ class ScrewSystem:
         -------
         list of Screw
             ``rank`` screws of the system's kind.
+
+        Examples
+        --------
+        The two parallel revolutes of the class example: a rotation about z through
+        the origin and a translation along y.
+
+        >>> x, z, origin = [1, 0, 0], [0, 0, 1], [0, 0, 0]
+        >>> ScrewSystem([(z, origin, 0), (z, x, 0)]).basis()
+        [Twist([0, 0, 1, 0, 0, 0]), Twist([0, 0, 0, 0, 1, 0])]
         """
         if self._basis is None:
             if not self.screws:
@@ -201,6 +219,14 @@ class ScrewSystem:
         ScrewSystem
             The system with rank and basis known: what a system is printed as, and the
             cheaper one to take further.
+
+        Examples
+        --------
+        Three screws of a 2-system reduce to two:
+
+        >>> S = ScrewSystem([[0, 0, 1, 0, 0, 0], [0, 0, 1, 0, -1, 0], [0] * 4 + [1, 0]])
+        >>> S.reduced().screws
+        [Twist([0, 0, 1, 0, 0, 0]), Twist([0, 0, 0, 0, 1, 0])]
         """
         field = None if self.numeric else self.field
         return ScrewSystem._of_basis(self.basis(), self.kind, self.tol, field)
@@ -212,6 +238,16 @@ class ScrewSystem:
         -------
         ScrewSystem
             Of order 6 - rank; wrenches for twists and twists for wrenches.
+
+        Examples
+        --------
+        A ball joint (three rotations through the origin) transmits exactly the
+        forces through its centre:
+
+        >>> ball = ScrewSystem([(d, [0, 0, 0], 0) for d in sp.eye(3).columnspace()])
+        >>> ball.reciprocal().basis()
+        [Wrench([1, 0, 0, 0, 0, 0]), Wrench([0, 1, 0, 0, 0, 0]),
+         Wrench([0, 0, 1, 0, 0, 0])]
         """
         other = _OTHER[self.kind]
         if not self.screws:
@@ -260,6 +296,15 @@ class ScrewSystem:
             If the screws hold floats (their rank is decided with a tolerance).
         ArithmeticError
             If the exact check contradicts the sampled rank (a bug to report).
+
+        Examples
+        --------
+        The ball joint's rank 3, proven: a nonzero 3x3 minor and 3 kernel vectors.
+
+        >>> ball = ScrewSystem([(d, [0, 0, 0], 0) for d in sp.eye(3).columnspace()])
+        >>> certificate = ball.certificate()
+        >>> certificate.proven, certificate.rows, len(certificate.kernel)
+        (True, (0, 1, 2), 3)
         """
         if isinstance(timeout, bool) or not isinstance(timeout, (int, float)):
             raise TypeError(
@@ -385,6 +430,13 @@ class ScrewSystem:
         -------
         ScrewSystem
             The span of the screws of both.
+
+        Examples
+        --------
+        >>> slide_x = ScrewSystem([([1, 0, 0], [0, 0, 0], sp.oo)])
+        >>> slide_y = ScrewSystem([([0, 1, 0], [0, 0, 0], sp.oo)])
+        >>> slide_x.union(slide_y).rank, slide_x.union(slide_x).rank
+        (2, 1)
         """
         self._check_kind(other, "union")
         return ScrewSystem(
@@ -402,6 +454,18 @@ class ScrewSystem:
         -------
         ScrewSystem
             The intersection of the two spans.
+
+        Examples
+        --------
+        Planar motion in the xy plane and the rotations about the origin share one
+        motion: the rotation about the z axis.
+
+        >>> x, y, z, origin = sp.eye(3).columnspace() + [[0, 0, 0]]
+        >>> planar = ScrewSystem([(z, origin, 0), (x, origin, sp.oo),
+        ...                       (y, origin, sp.oo)])
+        >>> ball = ScrewSystem([(d, origin, 0) for d in (x, y, z)])
+        >>> planar.intersection(ball).basis()
+        [Twist([0, 0, 1, 0, 0, 0])]
         """
         self._check_kind(other, "intersection")
         return self.reciprocal().union(other.reciprocal()).reciprocal()
@@ -417,7 +481,18 @@ class ScrewSystem:
         Returns
         -------
         bool
-            True if adding it does not raise the rank.
+            True if adding it does not raise the rank (generically, for symbols).
+
+        Examples
+        --------
+        Planar motion contains the rotation about any vertical line, not a rotation
+        about x:
+
+        >>> planar = ScrewSystem([[0, 0, 1, 0, 0, 0], [0, 0, 0, 1, 0, 0],
+        ...                       [0, 0, 0, 0, 1, 0]])
+        >>> vertical_at_1_2 = [0, 0, 1, 2, -1, 0]  # (z; r x z), r = (1, 2, 0)
+        >>> planar.contains(vertical_at_1_2), planar.contains([1, 0, 0, 0, 0, 0])
+        (True, False)
         """
         return (
             ScrewSystem(self.screws + [screw], kind=self.kind, tol=self.tol).rank
@@ -450,6 +525,12 @@ class ScrewSystem:
         -------
         str
             Its order and its canonical basis, one screw a line.
+
+        Examples
+        --------
+        >>> print(ScrewSystem([[0, 0, 2, 0, 0, 0], [0, 0, 1, 0, 0, 0]]).summary())
+        twist 1-system
+          [0, 0, 1, 0, 0, 0]
         """
         rows = [str(list(s.vector)) for s in self.basis()] or ["(none)"]
         return "\n".join([f"{self.noun} {self.rank}-system"] + ["  " + r for r in rows])

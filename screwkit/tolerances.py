@@ -145,6 +145,8 @@ def length_scale(*lengths):
         The largest absolute entry (m), or 1.0 for an instance of no size (every
         entry 0, where there is nothing to scale).
 
+    Examples
+    --------
     >>> length_scale([0.0, 2.0], [[-3.0, 1.0]])
     3.0
     >>> length_scale([0, 0])

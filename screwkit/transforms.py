@@ -178,6 +178,16 @@ def axis_coordinates(s, r, h):
     Returns
     -------
     sympy.Matrix (6, 1), or ndarray (6,) / (N, 6)
+
+    Examples
+    --------
+    The z axis moved to x = 1: its moment r x s = (1, 0, 0) x (0, 0, 1) is -y.
+
+    >>> s, r = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])
+    >>> axis_coordinates(s, r, 0.5)  # pitch 0.5 adds 0.5 s to the moment
+    array([ 0. ,  0. ,  1. ,  0. , -1. ,  0.5])
+    >>> axis_coordinates(s, r, np.inf)  # a translation along z
+    array([0., 0., 0., 0., 0., 1.])
     """
     if isinstance(s, sp.MatrixBase):
         if _is_infinite_pitch(h):
@@ -216,6 +226,10 @@ def skew(v):
     sympy.Matrix (3, 3) or ndarray, shape (3, 3) or (N, 3, 3)
         [v], exact for a SymPy vector.
 
+    Examples
+    --------
+    [v] w is the cross product: (1, 2, 3) x (4, 5, 6) = (-3, 6, -3).
+
     >>> skew([1, 2, 3]) @ [4, 5, 6]
     array([-3.,  6., -3.])
     """
@@ -241,7 +255,8 @@ def _elementary_rotation(theta, axis):
     return R
 
 
-#: The sections rotx, roty and rotz share (filled in by :func:`_docstrings.fill`).
+#: The sections rotx, roty and rotz share, to their Examples heading (filled in by
+#: :func:`_docstrings.fill`).
 _ELEMENTARY_SECTIONS = """Parameters
 ----------
 theta : float, array-like of shape (N,), or a SymPy expression
@@ -250,7 +265,10 @@ theta : float, array-like of shape (N,), or a SymPy expression
 Returns
 -------
 ndarray, shape (3, 3) or (N, 3, 3), or sympy.Matrix (3, 3)
-    The rotation matrix (exact when ``theta`` is symbolic)."""
+    The rotation matrix (exact when ``theta`` is symbolic).
+
+Examples
+--------"""
 
 
 @fill(sections=_ELEMENTARY_SECTIONS)
@@ -259,8 +277,6 @@ def rotx(theta):
 
     {sections}
 
-    Examples
-    --------
     >>> rotx(0.5)[1:, 1:].round(4)
     array([[ 0.8776, -0.4794],
            [ 0.4794,  0.8776]])
@@ -273,6 +289,11 @@ def roty(theta):
     """Rotation by ``theta`` about the y axis.
 
     {sections}
+
+    A quarter turn about y carries z to x.
+
+    >>> (roty(np.pi / 2) @ [0, 0, 1]).round(12) + 0.0
+    array([1., 0., 0.])
     """
     return _elementary_rotation(theta, 1)
 
@@ -282,6 +303,14 @@ def rotz(theta):
     """Rotation by ``theta`` about the z axis.
 
     {sections}
+
+    A quarter turn about z carries x to y and y to -x (the columns of R are the
+    images of x, y, z):
+
+    >>> rotz(np.pi / 2)[:, :2].round(12) + 0.0
+    array([[ 0., -1.],
+           [ 1.,  0.],
+           [ 0.,  0.]])
     """
     return _elementary_rotation(theta, 2)
 
@@ -302,10 +331,19 @@ def rot_axis(axis, theta):
         (a float angle then becomes a SymPy Float), else ndarray, shape (3, 3) or
         (N, 3, 3)
 
+    Examples
+    --------
+    About z (the axis is normalised) it is :func:`rotz`:
+
     >>> rot_axis([0, 0, 2], np.pi / 2).round(12)
     array([[ 0., -1.,  0.],
            [ 1.,  0.,  0.],
            [ 0.,  0.,  1.]])
+
+    A third of a turn about (1, 1, 1) permutes the axes: x goes to y.
+
+    >>> (rot_axis([1, 1, 1], 2 * np.pi / 3) @ [1, 0, 0]).round(12) + 0.0
+    array([0., 1., 0.])
     """
     w = _unit_vector(axis, "axis")
     if isinstance(w, sp.MatrixBase) or is_symbolic(theta):
@@ -419,6 +457,15 @@ def homogeneous(R=None, p=None):
     Returns
     -------
     sympy.Matrix (4, 4) if either input is symbolic, else ndarray (4, 4) or (N, 4, 4)
+
+    Examples
+    --------
+    Rotate a quarter turn about z, then shift by (1, 0, 0): the point x = 1 goes to
+    (0, 1, 0) and then to (1, 1, 0).
+
+    >>> T = homogeneous(rotz(np.pi / 2), [1, 0, 0])
+    >>> (T @ [1, 0, 0, 1]).round(12) + 0.0
+    array([1., 1., 0., 1.])
     """
     if is_symbolic(R) or is_symbolic(p):
         R = sp.eye(3) if R is None else check_rotation(R, "R")
@@ -588,10 +635,19 @@ def exp_twist(twist, theta):
     -------
     sympy.Matrix (4, 4) or ndarray, shape (4, 4) or (N, 4, 4)
 
+    Examples
+    --------
+    A unit rotation about z through the origin turns by ``theta``:
+
     >>> exp_twist([0, 0, 1, 0, 0, 0], np.pi / 2).round(12)[:3, :3]
     array([[ 0., -1.,  0.],
            [ 1.,  0.,  0.],
            [ 0.,  0.,  1.]])
+
+    A pure translation (w = 0, v = x) moves by v theta:
+
+    >>> exp_twist([0, 0, 0, 1, 0, 0], 2.0)[:3, 3]
+    array([2., 0., 0.])
     """
     if is_symbolic(twist) or is_symbolic(theta):
         xi = as_sympy_matrix(twist, "twist", (6, 1))

@@ -64,6 +64,16 @@ class URDFDescription:
         The link whose frame is the base frame.
     tip_link : str
         The end-effector link.
+
+    Examples
+    --------
+    The UR5e shipped with screwkit: six joints from base_link to tool0.
+
+    >>> description = read_urdf(data_file("ur5e.urdf"))
+    >>> description.name, description.base_link, description.tip_link
+    ('UR5e', 'base_link', 'tool0')
+    >>> len(description.axes), description.joint_names[0]
+    (6, 'shoulder_pan_joint')
     """
 
     axes: tuple
@@ -292,6 +302,15 @@ def read_urdf(source, base_link=None, tip_link=None):
     -------
     URDFDescription
         The chain's joint screws, home pose, limits and names.
+
+    Examples
+    --------
+    The UR5e's tool at q = 0, exactly: (-0.8172, -0.2329, 0.0628) m, as its DH
+    parameters give (a2 + a3, -(d4 + d6), d1 - d5; see ``sk.robots.ur5e``).
+
+    >>> description = read_urdf(data_file("ur5e.urdf"))
+    >>> description.home[:3, 3].T
+    Matrix([[-2043/2500, -2329/10000, 157/2500]])
     """
     for name, value in (("base_link", base_link), ("tip_link", tip_link)):
         if value is not None and not isinstance(value, str):
@@ -350,6 +369,11 @@ def data_file(name):
     -------
     str
         The file's path.
+
+    Examples
+    --------
+    >>> os.path.basename(data_file("ur5e.urdf"))
+    'ur5e.urdf'
     """
     if not isinstance(name, str):
         raise TypeError(f"name must be a file name (str), got {describe(name)}")

@@ -105,6 +105,15 @@ def robot_viewer(chain, q=None, ellipsoid=False, ellipsoid_scale=0.4, size=(520,
     roll, pitch, yaw (deg, R = Rz(yaw) Ry(pitch) Rx(roll), as
     :func:`screwkit.orientation.rpy_from_rotation`). Joints are coloured as in the
     mobility figures: revolute blue, prismatic orange, helical purple.
+
+    Examples
+    --------
+    In a notebook it shows the arm; its text says what the sliders are:
+
+    >>> import screwkit as sk
+    >>> robot_viewer(sk.robots.planar([1.0, 0.5]))
+    planar 2R: sliders q1 (deg) [-180, 180] step 1 at 0,
+    q2 (deg) [-180, 180] step 1 at 0
     """
     _check_chain(chain)
     specs = _sliders.slider_specs(chain, q)
@@ -235,6 +244,16 @@ def trajectory_viewer(chain, paths, labels=None, times=None, size=(560, 460)):
     first to the last time (s, on a grid of 0.01, 0.005 or 0.001 s that holds both).
     Revolute joints' paths are sent unwrapped (no jump of a whole turn between two
     samples, the same poses), so that the interpolation never spins a joint round.
+
+    Examples
+    --------
+    One joint path of three samples, over the default 2 s:
+
+    >>> import screwkit as sk
+    >>> q = np.array([[0.0, 0.0], [0.5, 0.2], [1.0, 0.4]])
+    >>> trajectory_viewer(sk.robots.planar([1.0, 0.5]), q)
+    planar 2R: 1 trajectories of 3 samples over 0 to 2 s (path 1); play button and
+    time slider
     """
     _check_chain(chain)
     labels, arrays = _joint_paths(paths, labels, chain.n)
@@ -351,6 +370,14 @@ def screw_motion_viewer(s, r, h, start=None, theta=None, size=(520, 420)):
     -------
     Viewer with one slider theta in [-360, 360] deg (or d in [-1, 1] m for a
     translation).
+
+    Examples
+    --------
+    A turn about the vertical line through (1, 0, 0), starting at 90 degrees:
+
+    >>> screw_motion_viewer([0, 0, 1], [1, 0, 0], 0)
+    screw motion about s = [0.0, 0.0, 1.0] through r = [1.0, 0.0, 0.0] m,
+    pitch 0 m/rad: slider theta (deg) [-360, 360] step 1 at 90
     """
     s = check_shape(as_float_array(s, "s"), "s", (3,))
     r = check_shape(as_float_array(r, "r"), "r", (3,))

@@ -29,6 +29,19 @@ class LiveFigure:
         The ipywidgets object (its ``.children`` hold the sliders).
     fallback : object with ``_repr_html_``
         What a page without a kernel shows.
+
+    Examples
+    --------
+    Jupyter shows the widget; a page without a kernel shows the fallback's HTML.
+    (Outside a kernel the widget's first drawing goes to the terminal: kept quiet
+    here.)
+
+    >>> import contextlib, io
+    >>> with contextlib.redirect_stdout(io.StringIO()):
+    ...     live = screw_motion_slider([0, 0, 1], [1, 0, 0], 0)
+    >>> sorted(live._repr_mimebundle_())
+    ['application/vnd.jupyter.widget-view+json', 'text/html', 'text/plain']
+    >>> plt.close("all")
     """
 
     def __init__(self, widget, fallback):
@@ -88,6 +101,18 @@ def screw_motion_slider(
     -------
     LiveFigure
         The slider and its drawing.
+
+    Examples
+    --------
+    One slider, theta in degrees, starting at 90 (outside a kernel the first
+    drawing goes to the terminal: kept quiet here):
+
+    >>> import contextlib, io
+    >>> with contextlib.redirect_stdout(io.StringIO()):
+    ...     live = screw_motion_slider([0, 0, 1], [1, 0, 0], 0)
+    >>> [(slider.description, slider.value) for slider in live.widget.children[:-1]]
+    [('theta (deg)', 90.0)]
+    >>> plt.close("all")
     """
     start = (
         np.eye(4)
@@ -137,6 +162,19 @@ def joint_sliders(
     -------
     LiveFigure
         The sliders and their drawing.
+
+    Examples
+    --------
+    A planar 2R arm without joint limits: two sliders over a whole turn (outside a
+    kernel the first drawing goes to the terminal: kept quiet here).
+
+    >>> import contextlib, io
+    >>> import screwkit as sk
+    >>> with contextlib.redirect_stdout(io.StringIO()):
+    ...     live = joint_sliders(sk.robots.planar([1.0, 0.5]))
+    >>> [(s.description, s.min, s.max) for s in live.widget.children[:-1]]
+    [('q1 (deg)', -180.0, 180.0), ('q2 (deg)', -180.0, 180.0)]
+    >>> plt.close("all")
     """
     specs = _sliders.slider_specs(check_chain(chain), q)
     fallback = viewer.robot_viewer(chain, q)
@@ -176,6 +214,18 @@ def figure_slider(draw, label, unit=None, values=None, choices=None, value=None)
     See Also
     --------
     screwkit.viewer.stepped_figure : the same figure without a kernel.
+
+    Examples
+    --------
+    A text per value of k; the page's fallback holds the three precomputed values
+    (outside a kernel the first one is printed to the terminal: kept quiet here).
+
+    >>> import contextlib, io
+    >>> with contextlib.redirect_stdout(io.StringIO()):
+    ...     live = figure_slider(lambda k: f"k = {k:g}", "k", "1/s",
+    ...                          values=viewer.grid(0, 1, 0.5))
+    >>> live
+    LiveFigure(k (1/s): 3 precomputed values from 0 to 1, showing 0)
     """
     fallback = viewer.stepped_figure(
         draw, label, unit, values=values, choices=choices, value=value

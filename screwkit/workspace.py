@@ -71,6 +71,17 @@ class Sweep:
         The values of every joint off the grid.
     points : ndarray, shape grid + (3,)
         The end-effector point of each configuration (m).
+
+    Examples
+    --------
+    Links of 1 and 0.5 m, the elbow swept over 0, 90 and 180 deg (shoulder at 0):
+    the tip at 1.5, then at (1, 0.5), then folded back to 0.5.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 0.5])
+    >>> swept = sweep(arm, {2: (0.0, np.pi)}, num=3)
+    >>> swept.joints, (swept.points[:, :2].round(12) + 0.0).tolist()
+    ((2,), [[1.5, 0.0], [1.0, 0.5], [0.5, 0.0]])
     """
 
     chain: object
@@ -103,6 +114,19 @@ class Sweep:
         -------
         ndarray, shape (stop - start, n)
             The configurations (rad or m).
+
+        Examples
+        --------
+        A 2 x 3 grid (joint 1 at 0 and 90 deg, joint 2 at 0, 90, 180 deg); its first
+        row, joint 2 varying fastest:
+
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 0.5])
+        >>> swept = sweep(arm, {1: (0.0, np.pi / 2), 2: (0.0, np.pi)}, num=(2, 3))
+        >>> swept.configurations(0, 3).round(4)
+        array([[0.    , 0.    ],
+               [0.    , 1.5708],
+               [0.    , 3.1416]])
         """
         start = check_integer(start, "start", minimum=0)
         stop = self.size if stop is None else check_integer(stop, "stop", minimum=start)
@@ -150,6 +174,17 @@ class Sweep:
         -------
         dict
             {'x': (min, max), 'y': ..., 'z': ...} (m).
+
+        Examples
+        --------
+        The elbow of the 1 m + 0.5 m arm swept from 0 to 180 deg: the tip stays in
+        0.5 <= x <= 1.5 and 0 <= y <= 0.5.
+
+        >>> import screwkit as sk
+        >>> swept = sweep(sk.robots.planar([1.0, 0.5]), {2: (0.0, np.pi)}, num=3)
+        >>> {axis: [round(v, 6) + 0.0 for v in span]
+        ...  for axis, span in swept.extents().items()}
+        {'x': [0.5, 1.5], 'y': [0.0, 0.5], 'z': [0.0, 0.0]}
         """
         flat = self.points.reshape(-1, 3)
         return {
@@ -169,6 +204,16 @@ class Sweep:
         -------
         (float, float)
             (min, max) distance (m).
+
+        Examples
+        --------
+        The elbow swept all round: the tip spans the annulus 1 - 0.5 to 1 + 0.5 m.
+
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 0.5])
+        >>> swept = sweep(arm, {2: (-np.pi, np.pi)}, num=5)
+        >>> [round(d, 6) for d in swept.reach([0.0, 0.0, 0.0])]
+        [0.5, 1.5]
         """
         centre = as_float_array(centre, "centre")
         if centre.shape != (3,):
@@ -201,6 +246,17 @@ class Sweep:
         -------
         ndarray, shape (M, 3)
             The M points (m).
+
+        Examples
+        --------
+        The stretched arm (1.5 m) turned by the shoulder to -180, -90, 0, 90 and
+        180 deg: three of those tips lie on the x axis (y = 0).
+
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 0.5])
+        >>> swept = sweep(arm, {1: (-np.pi, np.pi)}, num=5)
+        >>> swept.section("y", 0.0)[:, 0].round(6).tolist()
+        [-1.5, 1.5, -1.5]
         """
         check_option(axis, "axis", ("x", "y", "z"))
         value = as_float_array(value, "value")
@@ -220,6 +276,17 @@ class Sweep:
         -------
         ndarray, shape grid + (m, n)
             The Jacobians, m rows each.
+
+        Examples
+        --------
+        With the elbow at 90 deg the tip is at (1, 0.5): column i is z x (tip -
+        joint i), so J = [[-0.5, -0.5], [1, 0]].
+
+        >>> import screwkit as sk
+        >>> swept = sweep(sk.robots.planar([1.0, 0.5]), {2: (0.0, np.pi)}, num=3)
+        >>> J = swept.jacobians("planar")
+        >>> J.shape, (J[1].round(12) + 0.0).tolist()
+        ((3, 2, 2), [[-0.5, -0.5], [1.0, 0.0]])
         """
         block = check_rows(rows)
         m = len(range(6)[block])
@@ -249,6 +316,15 @@ class Sweep:
         -------
         ndarray, shape grid
             det J.
+
+        Examples
+        --------
+        For two links det J = l1 l2 sin(q2): 0 stretched, 0.5 at 90 deg, 0 folded.
+
+        >>> import screwkit as sk
+        >>> swept = sweep(sk.robots.planar([1.0, 0.5]), {2: (0.0, np.pi)}, num=3)
+        >>> (swept.determinant("planar").round(6) + 0.0).tolist()
+        [0.0, 0.5, 0.0]
         """
         block = check_rows(rows)
         m = len(range(6)[block])
@@ -272,6 +348,15 @@ class Sweep:
         -------
         ndarray, shape grid
             The manipulability (0.0 where singular).
+
+        Examples
+        --------
+        For two links it is the absolute value of l1 l2 sin(q2):
+
+        >>> import screwkit as sk
+        >>> swept = sweep(sk.robots.planar([1.0, 0.5]), {2: (0.0, np.pi)}, num=3)
+        >>> (swept.manipulability("planar").round(6) + 0.0).tolist()
+        [0.0, 0.5, 0.0]
         """
         check_rows(rows)
         return self._per_point(lambda q: manipulability(self.chain, q, rows))
@@ -293,6 +378,17 @@ class Sweep:
         -------
         ndarray of bool, shape grid
             True at singular configurations.
+
+        Examples
+        --------
+        The elbow at -90, -30, 30 and 90 deg: det J changes sign between -30 and 30
+        (the stretched arm, q2 = 0, lies between them), so both are marked.
+
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 0.5])
+        >>> swept = sweep(arm, {2: (-np.pi / 2, np.pi / 2)}, num=4)
+        >>> swept.singular("planar").tolist()
+        [False, True, True, False]
         """
         block = check_rows(rows)
         lost = self.manipulability(rows) == 0.0
@@ -334,6 +430,16 @@ def sweep(chain, ranges, num=301, q=None, max_configurations=MAX_CONFIGURATIONS)
     Returns
     -------
     Sweep, with points of shape grid + (3,) (m), computed in chunks of ``CHUNK`` poses
+
+    Examples
+    --------
+    The shoulder of a stretched 1.5 m arm swept over a quarter turn: the tip moves
+    from (1.5, 0) to (0, 1.5).
+
+    >>> import screwkit as sk
+    >>> swept = sweep(sk.robots.planar([1.0, 0.5]), {1: (0.0, np.pi / 2)}, num=3)
+    >>> swept.points.shape, (swept.points[[0, -1], :2].round(12) + 0.0).tolist()
+    ((3, 3), [[1.5, 0.0], [0.0, 1.5]])
     """
     chain = check_chain(chain)
     if not isinstance(ranges, dict) or not ranges:

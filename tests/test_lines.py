@@ -344,9 +344,9 @@ def test_lines_meeting_two_skew_lines_and_point_and_plane():
     assert result.data["point"] == sp.Matrix(P)
 
 
-def test_special_and_general_complex():
-    axis = Line.through([0, 0, 1], [1, 1, 1])
-    meeting = [
+def lines_through_axis(axis):
+    """Five lines, each through a point of ``axis`` (a special complex of rank 5)."""
+    return [
         Line.through(axis.point + t * axis.direction, q)
         for t, q in [
             (0, [5, 0, 0]),
@@ -356,6 +356,11 @@ def test_special_and_general_complex():
             (3, [0, 0, -3]),
         ]
     ]
+
+
+def test_special_and_general_complex():
+    axis = Line.through([0, 0, 1], [1, 1, 1])
+    meeting = lines_through_axis(axis)
     result = dependency(meeting)
     assert (result.rank, result.name) == (5, "special complex")
     assert intersection(result.data["line"], axis) == "same line"
@@ -436,16 +441,7 @@ def named_configurations():
     """One built example of every name dependency gives (ranks 1 to 5)."""
     P = [1, 2, -1]
     axis = Line.through([0, 0, 1], [1, 1, 1])
-    meeting_axis = [
-        Line.through(axis.point + t * axis.direction, q)
-        for t, q in [
-            (0, [5, 0, 0]),
-            (1, [0, 3, 2]),
-            (2, [1, -4, 0]),
-            (-1, [2, 2, 7]),
-            (3, [0, 0, -3]),
-        ]
-    ]
+    meeting_axis = lines_through_axis(axis)
     return {
         "one line": [
             Line.through([0, 0, 0], [1, 2, 3]),

@@ -59,6 +59,18 @@ class Step:
         Why the step is infeasible or not tracked, or None.
     method : {'pseudo-inverse', 'qp'}
         How the step was computed.
+
+    Examples
+    --------
+    A planar 2R arm (unit links) with its elbow at a right angle, asked to move its
+    tip up at 1 m/s: it needs 1 rad/s at each joint, above a limit of 0.5 rad/s.
+
+    >>> from screwkit.robots import planar
+    >>> arm = planar([1.0, 1.0])
+    >>> step = pseudo_inverse_step(arm, [0, np.pi / 2], [0, 1], 0.01, rows="planar",
+    ...                            v_max=0.5)
+    >>> step.feasible, step.tracked, step.limited
+    (False, True, ('joint 1 velocity', 'joint 2 velocity'))
     """
 
     dq: np.ndarray
@@ -148,6 +160,17 @@ def pseudo_inverse_step(chain, q, twist, dt, rows="all", damping=0.0, v_max=None
     -------
     Step : ``feasible`` is False, with the joints named, if q + dq dt leaves the
         position limits or dq a rate limit
+
+    Examples
+    --------
+    The 2R arm at q = (0, 90 deg) has its tip at (1, 1) and J = [[-1, -1], [1, 0]];
+    the tip straight up at 1 m/s solves J dq = (0, 1): dq = (1, -1).
+
+    >>> from screwkit.robots import planar
+    >>> arm = planar([1.0, 1.0])
+    >>> step = pseudo_inverse_step(arm, [0, np.pi / 2], [0, 1], 0.01, rows="planar")
+    >>> step.dq.round(6) + 0.0, step.feasible
+    (array([ 1., -1.]), True)
     """
     q, J, V, dt, damping = _problem(chain, q, twist, dt, rows, damping)
     v = _velocity_limits(chain, v_max)
@@ -192,6 +215,18 @@ def qp_step(chain, q, twist, dt, rows="all", damping=0.0, v_max=None, exact=Fals
         (q outside them by more than one step can recover, or V unreachable with
         ``exact``); ``tracked`` False with the limits met named when the rates give
         only part of V
+
+    Examples
+    --------
+    The step of :func:`pseudo_inverse_step` (dq = (1, -1)) under a limit of
+    0.5 rad/s: the best within the box is (0.5, -0.5), which moves the tip at only
+    0.5 m/s, an error of 0.5.
+
+    >>> from screwkit.robots import planar
+    >>> arm = planar([1.0, 1.0])
+    >>> step = qp_step(arm, [0, np.pi / 2], [0, 1], 0.01, rows="planar", v_max=0.5)
+    >>> step.dq.round(6) + 0.0, step.tracked, round(step.tracking_error, 6)
+    (array([ 0.5, -0.5]), False, 0.5)
     """
     q, J, V, dt, damping = _problem(chain, q, twist, dt, rows, damping)
     if not isinstance(exact, (bool, np.bool_)):

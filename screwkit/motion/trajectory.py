@@ -45,22 +45,10 @@ from ..lie import log_rotation, log_transform
 from ..links import Joint
 from ..tolerances import NEAR_SINGULAR, SERIES_BELOW, SLERP_LINEAR_BELOW
 from ..transforms import _wrap_angle, exp_twist
+from . import LAZY
 
-__all__ = [
-    "TimeScaling",
-    "cubic",
-    "quintic",
-    "trapezoidal",
-    "fastest_joint_scaling",
-    "joint_path",
-    "screw_path",
-    "cartesian_path",
-    "slerp",
-    "via_points",
-    "ViaPoints",
-    "follow_path",
-    "PathIK",
-]
+# the names are listed once, in the family's table of what loads on first use
+__all__ = list(LAZY["trajectory"])
 
 
 # ---- time scalings ------------------------------------------------------------------
@@ -99,6 +87,14 @@ class TimeScaling:
         The largest ds/dt (1/s).
     peak_acceleration : float
         The largest magnitude of d2s/dt2 (1/s^2).
+
+    Examples
+    --------
+    A quintic over 2 s peaks at ds/dt = 15/8 / 2 = 0.9375 per second, half-way:
+
+    >>> scaling = quintic(2.0)
+    >>> scaling.kind, scaling.duration, scaling.peak_velocity
+    ('quintic', 2.0, 0.9375)
     """
 
     kind: str
@@ -126,6 +122,14 @@ class TimeScaling:
         Returns
         -------
         (s, ds, dds) : three ndarrays of t's shape (1, 1/s, 1/s^2)
+
+        Examples
+        --------
+        The cubic over 1 s, s = 3 t^2 - 2 t^3: ds = 6 t - 6 t^2, dds = 6 - 12 t.
+
+        >>> s, ds, dds = cubic(1.0).evaluate([0.0, 0.5, 1.0])
+        >>> s.tolist(), ds.tolist(), dds.tolist()
+        ([0.0, 0.5, 1.0], [0.0, 1.5, 0.0], [6.0, 0.0, -6.0])
         """
         t = self._times(t)
         T = self.duration
@@ -173,6 +177,11 @@ class TimeScaling:
         -------
         ndarray, shape (count,)
             The times (s).
+
+        Examples
+        --------
+        >>> quintic(2.0).times(5)
+        array([0. , 0.5, 1. , 1.5, 2. ])
         """
         if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
             raise TypeError(f"count must be an integer, got {describe(count)}")
@@ -227,6 +236,13 @@ def cubic(duration=None, *, v_max=None, a_max=None):
     """The cubic time scaling s = 3 tau^2 - 2 tau^3, tau = t / duration.
 
     {sections}
+
+    Examples
+    --------
+    Its peak ds/dt is 3 / (2 T): a limit of 0.75 per second needs T = 2 s.
+
+    >>> cubic(v_max=0.75).duration
+    2.0
     """
     return _polynomial("cubic", duration, v_max, a_max)
 
@@ -237,6 +253,14 @@ def quintic(duration=None, *, v_max=None, a_max=None):
     acceleration at both ends).
 
     {sections}
+
+    Examples
+    --------
+    Half-way s = 1/2 and ds/dt peaks at 15 / (8 T); the ends are at rest:
+
+    >>> s, ds, dds = quintic(1.0).evaluate([0.0, 0.5, 1.0])
+    >>> s.tolist(), ds.tolist(), (dds + 0.0).tolist()
+    ([0.0, 0.5, 1.0], [0.0, 1.875, 0.0], [0.0, 0.0, 0.0])
     """
     return _polynomial("quintic", duration, v_max, a_max)
 
@@ -259,6 +283,16 @@ def trapezoidal(duration=None, *, v_max=None, a_max=None):
     Returns
     -------
     TimeScaling
+
+    Examples
+    --------
+    Cruise at 0.5 per second, accelerate at 1 per second squared: 1/v + v/a = 2.5 s,
+    and half-way (t = 1.25 s) s = 1/2 at the cruise velocity.
+
+    >>> scaling = trapezoidal(v_max=0.5, a_max=1.0)
+    >>> s, ds, dds = scaling.evaluate(1.25)
+    >>> scaling.duration, float(s), float(ds), float(dds)
+    (2.5, 0.5, 0.5, 0.0)
     """
     given = [x is not None for x in (duration, v_max, a_max)]
     if sum(given) != 2:
@@ -303,6 +337,15 @@ def fastest_joint_scaling(profile, q_start, q_end, v_max, a_max):
     Returns
     -------
     TimeScaling
+
+    Examples
+    --------
+    Joint 2 moves 2 rad at most 1 rad/s and 1 rad/s^2: it bounds s by 1/2 and 1/2,
+    so the trapezoid takes 1/v + v/a = 2 + 1 = 3 s.
+
+    >>> scaling = fastest_joint_scaling(trapezoidal, [0, 0], [1, 2], 1.0, 1.0)
+    >>> scaling.duration, scaling.peak_velocity
+    (3.0, 0.5)
     """
     if profile not in (cubic, quintic, trapezoidal):
         raise TypeError(
@@ -369,6 +412,15 @@ def joint_path(q_start, q_end, scaling, t):
     Returns
     -------
     (q, dq, ddq) : ndarrays, shape (n,) or (K, n) each (rad, rad/s, rad/s^2)
+
+    Examples
+    --------
+    Half-way through a cubic of 1 s, each joint is half-way at 1.5 times its
+    distance per second:
+
+    >>> q, dq, ddq = joint_path([0, 0], [1, 2], cubic(1.0), 0.5)
+    >>> q.tolist(), dq.tolist(), ddq.tolist()
+    ([0.5, 1.0], [1.5, 3.0], [0.0, 0.0])
     """
     q_start, q_end = _joint_pair(q_start, q_end)
     if not isinstance(scaling, TimeScaling):
@@ -454,6 +506,15 @@ def screw_path(T_start, T_end, s):
     scaling.
 
     {sections}
+
+    Examples
+    --------
+    To a quarter turn about the vertical line through (1, 0, 0): half-way the
+    origin has turned 45 degrees about that line, to (1 - cos 45, -sin 45, 0).
+
+    >>> T_end = np.array([[0, -1, 0, 1], [1, 0, 0, -1], [0, 0, 1, 0], [0, 0, 0, 1]])
+    >>> screw_path(np.eye(4), T_end, 0.5)[:3, 3].round(4) + 0.0
+    array([ 0.2929, -0.7071,  0.    ])
     """
     T_start, T_end = _pose_pair(T_start, T_end)
     s = _path_parameter(s, T_start.size, "screw_path")
@@ -518,6 +579,15 @@ def cartesian_path(T_start, T_end, s):
     motion's origin moves on a helix; the rotations are the same.
 
     {sections}
+
+    Examples
+    --------
+    The same quarter turn as in :func:`screw_path`: here the origin goes straight,
+    half-way at the midpoint of (0, 0, 0) and (1, -1, 0).
+
+    >>> T_end = np.array([[0, -1, 0, 1], [1, 0, 0, -1], [0, 0, 1, 0], [0, 0, 0, 1]])
+    >>> cartesian_path(np.eye(4), T_end, 0.5)[:3, 3].round(4) + 0.0
+    array([ 0.5, -0.5,  0. ])
     """
     T_start, T_end = _pose_pair(T_start, T_end)
     # the rotations are built twice (the turn, then the poses)
@@ -557,6 +627,15 @@ def slerp(q_start, q_end, s):
     Returns
     -------
     ndarray, shape (4,) or (K, 4)
+
+    Examples
+    --------
+    Half-way from no turn to a quarter turn about z is an eighth of a turn:
+    (cos 22.5 deg, 0, 0, sin 22.5 deg).
+
+    >>> quarter = [np.cos(np.pi / 4), 0.0, 0.0, np.sin(np.pi / 4)]
+    >>> slerp([1.0, 0.0, 0.0, 0.0], quarter, 0.5).round(4) + 0.0
+    array([0.9239, 0.    , 0.    , 0.3827])
     """
     q0 = _unit_quaternion(q_start, "q_start")
     q1 = _unit_quaternion(q_end, "q_end")
@@ -604,6 +683,15 @@ class ViaPoints:
         The points.
     velocities : ndarray, shape (M, n)
         The velocity at each point.
+
+    Examples
+    --------
+    Up to 1 and back: the interior point is a turning point, so it is passed at
+    rest.
+
+    >>> motion = via_points([0.0, 1.0, 2.0], [0.0, 1.0, 0.0])
+    >>> motion.times.tolist(), motion.velocities.ravel().tolist()
+    ([0.0, 1.0, 2.0], [0.0, 0.0, 0.0])
     """
 
     times: np.ndarray
@@ -620,6 +708,15 @@ class ViaPoints:
         Returns
         -------
         (q, dq, ddq) : ndarrays, shape (n,) or (K, n) each
+
+        Examples
+        --------
+        Between points at rest each piece is the cubic scaling: half-way, half the
+        step at 1.5 times the step per second.
+
+        >>> q, dq, ddq = via_points([0.0, 1.0], [0.0, 2.0]).evaluate(0.5)
+        >>> q.tolist(), dq.tolist()
+        ([1.0], [3.0])
         """
         t = as_float_array(t, "t")
         first, last = self.times[0], self.times[-1]
@@ -680,6 +777,16 @@ def via_points(times, points, velocities=None):
     Returns
     -------
     ViaPoints
+
+    Examples
+    --------
+    Rising through 1 at t = 1 s (slopes 1 and 2 on either side): the velocity there
+    is their mean, 1.5.
+
+    >>> motion = via_points([0.0, 1.0, 2.0], [0.0, 1.0, 3.0])
+    >>> q, dq, ddq = motion.evaluate(1.0)
+    >>> q.tolist(), dq.tolist()
+    ([1.0], [1.5])
     """
     times = as_float_array(times, "times")
     points = as_float_array(points, "points")
@@ -736,6 +843,15 @@ class PathIK:
         The closed-form branch of each sample ('' for numeric IK).
     reason : str or None
         Why some pose was not reached, or None.
+
+    Examples
+    --------
+    >>> from screwkit.robots import planar
+    >>> arm = planar([1.0, 1.0])
+    >>> q_path = np.array([[0.2, 1.0], [0.4, 0.8], [0.6, 0.6]])
+    >>> result = follow_path(arm, arm.fk(q_path), q_path[0], method="numeric")
+    >>> result.reached.tolist(), result.singular.tolist(), result.reason
+    ([True, True, True], [False, False, False], None)
     """
 
     q: np.ndarray
@@ -765,6 +881,19 @@ def follow_path(chain, poses, q_start=None, method="closed_form"):
     Returns
     -------
     PathIK
+
+    Examples
+    --------
+    The poses of a known joint path of a planar 2R arm give that path back:
+
+    >>> from screwkit.robots import planar
+    >>> arm = planar([1.0, 1.0])
+    >>> q_path = np.array([[0.2, 1.0], [0.4, 0.8], [0.6, 0.6]])
+    >>> result = follow_path(arm, arm.fk(q_path), q_path[0], method="numeric")
+    >>> result.q.round(6) + 0.0
+    array([[0.2, 1. ],
+           [0.4, 0.8],
+           [0.6, 0.6]])
     """
     check_chain(chain)
     method = check_option(method, "method", ("closed_form", "numeric"))

@@ -127,6 +127,17 @@ def stewart_gough(base=None, platform=None, height=1, leg_limits=((0.9, 1.6),) *
     -------
     ParallelManipulator
         Spatial (3T3R), six legs.
+
+    Examples
+    --------
+    At home, by symmetry, the six legs are equally long: each spans a horizontal
+    chord between radii 1 and 0.5 whose angles differ by 30 degrees,
+    1 + 0.25 - 2 (0.5) cos 30 = 0.384 m^2, and 1 m of height: sqrt(1.384) = 1.176 m.
+
+    >>> import numpy as np
+    >>> pm = stewart_gough()
+    >>> pm.ik(pm.home()).round(3)
+    array([1.176, 1.176, 1.176, 1.176, 1.176, 1.176])
     """
     base = _geometry(base, "base", 6, 3, STEWART_BASE)
     platform = _geometry(platform, "platform", 6, 3, STEWART_PLATFORM)
@@ -156,7 +167,13 @@ def planar_3rpr(base=None, platform=None, home=None, leg_limits=None):
     Returns
     -------
     ParallelManipulator
-        Planar (2T1R), three legs.
+        Planar (2T1R), three legs of actuated length (m).
+
+    Examples
+    --------
+    >>> pm = planar_3rpr()
+    >>> pm, pm.motion_type
+    (ParallelManipulator('3-RPR', 3 legs, 2T1R), '2T1R')
     """
     base = _geometry(base, "base", 3, 2, [r + [0] for r in RPR_BASE])
     platform = _geometry(platform, "platform", 3, 2, [r + [0] for r in RPR_PLATFORM])
@@ -211,6 +228,14 @@ def planar_3rrr(
     -------
     ParallelManipulator
         Planar (2T1R), three legs; the actuated values are crank angles (rad).
+
+    Examples
+    --------
+    Two elbows per leg, three legs: 2^3 = 8 working modes.
+
+    >>> pm = planar_3rrr()
+    >>> len(pm.working_modes), pm.working_modes[0], pm.working_modes[-1]
+    (8, '+++', '---')
     """
     base, platform, l1, l2 = _three_arms(base_radius, platform_radius, l1, l2)
     z, x = [0, 0, 1], [1, 0, 0]
@@ -251,7 +276,18 @@ def delta(
     Returns
     -------
     ParallelManipulator
-        Translational (3T), three legs; the actuated values are crank angles (rad).
+        Translational (3T), three legs driven by crank angles (rad).
+
+    Examples
+    --------
+    At home the platform is centred under the base, so by symmetry the three crank
+    angles are equal:
+
+    >>> import numpy as np
+    >>> pm = delta()
+    >>> theta = pm.ik(pm.home())
+    >>> pm.motion_type, bool(np.allclose(theta, theta[0]))
+    ('3T', True)
     """
     base, platform, l1, l2 = _three_arms(base_radius, platform_radius, l1, l2)
     radial = _circle(1, [0, 120, 240])
@@ -296,6 +332,15 @@ def tripteron(
     ParallelManipulator
         Translational (3T), three legs; the actuated values are carriage positions
         (m).
+
+    Examples
+    --------
+    Decoupled: moving the platform 0.1 m along x moves carriage 1 alone, by 0.1 m.
+
+    >>> from screwkit.transforms import transl
+    >>> pm = tripteron()
+    >>> (pm.ik(transl(0.45, 0.35, 0.35)) - pm.ik(pm.home())).round(12) + 0.0
+    array([0.1, 0. , 0. ])
     """
     a, b, L = _length(a, "a"), _length(b, "b"), _length(L, "L")
     offset = _length(offset, "offset")

@@ -80,6 +80,12 @@ def evaluated(legs):
     -------
     Legs
         The same legs, their exact geometry as SymPy Floats.
+
+    Examples
+    --------
+    >>> legs = Prismatic([[0, 0, 0], [sp.Rational(1, 2), 0, 0]], planar=True)
+    >>> legs.A_exact[1][0], evaluated(legs).A_exact[1][0]
+    (1/2, 0.500000000000000)
     """
     copy = object.__new__(type(legs))
     copy.__dict__.update(legs.__dict__)
@@ -97,6 +103,16 @@ class Legs:
     component first) and return arrays of shape (N, m); exact methods take one pose's
     points as a list of m SymPy 3 x 1 matrices. ``signs`` (m,) holds +1 or -1 per leg,
     the working mode (the sign of each elbow; ignored by legs with one mode).
+
+    Examples
+    --------
+    Two R-P-R legs from A = (0, 0, 0) and (2, 0, 0) to C = (3, 4, 0) and (2, 1, 0):
+    lengths 5 and 1, unit directions (0.6, 0.8, 0) and (0, 1, 0).
+
+    >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+    >>> C = np.array([[3.0, 4.0, 0.0], [2.0, 1.0, 0.0]]).T[:, None, :]  # (3, 1, 2)
+    >>> legs.ik(C, np.ones(2))[0]
+    array([[5., 1.]])
     """
 
     #: Each leg's working modes: ('',) for one, ('+', '-') for an elbow.
@@ -112,6 +128,12 @@ class Legs:
         Returns
         -------
         Legs
+
+        Examples
+        --------
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> legs.scaled(2.0).A[:, 0, :].T.tolist()  # the base points, doubled
+        [[0.0, 0.0, 0.0], [4.0, 0.0, 0.0]]
         """
         raise NotImplementedError
 
@@ -132,6 +154,16 @@ class Legs:
             Where the leg reaches.
         None
             (room for the passive joints).
+
+        Examples
+        --------
+        The legs of the class example (lengths 5 and 1):
+
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> C = np.array([[3.0, 4.0, 0.0], [2.0, 1.0, 0.0]]).T[:, None, :]  # (3, 1, 2)
+        >>> rho, ok, _ = legs.ik(C, np.ones(2))
+        >>> rho, ok
+        (array([[5., 1.]]), array([[ True,  True]]))
         """
         raise NotImplementedError
 
@@ -150,6 +182,16 @@ class Legs:
             dr/dC (no unit).
         dr : ndarray, shape (N, m), or float
             dr/drho (no unit, or m per rad).
+
+        Examples
+        --------
+        The legs of the class example (lengths 5 and 1):
+
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> C = np.array([[3.0, 4.0, 0.0], [2.0, 1.0, 0.0]]).T[:, None, :]  # (3, 1, 2)
+        >>> r, g, dr = legs.closure(C, np.array([[5.0, 1.0]]))
+        >>> r.tolist(), g[:, 0, :].T.round(12).tolist(), dr
+        ([[0.0, 0.0]], [[0.6, 0.8, 0.0], [0.0, 1.0, 0.0]], -1.0)
         """
         raise NotImplementedError
 
@@ -167,6 +209,15 @@ class Legs:
         -------
         ndarray, shape (3, N, m)
             No unit for a length rho, rad per m for a crank angle.
+
+        Examples
+        --------
+        The legs of the class example (lengths 5 and 1):
+
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> C = np.array([[3.0, 4.0, 0.0], [2.0, 1.0, 0.0]]).T[:, None, :]  # (3, 1, 2)
+        >>> legs.rate_rows(C, np.array([[5.0, 1.0]]))[:, 0, :].T.round(12).tolist()
+        [[0.6, 0.8, 0.0], [0.0, 1.0, 0.0]]
         """
         raise NotImplementedError
 
@@ -181,6 +232,16 @@ class Legs:
         -------
         dict of str to ndarray
             Joint angles (rad), shape (N, m), or elbow points (m), shape (3, N, m).
+
+        Examples
+        --------
+        The legs of the class example (lengths 5 and 1):
+
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> C = np.array([[3.0, 4.0, 0.0], [2.0, 1.0, 0.0]]).T[:, None, :]  # (3, 1, 2)
+        >>> phi = legs.passive(C, np.array([[5.0, 1.0]]), np.ones(2))["phi"]
+        >>> phi.round(4)  # atan2(0.8, 0.6) and 90 deg
+        array([[0.9273, 1.5708]])
         """
         raise NotImplementedError
 
@@ -195,6 +256,15 @@ class Legs:
         -------
         list of SymPy expressions
             One per leg (m or rad); sympy.nan where out of reach.
+
+        Examples
+        --------
+        The legs of the class example, exactly:
+
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> C = [sp.Matrix([3, 4, 0]), sp.Matrix([2, 1, 0])]
+        >>> legs.ik_exact(C, [1, 1])
+        [5, 1]
         """
         raise NotImplementedError
 
@@ -209,6 +279,15 @@ class Legs:
         Returns
         -------
         list of (sympy.Matrix (3, 1), SymPy expression)
+
+        Examples
+        --------
+        The legs of the class example, exactly:
+
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> C = [sp.Matrix([3, 4, 0]), sp.Matrix([2, 1, 0])]
+        >>> [(list(g), dr) for g, dr in legs.rows_exact(C, [1, 1])]  # g = C - A
+        [([3, 4, 0], -5), ([0, 1, 0], -1)]
         """
         raise NotImplementedError
 
@@ -227,6 +306,16 @@ class Legs:
             Per leg, its joints' axis direction s (3,), point r (3,) in m and pitch h.
         actuated : list of int
             The actuated joint's index in each leg.
+
+        Examples
+        --------
+        R-P-R: a revolute about z at A, the slide along C - A, a revolute at C.
+
+        >>> legs = Prismatic([[0, 0, 0], [2, 0, 0]], planar=True)
+        >>> C = [sp.Matrix([3, 4, 0]), sp.Matrix([2, 1, 0])]
+        >>> limbs, actuated = legs.limbs(C, [1, 1])
+        >>> [h for _, _, h in limbs[0]], list(limbs[0][1][0]), actuated
+        ([0, oo, 0], [3, 4, 0], [1, 1])
         """
         raise NotImplementedError
 
@@ -240,6 +329,14 @@ class Prismatic(Legs):
         The base points A_i (m); exact entries stay exact.
     planar : bool
         R-P-R legs in the xy-plane (else U-P-S).
+
+    Examples
+    --------
+    A U-P-S leg from the origin to (1, 2, 2) is 3 m long:
+
+    >>> leg = Prismatic([[0, 0, 0]], planar=False)
+    >>> leg.ik(np.array([1.0, 2.0, 2.0])[:, None, None], np.ones(1))[0]
+    array([[3.]])
     """
 
     modes = ("",)
@@ -333,6 +430,17 @@ class Revolute(Legs):
     -----
     The actuated values ``rho`` of the :class:`Legs` methods are the crank angles
     theta (rad).
+
+    Examples
+    --------
+    A planar R-R-R leg, unit crank and link, pivot at the origin, reaching (1, 1):
+    the crank's tip B must be 1 from the origin and from (1, 1), so B = (0, 1)
+    (theta = 90 deg) or B = (1, 0) (theta = 0), one for each elbow.
+
+    >>> leg = Revolute([[0, 0, 0]], [[0, 0, 1]], [[1, 0, 0]], 1.0, 1.0, spatial=False)
+    >>> C = np.array([1.0, 1.0, 0.0])[:, None, None]
+    >>> [float(leg.ik(C, np.array([sign]))[0][0, 0].round(6)) + 0.0 for sign in (1, -1)]
+    [1.570796, 0.0]
     """
 
     modes = ("+", "-")
@@ -475,6 +583,15 @@ class Linear(Legs):
         The unit directions e_i of the rails (and of the revolutes).
     l1, l2 : number
         Lengths of the two links (m).
+
+    Examples
+    --------
+    A rail along x from the origin: the carriage stops where C projects on it.
+
+    >>> leg = Linear([[0, 0, 0]], [[1, 0, 0]], 1.0, 1.0)
+    >>> rho, ok, _ = leg.ik(np.array([0.5, 1.0, 1.0])[:, None, None], np.ones(1))
+    >>> rho, ok
+    (array([[0.5]]), array([[ True]]))
     """
 
     modes = ("",)

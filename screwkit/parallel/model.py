@@ -88,6 +88,20 @@ class ParallelIK:
         '' when reachable, else which legs cannot reach or leave their limits.
     mode : str
         The working mode's label.
+
+    Examples
+    --------
+    A 3-RPR whose home pose has legs of 5, 4 and 4 m (A = (0, 0), (4, 0), (3, 9);
+    C = (3, 4), (4, 4), (3, 5)); the passive angles of the legs are atan2(4, 3),
+    90 and -90 degrees.
+
+    >>> from screwkit.parallel import planar_3rpr
+    >>> from screwkit.transforms import transl
+    >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+    ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+    >>> result = pm.ik(pm.home(), passive=True)
+    >>> result.rho, result.reachable, result.passive["phi"].round(4)
+    (array([5., 4., 4.]), True, array([ 0.9273,  1.5708, -1.5708]))
     """
 
     rho: object
@@ -111,6 +125,14 @@ class ParallelFK:
         The Newton steps taken.
     error : float or ndarray, shape (N,)
         The largest loop-closure residual of each pose (m).
+
+    Examples
+    --------
+    >>> from screwkit.parallel import stewart_gough
+    >>> pm = stewart_gough()
+    >>> result = pm.fk(pm.ik(pm.home()))
+    >>> result.success, bool(np.allclose(result.T, pm.home()))
+    (True, True)
     """
 
     T: np.ndarray
@@ -138,6 +160,19 @@ class Workspace:
         The actuated values (m or rad).
     rotation : ndarray, shape (3, 3)
         The platform's constant rotation.
+
+    Examples
+    --------
+    One grid point, the home of a 3-RPR with legs of 5, 4 and 4 m there; the
+    determinant of J's free columns (w_z, v_x, v_y) is 0.6 by hand.
+
+    >>> from screwkit.parallel import planar_3rpr
+    >>> from screwkit.transforms import transl
+    >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+    ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+    >>> ws = pm.workspace([3.0], [4.0])
+    >>> ws.inside, ws.rho, ws.det.round(12)
+    (array([[ True]]), array([[[5., 4., 4.]]]), array([[0.6]]))
     """
 
     x: np.ndarray
@@ -179,6 +214,13 @@ class ParallelManipulator:
         Limits of the actuated joints (m or rad); None for none.
     default_mode : str, optional
         The working mode ``ik`` uses when none is given.
+
+    Examples
+    --------
+    >>> from screwkit.parallel import stewart_gough
+    >>> pm = stewart_gough()
+    >>> pm, pm.m, pm.working_modes
+    (ParallelManipulator('Stewart-Gough 6-UPS', 6 legs, 3T3R), 6, ['single'])
     """
 
     def __init__(
@@ -246,6 +288,14 @@ class ParallelManipulator:
         Returns
         -------
         ndarray, shape (4, 4)
+
+        Examples
+        --------
+        The Stewart-Gough platform's home is 1 m above the base, level:
+
+        >>> from screwkit.parallel import stewart_gough
+        >>> stewart_gough().home()[:3, 3]
+        array([0., 0., 1.])
         """
         return np.array(self._home, dtype=float)
 
@@ -255,6 +305,13 @@ class ParallelManipulator:
         Returns
         -------
         sympy.Matrix, shape (4, 4)
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from screwkit.parallel import stewart_gough
+        >>> stewart_gough(height=sp.Rational(1, 2)).home_exact()[2, 3]
+        1/2
         """
         return sp.Matrix(self._home)
 
@@ -356,6 +413,16 @@ class ParallelManipulator:
         -------
         ndarray, shape (m, 3) or (N, m, 3)
             C_i (m); a list of SymPy 3 x 1 matrices for an exact pose.
+
+        Examples
+        --------
+        At home the Stewart-Gough platform's points lie 1 m up, on its circle of 0.5 m:
+
+        >>> from screwkit.parallel import stewart_gough
+        >>> pm = stewart_gough()
+        >>> C = pm.attachments(pm.home())
+        >>> C[:, 2], np.linalg.norm(C[:, :2], axis=1).round(12)
+        (array([1., 1., 1., 1., 1., 1.]), array([0.5, 0.5, 0.5, 0.5, 0.5, 0.5]))
         """
         T, batched = self._pose(T)
         if isinstance(T, sp.MatrixBase):
@@ -386,6 +453,18 @@ class ParallelManipulator:
             (sympy.nan where out of reach).
         ParallelIK
             Instead, with ``passive``.
+
+        Examples
+        --------
+        By Pythagoras: from (0, 0) to (3, 4) is 5, from (4, 0) to (4, 4) is 4, from
+        (3, 9) to (3, 5) is 4.
+
+        >>> from screwkit.parallel import planar_3rpr
+        >>> from screwkit.transforms import transl
+        >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+        ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+        >>> pm.ik(pm.home())
+        array([5., 4., 4.])
         """
         signs = self._mode(mode)
         passive = check_flag(passive, "passive")
@@ -451,6 +530,16 @@ class ParallelManipulator:
         -------
         dict of str to ndarray, shape (m,) or (N, m)
             ``{label: pm.ik(T, mode=label)}`` for every label of ``working_modes``.
+
+        Examples
+        --------
+        The planar 3-RRR: two elbows per leg, eight working modes.
+
+        >>> from screwkit.parallel import planar_3rrr
+        >>> pm = planar_3rrr()
+        >>> modes = pm.ik_all(pm.home())
+        >>> len(modes), list(modes)[:3]
+        (8, ['+++', '++-', '+-+'])
         """
         return {mode: self.ik(T, mode=mode) for mode in self.working_modes}
 
@@ -474,6 +563,21 @@ class ParallelManipulator:
         ndarray, shape (m, 6) or (N, m, 6)
             NaN rows where the pose is out of reach (units: m or rad per unit of the
             twist's rad/s and m/s); a SymPy matrix for an exact pose.
+
+        Examples
+        --------
+        Row i is [C_i x n_i, n_i], n_i the unit leg direction: for the leg from (0, 0)
+        to (3, 4), n = (0.6, 0.8) and C x n = 0; for (4, 0) to (4, 4), n = y and
+        C x n = 4 z; for (3, 9) to (3, 5), n = -y and C x n = -3 z.
+
+        >>> from screwkit.parallel import planar_3rpr
+        >>> from screwkit.transforms import transl
+        >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+        ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+        >>> pm.jacobian(pm.home()).round(12) + 0.0
+        array([[ 0. ,  0. ,  0. ,  0.6,  0.8,  0. ],
+               [ 0. ,  0. ,  4. ,  0. ,  1. ,  0. ],
+               [ 0. ,  0. , -3. ,  0. , -1. ,  0. ]])
         """
         signs = self._mode(mode)
         T, batched = self._pose(T)
@@ -533,6 +637,18 @@ class ParallelManipulator:
             (0 or sympy.oo): ``sk.mobility(limbs)`` analyses the mechanism at T.
         actuated : list of int
             The actuated joint's index in each limb.
+
+        Examples
+        --------
+        Each R-P-R limb: pitches 0, oo, 0, the slide (index 1) actuated.
+
+        >>> from screwkit.parallel import planar_3rpr
+        >>> from screwkit.transforms import transl
+        >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+        ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+        >>> limbs, actuated = pm.limbs()
+        >>> [h for _, _, h in limbs[0]], actuated
+        ([0, oo, 0], [1, 1, 1])
         """
         T = self.home_exact() if T is None else T
         signs = self._mode(mode)
@@ -573,6 +689,17 @@ class ParallelManipulator:
             m Wrenches (unit lines for a float pose).
         constraint : ScrewSystem
             The limbs' constraint Wrenches.
+
+        Examples
+        --------
+        A U-P-S leg has six freedoms, so it constrains nothing; its six actuation
+        lines span every wrench at a regular pose:
+
+        >>> from screwkit.parallel import stewart_gough
+        >>> pm = stewart_gough()
+        >>> actuation, constraint = pm.wrenches(pm.home())
+        >>> actuation.rank, constraint.rank
+        (6, 0)
         """
         limbs, _ = self.limbs(T, mode)
         C, legs = self._exact_attachments(T)
@@ -612,6 +739,18 @@ class ParallelManipulator:
         -------
         set of str
             A subset of {'inverse', 'direct', 'constraint'}; empty at a regular pose.
+
+        Examples
+        --------
+        The 3-RPR's legs at home are not concurrent (two are parallel, the third is
+        not): a regular pose.
+
+        >>> from screwkit.parallel import planar_3rpr
+        >>> from screwkit.transforms import transl
+        >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+        ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+        >>> pm.singularities(pm.home())
+        set()
         """
         if is_symbolic(T):
             return self._singularities(T, mode)
@@ -676,6 +815,18 @@ class ParallelManipulator:
         ParallelFK
             ``T`` (4, 4) or (N, 4, 4), NaN where not converged, with ``success``,
             ``iterations`` and ``error``.
+
+        Examples
+        --------
+        From a guess 0.1 m off, Newton finds the pose whose legs are 5, 4 and 4 m:
+
+        >>> from screwkit.parallel import planar_3rpr
+        >>> from screwkit.transforms import transl
+        >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+        ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+        >>> result = pm.fk([5.0, 4.0, 4.0], guess=transl(3.1, 3.9, 0))
+        >>> result.T[:3, 3].round(6) + 0.0, result.success
+        (array([3., 4., 0.]), True)
         """
         values = self._rho(rho)
         batched = values.ndim == 2
@@ -764,6 +915,17 @@ class ParallelManipulator:
         ValueError
             If ``starts`` exceeds ``MAX_FK_STARTS`` (memory), or ``rho`` is not one
             input.
+
+        Examples
+        --------
+        The default 3-RPR at the leg lengths ``RPR_SIX_MODES_RHO`` has six real
+        assembly modes, the most a 3-RPR can have; the sextic's roots are floats, so
+        the list is not proven complete.
+
+        >>> from screwkit.parallel import RPR_SIX_MODES_RHO, planar_3rpr
+        >>> modes = planar_3rpr().fk_all(RPR_SIX_MODES_RHO)
+        >>> len(modes), modes.complete, modes.method
+        (6, False, 'sextic (floating-point roots)')
         """
         values = self._rho(rho)
         if values.ndim != 1:
@@ -918,6 +1080,18 @@ class ParallelManipulator:
         Workspace
             The reachable points within ``leg_limits`` and det of J's free columns
             (its zero level is the direct-singularity locus).
+
+        Examples
+        --------
+        Without leg limits a 3-RPR reaches every point of a small grid:
+
+        >>> from screwkit.parallel import planar_3rpr
+        >>> from screwkit.transforms import transl
+        >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+        ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+        >>> ws = pm.workspace(np.linspace(2.5, 3.5, 3), np.linspace(3.5, 4.5, 3))
+        >>> ws.inside.shape, bool(ws.inside.all())
+        ((3, 3), True)
         """
         x, y = as_float_array(x, "x").ravel(), as_float_array(y, "y").ravel()
         z = float(as_float_array(z, "z"))

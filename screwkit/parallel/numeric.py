@@ -33,6 +33,15 @@ def points(R, p, b):
     -------
     ndarray, shape (3, N, m)
         Coordinate k of point i at pose n in ``[k, n, i]`` (m, base frame).
+
+    Examples
+    --------
+    A level platform at (3, 4, 0): its points (0, 0), (1, 0), (0, 1) move with it.
+
+    >>> b = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+    >>> C = points(np.eye(3)[None], np.array([[3.0, 4.0, 0.0]]), b)
+    >>> C.shape, C[:, 0, :].T.tolist()
+    ((3, 1, 3), [[3.0, 4.0, 0.0], [4.0, 4.0, 0.0], [3.0, 5.0, 0.0]])
     """
     N, m = len(R), len(b)
     M = np.empty((3, N, 4))  # row k of [R p] for every pose, then one product
@@ -73,6 +82,15 @@ def solve(A, b):
     -------
     ndarray, shape (N, k)
         x with A x = b; NaN rows where A is singular.
+
+    Examples
+    --------
+    Two systems, the second singular:
+
+    >>> A = np.array([[[2.0, 0.0], [0.0, 4.0]], [[1.0, 1.0], [1.0, 1.0]]])
+    >>> solve(A, np.array([[2.0, 4.0], [1.0, 1.0]]))
+    array([[ 1.,  1.],
+           [nan, nan]])
     """
     try:
         return np.linalg.solve(A, b[..., None])[..., 0]
@@ -97,6 +115,14 @@ def solve_least_squares(A, b):
     -------
     ndarray, shape (N, k)
         The x of least norm that minimises |A x - b| (0 where A is 0).
+
+    Examples
+    --------
+    x + y = 2 twice: of all its solutions, (1, 1) is the shortest.
+
+    >>> A = np.array([[[1.0, 1.0], [1.0, 1.0]]])
+    >>> solve_least_squares(A, np.array([[2.0, 2.0]])).round(12)
+    array([[1., 1.]])
     """
     with np.errstate(all="ignore"):
         return (np.linalg.pinv(A, rcond=PARALLEL_RANK_TOL) @ b[..., None])[..., 0]
@@ -122,6 +148,21 @@ def closure_rows(legs, platform_points, freedoms, T, rho, scale=1.0):
         The residual (m).
     rows : ndarray, shape (N, m, len(freedoms))
         dr/dV with V's linear components in units of ``scale`` (m).
+
+    Examples
+    --------
+    A 3-RPR whose legs from (0, 0), (4, 0), (3, 9) to (3, 4), (4, 4), (3, 5) are
+    5, 4 and 4 m: closed (r = 0), and the rows over (w_z, v_x, v_y) are
+    [(C x n)_z, n_x, n_y], n the unit leg directions.
+
+    >>> from screwkit.parallel.legs import Prismatic
+    >>> legs = Prismatic([[0, 0, 0], [4, 0, 0], [3, 9, 0]], planar=True)
+    >>> b = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+    >>> T = np.eye(4)[None]
+    >>> T[0, :3, 3] = [3.0, 4.0, 0.0]
+    >>> r, rows = closure_rows(legs, b, [2, 3, 4], T, np.array([[5.0, 4.0, 4.0]]))
+    >>> r.tolist(), (rows[0].round(12) + 0.0).tolist()
+    ([[0.0, 0.0, 0.0]], [[0.0, 0.6, 0.8], [4.0, 0.0, 1.0], [-3.0, 0.0, -1.0]])
     """
     C = points(T[:, :3, :3], T[:, :3, 3], platform_points)
     r, g, _ = legs.closure(C, rho)
@@ -176,6 +217,21 @@ def newton(
     iterations : ndarray of int, shape (N,)
     error : ndarray, shape (N,)
         The largest loop-closure residual of each pose (m).
+
+    Examples
+    --------
+    The 3-RPR of :func:`closure_rows`, started 0.1 m off the pose whose legs are 5,
+    4 and 4 m, returns to it (x, y and the angle about z free):
+
+    >>> from screwkit.parallel.legs import Prismatic
+    >>> legs = Prismatic([[0, 0, 0], [4, 0, 0], [3, 9, 0]], planar=True)
+    >>> b = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+    >>> T0 = np.eye(4)[None]
+    >>> T0[0, :3, 3] = [3.1, 3.9, 0.0]
+    >>> T, success, iterations, error = newton(
+    ...     legs, b, [2, 3, 4], np.array([[5.0, 4.0, 4.0]]), T0, 1e-10, 50)
+    >>> T[0, :3, 3].round(6) + 0.0, success
+    (array([3., 4., 0.]), array([ True]))
     """
     N = len(rho)
     R = np.array(np.broadcast_to(T0[:, :3, :3], (N, 3, 3)))

@@ -60,6 +60,20 @@ def draw_planar_platform(
     -------
     matplotlib Axes
         The axes drawn on, x and y in m, equal aspect.
+
+    Examples
+    --------
+    A 3-RPR whose legs run from (0, 0) to (3, 4), from (4, 0) to (4, 4) and from
+    (3, 9) to (3, 5): the last three lines drawn are the legs.
+
+    >>> from screwkit.parallel import planar_3rpr
+    >>> from screwkit.transforms import transl
+    >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+    ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+    >>> ax = draw_planar_platform(pm)
+    >>> [np.array(line.get_data()).T.tolist() for line in ax.lines[-3:]]
+    [[[0.0, 0.0], [3.0, 4.0]], [[4.0, 0.0], [4.0, 4.0]], [[3.0, 9.0], [3.0, 5.0]]]
+    >>> plt.close(ax.figure)
     """
     T = _check(pm, T)
     if ax is None:
@@ -123,6 +137,16 @@ def draw_spatial(pm, T=None, ax=None, color="tab:blue", label=None):
     -------
     matplotlib 3D Axes
         The axes drawn on, x, y and z in m.
+
+    Examples
+    --------
+    The Stewart-Gough platform: the base and platform outlines and six legs.
+
+    >>> from screwkit.parallel import stewart_gough
+    >>> ax = draw_spatial(stewart_gough())
+    >>> ax.name, len(ax.lines)
+    ('3d', 8)
+    >>> plt.close(ax.figure)
     """
     T = _check(pm, T)
     if ax is None:
@@ -157,7 +181,16 @@ def draw_workspace(workspace, ax=None, color="tab:green"):
     Returns
     -------
     matplotlib Axes
-        The axes drawn on, x and y in m, equal aspect.
+        The axes drawn on (x and y in m, equal aspect), the region shaded.
+
+    Examples
+    --------
+    >>> from screwkit.parallel import planar_3rpr
+    >>> pm = planar_3rpr()
+    >>> ax = draw_workspace(pm.workspace(np.linspace(-1, 1, 5), np.linspace(-1, 1, 5)))
+    >>> ax.get_xlabel(), float(ax.get_aspect())
+    ('x (m)', 1.0)
+    >>> plt.close(ax.figure)
     """
     if not isinstance(workspace, Workspace):
         raise TypeError(

@@ -130,6 +130,16 @@ def rpr_sextic(pm, rho, with_polynomial=False):
     ValueError
         If ``pm`` is not a planar mechanism with prismatic legs, or ``rho`` is not
         three numbers.
+
+    Examples
+    --------
+    The default 3-RPR at ``RPR_SIX_MODES_RHO``: six real roots of the sextic, six
+    assembly modes (the most there can be).
+
+    >>> from screwkit.parallel import RPR_SIX_MODES_RHO, planar_3rpr
+    >>> poses, sextic = rpr_sextic(planar_3rpr(), RPR_SIX_MODES_RHO, True)
+    >>> len(poses), sextic.degree()
+    (6, 6)
     """
     if not (pm.planar and pm.prismatic and pm.m == 3):
         raise ValueError(
@@ -278,6 +288,17 @@ def spheres(pm, rho):
         Every assembly mode (a sample of it for a continuum).
     continuum : str or None
         What the continuum is, or None for isolated modes.
+
+    Examples
+    --------
+    The delta's crank angles at home: two modes, home (0.35 m below the base) and
+    its mirror image through the plane of the spheres' centres.
+
+    >>> from screwkit.parallel import delta
+    >>> pm = delta()
+    >>> poses, kind = spheres(pm, pm.ik(pm.home()))
+    >>> sorted(round(float(T[2, 3]), 4) for T in poses), kind
+    ([-0.35, 0.2357], None)
     """
     legs, home = pm._legs, pm.home()
     R = home[:3, :3]
@@ -360,6 +381,16 @@ def rails(pm, rho):
         The assembly mode, or none where a leg cannot reach.
     continuum : str or None
         What the continuum is (rails in one plane), or None.
+
+    Examples
+    --------
+    Three perpendicular rails: one mode, the Tripteron's home at (0.35, 0.35, 0.35).
+
+    >>> from screwkit.parallel import tripteron
+    >>> pm = tripteron()
+    >>> poses, kind = rails(pm, pm.ik(pm.home()))
+    >>> len(poses), poses[0][:3, 3].round(12), kind
+    (1, array([0.35, 0.35, 0.35]), None)
     """
     legs, R = pm._legs, pm.home()[:3, :3]
     E = legs.e[:, 0, :].T  # (3, 3): one rail a row
@@ -416,6 +447,18 @@ def continuum(pm, rho, poses, starts=()):
         One pose of a continuum.
     reason : str or None
         The continuum's dimension (at least), or None.
+
+    Examples
+    --------
+    A 3-RPR at a regular pose (legs 5, 4 and 4 m): an isolated mode.
+
+    >>> from screwkit.parallel import planar_3rpr
+    >>> from screwkit.transforms import transl
+    >>> pm = planar_3rpr(base=[[0, 0], [4, 0], [3, 9]],
+    ...                  platform=[[0, 0], [1, 0], [0, 1]], home=transl(3, 4, 0))
+    >>> isolated, on_continuum, reason = continuum(pm, [5.0, 4.0, 4.0], [pm.home()])
+    >>> len(isolated), on_continuum, reason
+    (1, None, None)
     """
     candidates = list(poses)
     if len(starts):
@@ -501,6 +544,18 @@ def sort_modes(pm, poses):
     Returns
     -------
     list of ndarray, shape (4, 4)
+
+    Examples
+    --------
+    The six modes of the default 3-RPR, given in reverse, come back in the order of
+    the platform's angle:
+
+    >>> from screwkit.parallel import RPR_SIX_MODES_RHO, planar_3rpr
+    >>> pm = planar_3rpr()
+    >>> poses = sort_modes(pm, rpr_sextic(pm, RPR_SIX_MODES_RHO)[::-1])
+    >>> angles = [np.arctan2(T[1, 0], T[0, 0]) for T in poses]
+    >>> angles == sorted(angles)
+    True
     """
     if pm.planar:
         return sorted(poses, key=lambda T: np.arctan2(T[1, 0], T[0, 0]))
@@ -534,6 +589,17 @@ def random_starts(pm, rho, starts, seed):
     Returns
     -------
     ndarray, shape (starts, 4, 4)
+
+    Examples
+    --------
+    A planar mechanism's starts stay in its plane (z = 0), with proper rotations:
+
+    >>> from screwkit.parallel import planar_3rpr
+    >>> T0 = random_starts(planar_3rpr(), [1.0, 1.0, 1.0], starts=3, seed=0)
+    >>> T0.shape, T0[:, 2, 3].tolist()
+    ((3, 4, 4), [0.0, 0.0, 0.0])
+    >>> bool(np.allclose(np.linalg.det(T0[:, :3, :3]), 1.0))
+    True
     """
     rng = np.random.default_rng(seed)
     home = pm.home()
@@ -578,6 +644,19 @@ def multistart(pm, rho, starts, seed):
     -------
     list of ndarray, shape (4, 4)
         The distinct poses found that satisfy the legs, highest platform first.
+
+    Examples
+    --------
+    The Stewart-Gough platform's leg lengths at home: the search finds home among
+    its modes, and its mirror image through the base (1 m below) too.
+
+    >>> from screwkit.parallel import stewart_gough
+    >>> pm = stewart_gough()
+    >>> poses = multistart(pm, pm.ik(pm.home()), starts=20, seed=0)
+    >>> any(np.allclose(T, pm.home(), atol=1e-8) for T in poses)
+    True
+    >>> any(abs(T[2, 3] + 1.0) < 1e-8 for T in poses)
+    True
     """
     T0 = random_starts(pm, rho, starts, seed)
     poses = _polish(pm, rho, list(T0))
