@@ -2,6 +2,7 @@
 chapters; importing the package registers them all in ``REFERENCES``."""
 
 from . import (
+    arm_bank,
     configuration_space,
     first_chapters,
     later_chapters,
@@ -15,6 +16,7 @@ from .registry import REFERENCES, all_keys, key, value
 __all__ = [
     "REFERENCES",
     "all_keys",
+    "arm_bank",
     "configuration_space",
     "first_chapters",
     "key",
