@@ -7,7 +7,7 @@ tests/references.py, an IK answer by bisection or by the forward kinematics."""
 import math
 
 import numpy as np
-from references import dh_fk, rot
+from references import dh_fk, dh_standard, rot
 
 from .registry import reference
 
@@ -62,3 +62,37 @@ def _():
 def _():
     # the waist's turn as seen from the tool: the velocity of the tool's origin
     return _turn_twist([0, 0, 1.0], [-0.3, 0, -0.5])
+
+
+# ---- puma_fk -------------------------------------------------------------------------
+
+
+@reference("puma_fk", 12)
+def _():
+    # the angle at joint 2 between the link's first part and the line to the tool
+    return math.degrees(math.asin(0.1 / math.hypot(0.4, 0.1)))
+
+
+@reference("puma_fk", 15)
+def _():
+    # the hand-multiplied DH links, joint 3 prismatic (its d is q3)
+    T = np.eye(4)
+    for row in ((math.pi / 2, 0.4, 0, -math.pi / 2), (math.pi / 2, 0.15, 0, math.pi / 2),
+                (0, 0.5, 0, 0)):
+        T = T @ dh_standard(*row)
+    return T[:3, 3]
+
+
+@reference("puma_fk", 18)
+def _():
+    # the closest points of p1 + t z1 and p2 + u z2 by least squares on (t, u)
+    p1, z1 = np.zeros(3), np.array([0, 0, 1.0])
+    p2, z2 = np.array([0.3, 0.2, 0.5]), np.array([1.0, 0, 0])
+    (t, u), *_ = np.linalg.lstsq(np.column_stack([z1, -z2]), p2 - p1, rcond=None)
+    a = np.linalg.norm(p2 + u * z2 - (p1 + t * z1))
+    return [a, t]
+
+
+@reference("puma_fk", 22)
+def _():
+    return rot("z", math.pi / 2) @ np.array([0, 0.3, 0.3 + 0.2])
