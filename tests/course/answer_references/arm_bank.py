@@ -96,3 +96,100 @@ def _():
 @reference("puma_fk", 22)
 def _():
     return rot("z", math.pi / 2) @ np.array([0, 0.3, 0.3 + 0.2])
+
+
+# ---- puma_ik -------------------------------------------------------------------------
+
+
+def _bisect(f, low, high):
+    """A root of f in [low, high], where f changes sign."""
+    for _ in range(60):
+        middle = (low + high) / 2
+        if (f(low) > 0) == (f(middle) > 0):
+            low = middle
+        else:
+            high = middle
+    return (low + high) / 2
+
+
+def _two_link_root(l1, l2, x, y):
+    """(q1, q2) in degrees with q2 in (0, pi) that reach (x, y): q2 by bisection on the
+    reach, q1 by the angle between the target and the arm's tip at q1 = 0."""
+    reach = math.hypot(x, y)
+    q2 = _bisect(
+        lambda q: math.hypot(l1 + l2 * math.cos(q), l2 * math.sin(q)) - reach,
+        1e-9,
+        math.pi - 1e-9,
+    )
+    tip = complex(l1 + l2 * math.cos(q2), l2 * math.sin(q2))
+    q1 = math.atan2(y, x) - math.atan2(tip.imag, tip.real)
+    return [math.degrees(q1), math.degrees(q2)]
+
+
+@reference("puma_ik", 13)
+def _():
+    return _two_link_root(0.5, 0.4, 0.6, 0.3)
+
+
+@reference("puma_ik", 14)
+def _():
+    return _two_link_root(0.4, 0.3, 0.5, 0.2)
+
+
+@reference("puma_ik", 16)
+def _():
+    # q2, q3 by bisection on the wrist centre of the arm's own DH table, in its plane
+    table = [(0.45, 0.15, -math.pi / 2), (0, 0.6, 0), (0, 0.12, math.pi / 2),
+             (0.72, 0, -math.pi / 2)]
+    q1 = math.atan2(0.3, 0.7)
+    target = np.array([0.7, 0.3, 1.0])
+
+    def wrist(q2, q3):
+        return dh_fk(table, [q1, q2, q3, 0])[:3, 3]
+
+    def q3_for(q2):  # the q3 in (-pi/2, pi/2) that puts the wrist at the target's reach
+        shoulder = np.array([0.15 * math.cos(q1), 0.15 * math.sin(q1), 0.45])
+        reach = np.linalg.norm(target - shoulder)
+        return _bisect(lambda q3: np.linalg.norm(wrist(q2, q3) - shoulder) - reach,
+                       -math.pi / 2, math.pi / 2)
+
+    q2 = _bisect(lambda q2: wrist(q2, q3_for(q2))[2] - target[2], -0.5, 1.0)
+    q3 = q3_for(q2)
+    np.testing.assert_allclose(wrist(q2, q3), target, atol=1e-9)
+    return [math.degrees(q1), math.degrees(q2), math.degrees(q3)]
+
+
+@reference("puma_ik", 18)
+def _():
+    # the tool of the Stanford-type arm by its hand-multiplied DH links, solved by
+    # bisection: q1 turns the offset plane onto the target, q2 tips the boom
+    def tool(q1, q2, q3):
+        T = np.eye(4)
+        for row in ((q1, 0.4, 0, -math.pi / 2), (q2, 0.15, 0, math.pi / 2),
+                    (0, q3, 0, 0)):
+            T = T @ dh_standard(*row)
+        return T[:3, 3]
+
+    target = np.array([0.3, 0.4, 0.6])
+    q3 = np.linalg.norm(target - [0, 0, 0.4]) ** 2 - 0.15**2
+    q3 = math.sqrt(q3)
+    q2 = math.acos((target[2] - 0.4) / q3)
+    q1 = _bisect(lambda q1: tool(q1, q2, q3)[1] - target[1], 0.0, math.pi / 2)
+    np.testing.assert_allclose(tool(q1, q2, q3), target, atol=1e-9)
+    return [math.degrees(q1), math.degrees(q2)]
+
+
+@reference("puma_ik", 21)
+def _():
+    # turn p about the vertical line through (1, 0, 0) until it reaches q, by bisection
+    c = np.array([1.0, 0, 0])
+    turned = lambda t: (c + rot("z", t) @ (np.array([2.0, 0, 0.5]) - c))[0]  # noqa: E731
+    return math.degrees(_bisect(lambda t: turned(t) - 1.0, 0.1, math.pi - 0.1))
+
+
+@reference("puma_ik", 22)
+def _():
+    def gap(t):
+        return np.linalg.norm(rot("z", t) @ [1.0, 0, 0] - [2.0, 0, 0]) - 1.5
+
+    return math.degrees(_bisect(gap, 0.0, math.pi))
