@@ -1,19 +1,15 @@
 """Schematic drawings of arms for the exercises: links, joint symbols and frames.
 
-A sketch is a view of an arm in the plane of the page (a side or a top view), in the
-style of the textbooks: a revolute joint whose axis leaves the page is a circle with a
-dot, one whose axis lies in the page a short cylinder along it, a prismatic joint a
-sleeve, the base a hatched ground. Frames show their ``x`` and ``z`` axes; an axis out
-of (into) the page is a dot (a cross) in a circle. Lengths are in metres, in the
-page's horizontal and vertical coordinates.
+A side or top view of an arm, in metres in the page, drawn as textbooks do: a revolute
+joint whose axis leaves the page is a circle with a dot, one whose axis lies in the page
+a short cylinder along it, a prismatic joint a sleeve (a square if normal to the page),
+the base a hatched ground; a frame shows its x and z axes (a dot or a cross in a circle
+for an axis out of or into the page).
 
 >>> fig, ax = sketch(limits=((-0.2, 1.0), (-0.2, 0.6)))
->>> base(ax, (0, 0))
->>> link(ax, (0, 0), (0.5, 0.3))
->>> revolute(ax, (0, 0))
->>> len(ax.patches) > 0
-True
->>> plt.close(fig)
+>>> base(ax, (0, 0)); link(ax, (0, 0), (0.5, 0.3)); revolute(ax, (0, 0))
+>>> [p.get_gid() for p in ax.patches]; plt.close(fig)
+['joint-revolute']
 """
 
 import matplotlib.pyplot as plt
@@ -21,12 +17,14 @@ import numpy as np
 
 from ._checks import describe
 
-#: Colours of the parts: links, joints, frames' x and z axes, dimensions.
+#: Colours of the links, the joints, the frames' x and z axes and the dimensions.
 LINK, JOINT, X_AXIS, Z_AXIS, DIMENSION = "0.35", "k", "tab:red", "tab:blue", "0.3"
+MAX_WIDTH = 6.6  #: the widest sketch (inches), plotting.COLUMN_WIDTH
+_SQUARE = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)])
 
 
 def _point(value, name):
-    """Two finite numbers (a point or a direction of the page)."""
+    """Two finite numbers: a point or a direction of the page."""
     try:
         point = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -37,154 +35,125 @@ def _point(value, name):
 
 
 def _unit(value, name):
+    """The direction ``value`` of the page, of length 1."""
     direction = _point(value, name)
-    norm = np.hypot(*direction)
-    if norm == 0:
+    if not np.hypot(*direction) > 0:
         raise ValueError(f"{name} must be a non-zero direction, got {value!r}")
-    return direction / norm
+    return direction / np.hypot(*direction)
+
+
+def _normal_to_page(value, name, allowed):
+    """True if ``value`` is one of the words ``allowed``; raise for any other word."""
+    if isinstance(value, str):
+        if value not in allowed:
+            raise ValueError(
+                f"{name} must be {' or '.join(map(repr, allowed))} or "
+                f"a direction, got {value!r}"
+            )
+        return True
+    return False
 
 
 def sketch(width=3.3, height=2.6, limits=((-0.5, 1.5), (-0.3, 1.2)), title=None):
-    """A figure and axes for a schematic: equal scales, no ticks, no box.
-
-    Parameters
-    ----------
-    width, height : float, optional
-        The figure's size (inches); at most ``plotting.COLUMN_WIDTH`` wide.
-    limits : ((float, float), (float, float)), optional
-        The page's horizontal and vertical ranges (m).
-    title : str or None, optional
-        The axes' title.
-
-    Returns
-    -------
-    (matplotlib.figure.Figure, matplotlib.axes.Axes)
-    """
+    """A figure and axes for a schematic: ``width`` x ``height`` inches (at most
+    ``MAX_WIDTH`` wide), ``limits`` the page's horizontal and vertical ranges (m),
+    equal scales, no ticks, no box; returns ``(fig, ax)``."""
+    if not 0 < width <= MAX_WIDTH:
+        raise ValueError(f"width must be in (0, {MAX_WIDTH}] inches, got {width!r}")
     (x0, x1), (y0, y1) = _point(limits[0], "limits[0]"), _point(limits[1], "limits[1]")
     if x1 <= x0 or y1 <= y0:
         raise ValueError(f"limits must be increasing ranges, got {limits!r}")
     fig, ax = plt.subplots(figsize=(width, height))
-    ax.set_xlim(x0, x1)
-    ax.set_ylim(y0, y1)
-    ax.set_aspect("equal")
+    ax.set(xlim=(x0, x1), ylim=(y0, y1), aspect="equal")
     ax.axis("off")
-    if title:
-        ax.set_title(title)
+    ax.set_title(title or "")
     return fig, ax
 
 
-def _scale(ax):
-    """A length of about 1/25 of the drawing's width (m): the joints' size."""
+def _size(ax):
+    """The joints' size (m): 1/25 of the drawing's width."""
     x0, x1 = ax.get_xlim()
     return (x1 - x0) / 25
 
 
-def base(ax, xy, width=None):
-    """A hatched ground under ``xy``."""
+def base(ax, xy):
+    """A hatched ground under the point ``xy``."""
     x, y = _point(xy, "xy")
-    w = 3 * _scale(ax) if width is None else float(width)
+    w = 3 * _size(ax)
     ax.plot([x - w, x + w], [y, y], color=JOINT, lw=1.5)
     for k in np.linspace(-w, w, 7):
         ax.plot([x + k, x + k - w / 4], [y, y - w / 4], color=JOINT, lw=0.8)
 
 
-def link(ax, *points, width=4.0):
-    """A link: a thick line through ``points`` (at least two)."""
+def link(ax, *points):
+    """A link: a thick line through two or more ``points``."""
     if len(points) < 2:
         raise ValueError(f"link needs at least two points, got {len(points)}")
     xy = np.array([_point(p, f"points[{k}]") for k, p in enumerate(points)])
-    ax.plot(xy[:, 0], xy[:, 1], color=LINK, lw=width, solid_capstyle="round", zorder=1)
+    ax.plot(xy[:, 0], xy[:, 1], color=LINK, lw=4, solid_capstyle="round", zorder=1)
+
+
+def _box(ax, centre, along, long, fill, gid):
+    """A box centred at ``centre``, ``long`` times the joint size along ``along``."""
+    across = np.array([-along[1], along[0]])
+    r = _size(ax)
+    corners = [centre + s * long * r * along + t * r * across for s, t in _SQUARE]
+    ax.add_patch(plt.Polygon(corners, fc=fill, ec=JOINT, lw=1.5, zorder=3, gid=gid))
 
 
 def revolute(ax, xy, axis="out"):
-    """A revolute joint at ``xy``: ``axis`` "out" (normal to the page) or a direction
-    of the page, along which a short cylinder is drawn."""
-    centre, r = _point(xy, "xy"), _scale(ax)
-    if isinstance(axis, str) and axis == "out":
+    """A revolute joint at ``xy`` whose axis is normal to the page ("out") or the
+    direction ``axis`` of the page (a short cylinder along it)."""
+    centre = _point(xy, "xy")
+    if _normal_to_page(axis, "axis", ("out",)):
         ax.add_patch(
             plt.Circle(
-                centre, r, fc="white", ec=JOINT, lw=1.5, zorder=3, gid="joint-revolute"
+                centre,
+                _size(ax),
+                fc="white",
+                ec=JOINT,
+                lw=1.5,
+                zorder=3,
+                gid="joint-revolute",
             )
         )
         ax.plot(*centre, "o", color=JOINT, ms=2, zorder=4)
-        return
-    if isinstance(axis, str):
-        raise ValueError(f"axis must be 'out' or a direction, got {axis!r}")
-    along = _unit(axis, "axis")
-    across = np.array([-along[1], along[0]])
-    corners = [centre + s * 1.3 * r * along + t * r * across for s, t in SQUARE]
-    ax.add_patch(
-        plt.Polygon(
-            corners, fc="white", ec=JOINT, lw=1.5, zorder=3, gid="joint-revolute"
-        )
-    )
-
-
-SQUARE = ((-1, -1), (1, -1), (1, 1), (-1, 1))
+    else:
+        _box(ax, centre, _unit(axis, "axis"), 1.3, "white", "joint-revolute")
 
 
 def prismatic(ax, xy, direction):
-    """A prismatic joint at ``xy`` sliding along ``direction``: a sleeve (a box with a
-    line along it), or for "in"/"out" (normal to the page) a square with a cross or
-    a dot."""
-    centre, r = _point(xy, "xy"), _scale(ax)
-    style = {
-        "fc": "0.85",
-        "ec": JOINT,
-        "lw": 1.5,
-        "zorder": 3,
-        "gid": "joint-prismatic",
-    }
-    if isinstance(direction, str):
-        if direction not in ("in", "out"):
-            raise ValueError(
-                f"direction must be 'in', 'out' or a direction, got {direction!r}"
-            )
-        ax.add_patch(
-            plt.Polygon([centre + 1.2 * r * np.array(c) for c in SQUARE], **style)
-        )
+    """A prismatic joint at ``xy`` sliding along ``direction`` of the page (a sleeve)
+    or into or out of it ("in", "out": a square with a cross or a dot)."""
+    centre = _point(xy, "xy")
+    if _normal_to_page(direction, "direction", ("in", "out")):
+        _box(ax, centre, np.array([1.0, 0.0]), 1.0, "0.85", "joint-prismatic")
         ax.plot(*centre, "x" if direction == "in" else "o", color=JOINT, ms=4, zorder=4)
         return
     along = _unit(direction, "direction")
-    across = np.array([-along[1], along[0]])
-    ax.add_patch(
-        plt.Polygon(
-            [centre + 2.2 * r * s * along + r * t * across for s, t in SQUARE], **style
-        )
-    )
-    ends = np.array([centre - 2.2 * r * along, centre + 2.2 * r * along])
+    _box(ax, centre, along, 2.2, "0.85", "joint-prismatic")
+    ends = centre + np.outer([-2.2, 2.2], along) * _size(ax)
     ax.plot(ends[:, 0], ends[:, 1], color=JOINT, lw=0.8, zorder=4)
 
 
-def _axis(ax, origin, direction, name, color, length):
-    if isinstance(direction, str):
-        if direction not in ("out", "in"):
-            raise ValueError(
-                f"{name} must be 'out', 'in' or a direction, got {direction!r}"
-            )
-        r = 0.5 * _scale(ax)
-        ax.add_patch(plt.Circle(origin, r, fc="white", ec=color, lw=1.2, zorder=5))
-        mark = "." if direction == "out" else "x"
-        ax.plot(*origin, mark, color=color, ms=4 if mark == "x" else 3, zorder=6)
-        return origin + np.array([0.6, -1.4]) * r * 2
-    tip = origin + length * _unit(direction, name)
-    ax.annotate(
-        "",
-        tip,
-        origin,
-        arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.3},
-        zorder=5,
-    )
-    return tip + 0.25 * length * _unit(direction, name)
-
-
-def frame(ax, xy, label, x=(1, 0), z=(0, 1), length=None):
-    """A frame ``{label}`` at ``xy``: its ``x`` and ``z`` axes, each a direction of
-    the page or "out"/"in" (a dot or a cross in a circle)."""
-    origin = _point(xy, "xy")
-    length = 4 * _scale(ax) if length is None else float(length)
+def frame(ax, xy, label, x=(1, 0), z=(0, 1)):
+    """A frame ``{label}`` at ``xy``: its ``x`` and ``z`` axes, each a direction of the
+    page or "out"/"in" (a dot or a cross in a circle)."""
+    origin, length = _point(xy, "xy"), 4 * _size(ax)
     for direction, name, color in ((x, "x", X_AXIS), (z, "z", Z_AXIS)):
-        where = _axis(ax, origin, direction, name, color, length)
+        if _normal_to_page(direction, name, ("out", "in")):
+            r = 0.5 * _size(ax)
+            ax.add_patch(plt.Circle(origin, r, fc="white", ec=color, lw=1.2, zorder=5))
+            ax.plot(
+                *origin, "." if direction == "out" else "x", color=color, ms=4, zorder=6
+            )
+            where = origin + np.array([1.2, -2.8]) * r
+        else:
+            d = _unit(direction, name)
+            tip = origin + length * d
+            arrow = {"arrowstyle": "-|>", "color": color, "lw": 1.3}
+            ax.annotate("", tip, origin, zorder=5, arrowprops=arrow)
+            where = tip + length * (0.15 * d + 0.3 * np.array([-d[1], d[0]]))
         ax.text(
             *where,
             f"${name}_{{{label}}}$",
@@ -198,18 +167,16 @@ def frame(ax, xy, label, x=(1, 0), z=(0, 1), length=None):
 
 
 def dimension(ax, start, end, text, offset=None):
-    """A dimension line from ``start`` to ``end``, shifted by ``offset`` (m) to its
-    left, with ``text`` in its middle."""
+    """A dimension line from ``start`` to ``end``, shifted by ``offset`` (m, default
+    twice the joint size) to its left, labelled ``text`` in its middle."""
     p, q = _point(start, "start"), _point(end, "end")
     along = _unit(q - p, "end - start")
-    shift = np.array([-along[1], along[0]]) * (
-        2 * _scale(ax) if offset is None else float(offset)
-    )
-    a, b = p + shift, q + shift
+    shift = 2 * _size(ax) if offset is None else float(offset)
+    normal = np.array([-along[1], along[0]]) * shift
     ax.annotate(
         "",
-        b,
-        a,
+        q + normal,
+        p + normal,
         arrowprops={
             "arrowstyle": "<|-|>",
             "color": DIMENSION,
@@ -218,5 +185,11 @@ def dimension(ax, start, end, text, offset=None):
             "shrinkB": 0,
         },
     )
-    middle = (a + b) / 2 + 0.6 * shift
-    ax.text(*middle, text, color=DIMENSION, ha="center", va="center", fontsize=9)
+    ax.text(
+        *((p + q) / 2 + 1.6 * normal),
+        text,
+        color=DIMENSION,
+        ha="center",
+        va="center",
+        fontsize=9,
+    )

@@ -42,8 +42,9 @@ def _():
 @reference("poe", 14)
 def _():
     # turn the forearm, then the whole arm, as point rotations about their axes
-    shoulder, elbow, tool = (np.array(p) for p in ([0, 0, 0.3], [0.35, 0, 0.3],
-                                                    [0.65, 0, 0.3]))
+    shoulder, elbow, tool = (
+        np.array(p) for p in ([0, 0, 0.3], [0.35, 0, 0.3], [0.65, 0, 0.3])
+    )
     tool = elbow + rot("y", math.pi / 2) @ (tool - elbow)
     return shoulder + rot("y", -math.pi / 2) @ (tool - shoulder)
 
@@ -77,8 +78,11 @@ def _():
 def _():
     # the hand-multiplied DH links, joint 3 prismatic (its d is q3)
     T = np.eye(4)
-    for row in ((math.pi / 2, 0.4, 0, -math.pi / 2), (math.pi / 2, 0.15, 0, math.pi / 2),
-                (0, 0.5, 0, 0)):
+    for row in (
+        (math.pi / 2, 0.4, 0, -math.pi / 2),
+        (math.pi / 2, 0.15, 0, math.pi / 2),
+        (0, 0.5, 0, 0),
+    ):
         T = T @ dh_standard(*row)
     return T[:3, 3]
 
@@ -139,8 +143,12 @@ def _():
 @reference("puma_ik", 16)
 def _():
     # q2, q3 by bisection on the wrist centre of the arm's own DH table, in its plane
-    table = [(0.45, 0.15, -math.pi / 2), (0, 0.6, 0), (0, 0.12, math.pi / 2),
-             (0.72, 0, -math.pi / 2)]
+    table = [
+        (0.45, 0.15, -math.pi / 2),
+        (0, 0.6, 0),
+        (0, 0.12, math.pi / 2),
+        (0.72, 0, -math.pi / 2),
+    ]
     q1 = math.atan2(0.3, 0.7)
     target = np.array([0.7, 0.3, 1.0])
 
@@ -150,8 +158,11 @@ def _():
     def q3_for(q2):  # the q3 in (-pi/2, pi/2) that puts the wrist at the target's reach
         shoulder = np.array([0.15 * math.cos(q1), 0.15 * math.sin(q1), 0.45])
         reach = np.linalg.norm(target - shoulder)
-        return _bisect(lambda q3: np.linalg.norm(wrist(q2, q3) - shoulder) - reach,
-                       -math.pi / 2, math.pi / 2)
+        return _bisect(
+            lambda q3: np.linalg.norm(wrist(q2, q3) - shoulder) - reach,
+            -math.pi / 2,
+            math.pi / 2,
+        )
 
     q2 = _bisect(lambda q2: wrist(q2, q3_for(q2))[2] - target[2], -0.5, 1.0)
     q3 = q3_for(q2)
@@ -165,8 +176,11 @@ def _():
     # bisection: q1 turns the offset plane onto the target, q2 tips the boom
     def tool(q1, q2, q3):
         T = np.eye(4)
-        for row in ((q1, 0.4, 0, -math.pi / 2), (q2, 0.15, 0, math.pi / 2),
-                    (0, q3, 0, 0)):
+        for row in (
+            (q1, 0.4, 0, -math.pi / 2),
+            (q2, 0.15, 0, math.pi / 2),
+            (0, q3, 0, 0),
+        ):
             T = T @ dh_standard(*row)
         return T[:3, 3]
 
