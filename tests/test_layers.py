@@ -113,7 +113,7 @@ ORDER = [
             "_line_plots",
             "parallel.plotting",
             "plotting",
-            "_arm_sketch",
+            "schematic",
             "_viewer_page",
             "_viewer_mechanisms",
             "_stepped_figure",

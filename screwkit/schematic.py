@@ -1,4 +1,4 @@
-"""Schematic drawings of arms for the exercises: links, joint symbols and frames.
+"""Schematic drawings of arms, as the exercises give them: links, joints and frames.
 
 A side or top view of an arm, in metres in the page, drawn as textbooks do: a revolute
 joint whose axis leaves the page is a circle with a dot, one whose axis lies in the page
@@ -55,9 +55,22 @@ def _normal_to_page(value, name, allowed):
 
 
 def sketch(width=3.3, height=2.6, limits=((-0.5, 1.5), (-0.3, 1.2)), title=None):
-    """A figure and axes for a schematic: ``width`` x ``height`` inches (at most
-    ``MAX_WIDTH`` wide), ``limits`` the page's horizontal and vertical ranges (m),
-    equal scales, no ticks, no box; returns ``(fig, ax)``."""
+    """A figure and axes for a schematic: equal scales, no ticks, no box.
+
+    Parameters
+    ----------
+    width, height : float, optional
+        The figure's size (inches), at most ``MAX_WIDTH`` wide.
+    limits : ((float, float), (float, float)), optional
+        The page's horizontal and vertical ranges (m).
+    title : str or None, optional
+        The axes' title.
+
+    Returns
+    -------
+    (matplotlib.figure.Figure, matplotlib.axes.Axes)
+        The figure and its axes.
+    """
     if not 0 < width <= MAX_WIDTH:
         raise ValueError(f"width must be in (0, {MAX_WIDTH}] inches, got {width!r}")
     (x0, x1), (y0, y1) = _point(limits[0], "limits[0]"), _point(limits[1], "limits[1]")
@@ -77,7 +90,15 @@ def _size(ax):
 
 
 def base(ax, xy):
-    """A hatched ground under the point ``xy``."""
+    """Draw a hatched ground under a point.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The sketch's axes.
+    xy : (float, float)
+        The point (m).
+    """
     x, y = _point(xy, "xy")
     w = 3 * _size(ax)
     ax.plot([x - w, x + w], [y, y], color=JOINT, lw=1.5)
@@ -86,7 +107,15 @@ def base(ax, xy):
 
 
 def link(ax, *points):
-    """A link: a thick line through two or more ``points``."""
+    """Draw a link: a thick line through two or more points.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The sketch's axes.
+    *points : (float, float)
+        The points (m), at least two.
+    """
     if len(points) < 2:
         raise ValueError(f"link needs at least two points, got {len(points)}")
     xy = np.array([_point(p, f"points[{k}]") for k, p in enumerate(points)])
@@ -102,8 +131,18 @@ def _box(ax, centre, along, long, fill, gid):
 
 
 def revolute(ax, xy, axis="out"):
-    """A revolute joint at ``xy`` whose axis is normal to the page ("out") or the
-    direction ``axis`` of the page (a short cylinder along it)."""
+    """Draw a revolute joint.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The sketch's axes.
+    xy : (float, float)
+        Where the joint is (m).
+    axis : "out" or (float, float), optional
+        "out": the axis is normal to the page (a circle with a dot); a direction of
+        the page: a short cylinder along it.
+    """
     centre = _point(xy, "xy")
     if _normal_to_page(axis, "axis", ("out",)):
         ax.add_patch(
@@ -123,8 +162,18 @@ def revolute(ax, xy, axis="out"):
 
 
 def prismatic(ax, xy, direction):
-    """A prismatic joint at ``xy`` sliding along ``direction`` of the page (a sleeve)
-    or into or out of it ("in", "out": a square with a cross or a dot)."""
+    """Draw a prismatic joint.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The sketch's axes.
+    xy : (float, float)
+        Where the joint is (m).
+    direction : (float, float) or "in" or "out"
+        Its direction of sliding: a direction of the page (a sleeve along it), or into
+        or out of the page (a square with a cross or a dot).
+    """
     centre = _point(xy, "xy")
     if _normal_to_page(direction, "direction", ("in", "out")):
         _box(ax, centre, np.array([1.0, 0.0]), 1.0, "0.85", "joint-prismatic")
@@ -137,8 +186,20 @@ def prismatic(ax, xy, direction):
 
 
 def frame(ax, xy, label, x=(1, 0), z=(0, 1)):
-    """A frame ``{label}`` at ``xy``: its ``x`` and ``z`` axes, each a direction of the
-    page or "out"/"in" (a dot or a cross in a circle)."""
+    """Draw a frame's x and z axes, labelled.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The sketch's axes.
+    xy : (float, float)
+        The frame's origin (m).
+    label : str
+        The frame's name, written as the axes' subscript.
+    x, z : (float, float) or "out" or "in", optional
+        Each axis: a direction of the page (an arrow), or out of or into the page (a
+        dot or a cross in a circle).
+    """
     origin, length = _point(xy, "xy"), 4 * _size(ax)
     for direction, name, color in ((x, "x", X_AXIS), (z, "z", Z_AXIS)):
         if _normal_to_page(direction, name, ("out", "in")):
@@ -167,8 +228,20 @@ def frame(ax, xy, label, x=(1, 0), z=(0, 1)):
 
 
 def dimension(ax, start, end, text, offset=None):
-    """A dimension line from ``start`` to ``end``, shifted by ``offset`` (m, default
-    twice the joint size) to its left, labelled ``text`` in its middle."""
+    """Draw a dimension line with a label in its middle.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The sketch's axes.
+    start, end : (float, float)
+        The measured points (m).
+    text : str
+        The label, such as "0.4 m".
+    offset : float or None, optional
+        How far to the left of the line from ``start`` to ``end`` it is drawn (m);
+        None: twice the joints' size.
+    """
     p, q = _point(start, "start"), _point(end, "end")
     along = _unit(q - p, "end - start")
     shift = 2 * _size(ax) if offset is None else float(offset)

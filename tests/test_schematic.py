@@ -1,4 +1,4 @@
-"""screwkit._arm_sketch, the exercises' schematic drawings of arms: what each part
+"""screwkit.schematic, the exercises' schematic drawings of arms: what each part
 draws, and bad input."""
 
 import matplotlib
@@ -8,7 +8,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from screwkit import _arm_sketch as sketch  # noqa: E402
+from screwkit import schematic as sketch  # noqa: E402
 
 
 @pytest.fixture
