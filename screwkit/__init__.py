@@ -64,10 +64,17 @@ from .transforms import (
 __version__ = "0.1.0"
 
 # Drawing, widgets and the in-page viewer load matplotlib and ipywidgets: imported on
-# first use (sk.plotting, sk.widgets, sk.viewer); sk.exercises, the display of
-# self-checks, too; and sk.contact, whose linear programs load scipy.optimize (about
-# half of screwkit's own import time).
-_LAZY_SUBMODULES = ("plotting", "widgets", "viewer", "exercises", "contact")
+# first use (sk.plotting, sk.schematic, sk.widgets, sk.viewer); sk.exercises, the
+# display of self-checks, too; and sk.contact, whose linear programs load
+# scipy.optimize (about half of screwkit's own import time).
+_LAZY_SUBMODULES = (
+    "plotting",
+    "schematic",
+    "widgets",
+    "viewer",
+    "exercises",
+    "contact",
+)
 
 
 __getattr__ = _lazy.attach(__name__, dict.fromkeys(_LAZY_SUBMODULES, ()), globals())[0]
@@ -91,6 +98,7 @@ __all__ = [
     "plotting",
     "redundancy",
     "robots",
+    "schematic",
     "screws",
     "statics",
     "systems",

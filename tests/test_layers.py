@@ -114,6 +114,7 @@ ORDER = [
             "_line_plots",
             "parallel.plotting",
             "plotting",
+            "schematic",
             "_viewer_page",
             "_viewer_mechanisms",
             "_stepped_figure",

@@ -103,8 +103,16 @@ def strip_solutions(source):
 
 
 def course_notebook(notebook, marked):
-    """A notebook (as JSON) for the course edition: no solution, no assessed key."""
-    for cell in notebook.get("cells", []):
+    """A notebook (as JSON) for the course edition: no solution, no assessed key.
+
+    A code cell tagged ``solution`` (the hidden cell that draws a solution's figure,
+    glued into the solution by myst-nb) goes with the solutions."""
+    notebook["cells"] = [
+        cell
+        for cell in notebook.get("cells", [])
+        if "solution" not in cell.get("metadata", {}).get("tags", [])
+    ]
+    for cell in notebook["cells"]:
         text = "".join(cell.get("source", ""))
         if cell.get("cell_type") == "markdown":
             cell["source"] = strip_solutions(text)

@@ -146,7 +146,16 @@ def test_solutions_are_stripped_from_a_source_and_a_notebook():
             },
         ]
     }
+    notebook["cells"].append(
+        {
+            "cell_type": "code",
+            "metadata": {"tags": ["remove-cell", "solution"]},
+            "source": 'glue("demo-exercise-1-frames", fig, display=False)',
+            "outputs": [],
+        }
+    )
     course = editions.course_notebook(notebook, {("screws", 10)})
+    assert len(course["cells"]) == 2, "the solution's figure cell went too"
     assert "Because" not in course["cells"][0]["source"]
     assert (
         "application/json" not in course["cells"][1]["outputs"][0]["data"]["text/html"]

@@ -2,6 +2,7 @@
 chapters; importing the package registers them all in ``REFERENCES``."""
 
 from . import (
+    arm_bank,
     bank_jacobians_workspace_redundancy,
     configuration_space,
     first_chapters,
@@ -17,6 +18,7 @@ from .registry import REFERENCES, all_keys, key, value
 __all__ = [
     "REFERENCES",
     "all_keys",
+    "arm_bank",
     "bank_jacobians_workspace_redundancy",
     "configuration_space",
     "first_chapters",
