@@ -96,3 +96,21 @@ def _():
     switch = bisect(lambda s: accelerating(s) - braking(s), 0.0, 1.0)
     first = quad(lambda s: 1 / accelerating(s), 0.0, switch)[0]
     return first + quad(lambda s: 1 / braking(s), switch, 1.0)[0]
+
+
+@reference(CHAPTER, 19)
+def _():
+    # the figure's jerk integrated three times on a grid of 10 us whose nodes hold the
+    # segments' ends: the jerk read at the cells' middles, then the trapezoidal rule
+    edges = [0, 0.2, 0.5, 0.7, 1.2, 1.4, 1.7, 1.9]
+    values = [10, 0, -10, 0, -10, 0, 10]
+    t = np.linspace(0.0, 1.9, 190001)
+    middle = (t[1:] + t[:-1]) / 2
+    cells = [(middle >= lo) & (middle < hi) for lo, hi in zip(edges, edges[1:])]
+    jerk = np.select(cells, values)
+
+    def integral(f):
+        return np.r_[0.0, np.cumsum((f[1:] + f[:-1]) / 2 * np.diff(t))]
+
+    acceleration = np.r_[0.0, np.cumsum(jerk * np.diff(t))]
+    return integral(integral(acceleration))[-1]
