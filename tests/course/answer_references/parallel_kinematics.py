@@ -69,3 +69,29 @@ def _():
 def _():
     leg = leg_1_at_home()
     return leg[2] / np.sqrt(np.sum(leg**2))
+
+
+@reference("parallel_kinematics", 12)
+def _():
+    # the delta with its cranks horizontal: leg 1's elbow at (0.4, 0, 0), its
+    # platform point (0.05, 0, 0) off the platform's origin; by symmetry the origin is
+    # on the z axis, 0.45 m from the elbow: bisection below the base
+    elbow, b1, l2 = np.array([0.4, 0.0, 0.0]), np.array([0.05, 0.0, 0.0]), 0.45
+
+    def reach(z):
+        return np.linalg.norm(np.array([0.0, 0.0, z]) + b1 - elbow) - l2
+
+    return bisect(reach, -0.45, 0.0)
+
+
+@reference("parallel_kinematics", 14)
+def _():
+    # the longest leg of the platform 1 m up turned by yaw reaches 1.6 m: bisection
+    # on the legs written out from the table's circles
+    def longest(yaw):
+        c, s = np.cos(yaw), np.sin(yaw)
+        R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+        legs = STEWART_PLATFORM @ R.T + [0, 0, 1] - STEWART_BASE
+        return np.linalg.norm(legs, axis=1).max() - 1.6
+
+    return np.degrees(bisect(longest, 0.0, np.radians(100)))
