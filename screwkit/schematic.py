@@ -70,6 +70,13 @@ def sketch(width=3.3, height=2.6, limits=((-0.5, 1.5), (-0.3, 1.2)), title=None)
     -------
     (matplotlib.figure.Figure, matplotlib.axes.Axes)
         The figure and its axes.
+
+    Examples
+    --------
+    >>> fig, ax = sketch(limits=((0, 2), (0, 1)))
+    >>> [float(v) for v in (*ax.get_xlim(), *ax.get_ylim(), ax.get_aspect())]
+    [0.0, 2.0, 0.0, 1.0, 1.0]
+    >>> plt.close(fig)
     """
     if not 0 < width <= MAX_WIDTH:
         raise ValueError(f"width must be in (0, {MAX_WIDTH}] inches, got {width!r}")
@@ -98,6 +105,14 @@ def base(ax, xy):
         The sketch's axes.
     xy : (float, float)
         The point (m).
+
+    Examples
+    --------
+    The ground line and its seven hatches:
+
+    >>> fig, ax = sketch()
+    >>> base(ax, (0, 0)); len(ax.lines); plt.close(fig)
+    8
     """
     x, y = _point(xy, "xy")
     w = 3 * _size(ax)
@@ -115,6 +130,13 @@ def link(ax, *points):
         The sketch's axes.
     *points : (float, float)
         The points (m), at least two.
+
+    Examples
+    --------
+    >>> fig, ax = sketch()
+    >>> link(ax, (0, 0), (0.5, 0.3), (1.0, 0.3))
+    >>> ax.lines[0].get_xydata().tolist(); plt.close(fig)
+    [[0.0, 0.0], [0.5, 0.3], [1.0, 0.3]]
     """
     if len(points) < 2:
         raise ValueError(f"link needs at least two points, got {len(points)}")
@@ -142,6 +164,16 @@ def revolute(ax, xy, axis="out"):
     axis : "out" or (float, float), optional
         "out": the axis is normal to the page (a circle with a dot); a direction of
         the page: a short cylinder along it.
+
+    Examples
+    --------
+    A joint whose axis leaves the page is a circle 1/25 of the drawing wide:
+
+    >>> fig, ax = sketch(limits=((0, 2.5), (0, 1)))
+    >>> revolute(ax, (1, 0.5)); joint = ax.patches[0]
+    >>> joint.get_gid(), [float(v) for v in joint.center], round(float(joint.radius), 6)
+    ('joint-revolute', [1.0, 0.5], 0.1)
+    >>> plt.close(fig)
     """
     centre = _point(xy, "xy")
     if _normal_to_page(axis, "axis", ("out",)):
@@ -173,6 +205,18 @@ def prismatic(ax, xy, direction):
     direction : (float, float) or "in" or "out"
         Its direction of sliding: a direction of the page (a sleeve along it), or into
         or out of the page (a square with a cross or a dot).
+
+    Examples
+    --------
+    A sleeve along x, 2 x 2.2 joint sizes long and 2 wide (a joint size is 0.1 m
+    here):
+
+    >>> fig, ax = sketch(limits=((0, 2.5), (0, 1)))
+    >>> prismatic(ax, (1, 0.5), (1, 0)); sleeve = ax.patches[0]
+    >>> corners = sleeve.get_xy()[:4]
+    >>> sleeve.get_gid(), np.round(np.ptp(corners, axis=0), 6).tolist()
+    ('joint-prismatic', [0.44, 0.2])
+    >>> plt.close(fig)
     """
     centre = _point(xy, "xy")
     if _normal_to_page(direction, "direction", ("in", "out")):
@@ -199,6 +243,13 @@ def frame(ax, xy, label, x=(1, 0), z=(0, 1)):
     x, z : (float, float) or "out" or "in", optional
         Each axis: a direction of the page (an arrow), or out of or into the page (a
         dot or a cross in a circle).
+
+    Examples
+    --------
+    >>> fig, ax = sketch()
+    >>> frame(ax, (0, 0), "1", x=(0, 1), z="out")
+    >>> [text.get_text() for text in ax.texts if text.get_text()]; plt.close(fig)
+    ['$x_{1}$', '$z_{1}$']
     """
     origin, length = _point(xy, "xy"), 4 * _size(ax)
     for direction, name, color in ((x, "x", X_AXIS), (z, "z", Z_AXIS)):
@@ -241,6 +292,13 @@ def dimension(ax, start, end, text, offset=None):
     offset : float or None, optional
         How far to the left of the line from ``start`` to ``end`` it is drawn (m);
         None: twice the joints' size.
+
+    Examples
+    --------
+    >>> fig, ax = sketch()
+    >>> dimension(ax, (0, 0), (0.4, 0), "0.4 m")
+    >>> [text.get_text() for text in ax.texts if text.get_text()]; plt.close(fig)
+    ['0.4 m']
     """
     p, q = _point(start, "start"), _point(end, "end")
     along = _unit(q - p, "end - start")
