@@ -37,19 +37,10 @@ from .._docstrings import fill
 from ..lie import adjoint
 from ..links import decimal
 from ..transforms import inv
-from . import _second_order
+from . import LAZY, _second_order
 
-__all__ = [
-    "space_jacobian_dot",
-    "body_jacobian_dot",
-    "geometric_jacobian_dot",
-    "space_hessian",
-    "body_hessian",
-    "geometric_hessian",
-    "space_acceleration",
-    "body_acceleration",
-    "geometric_acceleration",
-]
+# the names are listed once, in the family's table of what loads on first use
+__all__ = list(LAZY["acceleration"])
 
 
 def _exact(*values):
