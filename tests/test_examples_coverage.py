@@ -32,15 +32,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 # Modules rewritten by another piece of work at the moment (their examples come with
 # it). Temporary: empty this list once that work has landed.
-OTHER_OWNERS = (
-    "screwkit._checks",
-    "screwkit._compiled",
-    "screwkit._fast_kinematics",
-    "screwkit.chains",
-    "screwkit.ik",  # and its submodules
-    "screwkit.jacobians",
-    "screwkit.motion.acceleration",
-)
+OTHER_OWNERS = ()
 
 # Objects whose examples are still to be written (full names, where defined).
 # Temporary: empty this list.
