@@ -571,7 +571,7 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
 
     Examples
     --------
-    A Cartesian arm (three prismatic joints along x, y, z) with a spherical wrist:
+    A Cartesian arm (three prismatic joints on perpendicular axes), spherical wrist:
     the prismatic block is the identity up to sign, so det J = sin q5, the wrist's
     singularity.
 
