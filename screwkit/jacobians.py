@@ -511,15 +511,16 @@ def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
 
     Examples
     --------
-    A planar 2R arm with the lengths as symbols: the rows v_x, v_y are the
-    textbook -a1 s1 - a2 s12, a1 c1 + a2 c12 and -a2 s12, a2 c12.
+    A planar 2R arm with links a1, a2 (symbols), its elbow (the origin of frame 1)
+    as the point: joint 1 moves it at a1 (-s1, c1), joint 2 not at all.
 
-    >>> import screwkit as sk
-    >>> arm = sk.robots.planar([1.0, 1.0])
-    >>> geometric_jacobian_symbolic(arm, symbolic_lengths=True)[:2, :]
+    >>> import screwkit as sk, sympy as sp
+    >>> a1, a2 = sp.symbols("a1 a2", positive=True)
+    >>> arm = sk.Chain([sk.Link.revolute(a=a1), sk.Link.revolute(a=a2)])
+    >>> geometric_jacobian_symbolic(arm, point=1)[:2, :]
     Matrix([
-    [-a1*sin(q1) - a2*sin(q1 + q2), -a2*sin(q1 + q2)],
-    [ a1*cos(q1) + a2*cos(q1 + q2),  a2*cos(q1 + q2)]])
+    [-a1*sin(q1), 0],
+    [ a1*cos(q1), 0]])
     """
     check_chain(chain)
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
