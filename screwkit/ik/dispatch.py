@@ -368,8 +368,9 @@ def analytic_ik_all(chain, T):
 
     Examples
     --------
-    The PUMA's eight solutions of a pose: left and right arm (q1 and q1 + pi ...),
-    each with four; the pose's own q1 = 0.1 among them.
+    The PUMA's eight solutions of a pose: two values of q1 (the left and the right
+    arm), four solutions each (elbow up or down, wrist flipped or not); the pose's
+    own q1 = 0.1 is one of the two.
 
     >>> import screwkit as sk
     >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
