@@ -486,20 +486,30 @@ def into_limits(q, limits, slack):
     for j, (x, (low, high)) in enumerate(zip(q, limits)):
         if low <= x <= high:
             continue
-        best, low, high = math.inf, low - slack, high + slack
-        for step in _TURNS:
-            candidate = x + step
-            if low <= candidate <= high:
-                distance = abs(candidate - x)
-                if distance < best:
-                    best, moved[j] = distance, candidate
-        if best == math.inf:
+        low, high = low - slack, high + slack
+        if low <= x <= high:  # k = 0 fits within the slack
+            continue
+        # the smallest whole turn k that fits wins (their distances 2 pi k apart);
+        # of -k and k both fitting, the nearer one in floats, -k on a tie
+        for step in _STEPS:
+            below, above = x - step, x + step
+            fits_below, fits_above = low <= below <= high, low <= above <= high
+            if fits_below and fits_above:
+                nearer = abs(above - x) < abs(below - x)
+                moved[j] = above if nearer else below
+                break
+            if fits_below or fits_above:
+                moved[j] = below if fits_below else above
+                break
+        else:
             ok = False
     return moved, ok
 
 
-#: The whole turns tried, 2 pi k for k = -3 ... 3, as ``dispatch._into_limits``.
-_TURNS = tuple(2 * math.pi * turn for turn in range(-3, 4))
+#: The whole turns tried besides none, 2 pi k for k = 1, 2, 3 (each also as -k).
+_STEPS = tuple(2 * math.pi * turn for turn in range(1, 4))
+
+
 
 
 def residual(entries, target, scale):
