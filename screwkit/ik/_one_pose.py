@@ -22,7 +22,9 @@ _NAN_ROW = [math.nan] * 6
 
 
 def _dot(a, b):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return a0 * b0 + a1 * b1 + a2 * b2
 
 
 def _cross(a, b):
@@ -50,12 +52,13 @@ def _polar(y, x):
 def _turn(w, x, c, s):
     """x turned about the unit axis w by the angle of cosine c and sine s
     (:meth:`._closed_form.Turn.first`: x c + (w x x) s + w ((w . x)(1 - c)))."""
-    along = _dot(w, x) * (1 - c)
-    k = _cross(w, x)
+    w0, w1, w2 = w
+    x0, x1, x2 = x
+    along = (w0 * x0 + w1 * x1 + w2 * x2) * (1 - c)  # _dot and _cross inline
     return (
-        x[0] * c + k[0] * s + w[0] * along,
-        x[1] * c + k[1] * s + w[1] * along,
-        x[2] * c + k[2] * s + w[2] * along,
+        x0 * c + (w1 * x2 - w2 * x1) * s + w0 * along,
+        x1 * c + (w2 * x0 - w0 * x2) * s + w1 * along,
+        x2 * c + (w0 * x1 - w1 * x0) * s + w2 * along,
     )
 
 
@@ -83,7 +86,13 @@ def _times_inverse_home(R, t, Hinv):
 
 
 def _apply(R, x):
-    return (_dot(R[0], x), _dot(R[1], x), _dot(R[2], x))
+    (a0, a1, a2), (b0, b1, b2), (c0, c1, c2) = R
+    x0, x1, x2 = x
+    return (
+        a0 * x0 + a1 * x1 + a2 * x2,
+        b0 * x0 + b1 * x1 + b2 * x2,
+        c0 * x0 + c1 * x1 + c2 * x2,
+    )
 
 
 def _vector(array):
@@ -253,9 +262,10 @@ def _wrist(k, t, b):
         free5 = _polar(_dot(k["n56"], t), _dot(w6, t) - c56 * t5)
     # joint 6: b . R4 f for the fixed f of "fs" is fb c4 + kb s4 + (w4 . b)(w4 . f)
     # (1 - c4), with fb = f . b and kb = (w4 x f) . b computed once per arm and elbow
+    b0, b1, b2 = b
     w4b = _dot(w4, b)
-    fb = [_dot(f, b) for f in k["fs"]]
-    kb = [_dot(f, b) for f in k["w4fs"]]
+    fb = [f0 * b0 + f1 * b1 + f2 * b2 for f0, f1, f2 in k["fs"]]
+    kb = [f0 * b0 + f1 * b1 + f2 * b2 for f0, f1, f2 in k["w4fs"]]
     w4f, w5x6, w5w6x6 = k["w4f"], k["w5x6"], k["w5w6x6"]
     out = []
     for gamma, q4_free, c4_free in (
@@ -304,10 +314,16 @@ def _fixed(parts, c, s):
 def _between(w, a, b):
     """Subproblem 1 (:func:`.subproblems.rotation_angles`): the angle about w from a
     to b, their parts across w."""
-    aw, bw = _dot(a, w), _dot(b, w)
-    a_ = (a[0] - w[0] * aw, a[1] - w[1] * aw, a[2] - w[2] * aw)
-    b_ = (b[0] - w[0] * bw, b[1] - w[1] * bw, b[2] - w[2] * bw)
-    return math.atan2(_dot(_cross(a_, b_), w), _dot(a_, b_))
+    w0, w1, w2 = w
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    aw, bw = a0 * w0 + a1 * w1 + a2 * w2, b0 * w0 + b1 * w1 + b2 * w2
+    a0, a1, a2 = a0 - w0 * aw, a1 - w1 * aw, a2 - w2 * aw
+    b0, b1, b2 = b0 - w0 * bw, b1 - w1 * bw, b2 - w2 * bw
+    return math.atan2(
+        (a1 * b2 - a2 * b1) * w0 + (a2 * b0 - a0 * b2) * w1 + (a0 * b1 - a1 * b0) * w2,
+        a0 * b0 + a1 * b1 + a2 * b2,
+    )
 
 
 def _roots(A, B, C):
@@ -321,11 +337,15 @@ def _roots(A, B, C):
 
 
 def _add(a, b):
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return (a0 + b0, a1 + b1, a2 + b2)
 
 
 def _sub(a, b):
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return (a0 - b0, a1 - b1, a2 - b2)
 
 
 def _ur_constants(arm):
@@ -475,14 +495,15 @@ def solve_ur(arm, T):
 def into_limits(q, limits, slack):
     """One solution q (6 floats) with each angle moved by a multiple of 2 pi into its
     limits (the candidate nearest to q of q + 2 pi k, k = -3 ... 3; the first of a
-    tie), and whether every angle could be moved there: the arithmetic of
-    ``dispatch._into_limits`` on floats (revolute joints)."""
+    tie), and whether every angle could be moved there (if not, q itself: the moves
+    are not used): the arithmetic of ``dispatch._into_limits`` on floats (revolute
+    joints)."""
     for x, (low, high) in zip(q, limits):
         if not low <= x <= high:
             break
     else:
         return q, True  # all within their limits already
-    moved, ok = list(q), True
+    moved = list(q)
     for j, (x, (low, high)) in enumerate(zip(q, limits)):
         if low <= x <= high:
             continue
@@ -502,8 +523,8 @@ def into_limits(q, limits, slack):
                 moved[j] = below if fits_below else above
                 break
         else:
-            ok = False
-    return moved, ok
+            return q, False  # this angle cannot be moved there: the moves unused
+    return moved, True
 
 
 #: The whole turns tried besides none, 2 pi k for k = 1, 2, 3 (each also as -k).
