@@ -213,8 +213,9 @@ def solve_wrist(arm, T):
         theta0 = s3 * k["theta0"]
         elbows = []
         m = _cross(a2, b1)
-        dots = [_dot(v, b1) for v in k["k"]]
-        crosses = [-_dot(v, m) for v in k["k"]]
+        (x0, x1, x2), (m0, m1, m2) = b1, m
+        dots = [v0 * x0 + v1 * x1 + v2 * x2 for v0, v1, v2 in k["k"]]
+        crosses = [-(v0 * m0 + v1 * m1 + v2 * m2) for v0, v1, v2 in k["k"]]
         along2 = _dot(a2, b1) * k["k0a2"]
         em, a2em = _dot(k["e"], m), _dot(k["a2e"], m)
         for q3 in (theta0 + s3 * -beta, theta0 + s3 * beta):
@@ -424,6 +425,10 @@ def solve_ur(arm, T):
     if arms[1][0] < arms[0][0]:
         arms.reverse()  # l first, then r
     g6 = _apply(RG, w6)
+    p0, p4, p5, r2 = p[0], p[4], p[5], k["r2"]
+    p43_w5, x_w5, r3_w3 = k["p43 about w5"], k["x about w5"], k["r3 about w3"]
+    (r22, r33), A3, B3, s3, s4 = k["r2r3"], k["A3"], k["B3"], k["s3"], k["s4"]
+    elbow_scale = IK_SINGULAR_TOL * (A3**2 + B3**2)
     out, flags, wrist_any = [None] * 8, [None] * 8, False
     shoulder_flag = abs(excess1) < IK_SINGULAR_TOL * radius1
     for arm_index, (_, theta, ct, st) in enumerate(arms):
@@ -449,33 +454,32 @@ def solve_ur(arm, T):
             q6 = 0.0 if on_axis else _between(w6, a, b)
             c6, s6 = math.cos(q6), math.sin(q6)
             # joints 2-4
-            y = _add(p[4], _fixed(k["p43 about w5"], c5, -s5))
-            z = _add(p[5], _turn(w6, _sub(y, p[5]), c6, -s6))
+            y = _add(p4, _fixed(p43_w5, c5, -s5))
+            z = _add(p5, _turn(w6, _sub(y, p5), c6, -s6))
             g = _add(_apply(RG, z), tG)
-            P = _add(p[0], _turn(w1, _sub(g, p[0]), ct, st))
-            rx = _turn(w6, _fixed(k["x about w5"], c5, -s5), c6, -s6)
+            P = _add(p0, _turn(w1, _sub(g, p0), ct, st))
+            rx = _turn(w6, _fixed(x_w5, c5, -s5), c6, -s6)
             rx = _turn(w1, _apply(RG, rx), ct, st)
             phi4 = _between(u, k["x"], rx)
             v = _sub(P, p[1])
             vu = _dot(v, u)
             ys = (v[0] - u[0] * vu, v[1] - u[1] * vu, v[2] - u[2] * vu)
             delta2 = ys[0] ** 2 + ys[1] ** 2 + ys[2] ** 2
-            r22, r33 = k["r2r3"]
             C3 = (delta2 - r22 - r33) / 2
-            q3s, elbow_ok, excess3 = _roots(k["A3"], k["B3"], C3)
+            q3s, elbow_ok, excess3 = _roots(A3, B3, C3)
             elbows = []
-            ys_r2_u, ys_r2 = _dot(_cross(ys, k["r2"]), u), _dot(ys, k["r2"])
+            ys_r2_u, ys_r2 = _dot(_cross(ys, r2), u), _dot(ys, r2)
             for q3 in q3s:
-                xs = _add(k["r2"], _fixed(k["r3 about w3"], math.cos(q3), math.sin(q3)))
+                xs = _add(r2, _fixed(r3_w3, math.cos(q3), math.sin(q3)))
                 q2 = _between(u, xs, ys)
                 above = math.cos(q2) * ys_r2_u + math.sin(q2) * ys_r2
                 elbows.append((-sigma * above, q2, q3))
             if elbows[1][0] < elbows[0][0]:
                 elbows.reverse()  # u first, then d
             reached = shoulder_ok and wrist_ok and elbow_ok
-            elbow_flag = abs(excess3) < IK_SINGULAR_TOL * (k["A3"] ** 2 + k["B3"] ** 2)
+            elbow_flag = abs(excess3) < elbow_scale
             for elbow_index, (_, q2, q3) in enumerate(elbows):
-                q4 = k["s4"] * (phi4 - q2 - k["s3"] * q3)
+                q4 = s4 * (phi4 - q2 - s3 * q3)
                 row = [q1, _wrap(q2), _wrap(q3), _wrap(q4), _wrap(q5), _wrap(q6)]
                 index = 4 * arm_index + 2 * elbow_index + wrist_index
                 out[index] = row if reached else _NAN_ROW
