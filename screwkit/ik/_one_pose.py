@@ -535,8 +535,6 @@ def into_limits(q, limits, slack):
 _STEPS = tuple(2 * math.pi * turn for turn in range(1, 4))
 
 
-
-
 def residual(entries, target, scale):
     """The pose residual (:func:`._closed_form.pose_residual`) of one solution: the
     largest entry of the rotation's difference and of the position's divided by
