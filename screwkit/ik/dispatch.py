@@ -151,7 +151,15 @@ class _Residual:
         solution.__dict__.pop("_residual_of", None)
 
 
+def _state(solution):
+    """The fields of a solution to pickle or copy, its residual computed (not the
+    generated pose function it would be computed with)."""
+    solution.residual  # noqa: B018 (computed and stored if not yet)
+    return {k: v for k, v in solution.__dict__.items() if k != "_residual_of"}
+
+
 IKSolution.residual = _Residual()  # after the dataclass took the field and default
+IKSolution.__getstate__ = _state
 
 
 class IKSolutions(list):
