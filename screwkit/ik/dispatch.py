@@ -142,7 +142,7 @@ class _Residual:
         try:
             return found["residual"]
         except KeyError:
-            pose, q, target, scale = found.pop("_residual_of")
+            pose, q, target, scale = found["_residual_of"]  # kept: thread-safe
             value = found["residual"] = _one_pose.residual(pose(q), target, scale)
             return value
 
