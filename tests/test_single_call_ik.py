@@ -164,3 +164,41 @@ def test_one_pose_check():
     assert one_pose(T.astype(np.float32)) is None
     assert one_pose(T[None]) is None
     assert one_pose(np.diag([1.0, 1.0, -1.0, 1.0])) is None
+
+
+def test_into_limits_on_floats_matches_the_array_version():
+    """_one_pose.into_limits (the smallest whole turn first) against
+    dispatch._into_limits (all seven turns k = -3 ... 3 compared): the same flag and,
+    where every angle fits, the same angles bit for bit; limits narrow, wide (both -k
+    and k fit) and unreachable, angles inside, in the slack and outside."""
+    rng = np.random.default_rng(7)
+    slack = dispatch.IK_JOINT_LIMIT_SLACK
+    for _ in range(400):
+        centre = rng.uniform(-8, 8, 6)
+        width = rng.choice([0.5, 2.0, 5.0, 4 * np.pi + 0.1, 13.0], 6)
+        limits = np.column_stack([centre - width / 2, centre + width / 2])
+        q = rng.uniform(-np.pi, np.pi, 6)
+        q[0] = limits[0, 1] + slack / 2  # in the slack above the upper limit
+        q[1] = 0.0 if width[1] > 4 * np.pi else q[1]  # -2 pi and 2 pi may both fit
+        moved, ok = _one_pose.into_limits(q.tolist(), limits.tolist(), slack)
+        expected, inside = dispatch._into_limits(q[None], limits)
+        assert ok == bool(inside[0])
+        if ok:  # else the moved angles are not used (the array version's are junk)
+            assert np.array_equal(np.array(moved), expected[0])
+
+
+def test_one_pose_solutions_pickle_and_copy_with_their_residuals():
+    """The scalar path computes a solution's residual when asked: a pickled or copied
+    solution carries the same fields, the residual included."""
+    import copy
+    import pickle
+
+    chain = sk.robots.ur5e()
+    q = np.array([0.3, -1.1, 1.4, -0.2, 0.9, 0.5])
+    T = chain.fk(q)
+    for solution in sk.ik.analytic_ik(chain, T):
+        for twin in (pickle.loads(pickle.dumps(solution)), copy.deepcopy(solution)):
+            assert type(twin) is sk.ik.IKSolution
+            assert np.array_equal(twin.q, solution.q) and twin.config == solution.config
+            assert twin.residual == solution.residual
+        assert solution.residual < 1e-9  # every closed-form solution reaches T

@@ -22,7 +22,9 @@ _NAN_ROW = [math.nan] * 6
 
 
 def _dot(a, b):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return a0 * b0 + a1 * b1 + a2 * b2
 
 
 def _cross(a, b):
@@ -50,12 +52,13 @@ def _polar(y, x):
 def _turn(w, x, c, s):
     """x turned about the unit axis w by the angle of cosine c and sine s
     (:meth:`._closed_form.Turn.first`: x c + (w x x) s + w ((w . x)(1 - c)))."""
-    along = _dot(w, x) * (1 - c)
-    k = _cross(w, x)
+    w0, w1, w2 = w
+    x0, x1, x2 = x
+    along = (w0 * x0 + w1 * x1 + w2 * x2) * (1 - c)  # _dot and _cross inline
     return (
-        x[0] * c + k[0] * s + w[0] * along,
-        x[1] * c + k[1] * s + w[1] * along,
-        x[2] * c + k[2] * s + w[2] * along,
+        x0 * c + (w1 * x2 - w2 * x1) * s + w0 * along,
+        x1 * c + (w2 * x0 - w0 * x2) * s + w1 * along,
+        x2 * c + (w0 * x1 - w1 * x0) * s + w2 * along,
     )
 
 
@@ -83,7 +86,13 @@ def _times_inverse_home(R, t, Hinv):
 
 
 def _apply(R, x):
-    return (_dot(R[0], x), _dot(R[1], x), _dot(R[2], x))
+    (a0, a1, a2), (b0, b1, b2), (c0, c1, c2) = R
+    x0, x1, x2 = x
+    return (
+        a0 * x0 + a1 * x1 + a2 * x2,
+        b0 * x0 + b1 * x1 + b2 * x2,
+        c0 * x0 + c1 * x1 + c2 * x2,
+    )
 
 
 def _vector(array):
@@ -204,8 +213,9 @@ def solve_wrist(arm, T):
         theta0 = s3 * k["theta0"]
         elbows = []
         m = _cross(a2, b1)
-        dots = [_dot(v, b1) for v in k["k"]]
-        crosses = [-_dot(v, m) for v in k["k"]]
+        (x0, x1, x2), (m0, m1, m2) = b1, m
+        dots = [v0 * x0 + v1 * x1 + v2 * x2 for v0, v1, v2 in k["k"]]
+        crosses = [-(v0 * m0 + v1 * m1 + v2 * m2) for v0, v1, v2 in k["k"]]
         along2 = _dot(a2, b1) * k["k0a2"]
         em, a2em = _dot(k["e"], m), _dot(k["a2e"], m)
         for q3 in (theta0 + s3 * -beta, theta0 + s3 * beta):
@@ -253,9 +263,10 @@ def _wrist(k, t, b):
         free5 = _polar(_dot(k["n56"], t), _dot(w6, t) - c56 * t5)
     # joint 6: b . R4 f for the fixed f of "fs" is fb c4 + kb s4 + (w4 . b)(w4 . f)
     # (1 - c4), with fb = f . b and kb = (w4 x f) . b computed once per arm and elbow
+    b0, b1, b2 = b
     w4b = _dot(w4, b)
-    fb = [_dot(f, b) for f in k["fs"]]
-    kb = [_dot(f, b) for f in k["w4fs"]]
+    fb = [f0 * b0 + f1 * b1 + f2 * b2 for f0, f1, f2 in k["fs"]]
+    kb = [f0 * b0 + f1 * b1 + f2 * b2 for f0, f1, f2 in k["w4fs"]]
     w4f, w5x6, w5w6x6 = k["w4f"], k["w5x6"], k["w5w6x6"]
     out = []
     for gamma, q4_free, c4_free in (
@@ -304,10 +315,16 @@ def _fixed(parts, c, s):
 def _between(w, a, b):
     """Subproblem 1 (:func:`.subproblems.rotation_angles`): the angle about w from a
     to b, their parts across w."""
-    aw, bw = _dot(a, w), _dot(b, w)
-    a_ = (a[0] - w[0] * aw, a[1] - w[1] * aw, a[2] - w[2] * aw)
-    b_ = (b[0] - w[0] * bw, b[1] - w[1] * bw, b[2] - w[2] * bw)
-    return math.atan2(_dot(_cross(a_, b_), w), _dot(a_, b_))
+    w0, w1, w2 = w
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    aw, bw = a0 * w0 + a1 * w1 + a2 * w2, b0 * w0 + b1 * w1 + b2 * w2
+    a0, a1, a2 = a0 - w0 * aw, a1 - w1 * aw, a2 - w2 * aw
+    b0, b1, b2 = b0 - w0 * bw, b1 - w1 * bw, b2 - w2 * bw
+    return math.atan2(
+        (a1 * b2 - a2 * b1) * w0 + (a2 * b0 - a0 * b2) * w1 + (a0 * b1 - a1 * b0) * w2,
+        a0 * b0 + a1 * b1 + a2 * b2,
+    )
 
 
 def _roots(A, B, C):
@@ -321,11 +338,15 @@ def _roots(A, B, C):
 
 
 def _add(a, b):
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return (a0 + b0, a1 + b1, a2 + b2)
 
 
 def _sub(a, b):
-    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+    a0, a1, a2 = a
+    b0, b1, b2 = b
+    return (a0 - b0, a1 - b1, a2 - b2)
 
 
 def _ur_constants(arm):
@@ -404,6 +425,10 @@ def solve_ur(arm, T):
     if arms[1][0] < arms[0][0]:
         arms.reverse()  # l first, then r
     g6 = _apply(RG, w6)
+    p0, p4, p5, r2 = p[0], p[4], p[5], k["r2"]
+    p43_w5, x_w5, r3_w3 = k["p43 about w5"], k["x about w5"], k["r3 about w3"]
+    (r22, r33), A3, B3, s3, s4 = k["r2r3"], k["A3"], k["B3"], k["s3"], k["s4"]
+    elbow_scale = IK_SINGULAR_TOL * (A3**2 + B3**2)
     out, flags, wrist_any = [None] * 8, [None] * 8, False
     shoulder_flag = abs(excess1) < IK_SINGULAR_TOL * radius1
     for arm_index, (_, theta, ct, st) in enumerate(arms):
@@ -429,33 +454,32 @@ def solve_ur(arm, T):
             q6 = 0.0 if on_axis else _between(w6, a, b)
             c6, s6 = math.cos(q6), math.sin(q6)
             # joints 2-4
-            y = _add(p[4], _fixed(k["p43 about w5"], c5, -s5))
-            z = _add(p[5], _turn(w6, _sub(y, p[5]), c6, -s6))
+            y = _add(p4, _fixed(p43_w5, c5, -s5))
+            z = _add(p5, _turn(w6, _sub(y, p5), c6, -s6))
             g = _add(_apply(RG, z), tG)
-            P = _add(p[0], _turn(w1, _sub(g, p[0]), ct, st))
-            rx = _turn(w6, _fixed(k["x about w5"], c5, -s5), c6, -s6)
+            P = _add(p0, _turn(w1, _sub(g, p0), ct, st))
+            rx = _turn(w6, _fixed(x_w5, c5, -s5), c6, -s6)
             rx = _turn(w1, _apply(RG, rx), ct, st)
             phi4 = _between(u, k["x"], rx)
             v = _sub(P, p[1])
             vu = _dot(v, u)
             ys = (v[0] - u[0] * vu, v[1] - u[1] * vu, v[2] - u[2] * vu)
             delta2 = ys[0] ** 2 + ys[1] ** 2 + ys[2] ** 2
-            r22, r33 = k["r2r3"]
             C3 = (delta2 - r22 - r33) / 2
-            q3s, elbow_ok, excess3 = _roots(k["A3"], k["B3"], C3)
+            q3s, elbow_ok, excess3 = _roots(A3, B3, C3)
             elbows = []
-            ys_r2_u, ys_r2 = _dot(_cross(ys, k["r2"]), u), _dot(ys, k["r2"])
+            ys_r2_u, ys_r2 = _dot(_cross(ys, r2), u), _dot(ys, r2)
             for q3 in q3s:
-                xs = _add(k["r2"], _fixed(k["r3 about w3"], math.cos(q3), math.sin(q3)))
+                xs = _add(r2, _fixed(r3_w3, math.cos(q3), math.sin(q3)))
                 q2 = _between(u, xs, ys)
                 above = math.cos(q2) * ys_r2_u + math.sin(q2) * ys_r2
                 elbows.append((-sigma * above, q2, q3))
             if elbows[1][0] < elbows[0][0]:
                 elbows.reverse()  # u first, then d
             reached = shoulder_ok and wrist_ok and elbow_ok
-            elbow_flag = abs(excess3) < IK_SINGULAR_TOL * (k["A3"] ** 2 + k["B3"] ** 2)
+            elbow_flag = abs(excess3) < elbow_scale
             for elbow_index, (_, q2, q3) in enumerate(elbows):
-                q4 = k["s4"] * (phi4 - q2 - k["s3"] * q3)
+                q4 = s4 * (phi4 - q2 - s3 * q3)
                 row = [q1, _wrap(q2), _wrap(q3), _wrap(q4), _wrap(q5), _wrap(q6)]
                 index = 4 * arm_index + 2 * elbow_index + wrist_index
                 out[index] = row if reached else _NAN_ROW
@@ -475,31 +499,40 @@ def solve_ur(arm, T):
 def into_limits(q, limits, slack):
     """One solution q (6 floats) with each angle moved by a multiple of 2 pi into its
     limits (the candidate nearest to q of q + 2 pi k, k = -3 ... 3; the first of a
-    tie), and whether every angle could be moved there: the arithmetic of
-    ``dispatch._into_limits`` on floats (revolute joints)."""
+    tie), and whether every angle could be moved there (if not, q itself: the moves
+    are not used): the arithmetic of ``dispatch._into_limits`` on floats (revolute
+    joints)."""
     for x, (low, high) in zip(q, limits):
         if not low <= x <= high:
             break
     else:
         return q, True  # all within their limits already
-    moved, ok = list(q), True
+    moved = list(q)
     for j, (x, (low, high)) in enumerate(zip(q, limits)):
         if low <= x <= high:
             continue
-        best, low, high = math.inf, low - slack, high + slack
-        for step in _TURNS:
-            candidate = x + step
-            if low <= candidate <= high:
-                distance = abs(candidate - x)
-                if distance < best:
-                    best, moved[j] = distance, candidate
-        if best == math.inf:
-            ok = False
-    return moved, ok
+        low, high = low - slack, high + slack
+        if low <= x <= high:  # k = 0 fits within the slack
+            continue
+        # the smallest whole turn k that fits wins (their distances 2 pi k apart);
+        # of -k and k both fitting, the nearer one in floats, -k on a tie
+        for step in _STEPS:
+            below, above = x - step, x + step
+            fits_below, fits_above = low <= below <= high, low <= above <= high
+            if fits_below and fits_above:
+                nearer = abs(above - x) < abs(below - x)
+                moved[j] = above if nearer else below
+                break
+            if fits_below or fits_above:
+                moved[j] = below if fits_below else above
+                break
+        else:
+            return q, False  # this angle cannot be moved there: the moves unused
+    return moved, True
 
 
-#: The whole turns tried, 2 pi k for k = -3 ... 3, as ``dispatch._into_limits``.
-_TURNS = tuple(2 * math.pi * turn for turn in range(-3, 4))
+#: The whole turns tried besides none, 2 pi k for k = 1, 2, 3 (each also as -k).
+_STEPS = tuple(2 * math.pi * turn for turn in range(1, 4))
 
 
 def residual(entries, target, scale):

@@ -135,6 +135,39 @@ class IKSolution:
         )
 
 
+class _Residual:
+    """IKSolution.residual: the value stored on the solution, or, for a solution of
+    the scalar path (``_residual_of`` = (pose function, q, target, scale) set in
+    place of it), computed on first access and stored (a frozen dataclass: its
+    ``__dict__`` written directly). The field's default stays float('nan')."""
+
+    def __get__(self, solution, owner=None):
+        if solution is None:
+            return float("nan")
+        found = solution.__dict__
+        try:
+            return found["residual"]
+        except KeyError:
+            pose, q, target, scale = found["_residual_of"]  # kept: thread-safe
+            value = found["residual"] = _one_pose.residual(pose(q), target, scale)
+            return value
+
+    def __set__(self, solution, value):
+        solution.__dict__["residual"] = value
+        solution.__dict__.pop("_residual_of", None)
+
+
+def _state(solution):
+    """The fields of a solution to pickle or copy, its residual computed (not the
+    generated pose function it would be computed with)."""
+    solution.residual  # noqa: B018 (computed and stored if not yet)
+    return {k: v for k, v in solution.__dict__.items() if k != "_residual_of"}
+
+
+IKSolution.residual = _Residual()  # after the dataclass took the field and default
+IKSolution.__getstate__ = _state
+
+
 class IKSolutions(list):
     """The solutions for one pose: a list of :class:`IKSolution`.
 
@@ -303,9 +336,19 @@ def _arm(chain, name="chain"):
 
 
 def _name(arm):
+    try:
+        return _NAMES[type(arm)]
+    except KeyError:
+        pass
     if isinstance(arm, (DecomposedArm, _GeneralArm)):
         return arm.structure
-    return next(name for name, solver in STRUCTURES.items() if isinstance(arm, solver))
+    name = next(name for name, solver in STRUCTURES.items() if isinstance(arm, solver))
+    _NAMES[type(arm)] = name
+    return name
+
+
+#: The structure of each named engine's class, found once.
+_NAMES = {}
 
 
 def structure(chain):
@@ -702,33 +745,56 @@ def _one_answer(arm, chain, T, found, within_limits, near):
     code) as lists (:mod:`._one_pose`): the same solutions, labels, flags and reason,
     the limits and residuals computed on floats."""
     rows, flags, code = found
+    name = _name(arm)
     if code != 0:
-        return IKSolutions([], reason=arm._reason(T, code), structure=_name(arm))
+        return IKSolutions([], reason=arm._reason(T, code), structure=name)
     limits, target = chain.qlim.tolist(), T[:3].ravel().tolist()
-    pose, names = _compiled.scalar(chain, "pose"), ("shoulder", "elbow", "wrist")
-    solutions = []
+    pose, scale = _compiled.scalar(chain, "pose"), arm.scale
+    solutions, singular = [], False
+    new, slack = object.__new__, IK_JOINT_LIMIT_SLACK
     for q, config, flag in zip(rows, CONFIGURATIONS, flags):
         if q[0] != q[0]:  # NaN: the branch does not reach
             continue
-        moved, ok = _one_pose.into_limits(q, limits, IK_JOINT_LIMIT_SLACK)
+        moved, ok = _one_pose.into_limits(q, limits, slack)
         if within_limits and not ok:
             continue
-        solution = object.__new__(IKSolution)  # frozen: its fields set at once
-        solution.__dict__.update(
-            q=np.array(moved if within_limits else q, float),
+        solution = new(IKSolution)  # frozen: its fields set at once, the residual
+        solution.__dict__.update(  # computed when asked (_Residual)
+            q=moved if within_limits else q,
             config=config,
             within_limits=ok,
-            singular=tuple(n for n, f in zip(names, flag) if f) if any(flag) else (),
-            residual=_one_pose.residual(pose(q), target, arm.scale),
+            singular=_SINGULAR[flag],
+            _residual_of=(pose, q, target, scale),
         )
+        singular = singular or flag != _REGULAR
         solutions.append(solution)
-    result = _nearest_first(IKSolutions(solutions, structure=_name(arm)), near)
-    result.reason = _singular_reason(result)
+    if solutions:
+        Q = np.array([s.q for s in solutions], float)
+        for solution, q in zip(solutions, Q):
+            solution.__dict__["q"] = q
+    result = IKSolutions(solutions, structure=name)
+    if near is not None:
+        _nearest_first(result, near)
+    if singular:
+        result.reason = _singular_reason(result)
     if not result:
         Q, flags = np.array(rows, float), np.array(flags)
         listed = _answer(arm, T, Q, flags, code, chain.qlim, False, None)
         result.reason = _outside_limits(listed)
     return result
+
+
+_REGULAR = (False, False, False)
+
+#: The singular field of each (shoulder, elbow, wrist) flags, as _answer builds it.
+_SINGULAR = {
+    (a, b, c): tuple(
+        name for name, f in zip(("shoulder", "elbow", "wrist"), (a, b, c)) if f
+    )
+    for a in (False, True)
+    for b in (False, True)
+    for c in (False, True)
+}
 
 
 def _singular_reason(solutions):
