@@ -11,67 +11,35 @@ import numpy as np
 import pytest
 
 import screwkit as sk
-from screwkit import parallel
 
 
-@functools.cache
-def puma():
-    """The PUMA 560 of the catalogue (Corke's standard DH model, SI units)."""
-    return sk.robots.puma560()
+def _catalogue(family, name, what):
+    """A cached builder of the catalogue's ``sk.<family>.<name>()`` (``what``, for its
+    docstring), looked up and built on first use."""
+
+    @functools.cache
+    def build():
+        return getattr(getattr(sk, family), name)()
+
+    build.__doc__ = f"{what} of the catalogue (``sk.{family}.{name}()``)."
+    return build
 
 
-@functools.cache
-def kawasaki():
-    """The Kawasaki CX210L of the catalogue."""
-    return sk.robots.kawasaki_cx210l()
-
-
-@functools.cache
-def stanford():
-    """The Stanford arm of the catalogue."""
-    return sk.robots.stanford()
-
-
-@functools.cache
-def ur5e():
-    """The UR5e of the catalogue."""
-    return sk.robots.ur5e()
+puma = _catalogue("robots", "puma560", "The PUMA 560 (Corke's standard DH model, SI)")
+kawasaki = _catalogue("robots", "kawasaki_cx210l", "The Kawasaki CX210L")
+stanford = _catalogue("robots", "stanford", "The Stanford arm")
+ur5e = _catalogue("robots", "ur5e", "The UR5e")
+stewart = _catalogue("parallel", "stewart_gough", "The Stewart-Gough platform")
+rpr = _catalogue("parallel", "planar_3rpr", "The planar 3-RPR")
+rrr = _catalogue("parallel", "planar_3rrr", "The planar 3-RRR")
+delta = _catalogue("parallel", "delta", "The Delta robot")
+tripteron = _catalogue("parallel", "tripteron", "The Tripteron")
 
 
 @functools.cache
 def planar(*lengths):
     """A planar revolute arm with these link lengths (m), e.g. ``planar(1.0, 1.0)``."""
     return sk.robots.planar(list(lengths))
-
-
-@functools.cache
-def stewart():
-    """The Stewart-Gough platform of the catalogue, default geometry."""
-    return parallel.stewart_gough()
-
-
-@functools.cache
-def rpr():
-    """The planar 3-RPR of the catalogue."""
-    return parallel.planar_3rpr()
-
-
-@functools.cache
-def rrr():
-    """The planar 3-RRR parallel manipulator of the catalogue."""
-    return parallel.planar_3rrr()
-
-
-@functools.cache
-def delta():
-    """The Delta robot of the catalogue."""
-    return parallel.delta()
-
-
-@functools.cache
-def tripteron():
-    """The Tripteron of the catalogue."""
-    return parallel.tripteron()
 
 
 def refusals(cases):
