@@ -6,7 +6,7 @@ import functools
 import numpy as np
 import sympy as sp
 from builders import planar, puma
-from rows import row
+from rows import keyword_rows, row
 
 import screwkit as sk
 from screwkit import ik
@@ -100,26 +100,33 @@ ROWS = [
         "config",
         match="config must be one of lun",
     ),
-    row(
-        "near wrong length",
-        lambda: ik.puma560_ik(t0(), near=[0, 0]),
-        ValueError,
-        "near",
-        match="near must be a joint vector of 6 entries",
-    ),
-    row(
-        "within_limits not bool",
-        lambda: ik.puma560_ik(t0(), within_limits="yes"),
-        TypeError,
-        "within_limits",
-        match="within_limits must be True or False",
-    ),
-    row(
-        "robot not a chain",
-        lambda: ik.puma560_ik(t0(), robot="puma"),
-        TypeError,
-        "robot",
-        match=r"robot must be a screwkit Chain .*got 'puma'",
+    # puma560_ik's options
+    *keyword_rows(
+        "{}",
+        lambda **kw: ik.puma560_ik(t0(), **kw),
+        [
+            (
+                "near wrong length",
+                "near",
+                [0, 0],
+                ValueError,
+                "near must be a joint vector of 6 entries",
+            ),
+            (
+                "within_limits not bool",
+                "within_limits",
+                "yes",
+                TypeError,
+                "within_limits must be True or False",
+            ),
+            (
+                "robot not a chain",
+                "robot",
+                "puma",
+                TypeError,
+                r"robot must be a screwkit Chain .*got 'puma'",
+            ),
+        ],
     ),
     row(
         "chain of 3 joints",
@@ -185,33 +192,28 @@ ROWS = [
         "T",
         match="T must be one pose",
     ),
-    row(
-        "numeric frame",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), frame="world"),
-        ValueError,
-        "frame",
-        match="frame must be 'body' or 'space'",
-    ),
-    row(
-        "numeric tol",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), tol=-1),
-        ValueError,
-        "tol",
-        match="tol must be a positive number",
-    ),
-    row(
-        "numeric iterations",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), max_iterations=0),
-        ValueError,
-        "max_iterations",
-        match="max_iterations must be a positive integer",
-    ),
-    row(
-        "numeric damping",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), damping=-0.1),
-        ValueError,
-        "damping",
-        match="damping must be None or a number >= 0",
+    # numeric_ik's options, each refused with what it must be
+    *keyword_rows(
+        "numeric {}",
+        lambda **kw: ik.numeric_ik(puma(), t0(), np.zeros(6), **kw),
+        [
+            ("frame", "frame", "world", ValueError, "frame must be 'body' or 'space'"),
+            ("tol", "tol", -1, ValueError, "tol must be a positive number"),
+            (
+                "iterations",
+                "max_iterations",
+                0,
+                ValueError,
+                "max_iterations must be a positive integer",
+            ),
+            (
+                "damping",
+                "damping",
+                -0.1,
+                ValueError,
+                "damping must be None or a number >= 0",
+            ),
+        ],
     ),
     row(
         "subproblem twist shape",
