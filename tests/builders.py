@@ -9,6 +9,7 @@ import functools
 
 import numpy as np
 import pytest
+import sympy as sp
 
 import screwkit as sk
 
@@ -40,6 +41,16 @@ tripteron = _catalogue("parallel", "tripteron", "The Tripteron")
 def planar(*lengths):
     """A planar revolute arm with these link lengths (m), e.g. ``planar(1.0, 1.0)``."""
     return sk.robots.planar(list(lengths))
+
+
+@functools.cache
+def puma_offset_wrist():
+    """The PUMA 560 with a4 = 0.1 m: its wrist axes 4, 5, 6 do not meet."""
+    return sk.Chain(
+        list(puma().links[:3])
+        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
+        + list(puma().links[4:])
+    )
 
 
 def refusals(cases):

@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import sympy as sp  # noqa: E402
 from builders import planar, puma  # noqa: E402
-from rows import row  # noqa: E402
+from rows import keyword_rows, row  # noqa: E402
 
 import screwkit as sk  # noqa: E402
 from screwkit import plotting as pl  # noqa: E402
@@ -751,95 +751,26 @@ REDUNDANCY = [
         ValueError,
         "q0",
     ),
-    row(
-        "resolve-null-space-nan",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain=np.nan),
-        ValueError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-null-space-str",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain="1"),
-        TypeError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-null-space-bool",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain=True),
-        TypeError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-null-space-array",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain=[1.0, 2.0]),
-        TypeError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-damping-nan",
-        lambda: rd.resolve(arm(), path(), q0(), damping=np.nan),
-        ValueError,
-        "damping",
-    ),
-    row(
-        "resolve-damping-negative",
-        lambda: rd.resolve(arm(), path(), q0(), damping=-0.1),
-        ValueError,
-        "damping",
-    ),
-    row(
-        "resolve-max-rate-negative",
-        lambda: rd.resolve(arm(), path(), q0(), max_rate=-1.0),
-        ValueError,
-        "max_rate",
-    ),
-    row(
-        "resolve-max-rate-zero",
-        lambda: rd.resolve(arm(), path(), q0(), max_rate=0.0),
-        ValueError,
-        "max_rate",
-    ),
-    row(
-        "resolve-feedback-negative",
-        lambda: rd.resolve(arm(), path(), q0(), feedback_gain=-1.0),
-        ValueError,
-        "feedback_gain",
-    ),
-    row(
-        "resolve-feedback-nan",
-        lambda: rd.resolve(arm(), path(), q0(), feedback_gain=np.nan),
-        ValueError,
-        "feedback_gain",
-    ),
-    row(
-        "resolve-feedback-unstable",
-        lambda: rd.resolve(arm(), path(), q0(), feedback_gain=500.0),
-        ValueError,
-        "feedback_gain",
-    ),
-    row(
-        "resolve-limit-gain-nan",
-        lambda: rd.resolve(arm(), path(), q0(), limit_gain=np.nan),
-        ValueError,
-        "limit_gain",
-    ),
-    row(
-        "resolve-start-tolerance-zero",
-        lambda: rd.resolve(arm(), path(), q0(), start_tolerance=0.0),
-        ValueError,
-        "start_tolerance",
-    ),
-    row(
-        "resolve-joint-limits-str",
-        lambda: rd.resolve(arm(), path(), q0(), joint_limits="soft"),
-        ValueError,
-        "joint_limits",
-    ),
-    row(
-        "resolve-joint-limits-bool",
-        lambda: rd.resolve(arm(), path(), q0(), joint_limits=True),
-        TypeError,
-        "joint_limits",
+    *keyword_rows(
+        "resolve-{}",
+        lambda **kw: rd.resolve(arm(), path(), q0(), **kw),
+        [
+            ("null-space-nan", "null_space_gain", np.nan, ValueError, None),
+            ("null-space-str", "null_space_gain", "1", TypeError, None),
+            ("null-space-bool", "null_space_gain", True, TypeError, None),
+            ("null-space-array", "null_space_gain", [1.0, 2.0], TypeError, None),
+            ("damping-nan", "damping", np.nan, ValueError, None),
+            ("damping-negative", "damping", -0.1, ValueError, None),
+            ("max-rate-negative", "max_rate", -1.0, ValueError, None),
+            ("max-rate-zero", "max_rate", 0.0, ValueError, None),
+            ("feedback-negative", "feedback_gain", -1.0, ValueError, None),
+            ("feedback-nan", "feedback_gain", np.nan, ValueError, None),
+            ("feedback-unstable", "feedback_gain", 500.0, ValueError, None),
+            ("limit-gain-nan", "limit_gain", np.nan, ValueError, None),
+            ("start-tolerance-zero", "start_tolerance", 0.0, ValueError, None),
+            ("joint-limits-str", "joint_limits", "soft", ValueError, None),
+            ("joint-limits-bool", "joint_limits", True, TypeError, None),
+        ],
     ),
     row(
         "resolve-q0-outside-limits",

@@ -4,8 +4,7 @@ argument the message names."""
 import functools
 
 import numpy as np
-import sympy as sp
-from builders import planar, puma
+from builders import planar, puma, puma_offset_wrist
 from rows import keyword_rows, row
 
 import screwkit as sk
@@ -23,16 +22,6 @@ Z_AXIS = [0, 0, 1, 0, 0, 0]
 
 def planar_3r():
     return planar(1.0, 1.0, 1.0)
-
-
-# a 6R chain whose wrist axes do not meet: the PUMA with a4 = 0.1
-@functools.cache
-def skew_wrist():
-    return sk.Chain(
-        list(puma().links[:3])
-        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
-        + list(puma().links[4:])
-    )
 
 
 # a 6R chain whose joints 2 and 3 are not parallel
@@ -144,7 +133,7 @@ ROWS = [
     ),
     row(
         "wrist axes miss",
-        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(skew_wrist()),
+        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(puma_offset_wrist()),
         ValueError,
         "chain",
         match="chain must have a spherical wrist: "
