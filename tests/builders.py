@@ -9,33 +9,32 @@ import functools
 
 import numpy as np
 import pytest
+import sympy as sp
 
 import screwkit as sk
-from screwkit import parallel
 
 
-@functools.cache
-def puma():
-    """The PUMA 560 of the catalogue (Corke's standard DH model, SI units)."""
-    return sk.robots.puma560()
+def _catalogue(family, name, what):
+    """A cached builder of the catalogue's ``sk.<family>.<name>()`` (``what``, for its
+    docstring), looked up and built on first use."""
+
+    @functools.cache
+    def build():
+        return getattr(getattr(sk, family), name)()
+
+    build.__doc__ = f"{what} of the catalogue (``sk.{family}.{name}()``)."
+    return build
 
 
-@functools.cache
-def kawasaki():
-    """The Kawasaki CX210L of the catalogue."""
-    return sk.robots.kawasaki_cx210l()
-
-
-@functools.cache
-def stanford():
-    """The Stanford arm of the catalogue."""
-    return sk.robots.stanford()
-
-
-@functools.cache
-def ur5e():
-    """The UR5e of the catalogue."""
-    return sk.robots.ur5e()
+puma = _catalogue("robots", "puma560", "The PUMA 560 (Corke's standard DH model, SI)")
+kawasaki = _catalogue("robots", "kawasaki_cx210l", "The Kawasaki CX210L")
+stanford = _catalogue("robots", "stanford", "The Stanford arm")
+ur5e = _catalogue("robots", "ur5e", "The UR5e")
+stewart = _catalogue("parallel", "stewart_gough", "The Stewart-Gough platform")
+rpr = _catalogue("parallel", "planar_3rpr", "The planar 3-RPR")
+rrr = _catalogue("parallel", "planar_3rrr", "The planar 3-RRR")
+delta = _catalogue("parallel", "delta", "The Delta robot")
+tripteron = _catalogue("parallel", "tripteron", "The Tripteron")
 
 
 @functools.cache
@@ -45,33 +44,13 @@ def planar(*lengths):
 
 
 @functools.cache
-def stewart():
-    """The Stewart-Gough platform of the catalogue, default geometry."""
-    return parallel.stewart_gough()
-
-
-@functools.cache
-def rpr():
-    """The planar 3-RPR of the catalogue."""
-    return parallel.planar_3rpr()
-
-
-@functools.cache
-def rrr():
-    """The planar 3-RRR parallel manipulator of the catalogue."""
-    return parallel.planar_3rrr()
-
-
-@functools.cache
-def delta():
-    """The Delta robot of the catalogue."""
-    return parallel.delta()
-
-
-@functools.cache
-def tripteron():
-    """The Tripteron of the catalogue."""
-    return parallel.tripteron()
+def puma_offset_wrist():
+    """The PUMA 560 with a4 = 0.1 m: its wrist axes 4, 5, 6 do not meet."""
+    return sk.Chain(
+        list(puma().links[:3])
+        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
+        + list(puma().links[4:])
+    )
 
 
 def refusals(cases):

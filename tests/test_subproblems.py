@@ -221,6 +221,19 @@ def _newton_roots(F, n, grid, iterations=40):
     return _distinct(_wrapped(X[good]))
 
 
+def _nearest(solutions, angles):
+    """The largest wrapped angle gap from ``angles`` to the nearest of ``solutions``."""
+    return min(np.abs(_wrapped(np.array(s) - angles)).max() for s in solutions)
+
+
+def _assert_brute_force_agrees(F, n, grid, solutions):
+    """The brute-force search finds as many roots as ``solutions``, each one of them."""
+    brute = _newton_roots(F, n, grid)
+    assert len(brute) == len(solutions)
+    for root in brute:
+        assert _nearest(solutions, root) < 1e-6
+
+
 def _unit(v):
     return v / np.linalg.norm(v)
 
@@ -235,17 +248,14 @@ def _check_subproblem5(rng):
     for a, b, c in solutions:
         gap = p0 + _rot(k1, a) @ p1 - _rot(k2, b) @ (p2 + _rot(k3, c) @ p3)
         assert np.linalg.norm(gap) <= 1e-10
-    assert min(np.abs(_wrapped(np.array(s) - t)).max() for s in solutions) < 1e-8
+    assert _nearest(solutions, t) < 1e-8
 
     def F(X):
         R1, R2 = _rot_batch(k1, X[:, 0]), _rot_batch(k2, X[:, 1])
         R3 = _rot_batch(k3, X[:, 2])
         return p0 + R1 @ p1 - (R2 @ (p2 + R3 @ p3)[..., None])[..., 0]
 
-    brute = _newton_roots(F, 3, 14)
-    assert len(brute) == len(solutions)
-    for root in brute:
-        assert min(np.abs(_wrapped(np.array(s) - root)).max() for s in solutions) < 1e-6
+    _assert_brute_force_agrees(F, 3, 14, solutions)
     return len(solutions)
 
 
@@ -284,7 +294,7 @@ def _check_subproblem6(rng):
     assert 1 <= len(solutions) <= 4
     for a, b in solutions:
         assert np.abs(lhs(a, b) - d).max() <= 1e-10
-    assert min(np.abs(_wrapped(np.array(s) - t)).max() for s in solutions) < 1e-8
+    assert _nearest(solutions, t) < 1e-8
 
     def F(X):
         terms = [
@@ -293,10 +303,7 @@ def _check_subproblem6(rng):
         ]
         return np.stack([terms[0] + terms[1], terms[2] + terms[3]], -1) - d
 
-    brute = _newton_roots(F, 2, 40)
-    assert len(brute) == len(solutions)
-    for root in brute:
-        assert min(np.abs(_wrapped(np.array(s) - root)).max() for s in solutions) < 1e-6
+    _assert_brute_force_agrees(F, 2, 40, solutions)
     return len(solutions)
 
 

@@ -8,6 +8,9 @@ or ``exercises 3 to 6 and 19``.
 """
 
 import re
+from pathlib import Path
+
+import yaml
 
 #: A link to a chapter; group 1 is the chapter's name.
 DOC = re.compile(r"\{doc\}`(?:[^`<]*<)?\.\./notebooks/([a-z0-9_]+)>?`")
@@ -16,6 +19,13 @@ _RANGE = r"\d+(?:\s+to\s+\d+)?"
 NUMBERS = re.compile(rf"{_RANGE}(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+){_RANGE})*")
 _WEEK = re.compile(r"^### Week (\d+)\s*$", re.M)
 _NAMED = re.compile(r"\s*exercises?\s+(" + NUMBERS.pattern + ")")
+
+
+def toc_chapters(root):
+    """The chapters of ``root/_toc.yml`` (their names under notebooks/), in order."""
+    toc = yaml.safe_load((Path(root) / "_toc.yml").read_text(encoding="utf-8"))
+    files = [c["file"] for part in toc["parts"] for c in part.get("chapters", [])]
+    return [f.split("/", 1)[1] for f in files if f.startswith("notebooks/")]
 
 
 def numbers(text):

@@ -40,7 +40,7 @@ from mdit_py_plugins.dollarmath import dollarmath_plugin
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from course_plan import weeks  # noqa: E402
+from course_plan import toc_chapters, weeks  # noqa: E402
 from exercise_syntax import mark_scheme, read_exercises  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -51,10 +51,7 @@ os.environ.setdefault(
 
 
 def chapters():
-    with open(os.path.join(ROOT, "_toc.yml"), encoding="utf-8") as f:
-        toc = yaml.safe_load(f)
-    files = [c["file"] for part in toc["parts"] for c in part.get("chapters", [])]
-    return [f.split("/", 1)[1] for f in files if f.startswith("notebooks/")]
+    return toc_chapters(ROOT)
 
 
 def assessed():

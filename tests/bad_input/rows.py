@@ -50,3 +50,32 @@ def row(case_id, call, error, name, match=None, gap=None):
     Row
     """
     return Row(case_id, call, error, name, match, gap)
+
+
+def keyword_rows(id_format, call, cases):
+    """Rows that each pass ``call`` one bad keyword argument.
+
+    Parameters
+    ----------
+    id_format : str
+        The rows' ids, ``id_format.format(case)``, e.g. ``"numeric {}"``.
+    call : callable
+        Takes the keyword argument, e.g. ``lambda **kw: sk.f(puma(), **kw)``.
+    cases : list of tuple
+        ``(case, keyword, value, error, match)``; each row's message must name the
+        keyword.
+
+    Returns
+    -------
+    list of Row
+    """
+    return [
+        row(
+            id_format.format(case),
+            lambda keyword=keyword, value=value: call(**{keyword: value}),
+            error,
+            keyword,
+            match,
+        )
+        for case, keyword, value, error, match in cases
+    ]

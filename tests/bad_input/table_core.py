@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import sympy as sp  # noqa: E402
 from builders import planar, puma  # noqa: E402
-from rows import row  # noqa: E402
+from rows import keyword_rows, row  # noqa: E402
 
 import screwkit as sk  # noqa: E402
 from screwkit import plotting as pl  # noqa: E402
@@ -135,55 +135,33 @@ TRANSFORMS = [
     row("skew-sympy-short", lambda: sk.skew(sp.Matrix([1, 2])), ValueError, "v"),
     row("skew-sympy-I", lambda: sk.skew([1, 2, sp.I]), TypeError, "v"),
     row("skew-sympy-zoo", lambda: sk.skew([1, 2, sp.zoo]), ValueError, "v"),
-    row("rot_axis-zero", lambda: sk.rot_axis([0, 0, 0], 1.0), ValueError, "axis"),
-    row("rot_axis-tiny", lambda: sk.rot_axis([1e-13, 0, 0], 1.0), ValueError, "axis"),
-    row(
-        "rot_axis-sympy-zero",
-        lambda: sk.rot_axis(sp.Matrix([0, 0, 0]), theta),
-        ValueError,
-        "axis",
-    ),
-    row("rot_axis-str", lambda: sk.rot_axis("z", 1.0), TypeError, "axis"),
-    row("rot_axis-none", lambda: sk.rot_axis(None, 1.0), TypeError, "axis"),
-    row("rot_axis-short", lambda: sk.rot_axis([1, 0], 1.0), ValueError, "axis"),
-    row(
-        "rot_axis-batch", lambda: sk.rot_axis(np.ones((2, 3)), 1.0), ValueError, "axis"
-    ),
-    row("rot_axis-nan", lambda: sk.rot_axis([np.nan, 0, 1], 1.0), ValueError, "axis"),
-    row("rot_axis-complex", lambda: sk.rot_axis([0, 0, 1j], 1.0), TypeError, "axis"),
-    row("rot_axis-theta-str", lambda: sk.rot_axis([0, 0, 1], "x"), TypeError, "theta"),
-    row(
-        "rot_axis-theta-none", lambda: sk.rot_axis([0, 0, 1], None), TypeError, "theta"
-    ),
-    row(
-        "rot_axis-theta-bool", lambda: sk.rot_axis([0, 0, 1], True), TypeError, "theta"
-    ),
-    row(
-        "rot_axis-theta-complex", lambda: sk.rot_axis([0, 0, 1], 1j), TypeError, "theta"
-    ),
-    row(
-        "rot_axis-theta-nan",
-        lambda: sk.rot_axis([0, 0, 1], [0.0, np.nan]),
-        ValueError,
-        "theta",
-    ),
-    row(
-        "rot_axis-sympy-axis-batch-theta",
-        lambda: sk.rot_axis(sp.Matrix([0, 0, 1]), [0.1, 0.2]),
-        TypeError,
-        "theta",
-    ),
-    row(
-        "rot_axis-sympy-axis-str-theta",
-        lambda: sk.rot_axis(sp.Matrix([0, 0, 1]), "t"),
-        TypeError,
-        "theta",
-    ),
-    row(
-        "rot_axis-sympy-theta-nan",
-        lambda: sk.rot_axis([0, 0, 1], sp.nan),
-        ValueError,
-        "theta",
+    *(
+        row(f"rot_axis-{case}", lambda a=a, b=b: sk.rot_axis(a, b), error, name)
+        for case, a, b, error, name in [
+            ("zero", [0, 0, 0], 1.0, ValueError, "axis"),
+            ("tiny", [1e-13, 0, 0], 1.0, ValueError, "axis"),
+            ("sympy-zero", sp.Matrix([0, 0, 0]), theta, ValueError, "axis"),
+            ("str", "z", 1.0, TypeError, "axis"),
+            ("none", None, 1.0, TypeError, "axis"),
+            ("short", [1, 0], 1.0, ValueError, "axis"),
+            ("batch", np.ones((2, 3)), 1.0, ValueError, "axis"),
+            ("nan", [np.nan, 0, 1], 1.0, ValueError, "axis"),
+            ("complex", [0, 0, 1j], 1.0, TypeError, "axis"),
+            ("theta-str", [0, 0, 1], "x", TypeError, "theta"),
+            ("theta-none", [0, 0, 1], None, TypeError, "theta"),
+            ("theta-bool", [0, 0, 1], True, TypeError, "theta"),
+            ("theta-complex", [0, 0, 1], 1j, TypeError, "theta"),
+            ("theta-nan", [0, 0, 1], [0.0, np.nan], ValueError, "theta"),
+            (
+                "sympy-axis-batch-theta",
+                sp.Matrix([0, 0, 1]),
+                [0.1, 0.2],
+                TypeError,
+                "theta",
+            ),
+            ("sympy-axis-str-theta", sp.Matrix([0, 0, 1]), "t", TypeError, "theta"),
+            ("sympy-theta-nan", [0, 0, 1], sp.nan, ValueError, "theta"),
+        ]
     ),
     row("transl-none", lambda: sk.transl(None), TypeError, "p"),
     row("transl-two-args", lambda: sk.transl(1, 2), TypeError, "transl"),
@@ -371,74 +349,30 @@ TRANSFORMS = [
         ValueError,
         "r",
     ),
-    row("exp_twist-short", lambda: sk.exp_twist([0, 0, 1], 1.0), ValueError, "twist"),
-    row(
-        "exp_twist-sympy-short",
-        lambda: sk.exp_twist(sp.Matrix([0, 0, 1]), theta),
-        ValueError,
-        "twist",
-    ),
-    row("exp_twist-str", lambda: sk.exp_twist("abc", 1.0), TypeError, "twist"),
-    row("exp_twist-none", lambda: sk.exp_twist(None, 1.0), TypeError, "twist"),
-    row(
-        "exp_twist-nan",
-        lambda: sk.exp_twist([0, 0, 1, np.nan, 0, 0], 1.0),
-        ValueError,
-        "twist",
-    ),
-    row(
-        "exp_twist-complex",
-        lambda: sk.exp_twist(np.array([0, 0, 1, 0, 0, 1j]), 1.0),
-        TypeError,
-        "twist",
-    ),
-    row(
-        "exp_twist-batch-twist",
-        lambda: sk.exp_twist(np.zeros((2, 6)), 1.0),
-        ValueError,
-        "twist",
-    ),
-    row(
-        "exp_twist-theta-str",
-        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], "a"),
-        TypeError,
-        "theta",
-    ),
-    row(
-        "exp_twist-theta-none",
-        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], None),
-        TypeError,
-        "theta",
-    ),
-    row(
-        "exp_twist-theta-bool",
-        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], False),
-        TypeError,
-        "theta",
-    ),
-    row(
-        "exp_twist-theta-inf",
-        lambda: sk.exp_twist([0, 0, 1, 0, 0, 0], np.inf),
-        ValueError,
-        "theta",
-    ),
-    row(
-        "exp_twist-sympy-twist-batch-theta",
-        lambda: sk.exp_twist(sp.Matrix([0, 0, 1, 0, 0, 0]), [0.1, 0.2]),
-        TypeError,
-        "theta",
-    ),
-    row(
-        "exp_twist-overflow",
-        lambda: sk.exp_twist([0, 0, 1e300, 0, 0, 1e300], 1e10),
-        ValueError,
-        "theta",
-    ),
-    row(
-        "exp_twist-translation-overflow",
-        lambda: sk.exp_twist([0, 0, 0, 1e300, 0, 0], 1e10),
-        ValueError,
-        "theta",
+    *(
+        row(f"exp_twist-{case}", lambda a=a, b=b: sk.exp_twist(a, b), error, name)
+        for case, a, b, error, name in [
+            ("short", [0, 0, 1], 1.0, ValueError, "twist"),
+            ("sympy-short", sp.Matrix([0, 0, 1]), theta, ValueError, "twist"),
+            ("str", "abc", 1.0, TypeError, "twist"),
+            ("none", None, 1.0, TypeError, "twist"),
+            ("nan", [0, 0, 1, np.nan, 0, 0], 1.0, ValueError, "twist"),
+            ("complex", np.array([0, 0, 1, 0, 0, 1j]), 1.0, TypeError, "twist"),
+            ("batch-twist", np.zeros((2, 6)), 1.0, ValueError, "twist"),
+            ("theta-str", [0, 0, 1, 0, 0, 0], "a", TypeError, "theta"),
+            ("theta-none", [0, 0, 1, 0, 0, 0], None, TypeError, "theta"),
+            ("theta-bool", [0, 0, 1, 0, 0, 0], False, TypeError, "theta"),
+            ("theta-inf", [0, 0, 1, 0, 0, 0], np.inf, ValueError, "theta"),
+            (
+                "sympy-twist-batch-theta",
+                sp.Matrix([0, 0, 1, 0, 0, 0]),
+                [0.1, 0.2],
+                TypeError,
+                "theta",
+            ),
+            ("overflow", [0, 0, 1e300, 0, 0, 1e300], 1e10, ValueError, "theta"),
+            ("translation-overflow", [0, 0, 0, 1e300, 0, 0], 1e10, ValueError, "theta"),
+        ]
     ),
     row(
         "screw_motion-s-zero",
@@ -817,95 +751,26 @@ REDUNDANCY = [
         ValueError,
         "q0",
     ),
-    row(
-        "resolve-null-space-nan",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain=np.nan),
-        ValueError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-null-space-str",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain="1"),
-        TypeError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-null-space-bool",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain=True),
-        TypeError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-null-space-array",
-        lambda: rd.resolve(arm(), path(), q0(), null_space_gain=[1.0, 2.0]),
-        TypeError,
-        "null_space_gain",
-    ),
-    row(
-        "resolve-damping-nan",
-        lambda: rd.resolve(arm(), path(), q0(), damping=np.nan),
-        ValueError,
-        "damping",
-    ),
-    row(
-        "resolve-damping-negative",
-        lambda: rd.resolve(arm(), path(), q0(), damping=-0.1),
-        ValueError,
-        "damping",
-    ),
-    row(
-        "resolve-max-rate-negative",
-        lambda: rd.resolve(arm(), path(), q0(), max_rate=-1.0),
-        ValueError,
-        "max_rate",
-    ),
-    row(
-        "resolve-max-rate-zero",
-        lambda: rd.resolve(arm(), path(), q0(), max_rate=0.0),
-        ValueError,
-        "max_rate",
-    ),
-    row(
-        "resolve-feedback-negative",
-        lambda: rd.resolve(arm(), path(), q0(), feedback_gain=-1.0),
-        ValueError,
-        "feedback_gain",
-    ),
-    row(
-        "resolve-feedback-nan",
-        lambda: rd.resolve(arm(), path(), q0(), feedback_gain=np.nan),
-        ValueError,
-        "feedback_gain",
-    ),
-    row(
-        "resolve-feedback-unstable",
-        lambda: rd.resolve(arm(), path(), q0(), feedback_gain=500.0),
-        ValueError,
-        "feedback_gain",
-    ),
-    row(
-        "resolve-limit-gain-nan",
-        lambda: rd.resolve(arm(), path(), q0(), limit_gain=np.nan),
-        ValueError,
-        "limit_gain",
-    ),
-    row(
-        "resolve-start-tolerance-zero",
-        lambda: rd.resolve(arm(), path(), q0(), start_tolerance=0.0),
-        ValueError,
-        "start_tolerance",
-    ),
-    row(
-        "resolve-joint-limits-str",
-        lambda: rd.resolve(arm(), path(), q0(), joint_limits="soft"),
-        ValueError,
-        "joint_limits",
-    ),
-    row(
-        "resolve-joint-limits-bool",
-        lambda: rd.resolve(arm(), path(), q0(), joint_limits=True),
-        TypeError,
-        "joint_limits",
+    *keyword_rows(
+        "resolve-{}",
+        lambda **kw: rd.resolve(arm(), path(), q0(), **kw),
+        [
+            ("null-space-nan", "null_space_gain", np.nan, ValueError, None),
+            ("null-space-str", "null_space_gain", "1", TypeError, None),
+            ("null-space-bool", "null_space_gain", True, TypeError, None),
+            ("null-space-array", "null_space_gain", [1.0, 2.0], TypeError, None),
+            ("damping-nan", "damping", np.nan, ValueError, None),
+            ("damping-negative", "damping", -0.1, ValueError, None),
+            ("max-rate-negative", "max_rate", -1.0, ValueError, None),
+            ("max-rate-zero", "max_rate", 0.0, ValueError, None),
+            ("feedback-negative", "feedback_gain", -1.0, ValueError, None),
+            ("feedback-nan", "feedback_gain", np.nan, ValueError, None),
+            ("feedback-unstable", "feedback_gain", 500.0, ValueError, None),
+            ("limit-gain-nan", "limit_gain", np.nan, ValueError, None),
+            ("start-tolerance-zero", "start_tolerance", 0.0, ValueError, None),
+            ("joint-limits-str", "joint_limits", "soft", ValueError, None),
+            ("joint-limits-bool", "joint_limits", True, TypeError, None),
+        ],
     ),
     row(
         "resolve-q0-outside-limits",

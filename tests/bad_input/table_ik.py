@@ -4,9 +4,8 @@ argument the message names."""
 import functools
 
 import numpy as np
-import sympy as sp
-from builders import planar, puma
-from rows import row
+from builders import planar, puma, puma_offset_wrist
+from rows import keyword_rows, row
 
 import screwkit as sk
 from screwkit import ik
@@ -23,16 +22,6 @@ Z_AXIS = [0, 0, 1, 0, 0, 0]
 
 def planar_3r():
     return planar(1.0, 1.0, 1.0)
-
-
-# a 6R chain whose wrist axes do not meet: the PUMA with a4 = 0.1
-@functools.cache
-def skew_wrist():
-    return sk.Chain(
-        list(puma().links[:3])
-        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
-        + list(puma().links[4:])
-    )
 
 
 # a 6R chain whose joints 2 and 3 are not parallel
@@ -100,26 +89,33 @@ ROWS = [
         "config",
         match="config must be one of lun",
     ),
-    row(
-        "near wrong length",
-        lambda: ik.puma560_ik(t0(), near=[0, 0]),
-        ValueError,
-        "near",
-        match="near must be a joint vector of 6 entries",
-    ),
-    row(
-        "within_limits not bool",
-        lambda: ik.puma560_ik(t0(), within_limits="yes"),
-        TypeError,
-        "within_limits",
-        match="within_limits must be True or False",
-    ),
-    row(
-        "robot not a chain",
-        lambda: ik.puma560_ik(t0(), robot="puma"),
-        TypeError,
-        "robot",
-        match=r"robot must be a screwkit Chain .*got 'puma'",
+    # puma560_ik's options
+    *keyword_rows(
+        "{}",
+        lambda **kw: ik.puma560_ik(t0(), **kw),
+        [
+            (
+                "near wrong length",
+                "near",
+                [0, 0],
+                ValueError,
+                "near must be a joint vector of 6 entries",
+            ),
+            (
+                "within_limits not bool",
+                "within_limits",
+                "yes",
+                TypeError,
+                "within_limits must be True or False",
+            ),
+            (
+                "robot not a chain",
+                "robot",
+                "puma",
+                TypeError,
+                r"robot must be a screwkit Chain .*got 'puma'",
+            ),
+        ],
     ),
     row(
         "chain of 3 joints",
@@ -137,7 +133,7 @@ ROWS = [
     ),
     row(
         "wrist axes miss",
-        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(skew_wrist()),
+        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(puma_offset_wrist()),
         ValueError,
         "chain",
         match="chain must have a spherical wrist: "
@@ -185,33 +181,28 @@ ROWS = [
         "T",
         match="T must be one pose",
     ),
-    row(
-        "numeric frame",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), frame="world"),
-        ValueError,
-        "frame",
-        match="frame must be 'body' or 'space'",
-    ),
-    row(
-        "numeric tol",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), tol=-1),
-        ValueError,
-        "tol",
-        match="tol must be a positive number",
-    ),
-    row(
-        "numeric iterations",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), max_iterations=0),
-        ValueError,
-        "max_iterations",
-        match="max_iterations must be a positive integer",
-    ),
-    row(
-        "numeric damping",
-        lambda: ik.numeric_ik(puma(), t0(), np.zeros(6), damping=-0.1),
-        ValueError,
-        "damping",
-        match="damping must be None or a number >= 0",
+    # numeric_ik's options, each refused with what it must be
+    *keyword_rows(
+        "numeric {}",
+        lambda **kw: ik.numeric_ik(puma(), t0(), np.zeros(6), **kw),
+        [
+            ("frame", "frame", "world", ValueError, "frame must be 'body' or 'space'"),
+            ("tol", "tol", -1, ValueError, "tol must be a positive number"),
+            (
+                "iterations",
+                "max_iterations",
+                0,
+                ValueError,
+                "max_iterations must be a positive integer",
+            ),
+            (
+                "damping",
+                "damping",
+                -0.1,
+                ValueError,
+                "damping must be None or a number >= 0",
+            ),
+        ],
     ),
     row(
         "subproblem twist shape",

@@ -4,8 +4,7 @@ the error type and the argument the message names."""
 import functools
 
 import numpy as np
-import sympy as sp
-from builders import planar, puma
+from builders import planar, puma, puma_offset_wrist
 from rows import row
 
 import screwkit as sk
@@ -18,16 +17,6 @@ Z = [0.0, 0.0, 1.0]
 @functools.cache
 def iiwa():
     return sk.robots.iiwa14()
-
-
-# the PUMA with a4 = 0.1 m: wrist axes 4, 5, 6 do not meet, no decomposition
-@functools.cache
-def offset_wrist():
-    return sk.Chain(
-        list(puma().links[:3])
-        + [sk.Link.revolute(d=0.4318, a=0.1, alpha=sp.pi / 2)]
-        + list(puma().links[4:])
-    )
 
 
 @functools.cache
@@ -147,7 +136,7 @@ ROWS = [
     ),
     row(
         "DecomposedArm of a general 6R",
-        lambda: decomposed.DecomposedArm.from_chain(offset_wrist()),
+        lambda: decomposed.DecomposedArm.from_chain(puma_offset_wrist()),
         ValueError,
         "chain",
         match="chain must have three consecutive axes meeting",

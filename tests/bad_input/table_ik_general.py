@@ -36,85 +36,67 @@ def general_arm():
     )
 
 
+#: A 4 x 4 matrix that is no rigid transform (its rotation block scales y by 2).
+NOT_RIGID = np.diag([1.0, 2.0, 1.0, 1.0])
+#: What general_6r_ik says of a T of the wrong shape.
+SHAPE = r"T must have shape \(4, 4\) or \(N, 4, 4\)"
+
+#: general_6r_ik(chain(), t0()) with a bad chain: (case, chain, error, match).
+BAD_CHAIN = [
+    (
+        "not-a-chain",
+        lambda: "puma",
+        TypeError,
+        "chain must be a screwkit Chain",
+    ),
+    (
+        "3R",
+        lambda: planar(1.0, 1.0, 1.0),
+        ValueError,
+        r"chain must have 6 revolute joints \(6R\), got 3 joints RRR",
+    ),
+    ("prismatic", prismatic, ValueError, "got 6 joints PRRRRR"),
+]
+#: general_6r_ik(puma(), pose()) with a bad pose: (case, pose, error, match).
+BAD_POSE = [
+    ("not-rigid", lambda: NOT_RIGID, ValueError, r"T must .*rotation"),
+    ("nan", lambda: np.full((4, 4), np.nan), ValueError, "T must be finite"),
+    ("string", lambda: "pose", TypeError, "T must be"),
+    (
+        "batch-with-a-non-rigid-pose",
+        lambda: np.stack([t0(), NOT_RIGID]),
+        ValueError,
+        "rotation block of T must be a rotation matrix",
+    ),
+    ("wrong-shape", lambda: np.eye(3), ValueError, SHAPE),
+    ("batch-of-batches", lambda: np.zeros((2, 3, 4, 4)), ValueError, SHAPE),
+    (
+        "10^7-poses-broadcast",
+        lambda: np.broadcast_to(t0(), (10**7, 4, 4)),
+        ValueError,
+        r"T must be a batch of at most 100,000 poses .* got 10,000,000",
+    ),
+    (
+        "list-of-10^6-poses",
+        lambda: [np.eye(4)] * 10**6,
+        ValueError,
+        r"T must be a batch of at most 100,000 poses",
+    ),
+]
+
 ROWS = [
-    row(
-        "general_6r_ik-chain-not-a-chain",
-        lambda: ik.general_6r_ik("puma", t0()),
-        TypeError,
-        "chain",
-        match="chain must be a screwkit Chain",
-    ),
-    row(
-        "general_6r_ik-chain-3R",
-        lambda: ik.general_6r_ik(planar(1.0, 1.0, 1.0), t0()),
-        ValueError,
-        "chain",
-        match=r"chain must have 6 revolute joints \(6R\), got 3 joints RRR",
-    ),
-    row(
-        "general_6r_ik-chain-prismatic",
-        lambda: ik.general_6r_ik(prismatic(), t0()),
-        ValueError,
-        "chain",
-        match="got 6 joints PRRRRR",
-    ),
-    row(
-        "general_6r_ik-T-not-rigid",
-        lambda: ik.general_6r_ik(puma(), np.diag([1.0, 2.0, 1.0, 1.0])),
-        ValueError,
-        "T",
-        match=r"T must .*rotation",
-    ),
-    row(
-        "general_6r_ik-T-nan",
-        lambda: ik.general_6r_ik(puma(), np.full((4, 4), np.nan)),
-        ValueError,
-        "T",
-        match="T must be finite",
-    ),
-    row(
-        "general_6r_ik-T-string",
-        lambda: ik.general_6r_ik(puma(), "pose"),
-        TypeError,
-        "T",
-        match="T must be",
-    ),
-    row(
-        "general_6r_ik-T-batch-with-a-non-rigid-pose",
-        lambda: ik.general_6r_ik(
-            puma(), np.stack([t0(), np.diag([1.0, 2.0, 1.0, 1.0])])
-        ),
-        ValueError,
-        "T",
-        match="rotation block of T must be a rotation matrix",
-    ),
-    row(
-        "general_6r_ik-T-wrong-shape",
-        lambda: ik.general_6r_ik(puma(), np.eye(3)),
-        ValueError,
-        "T",
-        match=r"T must have shape \(4, 4\) or \(N, 4, 4\)",
-    ),
-    row(
-        "general_6r_ik-T-batch-of-batches",
-        lambda: ik.general_6r_ik(puma(), np.zeros((2, 3, 4, 4))),
-        ValueError,
-        "T",
-        match=r"T must have shape \(4, 4\) or \(N, 4, 4\)",
-    ),
-    row(
-        "general_6r_ik-T-10^7-poses-broadcast",
-        lambda: ik.general_6r_ik(puma(), np.broadcast_to(t0(), (10**7, 4, 4))),
-        ValueError,
-        "T",
-        match=r"T must be a batch of at most 100,000 poses .* got 10,000,000",
-    ),
-    row(
-        "general_6r_ik-T-list-of-10^6-poses",
-        lambda: ik.general_6r_ik(puma(), [np.eye(4)] * 10**6),
-        ValueError,
-        "T",
-        match=r"T must be a batch of at most 100,000 poses",
+    *(
+        row(
+            f"general_6r_ik-{case}",
+            lambda chain=chain, pose=pose: ik.general_6r_ik(chain(), pose()),
+            error,
+            name,
+            match=match,
+        )
+        for case, chain, pose, error, name, match in [
+            *((f"chain-{c}", ch, t0, e, "chain", m) for c, ch, e, m in BAD_CHAIN),
+            *((f"T-{c}", puma, pose, e, "T", m) for c, pose, e, m in BAD_POSE),
+        ]
     ),
     row(
         "analytic_ik-general-arm-near-wrong-length",

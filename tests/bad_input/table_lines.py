@@ -26,44 +26,19 @@ def cylindroid():
 
 
 ROWS = [
-    row(
-        "Line-zero-direction",
-        lambda: ln.Line([0, 0, 0, 1, 0, 0]),
-        ValueError,
-        "plucker",
-        match="non-zero direction",
+    *(
+        row(f"Line-{case}", lambda p=p: ln.Line(p), error, "plucker", match=match)
+        for case, p, error, match in [
+            ("zero-direction", [0, 0, 0, 1, 0, 0], ValueError, "non-zero direction"),
+            ("klein", [0, 0, 1, 0, 0, 1], ValueError, "Klein quadric"),
+            ("klein-float", [0, 0, 1.0, 0, 0, 0.5], ValueError, "Klein quadric"),
+            ("nan", [0, 0, 1.0, np.nan, 0, 0], ValueError, "finite"),
+            ("string", "x axis", TypeError, None),
+            ("strings", ["0", 0, 1, 0, 0, 0], TypeError, None),
+            ("symbol", [0, 0, 1, a, 0, 0], ValueError, "no value"),
+            ("shape", [0, 0, 1], ValueError, "shape"),
+        ]
     ),
-    row(
-        "Line-klein",
-        lambda: ln.Line([0, 0, 1, 0, 0, 1]),
-        ValueError,
-        "plucker",
-        match="Klein quadric",
-    ),
-    row(
-        "Line-klein-float",
-        lambda: ln.Line([0, 0, 1.0, 0, 0, 0.5]),
-        ValueError,
-        "plucker",
-        match="Klein quadric",
-    ),
-    row(
-        "Line-nan",
-        lambda: ln.Line([0, 0, 1.0, np.nan, 0, 0]),
-        ValueError,
-        "plucker",
-        match="finite",
-    ),
-    row("Line-string", lambda: ln.Line("x axis"), TypeError, "plucker"),
-    row("Line-strings", lambda: ln.Line(["0", 0, 1, 0, 0, 0]), TypeError, "plucker"),
-    row(
-        "Line-symbol",
-        lambda: ln.Line([0, 0, 1, a, 0, 0]),
-        ValueError,
-        "plucker",
-        match="no value",
-    ),
-    row("Line-shape", lambda: ln.Line([0, 0, 1]), ValueError, "plucker", match="shape"),
     row(
         "through-same-point",
         lambda: ln.Line.through([1, 2, 3], [1, 2, 3]),
@@ -93,25 +68,19 @@ ROWS = [
         "p",
         match="no value",
     ),
-    row(
-        "from_planes-parallel",
-        lambda: ln.Line.from_planes([0, 0, 1], 0, [0, 0, 2], 1),
-        ValueError,
-        "n2",
-        match="parallel",
-    ),
-    row(
-        "from_planes-zero",
-        lambda: ln.Line.from_planes([0, 0, 0], 0, [0, 0, 2], 1),
-        ValueError,
-        "n1",
-        match="non-zero",
-    ),
-    row(
-        "from_planes-string",
-        lambda: ln.Line.from_planes([0, 0, 1], "1", [1, 0, 0], 1),
-        TypeError,
-        "d1",
+    *(
+        row(
+            f"from_planes-{case}",
+            lambda args=args: ln.Line.from_planes(*args),
+            error,
+            name,
+            match=match,
+        )
+        for case, args, error, name, match in [
+            ("parallel", ([0, 0, 1], 0, [0, 0, 2], 1), ValueError, "n2", "parallel"),
+            ("zero", ([0, 0, 0], 0, [0, 0, 2], 1), ValueError, "n1", "non-zero"),
+            ("string", ([0, 0, 1], "1", [1, 0, 0], 1), TypeError, "d1", None),
+        ]
     ),
     row("screw-string", lambda: x_axis().screw("0"), TypeError, "h"),
     row("screw-kind", lambda: x_axis().screw(0, kind=str), TypeError, "kind"),
@@ -147,27 +116,20 @@ ROWS = [
         match="Klein",
     ),
     row("intersection-none", lambda: ln.intersection(x_axis(), None), TypeError, "b"),
-    row(
-        "central_axis-zero",
-        lambda: ln.central_axis([0, 0, 0, 0, 0, 0]),
-        ValueError,
-        "wrench",
-        match="zero",
-    ),
-    row("central_axis-string", lambda: ln.central_axis("wrench"), TypeError, "wrench"),
-    row(
-        "central_axis-nan",
-        lambda: ln.central_axis([1.0, 0, 0, 0, np.nan, 0]),
-        ValueError,
-        "wrench",
-        match="finite",
-    ),
-    row(
-        "central_axis-symbol",
-        lambda: ln.central_axis([a, 0, 0, 0, 0, 0]),
-        ValueError,
-        "wrench",
-        match="no value",
+    *(
+        row(
+            f"central_axis-{case}",
+            lambda w=w: ln.central_axis(w),
+            error,
+            "wrench",
+            match=match,
+        )
+        for case, w, error, match in [
+            ("zero", [0, 0, 0, 0, 0, 0], ValueError, "zero"),
+            ("string", "wrench", TypeError, None),
+            ("nan", [1.0, 0, 0, 0, np.nan, 0], ValueError, "finite"),
+            ("symbol", [a, 0, 0, 0, 0, 0], ValueError, "no value"),
+        ]
     ),
     row("dependency-empty", lambda: ln.dependency([]), ValueError, "lines"),
     row("dependency-string", lambda: ln.dependency("legs"), TypeError, "lines"),

@@ -179,26 +179,19 @@ SYSTEM = [
         "kind",
         match="kind must be Twist, Wrench or Screw",
     ),
-    row(
-        "ScrewSystem-8",
-        lambda: ScrewSystem([REVOLUTE], tol=0),
-        ValueError,
-        "tol",
-        match="tol must be a positive number below 1",
-    ),
-    row(
-        "ScrewSystem-9",
-        lambda: ScrewSystem([REVOLUTE], tol=2.0),
-        ValueError,
-        "tol",
-        match="tol must be a positive number below 1",
-    ),
-    row(
-        "ScrewSystem-10",
-        lambda: ScrewSystem([REVOLUTE], tol="small"),
-        TypeError,
-        "tol",
-        match="tol must be a positive number",
+    *(
+        row(
+            f"ScrewSystem-{n}",
+            lambda tol=tol: ScrewSystem([REVOLUTE], tol=tol),
+            error,
+            "tol",
+            match=match,
+        )
+        for n, tol, error, match in [
+            (8, 0, ValueError, "tol must be a positive number below 1"),
+            (9, 2.0, ValueError, "tol must be a positive number below 1"),
+            (10, "small", TypeError, "tol must be a positive number"),
+        ]
     ),
     row(
         "ScrewSystem-11",
@@ -227,6 +220,22 @@ SYSTEM = [
         TypeError,
         "other",
         match=r"other must be a ScrewSystem \(the intersection is of two systems\)",
+    ),
+]
+
+#: Bad values of mobility's ``at`` for planar_limbs(): (row number, at, error, match).
+BAD_AT = [
+    (13, [(theta, 0)], TypeError, "at must be a dict"),
+    (14, {"theta_11": 0}, TypeError, "at must be a dict"),
+    (15, {sp.Symbol("phi"): 0}, ValueError, r"at gives values for \['phi'\]"),
+    (16, {sp.Symbol("theta_11", real=True): 0}, ValueError, "at gives values for"),
+    *(
+        (n, {theta: v}, ValueError, r"at\[theta_11\] must be finite")
+        for n, v in [(17, float("nan")), (18, np.inf), (19, sp.nan), (20, sp.oo)]
+    ),
+    *(
+        (n, {theta: v}, TypeError, r"at\[theta_11\] must be a number")
+        for n, v in [(21, "0.3"), (22, None), (23, True), (24, [0.1, 0.2])]
     ),
 ]
 
@@ -315,89 +324,15 @@ MOBILITY = [
         "tol",
         match="tol must be a positive number below 1",
     ),
-    row(
-        "mobility-13",
-        lambda: sk.mobility(planar_limbs(), at=[(theta, 0)]),
-        TypeError,
-        "at",
-        match="at must be a dict",
-    ),
-    row(
-        "mobility-14",
-        lambda: sk.mobility(planar_limbs(), at={"theta_11": 0}),
-        TypeError,
-        "at",
-        match="at must be a dict",
-    ),
-    row(
-        "mobility-15",
-        lambda: sk.mobility(planar_limbs(), at={sp.Symbol("phi"): 0}),
-        ValueError,
-        "at",
-        match=r"at gives values for \['phi'\]",
-    ),
-    row(
-        "mobility-16",
-        lambda: sk.mobility(planar_limbs(), at={sp.Symbol("theta_11", real=True): 0}),
-        ValueError,
-        "at",
-        match="at gives values for",
-    ),
-    row(
-        "mobility-17",
-        lambda: sk.mobility(planar_limbs(), at={theta: float("nan")}),
-        ValueError,
-        "at",
-        match=r"at\[theta_11\] must be finite",
-    ),
-    row(
-        "mobility-18",
-        lambda: sk.mobility(planar_limbs(), at={theta: np.inf}),
-        ValueError,
-        "at",
-        match=r"at\[theta_11\] must be finite",
-    ),
-    row(
-        "mobility-19",
-        lambda: sk.mobility(planar_limbs(), at={theta: sp.nan}),
-        ValueError,
-        "at",
-        match=r"at\[theta_11\] must be finite",
-    ),
-    row(
-        "mobility-20",
-        lambda: sk.mobility(planar_limbs(), at={theta: sp.oo}),
-        ValueError,
-        "at",
-        match=r"at\[theta_11\] must be finite",
-    ),
-    row(
-        "mobility-21",
-        lambda: sk.mobility(planar_limbs(), at={theta: "0.3"}),
-        TypeError,
-        "at",
-        match=r"at\[theta_11\] must be a number",
-    ),
-    row(
-        "mobility-22",
-        lambda: sk.mobility(planar_limbs(), at={theta: None}),
-        TypeError,
-        "at",
-        match=r"at\[theta_11\] must be a number",
-    ),
-    row(
-        "mobility-23",
-        lambda: sk.mobility(planar_limbs(), at={theta: True}),
-        TypeError,
-        "at",
-        match=r"at\[theta_11\] must be a number",
-    ),
-    row(
-        "mobility-24",
-        lambda: sk.mobility(planar_limbs(), at={theta: [0.1, 0.2]}),
-        TypeError,
-        "at",
-        match=r"at\[theta_11\] must be a number",
+    *(
+        row(
+            f"mobility-{n}",
+            lambda at=at: sk.mobility(planar_limbs(), at=at),
+            error,
+            "at",
+            match=match,
+        )
+        for n, at, error, match in BAD_AT
     ),
     row(
         "grubler_kutzbach-1",

@@ -5,18 +5,16 @@ exercise of the course is assigned in some week's Exercises line."""
 from pathlib import Path
 
 import pytest
-import yaml
-from course_plan import numbers, weeks
+from course_plan import numbers, toc_chapters, weeks
 from exercise_syntax import read_exercises
 
 ROOT = Path(__file__).resolve().parents[2]
 PLAN = (ROOT / "book" / "course_plan.md").read_text(encoding="utf-8")
 
 
-def toc_chapters():
-    toc = yaml.safe_load((ROOT / "_toc.yml").read_text(encoding="utf-8"))
-    files = [c["file"] for part in toc["parts"] for c in part.get("chapters", [])]
-    return [f.split("/", 1)[1] for f in files if f.startswith("notebooks/")]
+def book_chapters():
+    """The chapter notebooks of _toc.yml, in order."""
+    return toc_chapters(ROOT)
 
 
 def exercise_numbers(chapter):
@@ -54,7 +52,7 @@ def listed_problems(plan, chapters, numbers_of):
 
 
 def test_the_plan_matches_the_chapters():
-    chapters = toc_chapters()
+    chapters = book_chapters()
     known = {chapter: exercise_numbers(chapter) for chapter in chapters}
     assert listed_problems(PLAN, chapters, known.__getitem__) == []
 

@@ -24,7 +24,7 @@ import re
 from pathlib import Path
 
 import pytest
-import yaml
+from course_plan import toc_chapters
 from exercise_syntax import old_syntax
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -39,9 +39,7 @@ GENERIC |= set("puma arm robot fk theta rows axis".split())
 
 def chapters():
     """The chapter notebooks of _toc.yml, in order."""
-    toc = yaml.safe_load((ROOT / "_toc.yml").read_text(encoding="utf-8"))
-    files = [c["file"] for part in toc["parts"] for c in part.get("chapters", [])]
-    return [f.split("/", 1)[1] for f in files if f.startswith("notebooks/")]
+    return toc_chapters(ROOT)
 
 
 def source(chapter):

@@ -19,7 +19,7 @@ import warnings
 from pathlib import Path
 
 import pytest
-import yaml
+from course_plan import toc_chapters
 from exercise_syntax import exam_parts, mark_scheme, read_exercises
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -58,10 +58,9 @@ ARM = re.compile(r"\b(arm|robot|gantry|manipulator)s?\b", re.I)
 _IMAGE = re.compile(r"^(:{3,}|`{3,})\{(figure|image|glue:figure)\}|!\[[^\]]*\]\(", re.M)
 
 
-def toc_chapters():
-    toc = yaml.safe_load((ROOT / "_toc.yml").read_text(encoding="utf-8"))
-    files = [c["file"] for part in toc["parts"] for c in part.get("chapters", [])]
-    return [f.split("/", 1)[1] for f in files if f.startswith("notebooks/")]
+def book_chapters():
+    """The chapter notebooks of _toc.yml, in order."""
+    return toc_chapters(ROOT)
 
 
 def exercises_of(chapter):
@@ -174,7 +173,7 @@ def frame_assignment(exercise):
     return {"by hand", "figure"} <= kinds and bool(asks)
 
 
-@pytest.mark.parametrize("chapter", toc_chapters())
+@pytest.mark.parametrize("chapter", book_chapters())
 def test_every_exercise_is_tagged_and_true_to_its_tag(chapter):
     found = exercises_of(chapter)
     problems = [p for e in found for p in exercise_problems(e, chapter)]
@@ -182,7 +181,7 @@ def test_every_exercise_is_tagged_and_true_to_its_tag(chapter):
 
 
 def test_the_complete_chapters_meet_the_targets_and_the_others_are_reported():
-    chapters = toc_chapters()
+    chapters = book_chapters()
     assert set(BANK_COMPLETE) <= set(chapters)
     for chapter in chapters:
         count = counts(exercises_of(chapter))
@@ -213,7 +212,7 @@ def solution_draws(exercise):
 def test_frame_assignment_exercises_across_the_bank():
     found = [
         (chapter, e["number"], solution_draws(e))
-        for chapter in toc_chapters()
+        for chapter in book_chapters()
         for e in exercises_of(chapter)
         if frame_assignment(e)
     ]

@@ -67,28 +67,30 @@ def _():
     return _count(joints, order=3)
 
 
+def _legs(n, base, inner, outer, freedoms):
+    """The joints of ``n`` legs, each ``base -J1- inner_i -J2- outer_i -J3- platform``
+    with the joints' ``freedoms`` (three numbers)."""
+    f1, f2, f3 = freedoms
+    joints = []
+    for i in range(n):
+        joints += [
+            (base, f"{inner}{i}", f1),
+            (f"{inner}{i}", f"{outer}{i}", f2),
+            (f"{outer}{i}", "platform", f3),
+        ]
+    return joints
+
+
 @reference("configuration_space", 4)
 def _():
-    joints = []
-    for i in range(3):  # ground -R- tube -P- rod -R- platform
-        joints += [
-            ("ground", f"tube{i}", 1),
-            (f"tube{i}", f"rod{i}", 1),
-            (f"rod{i}", "platform", 1),
-        ]
-    return _count(joints, order=3)
+    # three legs ground -R- tube -P- rod -R- platform
+    return _count(_legs(3, "ground", "tube", "rod", (1, 1, 1)), order=3)
 
 
 @reference("configuration_space", 5)
 def _():
-    joints = []
-    for i in range(6):  # base -S- cylinder -P- piston -S- platform
-        joints += [
-            ("base", f"cyl{i}", 3),
-            (f"cyl{i}", f"pis{i}", 1),
-            (f"pis{i}", "platform", 3),
-        ]
-    return _count(joints, order=6)
+    # six legs base -S- cylinder -P- piston -S- platform
+    return _count(_legs(6, "base", "cyl", "pis", (3, 1, 3)), order=6)
 
 
 @reference("configuration_space", 6)
