@@ -18,6 +18,8 @@ Fails unless:
     `m._x` for a module m imported from screwkit (`parallel._parallel_search`);
   - no chapter's source contains a symbol that book/notation.md's section "One symbol
     per concept" lists as not used in this course (its tables' last column);
+  - no chapter calls a library function for a result before it derives it once without
+    that function (the table and its allow-list are in .ci/derive_first.py);
 and, with --built DIR (the HTML book, e.g. _build/html), unless:
   - no page contains the text "NBVAL";
   - no code line of a code cell (its <pre> block) is longer than 88 characters.
@@ -35,6 +37,9 @@ from html.parser import HTMLParser
 
 import jupytext
 import nbformat
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import derive_first  # noqa: E402  (a module of this folder)
 
 MAX_LINE = 88
 INSTALL_TEST = 'importlib.util.find_spec("screwkit") is None'
@@ -274,6 +279,7 @@ def check_notebooks(folder):
         problems += _code_lines(name + ".md")
         problems += _installs_screwkit(name + ".md")
         problems += _private_uses(name + ".md")
+    problems += derive_first.check_chapters(folder)
     return problems
 
 

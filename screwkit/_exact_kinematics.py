@@ -74,6 +74,17 @@ def link_transforms(chain, q=None):
     -------
     list of sympy.Matrix (4, 4)
         A_1, ..., A_n.
+
+    Examples
+    --------
+    Link 2 of a planar 2R arm with unit links: Rz(q2) then 1 m along the new x.
+
+    >>> import screwkit as sk
+    >>> A1, A2 = link_transforms(sk.robots.planar([1.0, 1.0]))
+    >>> A2[:2, :]
+    Matrix([
+    [cos(q2), -sin(q2), 0, 1.0*cos(q2)],
+    [sin(q2),  cos(q2), 0, 1.0*sin(q2)]])
     """
     chain._require_dh("link_transforms")
     q = chain._exact_q(q)
@@ -90,6 +101,12 @@ def length_symbols(chain):
     -------
     dict
         {symbol: value (m)}.
+
+    Examples
+    --------
+    >>> import screwkit as sk
+    >>> length_symbols(sk.robots.planar([1.0, 0.5]))
+    {a1: 1.0, a2: 0.5}
     """
     chain._require_dh("length_symbols")
     table = {}
@@ -149,6 +166,17 @@ def fk_symbolic(chain, simplify=True, symbolic_lengths=False, upto=None):
     -------
     sympy.Matrix (4, 4)
         The pose.
+
+    Examples
+    --------
+    The tip of a planar 2R arm: (a1 c1 + a2 c12, a1 s1 + a2 s12).
+
+    >>> import screwkit as sk
+    >>> T = fk_symbolic(sk.robots.planar([1.0, 1.0]), symbolic_lengths=True)
+    >>> T[:2, 3]
+    Matrix([
+    [a1*cos(q1) + a2*cos(q1 + q2)],
+    [a1*sin(q1) + a2*sin(q1 + q2)]])
     """
     simplify = check_flag(simplify, "simplify")
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -198,6 +226,16 @@ def frames_symbolic(chain, symbolic_lengths=False):
     -------
     list of sympy.Matrix (4, 4)
         n + 1 frames, the base first.
+
+    Examples
+    --------
+    The origins of a planar 2R arm's frames: the base, the elbow, the tip.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> [F[:2, 3].T for F in frames_symbolic(arm, symbolic_lengths=True)]
+    [Matrix([[0, 0]]), Matrix([[a1*cos(q1), a1*sin(q1)]]),
+     Matrix([[a1*cos(q1) + a2*cos(q1 + q2), a1*sin(q1) + a2*sin(q1 + q2)]])]
     """
     chain._require_dh("frames_symbolic")
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -226,6 +264,17 @@ def joint_frames(chain, frames):
     -------
     list of 4x4 matrices
         The n joint frames.
+
+    Examples
+    --------
+    Standard DH: a planar 2R arm's joints turn about z of frames 0 (the base) and 1
+    (the elbow, at a1 (c1, s1)).
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> F0, F1 = joint_frames(arm, frames_symbolic(arm, symbolic_lengths=True))
+    >>> F1[:3, 3].T
+    Matrix([[a1*cos(q1), a1*sin(q1), 0]])
     """
     chain._require_dh("joint_frames")
     if not isinstance(frames, (list, tuple)) or len(frames) != chain.n + 1:
@@ -256,6 +305,16 @@ def twists_symbolic(chain, q=None, symbolic_lengths=False, rational=False):
     -------
     list of sympy.Matrix (6, 1)
         The n twists.
+
+    Examples
+    --------
+    Joint 2 of a planar 2R arm turns about z through the elbow o = a1 (c1, s1, 0):
+    its twist is (z; o x z) = (0, 0, 1, a1 s1, -a1 c1, 0).
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> twists_symbolic(arm, symbolic_lengths=True)[1].T
+    Matrix([[0, 0, 1, a1*sin(q1), -a1*cos(q1), 0]])
     """
     q = chain._exact_q(q)
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -320,6 +379,18 @@ def joint_twists(chain, q):
     -------
     ScrewSystem or ndarray, shape (N, n, 6)
         The twists of one configuration, or the batch's array.
+
+    Examples
+    --------
+    A planar 3R arm stretched out has three parallel axes in one plane: their
+    twists span 2 dimensions, not 3 (a singular configuration); bent, all 3.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0, 1.0])
+    >>> joint_twists(arm, [0, 0, 0]).rank, joint_twists(arm, [0, sp.pi / 2, 0]).rank
+    (2, 3)
+    >>> joint_twists(arm, np.zeros((4, 3))).shape  # a batch of 4
+    (4, 3, 6)
     """
     if is_symbolic(q):
         return ScrewSystem([Twist(t) for t in chain.twists_symbolic(q, rational=True)])
@@ -342,6 +413,15 @@ def table(chain):
     rows : list of list of str
         One row per joint: the DH table (theta, d, a, alpha; the joint variable
         marked q_i) or the joint screws (omega, v, pitch), and limits.
+
+    Examples
+    --------
+    >>> import screwkit as sk
+    >>> header, rows = table(sk.robots.planar([1.0, 0.5]))
+    >>> header
+    ['joint', 'θ (deg)', 'd (m)', 'a (m)', 'α (deg)', 'limits']
+    >>> rows
+    [['1 R', 'q1', '0', '1', '0', ''], ['2 R', 'q2', '0', '0.5', '0', '']]
     """
 
     def number(value, scale=1.0):

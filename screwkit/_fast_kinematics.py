@@ -121,6 +121,19 @@ def fk(chain, q):
     -------
     ndarray, shape (4, 4) or (N, 4, 4)
         The pose(s) in the base's world frame (m).
+
+    Examples
+    --------
+    A planar 2R arm with unit links at q = (0, pi/2): the tip is at (1, 1), the
+    tool's x axis along the base's y.
+
+    >>> import screwkit as sk
+    >>> T = fk(sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> np.round(T, 6) + 0.0
+    array([[ 0., -1.,  0.,  1.],
+           [ 1.,  0.,  0.,  1.],
+           [ 0.,  0.,  1.,  0.],
+           [ 0.,  0.,  0.,  1.]])
     """
     values = _compiled.one(q, chain.n)
     if values is not None:  # one configuration: the scalar path
@@ -152,6 +165,17 @@ def frames(chain, q):
     -------
     ndarray, shape (n + 1, 4, 4) or (N, n + 1, 4, 4)
         The frames (m).
+
+    Examples
+    --------
+    The origins of a planar 2R arm's frames at q = (0, pi/2): base, elbow, tip.
+
+    >>> import screwkit as sk
+    >>> F = frames(sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> np.round(F[:, :2, 3], 6) + 0.0
+    array([[0., 0.],
+           [1., 0.],
+           [1., 1.]])
     """
     q = chain.check_q(q)
     count = chain.n + 1
@@ -197,6 +221,15 @@ def home(chain):
     -------
     ndarray, shape (4, 4)
         M (m).
+
+    Examples
+    --------
+    A planar 2R arm with links 1 and 0.5 m, stretched along x:
+
+    >>> import screwkit as sk
+    >>> M = home(sk.robots.planar([1.0, 0.5]))
+    >>> np.round(M[:3, 3], 6) + 0.0
+    array([1.5, 0. , 0. ])
     """
     return chain.fk(np.zeros(chain.n))
 
@@ -213,6 +246,16 @@ def screw_axes(chain):
     -------
     ndarray, shape (n, 6)
         Rows [omega; v]: the columns of the space Jacobian at q = 0.
+
+    Examples
+    --------
+    A planar 2R arm with unit links: z through the origin, and z through
+    (1, 0, 0), whose v = (1, 0, 0) x z = (0, -1, 0).
+
+    >>> import screwkit as sk
+    >>> np.round(screw_axes(sk.robots.planar([1.0, 1.0])), 6) + 0.0
+    array([[ 0.,  0.,  1.,  0.,  0.,  0.],
+           [ 0.,  0.,  1.,  0., -1.,  0.]])
     """
     return chain.space_jacobian(np.zeros(chain.n)).T
 
@@ -227,6 +270,16 @@ def body_screw_axes(chain):
     -------
     ndarray, shape (n, 6)
         Rows [omega; v].
+
+    Examples
+    --------
+    A planar 2R arm with unit links: in the tool frame its axes are z through
+    r = (-2, 0, 0) and (-1, 0, 0), so v = r x z = (0, 2, 0) and (0, 1, 0).
+
+    >>> import screwkit as sk
+    >>> np.round(body_screw_axes(sk.robots.planar([1.0, 1.0])), 6) + 0.0
+    array([[0., 0., 1., 0., 2., 0.],
+           [0., 0., 1., 0., 1., 0.]])
     """
     return chain.body_jacobian(np.zeros(chain.n)).T
 
@@ -245,6 +298,15 @@ def fk_poe(chain, q):
     -------
     ndarray, shape (4, 4)
         The pose (m).
+
+    Examples
+    --------
+    The product of exponentials agrees with the DH route of :meth:`fk`:
+
+    >>> import screwkit as sk
+    >>> arm, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+    >>> bool(np.allclose(fk_poe(arm, q), fk(arm, q), atol=1e-12))
+    True
     """
     q = chain.check_one(q)
     T = np.eye(4)

@@ -81,6 +81,16 @@ class Chain(ChainType):
     name : str, used in messages and titles
     configurations : optional {name: joint vector (n,)}, named configurations
         ('zero', ...)
+
+    Examples
+    --------
+    A planar 2R arm with unit links, bent at the elbow: its tip is at (1, 1).
+
+    >>> arm = Chain([Link.revolute(a=1.0), Link.revolute(a=1.0)], name="2R")
+    >>> arm
+    Chain('2R', 2 joints RR, standard DH)
+    >>> np.round(arm.fk([0.0, np.pi / 2])[:2, 3], 6)
+    array([1., 1.])
     """
 
     #: The URDF joint names in order for a chain from :meth:`from_urdf`, None otherwise.
@@ -190,6 +200,14 @@ class Chain(ChainType):
         -------
         Chain
             The chain.
+
+        Examples
+        --------
+        The planar 2R arm with unit links, rows (theta, d, a, alpha):
+
+        >>> arm = Chain.from_table([[0, 0, 1.0, 0], [0, 0, 1.0, 0]], name="2R")
+        >>> np.round(arm.fk([0.0, np.pi / 2])[:2, 3], 6)
+        array([1., 1.])
         """
         return cls(links_from_table(table, joints, qlim), convention, **options)
 
@@ -234,6 +252,19 @@ class Chain(ChainType):
         -------
         Chain
             The chain.
+
+        Examples
+        --------
+        The planar 2R arm with unit links: z through the origin, z through
+        (1, 0, 0) (v = (1, 0, 0) x z = (0, -1, 0)), its tip at (2, 0, 0) at home.
+
+        >>> M = np.eye(4)
+        >>> M[0, 3] = 2.0
+        >>> arm = Chain.from_screws([[0, 0, 1, 0, 0, 0], [0, 0, 1, 0, -1, 0]], M)
+        >>> arm
+        Chain('chain', 2 joints RR, product of exponentials, space form)
+        >>> np.round(arm.fk([0.0, np.pi / 2])[:2, 3], 6)
+        array([1., 1.])
         """
         if frame not in ("space", "body"):
             raise ValueError(f"frame must be 'space' or 'body', got {frame!r}")
@@ -281,6 +312,22 @@ class Chain(ChainType):
         -------
         Chain
             A chain from screws, named after the robot.
+
+        Examples
+        --------
+        One revolute joint about z, 0.5 m above the base link:
+
+        >>> urdf = '''<robot name="one"><link name="base"/><link name="arm"/>
+        ... <joint name="shoulder" type="revolute">
+        ...   <parent link="base"/><child link="arm"/>
+        ...   <origin xyz="0 0 0.5"/><axis xyz="0 0 1"/>
+        ...   <limit lower="-1" upper="1" effort="1" velocity="1"/>
+        ... </joint></robot>'''
+        >>> arm = Chain.from_urdf(urdf)
+        >>> arm.joint_names, arm.qlim
+        (('shoulder',), array([[-1.,  1.]]))
+        >>> np.round(arm.home()[:3, 3], 6)
+        array([0. , 0. , 0.5])
         """
         urdf = read_urdf(source, base_link, tip_link)
         chain = cls.from_screws(
@@ -325,6 +372,18 @@ class Chain(ChainType):
         -------
         Chain
             A new chain (chains are immutable).
+
+        Examples
+        --------
+        A 0.5 m tool on the planar 2R arm with unit links: stretched, its tip is
+        at x = 2.5.
+
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 1.0])
+        >>> tool = np.eye(4)
+        >>> tool[0, 3] = 0.5
+        >>> np.round(arm.with_tool(tool).fk([0.0, 0.0])[:3, 3], 6)
+        array([2.5, 0. , 0. ])
         """
         return self._copy(tool=tool)
 
@@ -340,6 +399,17 @@ class Chain(ChainType):
         -------
         Chain
             A new chain (chains are immutable).
+
+        Examples
+        --------
+        The planar 2R arm with unit links on a base 1 m up:
+
+        >>> import screwkit as sk
+        >>> base = np.eye(4)
+        >>> base[2, 3] = 1.0
+        >>> arm = sk.robots.planar([1.0, 1.0]).with_base(base)
+        >>> np.round(arm.fk([0.0, 0.0])[:3, 3], 6)
+        array([2., 0., 1.])
         """
         return self._copy(base=base)
 
@@ -388,6 +458,17 @@ class Chain(ChainType):
         -------
         ndarray, shape (n,) or (N, n)
             ``q`` as float64.
+
+        Examples
+        --------
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 1.0])
+        >>> arm.check_q([0, 1])
+        array([0., 1.])
+        >>> arm.check_q([0, 1, 2])  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        ValueError: q must have 2 entries for this chain, ... got shape (3,)
         """
         q = as_float_array(q, name)
         if q.ndim not in (1, 2) or q.shape[-1] != self.n:
@@ -411,6 +492,17 @@ class Chain(ChainType):
         -------
         ndarray, shape (n,)
             ``q`` as float64.
+
+        Examples
+        --------
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 1.0])
+        >>> arm.check_one([0, 1])
+        array([0., 1.])
+        >>> arm.check_one([[0, 1], [1, 0]])
+        Traceback (most recent call last):
+        ...
+        ValueError: q must be one configuration of shape (2,), got shape (2, 2)
         """
         q = self.check_q(q, name)
         if q.ndim != 1:
@@ -432,6 +524,15 @@ class Chain(ChainType):
         -------
         bool or ndarray of bool, shape (N,)
             True where every joint is within its limits.
+
+        Examples
+        --------
+        A planar 2R arm whose joints turn within +-90 degrees:
+
+        >>> import screwkit as sk
+        >>> arm = sk.robots.planar([1.0, 1.0], qlim=[(-np.pi / 2, np.pi / 2)] * 2)
+        >>> arm.within_limits([[0.0, 1.0], [0.0, 2.0]])
+        array([ True, False])
         """
         q = self.check_q(q)
         return np.all((q >= self._qlim[:, 0]) & (q <= self._qlim[:, 1]), axis=-1)

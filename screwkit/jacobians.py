@@ -117,6 +117,17 @@ def joint_axes(chain, q):
     -------
     z, o : ndarray, shape (n, 3) or (N, n, 3)
         Unit directions and points (m).
+
+    Examples
+    --------
+    A planar 2R arm with unit links: both axes are z, through (0, 0) and (1, 0, 0).
+
+    >>> import screwkit as sk
+    >>> z, o = joint_axes(sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> np.round(z, 6) + 0.0, np.round(o, 6) + 0.0
+    (array([[0., 0., 1.],
+           [0., 0., 1.]]), array([[0., 0., 0.],
+           [1., 0., 0.]]))
     """
     check_chain(chain)
     q = chain.check_q(q)
@@ -160,6 +171,17 @@ def space_jacobian(chain, q):
     prismatic one, (z_i; o_i x z_i + h z_i) for a helical one of pitch h.
 
     {sections}
+
+    Examples
+    --------
+    A planar 2R arm with unit links: joint 2's axis is z through (1, 0, 0), so its
+    column is (z; (1, 0, 0) x z) = (0, 0, 1, 0, -1, 0), whatever q.
+
+    >>> import screwkit as sk
+    >>> J = space_jacobian(sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> np.round(J.T, 6) + 0.0
+    array([[ 0.,  0.,  1.,  0.,  0.,  0.],
+           [ 0.,  0.,  1.,  0., -1.,  0.]])
     """
     check_chain(chain)
     return chain._generated_jacobian(q, "space")
@@ -174,6 +196,17 @@ def geometric_jacobian(chain, q):
     and (z_i; 0) for a prismatic one.
 
     {sections}
+
+    Examples
+    --------
+    A planar 2R arm with unit links at q = (0, pi/2): the tip p = (1, 1, 0);
+    z x p = (-1, 1, 0) and z x (p - (1, 0, 0)) = (-1, 0, 0).
+
+    >>> import screwkit as sk
+    >>> J = geometric_jacobian(sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> np.round(J[:2], 6) + 0.0  # v_x, v_y
+    array([[-1., -1.],
+           [ 1.,  0.]])
     """
     check_chain(chain)
     return chain._generated_jacobian(q, "geometric")
@@ -209,6 +242,18 @@ def body_jacobian(chain, q):
     (R^T omega_i; R^T (v_i + omega_i x p)) for the pose T = (R, p).
 
     {sections}
+
+    Examples
+    --------
+    A planar 2R arm with unit links at q = (0, pi/2): the tool's x axis is the
+    base's y. Joint 2 moves the tip along the tool's y at 1 m/s; joint 1 moves it
+    by z x (1, 1, 0) = (-1, 1, 0), which is (1, 1, 0) in the tool frame.
+
+    >>> import screwkit as sk
+    >>> J = body_jacobian(sk.robots.planar([1.0, 1.0]), [0.0, np.pi / 2])
+    >>> np.round(J.T, 6) + 0.0
+    array([[0., 0., 1., 1., 1., 0.],
+           [0., 0., 1., 0., 1., 0.]])
     """
 
     check_chain(chain)
@@ -245,6 +290,16 @@ def jacobian_rows(chain, q, rows="all"):
     -------
     ndarray, shape (m, n) or (N, m, n)
         The m rows (6, 3, 3 or 2).
+
+    Examples
+    --------
+    The planar 2R arm with unit links at q = (0, pi/2), tip (1, 1):
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> np.round(jacobian_rows(arm, [0.0, np.pi / 2], "planar"), 6) + 0.0
+    array([[-1., -1.],
+           [ 1.,  0.]])
     """
     check_chain(chain)
     selected = check_rows(rows)
@@ -269,6 +324,17 @@ def singular_values(chain, q, rows="all"):
     -------
     ndarray, shape (k,) or (N, k)
         k = min(rows, n) singular values.
+
+    Examples
+    --------
+    The planar 2R arm with unit links at q = (0, pi/2): J = [[-1, -1], [1, 0]], so
+    J J^T = [[2, -1], [-1, 1]], whose eigenvalues (3 +- sqrt 5) / 2 are the squares
+    of the golden ratio 1.618... and of its inverse.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> np.round(singular_values(arm, [0.0, np.pi / 2], "planar"), 6)
+    array([1.618034, 0.618034])
     """
     check_chain(chain)
     check_rows(rows)
@@ -295,6 +361,16 @@ def lost_rank(chain, sigma, rows="all"):
     -------
     bool or ndarray of bool, shape (...)
         True where the rank is below k.
+
+    Examples
+    --------
+    A planar 2R arm stretched out (q2 = 0) is singular; bent (q2 = pi/2) it is not.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> sigma = singular_values(arm, [[0.0, 0.0], [0.0, np.pi / 2]], "planar")
+    >>> lost_rank(arm, sigma, "planar")
+    array([ True, False])
     """
     return _numeric.lost_rank(sigma, len(range(6)[check_rows(rows)]), chain.n)
 
@@ -320,6 +396,16 @@ def manipulability(chain, q, rows="all"):
     -------
     float or ndarray, shape (N,)
         The manipulability.
+
+    Examples
+    --------
+    A planar 2R arm: w = l1 l2 ``abs(sin q2)``, 0 stretched out, 0.5 bent at pi/6.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> w = manipulability(arm, [[0.0, 0.0], [0.0, np.pi / 6]], "planar")
+    >>> np.round(w, 6) + 0.0
+    array([0. , 0.5])
     """
     check_chain(chain)
     sigma = chain.singular_values(q, rows)
@@ -344,6 +430,17 @@ def numerical_jacobian(chain, q, h=FD_STEP):
     -------
     ndarray, shape (6, n)
         Rows [v; omega].
+
+    Examples
+    --------
+    Central differences agree with the exact Jacobian of the planar 2R arm to
+    O(h^2):
+
+    >>> import screwkit as sk
+    >>> arm, q = sk.robots.planar([1.0, 1.0]), [0.3, 1.1]
+    >>> difference = numerical_jacobian(arm, q) - geometric_jacobian(arm, q)
+    >>> bool(np.abs(difference).max() < 1e-8)
+    True
     """
     q = check_chain(chain).check_one(q)
     if (
@@ -411,6 +508,19 @@ def geometric_jacobian_symbolic(chain, point=None, symbolic_lengths=False):
     -------
     sympy.Matrix (6, n)
         Rows [v; omega].
+
+    Examples
+    --------
+    A planar 2R arm with links a1, a2 (symbols), its elbow (the origin of frame 1)
+    as the point: joint 1 moves it at a1 (-s1, c1), joint 2 not at all.
+
+    >>> import screwkit as sk, sympy as sp
+    >>> a1, a2 = sp.symbols("a1 a2", positive=True)
+    >>> arm = sk.Chain([sk.Link.revolute(a=a1), sk.Link.revolute(a=a2)])
+    >>> geometric_jacobian_symbolic(arm, point=1)[:2, :]
+    Matrix([
+    [-a1*sin(q1), 0],
+    [ a1*cos(q1), 0]])
     """
     check_chain(chain)
     symbolic_lengths = check_flag(symbolic_lengths, "symbolic_lengths")
@@ -459,6 +569,19 @@ def determinant_symbolic(chain, point=None, symbolic_lengths=False):
     -------
     SymPy expression
         det J, factorised, in q1..q6.
+
+    Examples
+    --------
+    A Cartesian arm (three prismatic joints on perpendicular axes), spherical wrist:
+    the prismatic block is the identity up to sign, so det J = sin q5, the wrist's
+    singularity.
+
+    >>> import screwkit as sk, sympy as sp
+    >>> P, R, half = sk.Link.prismatic, sk.Link.revolute, sp.pi / 2
+    >>> arm = sk.Chain([P(alpha=-half), P(theta=-half, alpha=-half), P(),
+    ...                 R(alpha=-half), R(alpha=half), R()])
+    >>> determinant_symbolic(arm)
+    sin(q5)
     """
     if check_chain(chain).n != 6:
         raise ValueError(
@@ -489,6 +612,18 @@ def condition_number(chain, q, rows="all"):
     -------
     float or ndarray, shape (N,)
         1 where isotropic, inf where singular.
+
+    Examples
+    --------
+    The planar 2R arm with unit links at q = (0, pi/2): sigma = 1.618... and 0.618...
+    (see :func:`singular_values`), whose ratio is the golden ratio squared, 2.618...;
+    stretched out it is singular.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> kappa = condition_number(arm, [[0.0, np.pi / 2], [0.0, 0.0]], "planar")
+    >>> np.round(kappa, 6)
+    array([2.618034,      inf])
     """
     sigma = singular_values(chain, q, rows)
     singular = check_chain(chain).lost_rank(sigma, rows)
@@ -506,6 +641,15 @@ def rank(chain, q, rows="all"):
     -------
     int or ndarray of int, shape (N,)
         The rank.
+
+    Examples
+    --------
+    A planar 2R arm loses a rank stretched out (q2 = 0) and has full rank bent:
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> rank(arm, [[0.0, 0.0], [0.0, np.pi / 2]], "planar")
+    array([1, 2])
     """
     check_rows(rows)
     q = check_chain(chain).check_q(q)
@@ -537,6 +681,17 @@ def ellipsoid(chain, q, rows="position"):
         norm.
     axes : ndarray, shape (3, 3)
         Their directions, as columns.
+
+    Examples
+    --------
+    The planar 2R arm with unit links at q = (0, pi/2): the radii are the singular
+    values of its planar Jacobian (see :func:`singular_values`), none along z.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> center, radii, axes = ellipsoid(arm, [0.0, np.pi / 2])
+    >>> np.round(center, 6) + 0.0, np.round(radii, 6) + 0.0
+    (array([1., 1., 0.]), array([1.618034, 0.618034, 0.      ]))
     """
     q = check_chain(chain).check_one(q)
     if rows not in ("position", "orientation"):

@@ -71,6 +71,15 @@ class Classification:
     kind : str or None
         The engine's case: 'wrist', 'shoulder', 'parallel 234', 'parallel 345'; None
         when no decomposition applies here (the general 6R).
+
+    Examples
+    --------
+    The PUMA 560: axes 4, 5, 6 meet (a spherical wrist), 2 and 3 are parallel.
+
+    >>> import screwkit as sk
+    >>> found = classify(sk.robots.puma560())
+    >>> found.kind, [bool(b) for b in found.parallel]
+    ('wrist', [False, True, False, False, False])
     """
 
     meet: tuple
@@ -140,6 +149,17 @@ def classify(chain, name="chain"):
     Classification
         Which consecutive axes meet or are parallel, the class's name and the engine's
         case (None: general).
+
+    Examples
+    --------
+    A UR arm's axes 2, 3, 4 are parallel:
+
+    >>> import screwkit as sk
+    >>> found = classify(sk.robots.ur5e())
+    >>> found.kind
+    'parallel 234'
+    >>> found.name.startswith("three parallel (2, 3, 4)")
+    True
     """
     check_chain(chain, name)
     if chain.n != 6:
@@ -234,6 +254,15 @@ class DecomposedArm:
         The class's name.
     chain : Chain
         The arm as given: its forward kinematics checks every solution.
+
+    Examples
+    --------
+    The PUMA 560 is solved as it is (a wrist at its end, no reversal):
+
+    >>> import screwkit as sk
+    >>> arm = DecomposedArm.from_chain(sk.robots.puma560())
+    >>> arm.case, arm.reverse
+    ('wrist', False)
     """
 
     w: np.ndarray
@@ -260,6 +289,14 @@ class DecomposedArm:
         -------
         DecomposedArm
             The engine; an arm of no decomposable class is a ``ValueError``.
+
+        Examples
+        --------
+        A UR5e has three parallel axes 2, 3, 4 (no spherical wrist):
+
+        >>> import screwkit as sk
+        >>> DecomposedArm.from_chain(sk.robots.ur5e()).case
+        'parallel'
         """
         found = classify(chain, name)
         if found.kind is None:
@@ -303,6 +340,19 @@ class DecomposedArm:
         residual : ndarray (N, 8): max |R - R_T| entry and |p - p_T| / scale (NaN rows
             as Q)
         free : ndarray of bool (N, 8): a solution with a free angle (a continuum)
+
+        Examples
+        --------
+        A PUMA 560 pose: eight solutions, the vector that made it among them, each
+        one reaching the pose.
+
+        >>> import screwkit as sk
+        >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+        >>> Q, residual, free = DecomposedArm.from_chain(puma).solve(puma.fk(q))
+        >>> Q.shape, any(np.allclose(row, q) for row in Q[0])
+        ((1, 8, 6), True)
+        >>> bool(np.nanmax(residual) < 1e-9)
+        True
         """
         T = check_poses(T, "T")
         T = T[None] if T.ndim == 2 else T

@@ -112,6 +112,12 @@ class IKSolution:
     residual : float
         How far the chain's pose at q is from the asked one: the largest entry of the
         rotation's difference and of the position's divided by the arm's size (m / m).
+
+    Examples
+    --------
+    >>> IKSolution(np.array([0.1, -0.4, 0.3, 0.5, -0.6, 0.7]), "rdn")
+    IKSolution(rdn: q=[+0.1000, -0.4000, +0.3000, +0.5000, -0.6000, +0.7000],
+               within_limits=True)
     """
 
     q: np.ndarray
@@ -142,6 +148,16 @@ class IKSolutions(list):
         solutions.
     structure : str or None
         The structure the closed form recognised (a key of :data:`STRUCTURES`).
+
+    Examples
+    --------
+    A PUMA 560 reaches a regular pose in eight ways, one per label:
+
+    >>> import screwkit as sk
+    >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+    >>> solutions = analytic_ik(puma, puma.fk(q))
+    >>> len(solutions), solutions.structure
+    (8, 'spherical wrist (joints 2, 3 parallel)')
     """
 
     def __init__(self, solutions=(), reason=None, structure=None):
@@ -162,6 +178,19 @@ class IKSolutions(list):
         -------
         IKSolution or None
             None if that branch has no solution.
+
+        Examples
+        --------
+        The PUMA's joint vector comes back under its own label:
+
+        >>> import screwkit as sk
+        >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+        >>> label = configuration(puma, q)
+        >>> label
+        'rdn'
+        >>> analytic_ik(puma, puma.fk(q)).by_config(label)
+        IKSolution(rdn: q=[+0.1000, -0.4000, +0.3000, +0.5000, -0.6000, +0.7000],
+                   within_limits=True)
         """
         labels = (
             CONFIGURATIONS
@@ -186,6 +215,17 @@ class IKSolutions(list):
         -------
         IKSolution or None
             None if there is no solution.
+
+        Examples
+        --------
+        Of the PUMA's eight solutions, the one nearest the joint vector that made the
+        pose is that vector:
+
+        >>> import screwkit as sk
+        >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+        >>> analytic_ik(puma, puma.fk(q)).nearest(q)
+        IKSolution(rdn: q=[+0.1000, -0.4000, +0.3000, +0.5000, -0.6000, +0.7000],
+                   within_limits=True)
         """
         q = as_float_array(q, "q")
         n = len(self[0].q) if self else 6
@@ -283,6 +323,14 @@ def structure(chain):
         'three parallel (2, 3, 4)', ..., 'general ...'); a chain of none of them
         (neither 6R nor one of the structures) is a
         ``ValueError`` that names what each one needs.
+
+    Examples
+    --------
+    >>> import screwkit as sk
+    >>> structure(sk.robots.puma560())
+    'spherical wrist (joints 2, 3 parallel)'
+    >>> structure(sk.robots.stanford())
+    'RRP arm with a spherical wrist (Stanford)'
     """
     check_chain(chain)
     try:
@@ -317,6 +365,18 @@ def analytic_ik_all(chain, T):
         ..., the solutions first); NaN rows for the branches that do not reach a pose
         (all eight when it is out of reach; see :func:`analytic_ik` for the reason).
         Computed in chunks, so memory stays bounded for large batches.
+
+    Examples
+    --------
+    The PUMA's eight solutions of a pose: two values of q1 (the left and the right
+    arm), four solutions each (elbow up or down, wrist flipped or not); the pose's
+    own q1 = 0.1 is one of the two.
+
+    >>> import screwkit as sk
+    >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+    >>> Q = analytic_ik_all(puma, puma.fk(q))
+    >>> Q.shape, bool(np.isclose(Q[:, 0], 0.1).sum() == 4)
+    ((8, 6), True)
     """
     arm = _arm(chain)
     _check_batch_size(T, "T", MAX_POSES_ALL, "analytic_ik_all")
@@ -373,6 +433,17 @@ def analytic_ik(chain, T, within_limits=False, near=None, fixed=None):
         out of reach; ``reason`` also says when the solutions form a continuum (an
         angle free: each listed solution is then one of a family). ``structure`` names
         the class. For a batch, a list of IKSolutions.
+
+    Examples
+    --------
+    Every one of the PUMA's eight solutions of a pose reaches it:
+
+    >>> import screwkit as sk
+    >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+    >>> T = puma.fk(q)
+    >>> solutions = analytic_ik(puma, T)
+    >>> len(solutions), all(np.allclose(puma.fk(s.q), T) for s in solutions)
+    (8, True)
     """
     check_chain(chain)
     if fixed is None and chain.n == 6 and one_pose(T) is not None:
@@ -716,6 +787,16 @@ def configuration(chain, q):
     -------
     str or list of str
         The label ('ruf', ...) of q, or the N labels of a batch.
+
+    Examples
+    --------
+    A PUMA with its wrist centre in front of the shoulder (r), the elbow below
+    (d) and q5 < 0 (n):
+
+    >>> import screwkit as sk
+    >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+    >>> configuration(puma, q)
+    'rdn'
     """
     arm = _arm(chain)
     if isinstance(arm, (DecomposedArm, _GeneralArm)):
@@ -747,6 +828,21 @@ def puma560_ik(T, robot=None, within_limits=False, near=None):
     -------
     IKSolutions
         Up to eight solutions, as :func:`analytic_ik` returns them.
+
+    Examples
+    --------
+    At q = 0 the PUMA 560's tool is where its DH numbers put it:
+    (a2 + a3, -d3, d4) = (0.4318 + 0.0203, -0.15005, 0.4318); one of the eight
+    solutions of a regular pose is the vector that made it.
+
+    >>> import screwkit as sk
+    >>> puma = sk.robots.puma560()
+    >>> np.round(puma.fk(np.zeros(6))[:3, 3], 5) + 0.0
+    array([ 0.4521 , -0.15005,  0.4318 ])
+    >>> q = [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+    >>> puma560_ik(puma.fk(q)).nearest(q)
+    IKSolution(rdn: q=[+0.1000, -0.4000, +0.3000, +0.5000, -0.6000, +0.7000],
+               within_limits=True)
     """
     robot = _default_puma() if robot is None else robot
     arm = _arm(robot, "robot")
@@ -773,6 +869,15 @@ def puma560_ik_all(Ts, robot=None):
     ndarray, shape (N, 8, 6) (or (8, 6))
         Joint vectors, rad in (-pi, pi], in the order of :data:`CONFIGURATIONS`; NaN
         where a branch does not reach.
+
+    Examples
+    --------
+    Two poses, eight solutions each:
+
+    >>> import screwkit as sk
+    >>> puma, q = sk.robots.puma560(), [0.1, -0.4, 0.3, 0.5, -0.6, 0.7]
+    >>> puma560_ik_all([puma.fk(q), puma.fk(np.zeros(6) + 0.2)]).shape
+    (2, 8, 6)
     """
     return analytic_ik_all(_default_puma() if robot is None else robot, Ts)
 
@@ -798,6 +903,14 @@ def puma560_config(q, robot=None):
     -------
     str
         The label, 'lun' ... 'rdf'.
+
+    Examples
+    --------
+    At q1 = 0.1, q2 = -0.4, q3 = 0.3 the PUMA's wrist centre is in front of the
+    shoulder (r), its elbow below the line to it (d), and q5 = -0.6 < 0 (n):
+
+    >>> puma560_config([0.1, -0.4, 0.3, 0.5, -0.6, 0.7])
+    'rdn'
     """
     robot = _default_puma() if robot is None else check_chain(robot, "robot")
     return configuration(robot, robot.check_one(q))

@@ -148,6 +148,21 @@ class GeneralIK:
     singular : ndarray of bool, shape (k,)
         Whether the Jacobian loses rank at each solution (``reason`` then says so):
         solutions may coincide there, or the solution be a point of a continuum.
+
+    Examples
+    --------
+    The answer for a pose of a 6R arm of no special geometry: every solution
+    reaches the pose (residuals of round-off size), and none is singular.
+
+    >>> import screwkit as sk
+    >>> arm = sk.Chain.from_table([[0, 0.3, 0.2, 1.0], [0, 0.1, 0.5, -0.7],
+    ...     [0, 0.2, 0.4, 1.3], [0, 0.25, 0.1, 0.9], [0, 0.1, 0.3, -1.1],
+    ...     [0, 0.2, 0.1, 0.4]])
+    >>> found = general_6r_ik(arm, arm.fk([0.3, -0.5, 1.0, 0.7, -1.2, 2.0]))
+    >>> found.reason, len(found.Q) <= 16, bool(found.residuals.max() < 1e-9)
+    (None, True, True)
+    >>> bool(found.singular.any())
+    False
     """
 
     Q: np.ndarray
@@ -743,6 +758,11 @@ def general_6r_ik(chain, T):
     GeneralIK, or a list of N for a batch
         ``Q`` (k, 6) the solutions (rad, in (-pi, pi], sorted), ``residuals`` (k,),
         ``reason`` (None when solved).
+
+    Examples
+    --------
+    A 6R arm of no special geometry (no axes meeting or parallel): the joint vector
+    that made a pose is among the solutions found.
 
     >>> import numpy as np, screwkit as sk
     >>> arm = sk.Chain.from_table([[0, 0.3, 0.2, 1.0], [0, 0.1, 0.5, -0.7],

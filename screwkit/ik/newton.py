@@ -43,6 +43,12 @@ class NumericIKResult:
         The Newton steps taken.
     error : float or ndarray, shape (N,)
         The norm of the final error twist [omega; v] theta (rad and m).
+
+    Examples
+    --------
+    >>> result = NumericIKResult(np.array([0.0, 1.5]), True, 4, 0.0)
+    >>> result.success, result.iterations
+    (True, 4)
     """
 
     q: np.ndarray
@@ -63,6 +69,19 @@ def pose_error(T, T_target):
     -------
     ndarray, shape (..., 6)
         The twist [omega; v] theta in the body frame of T (rad and m).
+
+    Examples
+    --------
+    From the identity to a quarter turn about z, then to 0.5 m up z:
+
+    >>> turn = np.eye(4)
+    >>> turn[:2, :2] = [[0.0, -1.0], [1.0, 0.0]]
+    >>> np.round(pose_error(np.eye(4), turn), 6) + 0.0
+    array([0.      , 0.      , 1.570796, 0.      , 0.      , 0.      ])
+    >>> up = np.eye(4)
+    >>> up[2, 3] = 0.5
+    >>> np.round(pose_error(np.eye(4), up), 6) + 0.0
+    array([0. , 0. , 0. , 0. , 0. , 0.5])
     """
     return log_transform(
         inv(check_transform(as_float_array(T, "T"), "T"))
@@ -118,6 +137,18 @@ def numeric_ik(
     NumericIKResult
         ``q`` of shape (n,) or (N, n); ``success`` is False whenever the final error is
         not below tol (an unreachable pose never reports success).
+
+    Examples
+    --------
+    A planar 2R arm with unit links, from two starts to the pose of q = (0, pi/2):
+    the elbow-up solution, the only one with that tool orientation.
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> result = numeric_ik(arm, arm.fk([0.0, np.pi / 2]), [[0.3, 1.2], [0.2, 1.0]])
+    >>> result.success, np.round(result.q, 6) + 0.0
+    (array([ True,  True]), array([[0.      , 1.570796],
+           [0.      , 1.570796]]))
     """
     check_chain(chain)
     T = check_poses(T, "T", single_only=True)

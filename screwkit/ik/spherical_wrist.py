@@ -144,6 +144,16 @@ class SphericalWristArm(ClosedFormArm):
         The fields of :class:`~screwkit.ik._closed_form.ClosedFormArm`.
     c : ndarray, shape (3,)
         The wrist centre, where axes 4, 5 and 6 meet (m).
+
+    Examples
+    --------
+    The PUMA 560's wrist centre at q = 0 is its tool point there (d6 = 0), from
+    its DH numbers (a2 + a3, -d3, d4) = (0.4318 + 0.0203, -0.15005, 0.4318):
+
+    >>> import screwkit as sk
+    >>> arm = SphericalWristArm.from_chain(sk.robots.puma560())
+    >>> np.round(arm.c, 5) + 0.0
+    array([ 0.4521 , -0.15005,  0.4318 ])
     """
 
     c: np.ndarray
@@ -255,6 +265,15 @@ class SphericalWristArm(ClosedFormArm):
         -------
         ndarray, shape (...)
             ``|w4 x R(w5, q5) w6|``, the sine of the angle between axes 4 and 6.
+
+        Examples
+        --------
+        The PUMA's axes 4 and 6 are at the angle q5: ``abs(sin q5)``.
+
+        >>> import screwkit as sk
+        >>> arm = SphericalWristArm.from_chain(sk.robots.puma560())
+        >>> np.round(arm.wrist_sine([0.0, np.pi / 2, np.pi / 6]), 6) + 0.0
+        array([0. , 1. , 0.5])
         """
         return self._wrist_sine(as_float_array(q5, "q5"))
 

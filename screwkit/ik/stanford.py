@@ -56,6 +56,16 @@ class StanfordArm(ClosedFormArm):
         The point where axes 1 and 2 meet (m).
     c : ndarray, shape (3,)
         The wrist centre, where axes 4, 5 and 6 meet (m).
+
+    Examples
+    --------
+    The Stanford arm (d1 = 0.412, d2 = 0.154 m): axes 1 and 2 meet at height d1;
+    with the boom in (q3 = 0) the wrist centre is d2 to the side of it.
+
+    >>> import screwkit as sk
+    >>> arm = StanfordArm.from_chain(sk.robots.stanford())
+    >>> np.round(arm.o, 5) + 0.0, np.round(arm.c, 5) + 0.0
+    (array([0.   , 0.   , 0.412]), array([0.   , 0.154, 0.412]))
     """
 
     o: np.ndarray

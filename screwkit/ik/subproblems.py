@@ -75,6 +75,17 @@ class Solutions(list):
     free : bool
         True when every angle solves the problem (the list then holds the
         representative 0).
+
+    Examples
+    --------
+    A list that can also say why it is empty:
+
+    >>> Solutions([0.5])
+    [0.5]
+    >>> Solutions([], reason="unreachable")
+    Solutions([], reason='unreachable')
+    >>> Solutions([0.0], free=True)
+    [0.0] (every angle: free)
     """
 
     def __init__(self, solutions=(), reason=None, free=False):
@@ -701,6 +712,16 @@ def subproblem1(twist, p, q):
     -------
     Solutions
         [theta] (rad), or [] with ``reason``; ``free`` if p is on the axis.
+
+    Examples
+    --------
+    Turning x onto y about z takes a quarter turn; SymPy entries give it exactly.
+
+    >>> z_axis = sp.Matrix([0, 0, 1, 0, 0, 0])
+    >>> subproblem1(z_axis, [1, 0, 0], [0, 1, 0])
+    [pi/2]
+    >>> subproblem1(z_axis, [1, 0, 0], [0, 2, 0]).reason
+    'p and q are at different distances from the axis'
     """
     exact = _symbolic(twist, p, q)
     w, r = _twist(twist, "twist", exact)
@@ -754,6 +775,16 @@ def subproblem2(twist1, twist2, p, q):
     -------
     Solutions
         A list of (theta1, theta2) pairs (rad), or [] with ``reason``.
+
+    Examples
+    --------
+    x onto z by a turn about z, then one about x: z first takes x to +-y, and a
+    quarter turn about x takes +-y to z.
+
+    >>> x_axis = sp.Matrix([1, 0, 0, 0, 0, 0])
+    >>> z_axis = sp.Matrix([0, 0, 1, 0, 0, 0])
+    >>> subproblem2(x_axis, z_axis, [1, 0, 0], [0, 0, 1])
+    [(-pi/2, -pi/2), (pi/2, pi/2)]
     """
     exact = _symbolic(twist1, twist2, p, q)
     w1, r1 = _twist(twist1, "twist1", exact)
@@ -833,6 +864,15 @@ def subproblem3(twist, p, q, delta):
     Solutions
         Angles (rad), or [] with ``reason``; ``free`` if the distance does not depend
         on the angle and equals delta.
+
+    Examples
+    --------
+    Turning x about z to sqrt(2) from where it starts: 2 - 2 cos(theta) = 2, so
+    theta = +-pi/2.
+
+    >>> z_axis = sp.Matrix([0, 0, 1, 0, 0, 0])
+    >>> subproblem3(z_axis, [1, 0, 0], [1, 0, 0], sp.sqrt(2))
+    [-pi/2, pi/2]
     """
     exact = _symbolic(twist, p, q, delta)
     w, r = _twist(twist, "twist", exact)
@@ -905,6 +945,14 @@ def subproblem4(twist, p, normal, d):
     -------
     Solutions
         Angles (rad), or [] with ``reason``; ``free`` if p's circle lies in the plane.
+
+    Examples
+    --------
+    x turned about z reaches the plane y = 1/2 where sin(theta) = 1/2:
+
+    >>> z_axis = sp.Matrix([0, 0, 1, 0, 0, 0])
+    >>> subproblem4(z_axis, [1, 0, 0], [0, 1, 0], sp.Rational(1, 2))
+    [pi/6, 5*pi/6]
     """
     exact = _symbolic(twist, p, normal, d)
     w, r = _twist(twist, "twist", exact)
@@ -988,6 +1036,18 @@ def subproblem5(k1, k2, k3, p0, p1, p2, p3):
     Solutions
         (theta1, theta2, theta3) triples (rad, in (-pi, pi]), or [] with ``reason``;
         ``free`` when an angle is free (a continuum; that angle is 0 in the list).
+
+    Examples
+    --------
+    p0 made from known angles (0.3, -0.5, 1.0) about z, x and y: the triple is
+    among the solutions found.
+
+    >>> from screwkit.transforms import rotx, roty, rotz
+    >>> x, y, z = np.eye(3)
+    >>> p0 = rotx(-0.5) @ (y + roty(1.0) @ z) - rotz(0.3) @ x
+    >>> found = subproblem5(z, x, y, p0, x, y, z)
+    >>> any(np.allclose(t, (0.3, -0.5, 1.0)) for t in found)
+    True
     """
     k = [_direction(v, name, False) for v, name in ((k1, "k1"), (k2, "k2"), (k3, "k3"))]
     p = [_point(v, f"p{i}", False) for i, v in enumerate((p0, p1, p2, p3))]
@@ -1027,6 +1087,20 @@ def subproblem6(h, k, p, d):
     Solutions
         (theta1, theta2) pairs (rad, in (-pi, pi]), or [] with ``reason``; ``free`` when
         an angle is free (a continuum; that angle is 0 in the list).
+
+    Examples
+    --------
+    The right-hand sides made from known angles (0.3, -0.5) about z and x: the pair
+    is among the solutions found.
+
+    >>> from screwkit.transforms import rotx, rotz
+    >>> x, y, z = np.eye(3)
+    >>> h, k = np.array([y, z, x, y]), np.array([z, x, z, x])
+    >>> p = np.array([x, y, x + y, z])
+    >>> d = [y @ rotz(0.3) @ x + z @ rotx(-0.5) @ y,
+    ...      x @ rotz(0.3) @ (x + y) + y @ rotx(-0.5) @ z]
+    >>> any(np.allclose(t, (0.3, -0.5)) for t in subproblem6(h, k, p, d))
+    True
     """
     arrays = {}
     for value, name, shape in (
@@ -1068,6 +1142,11 @@ def subproblem1_prismatic(s, p, q):
     -------
     Solutions
         [t] (m), or [] with ``reason``.
+
+    Examples
+    --------
+    >>> subproblem1_prismatic([0, 0, 1], [1, 0, 0], [1, 0, 3])
+    [3.0]
     """
     exact = _symbolic(s, p, q)
     s = _direction(s, "s", exact)
@@ -1102,6 +1181,16 @@ def subproblem3_prismatic(s, p, q, delta):
     -------
     Solutions
         Distances (m), or [] with ``reason``.
+
+    Examples
+    --------
+    The x axis meets the sphere of radius 2 about the origin at x = +-2; the line
+    y = 3 misses it.
+
+    >>> subproblem3_prismatic([1, 0, 0], [0, 0, 0], [0, 0, 0], 2)
+    [-2.0, 2.0]
+    >>> subproblem3_prismatic([1, 0, 0], [0, 3, 0], [0, 0, 0], 2).reason
+    'the line passes 3.0000 m from q, farther than delta = 2.0000 m'
     """
     exact = _symbolic(s, p, q, delta)
     s = _direction(s, "s", exact)

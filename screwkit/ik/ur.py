@@ -69,6 +69,16 @@ class URArm(ClosedFormArm):
         The fields of :class:`~screwkit.ik._closed_form.ClosedFormArm`.
     c : ndarray, shape (3,)
         The point where axes 5 and 6 meet (m).
+
+    Examples
+    --------
+    The UR5e at q = 0, from its DH numbers: axes 5 and 6 meet at
+    (a2 + a3, -d4, d1 - d5) = (-0.425 - 0.3922, -0.1333, 0.1625 - 0.0997).
+
+    >>> import screwkit as sk
+    >>> arm = URArm.from_chain(sk.robots.ur5e())
+    >>> np.round(arm.c, 5) + 0.0
+    array([-0.8172, -0.1333,  0.0628])
     """
 
     c: np.ndarray

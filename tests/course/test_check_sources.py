@@ -325,3 +325,86 @@ def test_a_chapter_writing_an_unused_symbol_is_named(chapter, line, symbol):
     assert len(problems) == 1, problems
     assert f"chapter.md:15: writes {symbol} for the" in problems[0]
     assert "book/notation.md" in problems[0]
+
+
+# Derive, then call (issue 41): .ci/derive_first.py, run by check_notebooks.
+_spec = importlib.util.spec_from_file_location(
+    "derive_first", ROOT / ".ci" / "derive_first.py"
+)
+derive_first = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(derive_first)
+
+ROW = ("chapter", "lib.f", r"lib\.f\(", r"def my_f\(", None)
+DERIVE = "def my_f(x):\n    return 2 * x\n"
+CALL = "print(lib.f(3))\n"
+
+
+def myst(*cells, prose=""):
+    """A chapter text: a heading, then one code cell per source, then `prose`."""
+    body = "".join(f"```{{code-cell}} ipython3\n{cell}```\n\n" for cell in cells)
+    return "# A chapter\n\n" + body + prose
+
+
+def line_of(text, code):
+    """The 1-based line of the first line of `code` in `text`, found by hand."""
+    return text.splitlines().index(code.splitlines()[0]) + 1
+
+
+def run(texts, table=(ROW,), allowed=None, order=("early", "chapter", "late")):
+    return derive_first.check(texts, list(order), list(table), allowed or {})
+
+
+def test_the_repository_chapters_derive_before_they_call():
+    assert derive_first.check_chapters(str(ROOT / "notebooks")) == []
+    chapters = derive_first.toc_chapters()
+    for chapter, _name, _, _, derived_in in derive_first.DERIVED_FIRST:
+        assert chapter in chapters and (derived_in is None or derived_in in chapters)
+    for key, reason in derive_first.ALLOWED_EARLY.items():
+        assert key in {row[:2] for row in derive_first.DERIVED_FIRST}
+        assert len(reason) > 20
+
+
+def test_a_call_before_the_derivation_is_named_with_its_line():
+    text = myst(CALL, DERIVE)
+    problems = run({"chapter": text})
+    assert len(problems) == 1, problems
+    assert problems[0].startswith(f"notebooks/chapter.md:{line_of(text, CALL)}: ")
+    assert "calls lib.f before the chapter derives it" in problems[0]
+    assert f"notebooks/chapter.md:{line_of(text, DERIVE)}" in problems[0]
+
+
+def test_a_call_after_the_derivation_passes_in_the_next_cell_or_the_same_one():
+    assert run({"chapter": myst(DERIVE, CALL)}) == []
+    assert run({"chapter": myst(DERIVE + CALL)}) == []
+    assert len(run({"chapter": myst(CALL + DERIVE)})) == 1
+
+
+def test_a_derivation_only_in_a_solution_block_or_prose_does_not_count():
+    solution = f"```python\n{DERIVE}```\n"
+    problems = run({"chapter": myst(CALL, prose=solution)})
+    assert len(problems) == 1 and "has no code matching" in problems[0]
+
+
+def test_a_derivation_in_an_earlier_chapter_counts_and_in_a_later_one_does_not():
+    def row(where):
+        return [(*ROW[:4], where)]
+
+    texts = {"early": myst(DERIVE), "chapter": myst(CALL), "late": myst(DERIVE)}
+    assert run(texts, row("early")) == []
+    assert len(run(texts, row("late"))) == 1
+    assert len(run({"early": myst(CALL), "chapter": myst(CALL)}, row("early"))) == 1
+
+
+def test_the_allow_list_excuses_an_early_call_and_reports_itself_when_stale():
+    allowed = {("chapter", "lib.f"): "a figure helper drawn before the topic"}
+    assert run({"chapter": myst(CALL, DERIVE)}, allowed=allowed) == []
+    stale = run({"chapter": myst(DERIVE, CALL)}, allowed=allowed)
+    assert (
+        len(stale) == 1
+        and "remove ('chapter', 'lib.f') from ALLOWED_EARLY" in (stale[0])
+    )
+
+
+def test_a_row_whose_call_the_chapter_no_longer_makes_is_reported():
+    problems = run({"chapter": myst(DERIVE)})
+    assert len(problems) == 1 and "no code cell calls lib.f" in problems[0]
