@@ -16,8 +16,8 @@ Fails unless:
   - no chapter's code (its code cells and the code blocks of its prose, such as the
     solutions) imports or uses a private name of screwkit: `screwkit._x`, `sk._x`, or
     `m._x` for a module m imported from screwkit (`parallel._parallel_search`);
-  - no chapter's source contains a symbol that book/notation.md's table "One symbol per
-    concept" lists as not used in this course (its last column);
+  - no chapter's source contains a symbol that book/notation.md's section "One symbol
+    per concept" lists as not used in this course (its tables' last column);
   - no chapter calls a library function for a result before it derives it once without
     that function (the table and its allow-list are in .ci/derive_first.py);
 and, with --built DIR (the HTML book, e.g. _build/html), unless:
@@ -224,8 +224,10 @@ NOTATION_PAGE = os.path.join(os.path.dirname(__file__), "..", "book", "notation.
 def notation_alternatives(page=NOTATION_PAGE):
     """The symbols the notation page lists as not used, as {symbol: concept}.
 
-    They are the code spans of the last column of the table that follows the heading
-    "## One symbol per concept": the page is the one place the list is kept.
+    They are the code spans of the last column of the tables that follow the heading
+    "## One symbol per concept" (the second table, concept and the symbols not used,
+    kept apart so that each table fits a phone): the page is the one place the list is
+    kept.
     """
     with open(page, encoding="utf-8") as handle:
         text = handle.read()
@@ -234,7 +236,7 @@ def notation_alternatives(page=NOTATION_PAGE):
     alternatives = {}
     for line in text[start : end if end > 0 else None].splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) < 3 or set(cells[0]) <= set("-") or cells[0] == "concept":
+        if len(cells) < 2 or set(cells[0]) <= set("-") or cells[0] == "concept":
             continue
         for symbol in re.findall(r"`([^`]+)`", cells[-1]):
             alternatives[symbol] = cells[0]

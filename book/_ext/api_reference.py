@@ -41,6 +41,9 @@ helpers keep the build strict (``-W -n``) without hiding a broken reference:
   a list of ``screwkit.parallel``) has no ``#:`` comment where autodoc looks, which
   would print its type's docstring ("Convert a string or number to a floating point
   number"): it gets the ``#:`` comment of the module that assigns it instead.
+
+A constant's value longer than ``LONG_VALUE`` characters is shown below its description
+in a code block that wraps, not in the signature line (``value_lines``).
 """
 
 import ast
@@ -48,6 +51,7 @@ import importlib
 import importlib.util
 import inspect
 import pkgutil
+import pprint
 import re
 import types
 
@@ -175,6 +179,26 @@ def signature(value):
         return ""
 
 
+LONG_VALUE = 40  # characters: a longer value leaves the signature line for a block
+
+
+def value_lines(value):
+    """The directive lines that show a constant's value (none for a short one).
+
+    Autodoc writes a constant's value after its name in the signature line, where
+    Sphinx keeps each word unbroken: ``ik.dispatch.STRUCTURES`` (a dict of names to
+    solver classes) made the page 489 px wide on a 390 px phone. A value longer than
+    ``LONG_VALUE`` characters goes below the description instead, pretty-printed in
+    a code block that wraps (book.css), its dict keys in their own order.
+    """
+    if len(repr(value)) <= LONG_VALUE:
+        return []
+    text = pprint.pformat(value, width=60, sort_dicts=False)
+    body = ["      " + line if line else "" for line in text.splitlines()]
+    head = ["   :no-value:", "", "   Its value:", "", "   .. code-block:: text", ""]
+    return head + body
+
+
 def rst_lines(sections):
     lines = []
     modules = {module.__name__ for _, module, _ in sections if module is not None}
@@ -187,6 +211,8 @@ def rst_lines(sections):
                 lines.append(f".. {auto}:: {target}")
                 if auto == "autoclass":
                     lines += ["   :members:", "   :undoc-members:"]
+                if auto == "autodata":
+                    lines += value_lines(existing_object(target))
                 lines.append("")
             else:
                 where, name = target.rsplit(".", 1)

@@ -68,6 +68,19 @@ def test_an_object_is_described_where_it_is_defined():
     assert homes["screwkit.ik.subproblems.subproblem1"] == home
 
 
+def test_a_long_constant_value_leaves_the_signature_for_a_wrapping_block():
+    # ik.dispatch.STRUCTURES in the signature line made the API page 489 px wide on a
+    # 390 px phone: its value goes below, one entry a line, in the order tried
+    lines = api_reference.value_lines(sk.ik.dispatch.STRUCTURES)
+    assert lines[0] == "   :no-value:"
+    start = lines.index("   .. code-block:: text") + 2
+    body = [line.strip() for line in lines[start:]]
+    assert len(body) == len(sk.ik.dispatch.STRUCTURES)
+    for line, name in zip(body, sk.ik.dispatch.STRUCTURES):
+        assert line.lstrip("{").startswith(repr(name))
+    assert api_reference.value_lines(sk.parallel.RPR_BASE) == []  # short: stays
+
+
 def test_the_modules_are_found_on_disk():
     names = {module.__name__ for module in api_reference.public_modules(sk)}
     on_disk = set()
