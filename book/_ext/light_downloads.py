@@ -1,60 +1,30 @@
-"""Light downloads: the notebooks the download button offers, without dead weight.
+"""Light downloads: the notebooks the download button offers, ready to run.
 
-Each chapter's page offers its notebook (``_sources/notebooks/NAME.ipynb``) with its
-stored outputs. Two things in them weigh much and show nothing more:
+Each chapter's page offers its notebook (``_sources/notebooks/NAME.ipynb``). The copy
+offered carries the chapter's text and code and no outputs, as the QuantEcon lectures'
+downloads do: the page shows every output, and the notebook writes them anew when it
+is run (Run All), the same outputs, as ``make test`` (strict nbval) checks. Stored
+outputs in a download would mostly not work anyway: a downloaded notebook is untrusted,
+and Jupyter runs no script of its stored outputs (the 3D viewers, the answer boxes,
+the players of animations). The figures alone were some 4 MB of the book's copies.
 
-* screwkit's scripts inside HTML outputs (three.js, 230 kB, and the viewers' script with
-  the first 3D viewer of a chapter; the answer boxes' script with the first box). A
-  downloaded notebook is untrusted: Jupyter runs no script of its stored outputs, so
-  the viewer shows its note ("Waiting for the 3D library ...") until its cell is run,
-  which writes the output, scripts and all, anew. The copies keep the viewers' data
-  and their note, and drop the scripts.
-* figures as matplotlib writes them (RGBA PNG): they are given a palette as the book's
-  own images are (``light_pages.smaller_png``: lossless up to 256 colours, else at most
-  ``MAX_MEAN_ERROR`` per channel on average), the frames of an animation too.
-
-The notebooks of the repository are not touched: the launch buttons (Binder, Colab, a
-hub) open those, and ``make test`` checks them. This keeps the book under its size
-limit (``.ci/site_check.py``), 22 MB before.
+The notebooks of the repository keep their outputs: the launch buttons (Binder, Colab,
+a hub) open those, and ``make test`` checks them. This keeps the book under its size
+limit (``.ci/site_check.py``).
 """
 
-import base64
 import json
 import os
 
-from light_pages import DATA_IMAGE, SCREWKIT_SCRIPT, smaller_png
-
-
-def _png(data):
-    """Base64 PNG data, with a palette where that keeps the figure."""
-    smaller = smaller_png(base64.b64decode(data))
-    return base64.b64encode(smaller).decode("ascii") if smaller else data
-
-
-def _image_uri(match):
-    kind, data = match.groups()
-    return f"data:image/{kind};base64,{_png(data) if kind == 'png' else data}"
-
-
-def _text(value):
-    return "".join(value) if isinstance(value, list) else value
-
-
-def light_output(output):
-    """A code cell's output (a dict of nbformat) without screwkit's inline scripts and
-    with smaller PNG figures; changed in place."""
-    data = output.get("data") or {}
-    if "image/png" in data:
-        data["image/png"] = _png(_text(data["image/png"]).replace("\n", ""))
-    if "text/html" in data:
-        html = SCREWKIT_SCRIPT.sub("", _text(data["text/html"]))
-        data["text/html"] = DATA_IMAGE.sub(_image_uri, html)
-
 
 def light_notebook(notebook):
+    """``notebook`` (a dict of nbformat) without its code cells' outputs and execution
+    counts; changed in place and returned."""
     for cell in notebook.get("cells", []):
-        for output in cell.get("outputs", []):
-            light_output(output)
+        if cell.get("cell_type") == "code":
+            cell["outputs"] = []
+            cell["execution_count"] = None
+    notebook.get("metadata", {}).pop("widgets", None)  # the live widgets' state
     return notebook
 
 
