@@ -1,6 +1,6 @@
 """Derive, then call: a chapter computes a result before it asks screwkit for it.
 
-Issue 41: no chapter calls a library function for a result before the chapter (or one
+The rule: no chapter calls a library function for a result before the chapter (or one
 before it in _toc.yml) has derived or computed it once without that function. The
 table `DERIVED_FIRST` names each such pair: the chapter, the library call (a regex) and
 the marker of the derivation in plain NumPy/SymPy (a regex). Only the chapter's code
@@ -115,25 +115,26 @@ DERIVED_FIRST = [
 ]
 
 # (chapter, name): why the chapter may call it before its derivation. Entries that
-# begin "not yet derived" are open items of issue 41, not exceptions: remove each when
-# the chapter gains the derivation (the check then says the entry is stale).
+# begin "not yet derived" are open items (the chapter should derive it), not
+# exceptions: remove each when the chapter gains the derivation (the check then says
+# the entry is stale).
 ALLOWED_EARLY = {
     ("screws", "ScrewSystem.rank"): (
-        "not yet derived (issue 41): rank by NumPy's matrix_rank is only in"
+        "not yet derived: rank by NumPy's matrix_rank is only in"
         " exercise 7's solution; add it to 'Screw systems and their reciprocals'"
         " before the call"
     ),
     ("screws", "ScrewSystem.reciprocal"): (
-        "not yet derived (issue 41): the null space of J^T Delta is only in"
+        "not yet derived: the null space of J^T Delta is only in"
         " exercise 7's solution; add it to 'Screw systems and their reciprocals'"
         " before the call"
     ),
     ("jacobians", "jacobians.determinant_symbolic"): (
-        "not yet derived (issue 41): det A det D of the wrist-centre blocks is stated,"
+        "not yet derived: det A det D of the wrist-centre blocks is stated,"
         " not computed in SymPy, before determinant_symbolic gives it"
     ),
     ("parallel_kinematics", "workspace"): (
-        "not yet derived (issue 41): 'Workspace and singular curves' calls"
+        "not yet derived: 'Workspace and singular curves' calls"
         " .workspace (3-RPR, Stewart) before 'The Stewart platform: three"
         " workspaces' computes it with stewart_ik (`reachable`)"
     ),

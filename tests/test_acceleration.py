@@ -287,7 +287,7 @@ def test_bad_input_is_a_clear_error():
         acceleration.space_jacobian_dot(puma, [sp.S(0)] * 6, sp.S(1))
 
 
-# ---- batches too large for memory (issue 43) ----------------------------------------
+# ---- batches too large for memory ----------------------------------------
 
 SECOND_ORDER = {
     "space_hessian": 1,

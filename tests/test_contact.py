@@ -1,4 +1,4 @@
-"""screwkit.contact (issue 40): contact models, grasp matrix, form and force closure.
+"""screwkit.contact: contact models, grasp matrix, form and force closure.
 
 Every answer's certificate is checked here with NumPy alone (never by trusting the
 library's own ``verify``), and the decision is compared with an independent linear

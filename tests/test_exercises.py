@@ -93,7 +93,7 @@ CASES = [
     (1, "12 mm", False, "expected an angle (rad), found a length (mm)"),
     (2, 60, True, ""),
     (2, "pi/3 rad", True, ""),
-    # radians in a box in degrees are right (issue 42): pi/3 is 60 deg
+    # radians in a box in degrees are right: pi/3 is 60 deg
     (2, math.pi / 3, True, "read as radians"),
     (2, "2pi/3", False, "not within"),
     (3, 150, False, "looks like millimetres, metres expected"),
@@ -128,7 +128,7 @@ CASES = [
     (6, "0.1 0.7 -2.1", True, ""),
     (6, "0.1 0.7 - 2.1", False, "expected 3 numbers, got 2"),
     (1, "2pi/6", True, ""),
-    (1, "2 pi/6", True, ""),  # a number times pi, spaced (issue 42)
+    (1, "2 pi/6", True, ""),  # a number times pi, spaced
     (1, "pi/6 pi/6", False, "expected one number, got 2"),
     (5, "-pi/2", True, ""),
     (5, "- pi/2", True, ""),
@@ -174,7 +174,7 @@ CASES = [
     (14, "-1 rad", False, "not within ±0.001 rad"),
     (15, "200", True, "within ±0.5 1/s"),
     (15, "200/s", True, ""),
-    (15, "200 1/s", True, ""),  # "1/s" after a space is the unit (issue 42)
+    (15, "200 1/s", True, ""),  # "1/s" after a space is the unit
     (15, "200 1", False, "expected one number, got 2"),
     (15, "200 s^-1", True, ""),
     (15, "200 rad/s", True, ""),

@@ -222,7 +222,7 @@ def test_wrist_singularity_rule():
 
 
 def test_a_singular_answer_says_so_in_its_reason():
-    # issue 43: the docstring promises `reason` for a continuum, but a named
+    # the docstring promises `reason` for a continuum, but a named
     # structure flagged it only per solution; a regular pose keeps reason None
     q = np.array([0.2, 0.4, -1.0, 0.7, 0.0, 0.3])  # q5 = 0: q4 + q6 fixed
     solutions = puma560_ik(puma().fk(q))

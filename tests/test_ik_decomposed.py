@@ -342,7 +342,7 @@ def dh_chain(rows):
     return sk.Chain.from_table([[0.0, d, a, alpha] for d, a, alpha in rows])
 
 
-#: Arms whose axes leave them fewer than six degrees of freedom (issue 43): every
+#: Arms whose axes leave them fewer than six degrees of freedom: every
 #: pose they reach has a continuum of solutions. (rows, degrees of freedom)
 FEWER_FREEDOMS = {
     # all six axes parallel: a planar arm, 3 freedoms (the issue's reproducer)

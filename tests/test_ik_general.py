@@ -403,7 +403,7 @@ def parallel_base_arm():
 
 
 def test_the_issues_parallel_base_pose_gets_all_eight_solutions():
-    # issue 43: 4 of 8 with reason None (the backward forms of the loop gave every
+    # 4 of 8 with reason None (the backward forms of the loop gave every
     # candidate negated, and Newton polished those onto the wrong solutions)
     table, chain = parallel_base_arm()
     q = np.array([0.864816, -2.942255, -2.991873, -1.501858, -1.792111, 2.38058])
@@ -459,7 +459,7 @@ def test_a_root_that_gives_no_solution_makes_the_answer_say_so(monkeypatch):
 
 
 def test_singular_solutions_are_flagged_one_by_one():
-    # issue 43: the reason said "singular" but no solution said which
+    # the reason said "singular" but no solution said which
     puma = sk.robots.puma560()
     q = np.array([0.3, -0.5, 0.8, 0.4, 0.0, 0.2])
     result = general_6r_ik(puma, puma.fk(q))
@@ -471,7 +471,7 @@ def test_singular_solutions_are_flagged_one_by_one():
 
 
 def test_analytic_ik_of_a_general_arm_flags_its_singular_solutions():
-    # issue 43: IKSolution.singular was always () in the general engine
+    # IKSolution.singular was always () in the general engine
     table, chain = parallel_base_arm()
     q = np.array([0.3, -0.5, 0.8, 0.4, 0.0, 0.2])  # q5 = 0: the Jacobian loses rank
     F = dh_frames(table, q)[0]

@@ -263,7 +263,7 @@ def similar_hexagons():
 
 @needs_msolve
 def test_similar_hexagons_are_a_continuum_not_a_proof_of_isolated_modes():
-    # issue 43: the decimals of the floats are not similar hexagons, and the proof of
+    # the decimals of the floats are not similar hexagons, and the proof of
     # that other problem said complete=True with 4 modes at z = 0
     base, platform, lengths = similar_hexagons()
     T = np.eye(4)
@@ -314,7 +314,7 @@ def test_scaled_by_a_power_of_two_the_same_exact_problem_the_same_bits():
 @pytest.mark.parametrize("factor", [100.0, 1e-6])
 def test_in_other_units_the_same_modes_scaled(factor):
     # 100 m and 1 micrometre: floats of another problem, each entry within round-off
-    # of the scaled one, so the same modes to round-off (issue 43: right, but slow)
+    # of the scaled one, so the same modes to round-off (right, but slow)
     base, platform, lengths = scaled_home_legs()
     metres, _, _ = home_legs_modes()
     poses, complete, _ = stewart_fk_proven(

@@ -1,4 +1,4 @@
-"""screwkit.statics (issue 40): joint torques by virtual work, gravity, wrenches between
+"""screwkit.statics: joint torques by virtual work, gravity, wrenches between
 frames, transmission indices, stiffness and eigenscrews.
 
 References are independent of the code under test: finite differences of the forward

@@ -237,7 +237,7 @@ def test_bad_input_is_a_clear_error():
         tr.follow_path(sk.robots.puma560(), np.eye(4)[None], method="numeric")
 
 
-# ---- sizes and shapes refused clearly (issue 43) -------------------------------------
+# ---- sizes and shapes refused clearly -------------------------------------
 
 
 def test_too_many_times_are_refused_before_the_array_is_built():

@@ -89,7 +89,7 @@ def test_wrist_singularity_is_an_answer():
     assert singular and all(s.q[5] == 0 for s in singular)
     # the generating shoulder branch is singular, the other one is not
     assert len(singular) == 4 and all(abs(s.q[0] - q[0]) < 1e-9 for s in singular)
-    # issue 43: the answer's reason says so too, not only the solutions' flags
+    # the answer's reason says so too, not only the solutions' flags
     assert "4 of the" in solutions.reason and "continuum" in solutions.reason
 
 

@@ -8,7 +8,7 @@ chapter's exercises (tools/teacher_answers.py, .ci/check_course_edition.py); the
 patterns below let the course tests find them in the text, and :func:`old_syntax`
 gives each its number as ``**N.**`` for tests that read the text around it.
 
-Each exercise's statement begins with its tag (issue 42)::
+Each exercise's statement begins with its tag::
 
     *(KIND[, KIND ...]; difficulty N; practises: SECTION[ / SECTION ...])*
 

@@ -187,7 +187,7 @@ CASES = [
 ]
 
 #: 10^8 configurations of the PUMA, a broadcast view (no memory): every second-order
-#: function refuses it before any work (issue 43: minutes or exhausted memory before)
+#: function refuses it before any work (minutes or exhausted memory before)
 HUGE = np.broadcast_to(Q, (10**8, 6))
 #: 2 x 10^8 samples of a path or times, a broadcast view
 MANY = np.broadcast_to(0.5, (2 * 10**8,))

@@ -1,4 +1,4 @@
-"""Bad input of statics and contact (issue 40): screwkit.statics and screwkit.contact.
+"""Bad input of statics and contact: screwkit.statics and screwkit.contact.
 One row per case (tests/bad_input/rows.py): the error type and the argument its sentence
 names."""
 

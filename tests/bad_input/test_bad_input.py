@@ -83,7 +83,7 @@ SENTENCE_WORDS = ("got", "must", "undefined", "cannot")
 
 #: The longest message a row may raise (characters): a message names the argument and
 #: says what was wrong; it quotes an input only through screwkit._checks.quoted (at
-#: most QUOTE_CHARS characters), never the whole input (issue 43: 19.8 MB for an
+#: most QUOTE_CHARS characters), never the whole input (19.8 MB for an
 #: array of out-of-range times). The longest today, about 450, explain a choice of
 #: IK engines.
 MAX_MESSAGE_CHARS = 600

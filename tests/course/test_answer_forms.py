@@ -1,11 +1,12 @@
 """Every right form of an answer is accepted, in Python and in the page, from one list.
 
-tests/course/answer_forms.json holds typed answers and their verdicts (issue 42's
-list: vectors in parentheses, a unit after a whole vector, 1/s, Hz, J/s, radians in a
-box in degrees, a number times pi...); each is checked by ``sk.exercises.check`` and by
-the page's script (screwkit/static/exercises.js, run in Node) with the key the page
-gets. A generated list adds, for every key of the book, its value in its unit, in a
-scaled unit, in parentheses and with spaces: both checkers must accept them all.
+tests/course/answer_forms.json holds typed answers and their verdicts (the forms
+readers typed and were refused: vectors in parentheses, a unit after a whole vector,
+1/s, Hz, J/s, radians in a box in degrees, a number times pi...); each is checked by
+``sk.exercises.check`` and by the page's script (screwkit/static/exercises.js, run in
+Node) with the key the page gets. A generated list adds, for every key of the book,
+its value in its unit, in a scaled unit, in parentheses and with spaces: both checkers
+must accept them all.
 """
 
 import json

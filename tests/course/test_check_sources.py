@@ -327,7 +327,7 @@ def test_a_chapter_writing_an_unused_symbol_is_named(chapter, line, symbol):
     assert "book/notation.md" in problems[0]
 
 
-# Derive, then call (issue 41): .ci/derive_first.py, run by check_notebooks.
+# Derive, then call: .ci/derive_first.py, run by check_notebooks.
 _spec = importlib.util.spec_from_file_location(
     "derive_first", ROOT / ".ci" / "derive_first.py"
 )

@@ -1,4 +1,4 @@
-"""book/course_plan.md against the chapters (issue 42): every chapter of _toc.yml is
+"""book/course_plan.md against the chapters: every chapter of _toc.yml is
 the chapter of one week, every exercise a week names exists in its chapter, and every
 exercise of the course is assigned in some week's Exercises line."""
 

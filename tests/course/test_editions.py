@@ -232,7 +232,7 @@ def test_the_launch_check_tells_a_button_from_a_mention():
     assert not any(LAUNCH.search(text) for text in mentions)
 
 
-# ---- issue 42: the course edition keeps its secrets ---------------------------------
+# ---- the course edition keeps its secrets ---------------------------------
 
 sys.path.insert(0, str(ROOT / ".ci"))
 import check_course_edition as checker  # noqa: E402

@@ -1,4 +1,4 @@
-"""The problem bank (issue 42), read from the chapters' sources as the tools read them
+"""The problem bank, read from the chapters' sources as the tools read them
 (tools/exercise_syntax.py).
 
 Every exercise of every chapter of _toc.yml: (a) a well-formed tag whose sections are

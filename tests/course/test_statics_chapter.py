@@ -1,4 +1,4 @@
-"""The statics chapter's worked numbers (issue 40): the PUMA's torques printed in
+"""The statics chapter's worked numbers: the PUMA's torques printed in
 notebooks/statics.ipynb against virtual work on the PUMA written out here (Corke's DH
 table, tests/references.py, finite differences), and the wrench order as the library
 reads it: tau = J_s^T applied to (f; m) with its halves swapped."""

@@ -1,4 +1,4 @@
-"""The answer keys of the problem bank's arms (issue 42) in the PoE, PUMA FK and PUMA
+"""The answer keys of the problem bank's arms in the PoE, PUMA FK and PUMA
 IK chapters, each recomputed another way than the chapter's solution: a joint's twist
 as the velocity field of a small turn about its line, a pose by turning points with
 elementary rotations, a DH pose by the hand-multiplied link matrices of

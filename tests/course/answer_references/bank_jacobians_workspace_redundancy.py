@@ -1,4 +1,4 @@
-"""The answer keys of the problem bank's new exercises (issue 42) of the Jacobian,
+"""The answer keys of the problem bank's new exercises of the Jacobian,
 Kawasaki and redundancy chapters, each recomputed another way than its key: a central
 difference of the forward kinematics, a search over directions, a linear solve with
 screwkit's Jacobian, or a formula written here.
