@@ -72,11 +72,12 @@ _SCHEME = re.compile(r"^\*\*Mark scheme\*\* \((\d+) points?\)\s*$", re.M)
 _SCHEME_ITEM = re.compile(r"^- \(([a-z])\) (\d+) points?: \S")
 
 
-def headings(text):
-    """The texts of the ``##`` and ``###`` headings of a chapter's MyST text, code
-    (fenced blocks, code cells) left out."""
-    found, fence = [], None
-    for line in text.split("\n"):
+def _outside_fences(lines, start=0):
+    """(index, line) of each of ``lines`` from ``start`` on that is outside a code
+    fence (the fences' own lines left out)."""
+    fence = None
+    for i in range(start, len(lines)):
+        line = lines[i]
         if fence is not None:
             if line.strip() == fence:
                 fence = None
@@ -85,6 +86,14 @@ def headings(text):
         if match:
             fence = match.group(1)
             continue
+        yield i, line
+
+
+def headings(text):
+    """The texts of the ``##`` and ``###`` headings of a chapter's MyST text, code
+    (fenced blocks, code cells) left out."""
+    found = []
+    for _, line in _outside_fences(text.split("\n")):
         heading = re.match(r"^#{2,3} (.+?)\s*$", line)
         if heading:
             found.append(heading.group(1))
@@ -239,17 +248,8 @@ def _block_end(lines, start):
     """The index after a colon-fenced block opened at ``lines[start]`` (its closing
     line of the same colons), skipping code fences inside it."""
     colons = COLONS.match(lines[start]).group(1)
-    fence = None
-    for i in range(start + 1, len(lines)):
-        line = lines[i]
-        if fence is not None:
-            if line.strip() == fence:
-                fence = None
-            continue
-        match = FENCE.match(line)
-        if match:
-            fence = match.group(1)
-        elif line.strip() == colons:
+    for i, line in _outside_fences(lines, start + 1):
+        if line.strip() == colons:
             return i + 1
     raise ValueError(f"line {start + 1}: {lines[start]!r} is never closed")
 
