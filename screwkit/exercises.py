@@ -48,10 +48,27 @@ import numpy as np
 import sympy as sp
 
 from ._checks import describe
-from .motion import trajectory
-from .screws import Screw, Twist, Wrench
+
+# each chapter's module registers its parametrised exercises in GENERATORS
+from ._variants import (  # noqa: F401
+    GENERATORS,
+    configuration_space,
+    draw,
+    jacobians,
+    kawasaki_workspace,
+    lines,
+    mobility,
+    motion_in_time,
+    parallel_kinematics,
+    poe,
+    puma_fk,
+    puma_ik,
+    redundancy,
+    rigid_motions,
+    screws,
+    statics,
+)
 from .tolerances import ZERO_TOL
-from .transforms import screw_motion
 
 __all__ = [
     "Verdict",
@@ -678,9 +695,9 @@ def answer_key(chapter, number, seed=0):
     where = f"{chapter} exercise {number}"
     seed = _seed(seed)
     if entry.get("parametrised"):
-        if (chapter, int(number)) not in _PARAMETRISED:
+        if (chapter, int(number)) not in GENERATORS:
             raise ValueError(f"{where} is parametrised but has no generator")
-        numbers, _, answer = _PARAMETRISED[chapter, int(number)](_draw(seed))
+        numbers, _, answer = GENERATORS[chapter, int(number)](draw(seed))
         # rounded far inside any tolerance, so that a zero prints as 0 in the page
         values = [round(float(v), 12) + 0.0 for v in np.ravel(answer)]
         shape = list(np.shape(answer))
@@ -735,75 +752,13 @@ def answer_key(chapter, number, seed=0):
 
 
 # ---- parametrised exercises -------------------------------------------------------
-
-#: (chapter, number) -> a generator: given a random generator (None for seed 0, the
-#: chapter's own numbers), it returns the statement's numbers ({name: (value, unit)}),
-#: the statement with them, and the key, computed by screwkit (never stored).
-_PARAMETRISED = {}
-
-
-def _parametrised(chapter, number):
-    def register(generator):
-        _PARAMETRISED[chapter, number] = generator
-        return generator
-
-    return register
+# The generators live in screwkit/_variants/, one module per chapter.
 
 
 def _seed(seed):
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ValueError(f"seed must be a whole number >= 0, got {describe(seed)}")
     return int(seed)
-
-
-def _draw(seed):
-    """None for seed 0 (the numbers the chapter prints), else NumPy's generator."""
-    return None if seed == 0 else np.random.default_rng([42, seed])
-
-
-def _pick(rng, choices, default):
-    return default if rng is None else choices[int(rng.integers(len(choices)))]
-
-
-@_parametrised("rigid_motions", 2)
-def _turn_about_a_vertical_line(rng):
-    a = _pick(rng, [-2, -1, 1, 2, 3], 1)
-    b = _pick(rng, [-2, -1, 0, 1, 2], 0)
-    angle = _pick(rng, [90, 180, 270], 180)
-    origin = screw_motion([0, 0, 1], [a, b, 0], 0, math.radians(angle))[:3, 3]
-    numbers = {"a": (a, "m"), "b": (b, "m"), "angle": (angle, "deg")}
-    statement = (
-        f"A revolute joint turns about the vertical line through ({a}, {b}, 0) m. "
-        f"Where does the origin go when the joint turns by {angle} deg?"
-    )
-    return numbers, statement, [float(v) for v in origin]
-
-
-@_parametrised("screws", 6)
-def _power_of_a_force_on_a_spinning_body(rng):
-    force = _pick(rng, [5, 10, 20, 40], 10)
-    arm = _pick(rng, [0.25, 0.5, 0.75, 1.5], 0.5)
-    spin = _pick(rng, [1, 2, 3, 4], 2)
-    line = Screw.from_axis([0, 1, 0], [arm, 0, 0], 0).vector
-    power = Twist.from_vector([0, 0, spin, 0, 0, 0]) @ Wrench.from_vector(force * line)
-    numbers = {"F": (force, "N"), "x": (arm, "m"), "omega": (spin, "rad/s")}
-    statement = (
-        f"A force of {force} N along y acts through the point ({arm}, 0, 0) m on a "
-        f"body that spins at {spin} rad/s about the z axis through the origin. What "
-        f"power (W) does the force deliver?"
-    )
-    return numbers, statement, float(power)
-
-
-@_parametrised("motion_in_time", 3)
-def _peak_speed_of_a_quintic(rng):
-    duration = _pick(rng, [1.0, 1.5, 2.5, 3.0, 4.0, 5.0], 2.0)
-    numbers = {"T": (duration, "s")}
-    statement = (
-        f"The quintic time scaling of duration T = {duration:g} s: what is its "
-        f"largest ds/dt (1/s)?"
-    )
-    return numbers, statement, float(trajectory.quintic(duration).peak_velocity)
 
 
 @dataclass(frozen=True)
@@ -875,7 +830,7 @@ def variant(chapter, number, seed=0):
             f"number must be a parametrised exercise of {chapter!r} (one of "
             f"{parametrised(chapter)}), got {number}"
         )
-    numbers, statement, _ = _PARAMETRISED[chapter, int(number)](_draw(seed))
+    numbers, statement, _ = GENERATORS[chapter, int(number)](draw(seed))
     key = answer_key(chapter, number, seed)
     return Variant(chapter, int(number), seed, numbers, statement, key)
 
@@ -894,7 +849,7 @@ def parametrised(chapter=None):
     list
     """
     if chapter is None:
-        return sorted(_PARAMETRISED)
+        return sorted(GENERATORS)
     return sorted(
         int(n) for n, e in _key_file(chapter).items() if e.get("parametrised")
     )

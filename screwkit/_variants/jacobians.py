@@ -1,0 +1,1 @@
+"""The parametrised exercises of the chapter jacobians."""

@@ -1,0 +1,5 @@
+"""Independent references for the parametrised exercises of parallel_kinematics: exercise
+number -> a function of the statement's numbers ({name: (value, unit)}) giving the
+key, written here from the statement, not with the generator's code."""
+
+INDEPENDENT = {}

@@ -1,0 +1,5 @@
+"""Independent references for the parametrised exercises of puma_ik: exercise
+number -> a function of the statement's numbers ({name: (value, unit)}) giving the
+key, written here from the statement, not with the generator's code."""
+
+INDEPENDENT = {}
