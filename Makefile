@@ -47,7 +47,9 @@ test: $(STAMP)
 ## msolve and EAIK without their dependencies into .ci-nodeps, .ci/nodeps-requirements.txt
 ## says why) and Playwright (.ci/requirements.txt); a missing reference fails, never skips.
 ## Chromium's checks need the system Chromium (apt-get install chromium), else they skip
-## and say so. CI runs it.
+## and say so. make test-all TIER=slow runs only the slow tiers beside nbval: CI does, as
+## its other lane runs `make test` (the fast tier) already.
+TIER ?= all
 test-all: $(STAMP)
 	$(BIN)/python -m pip install --quiet --requirement tests/reference-requirements.txt \
 	  --requirement .ci/requirements.txt
@@ -55,7 +57,7 @@ test-all: $(STAMP)
 	  --requirement .ci/nodeps-requirements.txt
 	$(call beside_nbval,PYTHONPATH=.ci-nodeps SCREWKIT_REFERENCES=required \
 	  SCREWKIT_PROOF=required SCREWKIT_SLOW_TESTS=1 \
-	  $(PYTEST) tests screwkit --doctest-modules --tier all)
+	  $(PYTEST) tests screwkit --doctest-modules --tier $(TIER))
 
 ## make book: the HTML book in _build/html, from the notebooks' stored outputs (`make test`
 ## checks them; `make notebooks` writes them); fails on any Sphinx warning
