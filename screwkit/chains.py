@@ -46,6 +46,7 @@ from ._checks import (
     ChainType,
     describe,
 )
+from ._docstrings import fill
 from ._notation import textbook
 from .ik import newton as _newton
 from .jacobians import ROWS
@@ -62,6 +63,19 @@ from .motion import acceleration as _acceleration
 from .urdf import read_urdf
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
+
+
+def _with_sections(name, where):
+    """The Parameters and Returns of ``Chain.with_<name>``."""
+    return f"""Parameters
+----------
+{name} : array-like, shape (4, 4)
+    The rigid transform {where} (m).
+
+Returns
+-------
+Chain
+    A new chain (chains are immutable)."""
 
 
 class Chain(ChainType):
@@ -155,7 +169,7 @@ class Chain(ChainType):
         Returns
         -------
         Chain
-            The chain.
+            A DH chain (``chain.is_dh``), one link per row of the table.
 
         Examples
         --------
@@ -207,7 +221,7 @@ class Chain(ChainType):
         Returns
         -------
         Chain
-            The chain.
+            A chain of joint screws (``chain.is_dh`` is False).
 
         Examples
         --------
@@ -298,18 +312,11 @@ class Chain(ChainType):
         chain.__dict__["joint_names"] = self.joint_names
         return chain
 
+    @fill(sections=_with_sections("tool", "of the tool in the last frame"))
     def with_tool(self, tool):
         """The same chain with another tool transform.
 
-        Parameters
-        ----------
-        tool : array-like, shape (4, 4)
-            The rigid transform of the tool in the last frame (m).
-
-        Returns
-        -------
-        Chain
-            A new chain (chains are immutable).
+        {sections}
 
         Examples
         --------
@@ -317,35 +324,24 @@ class Chain(ChainType):
         at x = 2.5.
 
         >>> import screwkit as sk
-        >>> arm = sk.robots.planar([1.0, 1.0])
-        >>> tool = np.eye(4)
-        >>> tool[0, 3] = 0.5
-        >>> np.round(arm.with_tool(tool).fk([0.0, 0.0])[:3, 3], 6)
+        >>> arm = sk.robots.planar([1.0, 1.0]).with_tool(sk.transl(0.5, 0, 0))
+        >>> np.round(arm.fk([0.0, 0.0])[:3, 3], 6)
         array([2.5, 0. , 0. ])
         """
         return self._copy(tool=tool)
 
+    @fill(sections=_with_sections("base", "of the chain's base in the world frame"))
     def with_base(self, base):
         """The same chain on another base transform.
 
-        Parameters
-        ----------
-        base : array-like, shape (4, 4)
-            The rigid transform of the chain's base in the world frame (m).
-
-        Returns
-        -------
-        Chain
-            A new chain (chains are immutable).
+        {sections}
 
         Examples
         --------
         The planar 2R arm with unit links on a base 1 m up:
 
         >>> import screwkit as sk
-        >>> base = np.eye(4)
-        >>> base[2, 3] = 1.0
-        >>> arm = sk.robots.planar([1.0, 1.0]).with_base(base)
+        >>> arm = sk.robots.planar([1.0, 1.0]).with_base(sk.transl(0, 0, 1.0))
         >>> np.round(arm.fk([0.0, 0.0])[:3, 3], 6)
         array([2., 0., 1.])
         """
