@@ -15,6 +15,7 @@ import numpy as np
 
 from .._checks import as_float_array, check_chain, check_integer, check_poses
 from .._compiled import CHUNK
+from .._docstrings import fill
 from ..transforms import _skew
 from .subproblems import _dot_batch
 
@@ -40,6 +41,23 @@ def _configurations(q):
             f"q must have 6 entries, shape (6,) or (N, 6), got shape {q.shape}"
         )
     return q
+
+
+def from_chain_parameters(chain):
+    """The Parameters of an engine's ``from_chain``: the chain is ``chain`` (what
+    arm it must be), and the name of the argument."""
+    return f"""Parameters
+----------
+chain : Chain
+    {chain}
+name : str
+    The argument's name, for the messages."""
+
+
+#: The Parameters of the engine's ``from_chain``.
+_FROM_CHAIN = from_chain_parameters(
+    "An arm of the engine's structure (its module says which)."
+)
 
 
 @dataclass(frozen=True)
@@ -68,15 +86,11 @@ class ClosedFormArm:
     scale: float
 
     @classmethod
+    @fill(parameters=_FROM_CHAIN)
     def from_chain(cls, chain, name="chain"):
         """The engine of a chain: its geometry, read from its screws.
 
-        Parameters
-        ----------
-        chain : Chain
-            An arm of the engine's structure (its module says which).
-        name : str
-            The argument's name, for the messages.
+        {parameters}
 
         Returns
         -------

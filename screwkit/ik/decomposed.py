@@ -32,6 +32,7 @@ import numpy as np
 
 from .._checks import check_chain, check_poses
 from .._compiled import CHUNK, cos_sin
+from .._docstrings import fill
 from ..links import Joint
 from ..tolerances import (
     IK_ACCEPT_TOL,
@@ -41,7 +42,7 @@ from ..tolerances import (
     IK_STRUCTURE_TOL,
 )
 from ..transforms import _cross_last, _dot_last, _rotations_about, _turn_vectors
-from ._closed_form import arm_scale, pose_residual
+from ._closed_form import arm_scale, from_chain_parameters, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
 __all__ = ["DecomposedArm", "Classification", "classify"]
@@ -54,6 +55,10 @@ def _angle_order(Q):
     machine."""
     keys = np.round(Q[..., ::-1] / IK_ORDER_TOL)
     return np.lexsort(np.moveaxis(keys, -1, 0), axis=-1)
+
+
+#: The Parameters of the engine's ``from_chain``.
+_FROM_CHAIN = from_chain_parameters("A 6R arm whose :func:`classify` kind is not None.")
 
 
 @dataclass(frozen=True)
@@ -275,15 +280,11 @@ class DecomposedArm:
     chain: object
 
     @classmethod
+    @fill(parameters=_FROM_CHAIN)
     def from_chain(cls, chain, name="chain"):
         """The engine of a decomposable 6R chain.
 
-        Parameters
-        ----------
-        chain : Chain
-            A 6R arm whose :func:`classify` kind is not None.
-        name : str
-            The argument's name, for the messages.
+        {parameters}
 
         Returns
         -------
