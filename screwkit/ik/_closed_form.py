@@ -43,20 +43,29 @@ def _configurations(q):
     return q
 
 
-def from_chain_parameters(chain):
-    """The Parameters of an engine's ``from_chain``: the chain is ``chain`` (what
-    arm it must be), and the name of the argument."""
+def from_chain_sections(arm, engine, refused):
+    """The Parameters and Returns of an engine's ``from_chain``: the chain must be
+    ``arm``; ``engine`` is the class returned, ``refused`` says which chains are a
+    ValueError."""
     return f"""Parameters
 ----------
 chain : Chain
-    {chain}
+    {arm}
 name : str
-    The argument's name, for the messages."""
+    The argument's name, for the messages.
+
+Returns
+-------
+{engine}
+    The engine; {refused} is a ``ValueError``
+    that names the condition it fails."""
 
 
-#: The Parameters of the engine's ``from_chain``.
-_FROM_CHAIN = from_chain_parameters(
-    "An arm of the engine's structure (its module says which)."
+#: The Parameters and Returns of the engines' ``from_chain``.
+_FROM_CHAIN = from_chain_sections(
+    "An arm of the engine's structure (its module says which).",
+    "ClosedFormArm",
+    "a chain of another structure",
 )
 
 
@@ -86,17 +95,11 @@ class ClosedFormArm:
     scale: float
 
     @classmethod
-    @fill(parameters=_FROM_CHAIN)
+    @fill(sections=_FROM_CHAIN)
     def from_chain(cls, chain, name="chain"):
         """The engine of a chain: its geometry, read from its screws.
 
-        {parameters}
-
-        Returns
-        -------
-        ClosedFormArm
-            An instance of the engine; a chain of another structure is a ``ValueError``
-            that names the condition it fails.
+        {sections}
         """
         check_chain(chain, name)
         return cls._from_chain(chain, name)

@@ -42,10 +42,18 @@ from ..tolerances import (
     IK_STRUCTURE_TOL,
 )
 from ..transforms import _cross_last, _dot_last, _rotations_about, _turn_vectors
-from ._closed_form import arm_scale, from_chain_parameters, pose_residual
+from ._closed_form import arm_scale, from_chain_sections, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
 __all__ = ["DecomposedArm", "Classification", "classify"]
+
+
+#: The Parameters and Returns of the engine's ``from_chain``.
+_FROM_CHAIN = from_chain_sections(
+    "A 6R arm whose :func:`classify` kind is not None.",
+    "DecomposedArm",
+    "an arm of no decomposable class",
+)
 
 
 def _angle_order(Q):
@@ -55,10 +63,6 @@ def _angle_order(Q):
     machine."""
     keys = np.round(Q[..., ::-1] / IK_ORDER_TOL)
     return np.lexsort(np.moveaxis(keys, -1, 0), axis=-1)
-
-
-#: The Parameters of the engine's ``from_chain``.
-_FROM_CHAIN = from_chain_parameters("A 6R arm whose :func:`classify` kind is not None.")
 
 
 @dataclass(frozen=True)
@@ -280,16 +284,11 @@ class DecomposedArm:
     chain: object
 
     @classmethod
-    @fill(parameters=_FROM_CHAIN)
+    @fill(sections=_FROM_CHAIN)
     def from_chain(cls, chain, name="chain"):
         """The engine of a decomposable 6R chain.
 
-        {parameters}
-
-        Returns
-        -------
-        DecomposedArm
-            The engine; an arm of no decomposable class is a ``ValueError``.
+        {sections}
 
         Examples
         --------
