@@ -42,10 +42,7 @@ import sympy as sp
 from . import _exact_kinematics, _fast_kinematics
 from . import jacobians as _jacobians
 from . import links as _links
-from ._checks import (
-    ChainType,
-    describe,
-)
+from ._checks import ChainType, describe
 from ._docstrings import fill
 from ._notation import textbook
 from .ik import newton as _newton
