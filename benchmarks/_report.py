@@ -1,5 +1,7 @@
-"""Shared by the benchmark scripts: best-of timing, the table against the RTB."""
+"""Shared by the benchmark scripts: best-of timing, the table against the RTB, the
+optional peers."""
 
+import importlib
 import timeit
 
 
@@ -25,3 +27,13 @@ def print_table(rows, width=27):
             f"{task:<{width}}{ms(t_ours)}{ms(t_theirs)}{ratio}  "
             f"{path:<21}{ms(goal)}  {met}"
         )
+
+
+def peer(module, title, package):
+    """The module of an optional peer library, or None after saying it is not installed
+    (``pip install package``): the benchmark then runs without it."""
+    try:
+        return importlib.import_module(module)
+    except ImportError:
+        print(f"{title}: not installed (pip install {package})")
+        return None

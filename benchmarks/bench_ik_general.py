@@ -17,7 +17,7 @@ says so. Usage (from the top level): .venv/bin/python benchmarks/bench_ik_genera
 import time
 
 import numpy as np
-from _report import best, ms
+from _report import best, ms, peer
 
 import screwkit as sk
 from screwkit.ik.general import general_6r_ik
@@ -109,13 +109,10 @@ print(
 
 # ---- IK-Geo on the same arm and poses ----------------------------------------------
 print()
-try:
-    from ik_geo import Robot
-except ImportError:
-    print("IK-Geo: not installed (pip install ik-geo)")
-else:
+ik_geo = peer("ik_geo", "IK-Geo", "ik-geo")
+if ik_geo is not None:
     H, P, R_home = hp(arm)
-    robot = Robot.gen_six_dof(H, P)
+    robot = ik_geo.Robot.gen_six_dof(H, P)
 
     def ik_geo_all():
         # IK-Geo's bindings take the rotation transposed (row-major): checked against
@@ -152,13 +149,10 @@ else:
 
 # ---- EAIK: the general arm, then the PUMA 560 ---------------------------------------
 print()
-try:
-    from eaik.IK_HP import HPRobot
-except ImportError:
-    print("EAIK: not installed (pip install EAIK)")
-else:
+eaik = peer("eaik.IK_HP", "EAIK", "EAIK")  # not eaik itself: its __init__ needs urchin
+if eaik is not None:
     H, P, _ = hp(arm)
-    general = HPRobot(H, P)
+    general = eaik.HPRobot(H, P)
     print(
         f"EAIK on the general arm: known decomposition "
         f"{general.hasKnownDecomposition()} ({general.getKinematicFamily()}): "
@@ -167,7 +161,7 @@ else:
     puma = sk.robots.puma560()
     T_puma = puma.fk(rng.uniform(-np.pi, np.pi, (POSES, 6)))
     H, P, R_home = hp(puma)
-    robot = HPRobot(H, P)
+    robot = eaik.HPRobot(H, P)
     poses = T_puma.copy()
     poses[:, :3, :3] = T_puma[:, :3, :3] @ R_home.T
 

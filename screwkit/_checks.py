@@ -342,6 +342,15 @@ def check_chain(value, name="chain"):
     return value
 
 
+def array_of_shape(value, name, shape, what):
+    """``value`` as a float64 array of exactly ``shape``, else a ValueError: ``name``
+    must be ``what`` (which says the shape expected), and the shape given."""
+    array = as_float_array(value, name)
+    if array.shape != tuple(shape):
+        raise ValueError(f"{name} must be {what}, got shape {array.shape}")
+    return array
+
+
 def check_shape(array, name, shape):
     """Require ``array.shape`` to end with ``shape`` (leading axes are a batch)."""
     tail = array.shape[array.ndim - len(shape) :] if array.ndim >= len(shape) else None

@@ -186,8 +186,7 @@ def _point_of(v, ar):
 
 def _pencil(x, y, ar):
     """(point or None, direction or None, plane (n, d)) of the flat pencil spanned by
-    the
-    meeting lines x and y (a point at infinity: the common direction)."""
+    the meeting lines x and y (a point at infinity: the common direction)."""
     if _at_infinity(x, ar):
         x, y = y, x
     if _at_infinity(y, ar):  # x proper, y the line at infinity of planes normal to m_y
@@ -342,14 +341,7 @@ def _name(r, S, R, ar):
     if r == 2:
         G = ar.gram(S)
         if ar.rank(G) == 0:
-            point, direction, plane = _pencil(S[0], S[1], ar)
-            data = _pencil_data(point, direction, plane)
-            return (
-                "flat pencil",
-                data,
-                f"{_NAMES['flat pencil']}: "
-                f"{_pencil_words(point, direction, plane, ar)}",
-            )
+            return _pencil_class("flat pencil", S[0], S[1], ar)
         lines = [_norm_line(x, ar) for x in _isotropic(G, S[0], S[1], ar)]
         return (
             "two skew lines",
@@ -372,6 +364,14 @@ def _pencil_data(point, direction, plane):
     else:
         data["direction"] = direction
     return data
+
+
+def _pencil_class(name, x, y, ar):
+    """(name, data, words) of a class whose lines are the flat pencil spanned by the
+    meeting lines x and y (a flat pencil; the point and plane of a rank-4 system)."""
+    point, direction, plane = _pencil(x, y, ar)
+    words = _pencil_words(point, direction, plane, ar)
+    return name, _pencil_data(point, direction, plane), f"{_NAMES[name]}: {words}"
 
 
 def _rank3(S, ar):
@@ -440,14 +440,7 @@ def _rank4(R, ar):
     G = ar.gram(R)
     rank_G = ar.rank(G)
     if rank_G == 0:
-        point, direction, plane = _pencil(R[0], R[1], ar)
-        data = _pencil_data(point, direction, plane)
-        return (
-            "point and plane",
-            data,
-            f"{_NAMES['point and plane']}: "
-            f"{_pencil_words(point, direction, plane, ar)}",
-        )
+        return _pencil_class("point and plane", R[0], R[1], ar)
     if rank_G == 1:
         line = ar.null(G)[0]
         B = _hstack(R, ar)

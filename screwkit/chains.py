@@ -12,11 +12,12 @@ down, :meth:`Chain.from_screws` another. Both kinds have the same methods:
   ``(N, n)``, computed by straight-line code generated from the chain's numbers when it
   is first used (see :mod:`screwkit._compiled`; no SymPy, about a millisecond).
 
-The chain describes the arm (its constructors, description and input checks); the
-computations on it are functions of the chain in their modules, and its methods are
-those functions: the exact kinematics in :mod:`screwkit._exact_kinematics`, the fast in
-:mod:`screwkit._fast_kinematics`, the Jacobians in :mod:`screwkit.jacobians`, the second
-order in :mod:`screwkit.motion.acceleration` (``chain.fk(q)`` is
+The chain describes the arm (its constructors and description); the computations on
+it are functions of the chain in their modules, and its methods are those functions:
+the description and joint values checked in :mod:`screwkit.links`, the exact
+kinematics in :mod:`screwkit._exact_kinematics`, the fast in
+:mod:`screwkit._fast_kinematics`, the Jacobians in :mod:`screwkit.jacobians`, the
+second order in :mod:`screwkit.motion.acceleration` (``chain.fk(q)`` is
 ``_fast_kinematics.fk(chain, q)``, ``chain.space_jacobian(q)`` is
 ``sk.jacobians.space_jacobian(chain, q)``).
 
@@ -40,11 +41,9 @@ import sympy as sp
 
 from . import _exact_kinematics, _fast_kinematics
 from . import jacobians as _jacobians
-from ._checks import (
-    ChainType,
-    as_float_array,
-    describe,
-)
+from . import links as _links
+from ._checks import ChainType, describe
+from ._docstrings import fill
 from ._notation import textbook
 from .ik import newton as _newton
 from .jacobians import ROWS
@@ -52,18 +51,28 @@ from .links import (
     Convention,
     Joint,
     Link,
-    check_convention,
-    check_screws,
-    joint_kind,
-    limits_table,
+    dh_description,
     links_from_table,
     rigid,
+    screw_description,
 )
 from .motion import acceleration as _acceleration
-from .tolerances import length_scale
 from .urdf import read_urdf
 
 __all__ = ["Joint", "Convention", "Link", "Chain", "textbook", "ROWS"]
+
+
+def _with_sections(name, where):
+    """The Parameters and Returns of ``Chain.with_<name>``."""
+    return f"""Parameters
+----------
+{name} : array-like, shape (4, 4)
+    The rigid transform {where} (m).
+
+Returns
+-------
+Chain
+    A new chain (chains are immutable)."""
 
 
 class Chain(ChainType):
@@ -105,61 +114,19 @@ class Chain(ChainType):
         name="chain",
         configurations=None,
     ):
-        links = list(links) if isinstance(links, (list, tuple)) else links
-        if (
-            not isinstance(links, list)
-            or not links
-            or not all(isinstance(k, Link) for k in links)
-        ):
-            raise TypeError(
-                f"links must be a non-empty list of Link, got {describe(links)}"
-            )
-        self._setup(
-            links=tuple(links),
-            convention=check_convention(convention),
-            screws=None,
-            base=base,
-            tool=tool,
-            name=name,
-            configurations=configurations,
-            qlim=[link.qlim for link in links],
-            joints=tuple(link.joint for link in links),
-        )
+        self._setup(dh_description(links, convention), base, tool, name, configurations)
 
-    def _setup(
-        self,
-        *,
-        links,
-        convention,
-        screws,
-        base,
-        tool,
-        name,
-        configurations,
-        qlim,
-        joints,
-        home=None,
-        frame=None,
-        exact_screws=None,
-    ):
+    def _setup(self, description, base, tool, name, configurations):
+        """Keep a checked description (:func:`~screwkit.links.dh_description` or
+        :func:`~screwkit.links.screw_description`) and the options, checked."""
         if not isinstance(name, str):
             raise TypeError(f"name must be a string, got {describe(name)}")
         state = self.__dict__
-        state["links"], state["convention"] = links, convention
-        state["_screws"], state["_exact_screws"], state["_home"], state["frame"] = (
-            screws,
-            exact_screws,
-            home,
-            frame,
-        )
-        state["base"], state["tool"] = rigid(base, "base"), rigid(tool, "tool")
-        state["name"], state["joints"] = name, joints
-        state["q_symbols"] = sp.symbols(f"q1:{len(joints) + 1}", real=True)
-        limits = np.array(
-            [limit if limit else (-np.inf, np.inf) for limit in qlim], dtype=float
-        )
-        limits.setflags(write=False)
-        state["_qlim"] = limits
+        state.update(links=None, convention=None, frame=None)
+        state.update(_screws=None, _exact_screws=None, _home=None)
+        state.update(description)
+        state.update(base=rigid(base, "base"), tool=rigid(tool, "tool"), name=name)
+        state["q_symbols"] = sp.symbols(f"q1:{self.n + 1}", real=True)
         named = {}
         for key, value in (configurations or {}).items():
             named[key] = self.check_one(value, f"configurations[{key!r}]").copy()
@@ -199,7 +166,7 @@ class Chain(ChainType):
         Returns
         -------
         Chain
-            The chain.
+            A DH chain (``chain.is_dh``), one link per row of the table.
 
         Examples
         --------
@@ -251,7 +218,7 @@ class Chain(ChainType):
         Returns
         -------
         Chain
-            The chain.
+            A chain of joint screws (``chain.is_dh`` is False).
 
         Examples
         --------
@@ -266,27 +233,9 @@ class Chain(ChainType):
         >>> np.round(arm.fk([0.0, np.pi / 2])[:2, 3], 6)
         array([1., 1.])
         """
-        if frame not in ("space", "body"):
-            raise ValueError(f"frame must be 'space' or 'body', got {frame!r}")
-        screws, exact = check_screws(axes)
-        n = screws.shape[0]
-        limits = [None] * n if qlim is None else limits_table(qlim, n)
-        scale = length_scale(screws[:, 3:])
         chain = cls.__new__(cls)
-        chain._setup(
-            links=None,
-            convention=None,
-            screws=screws,
-            exact_screws=exact,
-            home=rigid(home, "home"),
-            frame=frame,
-            base=base,
-            tool=tool,
-            name=name,
-            configurations=configurations,
-            qlim=limits,
-            joints=tuple(joint_kind(s, scale) for s in screws),
-        )
+        description = screw_description(axes, home, frame, qlim)
+        chain._setup(description, base, tool, name, configurations)
         return chain
 
     @classmethod
@@ -360,18 +309,11 @@ class Chain(ChainType):
         chain.__dict__["joint_names"] = self.joint_names
         return chain
 
+    @fill(sections=_with_sections("tool", "of the tool in the last frame"))
     def with_tool(self, tool):
         """The same chain with another tool transform.
 
-        Parameters
-        ----------
-        tool : array-like, shape (4, 4)
-            The rigid transform of the tool in the last frame (m).
-
-        Returns
-        -------
-        Chain
-            A new chain (chains are immutable).
+        {sections}
 
         Examples
         --------
@@ -379,35 +321,24 @@ class Chain(ChainType):
         at x = 2.5.
 
         >>> import screwkit as sk
-        >>> arm = sk.robots.planar([1.0, 1.0])
-        >>> tool = np.eye(4)
-        >>> tool[0, 3] = 0.5
-        >>> np.round(arm.with_tool(tool).fk([0.0, 0.0])[:3, 3], 6)
+        >>> arm = sk.robots.planar([1.0, 1.0]).with_tool(sk.transl(0.5, 0, 0))
+        >>> np.round(arm.fk([0.0, 0.0])[:3, 3], 6)
         array([2.5, 0. , 0. ])
         """
         return self._copy(tool=tool)
 
+    @fill(sections=_with_sections("base", "of the chain's base in the world frame"))
     def with_base(self, base):
         """The same chain on another base transform.
 
-        Parameters
-        ----------
-        base : array-like, shape (4, 4)
-            The rigid transform of the chain's base in the world frame (m).
-
-        Returns
-        -------
-        Chain
-            A new chain (chains are immutable).
+        {sections}
 
         Examples
         --------
         The planar 2R arm with unit links on a base 1 m up:
 
         >>> import screwkit as sk
-        >>> base = np.eye(4)
-        >>> base[2, 3] = 1.0
-        >>> arm = sk.robots.planar([1.0, 1.0]).with_base(base)
+        >>> arm = sk.robots.planar([1.0, 1.0]).with_base(sk.transl(0, 0, 1.0))
         >>> np.round(arm.fk([0.0, 0.0])[:3, 3], 6)
         array([2., 0., 1.])
         """
@@ -442,100 +373,11 @@ class Chain(ChainType):
     table = _exact_kinematics.table
     _repr_html_ = _exact_kinematics._repr_html_
 
-    # ---- input checks ----------------------------------------------------------------
+    # ---- input checks (see screwkit.links) -------------------------------------------
 
-    def check_q(self, q, name="q"):
-        """``q`` checked and converted; a clear error otherwise.
-
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
-        name : str, optional
-            The argument's name in the error message.
-
-        Returns
-        -------
-        ndarray, shape (n,) or (N, n)
-            ``q`` as float64.
-
-        Examples
-        --------
-        >>> import screwkit as sk
-        >>> arm = sk.robots.planar([1.0, 1.0])
-        >>> arm.check_q([0, 1])
-        array([0., 1.])
-        >>> arm.check_q([0, 1, 2])  # doctest: +ELLIPSIS
-        Traceback (most recent call last):
-        ...
-        ValueError: q must have 2 entries for this chain, ... got shape (3,)
-        """
-        q = as_float_array(q, name)
-        if q.ndim not in (1, 2) or q.shape[-1] != self.n:
-            raise ValueError(
-                f"{name} must have {self.n} entries for this chain, shape ({self.n},) "
-                f"or (N, {self.n}), got shape {q.shape}"
-            )
-        return q
-
-    def check_one(self, q, name="q"):
-        """``q`` checked as one configuration (a batch is refused, clearly).
-
-        Parameters
-        ----------
-        q : array-like, shape (n,)
-            Joint values (rad or m).
-        name : str, optional
-            The argument's name in the error message.
-
-        Returns
-        -------
-        ndarray, shape (n,)
-            ``q`` as float64.
-
-        Examples
-        --------
-        >>> import screwkit as sk
-        >>> arm = sk.robots.planar([1.0, 1.0])
-        >>> arm.check_one([0, 1])
-        array([0., 1.])
-        >>> arm.check_one([[0, 1], [1, 0]])
-        Traceback (most recent call last):
-        ...
-        ValueError: q must be one configuration of shape (2,), got shape (2, 2)
-        """
-        q = self.check_q(q, name)
-        if q.ndim != 1:
-            raise ValueError(
-                f"{name} must be one configuration of shape ({self.n},), got shape "
-                f"{q.shape}"
-            )
-        return q
-
-    def within_limits(self, q):
-        """Whether every joint of q lies within its limits.
-
-        Parameters
-        ----------
-        q : array-like, shape (n,) or (N, n)
-            Joint values (rad or m).
-
-        Returns
-        -------
-        bool or ndarray of bool, shape (N,)
-            True where every joint is within its limits.
-
-        Examples
-        --------
-        A planar 2R arm whose joints turn within +-90 degrees:
-
-        >>> import screwkit as sk
-        >>> arm = sk.robots.planar([1.0, 1.0], qlim=[(-np.pi / 2, np.pi / 2)] * 2)
-        >>> arm.within_limits([[0.0, 1.0], [0.0, 2.0]])
-        array([ True, False])
-        """
-        q = self.check_q(q)
-        return np.all((q >= self._qlim[:, 0]) & (q <= self._qlim[:, 1]), axis=-1)
+    check_q = _links.check_q
+    check_one = _links.check_one
+    within_limits = _links.within_limits
 
     # ---- exact -----------------------------------------------------------------------
 

@@ -6,9 +6,12 @@
   named a :class:`Joint` kind by its pitch: revolute (0), helical (finite) or prismatic
   (omega = 0).
 
-:mod:`screwkit.chains` builds chains from either. Every DH link is also, numerically, a
-pre transform, a joint twist and a post transform: A(q) = pre exp([X] (q + offset)) post
-(:func:`dh_factors`), which is how a DH chain joins the product of exponentials.
+:mod:`screwkit.chains` builds chains from either (:func:`dh_description`,
+:func:`screw_description`); a chain's joint values are checked here too
+(:func:`check_q`, the Chain's method of that name). Every DH link is also,
+numerically, a pre transform, a joint twist and a post transform:
+A(q) = pre exp([X] (q + offset)) post (:func:`dh_factors`), which is how a DH chain
+joins the product of exponentials.
 """
 
 import enum
@@ -18,9 +21,9 @@ import numpy as np
 import sympy as sp
 
 from ._checks import as_float_array, check_poses, describe, real_number
-from ._docstrings import fill
+from ._docstrings import CHAIN, CHAIN_Q, fill
 from .screws import Screw
-from .tolerances import QUARTER_TURN_TOL, UNIT_SCREW_TOL, ZERO_TOL
+from .tolerances import QUARTER_TURN_TOL, UNIT_SCREW_TOL, ZERO_TOL, length_scale
 from .transforms import _cross
 
 __all__ = ["Joint", "Convention", "Link"]
@@ -553,3 +556,146 @@ def links_from_table(table, joints=None, qlim=None):
                 Link.prismatic(theta=theta, a=a, alpha=alpha, offset=d, qlim=limit)
             )
     return links
+
+
+# ---- a chain's description and joint values (the Chain's constructors and checks) ----
+
+
+def _limits_array(qlim):
+    """The (n, 2) read-only float table of limits (min, max) or None: +-inf for none."""
+    limits = np.array(
+        [limit if limit else (-np.inf, np.inf) for limit in qlim], dtype=float
+    )
+    limits.setflags(write=False)
+    return limits
+
+
+def dh_description(links, convention):
+    """What a :class:`~screwkit.chains.Chain` keeps of a DH table, checked: its
+    links, convention, joint kinds and limits (the chain's attributes by name)."""
+    links = list(links) if isinstance(links, (list, tuple)) else links
+    if (
+        not isinstance(links, list)
+        or not links
+        or not all(isinstance(k, Link) for k in links)
+    ):
+        raise TypeError(
+            f"links must be a non-empty list of Link, got {describe(links)}"
+        )
+    return dict(
+        links=tuple(links),
+        convention=check_convention(convention),
+        joints=tuple(link.joint for link in links),
+        _qlim=_limits_array([link.qlim for link in links]),
+    )
+
+
+def screw_description(axes, home, frame, qlim):
+    """What a :class:`~screwkit.chains.Chain` keeps of joint screws, checked: the
+    screws (floats and exact), home pose, frame, joint kinds and limits."""
+    if frame not in ("space", "body"):
+        raise ValueError(f"frame must be 'space' or 'body', got {frame!r}")
+    screws, exact = check_screws(axes)
+    n = screws.shape[0]
+    limits = [None] * n if qlim is None else limits_table(qlim, n)
+    scale = length_scale(screws[:, 3:])
+    return dict(
+        _screws=screws,
+        _exact_screws=exact,
+        _home=rigid(home, "home"),
+        frame=frame,
+        joints=tuple(joint_kind(s, scale) for s in screws),
+        _qlim=_limits_array(limits),
+    )
+
+
+def _joint_values(shape):
+    """The Parameters and Returns of a check of joint values of ``shape``."""
+    return (
+        CHAIN
+        + f"""
+q : array-like, shape {shape}
+    Joint values (rad or m).
+name : str, optional
+    The argument's name in the error message.
+
+Returns
+-------
+ndarray, shape {shape}
+    ``q`` as float64."""
+    )
+
+
+@fill(sections=_joint_values("(n,) or (N, n)"))
+def check_q(chain, q, name="q"):
+    """``q`` checked and converted; a clear error otherwise.
+
+    {sections}
+
+    Examples
+    --------
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0])
+    >>> arm.check_q([0, 1])
+    array([0., 1.])
+    >>> arm.check_q([0, 1, 2])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: q must have 2 entries for this chain, ... got shape (3,)
+    """
+    q = as_float_array(q, name)
+    if q.ndim not in (1, 2) or q.shape[-1] != chain.n:
+        raise ValueError(
+            f"{name} must have {chain.n} entries for this chain, shape ({chain.n},) "
+            f"or (N, {chain.n}), got shape {q.shape}"
+        )
+    return q
+
+
+@fill(sections=_joint_values("(n,)"))
+def check_one(chain, q, name="q"):
+    """``q`` checked as one configuration (a batch is refused, clearly).
+
+    {sections}
+
+    Examples
+    --------
+    A batch of two configurations of the planar 2R arm, where one is meant:
+
+    >>> import screwkit as sk
+    >>> sk.robots.planar([1.0, 1.0]).check_one([[0, 1], [1, 0]])
+    Traceback (most recent call last):
+    ...
+    ValueError: q must be one configuration of shape (2,), got shape (2, 2)
+    """
+    q = check_q(chain, q, name)
+    if q.ndim != 1:
+        raise ValueError(
+            f"{name} must be one configuration of shape ({chain.n},), got shape "
+            f"{q.shape}"
+        )
+    return q
+
+
+@fill(parameters=CHAIN_Q)
+def within_limits(chain, q):
+    """Whether every joint of q lies within its limits.
+
+    {parameters}
+
+    Returns
+    -------
+    bool or ndarray of bool, shape (N,)
+        True where every joint is within its limits.
+
+    Examples
+    --------
+    A planar 2R arm whose joints turn within +-90 degrees:
+
+    >>> import screwkit as sk
+    >>> arm = sk.robots.planar([1.0, 1.0], qlim=[(-np.pi / 2, np.pi / 2)] * 2)
+    >>> arm.within_limits([[0.0, 1.0], [0.0, 2.0]])
+    array([ True, False])
+    """
+    q = check_q(chain, q)
+    return np.all((q >= chain._qlim[:, 0]) & (q <= chain._qlim[:, 1]), axis=-1)

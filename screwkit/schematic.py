@@ -16,11 +16,17 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from ._checks import describe
+from ._docstrings import fill
 
 #: Colours of the links, the joints, the frames' x and z axes and the dimensions.
 LINK, JOINT, X_AXIS, Z_AXIS, DIMENSION = "0.35", "k", "tab:red", "tab:blue", "0.3"
 MAX_WIDTH = 6.6  #: the widest sketch (inches), plotting.COLUMN_WIDTH
 _SQUARE = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)])
+#: The Parameters a joint's drawing begins with (``{joint_at}``).
+_JOINT_AT = """ax : matplotlib.axes.Axes
+    The sketch's axes.
+xy : (float, float)
+    Where the joint is (m)."""
 
 
 def _point(value, name):
@@ -152,15 +158,13 @@ def _box(ax, centre, along, long, fill, gid):
     ax.add_patch(plt.Polygon(corners, fc=fill, ec=JOINT, lw=1.5, zorder=3, gid=gid))
 
 
+@fill(joint_at=_JOINT_AT)
 def revolute(ax, xy, axis="out"):
     """Draw a revolute joint.
 
     Parameters
     ----------
-    ax : matplotlib.axes.Axes
-        The sketch's axes.
-    xy : (float, float)
-        Where the joint is (m).
+    {joint_at}
     axis : "out" or (float, float), optional
         "out": the axis is normal to the page (a circle with a dot); a direction of
         the page: a short cylinder along it.
@@ -193,15 +197,13 @@ def revolute(ax, xy, axis="out"):
         _box(ax, centre, _unit(axis, "axis"), 1.3, "white", "joint-revolute")
 
 
+@fill(joint_at=_JOINT_AT)
 def prismatic(ax, xy, direction):
     """Draw a prismatic joint.
 
     Parameters
     ----------
-    ax : matplotlib.axes.Axes
-        The sketch's axes.
-    xy : (float, float)
-        Where the joint is (m).
+    {joint_at}
     direction : (float, float) or "in" or "out"
         Its direction of sliding: a direction of the page (a sleeve along it), or into
         or out of the page (a square with a cross or a dot).

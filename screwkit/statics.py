@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import (
+    array_of_shape,
     as_float_array,
     check_chain,
     check_option,
@@ -109,10 +110,7 @@ def _six(value, name):
 
 
 def _three(value, name, what):
-    v = as_float_array(value, name)
-    if v.shape != (3,):
-        raise ValueError(f"{name} must be {what}, a 3-vector, got shape {v.shape}")
-    return v
+    return array_of_shape(value, name, (3,), f"{what}, a 3-vector")
 
 
 def wrench_at(wrench, T):

@@ -55,9 +55,9 @@ ORDER = [
     # ik.newton (numeric IK) needs of a chain only its methods: Chain.numeric_ik calls
     # it; the entry point of screwkit.ik loads only it and the subproblems at the top
     # (the closed form on first use), so chains can import it; urdf is read by
-    # Chain.from_urdf; the computations on a chain (jacobians, motion.acceleration and
-    # the exact and fast kinematics) take it as their first argument and import no
-    # chain: the Chain's methods are these functions
+    # Chain.from_urdf; the computations on a chain (links' checks of its joint values,
+    # jacobians, motion.acceleration and the exact and fast kinematics) take it as
+    # their first argument and import no chain: the Chain's methods are these functions
     (
         "chains",
         [

@@ -15,6 +15,7 @@ import numpy as np
 
 from .._checks import as_float_array, check_chain, check_integer, check_poses
 from .._compiled import CHUNK
+from .._docstrings import fill
 from ..transforms import _skew
 from .subproblems import _dot_batch
 
@@ -40,6 +41,32 @@ def _configurations(q):
             f"q must have 6 entries, shape (6,) or (N, 6), got shape {q.shape}"
         )
     return q
+
+
+def from_chain_sections(arm, engine, refused):
+    """The Parameters and Returns of an engine's ``from_chain``: the chain must be
+    ``arm``; ``engine`` is the class returned, ``refused`` says which chains are a
+    ValueError."""
+    return f"""Parameters
+----------
+chain : Chain
+    {arm}
+name : str
+    The argument's name, for the messages.
+
+Returns
+-------
+{engine}
+    The engine; {refused} is a ``ValueError``
+    that names the condition it fails."""
+
+
+#: The Parameters and Returns of the engines' ``from_chain``.
+_FROM_CHAIN = from_chain_sections(
+    "An arm of the engine's structure (its module says which).",
+    "ClosedFormArm",
+    "a chain of another structure",
+)
 
 
 @dataclass(frozen=True)
@@ -68,21 +95,11 @@ class ClosedFormArm:
     scale: float
 
     @classmethod
+    @fill(sections=_FROM_CHAIN)
     def from_chain(cls, chain, name="chain"):
         """The engine of a chain: its geometry, read from its screws.
 
-        Parameters
-        ----------
-        chain : Chain
-            An arm of the engine's structure (its module says which).
-        name : str
-            The argument's name, for the messages.
-
-        Returns
-        -------
-        ClosedFormArm
-            An instance of the engine; a chain of another structure is a ``ValueError``
-            that names the condition it fails.
+        {sections}
         """
         check_chain(chain, name)
         return cls._from_chain(chain, name)

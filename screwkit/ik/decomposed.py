@@ -32,6 +32,7 @@ import numpy as np
 
 from .._checks import check_chain, check_poses
 from .._compiled import CHUNK, cos_sin
+from .._docstrings import fill
 from ..links import Joint
 from ..tolerances import (
     IK_ACCEPT_TOL,
@@ -41,10 +42,18 @@ from ..tolerances import (
     IK_STRUCTURE_TOL,
 )
 from ..transforms import _cross_last, _dot_last, _rotations_about, _turn_vectors
-from ._closed_form import arm_scale, pose_residual
+from ._closed_form import arm_scale, from_chain_sections, pose_residual
 from .subproblems import _angle_about, meeting_points, three_cones, two_pairs
 
 __all__ = ["DecomposedArm", "Classification", "classify"]
+
+
+#: The Parameters and Returns of the engine's ``from_chain``.
+_FROM_CHAIN = from_chain_sections(
+    "A 6R arm whose :func:`classify` kind is not None.",
+    "DecomposedArm",
+    "an arm of no decomposable class",
+)
 
 
 def _angle_order(Q):
@@ -275,20 +284,11 @@ class DecomposedArm:
     chain: object
 
     @classmethod
+    @fill(sections=_FROM_CHAIN)
     def from_chain(cls, chain, name="chain"):
         """The engine of a decomposable 6R chain.
 
-        Parameters
-        ----------
-        chain : Chain
-            A 6R arm whose :func:`classify` kind is not None.
-        name : str
-            The argument's name, for the messages.
-
-        Returns
-        -------
-        DecomposedArm
-            The engine; an arm of no decomposable class is a ``ValueError``.
+        {sections}
 
         Examples
         --------

@@ -51,7 +51,7 @@ import numpy as np
 import sympy as sp
 
 from .._checks import (
-    as_float_array,
+    array_of_shape,
     check_option,
     check_positive,
     quoted,
@@ -224,22 +224,13 @@ def _pose(x, y):
 
 
 def _check_points(value, name, rows, columns):
-    array = as_float_array(value, name)
-    if array.shape != (rows, columns):
-        raise ValueError(
-            f"{name} must be {rows} points, an array of shape ({rows}, {columns}) "
-            f"(m), got shape {array.shape}"
-        )
-    return array
+    what = f"{rows} points, an array of shape ({rows}, {columns}) (m)"
+    return array_of_shape(value, name, (rows, columns), what)
 
 
 def _check_lengths(value, name, count):
-    array = as_float_array(value, name)
-    if array.shape != (count,):
-        raise ValueError(
-            f"{name} must be {count} leg lengths, shape ({count},) (m), got shape "
-            f"{array.shape}"
-        )
+    what = f"{count} leg lengths, shape ({count},) (m)"
+    array = array_of_shape(value, name, (count,), what)
     if np.any(array <= 0):
         raise ValueError(
             f"{name} must be positive leg lengths (m), got {quoted(array)}"

@@ -52,23 +52,17 @@ def row(case_id, call, error, name, match=None, gap=None):
     return Row(case_id, call, error, name, match, gap)
 
 
+# ---- one call, several bad inputs: a row per case ----------------------------------
+# Each builder below makes one row per entry of ``cases``, with the id
+# ``id_format.format(case)`` (e.g. ``"numeric {}"``). ``call`` is a lambda written in
+# the table, so that the coverage test sees the table call screwkit; ``match`` is a
+# pattern or None, as for :func:`row`.
+
+
 def keyword_rows(id_format, call, cases):
-    """Rows that each pass ``call`` one bad keyword argument.
-
-    Parameters
-    ----------
-    id_format : str
-        The rows' ids, ``id_format.format(case)``, e.g. ``"numeric {}"``.
-    call : callable
-        Takes the keyword argument, e.g. ``lambda **kw: sk.f(puma(), **kw)``.
-    cases : list of tuple
-        ``(case, keyword, value, error, match)``; each row's message must name the
-        keyword.
-
-    Returns
-    -------
-    list of Row
-    """
+    """Rows that each pass ``call`` one bad keyword argument, as
+    ``(case, keyword, value, error, match)`` in ``cases``; the message must name the
+    keyword. E.g. ``call = lambda **kw: sk.f(puma(), **kw)``."""
     return [
         row(
             id_format.format(case),
@@ -78,4 +72,24 @@ def keyword_rows(id_format, call, cases):
             match,
         )
         for case, keyword, value, error, match in cases
+    ]
+
+
+def value_rows(id_format, call, name, cases):
+    """Rows that each pass ``call`` one bad value of the argument ``name``, as
+    ``(case, value, error, match)`` in ``cases``. E.g.
+    ``call = lambda R: sk.homogeneous(R)``."""
+    return [
+        row(id_format.format(case), lambda value=value: call(value), error, name, match)
+        for case, value, error, match in cases
+    ]
+
+
+def argument_rows(id_format, call, cases):
+    """Rows that each call ``call(*args)``, one of the arguments bad, as
+    ``(case, args, error, name, match)`` in ``cases``: ``name`` the argument the
+    message must name. E.g. ``call = lambda p, q: ln.Line.through(p, q)``."""
+    return [
+        row(id_format.format(case), lambda args=args: call(*args), error, name, match)
+        for case, args, error, name, match in cases
     ]

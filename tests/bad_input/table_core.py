@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import sympy as sp  # noqa: E402
 from builders import planar, puma  # noqa: E402
-from rows import keyword_rows, row  # noqa: E402
+from rows import keyword_rows, row, value_rows  # noqa: E402
 
 import screwkit as sk  # noqa: E402
 from screwkit import plotting as pl  # noqa: E402
@@ -180,38 +180,25 @@ TRANSFORMS = [
     row("transl-inf", lambda: sk.transl([np.inf, 0, 0]), ValueError, "p"),
     row("transl-bool", lambda: sk.transl([True, 0, 0]), TypeError, "p"),
     row("transl-nan-x", lambda: sk.transl(np.nan, 0, 0), ValueError, "x"),
-    row(
-        "homogeneous-not-rotation",
-        lambda: sk.homogeneous(np.ones((3, 3))),
-        ValueError,
+    *value_rows(
+        "homogeneous-{}",
+        lambda R: sk.homogeneous(R),
         "R",
-    ),
-    row(
-        "homogeneous-reflection",
-        lambda: sk.homogeneous(np.diag([1, 1, -1])),
-        ValueError,
-        "R",
-    ),
-    row("homogeneous-2x2", lambda: sk.homogeneous(np.eye(2)), ValueError, "R"),
-    row(
-        "homogeneous-sympy-not-rotation",
-        lambda: sk.homogeneous(sp.Matrix([[theta, 0, 0], [0, 1, 0], [0, 0, 1]])),
-        ValueError,
-        "R",
-    ),
-    row("homogeneous-R-str", lambda: sk.homogeneous("eye"), TypeError, "R"),
-    row(
-        "homogeneous-R-nan",
-        lambda: sk.homogeneous(np.full((3, 3), np.nan)),
-        ValueError,
-        "R",
-    ),
-    row("homogeneous-R-scaled", lambda: sk.homogeneous(2 * np.eye(3)), ValueError, "R"),
-    row(
-        "homogeneous-R-complex",
-        lambda: sk.homogeneous(np.eye(3) * (1 + 0j)),
-        TypeError,
-        "R",
+        [
+            ("not-rotation", np.ones((3, 3)), ValueError, None),
+            ("reflection", np.diag([1, 1, -1]), ValueError, None),
+            ("2x2", np.eye(2), ValueError, None),
+            (
+                "sympy-not-rotation",
+                sp.Matrix([[theta, 0, 0], [0, 1, 0], [0, 0, 1]]),
+                ValueError,
+                None,
+            ),
+            ("R-str", "eye", TypeError, None),
+            ("R-nan", np.full((3, 3), np.nan), ValueError, None),
+            ("R-scaled", 2 * np.eye(3), ValueError, None),
+            ("R-complex", np.eye(3) * (1 + 0j), TypeError, None),
+        ],
     ),
     row("homogeneous-p-short", lambda: sk.homogeneous(None, [1, 2]), ValueError, "p"),
     row("homogeneous-p-str", lambda: sk.homogeneous(None, "a"), TypeError, "p"),
@@ -856,13 +843,15 @@ REDUNDANCY = [
         TypeError,
         "arm",
     ),
-    row("pinv-J-3x3", lambda: rd.pseudo_inverse(np.eye(3)), ValueError, "J"),
-    row("pinv-J-str", lambda: rd.pseudo_inverse("J"), TypeError, "J"),
-    row(
-        "pinv-J-nan",
-        lambda: rd.pseudo_inverse(np.full((2, 3), np.nan)),
-        ValueError,
+    *value_rows(
+        "pinv-J-{}",
+        lambda J: rd.pseudo_inverse(J),
         "J",
+        [
+            ("3x3", np.eye(3), ValueError, None),
+            ("str", "J", TypeError, None),
+            ("nan", np.full((2, 3), np.nan), ValueError, None),
+        ],
     ),
     row(
         "pinv-damping-nan",

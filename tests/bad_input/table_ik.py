@@ -5,7 +5,7 @@ import functools
 
 import numpy as np
 from builders import planar, puma, puma_offset_wrist
-from rows import keyword_rows, row
+from rows import keyword_rows, row, value_rows
 
 import screwkit as sk
 from screwkit import ik
@@ -117,34 +117,45 @@ ROWS = [
             ),
         ],
     ),
-    row(
-        "chain of 3 joints",
-        lambda: ik.analytic_ik(planar_3r(), t0()),
-        ValueError,
+    # a chain the closed form cannot take, built when the row runs
+    *value_rows(
+        "{}",
+        lambda chain: ik.analytic_ik(chain(), t0()),
         "chain",
-        match="chain must have 6 joints for the closed form, got 3",
+        [
+            (
+                "chain of 3 joints",
+                planar_3r,
+                ValueError,
+                "chain must have 6 joints for the closed form, got 3",
+            ),
+            (
+                "prismatic joint",
+                prismatic,
+                ValueError,
+                "chain must have revolute joints only",
+            ),
+        ],
     ),
-    row(
-        "prismatic joint",
-        lambda: ik.analytic_ik(prismatic(), t0()),
-        ValueError,
+    *value_rows(
+        "{}",
+        lambda chain: ik.spherical_wrist.SphericalWristArm.from_chain(chain()),
         "chain",
-        match="chain must have revolute joints only",
-    ),
-    row(
-        "wrist axes miss",
-        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(puma_offset_wrist()),
-        ValueError,
-        "chain",
-        match="chain must have a spherical wrist: "
-        "the axes of joints 4, 5 and 6 must meet",
-    ),
-    row(
-        "joints 2, 3 not parallel",
-        lambda: ik.spherical_wrist.SphericalWristArm.from_chain(twisted()),
-        ValueError,
-        "chain",
-        match="chain must have parallel axes for joints 2 and 3",
+        [
+            (
+                "wrist axes miss",
+                puma_offset_wrist,
+                ValueError,
+                "chain must have a spherical wrist: "
+                "the axes of joints 4, 5 and 6 must meet",
+            ),
+            (
+                "joints 2, 3 not parallel",
+                twisted,
+                ValueError,
+                "chain must have parallel axes for joints 2 and 3",
+            ),
+        ],
     ),
     row(
         "config q short",
@@ -204,54 +215,44 @@ ROWS = [
             ),
         ],
     ),
-    row(
-        "subproblem twist shape",
-        lambda: ik.subproblem1([0, 0, 1], [1, 0, 0], [0, 1, 0]),
-        ValueError,
+    # the subproblems, one bad argument each
+    *value_rows(
+        "subproblem {}",
+        lambda twist: ik.subproblem1(twist, [1, 0, 0], [0, 1, 0]),
         "twist",
-        match=r"twist must be a twist of shape \(6,\)",
+        [
+            (
+                "twist shape",
+                [0, 0, 1],
+                ValueError,
+                r"twist must be a twist of shape \(6,\)",
+            ),
+            (
+                "twist not unit",
+                [0, 0, 2, 0, 0, 0],
+                ValueError,
+                "twist must have a unit angular part",
+            ),
+            ("helical", [0, 0, 1, 0, 0, 0.1], ValueError, "twist must have pitch 0"),
+        ],
     ),
-    row(
-        "subproblem twist not unit",
-        lambda: ik.subproblem1([0, 0, 2, 0, 0, 0], [1, 0, 0], [0, 1, 0]),
-        ValueError,
-        "twist",
-        match="twist must have a unit angular part",
-    ),
-    row(
-        "subproblem helical",
-        lambda: ik.subproblem1([0, 0, 1, 0, 0, 0.1], [1, 0, 0], [0, 1, 0]),
-        ValueError,
-        "twist",
-        match="twist must have pitch 0",
-    ),
-    row(
-        "subproblem point",
-        lambda: ik.subproblem1(Z_AXIS, [1, 0], [0, 1, 0]),
-        ValueError,
+    *value_rows(
+        "subproblem {}",
+        lambda p: ik.subproblem1(Z_AXIS, p, [0, 1, 0]),
         "p",
-        match=r"p must be a point of shape \(3,\)",
+        [
+            ("point", [1, 0], ValueError, r"p must be a point of shape \(3,\)"),
+            ("point text", "p", TypeError, "p must be a number or an array"),
+        ],
     ),
-    row(
-        "subproblem point text",
-        lambda: ik.subproblem1(Z_AXIS, "p", [0, 1, 0]),
-        TypeError,
-        "p",
-        match="p must be a number or an array",
-    ),
-    row(
-        "subproblem3 delta < 0",
-        lambda: ik.subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], -1.0),
-        ValueError,
+    *value_rows(
+        "subproblem3 {}",
+        lambda delta: ik.subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], delta),
         "delta",
-        match="delta must be a distance >= 0",
-    ),
-    row(
-        "subproblem3 delta array",
-        lambda: ik.subproblem3(Z_AXIS, [1, 0, 0], [2, 0, 0], [1, 2]),
-        TypeError,
-        "delta",
-        match="delta must be one distance",
+        [
+            ("delta < 0", -1.0, ValueError, "delta must be a distance >= 0"),
+            ("delta array", [1, 2], TypeError, "delta must be one distance"),
+        ],
     ),
     row(
         "subproblem2 parallel",

@@ -5,7 +5,7 @@ import functools
 
 import numpy as np
 from builders import planar, puma, puma_offset_wrist
-from rows import row
+from rows import keyword_rows, row, value_rows
 
 import screwkit as sk
 from screwkit import ik
@@ -86,26 +86,52 @@ ROWS = [
         "d",
         match=r"d must have shape \(2,\)",
     ),
-    row(
-        "7R without fixed",
-        lambda: ik.analytic_ik(iiwa(), t7()),
-        ValueError,
+    # analytic_ik of the 7R iiwa: the joint to fix, then the other options
+    *value_rows(
+        "{}",
+        lambda fixed: ik.analytic_ik(iiwa(), t7(), fixed=fixed),
         "fixed",
-        match="fixed must name one joint of a 7-joint chain",
+        [
+            (
+                "7R without fixed",
+                None,
+                ValueError,
+                "fixed must name one joint of a 7-joint chain",
+            ),
+            (
+                "fixed not a dict",
+                [2, 0.0],
+                TypeError,
+                "fixed must be a dict of one entry",
+            ),
+            (
+                "fixed joint out of range",
+                {9: 0.0},
+                ValueError,
+                "fixed must name a joint index 0 ... 6, got 9",
+            ),
+            ("fixed value text", {2: "zero"}, TypeError, None),
+            (
+                "fixed value an array",
+                {0: [1, 2]},
+                ValueError,
+                r"fixed must map the joint index to one angle .* shape \(2,\)",
+            ),
+        ],
     ),
-    row(
-        "fixed not a dict",
-        lambda: ik.analytic_ik(iiwa(), t7(), fixed=[2, 0.0]),
-        TypeError,
-        "fixed",
-        match="fixed must be a dict of one entry",
-    ),
-    row(
-        "fixed joint out of range",
-        lambda: ik.analytic_ik(iiwa(), t7(), fixed={9: 0.0}),
-        ValueError,
-        "fixed",
-        match="fixed must name a joint index 0 ... 6, got 9",
+    *keyword_rows(
+        "7R {}",
+        lambda **kw: ik.analytic_ik(iiwa(), t7(), fixed={2: 0.0}, **kw),
+        [
+            (
+                "near wrong length",
+                "near",
+                np.zeros(6),
+                ValueError,
+                "near must be a joint vector of 7 entries",
+            ),
+            ("within_limits not bool", "within_limits", "no", TypeError, None),
+        ],
     ),
     row(
         "fixed on a 6R",
@@ -113,12 +139,6 @@ ROWS = [
         ValueError,
         "fixed",
         match="fixed is for a chain of 7 joints, got 6",
-    ),
-    row(
-        "fixed value text",
-        lambda: ik.analytic_ik(iiwa(), t7(), fixed={2: "zero"}),
-        TypeError,
-        "fixed",
     ),
     row(
         "classify 3 joints",
@@ -163,26 +183,6 @@ ROWS = [
         ValueError,
         "chain",
         match="chain must be an arm of the STRUCTURES",
-    ),
-    row(
-        "fixed value an array",
-        lambda: ik.analytic_ik(iiwa(), t7(), fixed={0: [1, 2]}),
-        ValueError,
-        "fixed",
-        match=r"fixed must map the joint index to one angle .* shape \(2,\)",
-    ),
-    row(
-        "7R near wrong length",
-        lambda: ik.analytic_ik(iiwa(), t7(), fixed={2: 0.0}, near=np.zeros(6)),
-        ValueError,
-        "near",
-        match="near must be a joint vector of 7 entries",
-    ),
-    row(
-        "7R within_limits not bool",
-        lambda: ik.analytic_ik(iiwa(), t7(), fixed={2: 0.0}, within_limits="no"),
-        TypeError,
-        "within_limits",
     ),
     row(
         "7R T not rigid",

@@ -5,7 +5,7 @@ import functools
 
 import numpy as np
 from builders import planar, puma
-from rows import row
+from rows import keyword_rows, row
 
 import screwkit as sk
 from screwkit import ik
@@ -98,18 +98,19 @@ ROWS = [
             *((f"T-{c}", puma, pose, e, "T", m) for c, pose, e, m in BAD_POSE),
         ]
     ),
-    row(
-        "analytic_ik-general-arm-near-wrong-length",
-        lambda: ik.analytic_ik(general_arm(), t0(), near=[0.0] * 5),
-        ValueError,
-        "near",
-        match="near must be a joint vector of 6 entries",
-    ),
-    row(
-        "analytic_ik-general-arm-within_limits-not-bool",
-        lambda: ik.analytic_ik(general_arm(), t0(), within_limits=1.5),
-        TypeError,
-        "within_limits",
+    *keyword_rows(
+        "analytic_ik-general-arm-{}",
+        lambda **kw: ik.analytic_ik(general_arm(), t0(), **kw),
+        [
+            (
+                "near-wrong-length",
+                "near",
+                [0.0] * 5,
+                ValueError,
+                "near must be a joint vector of 6 entries",
+            ),
+            ("within_limits-not-bool", "within_limits", 1.5, TypeError, None),
+        ],
     ),
     row(
         "analytic_ik-general-arm-T-10^8-poses-broadcast",

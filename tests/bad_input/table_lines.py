@@ -6,7 +6,7 @@ import matplotlib
 matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 import sympy as sp  # noqa: E402
-from rows import row  # noqa: E402
+from rows import argument_rows, row, value_rows  # noqa: E402
 
 from screwkit import ScrewSystem  # noqa: E402
 from screwkit import lines as ln  # noqa: E402
@@ -26,9 +26,11 @@ def cylindroid():
 
 
 ROWS = [
-    *(
-        row(f"Line-{case}", lambda p=p: ln.Line(p), error, "plucker", match=match)
-        for case, p, error, match in [
+    *value_rows(
+        "Line-{}",
+        lambda p: ln.Line(p),
+        "plucker",
+        [
             ("zero-direction", [0, 0, 0, 1, 0, 0], ValueError, "non-zero direction"),
             ("klein", [0, 0, 1, 0, 0, 1], ValueError, "Klein quadric"),
             ("klein-float", [0, 0, 1.0, 0, 0, 0.5], ValueError, "Klein quadric"),
@@ -37,50 +39,33 @@ ROWS = [
             ("strings", ["0", 0, 1, 0, 0, 0], TypeError, None),
             ("symbol", [0, 0, 1, a, 0, 0], ValueError, "no value"),
             ("shape", [0, 0, 1], ValueError, "shape"),
-        ]
+        ],
     ),
-    row(
-        "through-same-point",
-        lambda: ln.Line.through([1, 2, 3], [1, 2, 3]),
-        ValueError,
-        "q",
-        match="differ",
+    *argument_rows(
+        "through-{}",
+        lambda p, q: ln.Line.through(p, q),
+        [
+            ("same-point", ([1, 2, 3], [1, 2, 3]), ValueError, "q", "differ"),
+            ("shape", ([1, 2], [1, 2, 3]), ValueError, "p", None),
+            ("nan", ([1, 2, np.nan], [0, 0, 0.5]), ValueError, "p", "finite"),
+        ],
     ),
-    row("through-shape", lambda: ln.Line.through([1, 2], [1, 2, 3]), ValueError, "p"),
-    row(
-        "through-nan",
-        lambda: ln.Line.through([1, 2, np.nan], [0, 0, 0.5]),
-        ValueError,
-        "p",
-        match="finite",
+    *argument_rows(
+        "from_point_direction-{}",
+        lambda p, d: ln.Line.from_point_direction(p, d),
+        [
+            ("zero", ([1, 2, 3], [0, 0, 0]), ValueError, "d", "non-zero"),
+            ("symbol", ([a, 2, 3], [0, 0, 1]), ValueError, "p", "no value"),
+        ],
     ),
-    row(
-        "from_point_direction-zero",
-        lambda: ln.Line.from_point_direction([1, 2, 3], [0, 0, 0]),
-        ValueError,
-        "d",
-        match="non-zero",
-    ),
-    row(
-        "from_point_direction-symbol",
-        lambda: ln.Line.from_point_direction([a, 2, 3], [0, 0, 1]),
-        ValueError,
-        "p",
-        match="no value",
-    ),
-    *(
-        row(
-            f"from_planes-{case}",
-            lambda args=args: ln.Line.from_planes(*args),
-            error,
-            name,
-            match=match,
-        )
-        for case, args, error, name, match in [
+    *argument_rows(
+        "from_planes-{}",
+        lambda *planes: ln.Line.from_planes(*planes),
+        [
             ("parallel", ([0, 0, 1], 0, [0, 0, 2], 1), ValueError, "n2", "parallel"),
             ("zero", ([0, 0, 0], 0, [0, 0, 2], 1), ValueError, "n1", "non-zero"),
             ("string", ([0, 0, 1], "1", [1, 0, 0], 1), TypeError, "d1", None),
-        ]
+        ],
     ),
     row("screw-string", lambda: x_axis().screw("0"), TypeError, "h"),
     row("screw-kind", lambda: x_axis().screw(0, kind=str), TypeError, "kind"),
@@ -116,20 +101,16 @@ ROWS = [
         match="Klein",
     ),
     row("intersection-none", lambda: ln.intersection(x_axis(), None), TypeError, "b"),
-    *(
-        row(
-            f"central_axis-{case}",
-            lambda w=w: ln.central_axis(w),
-            error,
-            "wrench",
-            match=match,
-        )
-        for case, w, error, match in [
+    *value_rows(
+        "central_axis-{}",
+        lambda wrench: ln.central_axis(wrench),
+        "wrench",
+        [
             ("zero", [0, 0, 0, 0, 0, 0], ValueError, "zero"),
             ("string", "wrench", TypeError, None),
             ("nan", [1.0, 0, 0, 0, np.nan, 0], ValueError, "finite"),
             ("symbol", [a, 0, 0, 0, 0, 0], ValueError, "no value"),
-        ]
+        ],
     ),
     row("dependency-empty", lambda: ln.dependency([]), ValueError, "lines"),
     row("dependency-string", lambda: ln.dependency("legs"), TypeError, "lines"),
