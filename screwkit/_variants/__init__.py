@@ -31,3 +31,8 @@ def draw(seed):
 def pick(rng, choices, default):
     """``default`` for seed 0 (``rng`` None), else one of ``choices``, drawn."""
     return default if rng is None else choices[int(rng.integers(len(choices)))]
+
+
+def units(unit, **values):
+    """The statement's numbers ``{name: (value, unit)}``, all in one unit."""
+    return {name: (value, unit) for name, value in values.items()}

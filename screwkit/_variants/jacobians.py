@@ -4,7 +4,7 @@ import numpy as np
 
 from ..robots import planar
 from ..statics import joint_torques
-from . import pick, register
+from . import pick, register, units
 
 
 @register("jacobians", 10)
@@ -16,14 +16,11 @@ def tip_velocity_of_a_two_link_arm(rng):
     rate1, rate2 = pick(rng, [(1, 1), (1, -1), (2, 1), (1, 2), (-1, 2)], (1, 1))
     J = planar([l1, l2]).jacobian_rows(np.radians([q1, q2]), "position")[:2]
     velocity = J @ np.array([rate1, rate2], dtype=float)
-    numbers = {
-        "l1": (l1, "m"),
-        "l2": (l2, "m"),
-        "q1": (q1, "deg"),
-        "q2": (q2, "deg"),
-        "qdot1": (rate1, "rad/s"),
-        "qdot2": (rate2, "rad/s"),
-    }
+    numbers = (
+        units("m", l1=l1, l2=l2)
+        | units("deg", q1=q1, q2=q2)
+        | units("rad/s", qdot1=rate1, qdot2=rate2)
+    )
     statement = (
         f"A two-link arm, l1 = {l1} m and l2 = {l2} m, is at q = ({q1} deg, {q2} "
         f"deg). Write its 2 x 2 Jacobian from the joint positions (column i is "
@@ -41,12 +38,7 @@ def torques_of_a_push_on_a_table(rng):
     push = pick(rng, [10, 20, 30, 40], 20)
     q = np.radians([q1, -q1])
     tau = joint_torques(planar([l1, l2]), q, force=[0.0, -push, 0.0])
-    numbers = {
-        "l1": (l1, "m"),
-        "l2": (l2, "m"),
-        "q1": (q1, "deg"),
-        "F": (push, "N"),
-    }
+    numbers = units("m", l1=l1, l2=l2) | units("deg", q1=q1) | units("N", F=push)
     statement = (
         f"A two-link arm, l1 = {l1} m and l2 = {l2} m at q = ({q1} deg, -{q1} deg) "
         f"(its second link horizontal), presses its tip down on a table: the force "
@@ -66,12 +58,7 @@ def elbow_rate_near_the_stretched_arm(rng):
     tip = arm.fk(q)[:2, 3]
     J = arm.jacobian_rows(q, "position")[:2]
     rates = np.linalg.solve(J, -speed * tip / np.linalg.norm(tip))
-    numbers = {
-        "l1": (l1, "m"),
-        "l2": (l2, "m"),
-        "q2": (q2, "deg"),
-        "speed": (speed, "m/s"),
-    }
+    numbers = units("m", l1=l1, l2=l2) | units("deg", q2=q2) | units("m/s", speed=speed)
     statement = (
         f"A two-link arm, l1 = {l1} m and l2 = {l2} m, is at q = (0, {q2} deg) and "
         f"its tip must move straight toward the base at {speed} m/s. The distance "

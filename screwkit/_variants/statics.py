@@ -4,7 +4,7 @@ import numpy as np
 
 from ..robots import planar
 from ..statics import compliance_at_tool, gravity_torques, joint_torques
-from . import pick, register
+from . import pick, register, units
 
 
 @register("statics", 1)
@@ -16,13 +16,7 @@ def shoulder_torque_of_a_push_on_a_wall(rng):
     push = pick(rng, [5, 10, 20, 25], 10)
     q = np.radians([q1, q2])
     tau = joint_torques(planar([l1, l2]), q, force=[push, 0.0, 0.0])
-    numbers = {
-        "l1": (l1, "m"),
-        "l2": (l2, "m"),
-        "q1": (q1, "deg"),
-        "q2": (q2, "deg"),
-        "f": (push, "N"),
-    }
+    numbers = units("m", l1=l1, l2=l2) | units("deg", q1=q1, q2=q2) | units("N", f=push)
     statement = (
         f"A planar two-link arm, l1 = {l1} m and l2 = {l2} m, at q = ({q1} deg, "
         f"{q2} deg) pushes with its tip on a wall with the force f = ({push}, 0) N. "
@@ -39,7 +33,7 @@ def shoulder_torque_holding_a_load(rng):
     mass = pick(rng, [1, 2, 3, 4, 5], 3)
     gravity = [0.0, -9.81, 0.0]  # the arm's plane is x-y: gravity along -y
     tau = gravity_torques(planar([l1, l2]), [0.0, 0.0], [(2, mass, [0, 0, 0])], gravity)
-    numbers = {"l1": (l1, "m"), "l2": (l2, "m"), "M": (mass, "kg")}
+    numbers = units("m", l1=l1, l2=l2) | units("kg", M=mass)
     statement = (
         f"A planar two-link arm in a vertical plane, l1 = {l1} m and l2 = {l2} m, "
         f"stretched horizontally (q = (0, 0)), holds a {mass} kg load at its tip "
@@ -54,7 +48,7 @@ def rotational_stiffness_of_two_joint_springs(rng):
     k2 = pick(rng, [150, 250, 600, 800], 600)
     # any two-link arm away from its singularity: a couple turns the tool alike
     C = compliance_at_tool(planar([0.5, 0.3]), [0.4, 1.1], [k1, k2])
-    numbers = {"k1": (k1, "N m/rad"), "k2": (k2, "N m/rad")}
+    numbers = units("N m/rad", k1=k1, k2=k2)
     statement = (
         f"A planar two-link arm has joint springs k1 = {k1} and k2 = {k2} N m/rad. "
         f"A pure couple acts on its tool and the tip may move freely. What is the "
