@@ -119,16 +119,6 @@ DERIVED_FIRST = [
 # exceptions: remove each when the chapter gains the derivation (the check then says
 # the entry is stale).
 ALLOWED_EARLY = {
-    ("screws", "ScrewSystem.rank"): (
-        "not yet derived: rank by NumPy's matrix_rank is only in"
-        " exercise 7's solution; add it to 'Screw systems and their reciprocals'"
-        " before the call"
-    ),
-    ("screws", "ScrewSystem.reciprocal"): (
-        "not yet derived: the null space of J^T Delta is only in"
-        " exercise 7's solution; add it to 'Screw systems and their reciprocals'"
-        " before the call"
-    ),
     ("jacobians", "jacobians.determinant_symbolic"): (
         "not yet derived: det A det D of the wrist-centre blocks is stated,"
         " not computed in SymPy, before determinant_symbolic gives it"
