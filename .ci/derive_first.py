@@ -119,10 +119,6 @@ DERIVED_FIRST = [
 # exceptions: remove each when the chapter gains the derivation (the check then says
 # the entry is stale).
 ALLOWED_EARLY = {
-    ("jacobians", "jacobians.determinant_symbolic"): (
-        "not yet derived: det A det D of the wrist-centre blocks is stated,"
-        " not computed in SymPy, before determinant_symbolic gives it"
-    ),
     ("parallel_kinematics", "workspace"): (
         "not yet derived: 'Workspace and singular curves' calls"
         " .workspace (3-RPR, Stewart) before 'The Stewart platform: three"
