@@ -109,7 +109,7 @@ DERIVED_FIRST = [
         "parallel_kinematics",
         "workspace",
         r"\.workspace\(",
-        r"def reachable\(",
+        r"def (rpr_)?reachable\(",  # the 3-RPR's, then the Stewart's
         None,
     ),
 ]
@@ -118,27 +118,7 @@ DERIVED_FIRST = [
 # begin "not yet derived" are open items (the chapter should derive it), not
 # exceptions: remove each when the chapter gains the derivation (the check then says
 # the entry is stale).
-ALLOWED_EARLY = {
-    ("screws", "ScrewSystem.rank"): (
-        "not yet derived: rank by NumPy's matrix_rank is only in"
-        " exercise 7's solution; add it to 'Screw systems and their reciprocals'"
-        " before the call"
-    ),
-    ("screws", "ScrewSystem.reciprocal"): (
-        "not yet derived: the null space of J^T Delta is only in"
-        " exercise 7's solution; add it to 'Screw systems and their reciprocals'"
-        " before the call"
-    ),
-    ("jacobians", "jacobians.determinant_symbolic"): (
-        "not yet derived: det A det D of the wrist-centre blocks is stated,"
-        " not computed in SymPy, before determinant_symbolic gives it"
-    ),
-    ("parallel_kinematics", "workspace"): (
-        "not yet derived: 'Workspace and singular curves' calls"
-        " .workspace (3-RPR, Stewart) before 'The Stewart platform: three"
-        " workspaces' computes it with stewart_ik (`reachable`)"
-    ),
-}
+ALLOWED_EARLY = {}
 
 
 def toc_chapters(root=ROOT):

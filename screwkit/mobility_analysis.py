@@ -208,18 +208,20 @@ class Mobility:
         rows = []
         for title, prefix, systems in steps:
             tables = "".join(
-                '<td style="vertical-align:top;padding-right:1.5em">'
+                "<div>"
                 + html_table(
                     s.basis(),
                     (f"{prefix} {i}: " if prefix else "") + f"{s.noun} {s.rank}-system",
                 )
-                + "</td>"
+                + "</div>"
                 for i, s in enumerate(systems, 1)
             )
-            rows.append(
-                f"<p><b>{title}</b></p>"
-                f'<div style="overflow-x:auto"><table><tr>{tables}</tr></table></div>'
+            # side by side, wrapping to the next line on a narrow page (a phone)
+            box = (
+                "display:flex;flex-wrap:wrap;align-items:flex-start;"
+                "column-gap:1.5em;overflow-x:auto"
             )
+            rows.append(f'<p><b>{title}</b></p><div style="{box}">{tables}</div>')
         title = (
             f"Mobility {self.number} ({self.type}): "
             f"{', '.join(self.directions) or 'none'}"

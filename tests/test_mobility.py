@@ -321,6 +321,8 @@ def test_typeset_results_keep_the_plain_text_for_terminals():
         html.count('<table class="screwkit-system"') == 3 + 3 + 2
         and "Mobility 3 (3T)" in html
     )
+    # a step's tables wrap onto the next line on a phone, not one row of an outer table
+    assert html.count("flex-wrap:wrap") == 4 and "<tr><td" not in html
     latex = m._repr_latex_()
     assert latex.startswith("$\\begin{array}") and latex.count("matrix}") == 2 * 8
 

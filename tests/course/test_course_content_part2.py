@@ -95,7 +95,9 @@ def test_mobility_explains_the_parallelogram_as_a_uu_chain_and_checks_it():
     assert "universal joint" in section and "3-system" in section
     checked = [text for code, text, _ in outputs("mobility") if "five = " in code]
     assert len(checked) == 1
-    assert checked[0].count("span the limb's twist system: True") == 3
+    # one header, then one line a limb (44 characters at most: a phone)
+    assert "P, U at A1, U at B1 span the limb's LTS:\n" in checked[0]
+    assert [f"  limb {i}: True" in checked[0] for i in (1, 2, 3)] == [True] * 3
 
 
 def _gain_table():
