@@ -34,8 +34,8 @@ def distance_constraints_in_space(rng):
     coordinates = 3 * points
     numbers = {"n": (points, "")}
     statement = (
-        f"{points} points of a rigid body in space, not all in one plane: how many "
-        f"independent distance constraints tie their {coordinates} coordinates?"
+        f"Take {points} points of a rigid body in space, not all in one plane: how "
+        f"many independent distance constraints tie their {coordinates} coordinates?"
     )
     # the coordinates less the freedoms of a rigid body in space
     return numbers, statement, float(coordinates - _freedoms_of_a_free_body(6))
