@@ -71,6 +71,27 @@ DERIVED_FIRST = [
         None,
     ),
     (
+        "puma_ik",
+        "ik.subproblem5",
+        r"sk\.ik\.subproblem5\(",
+        r"def my_subproblem5\(",
+        None,
+    ),
+    (
+        "puma_ik",
+        "ik.subproblem6",
+        r"sk\.ik\.subproblem6\(",
+        r"def my_subproblem6\(",
+        None,
+    ),
+    (
+        "puma_ik",
+        "ik.general_6r_ik",
+        r"sk\.ik\.general_6r_ik\(",
+        r"def my_general_6r\(",
+        None,
+    ),
+    (
         "jacobians",
         "jacobians.determinant_symbolic",
         r"determinant_symbolic\(",
