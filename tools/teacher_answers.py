@@ -201,14 +201,16 @@ def notebook_figures(chapter):
 
 
 def _alt_text(alt):
-    """``alt`` as the text of a Markdown image: one line, every ASCII punctuation
-    mark escaped (no bracket ends it, no dollar opens a formula)."""
-    return re.sub(r"([!-/:-@\[-`{-~])", r"\\\1", " ".join(alt.split()))
+    """``alt`` as the text of a Markdown image: one line, its marks that Markdown
+    would read escaped (no bracket ends it, no dollar opens a formula, no star or
+    underscore makes emphasis, no angle bracket or ampersand makes HTML)."""
+    return re.sub(r"([\\`*_\[\]<>&$!])", r"\\\1", " ".join(alt.split()))
 
 
 def drawing_markdown(code, images, name, figures):
-    """A drawing cell in Markdown: its images, files ``figures/NAME-K.png`` (K from
-    1; their base64 text kept in ``figures``, {path: png}), then its code, folded."""
+    """A code cell in Markdown: its images, files ``figures/NAME-K.png`` (K from 1;
+    their base64 text kept in ``figures``, {path: png}), then its code, folded
+    under them (a cell that draws nothing: its code alone)."""
     out = []
     for alt, png in images:
         drawn = sum(path.startswith(f"figures/{name}-") for path in figures)
@@ -216,8 +218,10 @@ def drawing_markdown(code, images, name, figures):
         figures[path] = png
         alt = alt or f"A figure of {name.replace('-', ' ')} (the chapter gives no alt)"
         out += [f"![{_alt_text(alt)}]({path})", ""]
-    summary = "Drawn in the chapter by" if images else "A code cell of the chapter"
-    out += [f"<details><summary>{summary}</summary>", "", "```python", code, "```"]
+    fenced = ["```python", code, "```"]
+    if not images:
+        return "\n".join(fenced)
+    out += ["<details><summary>Drawn in the chapter by</summary>", "", *fenced]
     return "\n".join(out + ["", "</details>"])
 
 

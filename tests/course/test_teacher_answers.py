@@ -138,8 +138,14 @@ def test_answers_html_typesets_its_formulas_alone(answers, tmp_path, chromium):
         " body.querySelectorAll('pre, code, mjx-container')"
         ".forEach(e => e.remove()); return body.textContent; }"
     )
+    # every figure decoded and drawn from the data inside the file
+    broken = page.evaluate(
+        "() => [...document.images].filter(i => !i.complete || !i.naturalWidth)"
+        ".map(i => i.alt)"
+    )
     assert [url for url in requests if url != path.as_uri()] == []
     assert typeset > 100 and errors == 0
+    assert page.locator("img").count() >= 100 and broken == []
     assert "\\(" not in left and "\\[" not in left
 
 
@@ -188,15 +194,20 @@ def test_a_figure_exercise_shows_its_image_with_its_alt_text(answers, folder):
 
 
 def test_a_gated_solution_shows_its_drawing(tool, tmp_path, monkeypatch):
-    # a made-up chapter whose solution runs a drawing cell (solution-start/-end)
+    # a made-up chapter whose solution runs a drawing cell and a cell that prints
+    # (solution-start/-end)
     (tmp_path / "notebooks").mkdir()
     cell = "```{code-cell} ipython3\n:tags: [hide-input]\n\nplt.plot([0, 1])\n```"
+    printing = "```{code-cell} ipython3\nprint(2)\n```"
     source = (
         ":::{exercise}\n:label: demo-exercise-1\n\n*(by hand; difficulty 1; "
         "practises: A)*\nDraw it.\n:::\n\n:::{solution-start} demo-exercise-1\n"
-        f":class: dropdown\n:::\n\nThe line:\n\n{cell}\n\n:::{{solution-end}}\n:::\n"
+        f":class: dropdown\n:::\n\nThe line:\n\n{cell}\n\nIts rise:\n\n{printing}\n\n"
+        ":::{solution-end}\n:::\n"
     )
     png = base64.b64encode(b"\x89PNG\r\n\x1a\nmade up").decode()
+    # an alt text with what Markdown and HTML would read: it comes through as written
+    alt = "A [rising] *line*_x: $1$ <b> & \\ done!"
     notebook = {
         "cells": [
             {
@@ -205,9 +216,16 @@ def test_a_gated_solution_shows_its_drawing(tool, tmp_path, monkeypatch):
             },
             {
                 "cell_type": "code",
-                "metadata": {"mystnb": {"image": {"alt": "A [rising] line: $1$."}}},
+                "metadata": {"mystnb": {"image": {"alt": alt}}},
                 "source": "plt.plot([0, 1])",
                 "outputs": [{"data": {"image/png": png + "\n"}}],
+            },
+            {"cell_type": "markdown", "source": "Its rise:"},
+            {
+                "cell_type": "code",
+                "metadata": {},
+                "source": "print(2)",
+                "outputs": [{"output_type": "stream", "text": "2\n"}],
             },
             {"cell_type": "markdown", "source": ":::{solution-end}\n:::"},
         ]
@@ -215,18 +233,17 @@ def test_a_gated_solution_shows_its_drawing(tool, tmp_path, monkeypatch):
     (tmp_path / "notebooks" / "demo.ipynb").write_text(json.dumps(notebook))
     monkeypatch.setattr(tool, "ROOT", str(tmp_path))
     stored = tool.notebook_figures("demo")
-    assert stored == {
-        ("solution", "demo-exercise-1"): [[("A [rising] line: $1$.", png)]]
-    }
+    assert stored == {("solution", "demo-exercise-1"): [[(alt, png)], []]}
     (exercise,) = tool.read_exercises(source, "demo")
     figures = {}
     text = tool.solution_markdown("demo", exercise, stored, figures)
     assert figures == {"figures/demo-solution-1-1.png": png}
-    assert "{code-cell}" not in text and "plt.plot([0, 1])" in text
+    assert "{code-cell}" not in text and ":tags:" not in text
+    # the drawing's code folded under its image, the other cell's code as it is
+    assert text.index("](figures/demo-solution-1-1.png)") < text.index("plt.plot(")
+    assert "```python\nprint(2)\n```" in text and text.count("<details>") == 1
     page = tool.answers_html(text, "", figures)
-    assert (
-        f'<img src="data:image/png;base64,{png}" alt="A [rising] line: $1$.">' in page
-    )
+    assert f'<img src="data:image/png;base64,{png}" alt="{html.escape(alt)}">' in page
     # a notebook out of step with its source is refused, naming the command
     with pytest.raises(SystemExit, match="make notebooks"):
         tool.solution_markdown("demo", exercise, {}, {})
