@@ -193,6 +193,20 @@ def test_a_figure_exercise_shows_its_image_with_its_alt_text(answers, folder):
     )
 
 
+def test_every_figure_exercise_shows_an_image(folder):
+    text = (folder / "answers.md").read_text(encoding="utf-8")
+    without, count = [], 0
+    for part in re.split(r"\n### ", text)[1:]:
+        chapter = re.match(r".*\(`(\w+)`\)\n", part).group(1)
+        for exercise in re.split(r"\n#### ", part)[1:]:
+            kinds = exercise.split("\n\n*", 1)[1].split(" · ", 1)[0].split(", ")
+            if "figure" in kinds:
+                count += 1
+                if "](figures/" not in exercise:
+                    without.append((chapter, exercise.split("\n", 1)[0]))
+    assert count >= 100 and without == [], without
+
+
 def test_a_gated_solution_shows_its_drawing(tool, tmp_path, monkeypatch):
     # a made-up chapter whose solution runs a drawing cell and a cell that prints
     # (solution-start/-end)
