@@ -11,7 +11,12 @@ writes them for the teacher, chapter by chapter in the order of _toc.yml, to
 ``_build/answers/answers.md`` and ``answers.html``. The HTML file carries MathJax inside
 it (the self-contained TeX-to-SVG build, every TeX extension, from the same
 sphinx-mathjax-offline package the book serves MathJax from), so its formulas show
-wherever the file is copied or mailed, with no network and no book beside it.
+wherever the file is copied or mailed, with no network and no book beside it. So do
+its figures: the drawings that the chapters' code cells make inside an exercise or a
+solution (``exercise-start``/``-end``, ``solution-start``/``-end``) are the PNG outputs
+stored in notebooks/CHAPTER.ipynb, matched to their exercise by those markers and put in
+answers.html as data URIs, with the cells' alt text; answers.md shows the same images
+from the files beside it, ``figures/CHAPTER-exercise-N-K.png``.
 
 The keys of the assessed exercises are not in the package (a student's screwkit has
 none): they live in book/teacher_keys/, which screwkit reads from this checkout.
@@ -27,11 +32,15 @@ Usage: python tools/teacher_answers.py [OUTPUT_DIR] [--seeds CSV]
 """
 
 import argparse
+import base64
+import binascii
 import csv
 import html
 import importlib.util
+import json
 import os
 import re
+import shutil
 import sys
 
 import yaml
@@ -137,22 +146,138 @@ def header(exercise):
     return "*" + " · ".join(words) + "*"
 
 
-def figure_code(cells):
-    """The code of an exercise's cells that draw (not its answer box), fenced."""
-    blocks, current = [], None
-    for line in cells:
+def code_cells(lines):
+    """The code of each code cell among ``lines`` (a chapter's MyST lines), its
+    options (tags, alt text) left out, in order."""
+    cells, current = [], None
+    for line in lines:
         if current is None:
             current = [] if line.startswith("```{code-cell}") else None
         elif line.startswith("```"):
-            if not any("answer_box(" in c for c in current):
-                blocks.append("```python\n" + "\n".join(current).strip() + "\n```")
+            cells.append("\n".join(current).strip())
             current = None
         elif not line.startswith(":"):  # the cell's options (tags, alt text)
             current.append(line)
-    return "\n\n".join(blocks)
+    return cells
 
 
-def answers_markdown():
+#: The opening or the end of a gated exercise or solution, whose code cells the
+#: notebook runs: ``:::{exercise-start}`` (its label on a ``:label:`` line below it),
+#: ``:::{solution-start} LABEL``, ``:::{exercise-end}``, ``:::{solution-end}``.
+GATE = re.compile(r"^:{3,}\{(exercise|solution)-(start|end)\}\s*(\S*)\s*$")
+LABEL = re.compile(r"^:label:\s*(\S+)\s*$")
+
+
+def notebook_figures(chapter):
+    """The figures that notebooks/CHAPTER.ipynb stores for the code cells inside its
+    exercises and solutions: {(kind, label): [[(alt, png), ...] for each code cell]},
+    kind ``"exercise"`` or ``"solution"``, png an image/png output (base64 text) and
+    alt the cell's alt text (``mystnb: image: alt``), or None."""
+    path = os.path.join(ROOT, "notebooks", f"{chapter}.ipynb")
+    with open(path, encoding="utf-8") as f:
+        cells = json.load(f)["cells"]
+    found, block = {}, None
+    for cell in cells:
+        if cell["cell_type"] == "markdown":
+            fenced = False
+            for line in "".join(cell["source"]).split("\n"):
+                fenced ^= line.startswith("```")
+                gate = None if fenced else GATE.match(line)
+                if gate:
+                    kind, edge, label = gate.groups()
+                    block = [kind, label or None] if edge == "start" else None
+                elif block and block[1] is None and LABEL.match(line):
+                    block[1] = LABEL.match(line).group(1)
+        elif cell["cell_type"] == "code" and block:
+            alt = cell["metadata"].get("mystnb", {}).get("image", {}).get("alt")
+            images = []
+            for output in cell.get("outputs", []):
+                png = output.get("data", {}).get("image/png")
+                if png:
+                    png = "".join(png) if isinstance(png, list) else png
+                    images.append((alt, "".join(png.split())))
+            found.setdefault(tuple(block), []).append(images)
+    return found
+
+
+def _alt_text(alt):
+    """``alt`` as the text of a Markdown image: one line, its marks that Markdown
+    would read escaped (no bracket ends it, no dollar opens a formula, no star or
+    underscore makes emphasis, no angle bracket or ampersand makes HTML)."""
+    return re.sub(r"([\\`*_\[\]<>&$!])", r"\\\1", " ".join(alt.split()))
+
+
+def drawing_markdown(code, images, name, figures):
+    """A code cell in Markdown: its images, files ``figures/NAME-K.png`` (K from 1;
+    their base64 text kept in ``figures``, {path: png}), then its code, folded
+    under them (a cell that draws nothing: its code alone)."""
+    out = []
+    for alt, png in images:
+        drawn = sum(path.startswith(f"figures/{name}-") for path in figures)
+        path = f"figures/{name}-{drawn + 1}.png"
+        figures[path] = png
+        alt = alt or f"A figure of {name.replace('-', ' ')} (the chapter gives no alt)"
+        out += [f"![{_alt_text(alt)}]({path})", ""]
+    fenced = ["```python", code, "```"]
+    if not images:
+        return "\n".join(fenced)
+    out += ["<details><summary>Drawn in the chapter by</summary>", "", *fenced]
+    return "\n".join(out + ["", "</details>"])
+
+
+def figures_of(chapter, kind, label, codes, stored):
+    """The image lists of the code cells of one exercise or solution, ``codes`` (from
+    the .md), which ``stored`` (:func:`notebook_figures`) must match one to one."""
+    images = stored.get((kind, label), [])
+    if len(images) != len(codes):
+        raise SystemExit(
+            f"notebooks/{chapter}.ipynb has {len(images)} code cells in the {kind} "
+            f"{label} and notebooks/{chapter}.md has {len(codes)}: run `make "
+            f"notebooks` (or tools/execute_notebooks.py notebooks/{chapter}.md)"
+        )
+    return images
+
+
+def exercise_figures(chapter, exercise, stored, figures):
+    """The Markdown of an exercise's drawings (its answer box's cell left out)."""
+    codes = code_cells(exercise["cells"])
+    images = figures_of(chapter, "exercise", exercise["label"], codes, stored)
+    name = f"{chapter}-exercise-{exercise['number']}"
+    return "\n\n".join(
+        drawing_markdown(code, pictures, name, figures)
+        for code, pictures in zip(codes, images, strict=True)
+        if "answer_box(" not in code
+    )
+
+
+def solution_markdown(chapter, exercise, stored, figures):
+    """An exercise's solution, each of its code cells (a gated solution's) replaced
+    by its drawings and its folded code."""
+    solution = exercise["solution"]
+    if solution is None:
+        return "(none written)"
+    lines = solution.split("\n")
+    codes = code_cells(lines)
+    if not codes:
+        return solution
+    images = iter(figures_of(chapter, "solution", exercise["label"], codes, stored))
+    name = f"{chapter}-solution-{exercise['number']}"
+    out, inside, k = [], False, 0
+    for line in lines:
+        if not inside and line.startswith("```{code-cell}"):
+            inside = True
+        elif inside and line.startswith("```"):
+            out += ["", drawing_markdown(codes[k], next(images), name, figures), ""]
+            inside, k = False, k + 1
+        elif not inside:
+            out.append(line)
+    return "\n".join(out)
+
+
+def answers_markdown(figures=None):
+    """The teacher's answers in Markdown; the drawings' images go to ``figures``
+    ({path: base64 PNG text}, a dict to fill), which the Markdown names."""
+    figures = {} if figures is None else figures
     marked = assessed()
     out = [
         "# Answers and solutions (for the teacher)",
@@ -163,11 +288,12 @@ def answers_markdown():
         "Exercises marked **assessed** (book/assessed.yml) have no key in the course "
         "edition of the book.",
     ]
-    found = {}
+    found, stored = {}, {}
     for chapter in chapters():
         path = os.path.join(ROOT, "notebooks", f"{chapter}.md")
         with open(path, encoding="utf-8") as f:
             found[chapter] = read_exercises(f.read(), chapter)
+        stored[chapter] = notebook_figures(chapter)
     for heading, groups in by_week(found, plan()):
         out += ["", f"## {heading}"]
         for chapter, exercises in groups:
@@ -177,18 +303,33 @@ def answers_markdown():
                 flag = " (assessed)" if (chapter, number) in marked else ""
                 out += ["", f"#### Exercise {number}{flag}", "", header(exercise)]
                 out += ["", exercise["statement"]]
-                drawing = figure_code(exercise["cells"])
+                drawing = exercise_figures(chapter, exercise, stored[chapter], figures)
                 if drawing:
-                    out += ["", "**Figure** (drawn in the chapter by)", "", drawing]
+                    out += ["", "**Figure**", "", drawing]
                 if any("answer_box" in line for line in exercise["cells"]):
                     out += ["", "**Key**", "", key_text(chapter, number)]
-                solution = exercise["solution"] or "(none written)"
+                solution = solution_markdown(
+                    chapter, exercise, stored[chapter], figures
+                )
                 out += ["", "**Solution**", "", solution]
     return "\n".join(out) + "\n"
 
 
-def answers_html(markdown, mathjax):
+def answers_html(markdown, mathjax, figures=None):
+    """The page of ``markdown``, MathJax (its text) inline, and each image that
+    ``figures`` holds ({path: base64 PNG text}) inline as a data URI."""
+    figures = figures or {}
     parser = MarkdownIt("commonmark").enable("table").use(dollarmath_plugin)
+
+    def image(renderer, tokens, i, options, env):
+        source = tokens[i].attrGet("src")
+        if source in figures:
+            source = "data:image/png;base64," + figures[source]
+        # the text of the alt, its escaped marks (text_special tokens) included
+        alt = "".join(child.content for child in tokens[i].children or [])
+        return f'<img src="{html.escape(source)}" alt="{html.escape(alt)}">'
+
+    parser.add_render_rule("image", image)
     parser.add_render_rule(
         "math_inline", lambda r, s, i, *a: "\\(" + html.escape(s[i].content) + "\\)"
     )
@@ -205,7 +346,8 @@ def answers_html(markdown, mathjax):
         '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
         "<title>Answers and solutions (for the teacher)</title>\n"
         "<style>body{max-width:48rem;margin:auto;padding:1rem;font-family:sans-serif;"
-        "line-height:1.5}pre{overflow-x:auto}</style>\n"
+        "line-height:1.5}pre{overflow-x:auto}img{max-width:100%;height:auto}"
+        "</style>\n"
         f"{script}</head>\n<body>\n{parser.render(markdown)}</body>\n</html>\n"
     )
 
@@ -278,14 +420,32 @@ def sheets(folder, seeds):
     return len(seeds) * len(found)
 
 
+def write_figures(folder, figures):
+    """The drawings' PNG files beside answers.md (``figures/``, emptied first)."""
+    shutil.rmtree(os.path.join(folder, "figures"), ignore_errors=True)
+    os.makedirs(os.path.join(folder, "figures"))
+    for path, png in figures.items():
+        try:
+            data = base64.b64decode(png, validate=True)
+        except binascii.Error as error:
+            raise SystemExit(f"{path}: the stored PNG is not base64: {error}") from None
+        with open(os.path.join(folder, path), "wb") as f:
+            f.write(data)
+
+
 def main(folder, seeds=None):
     os.makedirs(folder, exist_ok=True)
-    markdown = answers_markdown()
+    figures = {}
+    markdown = answers_markdown(figures)
     with open(os.path.join(folder, "answers.md"), "w", encoding="utf-8") as f:
         f.write(markdown)
+    write_figures(folder, figures)
     with open(os.path.join(folder, "answers.html"), "w", encoding="utf-8") as f:
-        f.write(answers_html(markdown, mathjax_script()))
-    print(f"The teacher's answers: {folder}/answers.md and answers.html")
+        f.write(answers_html(markdown, mathjax_script(), figures))
+    print(
+        f"The teacher's answers: {folder}/answers.md (its {len(figures)} figures in "
+        f"figures/) and answers.html (the figures inside it)"
+    )
     if seeds:
         count = sheets(folder, read_seeds(seeds))
         print(
