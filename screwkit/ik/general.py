@@ -78,7 +78,6 @@ from ..tolerances import (
     IK_GENERAL_EXPLAINED_TOL,
     IK_GENERAL_LEADING_TOL,
     IK_GENERAL_NULL_TOL,
-    IK_GENERAL_POLISH_TOL,
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
@@ -86,13 +85,14 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _cross_last, _rotations_about, _wrap_angle
+from ..transforms import _cross, _cross_last, _wrap_angle
+from ._general_kinematics import error as _error
+from ._general_kinematics import poe as _poe
+from ._general_kinematics import polish as _polish
+from ._general_kinematics import residuals as _residuals
+from ._general_kinematics import singular as _singular
 
 __all__ = ["GeneralIK", "general_6r_ik"]
-
-#: Newton steps that polish each candidate (quadratic convergence from the
-#: eigenvalue's 1e-8 or better reaches round-off in two or three).
-NEWTON_STEPS = 6
 
 #: Three equally spaced angles: a function a + b cos + c sin is fixed by its values
 #: there, and _FIT turns the three values into (a, b, c).
@@ -528,52 +528,6 @@ _LAST_FORM_SIZE = 64
 # ---- the public function ------------------------------------------------------------
 
 
-def _poe(w, r, home, q):
-    """The pose exp([S1] q1) ... exp([S6] q6) M (rotation (k, 3, 3), position (k, 3))
-    and the space Jacobian (k, 6, 6), [omega; v] rows, of the axes (w, r)."""
-    R = np.broadcast_to(np.eye(3), (len(q), 3, 3))
-    p = np.zeros((len(q), 3))
-    J = np.empty((len(q), 6, 6))
-    for i in range(6):
-        wi, ri = R @ w[i], R @ r[i] + p
-        J[:, :3, i], J[:, 3:, i] = wi, _cross_last(ri, wi)
-        Ri = _rotations_about(w[i], q[:, i])
-        p = p + (R @ (r[i] - Ri @ r[i])[..., None])[..., 0]
-        R = R @ Ri
-    return R @ home[:3, :3], R @ home[:3, 3] + p, J
-
-
-def _error(w, r, home, targets, q):
-    """The error twists e (k, 6) of q (k, 6) against their targets (k, 4, 4) and the
-    space Jacobians (k, 6, 6): e = (omega, dp - omega x p), omega the vee of the skew
-    part of R* R(q)^T and dp the position error, the spatial error twist to first
-    order."""
-    R, p, J = _poe(w, r, home, q)
-    E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
-    omega = np.stack(
-        [E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0], E[:, 1, 0] - E[:, 0, 1]],
-        axis=1,
-    )
-    omega /= 2
-    return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
-
-
-def _polish(w, r, home, targets, q):
-    """Newton steps J_s dq = e (:func:`_error`) on the pose from the candidates q
-    (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
-    quadratic convergence near a solution, no logarithm."""
-    q = q.copy()
-    active = np.arange(len(q))
-    for _ in range(NEWTON_STEPS):
-        e, J = _error(w, r, home, targets[active], q[active])
-        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
-        active, e, J = active[moving], e[moving], J[moving]
-        if not len(active):
-            break
-        q[active] += (np.linalg.pinv(J) @ e[..., None])[..., 0]
-    return q
-
-
 #: The search that stands in when the elimination finds nothing: Newton from this
 #: many fixed pseudo-random starts a pose, this many damped steps each.
 SEARCH_STARTS = 64
@@ -596,26 +550,6 @@ def _search(w, r, home, targets):
         size = np.max(np.abs(step), axis=1, keepdims=True)
         q = q + step * (0.5 / np.maximum(size, 0.5))  # at most 0.5 rad a joint
     return q, pose
-
-
-def _residuals(chain, T, q, scale):
-    """The pose error (k,) of each q (k, 6) against its pose T (k, 4, 4) by the
-    chain's own forward kinematics: sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2),
-    which is the norm of the error twist [omega; v / scale] to first order
-    (|R(q) - R|_F = 2 sqrt(2) sin(angle / 2)) and, unlike the skew part of R(q)^T R,
-    vanishes only at the pose itself."""
-    Tq = chain.fk(q)
-    rotation = np.sum((Tq[:, :3, :3] - T[:, :3, :3]) ** 2, axis=(1, 2)) / 2
-    position = np.sum((Tq[:, :3, 3] - T[:, :3, 3]) ** 2, axis=1) / scale**2
-    return np.sqrt(rotation + position)
-
-
-def _singular(w, r, home, Q):
-    """Whether the Jacobian loses rank at each solution Q (k, 6)."""
-    if not len(Q):
-        return np.zeros(0, bool)
-    sigma = np.linalg.svd(_poe(w, r, home, Q)[2], compute_uv=False)
-    return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
 
 
 #: Fixed pseudo-random configurations at which an arm's mobility is measured.
