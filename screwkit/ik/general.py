@@ -85,7 +85,7 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _cross_last, _wrap_angle
+from ..transforms import _cross, _cross_last, _skew, _wrap_angle
 from ._general_kinematics import error as _error
 from ._general_kinematics import poe as _poe
 from ._general_kinematics import polish as _polish
@@ -260,8 +260,14 @@ def _eliminate(w, r, G, shift):
     w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
     hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
     hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
-    a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
-    right = np.einsum("inj,kj->nik", _right(w, r, hp, hl, a1, a2), _FIT2)
+    if w.shape[2] == 1:  # joints 1 and 2 do not depend on the pose
+        R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
+        p = np.einsum("gij,jn->ing", R, hp[..., 0]) + t.T[:, None]
+        values = _products(p, np.einsum("gij,jn->ing", R, hl[..., 0]))
+    else:
+        a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
+        values = _right(w, r, hp, hl, a1, a2)
+    right = np.einsum("inj,kj->nik", values, _FIT2)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
     U, sigma, Vh = np.linalg.svd(Q)
     reason = [None] * n
@@ -312,6 +318,29 @@ def _left_coefficients_cached(w, r, shift):
     left = _left(*axes, a3, a4, a5)[:, 0] @ _FIT3.T
     left.setflags(write=False)
     return left
+
+
+@functools.lru_cache(maxsize=64)
+def _right_motions_cached(w, r, shift):
+    """_right_motions on bytes (hashable), cached."""
+    w, r = np.frombuffer(w).reshape(2, 3), np.frombuffer(r).reshape(2, 3)
+    angles = _GRID2 + np.frombuffer(shift)[:, None]
+    p, l = np.zeros((3, 1, 9)), np.broadcast_to(np.eye(3)[:, :, None], (3, 3, 9))
+    for k in range(2):
+        p, l = _turn_both(w[k, :, None, None], r[k, :, None, None], -angles[k], p, l)
+    R, t = l.transpose(2, 0, 1).copy(), p[:, 0].T.copy()
+    R.setflags(write=False)
+    t.setflags(write=False)
+    return R, t
+
+
+def _right_motions(w, r, shift):
+    """The rigid motions E2^-1 E1^-1 of the right side at the grid's 9 angles of
+    joints 1 and 2 (axes w, points r (2, 3); their shifts, bytes): rotations
+    (9, 3, 3) and translations (9, 3), x -> R x + t."""
+    return _right_motions_cached(
+        np.ascontiguousarray(w).tobytes(), np.ascontiguousarray(r).tobytes(), shift
+    )
 
 
 def _left_coefficients(w, r, shift):
@@ -389,13 +418,20 @@ def _candidates(w, r, G, shift, found):
     x5 = np.sum(V[:, :, :-1].conj() * V[:, :, 1:], axis=(1, 2)) / np.sum(
         np.abs(V[:, :, :-1]) ** 2, axis=(1, 2)
     )
-    q3 = _half_angle(x3.real) + shift[2]
-    q4 = _half_angle(x4.real) + shift[3]
-    q5 = _half_angle(x5.real) + shift[4]
+    phi = _half_angle(np.stack([x3.real, x4.real, x5.real]))
+    q3, q4, q5 = phi + shift[2:5, None]
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
-    values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0]
-    b = np.einsum("kij,kj->ki", found.pinv[pose], values.T - found.C0[pose])
+    if w.shape[2] == 1:  # from the cached coefficients of the left side
+        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
+        c, s = np.cos(phi), np.sin(phi)
+        one = np.ones_like(c)
+        f3, f4, f5 = np.stack([one, c, s], axis=-1)  # (k, 3) each
+        monomials = (f3[:, :, None, None] * f4[:, None, :, None] * f5[:, None, None])
+        values = monomials.reshape(-1, 27) @ left.T  # (k, 14)
+    else:
+        values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
+    b = np.einsum("kij,kj->ki", found.pinv[pose], values - found.C0[pose])
     # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
     c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 = b.T
     q1 = np.arctan2(s1, c1) + shift[0]
@@ -448,11 +484,14 @@ def _last_angle(w, r, G, q):
         u,
     )
     u = u / np.linalg.norm(u, axis=0)
-    Gu = np.einsum("kij,jk->ik", G[:, :3, :3], u)[..., None]
+    Gu = np.einsum("kij,jk->ki", G[:, :3, :3], u)[..., None]
+    # the rotations about axes 1 to 5 by -q (Rodrigues' formula), (k, 5, 3, 3)
+    K = _skew(np.broadcast_to(w[:5, :, :, 0].transpose(2, 0, 1), (k, 5, 3)))
+    angle = -q[:, :5, None, None]
+    turns = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * (K @ K)
     for j in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
-        angle = -q[:, j, None]
-        Gu = _turn(w[j], np.cos(angle), np.sin(angle), Gu)
-    Gu = Gu[..., 0]
+        Gu = turns[:, j] @ Gu
+    Gu = Gu[..., 0].T
     return np.arctan2(np.sum(_cross(w6, u) * Gu, axis=0), np.sum(u * Gu, axis=0))
 
 
@@ -506,17 +545,43 @@ def _formulation(S, G, index):
     )
 
 
-#: Each chain's joint axes (directions, points) and home pose at q = 0, kept while
-#: the chain lives (a chain is immutable).
-_GEOMETRY = weakref.WeakKeyDictionary()
+@dataclass(frozen=True)
+class _Arm:
+    """A 6R chain's constants for the solver, computed once per chain: its axes'
+    unit directions ``w`` and points ``r`` (6, 3) at q = 0 and its home pose ``home``
+    (4, 4) and inverse, lengths divided by ``scale`` (the chain's size, m); its unit
+    screws ``screws`` (6, 6), (w; r x w), and ``key`` (bytes) their bytes, which
+    name its geometry."""
+
+    w: np.ndarray
+    r: np.ndarray
+    home: np.ndarray
+    home_inverse: np.ndarray
+    scale: float
+    screws: np.ndarray
+    key: bytes
 
 
-def _geometry(chain):
-    """The axes z, o (6, 3) and the home pose M (4, 4) of a chain at q = 0 (m)."""
-    if chain not in _GEOMETRY:
-        z, o = chain.joint_axes(np.zeros(6))
-        _GEOMETRY[chain] = (z, o, chain.fk(np.zeros(6)))
-    return _GEOMETRY[chain]
+#: Each chain's constants (an _Arm), kept while the chain lives (a chain is immutable).
+_ARMS = weakref.WeakKeyDictionary()
+
+
+def _arm(chain):
+    """The :class:`_Arm` of a 6R chain, computed on first use."""
+    try:
+        return _ARMS[chain]
+    except KeyError:
+        pass
+    z, o = chain.joint_axes(np.zeros(6))
+    M = chain.fk(np.zeros(6))
+    scale = length_scale(o, M[:3, 3])
+    home = M.copy()
+    home[:3, 3] /= scale
+    r = o / scale
+    screws = np.concatenate([z, _cross_last(r, z)], axis=1)
+    arm = _Arm(z, r, home, _inverse(home), float(scale), screws, screws.tobytes())
+    _ARMS[chain] = arm
+    return arm
 
 
 #: The form that last solved a chain's pose, by the chain's axes (bytes): tried first
@@ -575,11 +640,8 @@ def _mobility(chain):
         configurations.
     """
     if chain not in _MOBILITY:
-        z, o, M = _geometry(chain)
-        scale = length_scale(o, M[:3, 3])
-        home = M.copy()
-        home[:3, 3] /= scale
-        J = _poe(z, o / scale, home, _MOBILITY_Q)[2]
+        arm = _arm(chain)
+        J = _poe(arm.w, arm.r, arm.home, _MOBILITY_Q)[2]
         sigma = np.linalg.svd(J, compute_uv=False)
         ranks = np.sum(sigma > IK_GENERAL_SINGULAR_TOL * sigma[:, :1], axis=1)
         _MOBILITY[chain] = int(np.max(ranks))
@@ -745,50 +807,60 @@ def _check_batch_size(T, name, limit, what):
         )
 
 
-def _solve(chain, T):
-    """The answers (a list of GeneralIK) for poses T (n, 4, 4): each form of the loop
-    is tried on the poses that no earlier form solved; a nearly degenerate form is
-    kept as a pose's fallback, used only when no well-conditioned form exists."""
-    z, o, M = _geometry(chain)
-    scale = length_scale(o, M[:3, 3])
-    home, T_scaled = M.copy(), T.copy()
-    home[:3, 3] /= scale
-    T_scaled[:, :3, 3] /= scale
-    # unit screws (w; r x w)
-    Sn = np.concatenate([z, _cross_last(o / scale, z)], axis=1)
-    G = T_scaled @ _inverse(home)
-    n = len(T)
-    answers, reasons, fallback = [None] * n, [[] for _ in range(n)], {}
-
-    def finish(phi, pose, poses, name, order, claims=None):
-        """The answers of ``poses`` from the candidates phi (k, 6) of the form
-        ``name``, pose (k,) naming each candidate's pose; ``claims`` (k,) which
-        candidates' third angles are genuine real roots of the eigenvalue problem,
-        each of which a solution must account for (None, a search: none)."""
-        q = np.empty_like(phi)
-        q[:, order] = phi
-        q = _polish(z, o / scale, home, T_scaled[pose], q)
-        residuals = _residuals(chain, T[pose], q, scale)
-        good = residuals <= IK_GENERAL_ACCEPT_TOL
-        claims = np.zeros(len(phi), bool) if claims is None else claims
-        root, root_pose = phi[claims, 2], pose[claims]
-        q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
+def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None):
+    """The answers (a list of GeneralIK) of ``poses`` (of T (n, 4, 4), T_scaled its
+    lengths divided by the chain's size) from the candidates phi (k, 6) of the form
+    ``name`` (joint order ``order``), pose (k,) naming each candidate's pose:
+    polished, checked, told apart and flagged. ``claims`` (k,): which candidates'
+    third angles are genuine real roots of the eigenvalue problem, each of which a
+    solution must account for (None, a search: none)."""
+    q = np.empty_like(phi)
+    q[:, order] = phi
+    q = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q)
+    residuals = _residuals(chain, T[pose], q, arm.scale)
+    good = residuals <= IK_GENERAL_ACCEPT_TOL
+    claims = np.zeros(len(phi), bool) if claims is None else claims
+    root, root_pose = phi[claims, 2], pose[claims]
+    q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
+    if len(poses) == 1:
+        kept = [_distinct(q, residuals)]
+    else:
         by_pose = np.argsort(pose, kind="stable")
         q, pose, residuals = q[by_pose], pose[by_pose], residuals[by_pose]
         starts = np.searchsorted(pose, poses, "left")
         ends = np.searchsorted(pose, poses, "right")
         kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
-        singular = _singular(z, o / scale, home, np.concatenate([Q for Q, _ in kept]))
-        left = _unexplained(root, root_pose, kept, poses, order[2])
-        start = 0
-        for j, (Q, res) in zip(poses, kept):
-            flags = singular[start : start + len(Q)]
-            answers[j] = GeneralIK(Q, res, _say(flags, left.get(j, ())), name, flags)
-            start += len(Q)
+    Q_all = kept[0][0] if len(kept) == 1 else np.concatenate([Q for Q, _ in kept])
+    singular = _singular(arm.w, arm.r, arm.home, Q_all)
+    left = _unexplained(root, root_pose, kept, poses, order[2])
+    answers, start = [], 0
+    for j, (Q, res) in zip(poses, kept):
+        flags = singular[start : start + len(Q)]
+        answers.append(GeneralIK(Q, res, _say(flags, left.get(j, ())), name, flags))
+        start += len(Q)
+    return answers
+
+
+def _solve(chain, T):
+    """The answers (a list of GeneralIK) for poses T (n, 4, 4): each form of the loop
+    is tried on the poses that no earlier form solved; a nearly degenerate form is
+    kept as a pose's fallback, used only when no well-conditioned form exists."""
+    arm = _arm(chain)
+    T_scaled = T.copy()
+    T_scaled[:, :3, 3] /= arm.scale
+    G = T_scaled @ arm.home_inverse
+    n = len(T)
+    answers, reasons, fallback = [None] * n, [[] for _ in range(n)], {}
+
+    def finish(phi, pose, poses, name, order, claims=None):
+        """_finish, the answers stored in ``answers``."""
+        found = _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims)
+        for j, answer in zip(poses, found):
+            answers[j] = answer
 
     # a singular leading matrix from special geometry stays singular at any shift:
     # every form is tried at the first shift before another shift is
-    key = Sn.tobytes()
+    key = arm.key
     tries = [(s, f) for s in range(len(_SHIFTS)) for f in range(12)]
     if key in _LAST_FORM:
         tries.remove(_LAST_FORM[key])
@@ -798,7 +870,7 @@ def _solve(chain, T):
         if not len(pending):
             break
         shift = _SHIFTS[attempt[0]]
-        name, w, r, target, order = _formulation(Sn, G[pending], attempt[1])
+        name, w, r, target, order = _formulation(arm.screws, G[pending], attempt[1])
         found = _eliminate(w, r, target, shift)
         for j, why in zip(pending, found.reason):
             if why is not None:
@@ -838,7 +910,7 @@ def _solve(chain, T):
             )
     empty = [j for j in range(n) if not len(answers[j].Q)]
     if empty:  # special geometry can hide roots from a form that looks well posed
-        q, pose = _search(z, o / scale, home, T_scaled[empty])
+        q, pose = _search(arm.w, arm.r, arm.home, T_scaled[empty])
         before = [answers[j] for j in empty]
         finish(q, np.asarray(empty)[pose], empty, "Newton search", [0, 1, 2, 3, 4, 5])
         for j, old in zip(empty, before):
