@@ -8,6 +8,8 @@ exp([S] q) = I + sin(q) [S] + (1 - cos(q)) [S]^2 of a unit revolute screw S (its
 call hardly depends on k (one pose has up to 16 candidates, a batch thousands).
 """
 
+import functools
+
 import numpy as np
 
 from .. import _compiled
@@ -26,13 +28,31 @@ NEWTON_STEPS = 6
 SCALAR_RESIDUALS = 48
 
 
-def screw_matrices(w, r):
-    """[S] and [S]^2 (6, 4, 4) of the unit revolute screws S = (w, r x w) of the axes
-    along unit w through r (6, 3)."""
+@functools.lru_cache(maxsize=64)
+def _screw_matrices_cached(w, r):
+    """screw_matrices on bytes (hashable), cached."""
+    w, r = np.frombuffer(w).reshape(-1, 3), np.frombuffer(r).reshape(-1, 3)
     S = np.zeros((len(w), 4, 4))
     S[:, :3, :3] = _skew(w)
     S[:, :3, 3] = _cross_last(r, w)
-    return S, S @ S
+    S2 = S @ S
+    S.setflags(write=False)
+    S2.setflags(write=False)
+    return S, S2
+
+
+def screw_matrices(w, r):
+    """[S] and [S]^2 (6, 4, 4) of the unit revolute screws S = (w, r x w) of the axes
+    along unit w through r (6, 3), cached (a chain's axes are used call after call)."""
+    return _screw_matrices_cached(
+        np.ascontiguousarray(w, float).tobytes(),
+        np.ascontiguousarray(r, float).tobytes(),
+    )
+
+
+#: The identity of a pose.
+_EYE4 = np.eye(4)
+_EYE4.setflags(write=False)
 
 
 def poe(w, r, home, q):
@@ -41,9 +61,9 @@ def poe(w, r, home, q):
     the home pose M (4, 4) at the joint vectors q (k, 6)."""
     S, S2 = screw_matrices(w, r)
     angle = q[..., None, None]
-    E = np.eye(4) + np.sin(angle) * S + (1 - np.cos(angle)) * S2  # (k, 6, 4, 4)
+    E = _EYE4 + np.sin(angle) * S + (1 - np.cos(angle)) * S2  # (k, 6, 4, 4)
     prefix = np.empty_like(E)  # E1 ... E(i-1), the motion before joint i
-    prefix[:, 0] = np.eye(4)
+    prefix[:, 0] = _EYE4
     for i in range(1, 6):
         prefix[:, i] = prefix[:, i - 1] @ E[:, i - 1]
     T = prefix[:, 5] @ E[:, 5] @ home

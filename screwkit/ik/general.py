@@ -68,7 +68,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._checks import check_chain, check_poses
+from .._checks import check_chain, check_poses, one_pose
 from ..links import Joint
 from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
@@ -256,18 +256,21 @@ def _eliminate(w, r, G, shift):
     (6, 3, n or 1, 1), lengths divided by the chain's size; poses G (n, 4, 4)), angles
     q_i = phi_i + shift_i: an :class:`_Eliminated`."""
     n = G.shape[0]
-    r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
-    w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
-    hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
-    hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
-    if w.shape[2] == 1:  # joints 1 and 2 do not depend on the pose
+    if w.shape[2] == 1:  # joints 1, 2 and 6 do not depend on the pose
+        hp = G[:, :3, :3] @ r[5, :, 0, 0] + G[:, :3, 3]  # (n, 3)
+        hl = G[:, :3, :3] @ w[5, :, 0, 0]
         R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
-        p = np.einsum("gij,jn->ing", R, hp[..., 0]) + t.T[:, None]
-        values = _products(p, np.einsum("gij,jn->ing", R, hl[..., 0]))
+        p = (hp @ R.reshape(27, 3).T).reshape(n, 9, 3) + t  # (n, 9 angles, 3)
+        l = (hl @ R.reshape(27, 3).T).reshape(n, 9, 3)
+        values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
     else:
+        r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
+        w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
+        hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
+        hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
         a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
         values = _right(w, r, hp, hl, a1, a2)
-    right = np.einsum("inj,kj->nik", values, _FIT2)
+    right = (values @ _FIT2.T).transpose(1, 0, 2)  # (n, 14, 9)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
     U, sigma, Vh = np.linalg.svd(Q)
     reason = [None] * n
@@ -282,10 +285,10 @@ def _eliminate(w, r, G, shift):
     else:
         a3, a4, a5 = _GRID3[:, None, :] + shift[2:5, None, None]
         left = np.einsum("inj,kj->nik", _left(w, r, a3, a4, a5), _FIT3)
-    left = np.broadcast_to(left, (n, 14, 27)).copy()
-    left[:, :, 0] -= C0
+    # N (left - C0 e0) in the monomials of the half-angle tangents:
     # (n, 6, power of x3, power of x4, power of x5)
-    poly = (N @ left @ _TO_POLY3).reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
+    poly = N @ (left @ _TO_POLY3) - (N @ C0[..., None]) * _TO_POLY3[0]
+    poly = poly.reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
     M = np.zeros((n, 3, 12, 4, 3))
     M[:, :, :6, :3, :] = poly
     M[:, :, 6:, 1:, :] = poly
@@ -472,27 +475,45 @@ def _with_repeated_roots(M, x3, V, which):
     return tuple(np.concatenate(p) for p in zip(*parts))
 
 
+def _wrist_frame(w):
+    """For axes w (6, 3, m, 1): [w_i] and [w_i]^2 (m, 5, 3, 3) of axes 1 to 5, and
+    two unit vectors u, v = w6 x u (m, 3) normal to axis 6."""
+    w6 = w[5, :, :, 0].T
+    u = _cross_last(w6, np.array([1.0, 0.0, 0.0]))
+    u = np.where(
+        np.linalg.norm(u, axis=1, keepdims=True) < 0.5,
+        _cross_last(w6, np.array([0.0, 1.0, 0.0])),
+        u,
+    )
+    u = u / np.linalg.norm(u, axis=1, keepdims=True)
+    K = _skew(w[:5, :, :, 0].transpose(2, 0, 1))
+    return K, K @ K, u, _cross_last(w6, u)
+
+
+@functools.lru_cache(maxsize=64)
+def _wrist_frame_cached(w):
+    """_wrist_frame of shared axes w (bytes of (6, 3)), cached."""
+    frame = _wrist_frame(np.frombuffer(w).reshape(6, 3, 1, 1))
+    for array in frame:
+        array.setflags(write=False)
+    return frame
+
+
 def _last_angle(w, r, G, q):
     """q6 (k,) from q1..q5 (k, 6): the rotation E6 = (E1 ... E5)^-1 G_k about axis 6
     (axes w, r (6, 3, k or 1, 1), poses G (k, 4, 4))."""
-    k = len(q)
-    w6 = np.broadcast_to(w[5, :, :, 0], (3, k))
-    u = _cross(w6, np.array([1.0, 0.0, 0.0])[:, None])
-    u = np.where(
-        np.linalg.norm(u, axis=0) < 0.5,
-        _cross(w6, np.array([0.0, 1.0, 0.0])[:, None]),
-        u,
-    )
-    u = u / np.linalg.norm(u, axis=0)
-    Gu = np.einsum("kij,jk->ki", G[:, :3, :3], u)[..., None]
+    if w.shape[2] == 1:
+        K, K2, u, v = _wrist_frame_cached(np.ascontiguousarray(w).tobytes())
+    else:
+        K, K2, u, v = _wrist_frame(w)
+    Gu = G[:, :3, :3] @ u[..., None]  # (k, 3, 1)
     # the rotations about axes 1 to 5 by -q (Rodrigues' formula), (k, 5, 3, 3)
-    K = _skew(np.broadcast_to(w[:5, :, :, 0].transpose(2, 0, 1), (k, 5, 3)))
     angle = -q[:, :5, None, None]
-    turns = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * (K @ K)
+    turns = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K2
     for j in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
         Gu = turns[:, j] @ Gu
-    Gu = Gu[..., 0].T
-    return np.arctan2(np.sum(_cross(w6, u) * Gu, axis=0), np.sum(u * Gu, axis=0))
+    Gu = Gu[..., 0]
+    return np.arctan2(np.sum(v * Gu, axis=1), np.sum(u * Gu, axis=1))
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -698,6 +719,12 @@ def _unexplained(root, root_pose, kept, poses, joint):
     ``kept`` (a (Q, residuals) pair for each of ``poses``), compared on ``joint``."""
     if not len(root):
         return {}
+    if len(kept) == 1:  # one pose: its solutions' angles against its roots
+        gaps = np.abs(_wrap_angle(root[:, None] - kept[0][0][:, joint]))
+        left = ~np.any(gaps <= IK_GENERAL_EXPLAINED_TOL, axis=1)
+        if not left.any():
+            return {}
+        return {int(poses[0]): np.unique(np.round(_wrap_angle(root[left]), 4))}
     counts = np.array([len(Q) for Q, _ in kept])
     width = max(int(counts.max()), 1)
     angles = np.full((len(kept), width), np.nan)
@@ -775,13 +802,17 @@ def general_6r_ik(chain, T):
         raise ValueError(
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
+    if one_pose(T) is not None:  # one plain pose: checked on floats, solved alone
+        return _solve_one(chain, T)
     _check_batch_size(T, "T", MAX_POSES, "general_6r_ik")
     T = check_poses(T, "T")
-    batch = T[None] if T.ndim == 2 else T
+    if T.ndim == 2:
+        return _solve_one(chain, T)
+    batch = T
     answers = []
     for start in range(0, len(batch), CHUNK):  # memory bounded: ~10 kB a pose
         answers += _solve(chain, batch[start : start + CHUNK])
-    return answers[0] if T.ndim == 2 else answers
+    return answers
 
 
 #: The largest batch of poses :func:`general_6r_ik` solves in one call (about a
@@ -841,6 +872,40 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     return answers
 
 
+def _remember(key, attempt):
+    """Keep ``attempt`` as the form that last solved a pose of the chain ``key``."""
+    if key not in _LAST_FORM and len(_LAST_FORM) >= _LAST_FORM_SIZE:
+        _LAST_FORM.clear()
+    _LAST_FORM[key] = attempt
+
+
+def _solve_one(chain, T):
+    """The answer (a GeneralIK) of one checked pose T (4, 4), as :func:`_solve` gives
+    it, with less bookkeeping: the form that last solved a pose of this chain (at
+    first joints 1..6) is tried alone when its axes do not depend on the pose (the
+    unshifted forms, whose constants are cached) and it is well conditioned here,
+    and the pose has a solution; otherwise :func:`_solve` solves it."""
+    arm = _arm(chain)
+    attempt = _LAST_FORM.get(arm.key, (0, 0))
+    if attempt[1] % 6 or _mobility(chain) < 6:
+        return _solve(chain, T[None])[0]
+    T_scaled = T[None].copy()
+    T_scaled[:, :3, 3] /= arm.scale
+    G = T_scaled @ arm.home_inverse
+    name, w, r, target, order = _formulation(arm.screws, G, attempt[1])
+    shift = _SHIFTS[attempt[0]]
+    found = _eliminate(w, r, target, shift)
+    if not (found.usable[0] and found.quality[0] >= IK_GENERAL_COMFORT_TOL):
+        return _solve(chain, T[None])[0]
+    phi, which, claims = _candidates(w, r, target, shift, found)
+    pose = np.zeros(len(phi), int)
+    answer = _finish(chain, arm, T[None], T_scaled, phi, pose, [0], name, order, claims)
+    if not len(answer[0].Q):  # none: the batch path searches
+        return _solve(chain, T[None])[0]
+    _remember(arm.key, attempt)
+    return answer[0]
+
+
 def _solve(chain, T):
     """The answers (a list of GeneralIK) for poses T (n, 4, 4): each form of the loop
     is tried on the poses that no earlier form solved; a nearly degenerate form is
@@ -892,9 +957,7 @@ def _solve(chain, T):
                 order,
                 claims[take],
             )
-            if len(_LAST_FORM) >= _LAST_FORM_SIZE:
-                _LAST_FORM.clear()
-            _LAST_FORM[key] = attempt
+            _remember(key, attempt)
         pending = pending[~comfortable]
     for j in pending:
         if j in fallback:
