@@ -114,17 +114,21 @@ def newton_step(J, e):
 def polish(w, r, home, targets, q):
     """Newton steps J_s dq = e (:func:`error`) on the pose from the candidates q
     (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
-    quadratic convergence near a solution, no logarithm."""
+    quadratic convergence near a solution, no logarithm. Returns the polished q
+    (k, 6) and the space Jacobians (k, 6, 6) there."""
     q = q.copy()
+    J_at = np.empty((len(q), 6, 6))
     active = np.arange(len(q))
     for _ in range(NEWTON_STEPS):
         e, J = error(w, r, home, targets[active], q[active])
+        J_at[active] = J
         moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
         active, e, J = active[moving], e[moving], J[moving]
         if not len(active):
-            break
+            return q, J_at
         q[active] += newton_step(J, e)
-    return q
+    J_at[active] = poe(w, r, home, q[active])[2]  # moved since their last Jacobian
+    return q, J_at
 
 
 def residuals(chain, T, q, scale):
@@ -143,9 +147,9 @@ def residuals(chain, T, q, scale):
     return np.sqrt(rotation + position)
 
 
-def singular(w, r, home, Q):
-    """Whether the Jacobian loses rank at each solution Q (k, 6)."""
-    if not len(Q):
+def singular(J):
+    """Whether each Jacobian J (k, 6, 6) loses rank (IK_GENERAL_SINGULAR_TOL)."""
+    if not len(J):
         return np.zeros(0, bool)
-    sigma = np.linalg.svd(poe(w, r, home, Q)[2], compute_uv=False)
+    sigma = np.linalg.svd(J, compute_uv=False)
     return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]

@@ -430,7 +430,7 @@ def _candidates(w, r, G, shift, found):
         c, s = np.cos(phi), np.sin(phi)
         one = np.ones_like(c)
         f3, f4, f5 = np.stack([one, c, s], axis=-1)  # (k, 3) each
-        monomials = (f3[:, :, None, None] * f4[:, None, :, None] * f5[:, None, None])
+        monomials = f3[:, :, None, None] * f4[:, None, :, None] * f5[:, None, None]
         values = monomials.reshape(-1, 27) @ left.T  # (k, 14)
     else:
         values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
@@ -743,7 +743,7 @@ def _unexplained(root, root_pose, kept, poses, joint):
 
 def _distinct(Q, residuals):
     """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
-    lexicographically."""
+    lexicographically, their residuals and their rows in Q."""
     order = np.argsort(residuals, kind="stable")
     Q, residuals = Q[order], residuals[order]
     same = np.max(np.abs(_wrap_angle(Q[:, None] - Q[None])), axis=2) <= (
@@ -753,9 +753,9 @@ def _distinct(Q, residuals):
     for i in range(len(Q)):
         if not any(same[i, j] for j in keep):
             keep.append(i)
-    Q, residuals = Q[keep], residuals[keep]
+    Q, residuals, index = Q[keep], residuals[keep], order[keep]
     order = np.lexsort(Q.T[::-1])
-    return Q[order], residuals[order]
+    return Q[order], residuals[order], index[order]
 
 
 def general_6r_ik(chain, T):
@@ -847,22 +847,24 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     solution must account for (None, a search: none)."""
     q = np.empty_like(phi)
     q[:, order] = phi
-    q = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q)
+    q, J = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q)
     residuals = _residuals(chain, T[pose], q, arm.scale)
     good = residuals <= IK_GENERAL_ACCEPT_TOL
     claims = np.zeros(len(phi), bool) if claims is None else claims
     root, root_pose = phi[claims, 2], pose[claims]
-    q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
+    q, pose, residuals, J = _wrap_angle(q[good]), pose[good], residuals[good], J[good]
     if len(poses) == 1:
-        kept = [_distinct(q, residuals)]
+        Q, res, index = _distinct(q, residuals)
+        kept = [(Q, res)]
     else:
         by_pose = np.argsort(pose, kind="stable")
-        q, pose, residuals = q[by_pose], pose[by_pose], residuals[by_pose]
+        q, pose, residuals, J = (x[by_pose] for x in (q, pose, residuals, J))
         starts = np.searchsorted(pose, poses, "left")
         ends = np.searchsorted(pose, poses, "right")
-        kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
-    Q_all = kept[0][0] if len(kept) == 1 else np.concatenate([Q for Q, _ in kept])
-    singular = _singular(arm.w, arm.r, arm.home, Q_all)
+        parts = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
+        kept = [(Q, res) for Q, res, _ in parts]
+        index = np.concatenate([a + i for (_, _, i), a in zip(parts, starts)])
+    singular = _singular(J[index])
     left = _unexplained(root, root_pose, kept, poses, order[2])
     answers, start = [], 0
     for j, (Q, res) in zip(poses, kept):
