@@ -35,15 +35,18 @@ def _screw_matrices_cached(w, r):
     S = np.zeros((len(w), 4, 4))
     S[:, :3, :3] = _skew(w)
     S[:, :3, 3] = _cross_last(r, w)
-    S2 = S @ S
-    S.setflags(write=False)
-    S2.setflags(write=False)
-    return S, S2
+    lines = np.zeros((len(w), 4, 2))  # each axis as a direction and a point
+    lines[:, :3, 0], lines[:, :3, 1], lines[:, 3, 1] = w, r, 1.0
+    found = S, S @ S, lines
+    for array in found:
+        array.setflags(write=False)
+    return found
 
 
 def screw_matrices(w, r):
     """[S] and [S]^2 (6, 4, 4) of the unit revolute screws S = (w, r x w) of the axes
-    along unit w through r (6, 3), cached (a chain's axes are used call after call)."""
+    along unit w through r (6, 3), and the axes as homogeneous (w, 0) and (r, 1)
+    columns (6, 4, 2); cached (a chain's axes are used call after call)."""
     return _screw_matrices_cached(
         np.ascontiguousarray(w, float).tobytes(),
         np.ascontiguousarray(r, float).tobytes(),
@@ -59,7 +62,7 @@ def poe(w, r, home, q):
     """The pose exp([S1] q1) ... exp([S6] q6) M (rotation (k, 3, 3), position (k, 3))
     and the space Jacobian (k, 6, 6), [omega; v] rows, of the axes (w, r) (6, 3) and
     the home pose M (4, 4) at the joint vectors q (k, 6)."""
-    S, S2 = screw_matrices(w, r)
+    S, S2, lines = screw_matrices(w, r)
     angle = q[..., None, None]
     E = _EYE4 + np.sin(angle) * S + (1 - np.cos(angle)) * S2  # (k, 6, 4, 4)
     prefix = np.empty_like(E)  # E1 ... E(i-1), the motion before joint i
@@ -67,9 +70,8 @@ def poe(w, r, home, q):
     for i in range(1, 6):
         prefix[:, i] = prefix[:, i - 1] @ E[:, i - 1]
     T = prefix[:, 5] @ E[:, 5] @ home
-    R = prefix[..., :3, :3]
-    ws = (R @ w[..., None])[..., 0]  # (k, 6, 3): the axes at q
-    rs = (R @ r[..., None])[..., 0] + prefix[..., :3, 3]
+    moved = prefix[..., :3, :] @ lines  # (k, 6, 3, 2): the axes at q
+    ws, rs = moved[..., 0], moved[..., 1]
     J = np.concatenate([ws, _cross_last(rs, ws)], axis=-1).swapaxes(1, 2)
     return T[:, :3, :3], T[:, :3, 3], J
 
@@ -81,11 +83,8 @@ def error(w, r, home, targets, q):
     order."""
     R, p, J = poe(w, r, home, q)
     E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
-    omega = np.stack(
-        [E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0], E[:, 1, 0] - E[:, 0, 1]],
-        axis=1,
-    )
-    omega /= 2
+    # the vee of (E - E^T) / 2: entries (2, 1), (0, 2), (1, 0)
+    omega = (E - np.swapaxes(E, 1, 2))[:, [2, 0, 1], [1, 2, 0]] / 2
     return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
 
 
@@ -149,7 +148,12 @@ def residuals(chain, T, q, scale):
 
 def singular(J):
     """Whether each Jacobian J (k, 6, 6) loses rank (IK_GENERAL_SINGULAR_TOL)."""
-    if not len(J):
-        return np.zeros(0, bool)
-    sigma = np.linalg.svd(J, compute_uv=False)
-    return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
+    flags = np.zeros(len(J), bool)
+    # sigma_min / sigma_max >= |det J| / sigma_max^6 >= |det J| / |J|_F^6: where
+    # that bound clears the tolerance, J keeps its rank and needs no SVD
+    bound = np.abs(np.linalg.det(J)) / np.sum(J * J, axis=(1, 2)) ** 3
+    check = ~(bound > IK_GENERAL_SINGULAR_TOL)
+    if np.any(check):
+        sigma = np.linalg.svd(J[check], compute_uv=False)
+        flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
+    return flags
