@@ -260,8 +260,10 @@ def _eliminate(w, r, G, shift):
         hp = G[:, :3, :3] @ r[5, :, 0, 0] + G[:, :3, 3]  # (n, 3)
         hl = G[:, :3, :3] @ w[5, :, 0, 0]
         R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
-        p = (hp @ R.reshape(27, 3).T).reshape(n, 9, 3) + t  # (n, 9 angles, 3)
-        l = (hl @ R.reshape(27, 3).T).reshape(n, 9, 3)
+        # einsum, not a matrix product that BLAS may block by the batch's size: the
+        # same round-off for a pose alone as in a batch
+        p = np.einsum("gij,nj->ngi", R, hp) + t  # (n, 9 angles, 3)
+        l = np.einsum("gij,nj->ngi", R, hl)
         values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
     else:
         r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
@@ -270,7 +272,7 @@ def _eliminate(w, r, G, shift):
         hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
         a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
         values = _right(w, r, hp, hl, a1, a2)
-    right = (values @ _FIT2.T).transpose(1, 0, 2)  # (n, 14, 9)
+    right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
     U, sigma, Vh = np.linalg.svd(Q)
     reason = [None] * n
@@ -431,7 +433,7 @@ def _candidates(w, r, G, shift, found):
         one = np.ones_like(c)
         f3, f4, f5 = np.stack([one, c, s], axis=-1)  # (k, 3) each
         monomials = f3[:, :, None, None] * f4[:, None, :, None] * f5[:, None, None]
-        values = monomials.reshape(-1, 27) @ left.T  # (k, 14)
+        values = np.einsum("kj,ij->ki", monomials.reshape(-1, 27), left)  # (k, 14)
     else:
         values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
     b = np.einsum("kij,kj->ki", found.pinv[pose], values - found.C0[pose])
