@@ -13,7 +13,11 @@ import functools
 import numpy as np
 
 from .. import _compiled
-from ..tolerances import IK_GENERAL_POLISH_TOL, IK_GENERAL_SINGULAR_TOL
+from ..tolerances import (
+    IK_GENERAL_HADAMARD_TOL,
+    IK_GENERAL_POLISH_TOL,
+    IK_GENERAL_SINGULAR_TOL,
+)
 from ..transforms import _cross_last, _skew
 
 __all__ = []
@@ -88,21 +92,15 @@ def error(w, r, home, targets, q):
     return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
 
 
-#: Below this Hadamard ratio (``|det J|`` over the product of its columns' lengths,
-#: 1 for orthogonal columns) a Jacobian is nearly singular and its Newton step is
-#: the pseudo-inverse's; above it the LU solve gives the same step, five times faster.
-HADAMARD_TOL = 1e-10
-
-
 def newton_step(J, e):
     """The Newton steps pinv(J) e (k, 6) for Jacobians J (k, 6, 6) and errors e
-    (k, 6): an LU solve where J is well conditioned (HADAMARD_TOL; the
+    (k, 6): an LU solve where J is well conditioned (IK_GENERAL_HADAMARD_TOL; the
     pseudo-inverse's step there, up to round-off), the pseudo-inverse's minimum-norm
     step where J is nearly singular (a solution on a continuum, where the two
     differ)."""
     ratio = np.abs(np.linalg.det(J)) / np.prod(np.linalg.norm(J, axis=1), axis=1)
     dq = np.empty(e.shape)
-    near = ~(ratio > HADAMARD_TOL)  # a NaN too
+    near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
     if not np.all(near):
         dq[~near] = np.linalg.solve(J[~near], e[~near, :, None])[..., 0]
     if np.any(near):

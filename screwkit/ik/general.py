@@ -40,6 +40,13 @@ each step is one NumPy call for the whole batch (the 24 x 24 eigenvalue problems
 included), and a pose whose form turns out degenerate goes on to the next form with
 the other poses that did.
 
+One pose (T of shape (4, 4)) goes the same steps with less bookkeeping: the chain's
+constants (its axes and home pose, the left side's coefficients, the right side's
+motions at the grid, the screw matrices the polish multiplies) are computed once per
+chain and cached, the form that last solved a pose of the chain is tried alone, and
+the batch path takes over when that form depends on the pose (a shifted one), is
+nearly degenerate here or finds no solution. Its answer is the batch path's.
+
 What the answer claims: every real root of the eigenvalue problem whose imaginary
 part is below IK_GENERAL_REAL_TOL becomes a candidate, and every candidate that
 Newton brings to the pose (residual at most IK_GENERAL_ACCEPT_TOL) is returned once.
