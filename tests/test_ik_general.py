@@ -485,7 +485,7 @@ def test_analytic_ik_of_a_general_arm_flags_its_singular_solutions():
     assert "singular configuration" in solutions.reason
 
 
-# ---- one pose a call: its own path, the batch path's answers --------------------------
+# ---- one pose a call: its own path, the batch path's answers ------------------------
 
 
 def same_answer(one, batch, tolerance=1e-9, whole_reason=True):
