@@ -575,7 +575,7 @@ def _formulation(S, G, index):
     )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class _Arm:
     """A 6R chain's constants for the solver, computed once per chain: its axes'
     unit directions ``w`` and points ``r`` (6, 3) at q = 0 and its home pose ``home``
