@@ -7,6 +7,7 @@ import numpy as np
 from ..chains import Chain
 from ..ik.dispatch import analytic_ik
 from ..ik.subproblems import subproblem1, subproblem3
+from ..tolerances import IK_DUPLICATE_TOL
 from ..transforms import transl, twist_from_axis
 from . import pick, register
 
@@ -41,11 +42,13 @@ def offset_arm_wrist_centre(rng):
     found = [
         s.q[:3]
         for s in solutions
-        if abs(math.remainder(s.q[0] - facing, 2 * math.pi)) < 1e-6
+        if abs(math.remainder(s.q[0] - facing, 2 * math.pi)) < IK_DUPLICATE_TOL
         and abs(s.q[2]) < math.pi / 2
     ]
     # the wrist's two ways share (q1, q2, q3): one arm solution
-    if not found or not all(np.allclose(f, found[0], atol=1e-9) for f in found):
+    if not found or not all(
+        np.allclose(f, found[0], atol=IK_DUPLICATE_TOL) for f in found
+    ):
         raise RuntimeError(f"no single arm solution for the wrist centre {x, y, z}")
     q = found[0]
     numbers = {"x": (x, "m"), "y": (y, "m"), "z": (z, "m")}
