@@ -206,9 +206,15 @@ def _turn_both(w, r, angle, p, l):
 def _products(p, l):
     """The 14 Raghavan–Roth quantities (14, n, g) of points p and directions l
     (3, n, g)."""
-    pp = np.sum(p * p, axis=0)
-    pl = np.sum(p * l, axis=0)
-    return np.concatenate([p, l, [pp, pl], _cross(p, l), pp * l - 2 * pl * p])
+    out = np.empty((14,) + np.broadcast_shapes(p.shape[1:], l.shape[1:]))
+    out[:3], out[3:6] = p, l
+    pp = out[6] = np.sum(p * p, axis=0)
+    pl = out[7] = np.sum(p * l, axis=0)
+    out[8] = p[1] * l[2] - p[2] * l[1]  # p x l, written into place
+    out[9] = p[2] * l[0] - p[0] * l[2]
+    out[10] = p[0] * l[1] - p[1] * l[0]
+    np.subtract(pp * l, 2 * pl * p, out=out[11:])
+    return out
 
 
 def _left(w, r, q3, q4, q5):
@@ -555,6 +561,10 @@ def _formulation(S, G, index):
     of joint order[i] itself: backwards, E(S6, q6)^-1 ... E(S1, q1)^-1 = G^-1 is
     E(-S6, q6) ... E(-S1, q1) = G^-1, the screws negated and the angles kept."""
     backwards, k = divmod(index, 6)
+    if not k:  # the axes do not depend on the pose: cached
+        target = _inverse(G) if backwards else G
+        axes, order = _unshifted(np.ascontiguousarray(S).tobytes(), backwards)
+        return (*axes, target, order)
     screws, target = (-S[::-1], _inverse(G)) if backwards else (S, G)
     order = np.arange(6)[::-1] if backwards else np.arange(6)
     if k:
@@ -573,6 +583,26 @@ def _formulation(S, G, index):
         target,
         np.roll(order, -k),
     )
+
+
+@functools.lru_cache(maxsize=64)
+def _unshifted(S, backwards):
+    """(name, w, r, joint order) of the unshifted form of the loop, joints 1..6 or
+    (``backwards``) 6..1, for the screws S (bytes of (6, 6)): :func:`_formulation`'s
+    axes (6, 3, 1, 1), which do not depend on the pose, cached (read-only)."""
+    S = np.frombuffer(S).reshape(6, 6)
+    screws = (-S[::-1] if backwards else S)[None]
+    w = screws[..., :3]
+    r = _cross_last(w, screws[..., 3:])
+    order = np.arange(6)[::-1] if backwards else np.arange(6)
+    found = (
+        w.transpose(1, 2, 0)[..., None],  # views, as the other forms' axes
+        r.transpose(1, 2, 0)[..., None],
+        order.copy(),
+    )
+    for array in found:
+        array.setflags(write=False)
+    return ("joints " + ("6..1" if backwards else "1..6"), *found[:2]), found[2]
 
 
 @dataclass(frozen=True, eq=False)
