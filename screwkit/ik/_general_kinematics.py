@@ -114,9 +114,12 @@ def polish(w, r, home, targets, q):
     quadratic convergence near a solution, no logarithm. Returns the polished q
     (k, 6) and the space Jacobians (k, 6, 6) there."""
     q = q.copy()
-    J_at = np.empty((len(q), 6, 6))
-    active = np.arange(len(q))
-    for _ in range(NEWTON_STEPS):
+    e, J_at = error(w, r, home, targets, q)
+    active = np.nonzero(np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL)[0]
+    if not len(active):  # every candidate at its pose already (often, for one pose)
+        return q, J_at
+    q[active] += newton_step(J_at[active], e[active])
+    for _ in range(NEWTON_STEPS - 1):
         e, J = error(w, r, home, targets[active], q[active])
         J_at[active] = J
         moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
