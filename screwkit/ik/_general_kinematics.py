@@ -101,9 +101,9 @@ def newton_step(J, e):
     ratio = np.abs(np.linalg.det(J)) / np.prod(np.linalg.norm(J, axis=1), axis=1)
     dq = np.empty(e.shape)
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
-    if not np.all(near):
+    if not near.all():
         dq[~near] = np.linalg.solve(J[~near], e[~near, :, None])[..., 0]
-    if np.any(near):
+    if near.any():
         dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
     return dq
 
@@ -142,8 +142,8 @@ def residuals(chain, T, q, scale):
         top = np.array([pose(row) for row in q.tolist()]).reshape(-1, 3, 4)
     else:
         top = chain.fk(q)[:, :3]
-    rotation = np.sum((top[:, :, :3] - T[:, :3, :3]) ** 2, axis=(1, 2)) / 2
-    position = np.sum((top[:, :, 3] - T[:, :3, 3]) ** 2, axis=1) / scale**2
+    rotation = ((top[:, :, :3] - T[:, :3, :3]) ** 2).sum(axis=(1, 2)) / 2
+    position = ((top[:, :, 3] - T[:, :3, 3]) ** 2).sum(axis=1) / scale**2
     return np.sqrt(rotation + position)
 
 
@@ -152,9 +152,9 @@ def singular(J):
     flags = np.zeros(len(J), bool)
     # sigma_min / sigma_max >= |det J| / sigma_max^6 >= |det J| / |J|_F^6: where
     # that bound clears the tolerance, J keeps its rank and needs no SVD
-    bound = np.abs(np.linalg.det(J)) / np.sum(J * J, axis=(1, 2)) ** 3
+    bound = np.abs(np.linalg.det(J)) / (J * J).sum(axis=(1, 2)) ** 3
     check = ~(bound > IK_GENERAL_SINGULAR_TOL)
-    if np.any(check):
+    if check.any():
         sigma = np.linalg.svd(J[check], compute_uv=False)
         flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
     return flags
