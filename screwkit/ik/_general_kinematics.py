@@ -99,12 +99,13 @@ def newton_step(J, e):
     step where J is nearly singular (a solution on a continuum, where the two
     differ)."""
     ratio = np.abs(np.linalg.det(J)) / np.prod(np.linalg.norm(J, axis=1), axis=1)
-    dq = np.empty(e.shape)
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
+    if not near.any():  # the usual case: every J well conditioned
+        return np.linalg.solve(J, e[:, :, None])[..., 0]
+    dq = np.empty(e.shape)
     if not near.all():
         dq[~near] = np.linalg.solve(J[~near], e[~near, :, None])[..., 0]
-    if near.any():
-        dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
+    dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
     return dq
 
 
