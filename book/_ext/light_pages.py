@@ -40,6 +40,12 @@ dithering, as the stepped figures already are) when that changes no pixel by mor
 ``MAX_MEAN_ERROR`` on average; matplotlib's RGBA output of a white figure is three to
 four times larger. A figure with transparency, or one that would not shrink, is kept.
 
+The code of a cell tagged ``hide-input`` (a figure's drawing code, folded under the
+figure) is shown without syntax colours: Pygments wraps every name and operator in a
+span of its own, and the folded drawing code was a sixth of the largest chapters' HTML
+(90 kB of the PUMA's inverse kinematics). A reader who unfolds it reads the same code in
+plain monospace.
+
 Alt texts: a code cell's ``mystnb: image: alt:`` metadata is myst-nb's alt text for the
 cell's image outputs; the same text is given here to the images of the cell's HTML
 outputs whose alt text says nothing (a stepped figure's "precomputed figure", an
@@ -193,6 +199,14 @@ def cell_alt(cell):
     return image.get("alt") if isinstance(image, dict) else None
 
 
+def plain_folded_code(app, doctree, docname):
+    """The code of cells tagged hide-input without syntax colours (see above)."""
+    for cell in doctree.findall(nodes.container):
+        if "tag_hide-input" in cell.get("classes", []):
+            for block in cell.findall(nodes.literal_block):
+                block["language"] = "none"
+
+
 def replace_raw(node, text):
     node.replace_self(nodes.raw("", text, format="html"))
 
@@ -341,6 +355,7 @@ def lighten(app, exception):
 
 
 def setup(app):
+    app.connect("doctree-resolved", plain_folded_code)
     app.connect("doctree-resolved", describe_html_images)
     app.connect("doctree-resolved", images_to_files)
     app.connect("doctree-resolved", scripts_to_files)

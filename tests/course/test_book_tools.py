@@ -342,3 +342,21 @@ def test_a_chapter_without_the_install_cell_fails(tmp_path):
     write_notebook(tmp_path, "notebooks/a.html", ["import screwkit as sk"])
     assert len(first_cell_problems(tmp_path, "notebooks/a.html")) == 1
     assert first_cell_problems(tmp_path, "book/intro.html") == []
+
+
+def test_only_folded_drawing_code_loses_its_colours():
+    from docutils import nodes
+
+    def cell(classes):
+        return nodes.container(
+            "",
+            nodes.literal_block("x = 1", "x = 1", language="ipython3"),
+            classes=classes,
+        )
+
+    folded = cell(["cell", "tag_hide-input"])
+    shown = cell(["cell", "tag_nbval-ignore-output"])
+    doctree = nodes.section("", folded, shown)
+    light_pages.plain_folded_code(None, doctree, "notebooks/puma_ik")
+    assert next(folded.findall(nodes.literal_block))["language"] == "none"
+    assert next(shown.findall(nodes.literal_block))["language"] == "ipython3"
