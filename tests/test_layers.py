@@ -94,7 +94,6 @@ ORDER = [
             "ik.spherical_wrist",
             "ik.ur",
             "ik.stanford",
-            "ik._general_kinematics",
             "ik.general",
             "ik.decomposed",
             "ik.dispatch",
