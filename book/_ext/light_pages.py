@@ -46,6 +46,13 @@ span of its own, and the folded drawing code was a sixth of the largest chapters
 (90 kB of the PUMA's inverse kinematics). A reader who unfolds it reads the same code in
 plain monospace.
 
+Syntax colours that are no colour: Pygments' stylesheet gives names, punctuation and
+white space (``n``, ``p``, ``w``) the very colour it gives the whole code block, in the
+light and in the dark theme, yet every such token is a span of its own. When the build
+finishes, the spans of each class whose only rule, in both themes, is the block's own
+colour are taken out of every page (their text stays): nothing changes on screen, and
+the PUMA's inverse kinematics loses some 170 kB of HTML.
+
 Alt texts: a code cell's ``mystnb: image: alt:`` metadata is myst-nb's alt text for the
 cell's image outputs; the same text is given here to the images of the cell's HTML
 outputs whose alt text says nothing (a stepped figure's "precomputed figure", an
@@ -344,6 +351,54 @@ def shrink_images(outdir):
     )
 
 
+CODE_BLOCK = re.compile(r'<div class="highlight"><pre>.*?</pre>', re.S)
+
+
+def plain_token_classes(pygments_css):
+    """The token classes whose only rule, in every theme, is the code block's colour."""
+    block = dict(
+        re.findall(
+            r'(html\[data-theme="\w+"\]) \.highlight \{[^}]*color: ([^;}\s]+)',
+            pygments_css,
+        )
+    )
+    rules = {}
+    for theme, name, body in re.findall(
+        r'(html\[data-theme="\w+"\]) \.highlight \.([\w-]+) \{([^}]*)\}', pygments_css
+    ):
+        rules.setdefault(name, {})[theme] = body.strip()
+    return sorted(
+        name
+        for name, by_theme in rules.items()
+        if block
+        and by_theme.keys() == block.keys()
+        and all(by_theme[t] == f"color: {block[t]}" for t in block)
+    )
+
+
+def unwrap_plain_tokens(outdir):
+    """Take the spans of plain_token_classes out of every page; returns bytes saved."""
+    css = os.path.join(outdir, "_static", "pygments.css")
+    if not os.path.exists(css):
+        return 0
+    with open(css, encoding="utf-8") as f:
+        classes = plain_token_classes(f.read())
+    if not classes:
+        return 0
+    names = "|".join(classes)
+    span = re.compile(rf'<span class="(?:{names})">([^<]*)</span>')
+    saved = 0
+    for path in glob.glob(os.path.join(outdir, "**", "*.html"), recursive=True):
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        lighter = CODE_BLOCK.sub(lambda block: span.sub(r"\1", block[0]), text)
+        if len(lighter) < len(text):
+            saved += len(text) - len(lighter)
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(lighter)
+    return saved
+
+
 def lighten(app, exception):
     if exception is None and app.builder.format == "html":
         options = app.config.html_theme_options or {}
@@ -352,6 +407,7 @@ def lighten(app, exception):
         )
         subset_fonts(app.outdir)
         shrink_images(app.outdir)
+        unwrap_plain_tokens(app.outdir)
 
 
 def setup(app):
@@ -360,5 +416,7 @@ def setup(app):
     app.connect("doctree-resolved", images_to_files)
     app.connect("doctree-resolved", scripts_to_files)
     app.connect("html-page-context", no_widget_state, priority=900)
-    app.connect("build-finished", lighten)
+    # after the theme's own build-finished handlers (priority 500), which write the
+    # themed pygments.css that unwrap_plain_tokens reads
+    app.connect("build-finished", lighten, priority=900)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

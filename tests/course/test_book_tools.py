@@ -360,3 +360,33 @@ def test_only_folded_drawing_code_loses_its_colours():
     light_pages.plain_folded_code(None, doctree, "notebooks/puma_ik")
     assert next(folded.findall(nodes.literal_block))["language"] == "none"
     assert next(shown.findall(nodes.literal_block))["language"] == "ipython3"
+
+
+def test_spans_that_only_repeat_the_blocks_colour_are_unwrapped(tmp_path):
+    css = (
+        'html[data-theme="light"] .highlight { background: #fff; color: #080808 }\n'
+        'html[data-theme="light"] .highlight .n { color: #080808 } /* Name */\n'
+        'html[data-theme="light"] .highlight .k { color: #0000FF } /* Keyword */\n'
+        'html[data-theme="light"] .highlight .p { color: #080808; font-weight: bold }\n'
+        'html[data-theme="dark"] .highlight { background: #2b2b2b; color: #F8F8F2 }\n'
+        'html[data-theme="dark"] .highlight .n { color: #F8F8F2 } /* Name */\n'
+        'html[data-theme="dark"] .highlight .k { color: #F8F8F2 } /* Keyword */\n'
+        'html[data-theme="dark"] .highlight .p { color: #F8F8F2 }\n'
+    )
+    # n is the block's colour in both themes; k only in the dark; p is bold too
+    assert light_pages.plain_token_classes(css) == ["n"]
+    (tmp_path / "_static").mkdir()
+    (tmp_path / "_static" / "pygments.css").write_text(css, encoding="utf-8")
+    code = (
+        '<div class="highlight"><pre><span class="k">def</span> '
+        '<span class="n">f</span><span class="p">(</span>&lt;x)</pre></div>'
+    )
+    prose = '<p><span class="n">kept outside code</span></p>'
+    (tmp_path / "page.html").write_text(code + prose, encoding="utf-8")
+    assert light_pages.unwrap_plain_tokens(str(tmp_path)) == len(
+        '<span class="n"></span>'
+    )
+    assert (tmp_path / "page.html").read_text(encoding="utf-8") == (
+        '<div class="highlight"><pre><span class="k">def</span> '
+        'f<span class="p">(</span>&lt;x)</pre></div>' + prose
+    )
