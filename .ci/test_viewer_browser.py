@@ -729,9 +729,11 @@ def test_pause_stops_the_arms_where_they_are(page):
 
 def test_the_site_checks_rule_presses_play_and_sees_the_arm_move(page, tmp_path):
     # A small built "book": a page whose viewer plays, one whose page stops every
-    # animation frame (so play cannot move it), and a chapter whose code calls
-    # trajectory_viewer but whose page shows none. The rule passes the first and
-    # names the other two.
+    # animation frame (so play cannot move it), one whose page swallows a click on a
+    # playing viewer (so it cannot pause), and a chapter whose code calls
+    # trajectory_viewer but whose page shows none. The trajectory lasts 1 s, so on a
+    # busy machine it may end before the second click: the rule must still pass the
+    # first page and name the other three.
     import json
 
     import site_check
@@ -743,6 +745,15 @@ def test_the_site_checks_rule_presses_play_and_sees_the_arm_move(page, tmp_path)
     (tmp_path / "notebooks" / "plays.html").write_text(figure.page())
     (tmp_path / "notebooks" / "frozen.html").write_text(
         figure.page().replace("<body>", "<body>" + frozen, 1)
+    )
+    stuck = (
+        "<script>document.addEventListener('click', e => {"
+        " if (e.target.closest('.screwkit-play')"
+        " && e.target.closest('.screwkit-viewer').dataset.playing === '1')"
+        " e.stopPropagation(); }, true);</script>"
+    )
+    (tmp_path / "notebooks" / "stuck.html").write_text(
+        figure.page().replace("<body>", "<body>" + stuck, 1)
     )
     (tmp_path / "notebooks" / "none.html").write_text("<html><body>text</body></html>")
     sources = tmp_path / "_sources" / "notebooks"
@@ -757,6 +768,7 @@ def test_the_site_checks_rule_presses_play_and_sees_the_arm_move(page, tmp_path)
             pages=[
                 "notebooks/plays.html",
                 "notebooks/frozen.html",
+                "notebooks/stuck.html",
                 "notebooks/none.html",
             ],
             tmp=str(tmp_path),
@@ -767,6 +779,34 @@ def test_the_site_checks_rule_presses_play_and_sees_the_arm_move(page, tmp_path)
     assert problems == [
         f"notebooks/frozen.html: play on {figure.id} did not move it: its time went "
         "from 0 s to 0 s in 10 s",
+        f"notebooks/stuck.html: play on {figure.id} did not pause on a second click",
         "notebooks/none.html: its code calls trajectory_viewer but the page has no "
         "player (a viewer with a play button)",
     ]
+
+
+def test_the_play_rule_passes_a_player_that_ended_before_the_second_click(
+    page, tmp_path, monkeypatch
+):
+    # What a busy machine does to a 1 s trajectory: the rule waits until its time has
+    # reached the end, where the player stops by itself; a click then would play it
+    # again, so the rule's second click must still find a player that pauses.
+    import site_check
+
+    puma, paths, times = puma_paths(samples=11, duration=1.0)
+    figure = viewer.trajectory_viewer(puma, paths, times=times)
+    (tmp_path / "notebooks").mkdir()
+    (tmp_path / "notebooks" / "plays.html").write_text(figure.page())
+    monkeypatch.setattr(site_check, "PLAYED_S", 1.0)
+    server = site_check.serve(str(tmp_path))
+    try:
+        site = site_check.Site(
+            root=str(tmp_path),
+            origin=f"http://127.0.0.1:{server.server_address[1]}/",
+            pages=["notebooks/plays.html"],
+            tmp=str(tmp_path),
+        )
+        problems = site_check.trajectories_play_in(page.context.browser, site)
+    finally:
+        server.shutdown()
+    assert problems == []
