@@ -620,6 +620,22 @@ DARK_THEME = script("dark_theme")
 ANSWER_BOXES = script("answer_boxes_answered")
 
 
+def becomes(page, script, arg, test, seconds=5):
+    """Whether ``script`` (a function of ``arg``, run in the page) gives a value that
+    passes ``test`` (JavaScript after the value, such as ``"=== 0"``) within
+    ``seconds``: polled at every animation frame, so a sidebar's transition or a busy
+    machine is waited for, not guessed by a fixed pause."""
+    from playwright.sync_api import TimeoutError as Timeout
+
+    try:
+        page.wait_for_function(
+            f"(arg) => ({script})(arg) {test}", arg=arg, timeout=seconds * 1000
+        )
+    except Timeout:
+        return False
+    return True
+
+
 def navigation_works(page, page_name, width):
     """One search control in sight; the table-of-contents and page-outline buttons open
     their sidebars (Escape closes them), with no tooltip left on screen after."""
@@ -653,11 +669,9 @@ def navigation_works(page, page_name, width):
                 problems.append(f"{where}: the {side} sidebar is not in sight")
             if side == "primary" and buttons:  # its button closes and reopens it
                 press(buttons[0])
-                page.wait_for_timeout(400)
-                closed = page.evaluate(VISIBLE, links) == 0
+                closed = becomes(page, VISIBLE, links, "=== 0")
                 press(buttons[0])
-                page.wait_for_timeout(400)
-                if not closed or not page.evaluate(VISIBLE, links):
+                if not closed or not becomes(page, VISIBLE, links, "> 0"):
                     problems.append(
                         f"{where}: the {side} sidebar button does not close and "
                         "reopen the sidebar"
@@ -669,22 +683,20 @@ def navigation_works(page, page_name, width):
             )
             continue
         press(buttons[0])
-        page.wait_for_timeout(400)
         dialog = f"pst-{side}-sidebar-modal"
-        if not page.evaluate(DIALOG_OPEN, dialog) or not page.evaluate(
-            VISIBLE, f"#{dialog} a"
+        if not becomes(page, DIALOG_OPEN, dialog, "=== true") or not becomes(
+            page, VISIBLE, f"#{dialog} a", "> 0"
         ):
             problems.append(
                 f"{where}: the {side} sidebar button does not open the sidebar"
             )
         page.keyboard.press("Escape")
-        page.wait_for_timeout(300)
-        if page.evaluate(DIALOG_OPEN, dialog):
+        if not becomes(page, DIALOG_OPEN, dialog, "=== false"):
             problems.append(f"{where}: Escape does not close the {side} sidebar")
     if width >= 600:  # the mouse leaves the buttons, as a reader's does
         page.mouse.move(width // 2, 600)
     page.wait_for_timeout(700)  # longer than the tooltips' show delay
-    if page.evaluate(TOOLTIPS):
+    if not becomes(page, TOOLTIPS, None, "=== 0"):
         problems.append(
             f"{where}: a tooltip stays on screen after the buttons were used"
         )
@@ -879,7 +891,7 @@ def reader_sees_a_working_book(site):
             for page_name in site.pages:
                 page = context.new_page()
                 page.goto(site.origin + page_name, wait_until="load")
-                page.wait_for_timeout(500)  # MathJax typesets after load
+                page.evaluate(MATHJAX_DONE)  # MathJax typesets after load
                 found, counts, noted = layout_fits(page, page_name, width)
                 problems += found
                 notes += noted
@@ -893,7 +905,7 @@ def reader_sees_a_working_book(site):
                 problems += navigation_works(page, page_name, width)
                 if width == 1280:
                     page.reload(wait_until="load")
-                    page.wait_for_timeout(500)
+                    page.evaluate(MATHJAX_DONE)
                     found, counts, dark = axe_in_both_themes(page, page_name, axe)
                     problems += found
                     axe_counts[page_name], dark_counts[page_name] = counts, dark

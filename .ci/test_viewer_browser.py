@@ -810,3 +810,21 @@ def test_the_play_rule_passes_a_player_that_ended_before_the_second_click(
     finally:
         server.shutdown()
     assert problems == []
+
+
+def test_the_site_checks_waits_follow_the_page_not_a_clock(page):
+    # A sidebar that closes 1.2 s after its button is pressed (a slow transition, or a
+    # busy machine): `becomes` sees it close, where the fixed 0.4 s pause it replaced
+    # did not; and a sidebar that never closes is still reported.
+    import site_check
+
+    page.set_content(
+        "<nav id='side'><a href='#'>a chapter</a></nav><script>"
+        "setTimeout(() => document.getElementById('side').hidden = true, 1200);"
+        "</script>"
+    )
+    links = "#side a"
+    assert page.evaluate(site_check.VISIBLE, links) == 1
+    assert site_check.becomes(page, site_check.VISIBLE, links, "=== 0", seconds=5)
+    page.set_content("<nav id='side'><a href='#'>a chapter</a></nav>")
+    assert not site_check.becomes(page, site_check.VISIBLE, links, "=== 0", seconds=1)
