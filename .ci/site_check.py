@@ -617,6 +617,7 @@ AXE_RUN = script("axe_run")
 MATHJAX_DONE = script("mathjax_done")
 CLIPPED_MATH = script("clipped_math")
 DARK_THEME = script("dark_theme")
+TRANSITIONS_DONE = script("transitions_done")
 ANSWER_BOXES = script("answer_boxes_answered")
 
 
@@ -761,7 +762,7 @@ def axe_in_both_themes(page, page_name, axe):
     problems, counts = no_serious_accessibility_violations(page, page_name, axe)
     if page.evaluate(DARK_THEME, "dark") != "dark":
         return problems + [f"{page_name}: the dark theme cannot be set"], counts, {}
-    page.wait_for_timeout(300)  # the theme's colours transition
+    page.evaluate(TRANSITIONS_DONE)  # the theme's colours transition
     dark, dark_counts = no_serious_accessibility_violations(page, page_name, axe)
     page.evaluate(DARK_THEME, "light")  # the next page starts light
     return problems + [f"{p} (dark theme)" for p in dark], counts, dark_counts
