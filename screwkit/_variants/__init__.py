@@ -130,6 +130,3 @@ def register(chapter, number, draws=None):
 
     return add
 
-
-def units(unit, **values):  # TEMPORARY
-    return {name: (value, unit) for name, value in values.items()}
