@@ -51,21 +51,30 @@ def pick(rng, choices, default):
 
 @cache
 def spec(chapter, number):
-    """The table ``[exercise.NUMBER.variant]`` of ``answers/CHAPTER.toml``."""
+    """The table ``[exercise.NUMBER.variant]`` of ``answers/CHAPTER.toml``, checked."""
     path = resources.files("screwkit").joinpath(f"answers/{chapter}.toml")
     entries = tomllib.loads(path.read_text(encoding="utf-8")).get("exercise", {})
     table = entries.get(str(number), {}).get("variant")
-    where = f"[exercise.{number}.variant] of screwkit/answers/{chapter}.toml"
+    return checked(table, f"[exercise.{number}.variant] of answers/{chapter}.toml")
+
+
+#: the fields of an entry: a draw, a drawn number of the statement, a computed one
+ENTRIES = ({"seed0", "choices"}, {"unit", "seed0", "choices"}, {"unit"})
+
+
+def checked(table, where):
+    """``table`` if it is a variant table (a statement, then draws and numbers)."""
     if not isinstance(table, dict) or not isinstance(table.get("statement"), str):
         raise ValueError(f"{where} must exist and hold a statement, got {table!r}")
     for name, entry in table.items():
         if name == "statement":
             continue
-        drawn = isinstance(entry, dict) and {"seed0", "choices"} <= set(entry)
-        if not isinstance(entry, dict) or not (drawn or set(entry) == {"unit"}):
+        # a computed number has no choices: a list of one, to pass the test below
+        choices = entry.get("choices", [None]) if isinstance(entry, dict) else None
+        if not (isinstance(choices, list) and choices and set(entry) in ENTRIES):
             raise ValueError(
-                f"{name} of {where} must be a draw {{seed0, choices[, unit]}} or a "
-                f"computed number {{unit}}, got {entry!r}"
+                f"{name} of {where} must be a draw {{[unit, ]seed0, choices}} (a "
+                f"non-empty list) or a computed number {{unit}}, got {entry!r}"
             )
     return table
 
@@ -104,8 +113,8 @@ class Generator:
                 f"draws {sorted(values)}, got {sorted(arguments)}"
             )
         result = self.key(**values)
-        if isinstance(result, tuple) and len(result) == 2 and isinstance(result[1], dict):
-            result, shown = result
+        if isinstance(result, tuple) and isinstance(result[-1], dict):
+            result, shown = result  # the key, and values the statement shows
             values |= shown
         numbers = {
             name: (values[name], entry["unit"])
@@ -129,4 +138,3 @@ def register(chapter, number, draws=None):
         return key
 
     return add
-

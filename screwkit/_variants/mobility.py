@@ -70,6 +70,7 @@ def _planar_rrr(i):
 
 @register("mobility", 6)
 def redundant_constraints_of_a_planar_mechanism(limbs):
-    """The redundant constraints of the planar ``limbs``-RRR, and the formula's count."""
+    """The redundant constraints of the planar ``limbs``-RRR, and the formula's
+    count."""
     found = mobility([_planar_rrr(i) for i in range(limbs)])
     return found.redundant_constraints, {"count": found.grubler_kutzbach}
