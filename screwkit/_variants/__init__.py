@@ -116,11 +116,16 @@ class Generator:
         if isinstance(result, tuple) and isinstance(result[-1], dict):
             result, shown = result  # the key, and values the statement shows
             values |= shown
-        numbers = {
-            name: (values[name], entry["unit"])
-            for name, entry in table.items()
-            if name != "statement" and "unit" in entry
+        units = {
+            n: e["unit"] for n, e in table.items() if n != "statement" and "unit" in e
         }
+        missing = sorted(set(units) - set(values))
+        if missing:
+            raise ValueError(
+                f"the key of {self.chapter} exercise {self.number} must give the "
+                f"numbers it computes, {missing}, got {sorted(values)}"
+            )
+        numbers = {name: (values[name], unit) for name, unit in units.items()}
         statement = table["statement"].format(**values)
         key = np.asarray(result, dtype=float)  # a float, or a flat list of them
         return numbers, statement, key.ravel().tolist() if key.ndim else float(key)

@@ -152,6 +152,12 @@ def test_a_variant_table_and_its_key_function_must_agree():
     wrong = _variants.Generator("motion_in_time", 3, lambda duration: duration)
     with pytest.raises(ValueError, match=r"must take the draws \['T'\], got"):
         wrong(None)
+    # rigid_motions 7 computes the number axis (0, 1 or 2) from the axis drawn
+    mute = _variants.Generator("rigid_motions", 7, lambda angle, about: [1, 0, 0, 0])
+    with pytest.raises(
+        ValueError, match=r"must give the numbers it computes, \['axis'\]"
+    ):
+        mute(None)
     where = "[exercise.3.variant] of answers/fake.toml"
     with pytest.raises(ValueError, match="must exist and hold a statement"):
         _variants.checked({"T": {"unit": "s"}}, where)
