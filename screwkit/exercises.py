@@ -16,13 +16,16 @@ is the notebook's stem, e.g. ``puma_ik``)::
     per = "N m"                        # optional: the answer per unit of this is
                                        # accepted too (a force per N m of torque)
 
-A parametrised exercise has ``parametrised = true`` instead of ``answer``: its
-numbers come from a seed and its key is computed by screwkit (:func:`variant`; seed 0
-is the chapter's statement). An assessed exercise (book/assessed.yml) has only
-``assessed = true``: its key is the teacher's, in book/teacher_keys/CHAPTER.toml
-outside the package, read from a checkout of the course (the self-study book is built
-there) or from the folder SCREWKIT_TEACHER_KEYS names; an installed screwkit has none,
-and :func:`check` and :func:`answer_box` say that the teacher marks it.
+A parametrised exercise has ``parametrised = true`` instead of ``answer``: its numbers
+come from a seed and its key is computed by screwkit (:func:`variant`; seed 0 is the
+chapter's statement). Its statement and the lists its numbers are drawn from are in a
+sub-table ``[exercise.N.variant]`` of the same file, the key's computation in
+``screwkit/_variants/CHAPTER.py`` (see ``screwkit._variants``). An assessed exercise
+(book/assessed.yml) has only ``assessed = true``: its key is the teacher's, in
+book/teacher_keys/CHAPTER.toml outside the package, read from a checkout of the course
+(the self-study book is built there) or from the folder SCREWKIT_TEACHER_KEYS names;
+an installed screwkit has none, and :func:`check` and :func:`answer_box` say that the
+teacher marks it.
 
 ``check(chapter, number, answer)`` returns a :class:`Verdict` (right or wrong, and
 why); ``answer_box(chapter, number)`` returns a field and a Check button for the
@@ -752,7 +755,8 @@ def answer_key(chapter, number, seed=0):
 
 
 # ---- parametrised exercises -------------------------------------------------------
-# The generators live in screwkit/_variants/, one module per chapter.
+# The draws and statements are in [exercise.N.variant] of the key files, the keys'
+# computations in screwkit/_variants/, one module per chapter.
 
 
 def _seed(seed):

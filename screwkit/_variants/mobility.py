@@ -1,8 +1,11 @@
-"""The parametrised exercises of the chapter mobility."""
+"""The parametrised exercises of the chapter mobility: the keys' computations.
+
+The statements and their draws are in screwkit/answers/mobility.toml.
+"""
 
 from ..limbs import revolute
 from ..mobility_analysis import grubler_kutzbach, mobility
-from . import pick, register
+from . import register
 
 WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven"}
 AXES = {
@@ -23,47 +26,36 @@ JOINTS = {
     "S": ("a spherical joint", 3),
 }
 
-#: spatial limbs of three joints: base, leg, platform
-SPATIAL_LIMBS = ["RPS", "PRS", "RRS", "UPS", "PUS", "UPU", "RPU", "SPS"]
-
 
 @register("mobility", 4)
-def count_a_spatial_parallel_mechanism(rng):
-    limbs = pick(rng, [3, 4, 6], 3)
-    limb = pick(rng, SPATIAL_LIMBS, "RPS")
-    base, leg, platform = (JOINTS[letter][0] for letter in limb)
-    leg = leg.replace("joint", "leg")
+def count_a_spatial_parallel_mechanism(limbs, limb):
+    """The Grübler-Kutzbach count of a platform on ``limbs`` limbs ``limb`` (its
+    joints' letters from base to platform, "RPS"), and the limb in words."""
     freedoms = sum(JOINTS[letter][1] for letter in limb)
     # the base, the platform and two links per limb; three joints per limb
     count = grubler_kutzbach(
         links=2 + 2 * limbs, joints=3 * limbs, freedoms=limbs * freedoms
     )
-    numbers = {"limbs": (limbs, "")} | {
-        f"{JOINTS[letter][0].split()[1]} joints per limb": (limb.count(letter), "")
+    base, leg, platform = (JOINTS[letter][0] for letter in limb)
+    shown = {
+        f"{JOINTS[letter][0].split()[1]} joints per limb": limb.count(letter)
         for letter in JOINTS
     }
-    statement = (
-        f"Count the freedoms of the {limbs}-{limb} ({WORDS[limbs]} limbs: {base} at "
-        f"the base, {leg}, {platform} at the platform) with the Grübler-Kutzbach "
-        f"formula."
-    )
-    return numbers, statement, float(count)
+    words = {"limbs_word": WORDS[limbs], "base": base, "platform": platform}
+    return count, shown | words | {"leg": leg.replace("joint", "leg")}
 
 
 @register("mobility", 5)
-def count_a_planar_parallel_mechanism(rng):
-    limbs = pick(rng, [2, 3, 4, 5], 3)
-    chain = pick(rng, [3, 4], 3)  # revolutes per limb
+def count_a_planar_parallel_mechanism(limbs, revolutes):
+    """The spatial Grübler-Kutzbach count of a planar mechanism of ``limbs`` limbs of
+    ``revolutes`` revolutes each."""
     count = grubler_kutzbach(
-        links=2 + (chain - 1) * limbs, joints=chain * limbs, freedoms=chain * limbs
+        links=2 + (revolutes - 1) * limbs,
+        joints=revolutes * limbs,
+        freedoms=revolutes * limbs,
     )
-    numbers = {"limbs": (limbs, ""), "revolutes per limb": (chain, "")}
-    statement = (
-        f"The planar {limbs}-{'R' * chain} (all {AXES[chain * limbs]} axes vertical) "
-        f"moves its platform in its plane with three freedoms. What does the spatial "
-        f"Grübler-Kutzbach formula give for it?"
-    )
-    return numbers, statement, float(count)
+    shown = {"limb": "R" * revolutes, "axes": AXES[revolutes * limbs]}
+    return count, shown | {"revolutes per limb": revolutes}
 
 
 def _planar_rrr(i):
@@ -77,14 +69,8 @@ def _planar_rrr(i):
 
 
 @register("mobility", 6)
-def redundant_constraints_of_a_planar_mechanism(rng):
-    limbs = pick(rng, [2, 3, 4, 5, 6, 7], 3)
+def redundant_constraints_of_a_planar_mechanism(limbs):
+    """The redundant constraints of the planar ``limbs``-RRR, and the formula's
+    count."""
     found = mobility([_planar_rrr(i) for i in range(limbs)])
-    numbers = {"limbs": (limbs, "")}
-    statement = (
-        f"For the planar {limbs}-RRR (all axes vertical), how many redundant "
-        f"constraints nu (the LWS orders summed, minus the PWS order) make up the "
-        f"difference between the formula's {found.grubler_kutzbach} and the three "
-        f"freedoms?"
-    )
-    return numbers, statement, float(found.redundant_constraints)
+    return found.redundant_constraints, {"count": found.grubler_kutzbach}

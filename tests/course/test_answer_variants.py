@@ -143,3 +143,26 @@ def test_make_answers_writes_a_sheet_per_student_and_the_keys(tmp_path):
     bad.write_text("student,seed\nada,x\n", encoding="utf-8")
     with pytest.raises(ValueError, match="seed must be a whole number"):
         teacher_answers.read_seeds(bad)
+
+
+def test_a_variant_table_and_its_key_function_must_agree():
+    from screwkit import _variants
+
+    # motion_in_time 3 draws T: a function of another name is refused at its first call
+    wrong = _variants.Generator("motion_in_time", 3, lambda duration: duration)
+    with pytest.raises(ValueError, match=r"must take the draws \['T'\], got"):
+        wrong(None)
+    # rigid_motions 7 computes the number axis (0, 1 or 2) from the axis drawn
+    mute = _variants.Generator("rigid_motions", 7, lambda angle, about: [1, 0, 0, 0])
+    with pytest.raises(
+        ValueError, match=r"must give the numbers it computes, \['axis'\]"
+    ):
+        mute(None)
+    where = "[exercise.3.variant] of answers/fake.toml"
+    with pytest.raises(ValueError, match="must exist and hold a statement"):
+        _variants.checked({"T": {"unit": "s"}}, where)
+    for entry in ({"unit": "s", "seed0": 2.0}, {"seed0": 2.0, "choices": []}, 2.0):
+        with pytest.raises(ValueError, match="T of .* must be a draw"):
+            _variants.checked({"statement": "T = {T}", "T": entry}, where)
+    good = {"statement": "T = {T}", "T": {"unit": "s", "seed0": 2, "choices": [1]}}
+    assert _variants.checked(good, where) is good
