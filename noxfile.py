@@ -31,18 +31,6 @@ COURSE_ONLY_TESTS = ["tests/course"]
 # Prints each test file (argv) that imports a module this environment lacks: a test of
 # the course (nbformat, jupytext, ...), not of screwkit, when screwkit is installed
 # alone.
-# Prints the file of each installed screwkit module that is a deprecated alias (its
-# docstring begins "Deprecated alias"), read without importing it.
-_DEPRECATED_ALIASES = """
-import ast, importlib.util, pathlib, sys
-sys.path = [p for p in sys.path if p not in ("", ".")]  # the installed screwkit
-package = pathlib.Path(importlib.util.find_spec("screwkit").origin).parent
-for path in sorted(package.glob("*.py")):
-    docstring = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8"))) or ""
-    if docstring.startswith("Deprecated alias"):
-        print(path)
-"""
-
 _NEEDS_MISSING_MODULE = """
 import ast, importlib.util, os, sys
 for path in sys.argv[1:]:
@@ -187,15 +175,4 @@ def unit_lowest(session):
         session.run(
             "pytest", "tests", *ignores, "-q", *(session.posargs or ["--tier", "fast"])
         )
-        # the deprecated alias modules warn on import (an error under the tests'
-        # filterwarnings) and hold no doctest: not collected, as conftest.py does in
-        # the working tree
-        aliases = session.run("python", "-c", _DEPRECATED_ALIASES, silent=True).split()
-        session.run(
-            "pytest",
-            "--pyargs",
-            "screwkit",
-            "--doctest-modules",
-            "-q",
-            *[f"--ignore={path}" for path in aliases],
-        )
+        session.run("pytest", "--pyargs", "screwkit", "--doctest-modules", "-q")

@@ -31,66 +31,19 @@ import enum
 import functools
 import importlib
 import inspect
-import pkgutil
 import sys
-import warnings
+from pathlib import Path
 
 from numpydoc.docscrape import get_doc_object
 from numpydoc.validate import validate
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
+# what the API page documents: its public modules, and their public names
+from api_reference import public_modules, public_names  # noqa: E402
+
 PACKAGE = "screwkit"
 
 CHECKS = {"GL06", "GL07", "GL08", "PR01", "PR02", "RT01"}
-
-
-def public_modules(package):
-    """The public modules of a package and of its public subpackages, imported.
-
-    Parameters
-    ----------
-    package : module
-        The package, imported.
-
-    Returns
-    -------
-    list of module
-        Every module whose dotted name has no part starting with an underscore,
-        except the deprecated aliases (their docstring starts "Deprecated alias"),
-        which the API page leaves out too.
-    """
-    modules = []
-    prefix = package.__name__ + "."
-    with warnings.catch_warnings():  # deprecated aliases warn when imported
-        warnings.simplefilter("ignore", DeprecationWarning)
-        for info in pkgutil.walk_packages(package.__path__, prefix):
-            if not any(part.startswith("_") for part in info.name.split(".")):
-                modules.append(importlib.import_module(info.name))
-    # a deprecated alias documents nothing of its own (its names live elsewhere)
-    return [m for m in modules if not (m.__doc__ or "").startswith("Deprecated alias")]
-
-
-def public_names(module):
-    """A module's ``__all__``, or the public functions and classes defined in it.
-
-    Parameters
-    ----------
-    module : module
-        A public module of the package.
-
-    Returns
-    -------
-    list of str
-        The names the API page documents for this module.
-    """
-    if hasattr(module, "__all__"):
-        return list(module.__all__)
-    return sorted(
-        name
-        for name, value in vars(module).items()
-        if not name.startswith("_")
-        and (inspect.isfunction(value) or inspect.isclass(value))
-        and value.__module__ == module.__name__
-    )
 
 
 def members(cls):

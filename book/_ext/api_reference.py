@@ -48,7 +48,6 @@ in a code block that wraps, not in the signature line (``value_lines``).
 
 import ast
 import importlib
-import importlib.util
 import inspect
 import pkgutil
 import pprint
@@ -66,22 +65,13 @@ PACKAGE = "screwkit"
 
 def public_modules(package):
     """The public modules of the package and of its folders (``screwkit.ik.ur``), in
-    alphabetical order (imported); a deprecated alias is left out."""
+    alphabetical order (imported)."""
     names = sorted(
         info.name
         for info in pkgutil.walk_packages(package.__path__, f"{package.__name__}.")
         if not any(part.startswith("_") for part in info.name.split("."))
-        and not deprecated_alias(importlib.util.find_spec(info.name).origin)
     )
     return [importlib.import_module(name) for name in names]
-
-
-def deprecated_alias(path):
-    """Whether the module at ``path`` is a deprecated alias (its docstring says so),
-    read without importing it (importing one warns)."""
-    with open(path, encoding="utf-8") as source:
-        docstring = ast.get_docstring(ast.parse(source.read())) or ""
-    return docstring.startswith("Deprecated alias")
 
 
 def public_names(module):

@@ -5,14 +5,12 @@ public function of screwkit, found by walking the package, is called by some row
 The tables are the modules ``table_*.py`` beside this file, found by that name.
 """
 
-import ast
 import importlib
 import importlib.util
 import inspect
 import pkgutil
 import re
 import sys
-import warnings
 from pathlib import Path
 
 import pytest
@@ -120,36 +118,16 @@ def test_bad_input_is_a_clear_error_naming_the_argument(r, case_id):
 # ---- every public function has a row -------------------------------------------------
 
 
-def is_deprecated_alias(origin):
-    """A module that warns (DeprecationWarning) when imported: an alias of another."""
-    tree = ast.parse(Path(origin).read_text(encoding="utf-8"))
-    return any(
-        isinstance(node, ast.Name) and node.id == "DeprecationWarning"
-        for statement in tree.body
-        if isinstance(statement, ast.Expr)
-        for node in ast.walk(statement)
-    )
-
-
 def public_modules():
     """screwkit and every module or package below it whose dotted name has no part
-    starting with '_', except deprecated aliases (their functions are their new home's).
-    """
+    starting with '_'."""
     yield screwkit
     for info in pkgutil.walk_packages(screwkit.__path__, "screwkit."):
         if any(part.startswith("_") for part in info.name.split(".")):
             continue
         if info.name in KERNEL_MODULES:
             continue
-        if is_deprecated_alias(importlib.util.find_spec(info.name).origin):
-            continue
-        with warnings.catch_warnings():
-            warnings.simplefilter("error", DeprecationWarning)
-            try:
-                module = importlib.import_module(info.name)
-            except DeprecationWarning:  # an alias that warns in another way
-                continue
-        yield module
+        yield importlib.import_module(info.name)
 
 
 def public_functions():

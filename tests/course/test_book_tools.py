@@ -88,7 +88,7 @@ def test_the_modules_are_found_on_disk():
         parts = path.relative_to(ROOT).with_suffix("").parts
         name = ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
         public = not any(part.startswith("_") for part in name.split("."))
-        if public and name != "screwkit" and not api_reference.deprecated_alias(path):
+        if public and name != "screwkit":
             on_disk.add(name)
     assert names == on_disk
 
