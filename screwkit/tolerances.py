@@ -288,7 +288,8 @@ IK_GENERAL_ACCEPT_TOL = 1e-10
 
 #: A real root of the eigenvalue problem is accounted for when a solution's angle of
 #: the eigenvalue joint is within this of it (rad): a simple root is computed to
-#: 1e-12, a double one to about sqrt(eps); a root no solution accounts for makes the
+#: 1e-12, a double one to about sqrt(eps); a root that fewer solutions account for
+#: than it should (a repeated root: one for each solution sharing it) makes the
 #: answer say that it may be incomplete.
 IK_GENERAL_EXPLAINED_TOL = 1e-4
 

@@ -458,6 +458,38 @@ def test_a_root_that_gives_no_solution_makes_the_answer_say_so(monkeypatch):
     assert len(result.Q) < 8 and "may be incomplete" in result.reason
 
 
+def test_a_repeated_root_short_of_one_solution_makes_the_answer_say_so(monkeypatch):
+    # the parallel base arm's 8 solutions share the eigenvalue joint's angle (q5 in
+    # the form that solves it) in pairs: 4 double roots. One solution lost from a
+    # pair went unreported, its root's angle being matched by the other of the pair
+    from screwkit.ik import general
+
+    table, chain = parallel_base_arm()
+    q = np.array([0.864816, -2.942255, -2.991873, -1.501858, -1.792111, 2.38058])
+    T = dh_fk(table, q)[0]
+    general._LAST_FORM.clear()
+    whole = general_6r_ik(chain, T)
+    assert len(whole.Q) == 8 and whole.reason is None
+    assert whole.formulation == "joints 6..1 shifted by 5"  # its roots are q5's
+    partners = np.abs(wrap(whole.Q[:, 4] - q[4])) < SAME
+    assert np.sum(partners) == 2  # q and one other solution share q5
+
+    original = general._polish
+
+    def losing_q(*args):
+        polished = original(*args)
+        lost = np.max(np.abs(wrap(polished - q)), axis=1) < 1e-6
+        polished[lost, 0] += 0.3  # every candidate that reached q now misses T
+        return polished
+
+    monkeypatch.setattr(general, "_polish", losing_q)
+    general._LAST_FORM.clear()
+    result = general_6r_ik(chain, T)
+    assert len(result.Q) == 7 and not contains(result.Q, q)
+    assert result.reason is not None and "may be incomplete" in result.reason
+    assert f"{wrap(q[4]):.4f}" in result.reason  # the root short of a solution
+
+
 def test_singular_solutions_are_flagged_one_by_one():
     # the reason said "singular" but no solution said which
     puma = sk.robots.puma560()

@@ -45,11 +45,14 @@ part is below IK_GENERAL_REAL_TOL becomes a candidate, and every candidate that
 Newton brings to the pose (residual at most IK_GENERAL_ACCEPT_TOL) is returned once.
 Every genuine real root (its joints 1 and 2 consistent, IK_GENERAL_CONSISTENT_TOL;
 special geometry adds spurious ones, e.g. the PUMA's q = 0 and pi) must be accounted
-for by a returned solution (its angle within IK_GENERAL_EXPLAINED_TOL): a root left
-over makes the reason say that the list may be incomplete, so a short list is never
-silent. A solution where the Jacobian loses rank (solutions coinciding, or a
-continuum along aligned axes) is flagged in ``singular`` and the reason says so: of
-a continuum, Q holds points only.
+for by as many returned solutions (their angle within IK_GENERAL_EXPLAINED_TOL) as
+it has consistent candidates, at most its multiplicity (solutions that share the
+eigenvalue joint's angle make a repeated root, one candidate each): a root short of
+solutions makes the reason say that the list may be incomplete, so a short list is
+never silent (unless a solution it has is singular: solutions coincide there). A
+solution where the Jacobian loses rank (solutions coinciding, or a continuum along
+aligned axes) is flagged in ``singular`` and the reason says so: of a continuum, Q
+holds points only.
 
 An arm whose axes leave it fewer than six degrees of freedom (all parallel, two
 coincident; its Jacobian's rank below 6 at every configuration) has continua where
@@ -339,7 +342,8 @@ _MIX = 0.6180339887
 
 def _repeated_roots(M, x3, V):
     """Eigenvectors V (k, 12) for the roots x3 (k,), with those of repeated roots
-    replaced.
+    replaced, and the multiplicity (k,) of each root (how many of the roots x3 it
+    stands for).
 
     Solutions that share q3 (e.g. two wrist configurations) give a repeated root whose
     eigenvectors are any mixture of their monomial vectors. The null space B of
@@ -351,6 +355,7 @@ def _repeated_roots(M, x3, V):
     gaps = np.abs(np.diff(x3.real)) > IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x3[1:]))
     starts = np.concatenate([[0], np.nonzero(gaps)[0] + 1, [len(x3)]])
     roots, vectors = [x3], [V]
+    multiplicity = [np.repeat(np.diff(starts), np.diff(starts))]
     for a, b in zip(starts[:-1], starts[1:]):
         if b - a < 2:
             continue
@@ -364,14 +369,18 @@ def _repeated_roots(M, x3, V):
         C = np.linalg.eig(K[0])[1]
         roots.append(np.full(d, x, dtype=complex))
         vectors.append((B @ C).T)
-    return np.concatenate(roots), np.concatenate(vectors)
+        multiplicity.append(np.full(d, b - a))
+    return np.concatenate(roots), np.concatenate(vectors), np.concatenate(multiplicity)
 
 
 def _candidates(w, r, G, shift, found):
     """Joint vectors (k, 6) of the loops E1 ... E6 = G_j from the eigenvalue problems
-    of ``found`` (an :class:`_Eliminated`), the pose j (k,) of each, and whether each
-    is consistent (k,): its joints 1 and 2 products those of two angles, so that its
-    root (its q3) is genuine and a solution must account for it."""
+    of ``found`` (an :class:`_Eliminated`), the pose j (k,) of each, and its claim
+    (k,) on the solutions: 0 when inconsistent, else the multiplicity m >= 1 of its
+    root (its q3) in the spectrum. A candidate is consistent when its joints 1 and 2
+    products are those of two angles: its root is genuine, and as many solutions
+    must account for it as it has consistent candidates, at most m
+    (:func:`_unexplained`)."""
     values, vectors = np.linalg.eig(found.A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
@@ -380,7 +389,7 @@ def _candidates(w, r, G, shift, found):
     Z = vectors[which, :, column]  # (k, 24)
     # the eigenvector is (v, x3 v): take the better-scaled half
     V = np.where(np.abs(x3[:, None]) <= 1, Z[:, :12], Z[:, 12:])
-    x3, V, which = _with_repeated_roots(found.M, x3, V, which)
+    x3, V, which, multiplicity = _with_repeated_roots(found.M, x3, V, which)
     pose = usable[which]
     V = V.reshape(-1, 4, 3)
     x4 = np.sum(V[:, :-1].conj() * V[:, 1:], axis=(1, 2)) / np.sum(
@@ -411,28 +420,28 @@ def _candidates(w, r, G, shift, found):
         s1s2 - s1 * s2,
     ]
     consistent = np.max(np.abs(gaps), axis=0) <= IK_GENERAL_CONSISTENT_TOL
-    return q, pose, consistent
+    return q, pose, np.where(consistent, multiplicity, 0)
 
 
 def _with_repeated_roots(M, x3, V, which):
-    """The roots x3 (k,), their vectors V (k, 12) and problems ``which`` (k,), with the
-    vectors of repeated roots replaced (:func:`_repeated_roots`) in the problems that
-    have any."""
+    """The roots x3 (k,), their vectors V (k, 12), problems ``which`` (k,) and
+    multiplicities (k,), with the vectors of repeated roots replaced
+    (:func:`_repeated_roots`) in the problems that have any."""
     order = np.lexsort((x3.real, which))
     x3, V, which = x3[order], V[order], which[order]
     close = (which[1:] == which[:-1]) & (
         np.abs(np.diff(x3.real)) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x3[1:]))
     )
     if not np.any(close):
-        return x3, V, which
+        return x3, V, which, np.ones(len(x3), int)
     parts = []
     for j in np.unique(which):
         mine = which == j
         if np.any(close & mine[1:]):
-            x, v = _repeated_roots(M[j], x3[mine], V[mine])
-            parts.append((x, v, np.full(len(x), j)))
+            x, v, m = _repeated_roots(M[j], x3[mine], V[mine])
+            parts.append((x, v, np.full(len(x), j), m))
         else:
-            parts.append((x3[mine], V[mine], which[mine]))
+            parts.append((x3[mine], V[mine], which[mine], np.ones(np.sum(mine), int)))
     return tuple(np.concatenate(p) for p in zip(*parts))
 
 
@@ -681,7 +690,9 @@ def _say(singular, unexplained=()):
         angles = ", ".join(f"{a:.4f}" for a in unexplained[:4])
         missing = (
             f"{len(unexplained)} real root(s) of the eigenvalue problem (its joint at "
-            f"{angles} rad) gave no solution of the pose: the list may be incomplete"
+            f"{angles} rad) gave fewer solutions of the pose than the root has "
+            "candidates (a repeated root one for each solution that shares it): the "
+            "list may be incomplete"
         )
         other = _say(singular)
         return missing if other is None or not len(singular) else f"{missing}; {other}"
@@ -696,22 +707,39 @@ def _say(singular, unexplained=()):
     )
 
 
-def _unexplained(root, root_pose, kept, poses, joint):
-    """The real roots (rad) that no solution accounts for, by pose: {pose: angles},
-    for the genuine roots ``root`` (k,) of poses ``root_pose`` (k,) and the solutions
-    ``kept`` (a (Q, residuals) pair for each of ``poses``), compared on ``joint``."""
+def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
+    """The real roots (rad) that fewer solutions account for than they should, by
+    pose: {pose: angles}.
+
+    ``root`` (k,) are the genuine roots' angles of ``joint`` (one a consistent
+    candidate), ``root_pose`` (k,) their poses, ``multiplicity`` (k,) each root's
+    multiplicity in the spectrum; ``kept`` a (Q, residuals) pair for each of
+    ``poses`` (sorted) and ``singular`` (all solutions,) their flags. The roots
+    within IK_GENERAL_EXPLAINED_TOL of one another are one root: its c consistent
+    candidates, m its multiplicity, call for min(c, m) distinct solutions whose
+    angle of ``joint`` is within IK_GENERAL_EXPLAINED_TOL of it (solutions sharing
+    that angle make a repeated root). Fewer is a solution lost, unless one of them
+    is singular (solutions coincide there, and a double root may stand for one)."""
     if not len(root):
         return {}
     counts = np.array([len(Q) for Q, _ in kept])
     width = max(int(counts.max()), 1)
     angles = np.full((len(kept), width), np.nan)
+    flags = np.zeros((len(kept), width), bool)
     rows = np.repeat(np.arange(len(kept)), counts)
     columns = np.arange(len(rows)) - np.repeat(np.cumsum(counts) - counts, counts)
     if len(rows):
         angles[rows, columns] = np.concatenate([Q[:, joint] for Q, _ in kept])
+        flags[rows, columns] = singular
     where = np.searchsorted(poses, root_pose)  # poses is sorted
-    gaps = np.abs(_wrap_angle(root[:, None] - angles[where]))
-    left = ~np.any(gaps <= IK_GENERAL_EXPLAINED_TOL, axis=1)
+    near = np.abs(_wrap_angle(root[:, None] - angles[where])) <= (
+        IK_GENERAL_EXPLAINED_TOL
+    )
+    same = (root_pose[:, None] == root_pose) & (
+        np.abs(_wrap_angle(root[:, None] - root)) <= IK_GENERAL_EXPLAINED_TOL
+    )
+    wanted = np.minimum(np.sum(same, axis=1), np.max(same * multiplicity, axis=1))
+    left = (np.sum(near, axis=1) < wanted) & ~np.any(near & flags[where], axis=1)
     return {
         int(j): np.unique(np.round(_wrap_angle(root[left & (root_pose == j)]), 4))
         for j in np.unique(root_pose[left])
@@ -830,14 +858,16 @@ def _solve(chain, T):
         """The answers of ``poses`` from the candidates phi (k, 6) of the form
         ``name``, pose (k,) naming each candidate's pose; ``claims`` (k,) which
         candidates' third angles are genuine real roots of the eigenvalue problem,
-        each of which a solution must account for (None, a search: none)."""
+        which solutions must account for: 0 not, else the root's multiplicity
+        (:func:`_candidates`; None, a search: none)."""
         q = np.empty_like(phi)
         q[:, order] = phi
         q = _polish(z, o / scale, home, T_scaled[pose], q)
         residuals = _residuals(chain, T[pose], q, scale)
         good = residuals <= IK_GENERAL_ACCEPT_TOL
-        claims = np.zeros(len(phi), bool) if claims is None else claims
-        root, root_pose = phi[claims, 2], pose[claims]
+        claims = np.zeros(len(phi), int) if claims is None else claims
+        genuine = claims > 0
+        root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
         q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
         by_pose = np.argsort(pose, kind="stable")
         q, pose, residuals = q[by_pose], pose[by_pose], residuals[by_pose]
@@ -845,7 +875,9 @@ def _solve(chain, T):
         ends = np.searchsorted(pose, poses, "right")
         kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
         singular = _singular(z, o / scale, home, np.concatenate([Q for Q, _ in kept]))
-        left = _unexplained(root, root_pose, kept, poses, order[2])
+        left = _unexplained(
+            root, root_pose, multiplicity, kept, singular, poses, order[2]
+        )
         start = 0
         for j, (Q, res) in zip(poses, kept):
             flags = singular[start : start + len(Q)]
