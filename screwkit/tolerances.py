@@ -322,6 +322,13 @@ IK_GENERAL_SEARCH_DAMPING = 1e-4
 #: nothing the acceptance could see.
 IK_GENERAL_POLISH_TOL = IK_GENERAL_ACCEPT_TOL * 1e-3
 
+#: Newton's polish of screwkit.ik.general takes the pseudo-inverse's step where the
+#: Jacobian's Hadamard ratio (``|det J|`` over the product of its columns' lengths, 1
+#: for orthogonal columns) is below this, and an LU solve (the same step up to
+#: round-off, five times cheaper) above it: the two differ only where J is singular to
+#: working precision, whose ratio is far below.
+IK_GENERAL_HADAMARD_TOL = 1e-10
+
 # ---- parallel: model, legs, numerics, search ----------------------------------------
 # A length below is written for a mechanism about 1 m across and used times the
 # mechanism's own size (ParallelManipulator.scale, the farthest attachment point from

@@ -496,6 +496,11 @@ def analytic_ik(chain, T, within_limits=False, near=None, fixed=None):
             near = _check_near(near)
             found = _ONE_POSE[type(arm)](arm, T)
             return _one_answer(arm, chain, T, found, within_limits, near)
+        if type(arm) is _GeneralArm:  # one pose of a general 6R: already checked
+            within_limits = check_flag(within_limits, "within_limits")
+            near = _check_near(near)
+            found = arm.solver(chain, T)
+            return _general_answer(arm, chain, found, within_limits, near)
     _check_batch_size(T, "T", MAX_POSES, "analytic_ik (a list of answers)")
     if fixed is not None or chain.n == 7:
         return _fixed_ik(chain, T, within_limits, near, fixed)

@@ -40,6 +40,13 @@ each step is one NumPy call for the whole batch (the 24 x 24 eigenvalue problems
 included), and a pose whose form turns out degenerate goes on to the next form with
 the other poses that did.
 
+One pose (T of shape (4, 4)) goes the same steps with less bookkeeping: the chain's
+constants (its axes and home pose, the left side's coefficients, the right side's
+motions at the grid, the screw matrices the polish multiplies) are computed once per
+chain and cached, the form that last solved a pose of the chain is tried alone, and
+the batch path takes over when that form depends on the pose (a shifted one), is
+nearly degenerate here or finds no solution. Its answer is the batch path's.
+
 What the answer claims: every real root of the eigenvalue problem whose imaginary
 part is below IK_GENERAL_REAL_TOL becomes a candidate, and every candidate that
 Newton brings to the pose (residual at most IK_GENERAL_ACCEPT_TOL) is returned once.
@@ -71,7 +78,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._checks import check_chain, check_poses
+from .._checks import check_chain, check_poses, one_pose
 from ..links import Joint
 from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
@@ -81,7 +88,6 @@ from ..tolerances import (
     IK_GENERAL_EXPLAINED_TOL,
     IK_GENERAL_LEADING_TOL,
     IK_GENERAL_NULL_TOL,
-    IK_GENERAL_POLISH_TOL,
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
@@ -89,13 +95,14 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _cross_last, _rotations_about, _wrap_angle
+from ..transforms import _cross, _cross_last, _skew, _wrap_angle
+from ._general_kinematics import error as _error
+from ._general_kinematics import poe as _poe
+from ._general_kinematics import polish as _polish
+from ._general_kinematics import residuals as _residuals
+from ._general_kinematics import singular as _singular
 
 __all__ = ["GeneralIK", "general_6r_ik"]
-
-#: Newton steps that polish each candidate (quadratic convergence from the
-#: eigenvalue's 1e-8 or better reaches round-off in two or three).
-NEWTON_STEPS = 6
 
 #: Three equally spaced angles: a function a + b cos + c sin is fixed by its values
 #: there, and _FIT turns the three values into (a, b, c).
@@ -259,12 +266,23 @@ def _eliminate(w, r, G, shift):
     (6, 3, n or 1, 1), lengths divided by the chain's size; poses G (n, 4, 4)), angles
     q_i = phi_i + shift_i: an :class:`_Eliminated`."""
     n = G.shape[0]
-    r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
-    w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
-    hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
-    hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
-    a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
-    right = np.einsum("inj,kj->nik", _right(w, r, hp, hl, a1, a2), _FIT2)
+    if w.shape[2] == 1:  # joints 1, 2 and 6 do not depend on the pose
+        hp = G[:, :3, :3] @ r[5, :, 0, 0] + G[:, :3, 3]  # (n, 3)
+        hl = G[:, :3, :3] @ w[5, :, 0, 0]
+        R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
+        # einsum, not a matrix product that BLAS may block by the batch's size: the
+        # same round-off for a pose alone as in a batch
+        p = np.einsum("gij,nj->ngi", R, hp) + t  # (n, 9 angles, 3)
+        l = np.einsum("gij,nj->ngi", R, hl)
+        values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
+    else:
+        r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
+        w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
+        hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
+        hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
+        a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
+        values = _right(w, r, hp, hl, a1, a2)
+    right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
     U, sigma, Vh = np.linalg.svd(Q)
     reason = [None] * n
@@ -279,10 +297,10 @@ def _eliminate(w, r, G, shift):
     else:
         a3, a4, a5 = _GRID3[:, None, :] + shift[2:5, None, None]
         left = np.einsum("inj,kj->nik", _left(w, r, a3, a4, a5), _FIT3)
-    left = np.broadcast_to(left, (n, 14, 27)).copy()
-    left[:, :, 0] -= C0
+    # N (left - C0 e0) in the monomials of the half-angle tangents:
     # (n, 6, power of x3, power of x4, power of x5)
-    poly = (N @ left @ _TO_POLY3).reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
+    poly = N @ (left @ _TO_POLY3) - (N @ C0[..., None]) * _TO_POLY3[0]
+    poly = poly.reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
     M = np.zeros((n, 3, 12, 4, 3))
     M[:, :, :6, :3, :] = poly
     M[:, :, 6:, 1:, :] = poly
@@ -315,6 +333,29 @@ def _left_coefficients_cached(w, r, shift):
     left = _left(*axes, a3, a4, a5)[:, 0] @ _FIT3.T
     left.setflags(write=False)
     return left
+
+
+@functools.lru_cache(maxsize=64)
+def _right_motions_cached(w, r, shift):
+    """_right_motions on bytes (hashable), cached."""
+    w, r = np.frombuffer(w).reshape(2, 3), np.frombuffer(r).reshape(2, 3)
+    angles = _GRID2 + np.frombuffer(shift)[:, None]
+    p, l = np.zeros((3, 1, 9)), np.broadcast_to(np.eye(3)[:, :, None], (3, 3, 9))
+    for k in range(2):
+        p, l = _turn_both(w[k, :, None, None], r[k, :, None, None], -angles[k], p, l)
+    R, t = l.transpose(2, 0, 1).copy(), p[:, 0].T.copy()
+    R.setflags(write=False)
+    t.setflags(write=False)
+    return R, t
+
+
+def _right_motions(w, r, shift):
+    """The rigid motions E2^-1 E1^-1 of the right side at the grid's 9 angles of
+    joints 1 and 2 (axes w, points r (2, 3); their shifts, bytes): rotations
+    (9, 3, 3) and translations (9, 3), x -> R x + t."""
+    return _right_motions_cached(
+        np.ascontiguousarray(w).tobytes(), np.ascontiguousarray(r).tobytes(), shift
+    )
 
 
 def _left_coefficients(w, r, shift):
@@ -398,13 +439,20 @@ def _candidates(w, r, G, shift, found):
     x5 = np.sum(V[:, :, :-1].conj() * V[:, :, 1:], axis=(1, 2)) / np.sum(
         np.abs(V[:, :, :-1]) ** 2, axis=(1, 2)
     )
-    q3 = _half_angle(x3.real) + shift[2]
-    q4 = _half_angle(x4.real) + shift[3]
-    q5 = _half_angle(x5.real) + shift[4]
+    phi = _half_angle(np.stack([x3.real, x4.real, x5.real]))
+    q3, q4, q5 = phi + shift[2:5, None]
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
-    values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0]
-    b = np.einsum("kij,kj->ki", found.pinv[pose], values.T - found.C0[pose])
+    if w.shape[2] == 1:  # from the cached coefficients of the left side
+        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
+        c, s = np.cos(phi), np.sin(phi)
+        one = np.ones_like(c)
+        f3, f4, f5 = np.stack([one, c, s], axis=-1)  # (k, 3) each
+        monomials = f3[:, :, None, None] * f4[:, None, :, None] * f5[:, None, None]
+        values = np.einsum("kj,ij->ki", monomials.reshape(-1, 27), left)  # (k, 14)
+    else:
+        values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
+    b = np.einsum("kij,kj->ki", found.pinv[pose], values - found.C0[pose])
     # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
     c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 = b.T
     q1 = np.arctan2(s1, c1) + shift[0]
@@ -445,24 +493,45 @@ def _with_repeated_roots(M, x3, V, which):
     return tuple(np.concatenate(p) for p in zip(*parts))
 
 
+def _wrist_frame(w):
+    """For axes w (6, 3, m, 1): [w_i] and [w_i]^2 (m, 5, 3, 3) of axes 1 to 5, and
+    two unit vectors u, v = w6 x u (m, 3) normal to axis 6."""
+    w6 = w[5, :, :, 0].T
+    u = _cross_last(w6, np.array([1.0, 0.0, 0.0]))
+    u = np.where(
+        np.linalg.norm(u, axis=1, keepdims=True) < 0.5,
+        _cross_last(w6, np.array([0.0, 1.0, 0.0])),
+        u,
+    )
+    u = u / np.linalg.norm(u, axis=1, keepdims=True)
+    K = _skew(w[:5, :, :, 0].transpose(2, 0, 1))
+    return K, K @ K, u, _cross_last(w6, u)
+
+
+@functools.lru_cache(maxsize=64)
+def _wrist_frame_cached(w):
+    """_wrist_frame of shared axes w (bytes of (6, 3)), cached."""
+    frame = _wrist_frame(np.frombuffer(w).reshape(6, 3, 1, 1))
+    for array in frame:
+        array.setflags(write=False)
+    return frame
+
+
 def _last_angle(w, r, G, q):
     """q6 (k,) from q1..q5 (k, 6): the rotation E6 = (E1 ... E5)^-1 G_k about axis 6
     (axes w, r (6, 3, k or 1, 1), poses G (k, 4, 4))."""
-    k = len(q)
-    w6 = np.broadcast_to(w[5, :, :, 0], (3, k))
-    u = _cross(w6, np.array([1.0, 0.0, 0.0])[:, None])
-    u = np.where(
-        np.linalg.norm(u, axis=0) < 0.5,
-        _cross(w6, np.array([0.0, 1.0, 0.0])[:, None]),
-        u,
-    )
-    u = u / np.linalg.norm(u, axis=0)
-    Gu = np.einsum("kij,jk->ik", G[:, :3, :3], u)[..., None]
+    if w.shape[2] == 1:
+        K, K2, u, v = _wrist_frame_cached(np.ascontiguousarray(w).tobytes())
+    else:
+        K, K2, u, v = _wrist_frame(w)
+    Gu = G[:, :3, :3] @ u[..., None]  # (k, 3, 1)
+    # the rotations about axes 1 to 5 by -q (Rodrigues' formula), (k, 5, 3, 3)
+    angle = -q[:, :5, None, None]
+    turns = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K2
     for j in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
-        angle = -q[:, j, None]
-        Gu = _turn(w[j], np.cos(angle), np.sin(angle), Gu)
+        Gu = turns[:, j] @ Gu
     Gu = Gu[..., 0]
-    return np.arctan2(np.sum(_cross(w6, u) * Gu, axis=0), np.sum(u * Gu, axis=0))
+    return np.arctan2(np.sum(v * Gu, axis=1), np.sum(u * Gu, axis=1))
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -515,17 +584,43 @@ def _formulation(S, G, index):
     )
 
 
-#: Each chain's joint axes (directions, points) and home pose at q = 0, kept while
-#: the chain lives (a chain is immutable).
-_GEOMETRY = weakref.WeakKeyDictionary()
+@dataclass(frozen=True, eq=False)
+class _Arm:
+    """A 6R chain's constants for the solver, computed once per chain: its axes'
+    unit directions ``w`` and points ``r`` (6, 3) at q = 0 and its home pose ``home``
+    (4, 4) and inverse, lengths divided by ``scale`` (the chain's size, m); its unit
+    screws ``screws`` (6, 6), (w; r x w), and ``key`` (bytes) their bytes, which
+    name its geometry."""
+
+    w: np.ndarray
+    r: np.ndarray
+    home: np.ndarray
+    home_inverse: np.ndarray
+    scale: float
+    screws: np.ndarray
+    key: bytes
 
 
-def _geometry(chain):
-    """The axes z, o (6, 3) and the home pose M (4, 4) of a chain at q = 0 (m)."""
-    if chain not in _GEOMETRY:
-        z, o = chain.joint_axes(np.zeros(6))
-        _GEOMETRY[chain] = (z, o, chain.fk(np.zeros(6)))
-    return _GEOMETRY[chain]
+#: Each chain's constants (an _Arm), kept while the chain lives (a chain is immutable).
+_ARMS = weakref.WeakKeyDictionary()
+
+
+def _arm(chain):
+    """The :class:`_Arm` of a 6R chain, computed on first use."""
+    try:
+        return _ARMS[chain]
+    except KeyError:
+        pass
+    z, o = chain.joint_axes(np.zeros(6))
+    M = chain.fk(np.zeros(6))
+    scale = length_scale(o, M[:3, 3])
+    home = M.copy()
+    home[:3, 3] /= scale
+    r = o / scale
+    screws = np.concatenate([z, _cross_last(r, z)], axis=1)
+    arm = _Arm(z, r, home, _inverse(home), float(scale), screws, screws.tobytes())
+    _ARMS[chain] = arm
+    return arm
 
 
 #: The form that last solved a chain's pose, by the chain's axes (bytes): tried first
@@ -535,52 +630,6 @@ _LAST_FORM_SIZE = 64
 
 
 # ---- the public function ------------------------------------------------------------
-
-
-def _poe(w, r, home, q):
-    """The pose exp([S1] q1) ... exp([S6] q6) M (rotation (k, 3, 3), position (k, 3))
-    and the space Jacobian (k, 6, 6), [omega; v] rows, of the axes (w, r)."""
-    R = np.broadcast_to(np.eye(3), (len(q), 3, 3))
-    p = np.zeros((len(q), 3))
-    J = np.empty((len(q), 6, 6))
-    for i in range(6):
-        wi, ri = R @ w[i], R @ r[i] + p
-        J[:, :3, i], J[:, 3:, i] = wi, _cross_last(ri, wi)
-        Ri = _rotations_about(w[i], q[:, i])
-        p = p + (R @ (r[i] - Ri @ r[i])[..., None])[..., 0]
-        R = R @ Ri
-    return R @ home[:3, :3], R @ home[:3, 3] + p, J
-
-
-def _error(w, r, home, targets, q):
-    """The error twists e (k, 6) of q (k, 6) against their targets (k, 4, 4) and the
-    space Jacobians (k, 6, 6): e = (omega, dp - omega x p), omega the vee of the skew
-    part of R* R(q)^T and dp the position error, the spatial error twist to first
-    order."""
-    R, p, J = _poe(w, r, home, q)
-    E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
-    omega = np.stack(
-        [E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0], E[:, 1, 0] - E[:, 0, 1]],
-        axis=1,
-    )
-    omega /= 2
-    return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
-
-
-def _polish(w, r, home, targets, q):
-    """Newton steps J_s dq = e (:func:`_error`) on the pose from the candidates q
-    (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
-    quadratic convergence near a solution, no logarithm."""
-    q = q.copy()
-    active = np.arange(len(q))
-    for _ in range(NEWTON_STEPS):
-        e, J = _error(w, r, home, targets[active], q[active])
-        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
-        active, e, J = active[moving], e[moving], J[moving]
-        if not len(active):
-            break
-        q[active] += (np.linalg.pinv(J) @ e[..., None])[..., 0]
-    return q
 
 
 #: The search that stands in when the elimination finds nothing: Newton from this
@@ -607,26 +656,6 @@ def _search(w, r, home, targets):
     return q, pose
 
 
-def _residuals(chain, T, q, scale):
-    """The pose error (k,) of each q (k, 6) against its pose T (k, 4, 4) by the
-    chain's own forward kinematics: sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2),
-    which is the norm of the error twist [omega; v / scale] to first order
-    (|R(q) - R|_F = 2 sqrt(2) sin(angle / 2)) and, unlike the skew part of R(q)^T R,
-    vanishes only at the pose itself."""
-    Tq = chain.fk(q)
-    rotation = np.sum((Tq[:, :3, :3] - T[:, :3, :3]) ** 2, axis=(1, 2)) / 2
-    position = np.sum((Tq[:, :3, 3] - T[:, :3, 3]) ** 2, axis=1) / scale**2
-    return np.sqrt(rotation + position)
-
-
-def _singular(w, r, home, Q):
-    """Whether the Jacobian loses rank at each solution Q (k, 6)."""
-    if not len(Q):
-        return np.zeros(0, bool)
-    sigma = np.linalg.svd(_poe(w, r, home, Q)[2], compute_uv=False)
-    return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
-
-
 #: Fixed pseudo-random configurations at which an arm's mobility is measured.
 _MOBILITY_Q = np.random.default_rng(43).uniform(-np.pi, np.pi, (4, 6))
 
@@ -650,11 +679,8 @@ def _mobility(chain):
         configurations.
     """
     if chain not in _MOBILITY:
-        z, o, M = _geometry(chain)
-        scale = length_scale(o, M[:3, 3])
-        home = M.copy()
-        home[:3, 3] /= scale
-        J = _poe(z, o / scale, home, _MOBILITY_Q)[2]
+        arm = _arm(chain)
+        J = _poe(arm.w, arm.r, arm.home, _MOBILITY_Q)[2]
         sigma = np.linalg.svd(J, compute_uv=False)
         ranks = np.sum(sigma > IK_GENERAL_SINGULAR_TOL * sigma[:, :1], axis=1)
         _MOBILITY[chain] = int(np.max(ranks))
@@ -748,7 +774,7 @@ def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
 
 def _distinct(Q, residuals):
     """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
-    lexicographically."""
+    lexicographically, their residuals and their rows in Q."""
     order = np.argsort(residuals, kind="stable")
     Q, residuals = Q[order], residuals[order]
     same = np.max(np.abs(_wrap_angle(Q[:, None] - Q[None])), axis=2) <= (
@@ -758,9 +784,9 @@ def _distinct(Q, residuals):
     for i in range(len(Q)):
         if not any(same[i, j] for j in keep):
             keep.append(i)
-    Q, residuals = Q[keep], residuals[keep]
+    Q, residuals, index = Q[keep], residuals[keep], order[keep]
     order = np.lexsort(Q.T[::-1])
-    return Q[order], residuals[order]
+    return Q[order], residuals[order], index[order]
 
 
 def general_6r_ik(chain, T):
@@ -807,13 +833,17 @@ def general_6r_ik(chain, T):
         raise ValueError(
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
+    if one_pose(T) is not None:  # one plain pose: checked on floats, solved alone
+        return _solve_one(chain, T)
     _check_batch_size(T, "T", MAX_POSES, "general_6r_ik")
     T = check_poses(T, "T")
-    batch = T[None] if T.ndim == 2 else T
+    if T.ndim == 2:
+        return _solve_one(chain, T)
+    batch = T
     answers = []
     for start in range(0, len(batch), CHUNK):  # memory bounded: ~10 kB a pose
         answers += _solve(chain, batch[start : start + CHUNK])
-    return answers[0] if T.ndim == 2 else answers
+    return answers
 
 
 #: The largest batch of poses :func:`general_6r_ik` solves in one call (about a
@@ -839,54 +869,98 @@ def _check_batch_size(T, name, limit, what):
         )
 
 
+def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None):
+    """The answers (a list of GeneralIK) of ``poses`` (of T (n, 4, 4), T_scaled its
+    lengths divided by the chain's size) from the candidates phi (k, 6) of the form
+    ``name`` (joint order ``order``), pose (k,) naming each candidate's pose:
+    polished, checked, told apart and flagged. ``claims`` (k,): which candidates'
+    third angles are genuine real roots of the eigenvalue problem, which solutions
+    must account for: 0 not, else the root's multiplicity (:func:`_candidates`;
+    None, a search: none)."""
+    q = np.empty_like(phi)
+    q[:, order] = phi
+    q, J = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q)
+    residuals = _residuals(chain, T[pose], q, arm.scale)
+    good = residuals <= IK_GENERAL_ACCEPT_TOL
+    claims = np.zeros(len(phi), int) if claims is None else claims
+    genuine = claims > 0
+    root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
+    q, pose, residuals, J = _wrap_angle(q[good]), pose[good], residuals[good], J[good]
+    if len(poses) == 1:
+        Q, res, index = _distinct(q, residuals)
+        kept = [(Q, res)]
+    else:
+        by_pose = np.argsort(pose, kind="stable")
+        q, pose, residuals, J = (x[by_pose] for x in (q, pose, residuals, J))
+        starts = np.searchsorted(pose, poses, "left")
+        ends = np.searchsorted(pose, poses, "right")
+        parts = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
+        kept = [(Q, res) for Q, res, _ in parts]
+        index = np.concatenate([a + i for (_, _, i), a in zip(parts, starts)])
+    singular = _singular(J[index])
+    left = _unexplained(root, root_pose, multiplicity, kept, singular, poses, order[2])
+    answers, start = [], 0
+    for j, (Q, res) in zip(poses, kept):
+        flags = singular[start : start + len(Q)]
+        answers.append(GeneralIK(Q, res, _say(flags, left.get(j, ())), name, flags))
+        start += len(Q)
+    return answers
+
+
+def _remember(key, attempt):
+    """Keep ``attempt`` as the form that last solved a pose of the chain ``key``."""
+    if key not in _LAST_FORM and len(_LAST_FORM) >= _LAST_FORM_SIZE:
+        _LAST_FORM.clear()
+    _LAST_FORM[key] = attempt
+
+
+def _solve_one(chain, T):
+    """The answer (a GeneralIK) of one checked pose T (4, 4), as :func:`_solve` gives
+    it, with less bookkeeping: the form that last solved a pose of this chain (at
+    first joints 1..6) is tried alone when its axes do not depend on the pose (the
+    unshifted forms, whose constants are cached) and it is well conditioned here,
+    and the pose has a solution; otherwise :func:`_solve` solves it."""
+    arm = _arm(chain)
+    attempt = _LAST_FORM.get(arm.key, (0, 0))
+    if attempt[1] % 6 or _mobility(chain) < 6:
+        return _solve(chain, T[None])[0]
+    T_scaled = T[None].copy()
+    T_scaled[:, :3, 3] /= arm.scale
+    G = T_scaled @ arm.home_inverse
+    name, w, r, target, order = _formulation(arm.screws, G, attempt[1])
+    shift = _SHIFTS[attempt[0]]
+    found = _eliminate(w, r, target, shift)
+    if not (found.usable[0] and found.quality[0] >= IK_GENERAL_COMFORT_TOL):
+        return _solve(chain, T[None])[0]
+    phi, which, claims = _candidates(w, r, target, shift, found)
+    pose = np.zeros(len(phi), int)
+    answer = _finish(chain, arm, T[None], T_scaled, phi, pose, [0], name, order, claims)
+    if not len(answer[0].Q):  # none: the batch path searches
+        return _solve(chain, T[None])[0]
+    _remember(arm.key, attempt)
+    return answer[0]
+
+
 def _solve(chain, T):
     """The answers (a list of GeneralIK) for poses T (n, 4, 4): each form of the loop
     is tried on the poses that no earlier form solved; a nearly degenerate form is
     kept as a pose's fallback, used only when no well-conditioned form exists."""
-    z, o, M = _geometry(chain)
-    scale = length_scale(o, M[:3, 3])
-    home, T_scaled = M.copy(), T.copy()
-    home[:3, 3] /= scale
-    T_scaled[:, :3, 3] /= scale
-    # unit screws (w; r x w)
-    Sn = np.concatenate([z, _cross_last(o / scale, z)], axis=1)
-    G = T_scaled @ _inverse(home)
+    arm = _arm(chain)
+    T_scaled = T.copy()
+    T_scaled[:, :3, 3] /= arm.scale
+    G = T_scaled @ arm.home_inverse
     n = len(T)
     answers, reasons, fallback = [None] * n, [[] for _ in range(n)], {}
 
     def finish(phi, pose, poses, name, order, claims=None):
-        """The answers of ``poses`` from the candidates phi (k, 6) of the form
-        ``name``, pose (k,) naming each candidate's pose; ``claims`` (k,) which
-        candidates' third angles are genuine real roots of the eigenvalue problem,
-        which solutions must account for: 0 not, else the root's multiplicity
-        (:func:`_candidates`; None, a search: none)."""
-        q = np.empty_like(phi)
-        q[:, order] = phi
-        q = _polish(z, o / scale, home, T_scaled[pose], q)
-        residuals = _residuals(chain, T[pose], q, scale)
-        good = residuals <= IK_GENERAL_ACCEPT_TOL
-        claims = np.zeros(len(phi), int) if claims is None else claims
-        genuine = claims > 0
-        root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
-        q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
-        by_pose = np.argsort(pose, kind="stable")
-        q, pose, residuals = q[by_pose], pose[by_pose], residuals[by_pose]
-        starts = np.searchsorted(pose, poses, "left")
-        ends = np.searchsorted(pose, poses, "right")
-        kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
-        singular = _singular(z, o / scale, home, np.concatenate([Q for Q, _ in kept]))
-        left = _unexplained(
-            root, root_pose, multiplicity, kept, singular, poses, order[2]
-        )
-        start = 0
-        for j, (Q, res) in zip(poses, kept):
-            flags = singular[start : start + len(Q)]
-            answers[j] = GeneralIK(Q, res, _say(flags, left.get(j, ())), name, flags)
-            start += len(Q)
+        """_finish, the answers stored in ``answers``."""
+        found = _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims)
+        for j, answer in zip(poses, found):
+            answers[j] = answer
 
     # a singular leading matrix from special geometry stays singular at any shift:
     # every form is tried at the first shift before another shift is
-    key = Sn.tobytes()
+    key = arm.key
     tries = [(s, f) for s in range(len(_SHIFTS)) for f in range(12)]
     if key in _LAST_FORM:
         tries.remove(_LAST_FORM[key])
@@ -896,7 +970,7 @@ def _solve(chain, T):
         if not len(pending):
             break
         shift = _SHIFTS[attempt[0]]
-        name, w, r, target, order = _formulation(Sn, G[pending], attempt[1])
+        name, w, r, target, order = _formulation(arm.screws, G[pending], attempt[1])
         found = _eliminate(w, r, target, shift)
         for j, why in zip(pending, found.reason):
             if why is not None:
@@ -918,9 +992,7 @@ def _solve(chain, T):
                 order,
                 claims[take],
             )
-            if len(_LAST_FORM) >= _LAST_FORM_SIZE:
-                _LAST_FORM.clear()
-            _LAST_FORM[key] = attempt
+            _remember(key, attempt)
         pending = pending[~comfortable]
     for j in pending:
         if j in fallback:
@@ -936,7 +1008,7 @@ def _solve(chain, T):
             )
     empty = [j for j in range(n) if not len(answers[j].Q)]
     if empty:  # special geometry can hide roots from a form that looks well posed
-        q, pose = _search(z, o / scale, home, T_scaled[empty])
+        q, pose = _search(arm.w, arm.r, arm.home, T_scaled[empty])
         before = [answers[j] for j in empty]
         finish(q, np.asarray(empty)[pose], empty, "Newton search", [0, 1, 2, 3, 4, 5])
         for j, old in zip(empty, before):

@@ -1,0 +1,157 @@
+"""The kinematics :mod:`screwkit.ik.general` polishes and checks its candidates with.
+
+The product of exponentials of k joint vectors at once, with the space Jacobian, the
+pose error twist and Newton's steps on it, and the residual of each solution by the
+chain's own forward kinematics. Each joint's motion is the 4 x 4 matrix
+exp([S] q) = I + sin(q) [S] + (1 - cos(q)) [S]^2 of a unit revolute screw S (its
+[S]^3 = -[S]), for every joint and candidate in one NumPy call, so that the cost of a
+call hardly depends on k (one pose has up to 16 candidates, a batch thousands).
+"""
+
+import functools
+
+import numpy as np
+
+from .. import _compiled
+from ..tolerances import (
+    IK_GENERAL_HADAMARD_TOL,
+    IK_GENERAL_POLISH_TOL,
+    IK_GENERAL_SINGULAR_TOL,
+)
+from ..transforms import _cross_last, _skew
+
+__all__ = []
+
+#: Newton steps that polish each candidate (quadratic convergence from the
+#: eigenvalue's 1e-8 or better reaches round-off in two or three).
+NEWTON_STEPS = 6
+
+#: Up to this many candidates, the residuals are computed one by one with the chain's
+#: scalar forward kinematics (its generated code on floats), cheaper than the batch
+#: form on arrays of a few entries.
+SCALAR_RESIDUALS = 48
+
+
+@functools.lru_cache(maxsize=64)
+def _screw_matrices_cached(w, r):
+    """screw_matrices on bytes (hashable), cached."""
+    w, r = np.frombuffer(w).reshape(-1, 3), np.frombuffer(r).reshape(-1, 3)
+    S = np.zeros((len(w), 4, 4))
+    S[:, :3, :3] = _skew(w)
+    S[:, :3, 3] = _cross_last(r, w)
+    lines = np.zeros((len(w), 4, 2))  # each axis as a direction and a point
+    lines[:, :3, 0], lines[:, :3, 1], lines[:, 3, 1] = w, r, 1.0
+    found = S, S @ S, lines
+    for array in found:
+        array.setflags(write=False)
+    return found
+
+
+def screw_matrices(w, r):
+    """[S] and [S]^2 (6, 4, 4) of the unit revolute screws S = (w, r x w) of the axes
+    along unit w through r (6, 3), and the axes as homogeneous (w, 0) and (r, 1)
+    columns (6, 4, 2); cached (a chain's axes are used call after call)."""
+    return _screw_matrices_cached(
+        np.ascontiguousarray(w, float).tobytes(),
+        np.ascontiguousarray(r, float).tobytes(),
+    )
+
+
+#: The identity of a pose.
+_EYE4 = np.eye(4)
+_EYE4.setflags(write=False)
+
+
+def poe(w, r, home, q):
+    """The pose exp([S1] q1) ... exp([S6] q6) M (rotation (k, 3, 3), position (k, 3))
+    and the space Jacobian (k, 6, 6), [omega; v] rows, of the axes (w, r) (6, 3) and
+    the home pose M (4, 4) at the joint vectors q (k, 6)."""
+    S, S2, lines = screw_matrices(w, r)
+    angle = q[..., None, None]
+    E = _EYE4 + np.sin(angle) * S + (1 - np.cos(angle)) * S2  # (k, 6, 4, 4)
+    prefix = np.empty_like(E)  # E1 ... E(i-1), the motion before joint i
+    prefix[:, 0] = _EYE4
+    for i in range(1, 6):
+        prefix[:, i] = prefix[:, i - 1] @ E[:, i - 1]
+    T = prefix[:, 5] @ E[:, 5] @ home
+    moved = prefix[..., :3, :] @ lines  # (k, 6, 3, 2): the axes at q
+    ws, rs = moved[..., 0], moved[..., 1]
+    J = np.concatenate([ws, _cross_last(rs, ws)], axis=-1).swapaxes(1, 2)
+    return T[:, :3, :3], T[:, :3, 3], J
+
+
+def error(w, r, home, targets, q):
+    """The error twists e (k, 6) of q (k, 6) against their targets (k, 4, 4) and the
+    space Jacobians (k, 6, 6): e = (omega, dp - omega x p), omega the vee of the skew
+    part of R* R(q)^T and dp the position error, the spatial error twist to first
+    order."""
+    R, p, J = poe(w, r, home, q)
+    E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
+    # the vee of (E - E^T) / 2: entries (2, 1), (0, 2), (1, 0)
+    omega = (E - np.swapaxes(E, 1, 2))[:, [2, 0, 1], [1, 2, 0]] / 2
+    return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
+
+
+def newton_step(J, e):
+    """The Newton steps pinv(J) e (k, 6) for Jacobians J (k, 6, 6) and errors e
+    (k, 6): an LU solve where J is well conditioned (IK_GENERAL_HADAMARD_TOL; the
+    pseudo-inverse's step there, up to round-off), the pseudo-inverse's minimum-norm
+    step where J is nearly singular (a solution on a continuum, where the two
+    differ)."""
+    ratio = np.abs(np.linalg.det(J)) / np.prod(np.linalg.norm(J, axis=1), axis=1)
+    dq = np.empty(e.shape)
+    near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
+    if not np.all(near):
+        dq[~near] = np.linalg.solve(J[~near], e[~near, :, None])[..., 0]
+    if np.any(near):
+        dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
+    return dq
+
+
+def polish(w, r, home, targets, q):
+    """Newton steps J_s dq = e (:func:`error`) on the pose from the candidates q
+    (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
+    quadratic convergence near a solution, no logarithm. Returns the polished q
+    (k, 6) and the space Jacobians (k, 6, 6) there."""
+    q = q.copy()
+    J_at = np.empty((len(q), 6, 6))
+    active = np.arange(len(q))
+    for _ in range(NEWTON_STEPS):
+        e, J = error(w, r, home, targets[active], q[active])
+        J_at[active] = J
+        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
+        active, e, J = active[moving], e[moving], J[moving]
+        if not len(active):
+            return q, J_at
+        q[active] += newton_step(J, e)
+    J_at[active] = poe(w, r, home, q[active])[2]  # moved since their last Jacobian
+    return q, J_at
+
+
+def residuals(chain, T, q, scale):
+    """The pose error (k,) of each q (k, 6) against its pose T (k, 4, 4) by the
+    chain's own forward kinematics: sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2),
+    which is the norm of the error twist [omega; v / scale] to first order
+    (|R(q) - R|_F = 2 sqrt(2) sin(angle / 2)) and, unlike the skew part of R(q)^T R,
+    vanishes only at the pose itself."""
+    if len(q) <= SCALAR_RESIDUALS:
+        pose = _compiled.scalar(chain, "pose")
+        top = np.array([pose(row) for row in q.tolist()]).reshape(-1, 3, 4)
+    else:
+        top = chain.fk(q)[:, :3]
+    rotation = np.sum((top[:, :, :3] - T[:, :3, :3]) ** 2, axis=(1, 2)) / 2
+    position = np.sum((top[:, :, 3] - T[:, :3, 3]) ** 2, axis=1) / scale**2
+    return np.sqrt(rotation + position)
+
+
+def singular(J):
+    """Whether each Jacobian J (k, 6, 6) loses rank (IK_GENERAL_SINGULAR_TOL)."""
+    flags = np.zeros(len(J), bool)
+    # sigma_min / sigma_max >= |det J| / sigma_max^6 >= |det J| / |J|_F^6: where
+    # that bound clears the tolerance, J keeps its rank and needs no SVD
+    bound = np.abs(np.linalg.det(J)) / np.sum(J * J, axis=(1, 2)) ** 3
+    check = ~(bound > IK_GENERAL_SINGULAR_TOL)
+    if np.any(check):
+        sigma = np.linalg.svd(J[check], compute_uv=False)
+        flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
+    return flags
