@@ -99,12 +99,13 @@ def newton_step(J, e):
     step where J is nearly singular (a solution on a continuum, where the two
     differ)."""
     ratio = np.abs(np.linalg.det(J)) / np.prod(np.linalg.norm(J, axis=1), axis=1)
-    dq = np.empty(e.shape)
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
-    if not np.all(near):
+    if not near.any():  # the usual case: every J well conditioned
+        return np.linalg.solve(J, e[:, :, None])[..., 0]
+    dq = np.empty(e.shape)
+    if not near.all():
         dq[~near] = np.linalg.solve(J[~near], e[~near, :, None])[..., 0]
-    if np.any(near):
-        dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
+    dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
     return dq
 
 
@@ -114,9 +115,12 @@ def polish(w, r, home, targets, q):
     quadratic convergence near a solution, no logarithm. Returns the polished q
     (k, 6) and the space Jacobians (k, 6, 6) there."""
     q = q.copy()
-    J_at = np.empty((len(q), 6, 6))
-    active = np.arange(len(q))
-    for _ in range(NEWTON_STEPS):
+    e, J_at = error(w, r, home, targets, q)
+    active = np.nonzero(np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL)[0]
+    if not len(active):  # every candidate at its pose already (often, for one pose)
+        return q, J_at
+    q[active] += newton_step(J_at[active], e[active])
+    for _ in range(NEWTON_STEPS - 1):
         e, J = error(w, r, home, targets[active], q[active])
         J_at[active] = J
         moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
@@ -139,8 +143,8 @@ def residuals(chain, T, q, scale):
         top = np.array([pose(row) for row in q.tolist()]).reshape(-1, 3, 4)
     else:
         top = chain.fk(q)[:, :3]
-    rotation = np.sum((top[:, :, :3] - T[:, :3, :3]) ** 2, axis=(1, 2)) / 2
-    position = np.sum((top[:, :, 3] - T[:, :3, 3]) ** 2, axis=1) / scale**2
+    rotation = ((top[:, :, :3] - T[:, :3, :3]) ** 2).sum(axis=(1, 2)) / 2
+    position = ((top[:, :, 3] - T[:, :3, 3]) ** 2).sum(axis=1) / scale**2
     return np.sqrt(rotation + position)
 
 
@@ -149,9 +153,9 @@ def singular(J):
     flags = np.zeros(len(J), bool)
     # sigma_min / sigma_max >= |det J| / sigma_max^6 >= |det J| / |J|_F^6: where
     # that bound clears the tolerance, J keeps its rank and needs no SVD
-    bound = np.abs(np.linalg.det(J)) / np.sum(J * J, axis=(1, 2)) ** 3
+    bound = np.abs(np.linalg.det(J)) / (J * J).sum(axis=(1, 2)) ** 3
     check = ~(bound > IK_GENERAL_SINGULAR_TOL)
-    if np.any(check):
+    if check.any():
         sigma = np.linalg.svd(J[check], compute_uv=False)
         flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
     return flags

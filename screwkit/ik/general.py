@@ -209,9 +209,15 @@ def _turn_both(w, r, angle, p, l):
 def _products(p, l):
     """The 14 Raghavan–Roth quantities (14, n, g) of points p and directions l
     (3, n, g)."""
-    pp = np.sum(p * p, axis=0)
-    pl = np.sum(p * l, axis=0)
-    return np.concatenate([p, l, [pp, pl], _cross(p, l), pp * l - 2 * pl * p])
+    out = np.empty((14,) + np.broadcast_shapes(p.shape[1:], l.shape[1:]))
+    out[:3], out[3:6] = p, l
+    pp = out[6] = (p * p).sum(axis=0)
+    pl = out[7] = (p * l).sum(axis=0)
+    out[8] = p[1] * l[2] - p[2] * l[1]  # p x l, written into place
+    out[9] = p[2] * l[0] - p[0] * l[2]
+    out[10] = p[0] * l[1] - p[1] * l[0]
+    np.subtract(pp * l, 2 * pl * p, out=out[11:])
+    return out
 
 
 def _left(w, r, q3, q4, q5):
@@ -433,12 +439,12 @@ def _candidates(w, r, G, shift, found):
     x3, V, which, multiplicity = _with_repeated_roots(found.M, x3, V, which)
     pose = usable[which]
     V = V.reshape(-1, 4, 3)
-    x4 = np.sum(V[:, :-1].conj() * V[:, 1:], axis=(1, 2)) / np.sum(
-        np.abs(V[:, :-1]) ** 2, axis=(1, 2)
+    x4 = (V[:, :-1].conj() * V[:, 1:]).sum(axis=(1, 2)) / (np.abs(V[:, :-1]) ** 2).sum(
+        axis=(1, 2)
     )
-    x5 = np.sum(V[:, :, :-1].conj() * V[:, :, 1:], axis=(1, 2)) / np.sum(
-        np.abs(V[:, :, :-1]) ** 2, axis=(1, 2)
-    )
+    x5 = (V[:, :, :-1].conj() * V[:, :, 1:]).sum(axis=(1, 2)) / (
+        np.abs(V[:, :, :-1]) ** 2
+    ).sum(axis=(1, 2))
     phi = _half_angle(np.stack([x3.real, x4.real, x5.real]))
     q3, q4, q5 = phi + shift[2:5, None]
     # q1, q2: the right side's 8 products from the 14 values of the left side
@@ -467,7 +473,7 @@ def _candidates(w, r, G, shift, found):
         s1c2 - s1 * c2,
         s1s2 - s1 * s2,
     ]
-    consistent = np.max(np.abs(gaps), axis=0) <= IK_GENERAL_CONSISTENT_TOL
+    consistent = np.abs(gaps).max(axis=0) <= IK_GENERAL_CONSISTENT_TOL
     return q, pose, np.where(consistent, multiplicity, 0)
 
 
@@ -480,7 +486,7 @@ def _with_repeated_roots(M, x3, V, which):
     close = (which[1:] == which[:-1]) & (
         np.abs(np.diff(x3.real)) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x3[1:]))
     )
-    if not np.any(close):
+    if not close.any():
         return x3, V, which, np.ones(len(x3), int)
     parts = []
     for j in np.unique(which):
@@ -531,7 +537,7 @@ def _last_angle(w, r, G, q):
     for j in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
         Gu = turns[:, j] @ Gu
     Gu = Gu[..., 0]
-    return np.arctan2(np.sum(v * Gu, axis=1), np.sum(u * Gu, axis=1))
+    return np.arctan2((v * Gu).sum(axis=1), (u * Gu).sum(axis=1))
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -564,6 +570,10 @@ def _formulation(S, G, index):
     of joint order[i] itself: backwards, E(S6, q6)^-1 ... E(S1, q1)^-1 = G^-1 is
     E(-S6, q6) ... E(-S1, q1) = G^-1, the screws negated and the angles kept."""
     backwards, k = divmod(index, 6)
+    if not k:  # the axes do not depend on the pose: cached
+        target = _inverse(G) if backwards else G
+        axes, order = _unshifted(np.ascontiguousarray(S).tobytes(), backwards)
+        return (*axes, target, order)
     screws, target = (-S[::-1], _inverse(G)) if backwards else (S, G)
     order = np.arange(6)[::-1] if backwards else np.arange(6)
     if k:
@@ -582,6 +592,26 @@ def _formulation(S, G, index):
         target,
         np.roll(order, -k),
     )
+
+
+@functools.lru_cache(maxsize=64)
+def _unshifted(S, backwards):
+    """(name, w, r, joint order) of the unshifted form of the loop, joints 1..6 or
+    (``backwards``) 6..1, for the screws S (bytes of (6, 6)): :func:`_formulation`'s
+    axes (6, 3, 1, 1), which do not depend on the pose, cached (read-only)."""
+    S = np.frombuffer(S).reshape(6, 6)
+    screws = (-S[::-1] if backwards else S)[None]
+    w = screws[..., :3]
+    r = _cross_last(w, screws[..., 3:])
+    order = np.arange(6)[::-1] if backwards else np.arange(6)
+    found = (
+        w.transpose(1, 2, 0)[..., None],  # views, as the other forms' axes
+        r.transpose(1, 2, 0)[..., None],
+        order.copy(),
+    )
+    for array in found:
+        array.setflags(write=False)
+    return ("joints " + ("6..1" if backwards else "1..6"), *found[:2]), found[2]
 
 
 @dataclass(frozen=True, eq=False)
@@ -724,7 +754,7 @@ def _say(singular, unexplained=()):
         return missing if other is None or not len(singular) else f"{missing}; {other}"
     if not len(singular):
         return "no real solution: the pose is out of reach"
-    if not np.any(singular):
+    if not singular.any():
         return None
     return (
         f"{int(np.sum(singular))} of the {len(singular)} solutions are at a singular "
@@ -777,7 +807,7 @@ def _distinct(Q, residuals):
     lexicographically, their residuals and their rows in Q."""
     order = np.argsort(residuals, kind="stable")
     Q, residuals = Q[order], residuals[order]
-    same = np.max(np.abs(_wrap_angle(Q[:, None] - Q[None])), axis=2) <= (
+    same = np.abs(_wrap_angle(Q[:, None] - Q[None])).max(axis=2) <= (
         IK_GENERAL_SAME_TOL
     )
     keep = []
