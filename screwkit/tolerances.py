@@ -322,6 +322,15 @@ IK_GENERAL_SEARCH_DAMPING = 1e-4
 #: nothing the acceptance could see.
 IK_GENERAL_POLISH_TOL = IK_GENERAL_ACCEPT_TOL * 1e-3
 
+#: Newton's polish of screwkit.ik.general keeps a Jacobian from before a step of at
+#: most IK_GENERAL_KEEP_STEP (rad, each joint) where its Hadamard bound
+#: ``|det J| / |J|_F^6`` (a lower bound of sigma_min / sigma_max) is above
+#: IK_GENERAL_KEEP_BOUND: the step changes sigma_min / sigma_max by about the step,
+#: a hundredth of that bound, which stays far above IK_GENERAL_SINGULAR_TOL: the
+#: singular flag read from it is the one at the polished solution.
+IK_GENERAL_KEEP_STEP = 1e-8
+IK_GENERAL_KEEP_BOUND = 1e-6
+
 #: Newton's polish of screwkit.ik.general takes the pseudo-inverse's step where the
 #: Jacobian's Hadamard ratio (``|det J|`` over the product of its columns' lengths, 1
 #: for orthogonal columns) is below this, and an LU solve (the same step up to

@@ -15,6 +15,8 @@ import numpy as np
 from .. import _compiled
 from ..tolerances import (
     IK_GENERAL_HADAMARD_TOL,
+    IK_GENERAL_KEEP_BOUND,
+    IK_GENERAL_KEEP_STEP,
     IK_GENERAL_POLISH_TOL,
     IK_GENERAL_SINGULAR_TOL,
 )
@@ -30,6 +32,27 @@ NEWTON_STEPS = 6
 #: scalar forward kinematics (its generated code on floats), cheaper than the batch
 #: form on arrays of a few entries.
 SCALAR_RESIDUALS = 48
+
+
+#: by_identity's store: (the arrays, the value) by the arrays' ids and a key.
+_BY_IDENTITY = {}
+_BY_IDENTITY_SIZE = 256
+
+
+def by_identity(arrays, key, make):
+    """``make()``, kept by the identity of ``arrays`` (a tuple of read-only arrays,
+    e.g. a chain's cached axes) and a hashable ``key``: a look-up that costs no
+    copy or hash of the arrays' bytes. The arrays are held with the value, so that
+    their ids are not reused while it is kept."""
+    ids = (*map(id, arrays), key)
+    found = _BY_IDENTITY.get(ids)
+    if found is not None:
+        return found[1]
+    if len(_BY_IDENTITY) >= _BY_IDENTITY_SIZE:
+        _BY_IDENTITY.clear()
+    value = make()
+    _BY_IDENTITY[ids] = (arrays, value)
+    return value
 
 
 @functools.lru_cache(maxsize=64)
@@ -51,9 +74,13 @@ def screw_matrices(w, r):
     """[S] and [S]^2 (6, 4, 4) of the unit revolute screws S = (w, r x w) of the axes
     along unit w through r (6, 3), and the axes as homogeneous (w, 0) and (r, 1)
     columns (6, 4, 2); cached (a chain's axes are used call after call)."""
-    return _screw_matrices_cached(
-        np.ascontiguousarray(w, float).tobytes(),
-        np.ascontiguousarray(r, float).tobytes(),
+    return by_identity(
+        (w, r),
+        "screws",
+        lambda: _screw_matrices_cached(
+            np.ascontiguousarray(w, float).tobytes(),
+            np.ascontiguousarray(r, float).tobytes(),
+        ),
     )
 
 
@@ -74,9 +101,15 @@ def poe(w, r, home, q):
     for i in range(1, 6):
         prefix[:, i] = prefix[:, i - 1] @ E[:, i - 1]
     T = prefix[:, 5] @ E[:, 5] @ home
-    moved = prefix[..., :3, :] @ lines  # (k, 6, 3, 2): the axes at q
-    ws, rs = moved[..., 0], moved[..., 1]
-    J = np.concatenate([ws, _cross_last(rs, ws)], axis=-1).swapaxes(1, 2)
+    # the axes at q: rows (w, r) of each joint's column, and (r x w) written out
+    moved = (prefix[..., :3, :] @ lines).swapaxes(2, 3)  # (k, 6, 2, 3)
+    J = np.empty((len(q), 6, 6))
+    Jt = J.swapaxes(1, 2)  # (k, joint, row), a view
+    Jt[..., :3] = ws = moved[:, :, 0]
+    rs = moved[:, :, 1]
+    Jt[..., 3] = rs[..., 1] * ws[..., 2] - rs[..., 2] * ws[..., 1]
+    Jt[..., 4] = rs[..., 2] * ws[..., 0] - rs[..., 0] * ws[..., 2]
+    Jt[..., 5] = rs[..., 0] * ws[..., 1] - rs[..., 1] * ws[..., 0]
     return T[:, :3, :3], T[:, :3, 3], J
 
 
@@ -109,27 +142,63 @@ def newton_step(J, e):
     return dq
 
 
-def polish(w, r, home, targets, q):
+def polish(w, r, home, targets, q, measure):
     """Newton steps J_s dq = e (:func:`error`) on the pose from the candidates q
     (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
-    quadratic convergence near a solution, no logarithm. Returns the polished q
-    (k, 6) and the space Jacobians (k, 6, 6) there."""
+    quadratic convergence near a solution, no logarithm.
+
+    ``measure(q, rows)`` gives the residuals (m,) of the candidates ``rows`` (m,) at
+    q (m, 6) by the chain's own forward kinematics (:func:`residuals`): after the
+    first step it decides which candidates need more (a residual above
+    IK_GENERAL_POLISH_TOL; from a simple root, none), so that the usual candidate
+    costs one error and Jacobian. Returns the polished q (k, 6), the space
+    Jacobians (k, 6, 6) for the singular flags and the residuals (k,). A Jacobian
+    is the one before the last step where that step moved no joint by more than
+    IK_GENERAL_KEEP_STEP and the Jacobian is far from singular (its Hadamard bound
+    above IK_GENERAL_KEEP_BOUND; :func:`singular`): the step cannot change its flag;
+    elsewhere it is computed again at the polished q."""
     q = q.copy()
-    e, J_at = error(w, r, home, targets, q)
-    active = np.nonzero(np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL)[0]
-    if not len(active):  # every candidate at its pose already (often, for one pose)
-        return q, J_at
-    q[active] += newton_step(J_at[active], e[active])
+    e, J = error(w, r, home, targets, q)
+    moving = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
+    moved = np.zeros(len(q))  # each row's largest joint step since its Jacobian
+    if moving.all():
+        step = newton_step(J, e)
+        q += step
+        moved = np.abs(step).max(axis=1)
+    elif moving.any():
+        step = newton_step(J[moving], e[moving])
+        q[moving] += step
+        moved[moving] = np.abs(step).max(axis=1)
+    found = measure(q, np.arange(len(q)))
+    # candidates the first step did not bring to round-off: Newton goes on
+    active = np.nonzero(~(found <= IK_GENERAL_POLISH_TOL))[0]
+    again = active
     for _ in range(NEWTON_STEPS - 1):
-        e, J = error(w, r, home, targets[active], q[active])
-        J_at[active] = J
-        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
-        active, e, J = active[moving], e[moving], J[moving]
         if not len(active):
-            return q, J_at
-        q[active] += newton_step(J, e)
-    J_at[active] = poe(w, r, home, q[active])[2]  # moved since their last Jacobian
-    return q, J_at
+            break
+        e, J_active = error(w, r, home, targets[active], q[active])
+        J[active], moved[active] = J_active, 0.0
+        going = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
+        active, e, J_active = active[going], e[going], J_active[going]
+        if len(active):
+            step = newton_step(J_active, e)
+            q[active] += step
+            moved[active] = np.abs(step).max(axis=1)
+    if len(again):
+        found[again] = measure(q[again], again)
+    stale = moved > 0
+    if stale.any():
+        keep = (moved <= IK_GENERAL_KEEP_STEP) & (_hadamard(J) > IK_GENERAL_KEEP_BOUND)
+        stale &= ~keep
+        if stale.any():
+            J[stale] = poe(w, r, home, q[stale])[2]
+    return q, J, found
+
+
+def _hadamard(J):
+    """|det J| / |J|_F^6 (k,) of Jacobians J (k, 6, 6): a lower bound of
+    sigma_min / sigma_max (sigma_min sigma_max^5 >= |det J|, |J|_F >= sigma_max)."""
+    return np.abs(np.linalg.det(J)) / (J * J).sum(axis=(1, 2)) ** 3
 
 
 def residuals(chain, T, q, scale):
@@ -151,10 +220,9 @@ def residuals(chain, T, q, scale):
 def singular(J):
     """Whether each Jacobian J (k, 6, 6) loses rank (IK_GENERAL_SINGULAR_TOL)."""
     flags = np.zeros(len(J), bool)
-    # sigma_min / sigma_max >= |det J| / sigma_max^6 >= |det J| / |J|_F^6: where
-    # that bound clears the tolerance, J keeps its rank and needs no SVD
-    bound = np.abs(np.linalg.det(J)) / (J * J).sum(axis=(1, 2)) ** 3
-    check = ~(bound > IK_GENERAL_SINGULAR_TOL)
+    # sigma_min / sigma_max >= |det J| / |J|_F^6: where that bound clears the
+    # tolerance, J keeps its rank and needs no SVD
+    check = ~(_hadamard(J) > IK_GENERAL_SINGULAR_TOL)
     if check.any():
         sigma = np.linalg.svd(J[check], compute_uv=False)
         flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]

@@ -96,6 +96,7 @@ from ..tolerances import (
     length_scale,
 )
 from ..transforms import _cross, _cross_last, _skew, _wrap_angle
+from ._general_kinematics import by_identity
 from ._general_kinematics import error as _error
 from ._general_kinematics import poe as _poe
 from ._general_kinematics import polish as _polish
@@ -275,7 +276,7 @@ def _eliminate(w, r, G, shift):
     if w.shape[2] == 1:  # joints 1, 2 and 6 do not depend on the pose
         hp = G[:, :3, :3] @ r[5, :, 0, 0] + G[:, :3, 3]  # (n, 3)
         hl = G[:, :3, :3] @ w[5, :, 0, 0]
-        R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
+        R, t, _, left_poly = _shared_constants(w, r, shift)
         # einsum, not a matrix product that BLAS may block by the batch's size: the
         # same round-off for a pose alone as in a batch
         p = np.einsum("gij,nj->ngi", R, hp) + t  # (n, 9 angles, 3)
@@ -293,19 +294,19 @@ def _eliminate(w, r, G, shift):
     U, sigma, Vh = np.linalg.svd(Q)
     reason = [None] * n
     usable = sigma[:, -1] > IK_GENERAL_RANK_TOL * sigma[:, 0]
-    for k in np.nonzero(~usable)[0]:
-        reason[k] = _RANK_REASON
+    if not usable.all():
+        for k in np.nonzero(~usable)[0]:
+            reason[k] = _RANK_REASON
     inverse = np.divide(1.0, sigma, out=np.zeros_like(sigma), where=sigma > 0)
     pinv = np.swapaxes(Vh, 1, 2) @ (np.swapaxes(U[:, :, :8], 1, 2) * inverse[..., None])
     N = np.swapaxes(U[:, :, 8:], 1, 2)  # (n, 6, 14): N Q = 0
-    if w.shape[2] == 1:  # joints 3 to 6 do not depend on the pose
-        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
-    else:
+    if w.shape[2] != 1:  # joints 3 to 6 depend on the pose
         a3, a4, a5 = _GRID3[:, None, :] + shift[2:5, None, None]
         left = np.einsum("inj,kj->nik", _left(w, r, a3, a4, a5), _FIT3)
+        left_poly = left @ _TO_POLY3
     # N (left - C0 e0) in the monomials of the half-angle tangents:
     # (n, 6, power of x3, power of x4, power of x5)
-    poly = N @ (left @ _TO_POLY3) - (N @ C0[..., None]) * _TO_POLY3[0]
+    poly = N @ left_poly - (N @ C0[..., None]) * _TO_POLY3[0]
     poly = poly.reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
     M = np.zeros((n, 3, 12, 4, 3))
     M[:, :, :6, :3, :] = poly
@@ -314,8 +315,9 @@ def _eliminate(w, r, G, shift):
     sv = np.linalg.svd(M[:, 2], compute_uv=False)
     size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
     leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
-    for k in np.nonzero(usable & ~leading)[0]:
-        reason[k] = "the eigenvalue problem's leading matrix is singular"
+    if not leading.all():
+        for k in np.nonzero(usable & ~leading)[0]:
+            reason[k] = "the eigenvalue problem's leading matrix is singular"
     usable &= leading
     quality = np.where(
         usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
@@ -362,6 +364,22 @@ def _right_motions(w, r, shift):
     return _right_motions_cached(
         np.ascontiguousarray(w).tobytes(), np.ascontiguousarray(r).tobytes(), shift
     )
+
+
+def _shared_constants(w, r, shift):
+    """For the axes w, r (6, 3, 1, 1) of a form that do not depend on the pose and
+    the angle shifts (6,): the right side's motions R, t (:func:`_right_motions`),
+    the left side's coefficients (14, 27) (:func:`_left_coefficients`) and those in
+    the half-angle tangents' monomials (14, 27), kept by the axes' identity."""
+
+    def make():
+        R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
+        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
+        left_poly = left @ _TO_POLY3
+        left_poly.setflags(write=False)
+        return R, t, left, left_poly
+
+    return by_identity((w, r), shift.tobytes(), make)
 
 
 def _left_coefficients(w, r, shift):
@@ -428,14 +446,12 @@ def _candidates(w, r, G, shift, found):
     products are those of two angles: its root is genuine, and as many solutions
     must account for it as it has consistent candidates, at most m
     (:func:`_unexplained`)."""
-    values, vectors = np.linalg.eig(found.A)
+    values = np.linalg.eigvals(found.A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
     which, column = np.nonzero(real)
     x3 = values[which, column]
-    Z = vectors[which, :, column]  # (k, 24)
-    # the eigenvector is (v, x3 v): take the better-scaled half
-    V = np.where(np.abs(x3[:, None]) <= 1, Z[:, :12], Z[:, 12:])
+    V = _null_vectors(found.M[which], x3.real)
     x3, V, which, multiplicity = _with_repeated_roots(found.M, x3, V, which)
     pose = usable[which]
     V = V.reshape(-1, 4, 3)
@@ -450,31 +466,54 @@ def _candidates(w, r, G, shift, found):
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
     if w.shape[2] == 1:  # from the cached coefficients of the left side
-        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
-        c, s = np.cos(phi), np.sin(phi)
-        one = np.ones_like(c)
-        f3, f4, f5 = np.stack([one, c, s], axis=-1)  # (k, 3) each
-        monomials = f3[:, :, None, None] * f4[:, None, :, None] * f5[:, None, None]
-        values = np.einsum("kj,ij->ki", monomials.reshape(-1, 27), left)  # (k, 14)
+        left = _shared_constants(w, r, shift)[2]
+        f = np.empty((3, len(x3), 3))  # (1, cos, sin) of phi3, phi4, phi5, (k, 3) each
+        f[:, :, 0], f[:, :, 1], f[:, :, 2] = 1.0, np.cos(phi), np.sin(phi)
+        monomials = (f[0, :, :, None] * f[1, :, None]).reshape(-1, 9, 1) * f[2, :, None]
+        values = monomials.reshape(-1, 27) @ left.T  # (k, 14)
     else:
         values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
-    b = np.einsum("kij,kj->ki", found.pinv[pose], values - found.C0[pose])
+    b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
     # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
     c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 = b.T
-    q1 = np.arctan2(s1, c1) + shift[0]
-    q2 = np.arctan2(s2, c2) + shift[1]
-    q = np.stack([q1, q2, q3, q4, q5, np.zeros_like(q1)], axis=1)
+    q = np.empty((len(x3), 6))
+    q[:, 0] = np.arctan2(s1, c1) + shift[0]
+    q[:, 1] = np.arctan2(s2, c2) + shift[1]
+    q[:, 2], q[:, 3], q[:, 4] = q3, q4, q5
     q[:, 5] = _last_angle(wk, rk, G[pose], q)
-    gaps = [
-        c1 * c1 + s1 * s1 - 1,
-        c2 * c2 + s2 * s2 - 1,
-        c1c2 - c1 * c2,
-        c1s2 - c1 * s2,
-        s1c2 - s1 * c2,
-        s1s2 - s1 * s2,
-    ]
-    consistent = np.abs(gaps).max(axis=0) <= IK_GENERAL_CONSISTENT_TOL
+    # (c1^2 + s1^2, c2^2 + s2^2) against 1; (c1c2, c1s2, s1c2, s1s2) against c1 c2, ...
+    norms = b[:, _SQUARES].reshape(-1, 2, 2) ** 2
+    gaps = np.abs(norms.sum(axis=2) - 1).max(axis=1)
+    products = np.abs(b[:, _PRODUCTS] - b[:, _FACTORS_1] * b[:, _FACTORS_2])
+    consistent = np.maximum(gaps, products.max(axis=1)) <= IK_GENERAL_CONSISTENT_TOL
     return q, pose, np.where(consistent, multiplicity, 0)
+
+
+#: b's columns (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2): (c1, s1, c2, s2), and the
+#: products with their factors.
+_SQUARES = np.array([2, 5, 0, 1])
+_PRODUCTS, _FACTORS_1, _FACTORS_2 = np.array([[3, 4, 6, 7], [2, 2, 5, 5], [0, 1, 0, 1]])
+
+#: A fixed right side for one step of inverse iteration (:func:`_null_vectors`).
+_PROBE = np.random.default_rng(12).standard_normal((12, 1))
+
+
+def _null_vectors(M, x):
+    """A vector v (k, 12) with M_j(x_j) v = 0 for each real root x (k,) of the
+    matrix polynomials M (k, 3, 12, 12): one step of inverse iteration,
+    M(x)^-1 b for a fixed b (M(x) is singular to round-off, so the solve
+    amplifies its null direction by 1 / sigma_min), or the last right singular
+    vector where M(x) is singular to working precision."""
+    x = x[:, None, None]
+    Mx = M[:, 0] + x * (M[:, 1] + x * M[:, 2])
+    try:
+        V = np.linalg.solve(Mx, _PROBE)[..., 0]
+    except np.linalg.LinAlgError:  # an exactly singular matrix
+        return np.linalg.svd(Mx)[2][:, -1]
+    size = np.abs(V).max(axis=1, keepdims=True)
+    if not np.isfinite(size).all() or not (size > 0).all():
+        return np.linalg.svd(Mx)[2][:, -1]
+    return V / size
 
 
 def _with_repeated_roots(M, x3, V, which):
@@ -527,7 +566,11 @@ def _last_angle(w, r, G, q):
     """q6 (k,) from q1..q5 (k, 6): the rotation E6 = (E1 ... E5)^-1 G_k about axis 6
     (axes w, r (6, 3, k or 1, 1), poses G (k, 4, 4))."""
     if w.shape[2] == 1:
-        K, K2, u, v = _wrist_frame_cached(np.ascontiguousarray(w).tobytes())
+        K, K2, u, v = by_identity(
+            (w,),
+            "wrist",
+            lambda: _wrist_frame_cached(np.ascontiguousarray(w).tobytes()),
+        )
     else:
         K, K2, u, v = _wrist_frame(w)
     Gu = G[:, :3, :3] @ u[..., None]  # (k, 3, 1)
@@ -778,6 +821,18 @@ def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
     is singular (solutions coincide there, and a double root may stand for one)."""
     if not len(root):
         return {}
+    same = (root_pose[:, None] == root_pose) & (
+        np.abs(_wrap_angle(root[:, None] - root)) <= IK_GENERAL_EXPLAINED_TOL
+    )
+    wanted = np.minimum(same.sum(axis=1), (same * multiplicity).max(axis=1))
+    if len(kept) == 1:  # one pose: its solutions' angles against its roots
+        near = np.abs(_wrap_angle(root[:, None] - kept[0][0][:, joint])) <= (
+            IK_GENERAL_EXPLAINED_TOL
+        )
+        left = (near.sum(axis=1) < wanted) & ~(near & singular).any(axis=1)
+        if not left.any():
+            return {}
+        return {int(poses[0]): np.unique(np.round(_wrap_angle(root[left]), 4))}
     counts = np.array([len(Q) for Q, _ in kept])
     width = max(int(counts.max()), 1)
     angles = np.full((len(kept), width), np.nan)
@@ -791,10 +846,6 @@ def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
     near = np.abs(_wrap_angle(root[:, None] - angles[where])) <= (
         IK_GENERAL_EXPLAINED_TOL
     )
-    same = (root_pose[:, None] == root_pose) & (
-        np.abs(_wrap_angle(root[:, None] - root)) <= IK_GENERAL_EXPLAINED_TOL
-    )
-    wanted = np.minimum(np.sum(same, axis=1), np.max(same * multiplicity, axis=1))
     left = (np.sum(near, axis=1) < wanted) & ~np.any(near & flags[where], axis=1)
     return {
         int(j): np.unique(np.round(_wrap_angle(root[left & (root_pose == j)]), 4))
@@ -810,11 +861,13 @@ def _distinct(Q, residuals):
     same = np.abs(_wrap_angle(Q[:, None] - Q[None])).max(axis=2) <= (
         IK_GENERAL_SAME_TOL
     )
-    keep = []
-    for i in range(len(Q)):
-        if not any(same[i, j] for j in keep):
-            keep.append(i)
-    Q, residuals, index = Q[keep], residuals[keep], order[keep]
+    if same.sum() > len(Q):  # a pair besides the diagonal
+        keep = []
+        for i in range(len(Q)):
+            if not any(same[i, j] for j in keep):
+                keep.append(i)
+        Q, residuals, order = Q[keep], residuals[keep], order[keep]
+    index = order
     order = np.lexsort(Q.T[::-1])
     return Q[order], residuals[order], index[order]
 
@@ -909,8 +962,12 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     None, a search: none)."""
     q = np.empty_like(phi)
     q[:, order] = phi
-    q, J = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q)
-    residuals = _residuals(chain, T[pose], q, arm.scale)
+    targets = T[pose]
+
+    def measure(q, rows):
+        return _residuals(chain, targets[rows], q, arm.scale)
+
+    q, J, residuals = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
     good = residuals <= IK_GENERAL_ACCEPT_TOL
     claims = np.zeros(len(phi), int) if claims is None else claims
     genuine = claims > 0
