@@ -210,15 +210,21 @@ def _turn_both(w, r, angle, p, l):
 def _products(p, l):
     """The 14 Raghavan–Roth quantities (14, n, g) of points p and directions l
     (3, n, g)."""
-    out = np.empty((14,) + np.broadcast_shapes(p.shape[1:], l.shape[1:]))
+    shape = (
+        p.shape[1:] if p.shape == l.shape else np.broadcast_shapes(p.shape, l.shape)[1:]
+    )
+    out = np.empty((14, *shape))
     out[:3], out[3:6] = p, l
     pp = out[6] = (p * p).sum(axis=0)
     pl = out[7] = (p * l).sum(axis=0)
-    out[8] = p[1] * l[2] - p[2] * l[1]  # p x l, written into place
-    out[9] = p[2] * l[0] - p[0] * l[2]
-    out[10] = p[0] * l[1] - p[1] * l[0]
+    # p x l, written into place
+    np.subtract(p[_NEXT] * l[_AFTER], p[_AFTER] * l[_NEXT], out=out[8:11])
     np.subtract(pp * l, 2 * pl * p, out=out[11:])
     return out
+
+
+#: The components after each, cyclically: (a x b)_i = a_j b_k - a_k b_j.
+_NEXT, _AFTER = np.array([1, 2, 0]), np.array([2, 0, 1])
 
 
 def _left(w, r, q3, q4, q5):
@@ -451,17 +457,19 @@ def _candidates(w, r, G, shift, found):
     usable = np.nonzero(found.usable)[0]
     which, column = np.nonzero(real)
     x3 = values[which, column]
-    V = _null_vectors(found.M[which], x3.real)
+    V = _null_vectors(found.M[0] if len(found.M) == 1 else found.M[which], x3.real)
     x3, V, which, multiplicity = _with_repeated_roots(found.M, x3, V, which)
     pose = usable[which]
     V = V.reshape(-1, 4, 3)
-    x4 = (V[:, :-1].conj() * V[:, 1:]).sum(axis=(1, 2)) / (np.abs(V[:, :-1]) ** 2).sum(
-        axis=(1, 2)
-    )
-    x5 = (V[:, :, :-1].conj() * V[:, :, 1:]).sum(axis=(1, 2)) / (
-        np.abs(V[:, :, :-1]) ** 2
-    ).sum(axis=(1, 2))
-    phi = _half_angle(np.stack([x3.real, x4.real, x5.real]))
+    # x4 and x5 from the monomials' ratios, least squares (V is real, or complex
+    # where repeated roots were separated)
+    low, high = V[:, :-1].conj(), V[:, 1:]
+    phi = np.empty((3, len(x3)))
+    phi[0] = x3.real
+    phi[1] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
+    low, high = V[:, :, :-1].conj(), V[:, :, 1:]
+    phi[2] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
+    phi = _half_angle(phi)
     q3, q4, q5 = phi + shift[2:5, None]
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
@@ -500,26 +508,31 @@ _PROBE = np.random.default_rng(12).standard_normal((12, 1))
 
 def _null_vectors(M, x):
     """A vector v (k, 12) with M_j(x_j) v = 0 for each real root x (k,) of the
-    matrix polynomials M (k, 3, 12, 12): one step of inverse iteration,
-    M(x)^-1 b for a fixed b (M(x) is singular to round-off, so the solve
-    amplifies its null direction by 1 / sigma_min), or the last right singular
-    vector where M(x) is singular to working precision."""
+    matrix polynomials M (k, 3, 12, 12), or of one (3, 12, 12): one step of
+    inverse iteration, M(x)^-1 b for a fixed b (M(x) is singular to round-off, so
+    the solve amplifies its null direction by 1 / sigma_min), or the last right
+    singular vector where M(x) is singular to working precision."""
     x = x[:, None, None]
-    Mx = M[:, 0] + x * (M[:, 1] + x * M[:, 2])
+    Mx = M[..., 0, :, :] + x * (M[..., 1, :, :] + x * M[..., 2, :, :])
     try:
         V = np.linalg.solve(Mx, _PROBE)[..., 0]
     except np.linalg.LinAlgError:  # an exactly singular matrix
         return np.linalg.svd(Mx)[2][:, -1]
-    size = np.abs(V).max(axis=1, keepdims=True)
-    if not np.isfinite(size).all() or not (size > 0).all():
+    size = np.abs(V).sum()  # the vectors' scale does not matter, only their ratios
+    if not 0 < size < np.inf:  # a zero vector, an overflow or a NaN
         return np.linalg.svd(Mx)[2][:, -1]
-    return V / size
+    return V
 
 
 def _with_repeated_roots(M, x3, V, which):
     """The roots x3 (k,), their vectors V (k, 12), problems ``which`` (k,) and
     multiplicities (k,), with the vectors of repeated roots replaced
     (:func:`_repeated_roots`) in the problems that have any."""
+    if 0 < len(x3) <= 24:  # one pose's roots: no two close (a loose test), no sort
+        x = x3.real
+        near = np.abs(x[:, None] - x) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x).max())
+        if (near & (which[:, None] == which)).sum() == len(x):
+            return x3, V, which, np.ones(len(x3), int)
     order = np.lexsort((x3.real, which))
     x3, V, which = x3[order], V[order], which[order]
     close = (which[1:] == which[:-1]) & (
