@@ -125,13 +125,14 @@ def error(w, r, home, targets, q):
     return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
 
 
-def newton_step(J, e):
-    """The Newton steps pinv(J) e (k, 6) for Jacobians J (k, 6, 6) and errors e
-    (k, 6): an LU solve where J is well conditioned (IK_GENERAL_HADAMARD_TOL; the
-    pseudo-inverse's step there, up to round-off), the pseudo-inverse's minimum-norm
-    step where J is nearly singular (a solution on a continuum, where the two
-    differ)."""
-    ratio = np.abs(np.linalg.det(J)) / np.prod(np.linalg.norm(J, axis=1), axis=1)
+def newton_step(J, e, det=None):
+    """The Newton steps pinv(J) e (k, 6) for Jacobians J (k, 6, 6) (their
+    determinants ``det`` (k,) if known) and errors e (k, 6): an LU solve where J
+    is well conditioned (IK_GENERAL_HADAMARD_TOL; the pseudo-inverse's step there,
+    up to round-off), the pseudo-inverse's minimum-norm step where J is nearly
+    singular (a solution on a continuum, where the two differ)."""
+    det = np.linalg.det(J) if det is None else det
+    ratio = np.abs(det) / np.prod(np.linalg.norm(J, axis=1), axis=1)
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
     if not near.any():  # the usual case: every J well conditioned
         return np.linalg.solve(J, e[:, :, None])[..., 0]
@@ -159,14 +160,15 @@ def polish(w, r, home, targets, q, measure):
     elsewhere it is computed again at the polished q."""
     q = q.copy()
     e, J = error(w, r, home, targets, q)
+    det = np.linalg.det(J)
     moving = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
     moved = np.zeros(len(q))  # each row's largest joint step since its Jacobian
     if moving.all():
-        step = newton_step(J, e)
+        step = newton_step(J, e, det)
         q += step
         moved = np.abs(step).max(axis=1)
     elif moving.any():
-        step = newton_step(J[moving], e[moving])
+        step = newton_step(J[moving], e[moving], det[moving])
         q[moving] += step
         moved[moving] = np.abs(step).max(axis=1)
     found = measure(q, np.arange(len(q)))
@@ -178,17 +180,19 @@ def polish(w, r, home, targets, q, measure):
             break
         e, J_active = error(w, r, home, targets[active], q[active])
         J[active], moved[active] = J_active, 0.0
+        det[active] = det_active = np.linalg.det(J_active)
         going = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
         active, e, J_active = active[going], e[going], J_active[going]
         if len(active):
-            step = newton_step(J_active, e)
+            step = newton_step(J_active, e, det_active[going])
             q[active] += step
             moved[active] = np.abs(step).max(axis=1)
     if len(again):
         found[again] = measure(q[again], again)
     stale = moved > 0
     if stale.any():
-        keep = (moved <= IK_GENERAL_KEEP_STEP) & (_hadamard(J) > IK_GENERAL_KEEP_BOUND)
+        bound = np.abs(det) / (J * J).sum(axis=(1, 2)) ** 3  # _hadamard(J)
+        keep = (moved <= IK_GENERAL_KEEP_STEP) & (bound > IK_GENERAL_KEEP_BOUND)
         stale &= ~keep
         if stale.any():
             J[stale] = poe(w, r, home, q[stale])[2]
