@@ -510,17 +510,23 @@ def _null_vectors(M, x):
     """A vector v (k, 12) with M_j(x_j) v = 0 for each real root x (k,) of the
     matrix polynomials M (k, 3, 12, 12), or of one (3, 12, 12): one step of
     inverse iteration, M(x)^-1 b for a fixed b (M(x) is singular to round-off, so
-    the solve amplifies its null direction by 1 / sigma_min), or the last right
-    singular vector where M(x) is singular to working precision."""
+    the solve amplifies its null direction by 1 / sigma_min; the vectors' scale
+    does not matter, only their ratios), or the last right singular vector where
+    M(x) is singular to working precision (its LU breaks down, or the solve
+    overflows)."""
     x = x[:, None, None]
     Mx = M[..., 0, :, :] + x * (M[..., 1, :, :] + x * M[..., 2, :, :])
     try:
         V = np.linalg.solve(Mx, _PROBE)[..., 0]
-    except np.linalg.LinAlgError:  # an exactly singular matrix
-        return np.linalg.svd(Mx)[2][:, -1]
-    size = np.abs(V).sum()  # the vectors' scale does not matter, only their ratios
-    if not 0 < size < np.inf:  # a zero vector, an overflow or a NaN
-        return np.linalg.svd(Mx)[2][:, -1]
+    except np.linalg.LinAlgError:  # an exactly singular M(x): those by SVD below
+        V = np.full((len(Mx), 12), np.nan)
+        regular = np.linalg.det(Mx) != 0
+        if regular.any():
+            V[regular] = np.linalg.solve(Mx[regular], _PROBE)[..., 0]
+    size = np.abs(V).sum(axis=1)
+    bad = ~((size > 0) & (size < np.inf))  # a zero vector, an overflow or a NaN
+    if bad.any():
+        V[bad] = np.linalg.svd(Mx[bad])[2][:, -1]
     return V
 
 
