@@ -120,9 +120,20 @@ def error(w, r, home, targets, q):
     order."""
     R, p, J = poe(w, r, home, q)
     E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
-    # the vee of (E - E^T) / 2: entries (2, 1), (0, 2), (1, 0)
-    omega = (E - np.swapaxes(E, 1, 2))[:, [2, 0, 1], [1, 2, 0]] / 2
-    return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
+    e = np.empty((len(E), 6))
+    # omega, the vee of (E - E^T) / 2: entries (2, 1), (0, 2), (1, 0) less (1, 2),
+    # (2, 0), (0, 1); then dp - omega x p, the cross product by index arrays
+    omega = e[:, :3]
+    np.subtract(E[:, _AFTER, _NEXT], E[:, _NEXT, _AFTER], out=omega)
+    omega /= 2
+    dp = targets[:, :3, 3] - p
+    dp -= omega[:, _NEXT] * p[:, _AFTER] - omega[:, _AFTER] * p[:, _NEXT]
+    e[:, 3:] = dp
+    return e, J
+
+
+#: The components after each, cyclically: (a x b)_i = a_j b_k - a_k b_j.
+_NEXT, _AFTER = np.array([1, 2, 0]), np.array([2, 0, 1])
 
 
 def newton_step(J, e, det=None):
