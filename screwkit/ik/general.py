@@ -16,10 +16,12 @@ combinations N with N Q = 0 are free of joints 1 and 2: 6 equations in the 9 pro
 x_i = tan(q_i / 2) and with a second copy multiplied by x4 they are 12 equations,
 linear in the 12 monomials x4^i x5^j (i <= 3, j <= 2), quadratic in x3:
 (M0 + x3 M1 + x3^2 M2) v = 0, a 24 x 24 eigenvalue problem (its companion matrix). Its
-real eigenvalues give q3, the eigenvectors q4 and q5, the 14 equations q1 and q2, the
-rotation left q6; every candidate is then polished by Newton steps on the chain's own
-forward kinematics and Jacobian, and kept when it meets the pose. At most 16
-solutions.
+real eigenvalues give q3; the vector v of each (the null vector of M(x3), by one step
+of inverse iteration rather than the companion's eigenvectors) q4 and q5, the 14
+equations q1 and q2, the rotation left q6; every candidate is then polished by Newton
+steps on the chain's own forward kinematics and Jacobian (one step, and more only
+where the chain's residual is not yet at round-off), and kept when it meets the
+pose. At most 16 solutions.
 
 Each side's coefficients are found by sampling: a function of degree one in
 (cos, sin) of an angle is fixed by its values at three equally spaced angles, so the
