@@ -143,7 +143,7 @@ def newton_step(J, e, det=None):
     up to round-off), the pseudo-inverse's minimum-norm step where J is nearly
     singular (a solution on a continuum, where the two differ)."""
     det = np.linalg.det(J) if det is None else det
-    ratio = np.abs(det) / np.prod(np.linalg.norm(J, axis=1), axis=1)
+    ratio = np.abs(det) / np.sqrt((J * J).sum(axis=1).prod(axis=1))
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
     if not near.any():  # the usual case: every J well conditioned
         return np.linalg.solve(J, e[:, :, None])[..., 0]
@@ -159,12 +159,13 @@ def polish(w, r, home, targets, q, measure):
     (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
     quadratic convergence near a solution, no logarithm.
 
-    ``measure(q, rows)`` gives the residuals (m,) of the candidates ``rows`` (m,) at
-    q (m, 6) by the chain's own forward kinematics (:func:`residuals`): after the
-    first step it decides which candidates need more (a residual above
-    IK_GENERAL_POLISH_TOL; from a simple root, none), so that the usual candidate
-    costs one error and Jacobian. Returns the polished q (k, 6), the space
-    Jacobians (k, 6, 6) for the singular flags and the residuals (k,). A Jacobian
+    ``measure(q, rows)`` gives the residuals (m,) of the candidates ``rows`` (an
+    index array (m,) or a slice) at q (m, 6) by the chain's own forward kinematics
+    (:func:`residuals`): after the first step it decides which candidates need
+    more (a residual above IK_GENERAL_POLISH_TOL; from a simple root, none), so
+    that the usual candidate costs one error and Jacobian. Returns the polished q
+    (k, 6), the space Jacobians (k, 6, 6) for the singular flags and the residuals
+    (k,). A Jacobian
     is the one before the last step where that step moved no joint by more than
     IK_GENERAL_KEEP_STEP and the Jacobian is far from singular (its Hadamard bound
     above IK_GENERAL_KEEP_BOUND; :func:`singular`): the step cannot change its flag;
@@ -182,7 +183,7 @@ def polish(w, r, home, targets, q, measure):
         step = newton_step(J[moving], e[moving], det[moving])
         q[moving] += step
         moved[moving] = np.abs(step).max(axis=1)
-    found = measure(q, np.arange(len(q)))
+    found = measure(q, slice(None))
     # candidates the first step did not bring to round-off: Newton goes on
     active = np.nonzero(~(found <= IK_GENERAL_POLISH_TOL))[0]
     again = active
