@@ -592,3 +592,26 @@ def test_analytic_ik_of_one_pose_of_a_general_arm_is_its_batch_answer():
     for a, b in zip(one, batch):
         assert np.abs(wrap(a.q - b.q)).max() < 1e-9
     assert np.abs(wrap(one[0].q - q)).max() < 1e-9  # nearest first: q itself
+
+
+def test_null_vectors_of_an_exactly_singular_matrix_polynomial():
+    # each real root's vector is M(x)^-1 b (inverse iteration); where M(x) is
+    # singular to working precision (its LU breaks down) the SVD gives it instead,
+    # for that root alone. M(x) = M0 + x M1 + x^2 M2 built with known null vectors
+    from screwkit.ik.general import _null_vectors
+
+    rng = np.random.default_rng(3)
+    Q, _ = np.linalg.qr(rng.standard_normal((12, 12)))
+    M = np.zeros((3, 12, 12))
+    M[0] = np.diag(np.r_[0.0, np.arange(1.0, 12.0)])  # M(0) e0 = 0 exactly
+    M[2] = Q  # M(x) = M0 + x^2 Q: nonsingular at x = 1
+    x = np.array([0.0, 1.0])
+    V = _null_vectors(M, x)  # one shared polynomial, two roots
+    assert abs(abs(V[0, 0]) - 1) < 1e-15 and np.all(np.abs(V[0, 1:]) < 1e-15)
+    # the regular root: the solve's vector, whatever it is, is finite (no root is
+    # left NaN by the other's breakdown)
+    assert np.all(np.isfinite(V[1]))
+    # a root of a nearly singular M(x): its vector spans the null space
+    M[0, 0, 0] = 1e-14
+    u = _null_vectors(M, np.array([0.0]))[0]
+    assert abs(abs(u[0]) / np.linalg.norm(u) - 1) < 1e-12
