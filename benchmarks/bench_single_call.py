@@ -43,10 +43,10 @@ GOALS = {"fk": 10e-6, "J": 10e-6, "dJ": 25e-6, "ik": 150e-6, "ik general": 1e-3}
 #: Earlier figures of a row (s): (first, steady, when), printed beside this run's.
 PREVIOUS = {
     "general 6R IK, one pose": (
-        24310.7e-6,
-        1628.3e-6,
-        "main at fb5f3e0, 2026-12-07 10:15 UTC, load average 2.6, before the one-pose"
-        " path's overheads were cut; 4266.2 us at f81c504, before that path",
+        43456.7e-6,
+        4197.4e-6,
+        "main at df7adeb, 2026-12-07 12:52 UTC, load average 0.7, the one-pose speed-"
+        "ups reverted; 1633.9 us with them back (0b3d083, 12:47 UTC, load 2.8)",
     ),
 }
 
