@@ -228,9 +228,10 @@ def residuals(chain, T, q, scale):
         top = np.array([pose(row) for row in q.tolist()]).reshape(-1, 3, 4)
     else:
         top = chain.fk(q)[:, :3]
-    rotation = ((top[:, :, :3] - T[:, :3, :3]) ** 2).sum(axis=(1, 2)) / 2
-    position = ((top[:, :, 3] - T[:, :3, 3]) ** 2).sum(axis=1) / scale**2
-    return np.sqrt(rotation + position)
+    # the squared differences weighted: rotation entries by 1/2, position by 1/scale^2
+    weights = np.full((3, 4), 0.5)
+    weights[:, 3] = 1 / scale**2
+    return np.sqrt(((top - T[:, :3]) ** 2 * weights).sum(axis=(1, 2)))
 
 
 def singular(J):
