@@ -40,6 +40,16 @@ except ImportError:
 #: The goals per call (s): FK and J, dJ/dt, IK of a named structure, IK of a general 6R.
 GOALS = {"fk": 10e-6, "J": 10e-6, "dJ": 25e-6, "ik": 150e-6, "ik general": 1e-3}
 
+#: Earlier figures of a row (s): (first, steady, when), printed beside this run's.
+PREVIOUS = {
+    "general 6R IK, one pose": (
+        43456.7e-6,
+        4197.4e-6,
+        "main at df7adeb, 2026-12-07 12:52 UTC, load average 0.7, the one-pose speed-"
+        "ups reverted; 1633.9 us with them back (0b3d083, 12:47 UTC, load 2.8)",
+    ),
+}
+
 
 #: The clock: the CPU time of this process, not the wall clock, so that a machine shared
 #: with other work (the time slices this process waits) changes the numbers less.
@@ -228,6 +238,14 @@ for task, ours_first, ours, theirs_first, theirs, key in rows:
         f"{task:<24}{us(ours_first)}{us(ours)}{us(theirs_first)}{us(theirs)}"
         f"{ratio}{us(GOALS[key])}  {met}"
     )
+for task, ours_first, ours, _, _, _ in rows:
+    if task in PREVIOUS:
+        before_first, before, when = PREVIOUS[task]
+        print(
+            f"\n{task}: first {us(ours_first).strip()}, steady {us(ours).strip()};"
+            f" before: first {us(before_first).strip()}, steady {us(before).strip()}"
+            f" ({when}): {before / ours:.1f}x faster steady"
+        )
 reference = "Pinocchio " + (pin.__version__ if pin else "(not installed)")
 print(
     f"\nscrewkit {sk.__version__}; reference: {reference} for FK, J and dJ/dt, EAIK"

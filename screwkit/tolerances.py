@@ -288,7 +288,8 @@ IK_GENERAL_ACCEPT_TOL = 1e-10
 
 #: A real root of the eigenvalue problem is accounted for when a solution's angle of
 #: the eigenvalue joint is within this of it (rad): a simple root is computed to
-#: 1e-12, a double one to about sqrt(eps); a root no solution accounts for makes the
+#: 1e-12, a double one to about sqrt(eps); a root that fewer solutions account for
+#: than it should (a repeated root: one for each solution sharing it) makes the
 #: answer say that it may be incomplete.
 IK_GENERAL_EXPLAINED_TOL = 1e-4
 
@@ -320,6 +321,22 @@ IK_GENERAL_SEARCH_DAMPING = 1e-4
 #: thousandth of the acceptance, IK_GENERAL_ACCEPT_TOL: the last step then changes
 #: nothing the acceptance could see.
 IK_GENERAL_POLISH_TOL = IK_GENERAL_ACCEPT_TOL * 1e-3
+
+#: Newton's polish of screwkit.ik.general keeps a Jacobian from before a step of at
+#: most IK_GENERAL_KEEP_STEP (rad, each joint) where its Hadamard bound
+#: ``|det J| / |J|_F^6`` (a lower bound of sigma_min / sigma_max) is above
+#: IK_GENERAL_KEEP_BOUND: the step changes sigma_min / sigma_max by about the step,
+#: a hundredth of that bound, which stays far above IK_GENERAL_SINGULAR_TOL: the
+#: singular flag read from it is the one at the polished solution.
+IK_GENERAL_KEEP_STEP = 1e-8
+IK_GENERAL_KEEP_BOUND = 1e-6
+
+#: Newton's polish of screwkit.ik.general takes the pseudo-inverse's step where the
+#: Jacobian's Hadamard ratio (``|det J|`` over the product of its columns' lengths, 1
+#: for orthogonal columns) is below this, and an LU solve (the same step up to
+#: round-off, five times cheaper) above it: the two differ only where J is singular to
+#: working precision, whose ratio is far below.
+IK_GENERAL_HADAMARD_TOL = 1e-10
 
 # ---- parallel: model, legs, numerics, search ----------------------------------------
 # A length below is written for a mechanism about 1 m across and used times the

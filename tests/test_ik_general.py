@@ -458,6 +458,39 @@ def test_a_root_that_gives_no_solution_makes_the_answer_say_so(monkeypatch):
     assert len(result.Q) < 8 and "may be incomplete" in result.reason
 
 
+def test_a_repeated_root_short_of_one_solution_makes_the_answer_say_so(monkeypatch):
+    # the parallel base arm's 8 solutions share the eigenvalue joint's angle (q5 in
+    # the form that solves it) in pairs: 4 double roots. One solution lost from a
+    # pair went unreported, its root's angle being matched by the other of the pair
+    from screwkit.ik import general
+
+    table, chain = parallel_base_arm()
+    q = np.array([0.864816, -2.942255, -2.991873, -1.501858, -1.792111, 2.38058])
+    T = dh_fk(table, q)[0]
+    general._LAST_FORM.clear()
+    whole = general_6r_ik(chain, T)
+    assert len(whole.Q) == 8 and whole.reason is None
+    assert whole.formulation == "joints 6..1 shifted by 5"  # its roots are q5's
+    partners = np.abs(wrap(whole.Q[:, 4] - q[4])) < SAME
+    assert np.sum(partners) == 2  # q and one other solution share q5
+
+    original = general._polish
+
+    def losing_q(*args):
+        polished, jacobians, residuals = original(*args)
+        lost = np.max(np.abs(wrap(polished - q)), axis=1) < 1e-6
+        polished[lost, 0] += 0.3  # every candidate that reached q now misses T
+        residuals[lost] = 1.0
+        return polished, jacobians, residuals
+
+    monkeypatch.setattr(general, "_polish", losing_q)
+    general._LAST_FORM.clear()
+    result = general_6r_ik(chain, T)
+    assert len(result.Q) == 7 and not contains(result.Q, q)
+    assert result.reason is not None and "may be incomplete" in result.reason
+    assert f"{wrap(q[4]):.4f}" in result.reason  # the root short of a solution
+
+
 def test_singular_solutions_are_flagged_one_by_one():
     # the reason said "singular" but no solution said which
     puma = sk.robots.puma560()
@@ -483,3 +516,102 @@ def test_analytic_ik_of_a_general_arm_flags_its_singular_solutions():
     flagged = [s for s in solutions if s.singular]
     assert flagged and all(s.singular == ("singular",) for s in flagged)
     assert "singular configuration" in solutions.reason
+
+
+# ---- one pose a call: its own path, the batch path's answers ------------------------
+
+
+def same_answer(one, batch, tolerance=1e-9, whole_reason=True):
+    """The one-pose answer is the batch path's: the same count, reason, form and
+    number of singular solutions, and each regular solution one of the batch's
+    (to ``tolerance`` rad, modulo a turn; the order may differ where an angle is
+    near pi, which rounds to either end). ``whole_reason`` False: the reasons'
+    last sentence only (the degenerate forms a reason lists first depend on the
+    order the forms were tried in, which starts with the last that solved)."""
+    if whole_reason:
+        assert one.reason == batch.reason
+    else:
+        assert str(one.reason).split("; ")[-1] == str(batch.reason).split("; ")[-1]
+    assert one.formulation == batch.formulation
+    assert one.Q.shape == batch.Q.shape
+    assert one.singular.sum() == batch.singular.sum()
+    regular = one.Q[~one.singular]
+    if len(regular):
+        gaps = np.abs(wrap(regular[:, None] - batch.Q[None])).max(axis=2)
+        assert np.all(gaps.min(axis=1) <= tolerance)
+
+
+def test_one_pose_a_call_gives_the_batch_paths_answers_on_random_arms():
+    # the one-pose path (a (4, 4) pose) against the batch path (the same pose among
+    # others); both against the DH forward kinematics written here
+    rng = np.random.default_rng(71)
+    for _ in range(12):
+        table, chain = random_arm(rng)
+        q = rng.uniform(-np.pi, np.pi, (4, 6))
+        q[1, 4] = 0.0  # a wrist-like special configuration, still regular here
+        T = dh_fk(table, q)
+        T[3, :3, 3] *= 6.0  # out of reach: an answer with a reason, not a crash
+        batch = general_6r_ik(chain, T)
+        for k in range(4):
+            one = general_6r_ik(chain, T[k])
+            same_answer(one, batch[k])
+            if k < 3:
+                check_answer(one, table, T[k])
+                assert contains(one.Q, q[k])
+            else:
+                assert len(one.Q) == 0 and one.reason
+
+
+@pytest.mark.parametrize("robot", ["puma560", "ur5e"])
+def test_one_pose_a_call_of_a_named_arm_matches_the_batch_at_singular_poses(robot):
+    # special geometry: shifted forms of the loop, solutions on continua (q5 = 0)
+    chain = getattr(sk.robots, robot)()
+    rng = np.random.default_rng(72)
+    q = rng.uniform(-np.pi, np.pi, (3, 6))
+    q[1, 4] = 0.0
+    T = chain.fk(q)
+    batch = general_6r_ik(chain, T)
+    for k in range(3):
+        one = general_6r_ik(chain, T[k])
+        assert np.abs(chain.fk(one.Q) - T[k]).max() < 1e-9
+        same_answer(one, batch[k], whole_reason=False)
+        if k != 1:  # at q5 = 0, q is one point of a continuum (q4 + q6 fixed)
+            assert contains(one.Q, q[k]) and not one.singular.any()
+        else:
+            assert one.singular.any() and "singular" in one.reason
+
+
+def test_analytic_ik_of_one_pose_of_a_general_arm_is_its_batch_answer():
+    table, chain = random_arm(np.random.default_rng(73))
+    q = np.array([0.4, -1.1, 0.9, 2.2, -0.3, 1.7])
+    T = dh_fk(table, q)[0]
+    one = sk.ik.analytic_ik(chain, T, near=q)
+    batch = sk.ik.analytic_ik(chain, np.stack([T, T]), near=q)[0]
+    assert one.structure == batch.structure and one.reason == batch.reason
+    assert [s.config for s in one] == [s.config for s in batch]
+    for a, b in zip(one, batch):
+        assert np.abs(wrap(a.q - b.q)).max() < 1e-9
+    assert np.abs(wrap(one[0].q - q)).max() < 1e-9  # nearest first: q itself
+
+
+def test_null_vectors_of_an_exactly_singular_matrix_polynomial():
+    # each real root's vector is M(x)^-1 b (inverse iteration); where M(x) is
+    # singular to working precision (its LU breaks down) the SVD gives it instead,
+    # for that root alone. M(x) = M0 + x M1 + x^2 M2 built with known null vectors
+    from screwkit.ik.general import _null_vectors
+
+    rng = np.random.default_rng(3)
+    Q, _ = np.linalg.qr(rng.standard_normal((12, 12)))
+    M = np.zeros((3, 12, 12))
+    M[0] = np.diag(np.r_[0.0, np.arange(1.0, 12.0)])  # M(0) e0 = 0 exactly
+    M[2] = Q  # M(x) = M0 + x^2 Q: nonsingular at x = 1
+    x = np.array([0.0, 1.0])
+    V = _null_vectors(M, x)  # one shared polynomial, two roots
+    assert abs(abs(V[0, 0]) - 1) < 1e-15 and np.all(np.abs(V[0, 1:]) < 1e-15)
+    # the regular root: the solve's vector, whatever it is, is finite (no root is
+    # left NaN by the other's breakdown)
+    assert np.all(np.isfinite(V[1]))
+    # a root of a nearly singular M(x): its vector spans the null space
+    M[0, 0, 0] = 1e-14
+    u = _null_vectors(M, np.array([0.0]))[0]
+    assert abs(abs(u[0]) / np.linalg.norm(u) - 1) < 1e-12

@@ -94,6 +94,7 @@ ORDER = [
             "ik.spherical_wrist",
             "ik.ur",
             "ik.stanford",
+            "ik._general_kinematics",
             "ik.general",
             "ik.decomposed",
             "ik.dispatch",

@@ -179,17 +179,11 @@ def solve_wrist(arm, T):
     d = (centre[0] + t[0] - p0[0], centre[1] + t[1] - p0[1], centre[2] + t[2] - p0[2])
     # joint 1: subproblem 4 (plane_angles and sinusoid_angles)
     a1, a2, scale = k["a1"], k["a2"], k["scale"]
-    along = _dot(a1, d)
-    A = _dot(a2, d) - along * k["a1a2"]
-    B = _dot(k["n21"], d)
-    C = k["h"] - along * k["a1a2"]
+    A, B, C = _joint_one(d, a1, a2, k["n21"], k["a1a2"], k["h"])
     radius2 = A**2 + B**2
-    excess = radius2 - C**2
-    phi = math.atan2(B, A)
-    half = math.atan2(math.sqrt(max(excess, 0.0)), C)
+    thetas, _, excess = _roots(A, B, C)
     shoulder_ok = excess >= -IK_CLIP_TOL * scale**2
     forward = math.sqrt(max(excess, 0.0))
-    thetas = (phi - half, phi + half)
     if radius2 < (IK_CLIP_TOL * scale) ** 2:  # the wrist centre on axis 1: q1 free
         thetas = (0.0, 0.0)
     p01 = k["p01"]
@@ -327,6 +321,16 @@ def _between(w, a, b):
     )
 
 
+def _joint_one(d, axis, across, normal, cosine, offset):
+    """Joint 1's equation A cos + B sin = C (subproblem 4; the three floats), for
+    the point d (3 floats) that axis 1 (unit ``axis``) turns: the components of d
+    along ``across`` and ``normal`` (its cross product with the axis) with their
+    part along the axis taken off (``cosine`` the two axes' cosine), ``offset`` the
+    component the point must have."""
+    along = _dot(axis, d)
+    return _dot(across, d) - along * cosine, _dot(normal, d), offset - along * cosine
+
+
 def _roots(A, B, C):
     """The two angles of A cos + B sin = C, whether real, and the excess
     (``ur._roots``)."""
@@ -405,16 +409,9 @@ def solve_ur(arm, T):
     RGt = list(zip(*RG))
     # joint 1
     d = _sub(_add(_apply(RG, k["c"]), tG), p[0])
-    along = _dot(w1, d)
-    A = _dot(u, d) - along * k["w1u"]
-    B = _dot(k["uw1"], d)
-    C = k["h"] - along * k["w1u"]
+    A, B, C = _joint_one(d, w1, u, k["uw1"], k["w1u"], k["h"])
     radius1 = A**2 + B**2
-    excess1 = radius1 - C**2
-    phi = math.atan2(B, A)
-    half = math.atan2(math.sqrt(max(excess1, 0.0)), C)
-    shoulder_ok = excess1 >= -IK_CLIP_TOL * radius1
-    thetas = [phi - half, phi + half]
+    thetas, shoulder_ok, excess1 = _roots(A, B, C)
     if radius1 < (IK_CLIP_TOL * scale) ** 2:
         thetas = [0.0, 0.0]
     arms = []

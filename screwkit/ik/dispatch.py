@@ -496,6 +496,11 @@ def analytic_ik(chain, T, within_limits=False, near=None, fixed=None):
             near = _check_near(near)
             found = _ONE_POSE[type(arm)](arm, T)
             return _one_answer(arm, chain, T, found, within_limits, near)
+        if type(arm) is _GeneralArm:  # one pose of a general 6R: already checked
+            within_limits = check_flag(within_limits, "within_limits")
+            near = _check_near(near)
+            found = arm.solver(chain, T)
+            return _general_answer(arm, chain, found, within_limits, near)
     _check_batch_size(T, "T", MAX_POSES, "analytic_ik (a list of answers)")
     if fixed is not None or chain.n == 7:
         return _fixed_ik(chain, T, within_limits, near, fixed)
@@ -694,15 +699,30 @@ def _decomposed_answers(arm, chain, batch, within_limits, near):
 
 
 def _general_answer(arm, chain, found, within_limits, near):
-    """The IKSolutions of a general 6R arm from its solver's answer for one pose."""
-    solutions = [
-        (q, f"s{i}", res, ("singular",) if flag else ())
-        for i, (q, res, flag) in enumerate(
-            zip(found.Q, found.residuals, found.singular)
+    """The IKSolutions of a general 6R arm from its solver's answer for one pose:
+    :func:`_listed`'s limits, order and reason, the limits computed on floats
+    (:func:`._one_pose.into_limits`)."""
+    limits, slack, new = chain.qlim.tolist(), IK_JOINT_LIMIT_SLACK, object.__new__
+    listed = []
+    rows = zip(found.Q.tolist(), found.residuals.tolist(), found.singular.tolist())
+    for i, (q, res, flag) in enumerate(rows):
+        moved, ok = _one_pose.into_limits(q, limits, slack)
+        solution = new(IKSolution)  # frozen: its fields set at once
+        solution.__dict__.update(
+            q=np.array(moved if within_limits else q, float),
+            config=f"s{i}",
+            singular=("singular",) if flag else (),
+            within_limits=ok,
+            residual=res,
         )
-    ]
-    reason = found.reason or (None if solutions else "out of reach: no real solution")
-    return _listed(solutions, chain.qlim, within_limits, near, arm.structure, reason)
+        listed.append(solution)
+    kept = [s for s in listed if s.within_limits] if within_limits else listed
+    reason = found.reason or (None if listed else "out of reach: no real solution")
+    result = IKSolutions(kept, reason=reason, structure=arm.structure)
+    _nearest_first(result, near)
+    if listed and not kept:
+        result.reason = _outside_limits(listed)
+    return result
 
 
 def _answer(arm, T, Q, flags, code, limits, within_limits, near, chain=None):

@@ -16,10 +16,12 @@ combinations N with N Q = 0 are free of joints 1 and 2: 6 equations in the 9 pro
 x_i = tan(q_i / 2) and with a second copy multiplied by x4 they are 12 equations,
 linear in the 12 monomials x4^i x5^j (i <= 3, j <= 2), quadratic in x3:
 (M0 + x3 M1 + x3^2 M2) v = 0, a 24 x 24 eigenvalue problem (its companion matrix). Its
-real eigenvalues give q3, the eigenvectors q4 and q5, the 14 equations q1 and q2, the
-rotation left q6; every candidate is then polished by Newton steps on the chain's own
-forward kinematics and Jacobian, and kept when it meets the pose. At most 16
-solutions.
+real eigenvalues give q3; the vector v of each (the null vector of M(x3), by one step
+of inverse iteration rather than the companion's eigenvectors) q4 and q5, the 14
+equations q1 and q2, the rotation left q6; every candidate is then polished by Newton
+steps on the chain's own forward kinematics and Jacobian (one step, and more only
+where the chain's residual is not yet at round-off), and kept when it meets the
+pose. At most 16 solutions.
 
 Each side's coefficients are found by sampling: a function of degree one in
 (cos, sin) of an angle is fixed by its values at three equally spaced angles, so the
@@ -40,16 +42,26 @@ each step is one NumPy call for the whole batch (the 24 x 24 eigenvalue problems
 included), and a pose whose form turns out degenerate goes on to the next form with
 the other poses that did.
 
+One pose (T of shape (4, 4)) goes the same steps with less bookkeeping: the chain's
+constants (its axes and home pose, the left side's coefficients, the right side's
+motions at the grid, the screw matrices the polish multiplies) are computed once per
+chain and cached, the form that last solved a pose of the chain is tried alone, and
+the batch path takes over when that form depends on the pose (a shifted one), is
+nearly degenerate here or finds no solution. Its answer is the batch path's.
+
 What the answer claims: every real root of the eigenvalue problem whose imaginary
 part is below IK_GENERAL_REAL_TOL becomes a candidate, and every candidate that
 Newton brings to the pose (residual at most IK_GENERAL_ACCEPT_TOL) is returned once.
 Every genuine real root (its joints 1 and 2 consistent, IK_GENERAL_CONSISTENT_TOL;
 special geometry adds spurious ones, e.g. the PUMA's q = 0 and pi) must be accounted
-for by a returned solution (its angle within IK_GENERAL_EXPLAINED_TOL): a root left
-over makes the reason say that the list may be incomplete, so a short list is never
-silent. A solution where the Jacobian loses rank (solutions coinciding, or a
-continuum along aligned axes) is flagged in ``singular`` and the reason says so: of
-a continuum, Q holds points only.
+for by as many returned solutions (their angle within IK_GENERAL_EXPLAINED_TOL) as
+it has consistent candidates, at most its multiplicity (solutions that share the
+eigenvalue joint's angle make a repeated root, one candidate each): a root short of
+solutions makes the reason say that the list may be incomplete, so a short list is
+never silent (unless a solution it has is singular: solutions coincide there). A
+solution where the Jacobian loses rank (solutions coinciding, or a continuum along
+aligned axes) is flagged in ``singular`` and the reason says so: of a continuum, Q
+holds points only.
 
 An arm whose axes leave it fewer than six degrees of freedom (all parallel, two
 coincident; its Jacobian's rank below 6 at every configuration) has continua where
@@ -68,7 +80,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._checks import check_chain, check_poses
+from .._checks import check_chain, check_poses, one_pose
 from ..links import Joint
 from ..tolerances import (
     IK_GENERAL_ACCEPT_TOL,
@@ -78,7 +90,6 @@ from ..tolerances import (
     IK_GENERAL_EXPLAINED_TOL,
     IK_GENERAL_LEADING_TOL,
     IK_GENERAL_NULL_TOL,
-    IK_GENERAL_POLISH_TOL,
     IK_GENERAL_RANK_TOL,
     IK_GENERAL_REAL_TOL,
     IK_GENERAL_SAME_TOL,
@@ -86,13 +97,15 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _cross_last, _rotations_about, _wrap_angle
+from ..transforms import _cross, _cross_last, _skew, _wrap_angle
+from ._general_kinematics import by_identity
+from ._general_kinematics import error as _error
+from ._general_kinematics import poe as _poe
+from ._general_kinematics import polish as _polish
+from ._general_kinematics import residuals as _residuals
+from ._general_kinematics import singular as _singular
 
 __all__ = ["GeneralIK", "general_6r_ik"]
-
-#: Newton steps that polish each candidate (quadratic convergence from the
-#: eigenvalue's 1e-8 or better reaches round-off in two or three).
-NEWTON_STEPS = 6
 
 #: Three equally spaced angles: a function a + b cos + c sin is fixed by its values
 #: there, and _FIT turns the three values into (a, b, c).
@@ -199,9 +212,21 @@ def _turn_both(w, r, angle, p, l):
 def _products(p, l):
     """The 14 Raghavan–Roth quantities (14, n, g) of points p and directions l
     (3, n, g)."""
-    pp = np.sum(p * p, axis=0)
-    pl = np.sum(p * l, axis=0)
-    return np.concatenate([p, l, [pp, pl], _cross(p, l), pp * l - 2 * pl * p])
+    shape = (
+        p.shape[1:] if p.shape == l.shape else np.broadcast_shapes(p.shape, l.shape)[1:]
+    )
+    out = np.empty((14, *shape))
+    out[:3], out[3:6] = p, l
+    pp = out[6] = (p * p).sum(axis=0)
+    pl = out[7] = (p * l).sum(axis=0)
+    # p x l, written into place
+    np.subtract(p[_NEXT] * l[_AFTER], p[_AFTER] * l[_NEXT], out=out[8:11])
+    np.subtract(pp * l, 2 * pl * p, out=out[11:])
+    return out
+
+
+#: The components after each, cyclically: (a x b)_i = a_j b_k - a_k b_j.
+_NEXT, _AFTER = np.array([1, 2, 0]), np.array([2, 0, 1])
 
 
 def _left(w, r, q3, q4, q5):
@@ -256,30 +281,41 @@ def _eliminate(w, r, G, shift):
     (6, 3, n or 1, 1), lengths divided by the chain's size; poses G (n, 4, 4)), angles
     q_i = phi_i + shift_i: an :class:`_Eliminated`."""
     n = G.shape[0]
-    r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
-    w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
-    hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
-    hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
-    a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
-    right = np.einsum("inj,kj->nik", _right(w, r, hp, hl, a1, a2), _FIT2)
+    if w.shape[2] == 1:  # joints 1, 2 and 6 do not depend on the pose
+        hp = G[:, :3, :3] @ r[5, :, 0, 0] + G[:, :3, 3]  # (n, 3)
+        hl = G[:, :3, :3] @ w[5, :, 0, 0]
+        R, t, _, left_poly = _shared_constants(w, r, shift)
+        # einsum, not a matrix product that BLAS may block by the batch's size: the
+        # same round-off for a pose alone as in a batch
+        p = np.einsum("gij,nj->ngi", R, hp) + t  # (n, 9 angles, 3)
+        l = np.einsum("gij,nj->ngi", R, hl)
+        values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
+    else:
+        r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
+        w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
+        hp = (np.einsum("nij,nj->in", G[:, :3, :3], r6) + G[:, :3, 3].T)[..., None]
+        hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
+        a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
+        values = _right(w, r, hp, hl, a1, a2)
+    right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
     U, sigma, Vh = np.linalg.svd(Q)
     reason = [None] * n
     usable = sigma[:, -1] > IK_GENERAL_RANK_TOL * sigma[:, 0]
-    for k in np.nonzero(~usable)[0]:
-        reason[k] = _RANK_REASON
+    if not usable.all():
+        for k in np.nonzero(~usable)[0]:
+            reason[k] = _RANK_REASON
     inverse = np.divide(1.0, sigma, out=np.zeros_like(sigma), where=sigma > 0)
     pinv = np.swapaxes(Vh, 1, 2) @ (np.swapaxes(U[:, :, :8], 1, 2) * inverse[..., None])
     N = np.swapaxes(U[:, :, 8:], 1, 2)  # (n, 6, 14): N Q = 0
-    if w.shape[2] == 1:  # joints 3 to 6 do not depend on the pose
-        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
-    else:
+    if w.shape[2] != 1:  # joints 3 to 6 depend on the pose
         a3, a4, a5 = _GRID3[:, None, :] + shift[2:5, None, None]
         left = np.einsum("inj,kj->nik", _left(w, r, a3, a4, a5), _FIT3)
-    left = np.broadcast_to(left, (n, 14, 27)).copy()
-    left[:, :, 0] -= C0
+        left_poly = left @ _TO_POLY3
+    # N (left - C0 e0) in the monomials of the half-angle tangents:
     # (n, 6, power of x3, power of x4, power of x5)
-    poly = (N @ left @ _TO_POLY3).reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
+    poly = N @ left_poly - (N @ C0[..., None]) * _TO_POLY3[0]
+    poly = poly.reshape(n, 6, 3, 3, 3).transpose(0, 2, 1, 3, 4)
     M = np.zeros((n, 3, 12, 4, 3))
     M[:, :, :6, :3, :] = poly
     M[:, :, 6:, 1:, :] = poly
@@ -287,8 +323,9 @@ def _eliminate(w, r, G, shift):
     sv = np.linalg.svd(M[:, 2], compute_uv=False)
     size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
     leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
-    for k in np.nonzero(usable & ~leading)[0]:
-        reason[k] = "the eigenvalue problem's leading matrix is singular"
+    if not leading.all():
+        for k in np.nonzero(usable & ~leading)[0]:
+            reason[k] = "the eigenvalue problem's leading matrix is singular"
     usable &= leading
     quality = np.where(
         usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
@@ -312,6 +349,45 @@ def _left_coefficients_cached(w, r, shift):
     left = _left(*axes, a3, a4, a5)[:, 0] @ _FIT3.T
     left.setflags(write=False)
     return left
+
+
+@functools.lru_cache(maxsize=64)
+def _right_motions_cached(w, r, shift):
+    """_right_motions on bytes (hashable), cached."""
+    w, r = np.frombuffer(w).reshape(2, 3), np.frombuffer(r).reshape(2, 3)
+    angles = _GRID2 + np.frombuffer(shift)[:, None]
+    p, l = np.zeros((3, 1, 9)), np.broadcast_to(np.eye(3)[:, :, None], (3, 3, 9))
+    for k in range(2):
+        p, l = _turn_both(w[k, :, None, None], r[k, :, None, None], -angles[k], p, l)
+    R, t = l.transpose(2, 0, 1).copy(), p[:, 0].T.copy()
+    R.setflags(write=False)
+    t.setflags(write=False)
+    return R, t
+
+
+def _right_motions(w, r, shift):
+    """The rigid motions E2^-1 E1^-1 of the right side at the grid's 9 angles of
+    joints 1 and 2 (axes w, points r (2, 3); their shifts, bytes): rotations
+    (9, 3, 3) and translations (9, 3), x -> R x + t."""
+    return _right_motions_cached(
+        np.ascontiguousarray(w).tobytes(), np.ascontiguousarray(r).tobytes(), shift
+    )
+
+
+def _shared_constants(w, r, shift):
+    """For the axes w, r (6, 3, 1, 1) of a form that do not depend on the pose and
+    the angle shifts (6,): the right side's motions R, t (:func:`_right_motions`),
+    the left side's coefficients (14, 27) (:func:`_left_coefficients`) and those in
+    the half-angle tangents' monomials (14, 27), kept by the axes' identity."""
+
+    def make():
+        R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
+        left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
+        left_poly = left @ _TO_POLY3
+        left_poly.setflags(write=False)
+        return R, t, left, left_poly
+
+    return by_identity((w, r), shift.tobytes(), make)
 
 
 def _left_coefficients(w, r, shift):
@@ -339,7 +415,8 @@ _MIX = 0.6180339887
 
 def _repeated_roots(M, x3, V):
     """Eigenvectors V (k, 12) for the roots x3 (k,), with those of repeated roots
-    replaced.
+    replaced, and the multiplicity (k,) of each root (how many of the roots x3 it
+    stands for).
 
     Solutions that share q3 (e.g. two wrist configurations) give a repeated root whose
     eigenvectors are any mixture of their monomial vectors. The null space B of
@@ -351,6 +428,7 @@ def _repeated_roots(M, x3, V):
     gaps = np.abs(np.diff(x3.real)) > IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x3[1:]))
     starts = np.concatenate([[0], np.nonzero(gaps)[0] + 1, [len(x3)]])
     roots, vectors = [x3], [V]
+    multiplicity = [np.repeat(np.diff(starts), np.diff(starts))]
     for a, b in zip(starts[:-1], starts[1:]):
         if b - a < 2:
             continue
@@ -364,96 +442,166 @@ def _repeated_roots(M, x3, V):
         C = np.linalg.eig(K[0])[1]
         roots.append(np.full(d, x, dtype=complex))
         vectors.append((B @ C).T)
-    return np.concatenate(roots), np.concatenate(vectors)
+        multiplicity.append(np.full(d, b - a))
+    return np.concatenate(roots), np.concatenate(vectors), np.concatenate(multiplicity)
 
 
 def _candidates(w, r, G, shift, found):
     """Joint vectors (k, 6) of the loops E1 ... E6 = G_j from the eigenvalue problems
-    of ``found`` (an :class:`_Eliminated`), the pose j (k,) of each, and whether each
-    is consistent (k,): its joints 1 and 2 products those of two angles, so that its
-    root (its q3) is genuine and a solution must account for it."""
-    values, vectors = np.linalg.eig(found.A)
+    of ``found`` (an :class:`_Eliminated`), the pose j (k,) of each, and its claim
+    (k,) on the solutions: 0 when inconsistent, else the multiplicity m >= 1 of its
+    root (its q3) in the spectrum. A candidate is consistent when its joints 1 and 2
+    products are those of two angles: its root is genuine, and as many solutions
+    must account for it as it has consistent candidates, at most m
+    (:func:`_unexplained`)."""
+    values = np.linalg.eigvals(found.A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
     which, column = np.nonzero(real)
     x3 = values[which, column]
-    Z = vectors[which, :, column]  # (k, 24)
-    # the eigenvector is (v, x3 v): take the better-scaled half
-    V = np.where(np.abs(x3[:, None]) <= 1, Z[:, :12], Z[:, 12:])
-    x3, V, which = _with_repeated_roots(found.M, x3, V, which)
+    V = _null_vectors(found.M[0] if len(found.M) == 1 else found.M[which], x3.real)
+    x3, V, which, multiplicity = _with_repeated_roots(found.M, x3, V, which)
     pose = usable[which]
     V = V.reshape(-1, 4, 3)
-    x4 = np.sum(V[:, :-1].conj() * V[:, 1:], axis=(1, 2)) / np.sum(
-        np.abs(V[:, :-1]) ** 2, axis=(1, 2)
-    )
-    x5 = np.sum(V[:, :, :-1].conj() * V[:, :, 1:], axis=(1, 2)) / np.sum(
-        np.abs(V[:, :, :-1]) ** 2, axis=(1, 2)
-    )
-    q3 = _half_angle(x3.real) + shift[2]
-    q4 = _half_angle(x4.real) + shift[3]
-    q5 = _half_angle(x5.real) + shift[4]
+    # x4 and x5 from the monomials' ratios, least squares (V is real, or complex
+    # where repeated roots were separated)
+    low, high = V[:, :-1].conj(), V[:, 1:]
+    phi = np.empty((3, len(x3)))
+    phi[0] = x3.real
+    phi[1] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
+    low, high = V[:, :, :-1].conj(), V[:, :, 1:]
+    phi[2] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
+    phi = _half_angle(phi)
+    q3, q4, q5 = phi + shift[2:5, None]
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
-    values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0]
-    b = np.einsum("kij,kj->ki", found.pinv[pose], values.T - found.C0[pose])
+    if w.shape[2] == 1:  # from the cached coefficients of the left side
+        left = _shared_constants(w, r, shift)[2]
+        f = np.empty((3, len(x3), 3))  # (1, cos, sin) of phi3, phi4, phi5, (k, 3) each
+        f[:, :, 0], f[:, :, 1], f[:, :, 2] = 1.0, np.cos(phi), np.sin(phi)
+        monomials = (f[0, :, :, None] * f[1, :, None]).reshape(-1, 9, 1) * f[2, :, None]
+        values = monomials.reshape(-1, 27) @ left.T  # (k, 14)
+    else:
+        values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
+    b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
     # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
     c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 = b.T
-    q1 = np.arctan2(s1, c1) + shift[0]
-    q2 = np.arctan2(s2, c2) + shift[1]
-    q = np.stack([q1, q2, q3, q4, q5, np.zeros_like(q1)], axis=1)
+    q = np.empty((len(x3), 6))
+    q[:, 0] = np.arctan2(s1, c1) + shift[0]
+    q[:, 1] = np.arctan2(s2, c2) + shift[1]
+    q[:, 2], q[:, 3], q[:, 4] = q3, q4, q5
     q[:, 5] = _last_angle(wk, rk, G[pose], q)
-    gaps = [
-        c1 * c1 + s1 * s1 - 1,
-        c2 * c2 + s2 * s2 - 1,
-        c1c2 - c1 * c2,
-        c1s2 - c1 * s2,
-        s1c2 - s1 * c2,
-        s1s2 - s1 * s2,
-    ]
-    consistent = np.max(np.abs(gaps), axis=0) <= IK_GENERAL_CONSISTENT_TOL
-    return q, pose, consistent
+    # (c1^2 + s1^2, c2^2 + s2^2) against 1; (c1c2, c1s2, s1c2, s1s2) against c1 c2, ...
+    norms = b[:, _SQUARES].reshape(-1, 2, 2) ** 2
+    gaps = np.abs(norms.sum(axis=2) - 1).max(axis=1)
+    products = np.abs(b[:, _PRODUCTS] - b[:, _FACTORS_1] * b[:, _FACTORS_2])
+    consistent = np.maximum(gaps, products.max(axis=1)) <= IK_GENERAL_CONSISTENT_TOL
+    return q, pose, np.where(consistent, multiplicity, 0)
+
+
+#: b's columns (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2): (c1, s1, c2, s2), and the
+#: products with their factors.
+_SQUARES = np.array([2, 5, 0, 1])
+_PRODUCTS, _FACTORS_1, _FACTORS_2 = np.array([[3, 4, 6, 7], [2, 2, 5, 5], [0, 1, 0, 1]])
+
+#: A fixed right side for one step of inverse iteration (:func:`_null_vectors`).
+_PROBE = np.random.default_rng(12).standard_normal((12, 1))
+
+
+def _null_vectors(M, x):
+    """A vector v (k, 12) with M_j(x_j) v = 0 for each real root x (k,) of the
+    matrix polynomials M (k, 3, 12, 12), or of one (3, 12, 12): one step of
+    inverse iteration, M(x)^-1 b for a fixed b (M(x) is singular to round-off, so
+    the solve amplifies its null direction by 1 / sigma_min; the vectors' scale
+    does not matter, only their ratios), or the last right singular vector where
+    M(x) is singular to working precision (its LU breaks down, or the solve
+    overflows)."""
+    x = x[:, None, None]
+    Mx = M[..., 0, :, :] + x * (M[..., 1, :, :] + x * M[..., 2, :, :])
+    try:
+        V = np.linalg.solve(Mx, _PROBE)[..., 0]
+    except np.linalg.LinAlgError:  # an exactly singular M(x): those by SVD below
+        V = np.full((len(Mx), 12), np.nan)
+        regular = np.linalg.det(Mx) != 0
+        if regular.any():
+            V[regular] = np.linalg.solve(Mx[regular], _PROBE)[..., 0]
+    size = np.abs(V).sum(axis=1)
+    bad = ~((size > 0) & (size < np.inf))  # a zero vector, an overflow or a NaN
+    if bad.any():
+        V[bad] = np.linalg.svd(Mx[bad])[2][:, -1]
+    return V
 
 
 def _with_repeated_roots(M, x3, V, which):
-    """The roots x3 (k,), their vectors V (k, 12) and problems ``which`` (k,), with the
-    vectors of repeated roots replaced (:func:`_repeated_roots`) in the problems that
-    have any."""
+    """The roots x3 (k,), their vectors V (k, 12), problems ``which`` (k,) and
+    multiplicities (k,), with the vectors of repeated roots replaced
+    (:func:`_repeated_roots`) in the problems that have any."""
+    if 0 < len(x3) <= 24:  # one pose's roots: no two close (a loose test), no sort
+        x = x3.real
+        near = np.abs(x[:, None] - x) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x).max())
+        if (near & (which[:, None] == which)).sum() == len(x):
+            return x3, V, which, np.ones(len(x3), int)
     order = np.lexsort((x3.real, which))
     x3, V, which = x3[order], V[order], which[order]
     close = (which[1:] == which[:-1]) & (
         np.abs(np.diff(x3.real)) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x3[1:]))
     )
-    if not np.any(close):
-        return x3, V, which
+    if not close.any():
+        return x3, V, which, np.ones(len(x3), int)
     parts = []
     for j in np.unique(which):
         mine = which == j
         if np.any(close & mine[1:]):
-            x, v = _repeated_roots(M[j], x3[mine], V[mine])
-            parts.append((x, v, np.full(len(x), j)))
+            x, v, m = _repeated_roots(M[j], x3[mine], V[mine])
+            parts.append((x, v, np.full(len(x), j), m))
         else:
-            parts.append((x3[mine], V[mine], which[mine]))
+            parts.append((x3[mine], V[mine], which[mine], np.ones(np.sum(mine), int)))
     return tuple(np.concatenate(p) for p in zip(*parts))
+
+
+def _wrist_frame(w):
+    """For axes w (6, 3, m, 1): [w_i] and [w_i]^2 (m, 5, 3, 3) of axes 1 to 5, and
+    two unit vectors u, v = w6 x u (m, 3) normal to axis 6."""
+    w6 = w[5, :, :, 0].T
+    u = _cross_last(w6, np.array([1.0, 0.0, 0.0]))
+    u = np.where(
+        np.linalg.norm(u, axis=1, keepdims=True) < 0.5,
+        _cross_last(w6, np.array([0.0, 1.0, 0.0])),
+        u,
+    )
+    u = u / np.linalg.norm(u, axis=1, keepdims=True)
+    K = _skew(w[:5, :, :, 0].transpose(2, 0, 1))
+    return K, K @ K, u, _cross_last(w6, u)
+
+
+@functools.lru_cache(maxsize=64)
+def _wrist_frame_cached(w):
+    """_wrist_frame of shared axes w (bytes of (6, 3)), cached."""
+    frame = _wrist_frame(np.frombuffer(w).reshape(6, 3, 1, 1))
+    for array in frame:
+        array.setflags(write=False)
+    return frame
 
 
 def _last_angle(w, r, G, q):
     """q6 (k,) from q1..q5 (k, 6): the rotation E6 = (E1 ... E5)^-1 G_k about axis 6
     (axes w, r (6, 3, k or 1, 1), poses G (k, 4, 4))."""
-    k = len(q)
-    w6 = np.broadcast_to(w[5, :, :, 0], (3, k))
-    u = _cross(w6, np.array([1.0, 0.0, 0.0])[:, None])
-    u = np.where(
-        np.linalg.norm(u, axis=0) < 0.5,
-        _cross(w6, np.array([0.0, 1.0, 0.0])[:, None]),
-        u,
-    )
-    u = u / np.linalg.norm(u, axis=0)
-    Gu = np.einsum("kij,jk->ik", G[:, :3, :3], u)[..., None]
+    if w.shape[2] == 1:
+        K, K2, u, v = by_identity(
+            (w,),
+            "wrist",
+            lambda: _wrist_frame_cached(np.ascontiguousarray(w).tobytes()),
+        )
+    else:
+        K, K2, u, v = _wrist_frame(w)
+    Gu = G[:, :3, :3] @ u[..., None]  # (k, 3, 1)
+    # the rotations about axes 1 to 5 by -q (Rodrigues' formula), (k, 5, 3, 3)
+    angle = -q[:, :5, None, None]
+    turns = np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K2
     for j in range(5):  # (E1 ... E5)^-1 = E5^-1 ... E1^-1: undo joint 1 first
-        angle = -q[:, j, None]
-        Gu = _turn(w[j], np.cos(angle), np.sin(angle), Gu)
+        Gu = turns[:, j] @ Gu
     Gu = Gu[..., 0]
-    return np.arctan2(np.sum(_cross(w6, u) * Gu, axis=0), np.sum(u * Gu, axis=0))
+    return np.arctan2((v * Gu).sum(axis=1), (u * Gu).sum(axis=1))
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -486,6 +634,10 @@ def _formulation(S, G, index):
     of joint order[i] itself: backwards, E(S6, q6)^-1 ... E(S1, q1)^-1 = G^-1 is
     E(-S6, q6) ... E(-S1, q1) = G^-1, the screws negated and the angles kept."""
     backwards, k = divmod(index, 6)
+    if not k:  # the axes do not depend on the pose: cached
+        target = _inverse(G) if backwards else G
+        axes, order = _unshifted(np.ascontiguousarray(S).tobytes(), backwards)
+        return (*axes, target, order)
     screws, target = (-S[::-1], _inverse(G)) if backwards else (S, G)
     order = np.arange(6)[::-1] if backwards else np.arange(6)
     if k:
@@ -506,17 +658,63 @@ def _formulation(S, G, index):
     )
 
 
-#: Each chain's joint axes (directions, points) and home pose at q = 0, kept while
-#: the chain lives (a chain is immutable).
-_GEOMETRY = weakref.WeakKeyDictionary()
+@functools.lru_cache(maxsize=64)
+def _unshifted(S, backwards):
+    """(name, w, r, joint order) of the unshifted form of the loop, joints 1..6 or
+    (``backwards``) 6..1, for the screws S (bytes of (6, 6)): :func:`_formulation`'s
+    axes (6, 3, 1, 1), which do not depend on the pose, cached (read-only)."""
+    S = np.frombuffer(S).reshape(6, 6)
+    screws = (-S[::-1] if backwards else S)[None]
+    w = screws[..., :3]
+    r = _cross_last(w, screws[..., 3:])
+    order = np.arange(6)[::-1] if backwards else np.arange(6)
+    found = (
+        w.transpose(1, 2, 0)[..., None],  # views, as the other forms' axes
+        r.transpose(1, 2, 0)[..., None],
+        order.copy(),
+    )
+    for array in found:
+        array.setflags(write=False)
+    return ("joints " + ("6..1" if backwards else "1..6"), *found[:2]), found[2]
 
 
-def _geometry(chain):
-    """The axes z, o (6, 3) and the home pose M (4, 4) of a chain at q = 0 (m)."""
-    if chain not in _GEOMETRY:
-        z, o = chain.joint_axes(np.zeros(6))
-        _GEOMETRY[chain] = (z, o, chain.fk(np.zeros(6)))
-    return _GEOMETRY[chain]
+@dataclass(frozen=True, eq=False)
+class _Arm:
+    """A 6R chain's constants for the solver, computed once per chain: its axes'
+    unit directions ``w`` and points ``r`` (6, 3) at q = 0 and its home pose ``home``
+    (4, 4) and inverse, lengths divided by ``scale`` (the chain's size, m); its unit
+    screws ``screws`` (6, 6), (w; r x w), and ``key`` (bytes) their bytes, which
+    name its geometry."""
+
+    w: np.ndarray
+    r: np.ndarray
+    home: np.ndarray
+    home_inverse: np.ndarray
+    scale: float
+    screws: np.ndarray
+    key: bytes
+
+
+#: Each chain's constants (an _Arm), kept while the chain lives (a chain is immutable).
+_ARMS = weakref.WeakKeyDictionary()
+
+
+def _arm(chain):
+    """The :class:`_Arm` of a 6R chain, computed on first use."""
+    try:
+        return _ARMS[chain]
+    except KeyError:
+        pass
+    z, o = chain.joint_axes(np.zeros(6))
+    M = chain.fk(np.zeros(6))
+    scale = length_scale(o, M[:3, 3])
+    home = M.copy()
+    home[:3, 3] /= scale
+    r = o / scale
+    screws = np.concatenate([z, _cross_last(r, z)], axis=1)
+    arm = _Arm(z, r, home, _inverse(home), float(scale), screws, screws.tobytes())
+    _ARMS[chain] = arm
+    return arm
 
 
 #: The form that last solved a chain's pose, by the chain's axes (bytes): tried first
@@ -526,52 +724,6 @@ _LAST_FORM_SIZE = 64
 
 
 # ---- the public function ------------------------------------------------------------
-
-
-def _poe(w, r, home, q):
-    """The pose exp([S1] q1) ... exp([S6] q6) M (rotation (k, 3, 3), position (k, 3))
-    and the space Jacobian (k, 6, 6), [omega; v] rows, of the axes (w, r)."""
-    R = np.broadcast_to(np.eye(3), (len(q), 3, 3))
-    p = np.zeros((len(q), 3))
-    J = np.empty((len(q), 6, 6))
-    for i in range(6):
-        wi, ri = R @ w[i], R @ r[i] + p
-        J[:, :3, i], J[:, 3:, i] = wi, _cross_last(ri, wi)
-        Ri = _rotations_about(w[i], q[:, i])
-        p = p + (R @ (r[i] - Ri @ r[i])[..., None])[..., 0]
-        R = R @ Ri
-    return R @ home[:3, :3], R @ home[:3, 3] + p, J
-
-
-def _error(w, r, home, targets, q):
-    """The error twists e (k, 6) of q (k, 6) against their targets (k, 4, 4) and the
-    space Jacobians (k, 6, 6): e = (omega, dp - omega x p), omega the vee of the skew
-    part of R* R(q)^T and dp the position error, the spatial error twist to first
-    order."""
-    R, p, J = _poe(w, r, home, q)
-    E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
-    omega = np.stack(
-        [E[:, 2, 1] - E[:, 1, 2], E[:, 0, 2] - E[:, 2, 0], E[:, 1, 0] - E[:, 0, 1]],
-        axis=1,
-    )
-    omega /= 2
-    return np.concatenate([omega, targets[:, :3, 3] - p - _cross_last(omega, p)], 1), J
-
-
-def _polish(w, r, home, targets, q):
-    """Newton steps J_s dq = e (:func:`_error`) on the pose from the candidates q
-    (k, 6) towards their targets (k, 4, 4), lengths divided by the chain's size:
-    quadratic convergence near a solution, no logarithm."""
-    q = q.copy()
-    active = np.arange(len(q))
-    for _ in range(NEWTON_STEPS):
-        e, J = _error(w, r, home, targets[active], q[active])
-        moving = np.linalg.norm(e, axis=1) > IK_GENERAL_POLISH_TOL
-        active, e, J = active[moving], e[moving], J[moving]
-        if not len(active):
-            break
-        q[active] += (np.linalg.pinv(J) @ e[..., None])[..., 0]
-    return q
 
 
 #: The search that stands in when the elimination finds nothing: Newton from this
@@ -598,26 +750,6 @@ def _search(w, r, home, targets):
     return q, pose
 
 
-def _residuals(chain, T, q, scale):
-    """The pose error (k,) of each q (k, 6) against its pose T (k, 4, 4) by the
-    chain's own forward kinematics: sqrt(|R(q) - R|_F^2 / 2 + |p(q) - p|^2 / scale^2),
-    which is the norm of the error twist [omega; v / scale] to first order
-    (|R(q) - R|_F = 2 sqrt(2) sin(angle / 2)) and, unlike the skew part of R(q)^T R,
-    vanishes only at the pose itself."""
-    Tq = chain.fk(q)
-    rotation = np.sum((Tq[:, :3, :3] - T[:, :3, :3]) ** 2, axis=(1, 2)) / 2
-    position = np.sum((Tq[:, :3, 3] - T[:, :3, 3]) ** 2, axis=1) / scale**2
-    return np.sqrt(rotation + position)
-
-
-def _singular(w, r, home, Q):
-    """Whether the Jacobian loses rank at each solution Q (k, 6)."""
-    if not len(Q):
-        return np.zeros(0, bool)
-    sigma = np.linalg.svd(_poe(w, r, home, Q)[2], compute_uv=False)
-    return sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
-
-
 #: Fixed pseudo-random configurations at which an arm's mobility is measured.
 _MOBILITY_Q = np.random.default_rng(43).uniform(-np.pi, np.pi, (4, 6))
 
@@ -641,11 +773,8 @@ def _mobility(chain):
         configurations.
     """
     if chain not in _MOBILITY:
-        z, o, M = _geometry(chain)
-        scale = length_scale(o, M[:3, 3])
-        home = M.copy()
-        home[:3, 3] /= scale
-        J = _poe(z, o / scale, home, _MOBILITY_Q)[2]
+        arm = _arm(chain)
+        J = _poe(arm.w, arm.r, arm.home, _MOBILITY_Q)[2]
         sigma = np.linalg.svd(J, compute_uv=False)
         ranks = np.sum(sigma > IK_GENERAL_SINGULAR_TOL * sigma[:, :1], axis=1)
         _MOBILITY[chain] = int(np.max(ranks))
@@ -681,13 +810,15 @@ def _say(singular, unexplained=()):
         angles = ", ".join(f"{a:.4f}" for a in unexplained[:4])
         missing = (
             f"{len(unexplained)} real root(s) of the eigenvalue problem (its joint at "
-            f"{angles} rad) gave no solution of the pose: the list may be incomplete"
+            f"{angles} rad) gave fewer solutions of the pose than the root has "
+            "candidates (a repeated root one for each solution that shares it): the "
+            "list may be incomplete"
         )
         other = _say(singular)
         return missing if other is None or not len(singular) else f"{missing}; {other}"
     if not len(singular):
         return "no real solution: the pose is out of reach"
-    if not np.any(singular):
+    if not singular.any():
         return None
     return (
         f"{int(np.sum(singular))} of the {len(singular)} solutions are at a singular "
@@ -696,22 +827,47 @@ def _say(singular, unexplained=()):
     )
 
 
-def _unexplained(root, root_pose, kept, poses, joint):
-    """The real roots (rad) that no solution accounts for, by pose: {pose: angles},
-    for the genuine roots ``root`` (k,) of poses ``root_pose`` (k,) and the solutions
-    ``kept`` (a (Q, residuals) pair for each of ``poses``), compared on ``joint``."""
+def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
+    """The real roots (rad) that fewer solutions account for than they should, by
+    pose: {pose: angles}.
+
+    ``root`` (k,) are the genuine roots' angles of ``joint`` (one a consistent
+    candidate), ``root_pose`` (k,) their poses, ``multiplicity`` (k,) each root's
+    multiplicity in the spectrum; ``kept`` a (Q, residuals) pair for each of
+    ``poses`` (sorted) and ``singular`` (all solutions,) their flags. The roots
+    within IK_GENERAL_EXPLAINED_TOL of one another are one root: its c consistent
+    candidates, m its multiplicity, call for min(c, m) distinct solutions whose
+    angle of ``joint`` is within IK_GENERAL_EXPLAINED_TOL of it (solutions sharing
+    that angle make a repeated root). Fewer is a solution lost, unless one of them
+    is singular (solutions coincide there, and a double root may stand for one)."""
     if not len(root):
         return {}
+    same = (root_pose[:, None] == root_pose) & (
+        np.abs(_wrap_angle(root[:, None] - root)) <= IK_GENERAL_EXPLAINED_TOL
+    )
+    wanted = np.minimum(same.sum(axis=1), (same * multiplicity).max(axis=1))
+    if len(kept) == 1:  # one pose: its solutions' angles against its roots
+        near = np.abs(_wrap_angle(root[:, None] - kept[0][0][:, joint])) <= (
+            IK_GENERAL_EXPLAINED_TOL
+        )
+        left = (near.sum(axis=1) < wanted) & ~(near & singular).any(axis=1)
+        if not left.any():
+            return {}
+        return {int(poses[0]): np.unique(np.round(_wrap_angle(root[left]), 4))}
     counts = np.array([len(Q) for Q, _ in kept])
     width = max(int(counts.max()), 1)
     angles = np.full((len(kept), width), np.nan)
+    flags = np.zeros((len(kept), width), bool)
     rows = np.repeat(np.arange(len(kept)), counts)
     columns = np.arange(len(rows)) - np.repeat(np.cumsum(counts) - counts, counts)
     if len(rows):
         angles[rows, columns] = np.concatenate([Q[:, joint] for Q, _ in kept])
+        flags[rows, columns] = singular
     where = np.searchsorted(poses, root_pose)  # poses is sorted
-    gaps = np.abs(_wrap_angle(root[:, None] - angles[where]))
-    left = ~np.any(gaps <= IK_GENERAL_EXPLAINED_TOL, axis=1)
+    near = np.abs(_wrap_angle(root[:, None] - angles[where])) <= (
+        IK_GENERAL_EXPLAINED_TOL
+    )
+    left = (np.sum(near, axis=1) < wanted) & ~np.any(near & flags[where], axis=1)
     return {
         int(j): np.unique(np.round(_wrap_angle(root[left & (root_pose == j)]), 4))
         for j in np.unique(root_pose[left])
@@ -720,19 +876,21 @@ def _unexplained(root, root_pose, kept, poses, joint):
 
 def _distinct(Q, residuals):
     """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
-    lexicographically."""
+    lexicographically, their residuals and their rows in Q."""
     order = np.argsort(residuals, kind="stable")
     Q, residuals = Q[order], residuals[order]
-    same = np.max(np.abs(_wrap_angle(Q[:, None] - Q[None])), axis=2) <= (
+    same = np.abs(_wrap_angle(Q[:, None] - Q[None])).max(axis=2) <= (
         IK_GENERAL_SAME_TOL
     )
-    keep = []
-    for i in range(len(Q)):
-        if not any(same[i, j] for j in keep):
-            keep.append(i)
-    Q, residuals = Q[keep], residuals[keep]
+    if same.sum() > len(Q):  # a pair besides the diagonal
+        keep = []
+        for i in range(len(Q)):
+            if not any(same[i, j] for j in keep):
+                keep.append(i)
+        Q, residuals, order = Q[keep], residuals[keep], order[keep]
+    index = order
     order = np.lexsort(Q.T[::-1])
-    return Q[order], residuals[order]
+    return Q[order], residuals[order], index[order]
 
 
 def general_6r_ik(chain, T):
@@ -779,13 +937,17 @@ def general_6r_ik(chain, T):
         raise ValueError(
             f"chain must have 6 revolute joints (6R), got {chain.n} joints {kinds}"
         )
+    if one_pose(T) is not None:  # one plain pose: checked on floats, solved alone
+        return _solve_one(chain, T)
     _check_batch_size(T, "T", MAX_POSES, "general_6r_ik")
     T = check_poses(T, "T")
-    batch = T[None] if T.ndim == 2 else T
+    if T.ndim == 2:
+        return _solve_one(chain, T)
+    batch = T
     answers = []
     for start in range(0, len(batch), CHUNK):  # memory bounded: ~10 kB a pose
         answers += _solve(chain, batch[start : start + CHUNK])
-    return answers[0] if T.ndim == 2 else answers
+    return answers
 
 
 #: The largest batch of poses :func:`general_6r_ik` solves in one call (about a
@@ -811,50 +973,102 @@ def _check_batch_size(T, name, limit, what):
         )
 
 
+def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None):
+    """The answers (a list of GeneralIK) of ``poses`` (of T (n, 4, 4), T_scaled its
+    lengths divided by the chain's size) from the candidates phi (k, 6) of the form
+    ``name`` (joint order ``order``), pose (k,) naming each candidate's pose:
+    polished, checked, told apart and flagged. ``claims`` (k,): which candidates'
+    third angles are genuine real roots of the eigenvalue problem, which solutions
+    must account for: 0 not, else the root's multiplicity (:func:`_candidates`;
+    None, a search: none)."""
+    q = np.empty_like(phi)
+    q[:, order] = phi
+    targets = T[pose]
+
+    def measure(q, rows):
+        return _residuals(chain, targets[rows], q, arm.scale)
+
+    q, J, residuals = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
+    good = residuals <= IK_GENERAL_ACCEPT_TOL
+    claims = np.zeros(len(phi), int) if claims is None else claims
+    genuine = claims > 0
+    root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
+    q, pose, residuals, J = _wrap_angle(q[good]), pose[good], residuals[good], J[good]
+    if len(poses) == 1:
+        Q, res, index = _distinct(q, residuals)
+        kept = [(Q, res)]
+    else:
+        by_pose = np.argsort(pose, kind="stable")
+        q, pose, residuals, J = (x[by_pose] for x in (q, pose, residuals, J))
+        starts = np.searchsorted(pose, poses, "left")
+        ends = np.searchsorted(pose, poses, "right")
+        parts = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
+        kept = [(Q, res) for Q, res, _ in parts]
+        index = np.concatenate([a + i for (_, _, i), a in zip(parts, starts)])
+    singular = _singular(J[index])
+    left = _unexplained(root, root_pose, multiplicity, kept, singular, poses, order[2])
+    answers, start = [], 0
+    for j, (Q, res) in zip(poses, kept):
+        flags = singular[start : start + len(Q)]
+        answers.append(GeneralIK(Q, res, _say(flags, left.get(j, ())), name, flags))
+        start += len(Q)
+    return answers
+
+
+def _remember(key, attempt):
+    """Keep ``attempt`` as the form that last solved a pose of the chain ``key``."""
+    if key not in _LAST_FORM and len(_LAST_FORM) >= _LAST_FORM_SIZE:
+        _LAST_FORM.clear()
+    _LAST_FORM[key] = attempt
+
+
+def _solve_one(chain, T):
+    """The answer (a GeneralIK) of one checked pose T (4, 4), as :func:`_solve` gives
+    it, with less bookkeeping: the form that last solved a pose of this chain (at
+    first joints 1..6) is tried alone when its axes do not depend on the pose (the
+    unshifted forms, whose constants are cached) and it is well conditioned here,
+    and the pose has a solution; otherwise :func:`_solve` solves it."""
+    arm = _arm(chain)
+    attempt = _LAST_FORM.get(arm.key, (0, 0))
+    if attempt[1] % 6 or _mobility(chain) < 6:
+        return _solve(chain, T[None])[0]
+    T_scaled = T[None].copy()
+    T_scaled[:, :3, 3] /= arm.scale
+    G = T_scaled @ arm.home_inverse
+    name, w, r, target, order = _formulation(arm.screws, G, attempt[1])
+    shift = _SHIFTS[attempt[0]]
+    found = _eliminate(w, r, target, shift)
+    if not (found.usable[0] and found.quality[0] >= IK_GENERAL_COMFORT_TOL):
+        return _solve(chain, T[None])[0]
+    phi, which, claims = _candidates(w, r, target, shift, found)
+    pose = np.zeros(len(phi), int)
+    answer = _finish(chain, arm, T[None], T_scaled, phi, pose, [0], name, order, claims)
+    if not len(answer[0].Q):  # none: the batch path searches
+        return _solve(chain, T[None])[0]
+    _remember(arm.key, attempt)
+    return answer[0]
+
+
 def _solve(chain, T):
     """The answers (a list of GeneralIK) for poses T (n, 4, 4): each form of the loop
     is tried on the poses that no earlier form solved; a nearly degenerate form is
     kept as a pose's fallback, used only when no well-conditioned form exists."""
-    z, o, M = _geometry(chain)
-    scale = length_scale(o, M[:3, 3])
-    home, T_scaled = M.copy(), T.copy()
-    home[:3, 3] /= scale
-    T_scaled[:, :3, 3] /= scale
-    # unit screws (w; r x w)
-    Sn = np.concatenate([z, _cross_last(o / scale, z)], axis=1)
-    G = T_scaled @ _inverse(home)
+    arm = _arm(chain)
+    T_scaled = T.copy()
+    T_scaled[:, :3, 3] /= arm.scale
+    G = T_scaled @ arm.home_inverse
     n = len(T)
     answers, reasons, fallback = [None] * n, [[] for _ in range(n)], {}
 
     def finish(phi, pose, poses, name, order, claims=None):
-        """The answers of ``poses`` from the candidates phi (k, 6) of the form
-        ``name``, pose (k,) naming each candidate's pose; ``claims`` (k,) which
-        candidates' third angles are genuine real roots of the eigenvalue problem,
-        each of which a solution must account for (None, a search: none)."""
-        q = np.empty_like(phi)
-        q[:, order] = phi
-        q = _polish(z, o / scale, home, T_scaled[pose], q)
-        residuals = _residuals(chain, T[pose], q, scale)
-        good = residuals <= IK_GENERAL_ACCEPT_TOL
-        claims = np.zeros(len(phi), bool) if claims is None else claims
-        root, root_pose = phi[claims, 2], pose[claims]
-        q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
-        by_pose = np.argsort(pose, kind="stable")
-        q, pose, residuals = q[by_pose], pose[by_pose], residuals[by_pose]
-        starts = np.searchsorted(pose, poses, "left")
-        ends = np.searchsorted(pose, poses, "right")
-        kept = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
-        singular = _singular(z, o / scale, home, np.concatenate([Q for Q, _ in kept]))
-        left = _unexplained(root, root_pose, kept, poses, order[2])
-        start = 0
-        for j, (Q, res) in zip(poses, kept):
-            flags = singular[start : start + len(Q)]
-            answers[j] = GeneralIK(Q, res, _say(flags, left.get(j, ())), name, flags)
-            start += len(Q)
+        """_finish, the answers stored in ``answers``."""
+        found = _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims)
+        for j, answer in zip(poses, found):
+            answers[j] = answer
 
     # a singular leading matrix from special geometry stays singular at any shift:
     # every form is tried at the first shift before another shift is
-    key = Sn.tobytes()
+    key = arm.key
     tries = [(s, f) for s in range(len(_SHIFTS)) for f in range(12)]
     if key in _LAST_FORM:
         tries.remove(_LAST_FORM[key])
@@ -864,7 +1078,7 @@ def _solve(chain, T):
         if not len(pending):
             break
         shift = _SHIFTS[attempt[0]]
-        name, w, r, target, order = _formulation(Sn, G[pending], attempt[1])
+        name, w, r, target, order = _formulation(arm.screws, G[pending], attempt[1])
         found = _eliminate(w, r, target, shift)
         for j, why in zip(pending, found.reason):
             if why is not None:
@@ -886,9 +1100,7 @@ def _solve(chain, T):
                 order,
                 claims[take],
             )
-            if len(_LAST_FORM) >= _LAST_FORM_SIZE:
-                _LAST_FORM.clear()
-            _LAST_FORM[key] = attempt
+            _remember(key, attempt)
         pending = pending[~comfortable]
     for j in pending:
         if j in fallback:
@@ -904,7 +1116,7 @@ def _solve(chain, T):
             )
     empty = [j for j in range(n) if not len(answers[j].Q)]
     if empty:  # special geometry can hide roots from a form that looks well posed
-        q, pose = _search(z, o / scale, home, T_scaled[empty])
+        q, pose = _search(arm.w, arm.r, arm.home, T_scaled[empty])
         before = [answers[j] for j in empty]
         finish(q, np.asarray(empty)[pose], empty, "Newton search", [0, 1, 2, 3, 4, 5])
         for j, old in zip(empty, before):
