@@ -164,8 +164,8 @@ def polish(w, r, home, targets, q, measure):
     (:func:`residuals`): after the first step it decides which candidates need
     more (a residual above IK_GENERAL_POLISH_TOL; from a simple root, none), so
     that the usual candidate costs one error and Jacobian. Returns the polished q
-    (k, 6), the space Jacobians (k, 6, 6) for the singular flags and the residuals
-    (k,). A Jacobian
+    (k, 6), the space Jacobians (k, 6, 6) for the singular flags, the residuals
+    (k,) and the Jacobians' determinants (k,). A Jacobian
     is the one before the last step where that step moved no joint by more than
     IK_GENERAL_KEEP_STEP and the Jacobian is far from singular (its Hadamard bound
     above IK_GENERAL_KEEP_BOUND; :func:`singular`): the step cannot change its flag;
@@ -207,14 +207,17 @@ def polish(w, r, home, targets, q, measure):
         keep = (moved <= IK_GENERAL_KEEP_STEP) & (bound > IK_GENERAL_KEEP_BOUND)
         stale &= ~keep
         if stale.any():
-            J[stale] = poe(w, r, home, q[stale])[2]
-    return q, J, found
+            J[stale] = J_stale = poe(w, r, home, q[stale])[2]
+            det[stale] = np.linalg.det(J_stale)
+    return q, J, found, det
 
 
-def _hadamard(J):
-    """|det J| / |J|_F^6 (k,) of Jacobians J (k, 6, 6): a lower bound of
-    sigma_min / sigma_max (sigma_min sigma_max^5 >= |det J|, |J|_F >= sigma_max)."""
-    return np.abs(np.linalg.det(J)) / (J * J).sum(axis=(1, 2)) ** 3
+def _hadamard(J, det=None):
+    """|det J| / |J|_F^6 (k,) of Jacobians J (k, 6, 6) (their determinants ``det``
+    (k,) if known): a lower bound of sigma_min / sigma_max
+    (sigma_min sigma_max^5 >= |det J|, |J|_F >= sigma_max)."""
+    det = np.linalg.det(J) if det is None else det
+    return np.abs(det) / (J * J).sum(axis=(1, 2)) ** 3
 
 
 def residuals(chain, T, q, scale):
@@ -234,12 +237,13 @@ def residuals(chain, T, q, scale):
     return np.sqrt(((top - T[:, :3]) ** 2 * weights).sum(axis=(1, 2)))
 
 
-def singular(J):
-    """Whether each Jacobian J (k, 6, 6) loses rank (IK_GENERAL_SINGULAR_TOL)."""
+def singular(J, det=None):
+    """Whether each Jacobian J (k, 6, 6) (its determinant ``det`` (k,) if known)
+    loses rank (IK_GENERAL_SINGULAR_TOL)."""
     flags = np.zeros(len(J), bool)
     # sigma_min / sigma_max >= |det J| / |J|_F^6: where that bound clears the
     # tolerance, J keeps its rank and needs no SVD
-    check = ~(_hadamard(J) > IK_GENERAL_SINGULAR_TOL)
+    check = ~(_hadamard(J, det) > IK_GENERAL_SINGULAR_TOL)
     if check.any():
         sigma = np.linalg.svd(J[check], compute_uv=False)
         flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]

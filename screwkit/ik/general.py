@@ -77,6 +77,7 @@ MAX_POSES poses is refused before any work.
 import functools
 import weakref
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -284,12 +285,12 @@ def _eliminate(w, r, G, shift):
     if w.shape[2] == 1:  # joints 1, 2 and 6 do not depend on the pose
         hp = G[:, :3, :3] @ r[5, :, 0, 0] + G[:, :3, 3]  # (n, 3)
         hl = G[:, :3, :3] @ w[5, :, 0, 0]
-        R, t, _, left_poly = _shared_constants(w, r, shift)
+        shared = _shared_constants(w, r, shift)
+        left_poly = shared.left_poly
+        # the right side's coefficients, a fixed linear map of the pose's features;
         # einsum, not a matrix product that BLAS may block by the batch's size: the
         # same round-off for a pose alone as in a batch
-        p = np.einsum("gij,nj->ngi", R, hp) + t  # (n, 9 angles, 3)
-        l = np.einsum("gij,nj->ngi", R, hl)
-        values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
+        right = np.einsum("nf,fik->nik", _features(hp, hl), shared.right_map)
     else:
         r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
         w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
@@ -297,7 +298,7 @@ def _eliminate(w, r, G, shift):
         hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
         a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
         values = _right(w, r, hp, hl, a1, a2)
-    right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
+        right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
     U, sigma, Vh = np.linalg.svd(Q)
     reason = [None] * n
@@ -374,20 +375,100 @@ def _right_motions(w, r, shift):
     )
 
 
+class _Shared(NamedTuple):
+    """The pose-independent constants of a form whose axes do not depend on the
+    pose (:func:`_shared_constants`)."""
+
+    #: The right side's motions at the grid: rotations (9, 3, 3), translations (9, 3).
+    R: np.ndarray
+    t: np.ndarray
+    #: The left side's coefficients (14, 27), and in the half-angle monomials (14, 27).
+    left: np.ndarray
+    left_poly: np.ndarray
+    #: The right side's coefficients (14, 9) as a linear map of the pose's features
+    #: (:func:`_features`): (27, 14, 9).
+    right_map: np.ndarray
+    #: The rotation E2^-1 E1^-1 (9, 9 entries) in (1, c1, s1) x (1, c2, s2) of phi1,
+    #: phi2.
+    turn12: np.ndarray
+    #: E3 E4 E5's rotation applied to u and v (27, 6) (two unit vectors normal to
+    #: axis 6, :func:`_wrist_frame`) in (1, c3, s3) x (1, c4, s4) x (1, c5, s5).
+    turn345: np.ndarray
+    #: u (3,).
+    u: np.ndarray
+
+
 def _shared_constants(w, r, shift):
     """For the axes w, r (6, 3, 1, 1) of a form that do not depend on the pose and
-    the angle shifts (6,): the right side's motions R, t (:func:`_right_motions`),
-    the left side's coefficients (14, 27) (:func:`_left_coefficients`) and those in
-    the half-angle tangents' monomials (14, 27), kept by the axes' identity."""
+    the angle shifts (6,): a :class:`_Shared`, kept by the axes' identity."""
 
     def make():
         R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
         left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
         left_poly = left @ _TO_POLY3
-        left_poly.setflags(write=False)
-        return R, t, left, left_poly
+        _, _, u, v = _wrist_frame(w)
+        turns = _rotations(w[2:5, :, 0, 0], _GRID3 + shift[2:5, None])
+        # R3 R4 R5 (u, v) at the grid, fitted: (27 monomials, 3, 2)
+        moved = turns[0] @ turns[1] @ turns[2] @ np.stack([u[0], v[0]], axis=1)
+        turn345 = np.einsum("kg,gij->kij", _FIT3, moved).reshape(27, 6)
+        found = _Shared(
+            R,
+            t,
+            left,
+            left_poly,
+            _right_map(R, t),
+            np.einsum("kg,gij->kij", _FIT2, R).reshape(9, 9),
+            turn345,
+            u[0].copy(),
+        )
+        for array in found:
+            array.setflags(write=False)
+        return found
 
     return by_identity((w, r), shift.tobytes(), make)
+
+
+def _rotations(w, angles):
+    """The rotations (m, g, 3, 3) about unit axes w (m, 3) by the angles (m, g)."""
+    K = _skew(w)[:, None]
+    angle = angles[..., None, None]
+    return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * (K @ K)
+
+
+def _features(hp, hl):
+    """The 27 features (n, 27) of the images hp, hl (n, 3) of axis 6's point and
+    direction of which the right side's coefficients are a linear map: 1, hp, hl,
+    hp.hp, hp.hl, hp x hl, (hp.hp) hl, (hp.hl) hp and the products hl_i hp_j."""
+    n = len(hp)
+    f = np.empty((n, 27))
+    f[:, 0] = 1.0
+    f[:, 1:4], f[:, 4:7] = hp, hl
+    pp = f[:, 7] = (hp * hp).sum(axis=1)
+    pl = f[:, 8] = (hp * hl).sum(axis=1)
+    f[:, 9:12] = hp[:, _NEXT] * hl[:, _AFTER] - hp[:, _AFTER] * hl[:, _NEXT]
+    f[:, 12:15] = pp[:, None] * hl
+    f[:, 15:18] = pl[:, None] * hp
+    f[:, 18:] = (hl[:, :, None] * hp[:, None]).reshape(n, 9)
+    return f
+
+
+def _right_map(R, t):
+    """The right side's coefficients (14, 9) in (1, c1, s1) x (1, c2, s2) as a
+    linear map (27, 14, 9) of :func:`_features`, from its motions R (9, 3, 3), t
+    (9, 3) at the grid: each of the 14 quantities of p = R hp + t, l = R hl is a
+    polynomial in hp, hl whose terms are those features, so the map is found
+    exactly (to round-off) by least squares from fixed pseudo-random samples."""
+    hp, hl = _MAP_SAMPLES
+    p = np.einsum("gij,nj->ngi", R, hp) + t
+    l = np.einsum("gij,nj->ngi", R, hl)
+    values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))  # (14, n, 9)
+    right = np.einsum("inj,kj->nik", values, _FIT2).reshape(len(hp), -1)
+    solution = np.linalg.lstsq(_features(hp, hl), right, rcond=None)[0]
+    return solution.reshape(27, 14, 9)
+
+
+#: The samples of hp, hl (2, 64, 3) :func:`_right_map` fits the map to.
+_MAP_SAMPLES = np.random.default_rng(27).standard_normal((2, 64, 3))
 
 
 def _left_coefficients(w, r, shift):
@@ -465,22 +546,31 @@ def _candidates(w, r, G, shift, found):
     V = V.reshape(-1, 4, 3)
     # x4 and x5 from the monomials' ratios, least squares (V is real, or complex
     # where repeated roots were separated)
-    low, high = V[:, :-1].conj(), V[:, 1:]
     phi = np.empty((3, len(x3)))
     phi[0] = x3.real
-    phi[1] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
-    low, high = V[:, :, :-1].conj(), V[:, :, 1:]
-    phi[2] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
+    if V.dtype.kind == "f":
+        low, high = V[:, :-1], V[:, 1:]
+        phi[1] = np.einsum("kij,kij->k", low, high) / np.einsum("kij,kij->k", low, low)
+        low, high = V[:, :, :-1], V[:, :, 1:]
+        phi[2] = np.einsum("kij,kij->k", low, high) / np.einsum("kij,kij->k", low, low)
+    else:
+        low, high = V[:, :-1].conj(), V[:, 1:]
+        ratio = (low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))
+        phi[1] = ratio.real
+        low, high = V[:, :, :-1].conj(), V[:, :, 1:]
+        ratio = (low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))
+        phi[2] = ratio.real
     phi = _half_angle(phi)
     q3, q4, q5 = phi + shift[2:5, None]
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
-    if w.shape[2] == 1:  # from the cached coefficients of the left side
-        left = _shared_constants(w, r, shift)[2]
+    shared = _shared_constants(w, r, shift) if w.shape[2] == 1 else None
+    if shared is not None:  # from the cached coefficients of the left side
         f = np.empty((3, len(x3), 3))  # (1, cos, sin) of phi3, phi4, phi5, (k, 3) each
         f[:, :, 0], f[:, :, 1], f[:, :, 2] = 1.0, np.cos(phi), np.sin(phi)
         monomials = (f[0, :, :, None] * f[1, :, None]).reshape(-1, 9, 1) * f[2, :, None]
-        values = monomials.reshape(-1, 27) @ left.T  # (k, 14)
+        monomials = monomials.reshape(-1, 27)
+        values = monomials @ shared.left.T  # (k, 14)
     else:
         values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
     b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
@@ -490,7 +580,10 @@ def _candidates(w, r, G, shift, found):
     q[:, 0] = np.arctan2(s1, c1) + shift[0]
     q[:, 1] = np.arctan2(s2, c2) + shift[1]
     q[:, 2], q[:, 3], q[:, 4] = q3, q4, q5
-    q[:, 5] = _last_angle(wk, rk, G[pose], q)
+    if shared is not None:
+        q[:, 5] = _last_angle_shared(shared, G[pose], q[:, :2] - shift[:2], monomials)
+    else:
+        q[:, 5] = _last_angle(wk, rk, G[pose], q)
     # (c1^2 + s1^2, c2^2 + s2^2) against 1; (c1c2, c1s2, s1c2, s1s2) against c1 c2, ...
     norms = b[:, _SQUARES].reshape(-1, 2, 2) ** 2
     gaps = np.abs(norms.sum(axis=2) - 1).max(axis=1)
@@ -536,11 +629,18 @@ def _with_repeated_roots(M, x3, V, which):
     """The roots x3 (k,), their vectors V (k, 12), problems ``which`` (k,) and
     multiplicities (k,), with the vectors of repeated roots replaced
     (:func:`_repeated_roots`) in the problems that have any."""
-    if 0 < len(x3) <= 24:  # one pose's roots: no two close (a loose test), no sort
+    if 0 < len(x3) <= 24:  # few roots: no two close (a loose test), no sort
         x = x3.real
-        near = np.abs(x[:, None] - x) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x).max())
-        if (near & (which[:, None] == which)).sum() == len(x):
-            return x3, V, which, np.ones(len(x3), int)
+        if not which.any():  # one problem's roots: on floats
+            x = sorted(x.tolist())
+            tol = IK_GENERAL_CLUSTER_TOL * (1 + max(-x[0], x[-1]))
+            if all(b - a > tol for a, b in zip(x, x[1:])):
+                return x3, V, which, np.ones(len(x3), int)
+        else:
+            tol = IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x).max())
+            near = np.abs(x[:, None] - x) <= tol
+            if (near & (which[:, None] == which)).sum() == len(x):
+                return x3, V, which, np.ones(len(x3), int)
     order = np.lexsort((x3.real, which))
     x3, V, which = x3[order], V[order], which[order]
     close = (which[1:] == which[:-1]) & (
@@ -602,6 +702,23 @@ def _last_angle(w, r, G, q):
         Gu = turns[:, j] @ Gu
     Gu = Gu[..., 0]
     return np.arctan2((v * Gu).sum(axis=1), (u * Gu).sum(axis=1))
+
+
+def _last_angle_shared(shared, G, phi, monomials):
+    """q6 (k,) as :func:`_last_angle` gives it, for a form whose axes do not depend
+    on the pose, from its cached rotations in the angles' monomials (a
+    :class:`_Shared`): with u, v normal to axis 6, E6's angle is that of
+    (R3 R4 R5 (u, v)) . (R2^T R1^T G u); ``phi`` (k, 2) the form's phi1, phi2,
+    ``monomials`` (k, 27) those of phi3, phi4, phi5, G (k, 4, 4)."""
+    c, s = np.cos(phi), np.sin(phi)
+    f = np.empty((len(phi), 3, 3))  # (1, c1, s1) x (1, c2, s2)
+    f[:, 0, 0], f[:, 0, 1], f[:, 0, 2] = 1.0, c[:, 1], s[:, 1]
+    f[:, 1], f[:, 2] = c[:, :1] * f[:, 0], s[:, :1] * f[:, 0]
+    turned = (f.reshape(-1, 9) @ shared.turn12).reshape(-1, 3, 3)
+    x = turned @ (G[:, :3, :3] @ shared.u)[..., None]  # R2^T R1^T G u (k, 3, 1)
+    y = (monomials @ shared.turn345).reshape(-1, 3, 2)
+    cos_sin = (x * y).sum(axis=1)
+    return np.arctan2(cos_sin[:, 1], cos_sin[:, 0])
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -988,24 +1105,25 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     def measure(q, rows):
         return _residuals(chain, targets[rows], q, arm.scale)
 
-    q, J, residuals = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
+    q, J, residuals, det = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
     good = residuals <= IK_GENERAL_ACCEPT_TOL
     claims = np.zeros(len(phi), int) if claims is None else claims
     genuine = claims > 0
     root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
-    q, pose, residuals, J = _wrap_angle(q[good]), pose[good], residuals[good], J[good]
+    q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
+    J, det = J[good], det[good]
     if len(poses) == 1:
         Q, res, index = _distinct(q, residuals)
         kept = [(Q, res)]
     else:
         by_pose = np.argsort(pose, kind="stable")
-        q, pose, residuals, J = (x[by_pose] for x in (q, pose, residuals, J))
+        q, pose, residuals, J, det = (x[by_pose] for x in (q, pose, residuals, J, det))
         starts = np.searchsorted(pose, poses, "left")
         ends = np.searchsorted(pose, poses, "right")
         parts = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
         kept = [(Q, res) for Q, res, _ in parts]
         index = np.concatenate([a + i for (_, _, i), a in zip(parts, starts)])
-    singular = _singular(J[index])
+    singular = _singular(J[index], det[index])
     left = _unexplained(root, root_pose, multiplicity, kept, singular, poses, order[2])
     answers, start = [], 0
     for j, (Q, res) in zip(poses, kept):
