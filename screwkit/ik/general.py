@@ -287,10 +287,15 @@ def _eliminate(w, r, G, shift):
         hl = G[:, :3, :3] @ w[5, :, 0, 0]
         shared = _shared_constants(w, r, shift)
         left_poly = shared.left_poly
-        # the right side's coefficients, a fixed linear map of the pose's features;
         # einsum, not a matrix product that BLAS may block by the batch's size: the
         # same round-off for a pose alone as in a batch
-        right = np.einsum("nf,fik->nik", _features(hp, hl), shared.right_map)
+        if shared.right_map is not None:  # a fixed linear map of the pose's features
+            right = np.einsum("nf,fik->nik", _features(hp, hl), shared.right_map)
+        else:
+            p = np.einsum("gij,nj->ngi", shared.R, hp) + shared.t  # (n, 9 angles, 3)
+            l = np.einsum("gij,nj->ngi", shared.R, hl)
+            values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
+            right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     else:
         r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
         w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
@@ -386,7 +391,8 @@ class _Shared(NamedTuple):
     left: np.ndarray
     left_poly: np.ndarray
     #: The right side's coefficients (14, 9) as a linear map of the pose's features
-    #: (:func:`_features`): (27, 14, 9).
+    #: (:func:`_features`): (27, 14, 9). This and the rest only for the axes of a
+    #: form that serve pose after pose (read-only, cached), else None.
     right_map: np.ndarray
     #: The rotation E2^-1 E1^-1 (9, 9 entries) in (1, c1, s1) x (1, c2, s2) of phi1,
     #: phi2.
@@ -406,6 +412,10 @@ def _shared_constants(w, r, shift):
         R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
         left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
         left_poly = left @ _TO_POLY3
+        if w.flags.writeable:  # the axes of this pose alone: no maps worth fitting
+            found = _Shared(R, t, left, left_poly, None, None, None, None)
+            left_poly.setflags(write=False)
+            return found
         _, _, u, v = _wrist_frame(w)
         turns = _rotations(w[2:5, :, 0, 0], _GRID3 + shift[2:5, None])
         # R3 R4 R5 (u, v) at the grid, fitted: (27 monomials, 3, 2)
@@ -580,7 +590,7 @@ def _candidates(w, r, G, shift, found):
     q[:, 0] = np.arctan2(s1, c1) + shift[0]
     q[:, 1] = np.arctan2(s2, c2) + shift[1]
     q[:, 2], q[:, 3], q[:, 4] = q3, q4, q5
-    if shared is not None:
+    if shared is not None and shared.turn12 is not None:
         q[:, 5] = _last_angle_shared(shared, G[pose], q[:, :2] - shift[:2], monomials)
     else:
         q[:, 5] = _last_angle(wk, rk, G[pose], q)
