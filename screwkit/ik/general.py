@@ -583,28 +583,51 @@ def _candidates(w, r, G, shift, found):
         values = monomials @ shared.left.T  # (k, 14)
     else:
         values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
-    b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
-    # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
-    c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 = b.T
+    if len(usable) == 1:  # one problem: its right side for every candidate
+        b = (values - found.C0[usable[0]]) @ found.pinv[usable[0]].T
+    else:
+        b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
+    # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order:
+    # (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
     q = np.empty((len(x3), 6))
-    q[:, 0] = np.arctan2(s1, c1) + shift[0]
-    q[:, 1] = np.arctan2(s2, c2) + shift[1]
+    q[:, :2] = np.arctan2(b[:, _SINES], b[:, _COSINES]) + shift[:2]
     q[:, 2], q[:, 3], q[:, 4] = q3, q4, q5
     if shared is not None and shared.turn12 is not None:
         q[:, 5] = _last_angle_shared(shared, G[pose], q[:, :2] - shift[:2], monomials)
     else:
         q[:, 5] = _last_angle(wk, rk, G[pose], q)
-    # (c1^2 + s1^2, c2^2 + s2^2) against 1; (c1c2, c1s2, s1c2, s1s2) against c1 c2, ...
+    return q, pose, np.where(_consistent(b), multiplicity, 0)
+
+
+def _consistent(b):
+    """Whether the right side's products b (k, 8), columns (c2, s2, c1, c1c2, c1s2,
+    s1, s1c2, s1s2), are those of two angles (IK_GENERAL_CONSISTENT_TOL): c1^2 + s1^2
+    and c2^2 + s2^2 against 1, c1c2, c1s2, s1c2, s1s2 against the products of c1,
+    s1 and c2, s2. A few candidates on floats, more as arrays (the same values)."""
+    if len(b) <= 24:
+        tol = IK_GENERAL_CONSISTENT_TOL
+        return np.array(
+            [
+                abs(c1 * c1 + s1 * s1 - 1) <= tol  # a NaN fails, as in the arrays
+                and abs(c2 * c2 + s2 * s2 - 1) <= tol
+                and abs(c1c2 - c1 * c2) <= tol
+                and abs(c1s2 - c1 * s2) <= tol
+                and abs(s1c2 - s1 * c2) <= tol
+                and abs(s1s2 - s1 * s2) <= tol
+                for c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 in b.tolist()
+            ],
+            bool,
+        )
     norms = b[:, _SQUARES].reshape(-1, 2, 2) ** 2
     gaps = np.abs(norms.sum(axis=2) - 1).max(axis=1)
     products = np.abs(b[:, _PRODUCTS] - b[:, _FACTORS_1] * b[:, _FACTORS_2])
-    consistent = np.maximum(gaps, products.max(axis=1)) <= IK_GENERAL_CONSISTENT_TOL
-    return q, pose, np.where(consistent, multiplicity, 0)
+    return np.maximum(gaps, products.max(axis=1)) <= IK_GENERAL_CONSISTENT_TOL
 
 
 #: b's columns (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2): (c1, s1, c2, s2), and the
 #: products with their factors.
 _SQUARES = np.array([2, 5, 0, 1])
+_SINES, _COSINES = np.array([5, 1]), np.array([2, 0])
 _PRODUCTS, _FACTORS_1, _FACTORS_2 = np.array([[3, 4, 6, 7], [2, 2, 5, 5], [0, 1, 0, 1]])
 
 #: A fixed right side for one step of inverse iteration (:func:`_null_vectors`).
