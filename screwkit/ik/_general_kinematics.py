@@ -99,7 +99,7 @@ def poe(w, r, home, q):
     prefix = np.empty_like(E)  # E1 ... E(i-1), the motion before joint i
     prefix[:, 0] = _EYE4
     for i in range(1, 6):
-        prefix[:, i] = prefix[:, i - 1] @ E[:, i - 1]
+        np.matmul(prefix[:, i - 1], E[:, i - 1], out=prefix[:, i])
     T = prefix[:, 5] @ E[:, 5] @ home
     # the axes at q: rows (w, r) of each joint's column, and (r x w) written out
     moved = (prefix[..., :3, :] @ lines).swapaxes(2, 3)  # (k, 6, 2, 3)
@@ -107,9 +107,9 @@ def poe(w, r, home, q):
     Jt = J.swapaxes(1, 2)  # (k, joint, row), a view
     Jt[..., :3] = ws = moved[:, :, 0]
     rs = moved[:, :, 1]
-    Jt[..., 3] = rs[..., 1] * ws[..., 2] - rs[..., 2] * ws[..., 1]
-    Jt[..., 4] = rs[..., 2] * ws[..., 0] - rs[..., 0] * ws[..., 2]
-    Jt[..., 5] = rs[..., 0] * ws[..., 1] - rs[..., 1] * ws[..., 0]
+    np.subtract(
+        rs[..., _NEXT] * ws[..., _AFTER], rs[..., _AFTER] * ws[..., _NEXT], out=Jt[..., 3:]
+    )
     return T[:, :3, :3], T[:, :3, 3], J
 
 
@@ -232,9 +232,17 @@ def residuals(chain, T, q, scale):
     else:
         top = chain.fk(q)[:, :3]
     # the squared differences weighted: rotation entries by 1/2, position by 1/scale^2
+    return np.sqrt(((top - T[:, :3]) ** 2 * _weights(scale)).sum(axis=(1, 2)))
+
+
+@functools.lru_cache(maxsize=64)
+def _weights(scale):
+    """The weights (3, 4) of :func:`residuals`' squared differences: 1/2 for the
+    rotation's entries, 1/scale^2 for the position's (read-only)."""
     weights = np.full((3, 4), 0.5)
     weights[:, 3] = 1 / scale**2
-    return np.sqrt(((top - T[:, :3]) ** 2 * weights).sum(axis=(1, 2)))
+    weights.setflags(write=False)
+    return weights
 
 
 def singular(J, det=None):

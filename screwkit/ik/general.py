@@ -336,12 +336,18 @@ def _eliminate(w, r, G, shift):
     quality = np.where(
         usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
     )
-    M = M[usable]
+    if not usable.all():
+        M = M[usable]
     solved = np.linalg.solve(M[:, 2], np.concatenate([M[:, 0], M[:, 1]], axis=2))
     A = np.zeros((len(M), 24, 24))
-    A[:, :12, 12:] = np.eye(12)
-    A[:, 12:] = -solved
+    A[:, :12, 12:] = _EYE12
+    np.negative(solved, out=A[:, 12:])
     return _Eliminated(A, M, C0, pinv, usable, reason, quality)
+
+
+#: The identity the companion matrices hold.
+_EYE12 = np.eye(12)
+_EYE12.setflags(write=False)
 
 
 @functools.lru_cache(maxsize=64)
