@@ -34,6 +34,66 @@ NEWTON_STEPS = 6
 SCALAR_RESIDUALS = 48
 
 
+# ---- LAPACK without the public functions' checks -------------------------------------
+#
+# np.linalg's solve, eigvals and det check and convert their arguments in Python, about
+# 5 to 20 us a call, more than the LAPACK work on the solver's small float64 arrays of
+# one pose. The three below call the same gufuncs (the same results) on arrays known to
+# be float64 stacks of square matrices, with the same floating-point error handling;
+# where NumPy has no such module, the public functions.
+
+try:
+    from numpy.linalg import _umath_linalg as _gufuncs
+except ImportError:  # pragma: no cover - every NumPy screwkit supports has it
+    _gufuncs = None
+
+
+def _singular_matrix(error, flag):
+    raise np.linalg.LinAlgError("Singular matrix")
+
+
+def _no_convergence(error, flag):
+    raise np.linalg.LinAlgError("Eigenvalues did not converge")
+
+
+def lapack_solve(a, b):
+    """np.linalg.solve(a, b) of float64 matrices a (..., n, n) and b (..., n, m)
+    (LinAlgError for a singular a)."""
+    if _gufuncs is None:  # pragma: no cover
+        return np.linalg.solve(a, b)
+    with np.errstate(
+        call=_singular_matrix,
+        invalid="call",
+        over="ignore",
+        divide="ignore",
+        under="ignore",
+    ):
+        return _gufuncs.solve(a, b, signature="dd->d")
+
+
+def lapack_eigvals(a):
+    """The eigenvalues (..., n), complex, of float64 matrices a (..., n, n) with
+    finite entries, as np.linalg.eigvals gives them (LinAlgError where they do not
+    converge)."""
+    if _gufuncs is None:  # pragma: no cover
+        return np.linalg.eigvals(a).astype(complex)
+    with np.errstate(
+        call=_no_convergence,
+        invalid="call",
+        over="ignore",
+        divide="ignore",
+        under="ignore",
+    ):
+        return _gufuncs.eigvals(a, signature="d->D")
+
+
+def lapack_det(a):
+    """np.linalg.det of float64 matrices a (..., n, n)."""
+    if _gufuncs is None:  # pragma: no cover
+        return np.linalg.det(a)
+    return _gufuncs.det(a, signature="d->d")
+
+
 #: by_identity's store: (the arrays, the value) by the arrays' ids and a key.
 _BY_IDENTITY = {}
 _BY_IDENTITY_SIZE = 256
@@ -108,7 +168,9 @@ def poe(w, r, home, q):
     Jt[..., :3] = ws = moved[:, :, 0]
     rs = moved[:, :, 1]
     np.subtract(
-        rs[..., _NEXT] * ws[..., _AFTER], rs[..., _AFTER] * ws[..., _NEXT], out=Jt[..., 3:]
+        rs[..., _NEXT] * ws[..., _AFTER],
+        rs[..., _AFTER] * ws[..., _NEXT],
+        out=Jt[..., 3:],
     )
     return T[:, :3, :3], T[:, :3, 3], J
 
@@ -142,14 +204,14 @@ def newton_step(J, e, det=None):
     is well conditioned (IK_GENERAL_HADAMARD_TOL; the pseudo-inverse's step there,
     up to round-off), the pseudo-inverse's minimum-norm step where J is nearly
     singular (a solution on a continuum, where the two differ)."""
-    det = np.linalg.det(J) if det is None else det
+    det = lapack_det(J) if det is None else det
     ratio = np.abs(det) / np.sqrt((J * J).sum(axis=1).prod(axis=1))
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
     if not near.any():  # the usual case: every J well conditioned
-        return np.linalg.solve(J, e[:, :, None])[..., 0]
+        return lapack_solve(J, e[:, :, None])[..., 0]
     dq = np.empty(e.shape)
     if not near.all():
-        dq[~near] = np.linalg.solve(J[~near], e[~near, :, None])[..., 0]
+        dq[~near] = lapack_solve(J[~near], e[~near, :, None])[..., 0]
     dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
     return dq
 
@@ -172,7 +234,7 @@ def polish(w, r, home, targets, q, measure):
     elsewhere it is computed again at the polished q."""
     q = q.copy()
     e, J = error(w, r, home, targets, q)
-    det = np.linalg.det(J)
+    det = lapack_det(J)
     moving = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
     moved = np.zeros(len(q))  # each row's largest joint step since its Jacobian
     if moving.all():
@@ -192,7 +254,7 @@ def polish(w, r, home, targets, q, measure):
             break
         e, J_active = error(w, r, home, targets[active], q[active])
         J[active], moved[active] = J_active, 0.0
-        det[active] = det_active = np.linalg.det(J_active)
+        det[active] = det_active = lapack_det(J_active)
         going = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
         active, e, J_active = active[going], e[going], J_active[going]
         if len(active):
@@ -208,7 +270,7 @@ def polish(w, r, home, targets, q, measure):
         stale &= ~keep
         if stale.any():
             J[stale] = J_stale = poe(w, r, home, q[stale])[2]
-            det[stale] = np.linalg.det(J_stale)
+            det[stale] = lapack_det(J_stale)
     return q, J, found, det
 
 
@@ -216,7 +278,7 @@ def _hadamard(J, det=None):
     """|det J| / |J|_F^6 (k,) of Jacobians J (k, 6, 6) (their determinants ``det``
     (k,) if known): a lower bound of sigma_min / sigma_max
     (sigma_min sigma_max^5 >= |det J|, |J|_F >= sigma_max)."""
-    det = np.linalg.det(J) if det is None else det
+    det = lapack_det(J) if det is None else det
     return np.abs(det) / (J * J).sum(axis=(1, 2)) ** 3
 
 

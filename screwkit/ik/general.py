@@ -99,7 +99,7 @@ from ..tolerances import (
     length_scale,
 )
 from ..transforms import _cross, _cross_last, _skew, _wrap_angle
-from ._general_kinematics import by_identity
+from ._general_kinematics import by_identity, lapack_eigvals, lapack_solve
 from ._general_kinematics import error as _error
 from ._general_kinematics import poe as _poe
 from ._general_kinematics import polish as _polish
@@ -338,7 +338,7 @@ def _eliminate(w, r, G, shift):
     )
     if not usable.all():
         M = M[usable]
-    solved = np.linalg.solve(M[:, 2], np.concatenate([M[:, 0], M[:, 1]], axis=2))
+    solved = lapack_solve(M[:, 2], np.concatenate([M[:, 0], M[:, 1]], axis=2))
     A = np.zeros((len(M), 24, 24))
     A[:, :12, 12:] = _EYE12
     np.negative(solved, out=A[:, 12:])
@@ -551,7 +551,7 @@ def _candidates(w, r, G, shift, found):
     products are those of two angles: its root is genuine, and as many solutions
     must account for it as it has consistent candidates, at most m
     (:func:`_unexplained`)."""
-    values = np.linalg.eigvals(found.A)
+    values = lapack_eigvals(found.A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
     which, column = np.nonzero(real)
@@ -651,7 +651,7 @@ def _null_vectors(M, x):
     x = x[:, None, None]
     Mx = M[..., 0, :, :] + x * (M[..., 1, :, :] + x * M[..., 2, :, :])
     try:
-        V = np.linalg.solve(Mx, _PROBE)[..., 0]
+        V = lapack_solve(Mx, _PROBE)[..., 0]
     except np.linalg.LinAlgError:  # an exactly singular M(x): those by SVD below
         V = np.full((len(Mx), 12), np.nan)
         regular = np.linalg.det(Mx) != 0
