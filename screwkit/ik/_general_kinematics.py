@@ -34,13 +34,13 @@ NEWTON_STEPS = 6
 SCALAR_RESIDUALS = 48
 
 
-# ---- LAPACK without the public functions' checks -------------------------------------
+# ---- LAPACK without the public functions' checks ------------------------------------
 #
-# np.linalg's solve, eigvals and det check and convert their arguments in Python, about
-# 5 to 20 us a call, more than the LAPACK work on the solver's small float64 arrays of
-# one pose. The three below call the same gufuncs (the same results) on arrays known to
-# be float64 stacks of square matrices, with the same floating-point error handling;
-# where NumPy has no such module, the public functions.
+# np.linalg's solve, eigvals, svd and det check and convert their arguments in Python,
+# about 5 to 20 us a call, more than the LAPACK work on the solver's small float64
+# arrays of one pose. The functions below call the same gufuncs (the same results) on
+# arrays known to be float64 stacks of matrices, with the same floating-point error
+# handling; where NumPy lacks that module (or its names), the public functions.
 
 try:
     from numpy.linalg import _umath_linalg as _gufuncs
@@ -85,6 +85,27 @@ def lapack_eigvals(a):
         under="ignore",
     ):
         return _gufuncs.eigvals(a, signature="d->D")
+
+
+def _no_svd_convergence(error, flag):
+    raise np.linalg.LinAlgError("SVD did not converge")
+
+
+def lapack_svd(a, compute_uv=True):
+    """np.linalg.svd(a, compute_uv=compute_uv) (full matrices) of float64 matrices a
+    (..., m, n): (u, s, vh), or s alone."""
+    if not hasattr(_gufuncs, "svd_f"):  # pragma: no cover - NumPy 1's names
+        return np.linalg.svd(a, compute_uv=compute_uv)
+    with np.errstate(
+        call=_no_svd_convergence,
+        invalid="call",
+        over="ignore",
+        divide="ignore",
+        under="ignore",
+    ):
+        if compute_uv:
+            return _gufuncs.svd_f(a, signature="d->ddd")
+        return _gufuncs.svd(a, signature="d->d")
 
 
 def lapack_det(a):
@@ -315,6 +336,6 @@ def singular(J, det=None):
     # tolerance, J keeps its rank and needs no SVD
     check = ~(_hadamard(J, det) > IK_GENERAL_SINGULAR_TOL)
     if check.any():
-        sigma = np.linalg.svd(J[check], compute_uv=False)
+        sigma = lapack_svd(J[check], compute_uv=False)
         flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
     return flags

@@ -99,7 +99,7 @@ from ..tolerances import (
     length_scale,
 )
 from ..transforms import _cross, _cross_last, _skew, _wrap_angle
-from ._general_kinematics import by_identity, lapack_eigvals, lapack_solve
+from ._general_kinematics import by_identity, lapack_eigvals, lapack_solve, lapack_svd
 from ._general_kinematics import error as _error
 from ._general_kinematics import poe as _poe
 from ._general_kinematics import polish as _polish
@@ -305,7 +305,7 @@ def _eliminate(w, r, G, shift):
         values = _right(w, r, hp, hl, a1, a2)
         right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
-    U, sigma, Vh = np.linalg.svd(Q)
+    U, sigma, Vh = lapack_svd(Q)
     reason = [None] * n
     usable = sigma[:, -1] > IK_GENERAL_RANK_TOL * sigma[:, 0]
     if not usable.all():
@@ -326,7 +326,7 @@ def _eliminate(w, r, G, shift):
     M[:, :, :6, :3, :] = poly
     M[:, :, 6:, 1:, :] = poly
     M = M.reshape(n, 3, 12, 12)
-    sv = np.linalg.svd(M[:, 2], compute_uv=False)
+    sv = lapack_svd(M[:, 2], compute_uv=False)
     size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
     leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
     if not leading.all():
