@@ -456,6 +456,19 @@ def _features(hp, hl):
     direction of which the right side's coefficients are a linear map: 1, hp, hl,
     hp.hp, hp.hl, hp x hl, (hp.hp) hl, (hp.hl) hp and the products hl_i hp_j."""
     n = len(hp)
+    if n == 1:  # one pose: on floats (the same operations, the same values)
+        (px, py, pz), (lx, ly, lz) = hp[0].tolist(), hl[0].tolist()
+        pp = px * px + py * py + pz * pz
+        pl = px * lx + py * ly + pz * lz
+        return np.array(
+            [
+                [1.0, px, py, pz, lx, ly, lz, pp, pl]
+                + [py * lz - pz * ly, pz * lx - px * lz, px * ly - py * lx]
+                + [pp * lx, pp * ly, pp * lz, pl * px, pl * py, pl * pz]
+                + [lx * px, lx * py, lx * pz, ly * px, ly * py, ly * pz]
+                + [lz * px, lz * py, lz * pz]
+            ]
+        )
     f = np.empty((n, 27))
     f[:, 0] = 1.0
     f[:, 1:4], f[:, 4:7] = hp, hl
@@ -1148,9 +1161,19 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     good = residuals <= IK_GENERAL_ACCEPT_TOL
     claims = np.zeros(len(phi), int) if claims is None else claims
     genuine = claims > 0
-    root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
-    q, pose, residuals = _wrap_angle(q[good]), pose[good], residuals[good]
-    J, det = J[good], det[good]
+    if genuine.all():
+        root, root_pose, multiplicity = phi[:, 2], pose, claims
+    else:
+        root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
+    if not good.all():
+        q, pose, residuals, J, det = (
+            q[good],
+            pose[good],
+            residuals[good],
+            J[good],
+            det[good],
+        )
+    q = _wrap_angle(q)
     if len(poses) == 1:
         Q, res, index = _distinct(q, residuals)
         kept = [(Q, res)]
