@@ -577,11 +577,9 @@ def _candidates(w, r, G, shift, found):
     # where repeated roots were separated)
     phi = np.empty((3, len(x3)))
     phi[0] = x3.real
-    if V.dtype.kind == "f":
-        low, high = V[:, :-1], V[:, 1:]
-        phi[1] = np.einsum("kij,kij->k", low, high) / np.einsum("kij,kij->k", low, low)
-        low, high = V[:, :, :-1], V[:, :, 1:]
-        phi[2] = np.einsum("kij,kij->k", low, high) / np.einsum("kij,kij->k", low, low)
+    if V.dtype.kind == "f":  # the four sums of products at once
+        sums = (V.reshape(-1, 12, 1) * V.reshape(-1, 1, 12)).reshape(-1, 144) @ _RATIOS
+        phi[1:] = (sums[:, :2] / sums[:, 2:]).T
     else:
         low, high = V[:, :-1].conj(), V[:, 1:]
         ratio = (low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))
@@ -649,6 +647,27 @@ _SQUARES = np.array([2, 5, 0, 1])
 _SINES, _COSINES = np.array([5, 1]), np.array([2, 0])
 _PRODUCTS, _FACTORS_1, _FACTORS_2 = np.array([[3, 4, 6, 7], [2, 2, 5, 5], [0, 1, 0, 1]])
 
+
+def _ratio_sums():
+    """The (144, 4) 0/1 matrix that sums the products v_a v_b (a, b flat indices of
+    the monomials x4^i x5^j, 3 i + j) into those of x4's and x5's least-squares
+    ratios: sum v(i, j) v(i + 1, j), sum v(i, j) v(i, j + 1), and the squares of the
+    low monomials of each (i < 3; j < 2)."""
+    R = np.zeros((12, 12, 4))
+    for i in range(4):
+        for j in range(3):
+            a = 3 * i + j
+            if i < 3:
+                R[a, a + 3, 0] = R[a, a, 2] = 1.0
+            if j < 2:
+                R[a, a + 1, 1] = R[a, a, 3] = 1.0
+    R = R.reshape(144, 4)
+    R.setflags(write=False)
+    return R
+
+
+_RATIOS = _ratio_sums()
+
 #: A fixed right side for one step of inverse iteration (:func:`_null_vectors`).
 _PROBE = np.random.default_rng(12).standard_normal((12, 1))
 
@@ -671,8 +690,9 @@ def _null_vectors(M, x):
         if regular.any():
             V[regular] = np.linalg.solve(Mx[regular], _PROBE)[..., 0]
     size = np.abs(V).sum(axis=1)
-    bad = ~((size > 0) & (size < np.inf))  # a zero vector, an overflow or a NaN
-    if bad.any():
+    # a zero vector, an overflow or a NaN
+    bad = [not 0.0 < x < np.inf for x in size.tolist()]
+    if any(bad):
         V[bad] = np.linalg.svd(Mx[bad])[2][:, -1]
     return V
 
