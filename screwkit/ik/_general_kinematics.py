@@ -258,8 +258,12 @@ def polish(w, r, home, targets, q, measure):
     det = lapack_det(J)
     moving = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
     moved = np.zeros(len(q))  # each row's largest joint step since its Jacobian
-    if moving.all():
+    if moving.all() or (moving.any() and np.isfinite(q).all()):
+        # each row's step is its own solve: every row at once (finite q: finite J),
+        # those that need none kept still
         step = newton_step(J, e, det)
+        if not moving.all():
+            step = np.where(moving[:, None], step, 0.0)
         q += step
         moved = np.abs(step).max(axis=1)
     elif moving.any():
@@ -268,7 +272,10 @@ def polish(w, r, home, targets, q, measure):
         moved[moving] = np.abs(step).max(axis=1)
     found = measure(q, slice(None))
     # candidates the first step did not bring to round-off: Newton goes on
-    active = np.nonzero(~(found <= IK_GENERAL_POLISH_TOL))[0]
+    if all(x <= IK_GENERAL_POLISH_TOL for x in found.tolist()):
+        active = np.zeros(0, int)
+    else:
+        active = np.nonzero(~(found <= IK_GENERAL_POLISH_TOL))[0]
     again = active
     for _ in range(NEWTON_STEPS - 1):
         if not len(active):
