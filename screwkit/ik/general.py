@@ -136,6 +136,7 @@ _SHIFTS = np.array(
 
 
 _RANK_REASON = "joints 1 and 2 do not enter the 14 equations independently"
+_LEADING_REASON = "the eigenvalue problem's leading matrix is singular"
 
 
 @dataclass
@@ -327,17 +328,29 @@ def _eliminate(w, r, G, shift):
     M[:, :, 6:, 1:, :] = poly
     M = M.reshape(n, 3, 12, 12)
     sv = lapack_svd(M[:, 2], compute_uv=False)
-    size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
-    leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
-    if not leading.all():
-        for k in np.nonzero(usable & ~leading)[0]:
-            reason[k] = "the eigenvalue problem's leading matrix is singular"
-    usable &= leading
-    quality = np.where(
-        usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
-    )
-    if not usable.all():
-        M = M[usable]
+    if n == 1:  # one pose: its tests on floats (the same values)
+        size = max(float(np.abs(M).max()), 1.0)
+        leading = sv[0, -1] > IK_GENERAL_LEADING_TOL * size
+        if usable[0] and not leading:
+            reason[0] = _LEADING_REASON
+        ok = bool(usable[0]) and leading
+        usable = np.array([ok])
+        rank = sigma[0, -1] / sigma[0, 0]
+        quality = np.array([min(rank, sv[0, -1] / size) if ok else 0.0])
+        if not ok:
+            M = M[:0]
+    else:
+        size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
+        leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
+        if not leading.all():
+            for k in np.nonzero(usable & ~leading)[0]:
+                reason[k] = _LEADING_REASON
+        usable &= leading
+        quality = np.where(
+            usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
+        )
+        if not usable.all():
+            M = M[usable]
     solved = lapack_solve(M[:, 2], np.concatenate([M[:, 0], M[:, 1]], axis=2))
     A = np.zeros((len(M), 24, 24))
     A[:, :12, 12:] = _EYE12
@@ -1031,6 +1044,13 @@ def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
     is singular (solutions coincide there, and a double root may stand for one)."""
     if not len(root):
         return {}
+    if len(kept) == 1 and _apart(root, multiplicity):
+        # one pose, simple roots apart: each calls for one solution at its angle
+        near = np.abs(_wrap_angle(root[:, None] - kept[0][0][:, joint])) <= (
+            IK_GENERAL_EXPLAINED_TOL
+        )
+        if near.any(axis=1).all():
+            return {}
     same = (root_pose[:, None] == root_pose) & (
         np.abs(_wrap_angle(root[:, None] - root)) <= IK_GENERAL_EXPLAINED_TOL
     )
@@ -1061,6 +1081,18 @@ def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
         int(j): np.unique(np.round(_wrap_angle(root[left & (root_pose == j)]), 4))
         for j in np.unique(root_pose[left])
     }
+
+
+def _apart(root, multiplicity):
+    """Whether the roots (k,) (rad) of one pose are simple (``multiplicity`` (k,)
+    all 1) and no two within 2 IK_GENERAL_EXPLAINED_TOL of each other (modulo a
+    turn; on floats): each then calls for one solution of its own."""
+    if any(m != 1 for m in multiplicity.tolist()):
+        return False
+    angles = sorted(root.tolist())
+    gaps = [b - a for a, b in zip(angles, angles[1:])]
+    gaps.append(angles[0] + 2 * np.pi - angles[-1])  # round the turn
+    return len(angles) == 1 or min(gaps) > 2 * IK_GENERAL_EXPLAINED_TOL
 
 
 def _distinct(Q, residuals):
