@@ -248,7 +248,7 @@ def polish(w, r, home, targets, q, measure):
     more (a residual above IK_GENERAL_POLISH_TOL; from a simple root, none), so
     that the usual candidate costs one error and Jacobian. Returns the polished q
     (k, 6), the space Jacobians (k, 6, 6) for the singular flags, the residuals
-    (k,) and the Jacobians' determinants (k,). A Jacobian
+    (k,) and the Jacobians' Hadamard ratios (k,) (:func:`_hadamard`). A Jacobian
     is the one before the last step where that step moved no joint by more than
     IK_GENERAL_KEEP_STEP and the Jacobian is far from singular (its Hadamard bound
     above IK_GENERAL_KEEP_BOUND; :func:`singular`): the step cannot change its flag;
@@ -291,15 +291,16 @@ def polish(w, r, home, targets, q, measure):
             moved[active] = np.abs(step).max(axis=1)
     if len(again):
         found[again] = measure(q[again], again)
-    stale = moved > 0
-    if stale.any():
-        bound = np.abs(det) / (J * J).sum(axis=(1, 2)) ** 3  # _hadamard(J)
-        keep = (moved <= IK_GENERAL_KEEP_STEP) & (bound > IK_GENERAL_KEEP_BOUND)
-        stale &= ~keep
-        if stale.any():
-            J[stale] = J_stale = poe(w, r, home, q[stale])[2]
-            det[stale] = lapack_det(J_stale)
-    return q, J, found, det
+    bound = _hadamard(J, det)
+    stale = [
+        i
+        for i, (step, b) in enumerate(zip(moved.tolist(), bound.tolist()))
+        if step > 0 and not (step <= IK_GENERAL_KEEP_STEP and b > IK_GENERAL_KEEP_BOUND)
+    ]
+    if stale:
+        J[stale] = J_stale = poe(w, r, home, q[stale])[2]
+        bound[stale] = _hadamard(J_stale)
+    return q, J, found, bound
 
 
 def _hadamard(J, det=None):
@@ -335,13 +336,16 @@ def _weights(scale):
     return weights
 
 
-def singular(J, det=None):
-    """Whether each Jacobian J (k, 6, 6) (its determinant ``det`` (k,) if known)
-    loses rank (IK_GENERAL_SINGULAR_TOL)."""
+def singular(J, bound=None):
+    """Whether each Jacobian J (k, 6, 6) (its :func:`_hadamard` ratio ``bound``
+    (k,) if known) loses rank (IK_GENERAL_SINGULAR_TOL)."""
     flags = np.zeros(len(J), bool)
     # sigma_min / sigma_max >= |det J| / |J|_F^6: where that bound clears the
     # tolerance, J keeps its rank and needs no SVD
-    check = ~(_hadamard(J, det) > IK_GENERAL_SINGULAR_TOL)
+    bound = _hadamard(J) if bound is None else bound
+    if all(b > IK_GENERAL_SINGULAR_TOL for b in bound.tolist()):
+        return flags
+    check = ~(bound > IK_GENERAL_SINGULAR_TOL)
     if check.any():
         sigma = lapack_svd(J[check], compute_uv=False)
         flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]

@@ -1209,7 +1209,7 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     def measure(q, rows):
         return _residuals(chain, targets[rows], q, arm.scale)
 
-    q, J, residuals, det = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
+    q, J, residuals, bound = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
     good = residuals <= IK_GENERAL_ACCEPT_TOL
     claims = np.zeros(len(phi), int) if claims is None else claims
     genuine = claims > 0
@@ -1218,12 +1218,12 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     else:
         root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
     if not good.all():
-        q, pose, residuals, J, det = (
+        q, pose, residuals, J, bound = (
             q[good],
             pose[good],
             residuals[good],
             J[good],
-            det[good],
+            bound[good],
         )
     q = _wrap_angle(q)
     if len(poses) == 1:
@@ -1231,13 +1231,15 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
         kept = [(Q, res)]
     else:
         by_pose = np.argsort(pose, kind="stable")
-        q, pose, residuals, J, det = (x[by_pose] for x in (q, pose, residuals, J, det))
+        q, pose, residuals, J, bound = (
+            x[by_pose] for x in (q, pose, residuals, J, bound)
+        )
         starts = np.searchsorted(pose, poses, "left")
         ends = np.searchsorted(pose, poses, "right")
         parts = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
         kept = [(Q, res) for Q, res, _ in parts]
         index = np.concatenate([a + i for (_, _, i), a in zip(parts, starts)])
-    singular = _singular(J[index], det[index])
+    singular = _singular(J[index], bound[index])
     left = _unexplained(root, root_pose, multiplicity, kept, singular, poses, order[2])
     answers, start = [], 0
     for j, (Q, res) in zip(poses, kept):
