@@ -477,11 +477,11 @@ def test_a_repeated_root_short_of_one_solution_makes_the_answer_say_so(monkeypat
     original = general._polish
 
     def losing_q(*args):
-        polished, jacobians, residuals = original(*args)
+        polished, jacobians, residuals, bounds = original(*args)
         lost = np.max(np.abs(wrap(polished - q)), axis=1) < 1e-6
         polished[lost, 0] += 0.3  # every candidate that reached q now misses T
         residuals[lost] = 1.0
-        return polished, jacobians, residuals
+        return polished, jacobians, residuals, bounds
 
     monkeypatch.setattr(general, "_polish", losing_q)
     general._LAST_FORM.clear()
