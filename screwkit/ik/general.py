@@ -578,10 +578,18 @@ def _candidates(w, r, G, shift, found):
     must account for it as it has consistent candidates, at most m
     (:func:`_unexplained`)."""
     values = lapack_eigvals(found.A)
-    real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
-    which, column = np.nonzero(real)
-    x3 = values[which, column]
+    if len(values) == 1:  # one problem: its real eigenvalues on floats
+        column = [
+            i
+            for i, x in enumerate(values[0].tolist())
+            if abs(x.imag) <= IK_GENERAL_REAL_TOL * (1 + abs(x))
+        ]
+        which, x3 = np.zeros(len(column), int), values[0, column]
+    else:
+        real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
+        which, column = np.nonzero(real)
+        x3 = values[which, column]
     V = _null_vectors(found.M[0] if len(found.M) == 1 else found.M[which], x3.real)
     x3, V, which, multiplicity = _with_repeated_roots(found.M, x3, V, which)
     pose = usable[which]
@@ -1098,18 +1106,20 @@ def _apart(root, multiplicity):
 def _distinct(Q, residuals):
     """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
     lexicographically, their residuals and their rows in Q."""
-    order = np.argsort(residuals, kind="stable")
-    Q, residuals = Q[order], residuals[order]
     same = np.abs(_wrap_angle(Q[:, None] - Q[None])).max(axis=2) <= (
         IK_GENERAL_SAME_TOL
     )
-    if same.sum() > len(Q):  # a pair besides the diagonal
-        keep = []
-        for i in range(len(Q)):
-            if not any(same[i, j] for j in keep):
-                keep.append(i)
-        Q, residuals, order = Q[keep], residuals[keep], order[keep]
-    index = order
+    if same.sum() == len(Q):  # the diagonal alone: all distinct
+        order = np.lexsort(Q.T[::-1])
+        return Q[order], residuals[order], order
+    # a pair besides the diagonal: the better of each kept, in order of residual
+    order = np.argsort(residuals, kind="stable")
+    Q, residuals, same = Q[order], residuals[order], same[np.ix_(order, order)]
+    keep = []
+    for i in range(len(Q)):
+        if not any(same[i, j] for j in keep):
+            keep.append(i)
+    Q, residuals, index = Q[keep], residuals[keep], order[keep]
     order = np.lexsort(Q.T[::-1])
     return Q[order], residuals[order], index[order]
 
