@@ -622,7 +622,8 @@ def _candidates(w, r, G, shift, found):
     else:
         values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
     if len(usable) == 1:  # one problem: its right side for every candidate
-        b = (values - found.C0[usable[0]]) @ found.pinv[usable[0]].T
+        j = usable[0]
+        b = (found.pinv[j] @ (values - found.C0[j])[:, :, None])[:, :, 0]
     else:
         b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
     # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order:
