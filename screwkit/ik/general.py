@@ -609,7 +609,8 @@ def _candidates(w, r, G, shift, found):
         ratio = (low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))
         phi[2] = ratio.real
     phi = _half_angle(phi)
-    q3, q4, q5 = phi + shift[2:5, None]
+    q = np.empty((len(x3), 6))
+    q[:, 2:5] = (phi + shift[2:5, None]).T
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
     shared = _shared_constants(w, r, shift) if w.shape[2] == 1 else None
@@ -620,7 +621,8 @@ def _candidates(w, r, G, shift, found):
         monomials = monomials.reshape(-1, 27)
         values = monomials @ shared.left.T  # (k, 14)
     else:
-        values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
+        q3, q4, q5 = q[:, 2:5, None].transpose(1, 0, 2)
+        values = _left(wk, rk, q3, q4, q5)[:, :, 0].T
     if len(usable) == 1:  # one problem: its right side for every candidate
         j = usable[0]
         b = (found.pinv[j] @ (values - found.C0[j])[:, :, None])[:, :, 0]
@@ -628,11 +630,10 @@ def _candidates(w, r, G, shift, found):
         b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
     # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order:
     # (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
-    q = np.empty((len(x3), 6))
     q[:, :2] = np.arctan2(b[:, _SINES], b[:, _COSINES]) + shift[:2]
-    q[:, 2], q[:, 3], q[:, 4] = q3, q4, q5
     if shared is not None and shared.turn12 is not None:
-        q[:, 5] = _last_angle_shared(shared, G[pose], q[:, :2] - shift[:2], monomials)
+        Gk = G if len(G) == 1 else G[pose]  # one pose's G serves every candidate
+        q[:, 5] = _last_angle_shared(shared, Gk, q[:, :2] - shift[:2], monomials)
     else:
         q[:, 5] = _last_angle(wk, rk, G[pose], q)
     return q, pose, np.where(_consistent(b), multiplicity, 0)
@@ -803,13 +804,14 @@ def _last_angle_shared(shared, G, phi, monomials):
     on the pose, from its cached rotations in the angles' monomials (a
     :class:`_Shared`): with u, v normal to axis 6, E6's angle is that of
     (R3 R4 R5 (u, v)) . (R2^T R1^T G u); ``phi`` (k, 2) the form's phi1, phi2,
-    ``monomials`` (k, 27) those of phi3, phi4, phi5, G (k, 4, 4)."""
-    c, s = np.cos(phi), np.sin(phi)
-    f = np.empty((len(phi), 3, 3))  # (1, c1, s1) x (1, c2, s2)
-    f[:, 0, 0], f[:, 0, 1], f[:, 0, 2] = 1.0, c[:, 1], s[:, 1]
-    f[:, 1], f[:, 2] = c[:, :1] * f[:, 0], s[:, :1] * f[:, 0]
-    turned = (f.reshape(-1, 9) @ shared.turn12).reshape(-1, 3, 3)
-    x = turned @ (G[:, :3, :3] @ shared.u)[..., None]  # R2^T R1^T G u (k, 3, 1)
+    ``monomials`` (k, 27) those of phi3, phi4, phi5, G (k, 4, 4) or one (1, 4, 4)
+    for all."""
+    f = np.empty((len(phi), 2, 3))  # (1, cos, sin) of phi1 and phi2
+    f[:, :, 0], f[:, :, 1], f[:, :, 2] = 1.0, np.cos(phi), np.sin(phi)
+    f = (f[:, 0, :, None] * f[:, 1, None]).reshape(-1, 9)  # (1, c1, s1) x (1, c2, s2)
+    turned = (f @ shared.turn12).reshape(-1, 3, 3)
+    # R2^T R1^T G u (k, 3, 1); G (k or 1, 4, 4)
+    x = turned @ (G[:, :3, :3] @ shared.u)[..., None]
     y = (monomials @ shared.turn345).reshape(-1, 3, 2)
     cos_sin = (x * y).sum(axis=1)
     return np.arctan2(cos_sin[:, 1], cos_sin[:, 0])
