@@ -312,7 +312,10 @@ def _eliminate(w, r, G, shift):
     if not usable.all():
         for k in np.nonzero(~usable)[0]:
             reason[k] = _RANK_REASON
-    inverse = np.divide(1.0, sigma, out=np.zeros_like(sigma), where=sigma > 0)
+    if n == 1 and sigma[0, -1] > 0:  # one pose, no zero singular value
+        inverse = 1.0 / sigma
+    else:
+        inverse = np.divide(1.0, sigma, out=np.zeros_like(sigma), where=sigma > 0)
     pinv = np.swapaxes(Vh, 1, 2) @ (np.swapaxes(U[:, :, :8], 1, 2) * inverse[..., None])
     N = np.swapaxes(U[:, :, 8:], 1, 2)  # (n, 6, 14): N Q = 0
     if w.shape[2] != 1:  # joints 3 to 6 depend on the pose
