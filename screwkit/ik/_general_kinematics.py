@@ -48,12 +48,17 @@ except ImportError:  # pragma: no cover - every NumPy screwkit supports has it
     _gufuncs = None
 
 
-def _singular_matrix(error, flag):
-    raise np.linalg.LinAlgError("Singular matrix")
+def _raising(message):
+    """The floating-point error state np.linalg's functions call their gufuncs in:
+    a failure (LAPACK's, signalled as an invalid operation) raises LinAlgError
+    with ``message``; overflow, division and underflow pass."""
 
+    def fail(error, flag):
+        raise np.linalg.LinAlgError(message)
 
-def _no_convergence(error, flag):
-    raise np.linalg.LinAlgError("Eigenvalues did not converge")
+    return np.errstate(
+        call=fail, invalid="call", over="ignore", divide="ignore", under="ignore"
+    )
 
 
 def lapack_solve(a, b):
@@ -61,13 +66,7 @@ def lapack_solve(a, b):
     (LinAlgError for a singular a)."""
     if _gufuncs is None:  # pragma: no cover
         return np.linalg.solve(a, b)
-    with np.errstate(
-        call=_singular_matrix,
-        invalid="call",
-        over="ignore",
-        divide="ignore",
-        under="ignore",
-    ):
+    with _raising("Singular matrix"):
         return _gufuncs.solve(a, b, signature="dd->d")
 
 
@@ -77,18 +76,8 @@ def lapack_eigvals(a):
     converge)."""
     if _gufuncs is None:  # pragma: no cover
         return np.linalg.eigvals(a).astype(complex)
-    with np.errstate(
-        call=_no_convergence,
-        invalid="call",
-        over="ignore",
-        divide="ignore",
-        under="ignore",
-    ):
+    with _raising("Eigenvalues did not converge"):
         return _gufuncs.eigvals(a, signature="d->D")
-
-
-def _no_svd_convergence(error, flag):
-    raise np.linalg.LinAlgError("SVD did not converge")
 
 
 def lapack_svd(a, compute_uv=True):
@@ -96,13 +85,7 @@ def lapack_svd(a, compute_uv=True):
     (..., m, n): (u, s, vh), or s alone."""
     if not hasattr(_gufuncs, "svd_f"):  # pragma: no cover - NumPy 1's names
         return np.linalg.svd(a, compute_uv=compute_uv)
-    with np.errstate(
-        call=_no_svd_convergence,
-        invalid="call",
-        over="ignore",
-        divide="ignore",
-        under="ignore",
-    ):
+    with _raising("SVD did not converge"):
         if compute_uv:
             return _gufuncs.svd_f(a, signature="d->ddd")
         return _gufuncs.svd(a, signature="d->d")
