@@ -581,18 +581,10 @@ def _candidates(w, r, G, shift, found):
     must account for it as it has consistent candidates, at most m
     (:func:`_unexplained`)."""
     values = lapack_eigvals(found.A)
+    real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
-    if len(values) == 1:  # one problem: its real eigenvalues on floats
-        column = [
-            i
-            for i, x in enumerate(values[0].tolist())
-            if abs(x.imag) <= IK_GENERAL_REAL_TOL * (1 + abs(x))
-        ]
-        which, x3 = np.zeros(len(column), int), values[0, column]
-    else:
-        real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
-        which, column = np.nonzero(real)
-        x3 = values[which, column]
+    which, column = np.nonzero(real)
+    x3 = values[which, column]
     V = _null_vectors(found.M[0] if len(found.M) == 1 else found.M[which], x3.real)
     x3, V, which, multiplicity = _with_repeated_roots(found.M, x3, V, which)
     pose = usable[which]
