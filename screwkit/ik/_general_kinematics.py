@@ -210,9 +210,9 @@ def newton_step(J, e, det=None):
     singular (a solution on a continuum, where the two differ)."""
     det = lapack_det(J) if det is None else det
     ratio = np.abs(det) / np.sqrt((J * J).sum(axis=1).prod(axis=1))
+    if all(x > IK_GENERAL_HADAMARD_TOL for x in ratio.tolist()):
+        return lapack_solve(J, e[:, :, None])[..., 0]  # every J well conditioned
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
-    if not near.any():  # the usual case: every J well conditioned
-        return lapack_solve(J, e[:, :, None])[..., 0]
     dq = np.empty(e.shape)
     if not near.all():
         dq[~near] = lapack_solve(J[~near], e[~near, :, None])[..., 0]
@@ -239,17 +239,18 @@ def polish(w, r, home, targets, q, measure):
     q = q.copy()
     e, J = error(w, r, home, targets, q)
     det = lapack_det(J)
-    moving = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
+    flags = [x > IK_GENERAL_POLISH_TOL for x in np.sqrt((e * e).sum(axis=1)).tolist()]
+    moving, every, some = np.array(flags, bool), all(flags), any(flags)
     moved = np.zeros(len(q))  # each row's largest joint step since its Jacobian
-    if moving.all() or (moving.any() and np.isfinite(q).all()):
+    if every or (some and np.isfinite(q).all()):
         # each row's step is its own solve: every row at once (finite q: finite J),
         # those that need none kept still
         step = newton_step(J, e, det)
-        if not moving.all():
+        if not every:
             step = np.where(moving[:, None], step, 0.0)
         q += step
         moved = np.abs(step).max(axis=1)
-    elif moving.any():
+    elif some:
         step = newton_step(J[moving], e[moving], det[moving])
         q[moving] += step
         moved[moving] = np.abs(step).max(axis=1)
