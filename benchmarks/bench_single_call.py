@@ -43,10 +43,10 @@ GOALS = {"fk": 10e-6, "J": 10e-6, "dJ": 25e-6, "ik": 150e-6, "ik general": 1e-3}
 #: Earlier figures of a row (s): (first, steady, when), printed beside this run's.
 PREVIOUS = {
     "general 6R IK, one pose": (
-        43456.7e-6,
-        4197.4e-6,
-        "main at df7adeb, 2026-12-07 12:52 UTC, load average 0.7, the one-pose speed-"
-        "ups reverted; 1633.9 us with them back (0b3d083, 12:47 UTC, load 2.8)",
+        24030.5e-6,
+        1188.8e-6,
+        "main at 5203555, 2026-12-07 13:26 UTC, load average 0.8 to 0.9, the best of "
+        "6 runs beside this one's; 4197.4 us before the one-pose speed-ups (df7adeb)",
     ),
 }
 

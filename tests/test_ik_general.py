@@ -477,11 +477,11 @@ def test_a_repeated_root_short_of_one_solution_makes_the_answer_say_so(monkeypat
     original = general._polish
 
     def losing_q(*args):
-        polished, jacobians, residuals = original(*args)
+        polished, jacobians, residuals, bounds = original(*args)
         lost = np.max(np.abs(wrap(polished - q)), axis=1) < 1e-6
         polished[lost, 0] += 0.3  # every candidate that reached q now misses T
         residuals[lost] = 1.0
-        return polished, jacobians, residuals
+        return polished, jacobians, residuals, bounds
 
     monkeypatch.setattr(general, "_polish", losing_q)
     general._LAST_FORM.clear()
@@ -615,3 +615,32 @@ def test_null_vectors_of_an_exactly_singular_matrix_polynomial():
     M[0, 0, 0] = 1e-14
     u = _null_vectors(M, np.array([0.0]))[0]
     assert abs(abs(u[0]) / np.linalg.norm(u) - 1) < 1e-12
+
+
+def test_the_lapack_calls_give_numpys_public_results_and_errors():
+    # the solver calls NumPy's LAPACK gufuncs without np.linalg's checks: the same
+    # values as the public functions, and LinAlgError where those raise it
+    from screwkit.ik._general_kinematics import (
+        lapack_det,
+        lapack_eigvals,
+        lapack_solve,
+        lapack_svd,
+    )
+
+    rng = np.random.default_rng(8)
+    A, B = rng.standard_normal((3, 12, 12)), rng.standard_normal((3, 12, 24))
+    np.testing.assert_array_equal(lapack_solve(A, B), np.linalg.solve(A, B))
+    np.testing.assert_array_equal(lapack_det(A), np.linalg.det(A))
+    np.testing.assert_array_equal(lapack_eigvals(A), np.linalg.eigvals(A))
+    Q = rng.standard_normal((2, 14, 8))
+    for mine, public in zip(lapack_svd(Q), np.linalg.svd(Q)):
+        np.testing.assert_array_equal(mine, public)
+    np.testing.assert_array_equal(
+        lapack_svd(A, compute_uv=False), np.linalg.svd(A, compute_uv=False)
+    )
+    # real eigenvalues come back complex (zero imaginary parts), as the solver reads
+    diagonal = np.diag([1.0, 2.0, 3.0])[None]
+    assert lapack_eigvals(diagonal).dtype == complex
+    np.testing.assert_array_equal(np.sort(lapack_eigvals(diagonal).real), [[1, 2, 3]])
+    with pytest.raises(np.linalg.LinAlgError, match="Singular matrix"):
+        lapack_solve(np.zeros((1, 3, 3)), np.ones((1, 3, 1)))

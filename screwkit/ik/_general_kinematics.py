@@ -34,6 +34,70 @@ NEWTON_STEPS = 6
 SCALAR_RESIDUALS = 48
 
 
+# ---- LAPACK without the public functions' checks ------------------------------------
+#
+# np.linalg's solve, eigvals, svd and det check and convert their arguments in Python,
+# about 5 to 20 us a call, more than the LAPACK work on the solver's small float64
+# arrays of one pose. The functions below call the same gufuncs (the same results) on
+# arrays known to be float64 stacks of matrices, with the same floating-point error
+# handling; where NumPy lacks that module (or its names), the public functions.
+
+try:
+    from numpy.linalg import _umath_linalg as _gufuncs
+except ImportError:  # pragma: no cover - every NumPy screwkit supports has it
+    _gufuncs = None
+
+
+def _raising(message):
+    """The floating-point error state np.linalg's functions call their gufuncs in:
+    a failure (LAPACK's, signalled as an invalid operation) raises LinAlgError
+    with ``message``; overflow, division and underflow pass."""
+
+    def fail(error, flag):
+        raise np.linalg.LinAlgError(message)
+
+    return np.errstate(
+        call=fail, invalid="call", over="ignore", divide="ignore", under="ignore"
+    )
+
+
+def lapack_solve(a, b):
+    """np.linalg.solve(a, b) of float64 matrices a (..., n, n) and b (..., n, m)
+    (LinAlgError for a singular a)."""
+    if _gufuncs is None:  # pragma: no cover
+        return np.linalg.solve(a, b)
+    with _raising("Singular matrix"):
+        return _gufuncs.solve(a, b, signature="dd->d")
+
+
+def lapack_eigvals(a):
+    """The eigenvalues (..., n), complex, of float64 matrices a (..., n, n) with
+    finite entries, as np.linalg.eigvals gives them (LinAlgError where they do not
+    converge)."""
+    if _gufuncs is None:  # pragma: no cover
+        return np.linalg.eigvals(a).astype(complex)
+    with _raising("Eigenvalues did not converge"):
+        return _gufuncs.eigvals(a, signature="d->D")
+
+
+def lapack_svd(a, compute_uv=True):
+    """np.linalg.svd(a, compute_uv=compute_uv) (full matrices) of float64 matrices a
+    (..., m, n): (u, s, vh), or s alone."""
+    if not hasattr(_gufuncs, "svd_f"):  # pragma: no cover - NumPy 1's names
+        return np.linalg.svd(a, compute_uv=compute_uv)
+    with _raising("SVD did not converge"):
+        if compute_uv:
+            return _gufuncs.svd_f(a, signature="d->ddd")
+        return _gufuncs.svd(a, signature="d->d")
+
+
+def lapack_det(a):
+    """np.linalg.det of float64 matrices a (..., n, n)."""
+    if _gufuncs is None:  # pragma: no cover
+        return np.linalg.det(a)
+    return _gufuncs.det(a, signature="d->d")
+
+
 #: by_identity's store: (the arrays, the value) by the arrays' ids and a key.
 _BY_IDENTITY = {}
 _BY_IDENTITY_SIZE = 256
@@ -99,7 +163,7 @@ def poe(w, r, home, q):
     prefix = np.empty_like(E)  # E1 ... E(i-1), the motion before joint i
     prefix[:, 0] = _EYE4
     for i in range(1, 6):
-        prefix[:, i] = prefix[:, i - 1] @ E[:, i - 1]
+        np.matmul(prefix[:, i - 1], E[:, i - 1], out=prefix[:, i])
     T = prefix[:, 5] @ E[:, 5] @ home
     # the axes at q: rows (w, r) of each joint's column, and (r x w) written out
     moved = (prefix[..., :3, :] @ lines).swapaxes(2, 3)  # (k, 6, 2, 3)
@@ -107,9 +171,11 @@ def poe(w, r, home, q):
     Jt = J.swapaxes(1, 2)  # (k, joint, row), a view
     Jt[..., :3] = ws = moved[:, :, 0]
     rs = moved[:, :, 1]
-    Jt[..., 3] = rs[..., 1] * ws[..., 2] - rs[..., 2] * ws[..., 1]
-    Jt[..., 4] = rs[..., 2] * ws[..., 0] - rs[..., 0] * ws[..., 2]
-    Jt[..., 5] = rs[..., 0] * ws[..., 1] - rs[..., 1] * ws[..., 0]
+    np.subtract(
+        rs[..., _NEXT] * ws[..., _AFTER],
+        rs[..., _AFTER] * ws[..., _NEXT],
+        out=Jt[..., 3:],
+    )
     return T[:, :3, :3], T[:, :3, 3], J
 
 
@@ -142,14 +208,14 @@ def newton_step(J, e, det=None):
     is well conditioned (IK_GENERAL_HADAMARD_TOL; the pseudo-inverse's step there,
     up to round-off), the pseudo-inverse's minimum-norm step where J is nearly
     singular (a solution on a continuum, where the two differ)."""
-    det = np.linalg.det(J) if det is None else det
+    det = lapack_det(J) if det is None else det
     ratio = np.abs(det) / np.sqrt((J * J).sum(axis=1).prod(axis=1))
+    if all(x > IK_GENERAL_HADAMARD_TOL for x in ratio.tolist()):
+        return lapack_solve(J, e[:, :, None])[..., 0]  # every J well conditioned
     near = ~(ratio > IK_GENERAL_HADAMARD_TOL)  # a NaN too
-    if not near.any():  # the usual case: every J well conditioned
-        return np.linalg.solve(J, e[:, :, None])[..., 0]
     dq = np.empty(e.shape)
     if not near.all():
-        dq[~near] = np.linalg.solve(J[~near], e[~near, :, None])[..., 0]
+        dq[~near] = lapack_solve(J[~near], e[~near, :, None])[..., 0]
     dq[near] = (np.linalg.pinv(J[near]) @ e[near, :, None])[..., 0]
     return dq
 
@@ -164,35 +230,43 @@ def polish(w, r, home, targets, q, measure):
     (:func:`residuals`): after the first step it decides which candidates need
     more (a residual above IK_GENERAL_POLISH_TOL; from a simple root, none), so
     that the usual candidate costs one error and Jacobian. Returns the polished q
-    (k, 6), the space Jacobians (k, 6, 6) for the singular flags and the residuals
-    (k,). A Jacobian
+    (k, 6), the space Jacobians (k, 6, 6) for the singular flags, the residuals
+    (k,) and the Jacobians' Hadamard ratios (k,) (:func:`_hadamard`). A Jacobian
     is the one before the last step where that step moved no joint by more than
     IK_GENERAL_KEEP_STEP and the Jacobian is far from singular (its Hadamard bound
     above IK_GENERAL_KEEP_BOUND; :func:`singular`): the step cannot change its flag;
     elsewhere it is computed again at the polished q."""
     q = q.copy()
     e, J = error(w, r, home, targets, q)
-    det = np.linalg.det(J)
-    moving = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
+    det = lapack_det(J)
+    flags = [x > IK_GENERAL_POLISH_TOL for x in np.sqrt((e * e).sum(axis=1)).tolist()]
+    moving, every, some = np.array(flags, bool), all(flags), any(flags)
     moved = np.zeros(len(q))  # each row's largest joint step since its Jacobian
-    if moving.all():
+    if every or (some and np.isfinite(q).all()):
+        # each row's step is its own solve: every row at once (finite q: finite J),
+        # those that need none kept still
         step = newton_step(J, e, det)
+        if not every:
+            step = np.where(moving[:, None], step, 0.0)
         q += step
         moved = np.abs(step).max(axis=1)
-    elif moving.any():
+    elif some:
         step = newton_step(J[moving], e[moving], det[moving])
         q[moving] += step
         moved[moving] = np.abs(step).max(axis=1)
     found = measure(q, slice(None))
     # candidates the first step did not bring to round-off: Newton goes on
-    active = np.nonzero(~(found <= IK_GENERAL_POLISH_TOL))[0]
+    if all(x <= IK_GENERAL_POLISH_TOL for x in found.tolist()):
+        active = np.zeros(0, int)
+    else:
+        active = np.nonzero(~(found <= IK_GENERAL_POLISH_TOL))[0]
     again = active
     for _ in range(NEWTON_STEPS - 1):
         if not len(active):
             break
         e, J_active = error(w, r, home, targets[active], q[active])
         J[active], moved[active] = J_active, 0.0
-        det[active] = det_active = np.linalg.det(J_active)
+        det[active] = det_active = lapack_det(J_active)
         going = np.sqrt((e * e).sum(axis=1)) > IK_GENERAL_POLISH_TOL
         active, e, J_active = active[going], e[going], J_active[going]
         if len(active):
@@ -201,20 +275,24 @@ def polish(w, r, home, targets, q, measure):
             moved[active] = np.abs(step).max(axis=1)
     if len(again):
         found[again] = measure(q[again], again)
-    stale = moved > 0
-    if stale.any():
-        bound = np.abs(det) / (J * J).sum(axis=(1, 2)) ** 3  # _hadamard(J)
-        keep = (moved <= IK_GENERAL_KEEP_STEP) & (bound > IK_GENERAL_KEEP_BOUND)
-        stale &= ~keep
-        if stale.any():
-            J[stale] = poe(w, r, home, q[stale])[2]
-    return q, J, found
+    bound = _hadamard(J, det)
+    stale = [
+        i
+        for i, (step, b) in enumerate(zip(moved.tolist(), bound.tolist()))
+        if step > 0 and not (step <= IK_GENERAL_KEEP_STEP and b > IK_GENERAL_KEEP_BOUND)
+    ]
+    if stale:
+        J[stale] = J_stale = poe(w, r, home, q[stale])[2]
+        bound[stale] = _hadamard(J_stale)
+    return q, J, found, bound
 
 
-def _hadamard(J):
-    """|det J| / |J|_F^6 (k,) of Jacobians J (k, 6, 6): a lower bound of
-    sigma_min / sigma_max (sigma_min sigma_max^5 >= |det J|, |J|_F >= sigma_max)."""
-    return np.abs(np.linalg.det(J)) / (J * J).sum(axis=(1, 2)) ** 3
+def _hadamard(J, det=None):
+    """|det J| / |J|_F^6 (k,) of Jacobians J (k, 6, 6) (their determinants ``det``
+    (k,) if known): a lower bound of sigma_min / sigma_max
+    (sigma_min sigma_max^5 >= |det J|, |J|_F >= sigma_max)."""
+    det = lapack_det(J) if det is None else det
+    return np.abs(det) / (J * J).sum(axis=(1, 2)) ** 3
 
 
 def residuals(chain, T, q, scale):
@@ -229,18 +307,30 @@ def residuals(chain, T, q, scale):
     else:
         top = chain.fk(q)[:, :3]
     # the squared differences weighted: rotation entries by 1/2, position by 1/scale^2
+    return np.sqrt(((top - T[:, :3]) ** 2 * _weights(scale)).sum(axis=(1, 2)))
+
+
+@functools.lru_cache(maxsize=64)
+def _weights(scale):
+    """The weights (3, 4) of :func:`residuals`' squared differences: 1/2 for the
+    rotation's entries, 1/scale^2 for the position's (read-only)."""
     weights = np.full((3, 4), 0.5)
     weights[:, 3] = 1 / scale**2
-    return np.sqrt(((top - T[:, :3]) ** 2 * weights).sum(axis=(1, 2)))
+    weights.setflags(write=False)
+    return weights
 
 
-def singular(J):
-    """Whether each Jacobian J (k, 6, 6) loses rank (IK_GENERAL_SINGULAR_TOL)."""
+def singular(J, bound=None):
+    """Whether each Jacobian J (k, 6, 6) (its :func:`_hadamard` ratio ``bound``
+    (k,) if known) loses rank (IK_GENERAL_SINGULAR_TOL)."""
     flags = np.zeros(len(J), bool)
     # sigma_min / sigma_max >= |det J| / |J|_F^6: where that bound clears the
     # tolerance, J keeps its rank and needs no SVD
-    check = ~(_hadamard(J) > IK_GENERAL_SINGULAR_TOL)
+    bound = _hadamard(J) if bound is None else bound
+    if all(b > IK_GENERAL_SINGULAR_TOL for b in bound.tolist()):
+        return flags
+    check = ~(bound > IK_GENERAL_SINGULAR_TOL)
     if check.any():
-        sigma = np.linalg.svd(J[check], compute_uv=False)
+        sigma = lapack_svd(J[check], compute_uv=False)
         flags[check] = sigma[:, -1] <= IK_GENERAL_SINGULAR_TOL * sigma[:, 0]
     return flags

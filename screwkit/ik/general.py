@@ -77,6 +77,7 @@ MAX_POSES poses is refused before any work.
 import functools
 import weakref
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -98,7 +99,7 @@ from ..tolerances import (
     length_scale,
 )
 from ..transforms import _cross, _cross_last, _skew, _wrap_angle
-from ._general_kinematics import by_identity
+from ._general_kinematics import by_identity, lapack_eigvals, lapack_solve, lapack_svd
 from ._general_kinematics import error as _error
 from ._general_kinematics import poe as _poe
 from ._general_kinematics import polish as _polish
@@ -135,6 +136,7 @@ _SHIFTS = np.array(
 
 
 _RANK_REASON = "joints 1 and 2 do not enter the 14 equations independently"
+_LEADING_REASON = "the eigenvalue problem's leading matrix is singular"
 
 
 @dataclass
@@ -284,12 +286,17 @@ def _eliminate(w, r, G, shift):
     if w.shape[2] == 1:  # joints 1, 2 and 6 do not depend on the pose
         hp = G[:, :3, :3] @ r[5, :, 0, 0] + G[:, :3, 3]  # (n, 3)
         hl = G[:, :3, :3] @ w[5, :, 0, 0]
-        R, t, _, left_poly = _shared_constants(w, r, shift)
+        shared = _shared_constants(w, r, shift)
+        left_poly = shared.left_poly
         # einsum, not a matrix product that BLAS may block by the batch's size: the
         # same round-off for a pose alone as in a batch
-        p = np.einsum("gij,nj->ngi", R, hp) + t  # (n, 9 angles, 3)
-        l = np.einsum("gij,nj->ngi", R, hl)
-        values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
+        if shared.right_map is not None:  # a fixed linear map of the pose's features
+            right = np.einsum("nf,fik->nik", _features(hp, hl), shared.right_map)
+        else:
+            p = np.einsum("gij,nj->ngi", shared.R, hp) + shared.t  # (n, 9 angles, 3)
+            l = np.einsum("gij,nj->ngi", shared.R, hl)
+            values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))
+            right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     else:
         r6 = np.broadcast_to(r[5, :, :, 0].T, (n, 3))
         w6 = np.broadcast_to(w[5, :, :, 0].T, (n, 3))
@@ -297,15 +304,18 @@ def _eliminate(w, r, G, shift):
         hl = np.einsum("nij,nj->in", G[:, :3, :3], w6)[..., None]
         a1, a2 = _GRID2[:, None, :] + shift[:2, None, None]
         values = _right(w, r, hp, hl, a1, a2)
-    right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
+        right = np.einsum("inj,kj->nik", values, _FIT2)  # (n, 14, 9)
     C0, Q = right[:, :, 0], right[:, :, 1:]  # (n, 14), (n, 14, 8)
-    U, sigma, Vh = np.linalg.svd(Q)
+    U, sigma, Vh = lapack_svd(Q)
     reason = [None] * n
     usable = sigma[:, -1] > IK_GENERAL_RANK_TOL * sigma[:, 0]
     if not usable.all():
         for k in np.nonzero(~usable)[0]:
             reason[k] = _RANK_REASON
-    inverse = np.divide(1.0, sigma, out=np.zeros_like(sigma), where=sigma > 0)
+    if n == 1 and sigma[0, -1] > 0:  # one pose, no zero singular value
+        inverse = 1.0 / sigma
+    else:
+        inverse = np.divide(1.0, sigma, out=np.zeros_like(sigma), where=sigma > 0)
     pinv = np.swapaxes(Vh, 1, 2) @ (np.swapaxes(U[:, :, :8], 1, 2) * inverse[..., None])
     N = np.swapaxes(U[:, :, 8:], 1, 2)  # (n, 6, 14): N Q = 0
     if w.shape[2] != 1:  # joints 3 to 6 depend on the pose
@@ -320,22 +330,40 @@ def _eliminate(w, r, G, shift):
     M[:, :, :6, :3, :] = poly
     M[:, :, 6:, 1:, :] = poly
     M = M.reshape(n, 3, 12, 12)
-    sv = np.linalg.svd(M[:, 2], compute_uv=False)
-    size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
-    leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
-    if not leading.all():
-        for k in np.nonzero(usable & ~leading)[0]:
-            reason[k] = "the eigenvalue problem's leading matrix is singular"
-    usable &= leading
-    quality = np.where(
-        usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
-    )
-    M = M[usable]
-    solved = np.linalg.solve(M[:, 2], np.concatenate([M[:, 0], M[:, 1]], axis=2))
+    sv = lapack_svd(M[:, 2], compute_uv=False)
+    if n == 1:  # one pose: its tests on floats (the same values)
+        size = max(float(np.abs(M).max()), 1.0)
+        leading = sv[0, -1] > IK_GENERAL_LEADING_TOL * size
+        if usable[0] and not leading:
+            reason[0] = _LEADING_REASON
+        ok = bool(usable[0]) and leading
+        usable = np.array([ok])
+        rank = sigma[0, -1] / sigma[0, 0]
+        quality = np.array([min(rank, sv[0, -1] / size) if ok else 0.0])
+        if not ok:
+            M = M[:0]
+    else:
+        size = np.maximum(np.abs(M).max(axis=(1, 2, 3)), 1.0)
+        leading = sv[:, -1] > IK_GENERAL_LEADING_TOL * size
+        if not leading.all():
+            for k in np.nonzero(usable & ~leading)[0]:
+                reason[k] = _LEADING_REASON
+        usable &= leading
+        quality = np.where(
+            usable, np.minimum(sigma[:, -1] / sigma[:, 0], sv[:, -1] / size), 0.0
+        )
+        if not usable.all():
+            M = M[usable]
+    solved = lapack_solve(M[:, 2], np.concatenate([M[:, 0], M[:, 1]], axis=2))
     A = np.zeros((len(M), 24, 24))
-    A[:, :12, 12:] = np.eye(12)
-    A[:, 12:] = -solved
+    A[:, :12, 12:] = _EYE12
+    np.negative(solved, out=A[:, 12:])
     return _Eliminated(A, M, C0, pinv, usable, reason, quality)
+
+
+#: The identity the companion matrices hold.
+_EYE12 = np.eye(12)
+_EYE12.setflags(write=False)
 
 
 @functools.lru_cache(maxsize=64)
@@ -374,20 +402,118 @@ def _right_motions(w, r, shift):
     )
 
 
+class _Shared(NamedTuple):
+    """The pose-independent constants of a form whose axes do not depend on the
+    pose (:func:`_shared_constants`)."""
+
+    #: The right side's motions at the grid: rotations (9, 3, 3), translations (9, 3).
+    R: np.ndarray
+    t: np.ndarray
+    #: The left side's coefficients (14, 27), and in the half-angle monomials (14, 27).
+    left: np.ndarray
+    left_poly: np.ndarray
+    #: The right side's coefficients (14, 9) as a linear map of the pose's features
+    #: (:func:`_features`): (27, 14, 9). This and the rest only for the axes of a
+    #: form that serve pose after pose (read-only, cached), else None.
+    right_map: np.ndarray
+    #: The rotation E2^-1 E1^-1 (9, 9 entries) in (1, c1, s1) x (1, c2, s2) of phi1,
+    #: phi2.
+    turn12: np.ndarray
+    #: E3 E4 E5's rotation applied to u and v (27, 6) (two unit vectors normal to
+    #: axis 6, :func:`_wrist_frame`) in (1, c3, s3) x (1, c4, s4) x (1, c5, s5).
+    turn345: np.ndarray
+    #: u (3,).
+    u: np.ndarray
+
+
 def _shared_constants(w, r, shift):
     """For the axes w, r (6, 3, 1, 1) of a form that do not depend on the pose and
-    the angle shifts (6,): the right side's motions R, t (:func:`_right_motions`),
-    the left side's coefficients (14, 27) (:func:`_left_coefficients`) and those in
-    the half-angle tangents' monomials (14, 27), kept by the axes' identity."""
+    the angle shifts (6,): a :class:`_Shared`, kept by the axes' identity."""
 
     def make():
         R, t = _right_motions(w[:2, :, 0, 0], r[:2, :, 0, 0], shift[:2].tobytes())
         left = _left_coefficients(w[2:, :, 0, 0], r[2:, :, 0, 0], shift[2:5].tobytes())
         left_poly = left @ _TO_POLY3
-        left_poly.setflags(write=False)
-        return R, t, left, left_poly
+        if w.flags.writeable:  # the axes of this pose alone: no maps worth fitting
+            found = _Shared(R, t, left, left_poly, None, None, None, None)
+            left_poly.setflags(write=False)
+            return found
+        _, _, u, v = _wrist_frame(w)
+        turns = _rotations(w[2:5, :, 0, 0], _GRID3 + shift[2:5, None])
+        # R3 R4 R5 (u, v) at the grid, fitted: (27 monomials, 3, 2)
+        moved = turns[0] @ turns[1] @ turns[2] @ np.stack([u[0], v[0]], axis=1)
+        turn345 = np.einsum("kg,gij->kij", _FIT3, moved).reshape(27, 6)
+        found = _Shared(
+            R,
+            t,
+            left,
+            left_poly,
+            _right_map(R, t),
+            np.einsum("kg,gij->kij", _FIT2, R).reshape(9, 9),
+            turn345,
+            u[0].copy(),
+        )
+        for array in found:
+            array.setflags(write=False)
+        return found
 
     return by_identity((w, r), shift.tobytes(), make)
+
+
+def _rotations(w, angles):
+    """The rotations (m, g, 3, 3) about unit axes w (m, 3) by the angles (m, g)."""
+    K = _skew(w)[:, None]
+    angle = angles[..., None, None]
+    return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * (K @ K)
+
+
+def _features(hp, hl):
+    """The 27 features (n, 27) of the images hp, hl (n, 3) of axis 6's point and
+    direction of which the right side's coefficients are a linear map: 1, hp, hl,
+    hp.hp, hp.hl, hp x hl, (hp.hp) hl, (hp.hl) hp and the products hl_i hp_j."""
+    n = len(hp)
+    if n == 1:  # one pose: on floats (the same operations, the same values)
+        (px, py, pz), (lx, ly, lz) = hp[0].tolist(), hl[0].tolist()
+        pp = px * px + py * py + pz * pz
+        pl = px * lx + py * ly + pz * lz
+        return np.array(
+            [
+                [1.0, px, py, pz, lx, ly, lz, pp, pl]
+                + [py * lz - pz * ly, pz * lx - px * lz, px * ly - py * lx]
+                + [pp * lx, pp * ly, pp * lz, pl * px, pl * py, pl * pz]
+                + [lx * px, lx * py, lx * pz, ly * px, ly * py, ly * pz]
+                + [lz * px, lz * py, lz * pz]
+            ]
+        )
+    f = np.empty((n, 27))
+    f[:, 0] = 1.0
+    f[:, 1:4], f[:, 4:7] = hp, hl
+    pp = f[:, 7] = (hp * hp).sum(axis=1)
+    pl = f[:, 8] = (hp * hl).sum(axis=1)
+    f[:, 9:12] = hp[:, _NEXT] * hl[:, _AFTER] - hp[:, _AFTER] * hl[:, _NEXT]
+    f[:, 12:15] = pp[:, None] * hl
+    f[:, 15:18] = pl[:, None] * hp
+    f[:, 18:] = (hl[:, :, None] * hp[:, None]).reshape(n, 9)
+    return f
+
+
+def _right_map(R, t):
+    """The right side's coefficients (14, 9) in (1, c1, s1) x (1, c2, s2) as a
+    linear map (27, 14, 9) of :func:`_features`, from its motions R (9, 3, 3), t
+    (9, 3) at the grid: each of the 14 quantities of p = R hp + t, l = R hl is a
+    polynomial in hp, hl whose terms are those features, so the map is found
+    exactly (to round-off) by least squares from fixed pseudo-random samples."""
+    hp, hl = _MAP_SAMPLES
+    p = np.einsum("gij,nj->ngi", R, hp) + t
+    l = np.einsum("gij,nj->ngi", R, hl)
+    values = _products(p.transpose(2, 0, 1), l.transpose(2, 0, 1))  # (14, n, 9)
+    right = np.einsum("inj,kj->nik", values, _FIT2).reshape(len(hp), -1)
+    solution = np.linalg.lstsq(_features(hp, hl), right, rcond=None)[0]
+    return solution.reshape(27, 14, 9)
+
+
+#: The samples of hp, hl (2, 64, 3) :func:`_right_map` fits the map to.
+_MAP_SAMPLES = np.random.default_rng(27).standard_normal((2, 64, 3))
 
 
 def _left_coefficients(w, r, shift):
@@ -454,7 +580,7 @@ def _candidates(w, r, G, shift, found):
     products are those of two angles: its root is genuine, and as many solutions
     must account for it as it has consistent candidates, at most m
     (:func:`_unexplained`)."""
-    values = np.linalg.eigvals(found.A)
+    values = lapack_eigvals(found.A)
     real = np.abs(values.imag) <= IK_GENERAL_REAL_TOL * (1 + np.abs(values))
     usable = np.nonzero(found.usable)[0]
     which, column = np.nonzero(real)
@@ -465,44 +591,100 @@ def _candidates(w, r, G, shift, found):
     V = V.reshape(-1, 4, 3)
     # x4 and x5 from the monomials' ratios, least squares (V is real, or complex
     # where repeated roots were separated)
-    low, high = V[:, :-1].conj(), V[:, 1:]
     phi = np.empty((3, len(x3)))
     phi[0] = x3.real
-    phi[1] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
-    low, high = V[:, :, :-1].conj(), V[:, :, 1:]
-    phi[2] = ((low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))).real
+    if V.dtype.kind == "f":  # the four sums of products at once
+        sums = (V.reshape(-1, 12, 1) * V.reshape(-1, 1, 12)).reshape(-1, 144) @ _RATIOS
+        phi[1:] = (sums[:, :2] / sums[:, 2:]).T
+    else:
+        low, high = V[:, :-1].conj(), V[:, 1:]
+        ratio = (low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))
+        phi[1] = ratio.real
+        low, high = V[:, :, :-1].conj(), V[:, :, 1:]
+        ratio = (low * high).sum(axis=(1, 2)) / (low * low.conj()).sum(axis=(1, 2))
+        phi[2] = ratio.real
     phi = _half_angle(phi)
-    q3, q4, q5 = phi + shift[2:5, None]
+    q = np.empty((len(x3), 6))
+    q[:, 2:5] = (phi + shift[2:5, None]).T
     # q1, q2: the right side's 8 products from the 14 values of the left side
     wk, rk = _pick(w, pose), _pick(r, pose)
-    if w.shape[2] == 1:  # from the cached coefficients of the left side
-        left = _shared_constants(w, r, shift)[2]
+    shared = _shared_constants(w, r, shift) if w.shape[2] == 1 else None
+    if shared is not None:  # from the cached coefficients of the left side
         f = np.empty((3, len(x3), 3))  # (1, cos, sin) of phi3, phi4, phi5, (k, 3) each
         f[:, :, 0], f[:, :, 1], f[:, :, 2] = 1.0, np.cos(phi), np.sin(phi)
         monomials = (f[0, :, :, None] * f[1, :, None]).reshape(-1, 9, 1) * f[2, :, None]
-        values = monomials.reshape(-1, 27) @ left.T  # (k, 14)
+        monomials = monomials.reshape(-1, 27)
+        values = monomials @ shared.left.T  # (k, 14)
     else:
-        values = _left(wk, rk, q3[:, None], q4[:, None], q5[:, None])[:, :, 0].T
-    b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
-    # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order
-    c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 = b.T
-    q = np.empty((len(x3), 6))
-    q[:, 0] = np.arctan2(s1, c1) + shift[0]
-    q[:, 1] = np.arctan2(s2, c2) + shift[1]
-    q[:, 2], q[:, 3], q[:, 4] = q3, q4, q5
-    q[:, 5] = _last_angle(wk, rk, G[pose], q)
-    # (c1^2 + s1^2, c2^2 + s2^2) against 1; (c1c2, c1s2, s1c2, s1s2) against c1 c2, ...
+        q3, q4, q5 = q[:, 2:5, None].transpose(1, 0, 2)
+        values = _left(wk, rk, q3, q4, q5)[:, :, 0].T
+    if len(usable) == 1:  # one problem: its right side for every candidate
+        j = usable[0]
+        b = (found.pinv[j] @ (values - found.C0[j])[:, :, None])[:, :, 0]
+    else:
+        b = (found.pinv[pose] @ (values - found.C0[pose])[:, :, None])[:, :, 0]
+    # b's columns: (1, c1, s1) x (1, c2, s2) without the first, in that order:
+    # (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2)
+    q[:, :2] = np.arctan2(b[:, _SINES], b[:, _COSINES]) + shift[:2]
+    if shared is not None and shared.turn12 is not None:
+        Gk = G if len(G) == 1 else G[pose]  # one pose's G serves every candidate
+        q[:, 5] = _last_angle_shared(shared, Gk, q[:, :2] - shift[:2], monomials)
+    else:
+        q[:, 5] = _last_angle(wk, rk, G[pose], q)
+    return q, pose, np.where(_consistent(b), multiplicity, 0)
+
+
+def _consistent(b):
+    """Whether the right side's products b (k, 8), columns (c2, s2, c1, c1c2, c1s2,
+    s1, s1c2, s1s2), are those of two angles (IK_GENERAL_CONSISTENT_TOL): c1^2 + s1^2
+    and c2^2 + s2^2 against 1, c1c2, c1s2, s1c2, s1s2 against the products of c1,
+    s1 and c2, s2. A few candidates on floats, more as arrays (the same values)."""
+    if len(b) <= 24:
+        tol = IK_GENERAL_CONSISTENT_TOL
+        return np.array(
+            [
+                abs(c1 * c1 + s1 * s1 - 1) <= tol  # a NaN fails, as in the arrays
+                and abs(c2 * c2 + s2 * s2 - 1) <= tol
+                and abs(c1c2 - c1 * c2) <= tol
+                and abs(c1s2 - c1 * s2) <= tol
+                and abs(s1c2 - s1 * c2) <= tol
+                and abs(s1s2 - s1 * s2) <= tol
+                for c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2 in b.tolist()
+            ],
+            bool,
+        )
     norms = b[:, _SQUARES].reshape(-1, 2, 2) ** 2
     gaps = np.abs(norms.sum(axis=2) - 1).max(axis=1)
     products = np.abs(b[:, _PRODUCTS] - b[:, _FACTORS_1] * b[:, _FACTORS_2])
-    consistent = np.maximum(gaps, products.max(axis=1)) <= IK_GENERAL_CONSISTENT_TOL
-    return q, pose, np.where(consistent, multiplicity, 0)
+    return np.maximum(gaps, products.max(axis=1)) <= IK_GENERAL_CONSISTENT_TOL
 
 
 #: b's columns (c2, s2, c1, c1c2, c1s2, s1, s1c2, s1s2): (c1, s1, c2, s2), and the
 #: products with their factors.
 _SQUARES = np.array([2, 5, 0, 1])
+_SINES, _COSINES = np.array([5, 1]), np.array([2, 0])
 _PRODUCTS, _FACTORS_1, _FACTORS_2 = np.array([[3, 4, 6, 7], [2, 2, 5, 5], [0, 1, 0, 1]])
+
+
+def _ratio_sums():
+    """The (144, 4) 0/1 matrix that sums the products v_a v_b (a, b flat indices of
+    the monomials x4^i x5^j, 3 i + j) into those of x4's and x5's least-squares
+    ratios: sum v(i, j) v(i + 1, j), sum v(i, j) v(i, j + 1), and the squares of the
+    low monomials of each (i < 3; j < 2)."""
+    R = np.zeros((12, 12, 4))
+    for i in range(4):
+        for j in range(3):
+            a = 3 * i + j
+            if i < 3:
+                R[a, a + 3, 0] = R[a, a, 2] = 1.0
+            if j < 2:
+                R[a, a + 1, 1] = R[a, a, 3] = 1.0
+    R = R.reshape(144, 4)
+    R.setflags(write=False)
+    return R
+
+
+_RATIOS = _ratio_sums()
 
 #: A fixed right side for one step of inverse iteration (:func:`_null_vectors`).
 _PROBE = np.random.default_rng(12).standard_normal((12, 1))
@@ -519,15 +701,16 @@ def _null_vectors(M, x):
     x = x[:, None, None]
     Mx = M[..., 0, :, :] + x * (M[..., 1, :, :] + x * M[..., 2, :, :])
     try:
-        V = np.linalg.solve(Mx, _PROBE)[..., 0]
+        V = lapack_solve(Mx, _PROBE)[..., 0]
     except np.linalg.LinAlgError:  # an exactly singular M(x): those by SVD below
         V = np.full((len(Mx), 12), np.nan)
         regular = np.linalg.det(Mx) != 0
         if regular.any():
             V[regular] = np.linalg.solve(Mx[regular], _PROBE)[..., 0]
     size = np.abs(V).sum(axis=1)
-    bad = ~((size > 0) & (size < np.inf))  # a zero vector, an overflow or a NaN
-    if bad.any():
+    # a zero vector, an overflow or a NaN
+    bad = [not 0.0 < x < np.inf for x in size.tolist()]
+    if any(bad):
         V[bad] = np.linalg.svd(Mx[bad])[2][:, -1]
     return V
 
@@ -536,11 +719,18 @@ def _with_repeated_roots(M, x3, V, which):
     """The roots x3 (k,), their vectors V (k, 12), problems ``which`` (k,) and
     multiplicities (k,), with the vectors of repeated roots replaced
     (:func:`_repeated_roots`) in the problems that have any."""
-    if 0 < len(x3) <= 24:  # one pose's roots: no two close (a loose test), no sort
+    if 0 < len(x3) <= 24:  # few roots: no two close (a loose test), no sort
         x = x3.real
-        near = np.abs(x[:, None] - x) <= IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x).max())
-        if (near & (which[:, None] == which)).sum() == len(x):
-            return x3, V, which, np.ones(len(x3), int)
+        if not which.any():  # one problem's roots: on floats
+            x = sorted(x.tolist())
+            tol = IK_GENERAL_CLUSTER_TOL * (1 + max(-x[0], x[-1]))
+            if all(b - a > tol for a, b in zip(x, x[1:])):
+                return x3, V, which, np.ones(len(x3), int)
+        else:
+            tol = IK_GENERAL_CLUSTER_TOL * (1 + np.abs(x).max())
+            near = np.abs(x[:, None] - x) <= tol
+            if (near & (which[:, None] == which)).sum() == len(x):
+                return x3, V, which, np.ones(len(x3), int)
     order = np.lexsort((x3.real, which))
     x3, V, which = x3[order], V[order], which[order]
     close = (which[1:] == which[:-1]) & (
@@ -602,6 +792,24 @@ def _last_angle(w, r, G, q):
         Gu = turns[:, j] @ Gu
     Gu = Gu[..., 0]
     return np.arctan2((v * Gu).sum(axis=1), (u * Gu).sum(axis=1))
+
+
+def _last_angle_shared(shared, G, phi, monomials):
+    """q6 (k,) as :func:`_last_angle` gives it, for a form whose axes do not depend
+    on the pose, from its cached rotations in the angles' monomials (a
+    :class:`_Shared`): with u, v normal to axis 6, E6's angle is that of
+    (R3 R4 R5 (u, v)) . (R2^T R1^T G u); ``phi`` (k, 2) the form's phi1, phi2,
+    ``monomials`` (k, 27) those of phi3, phi4, phi5, G (k, 4, 4) or one (1, 4, 4)
+    for all."""
+    f = np.empty((len(phi), 2, 3))  # (1, cos, sin) of phi1 and phi2
+    f[:, :, 0], f[:, :, 1], f[:, :, 2] = 1.0, np.cos(phi), np.sin(phi)
+    f = (f[:, 0, :, None] * f[:, 1, None]).reshape(-1, 9)  # (1, c1, s1) x (1, c2, s2)
+    turned = (f @ shared.turn12).reshape(-1, 3, 3)
+    # R2^T R1^T G u (k, 3, 1); G (k or 1, 4, 4)
+    x = turned @ (G[:, :3, :3] @ shared.u)[..., None]
+    y = (monomials @ shared.turn345).reshape(-1, 3, 2)
+    cos_sin = (x * y).sum(axis=1)
+    return np.arctan2(cos_sin[:, 1], cos_sin[:, 0])
 
 
 # ---- the twelve formulations ---------------------------------------------------------
@@ -842,6 +1050,13 @@ def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
     is singular (solutions coincide there, and a double root may stand for one)."""
     if not len(root):
         return {}
+    if len(kept) == 1 and _apart(root, multiplicity):
+        # one pose, simple roots apart: each calls for one solution at its angle
+        near = np.abs(_wrap_angle(root[:, None] - kept[0][0][:, joint])) <= (
+            IK_GENERAL_EXPLAINED_TOL
+        )
+        if near.any(axis=1).all():
+            return {}
     same = (root_pose[:, None] == root_pose) & (
         np.abs(_wrap_angle(root[:, None] - root)) <= IK_GENERAL_EXPLAINED_TOL
     )
@@ -874,21 +1089,35 @@ def _unexplained(root, root_pose, multiplicity, kept, singular, poses, joint):
     }
 
 
+def _apart(root, multiplicity):
+    """Whether the roots (k,) (rad) of one pose are simple (``multiplicity`` (k,)
+    all 1) and no two within 2 IK_GENERAL_EXPLAINED_TOL of each other (modulo a
+    turn; on floats): each then calls for one solution of its own."""
+    if any(m != 1 for m in multiplicity.tolist()):
+        return False
+    angles = sorted(root.tolist())
+    gaps = [b - a for a, b in zip(angles, angles[1:])]
+    gaps.append(angles[0] + 2 * np.pi - angles[-1])  # round the turn
+    return len(angles) == 1 or min(gaps) > 2 * IK_GENERAL_EXPLAINED_TOL
+
+
 def _distinct(Q, residuals):
     """The solutions with no earlier (better) one within IK_GENERAL_SAME_TOL, sorted
     lexicographically, their residuals and their rows in Q."""
-    order = np.argsort(residuals, kind="stable")
-    Q, residuals = Q[order], residuals[order]
     same = np.abs(_wrap_angle(Q[:, None] - Q[None])).max(axis=2) <= (
         IK_GENERAL_SAME_TOL
     )
-    if same.sum() > len(Q):  # a pair besides the diagonal
-        keep = []
-        for i in range(len(Q)):
-            if not any(same[i, j] for j in keep):
-                keep.append(i)
-        Q, residuals, order = Q[keep], residuals[keep], order[keep]
-    index = order
+    if same.sum() == len(Q):  # the diagonal alone: all distinct
+        order = np.lexsort(Q.T[::-1])
+        return Q[order], residuals[order], order
+    # a pair besides the diagonal: the better of each kept, in order of residual
+    order = np.argsort(residuals, kind="stable")
+    Q, residuals, same = Q[order], residuals[order], same[np.ix_(order, order)]
+    keep = []
+    for i in range(len(Q)):
+        if not any(same[i, j] for j in keep):
+            keep.append(i)
+    Q, residuals, index = Q[keep], residuals[keep], order[keep]
     order = np.lexsort(Q.T[::-1])
     return Q[order], residuals[order], index[order]
 
@@ -988,24 +1217,37 @@ def _finish(chain, arm, T, T_scaled, phi, pose, poses, name, order, claims=None)
     def measure(q, rows):
         return _residuals(chain, targets[rows], q, arm.scale)
 
-    q, J, residuals = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
+    q, J, residuals, bound = _polish(arm.w, arm.r, arm.home, T_scaled[pose], q, measure)
     good = residuals <= IK_GENERAL_ACCEPT_TOL
     claims = np.zeros(len(phi), int) if claims is None else claims
     genuine = claims > 0
-    root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
-    q, pose, residuals, J = _wrap_angle(q[good]), pose[good], residuals[good], J[good]
+    if genuine.all():
+        root, root_pose, multiplicity = phi[:, 2], pose, claims
+    else:
+        root, root_pose, multiplicity = phi[genuine, 2], pose[genuine], claims[genuine]
+    if not good.all():
+        q, pose, residuals, J, bound = (
+            q[good],
+            pose[good],
+            residuals[good],
+            J[good],
+            bound[good],
+        )
+    q = _wrap_angle(q)
     if len(poses) == 1:
         Q, res, index = _distinct(q, residuals)
         kept = [(Q, res)]
     else:
         by_pose = np.argsort(pose, kind="stable")
-        q, pose, residuals, J = (x[by_pose] for x in (q, pose, residuals, J))
+        q, pose, residuals, J, bound = (
+            x[by_pose] for x in (q, pose, residuals, J, bound)
+        )
         starts = np.searchsorted(pose, poses, "left")
         ends = np.searchsorted(pose, poses, "right")
         parts = [_distinct(q[a:b], residuals[a:b]) for a, b in zip(starts, ends)]
         kept = [(Q, res) for Q, res, _ in parts]
         index = np.concatenate([a + i for (_, _, i), a in zip(parts, starts)])
-    singular = _singular(J[index])
+    singular = _singular(J[index], bound[index])
     left = _unexplained(root, root_pose, multiplicity, kept, singular, poses, order[2])
     answers, start = [], 0
     for j, (Q, res) in zip(poses, kept):
