@@ -705,8 +705,9 @@ def _null_vectors(M, x):
     except np.linalg.LinAlgError:  # an exactly singular M(x): those by SVD below
         V = np.full((len(Mx), 12), np.nan)
         regular = np.linalg.det(Mx) != 0
-        if regular.any():
-            V[regular] = np.linalg.solve(Mx[regular], _PROBE)[..., 0]
+        if regular.any():  # b as a stack of (12, 1) matrices: one meaning in NumPy 1, 2
+            b = np.broadcast_to(_PROBE, (int(regular.sum()), 12, 1))
+            V[regular] = np.linalg.solve(Mx[regular], b)[..., 0]
     size = np.abs(V).sum(axis=1)
     # a zero vector, an overflow or a NaN
     bad = [not 0.0 < x < np.inf for x in size.tolist()]
