@@ -55,6 +55,7 @@ from ._checks import describe
 # each chapter's module registers its parametrised exercises in GENERATORS
 from ._variants import (  # noqa: F401
     GENERATORS,
+    checked,
     configuration_space,
     draw,
     jacobians,
@@ -695,12 +696,19 @@ def answer_key(chapter, number, seed=0):
     entry = _entry(chapter, number)
     if "answer" not in entry and entry.get("assessed"):
         raise AssessedError(_assessed_sentence(chapter, number))
-    where = f"{chapter} exercise {number}"
     seed = _seed(seed)
-    if entry.get("parametrised"):
-        if (chapter, int(number)) not in GENERATORS:
-            raise ValueError(f"{where} is parametrised but has no generator")
-        numbers, _, answer = GENERATORS[chapter, int(number)](draw(seed))
+    generated = (
+        _generated(chapter, number, entry, seed) if entry.get("parametrised") else None
+    )
+    return _key(chapter, number, entry, seed, generated)
+
+
+def _key(chapter, number, entry, seed, generated):
+    """answer_key's dict from the key file's ``entry`` and, for a parametrised
+    exercise, its ``generated`` (numbers, statement, key) for ``seed``."""
+    where = f"{chapter} exercise {number}"
+    if generated is not None:
+        numbers, _, answer = generated
         # rounded far inside any tolerance, so that a zero prints as 0 in the page
         values = [round(float(v), 12) + 0.0 for v in np.ravel(answer)]
         shape = list(np.shape(answer))
@@ -829,14 +837,30 @@ def variant(chapter, number, seed=0):
     [0.9375]
     """
     seed = _seed(seed)
-    if not _entry(chapter, number).get("parametrised"):
+    entry = _entry(chapter, number)
+    if not entry.get("parametrised"):
         raise ValueError(
             f"number must be a parametrised exercise of {chapter!r} (one of "
             f"{parametrised(chapter)}), got {number}"
         )
-    numbers, statement, _ = GENERATORS[chapter, int(number)](draw(seed))
-    key = answer_key(chapter, number, seed)
-    return Variant(chapter, int(number), seed, numbers, statement, key)
+    generated = _generated(chapter, number, entry, seed)
+    key = _key(chapter, number, entry, seed, generated)
+    return Variant(chapter, int(number), seed, *generated[:2], key)
+
+
+def _generated(chapter, number, entry, seed):
+    """A parametrised exercise's (numbers, statement, key) for ``seed``, its draws
+    and statement from ``entry["variant"]`` (``[exercise.NUMBER.variant]`` of its
+    key file)."""
+    if (chapter, int(number)) not in GENERATORS:
+        raise ValueError(
+            f"{chapter} exercise {number} is parametrised but has no generator"
+        )
+    table = checked(
+        entry.get("variant"),
+        f"[exercise.{number}.variant] of answers/{chapter}.toml",
+    )
+    return GENERATORS[chapter, int(number)](draw(seed), table)
 
 
 def parametrised(chapter=None):

@@ -22,16 +22,14 @@ A chapter's module holds the rest, the key's computation: a function of the draw
 values (by name) registered with :func:`register`, returning the key, or the key and
 a dict of the values the statement shows that are not drawn. ``GENERATORS`` maps
 (chapter, number) to a :class:`Generator`: called with a random generator (``None``
-for seed 0) it returns the statement's numbers (``{name: (value, unit)}``, in the
+for seed 0) and the exercise's variant table (``screwkit.exercises`` reads the key
+file) it returns the statement's numbers (``{name: (value, unit)}``, in the
 table's order), the statement in plain text and the key, computed by screwkit and
 never stored. ``screwkit.exercises`` imports every chapter's module, so that
 ``GENERATORS`` is full.
 """
 
 import inspect
-import tomllib
-from functools import cache
-from importlib import resources
 
 import numpy as np
 
@@ -47,15 +45,6 @@ def draw(seed):
 def pick(rng, choices, default):
     """``default`` for seed 0 (``rng`` None), else one of ``choices``, drawn."""
     return default if rng is None else choices[int(rng.integers(len(choices)))]
-
-
-@cache
-def spec(chapter, number):
-    """The table ``[exercise.NUMBER.variant]`` of ``answers/CHAPTER.toml``, checked."""
-    path = resources.files("screwkit").joinpath(f"answers/{chapter}.toml")
-    entries = tomllib.loads(path.read_text(encoding="utf-8")).get("exercise", {})
-    table = entries.get(str(number), {}).get("variant")
-    return checked(table, f"[exercise.{number}.variant] of answers/{chapter}.toml")
 
 
 #: the fields of an entry: a draw, a drawn number of the statement, a computed one
@@ -85,7 +74,7 @@ class Generator:
     Parameters
     ----------
     chapter, number : str, int
-        The exercise; its draws are read from its key file when first called.
+        The exercise (named in messages).
     key : callable
         The key from the drawn values (keyword arguments), or the key and a dict of
         the values the statement shows that are not drawn.
@@ -96,9 +85,9 @@ class Generator:
     def __init__(self, chapter, number, key, draws=None):
         self.chapter, self.number, self.key, self.draws = chapter, number, key, draws
 
-    def __call__(self, rng):
-        """``(numbers, statement, key)`` for ``rng`` (``None``: seed 0)."""
-        table = spec(self.chapter, self.number)
+    def __call__(self, rng, table):
+        """``(numbers, statement, key)`` for ``rng`` (``None``: seed 0), the draws and
+        the statement from ``table``, its variant table (:func:`checked`)."""
         values = {
             name: pick(rng, entry["choices"], entry["seed0"])
             for name, entry in table.items()

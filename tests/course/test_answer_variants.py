@@ -148,16 +148,19 @@ def test_make_answers_writes_a_sheet_per_student_and_the_keys(tmp_path):
 def test_a_variant_table_and_its_key_function_must_agree():
     from screwkit import _variants
 
+    def table(chapter, number):
+        return exercises._entry(chapter, number)["variant"]
+
     # motion_in_time 3 draws T: a function of another name is refused at its first call
     wrong = _variants.Generator("motion_in_time", 3, lambda duration: duration)
     with pytest.raises(ValueError, match=r"must take the draws \['T'\], got"):
-        wrong(None)
+        wrong(None, table("motion_in_time", 3))
     # rigid_motions 7 computes the number axis (0, 1 or 2) from the axis drawn
     mute = _variants.Generator("rigid_motions", 7, lambda angle, about: [1, 0, 0, 0])
     with pytest.raises(
         ValueError, match=r"must give the numbers it computes, \['axis'\]"
     ):
-        mute(None)
+        mute(None, table("rigid_motions", 7))
     where = "[exercise.3.variant] of answers/fake.toml"
     with pytest.raises(ValueError, match="must exist and hold a statement"):
         _variants.checked({"T": {"unit": "s"}}, where)
