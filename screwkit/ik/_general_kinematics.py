@@ -165,17 +165,12 @@ def poe(w, r, home, q):
     for i in range(1, 6):
         np.matmul(prefix[:, i - 1], E[:, i - 1], out=prefix[:, i])
     T = prefix[:, 5] @ E[:, 5] @ home
-    # the axes at q: rows (w, r) of each joint's column, and (r x w) written out
+    # the axes at q: rows (w, r) of each joint's column, then (r x w)
     moved = (prefix[..., :3, :] @ lines).swapaxes(2, 3)  # (k, 6, 2, 3)
     J = np.empty((len(q), 6, 6))
     Jt = J.swapaxes(1, 2)  # (k, joint, row), a view
     Jt[..., :3] = ws = moved[:, :, 0]
-    rs = moved[:, :, 1]
-    np.subtract(
-        rs[..., _NEXT] * ws[..., _AFTER],
-        rs[..., _AFTER] * ws[..., _NEXT],
-        out=Jt[..., 3:],
-    )
+    Jt[..., 3:] = _cross_last(moved[:, :, 1], ws)
     return T[:, :3, :3], T[:, :3, 3], J
 
 
@@ -188,18 +183,17 @@ def error(w, r, home, targets, q):
     E = targets[:, :3, :3] @ np.swapaxes(R, 1, 2)
     e = np.empty((len(E), 6))
     # omega, the vee of (E - E^T) / 2: entries (2, 1), (0, 2), (1, 0) less (1, 2),
-    # (2, 0), (0, 1); then dp - omega x p, the cross product by index arrays
+    # (2, 0), (0, 1); then dp - omega x p
     omega = e[:, :3]
-    np.subtract(E[:, _AFTER, _NEXT], E[:, _NEXT, _AFTER], out=omega)
+    np.subtract(E[:, _VEE_ROWS, _VEE_COLUMNS], E[:, _VEE_COLUMNS, _VEE_ROWS], out=omega)
     omega /= 2
-    dp = targets[:, :3, 3] - p
-    dp -= omega[:, _NEXT] * p[:, _AFTER] - omega[:, _AFTER] * p[:, _NEXT]
-    e[:, 3:] = dp
+    e[:, 3:] = targets[:, :3, 3] - p - _cross_last(omega, p)
     return e, J
 
 
-#: The components after each, cyclically: (a x b)_i = a_j b_k - a_k b_j.
-_NEXT, _AFTER = np.array([1, 2, 0]), np.array([2, 0, 1])
+#: The entries of a 3 x 3 matrix whose differences with their transposes' give its
+#: skew part's vee: (2, 1), (0, 2), (1, 0).
+_VEE_ROWS, _VEE_COLUMNS = np.array([2, 0, 1]), np.array([1, 2, 0])
 
 
 def newton_step(J, e, det=None):

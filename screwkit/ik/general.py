@@ -98,7 +98,7 @@ from ..tolerances import (
     IK_GENERAL_SINGULAR_TOL,
     length_scale,
 )
-from ..transforms import _cross, _cross_last, _skew, _wrap_angle
+from ..transforms import _cross, _cross_into, _cross_last, _skew, _wrap_angle
 from ._general_kinematics import by_identity, lapack_eigvals, lapack_solve, lapack_svd
 from ._general_kinematics import error as _error
 from ._general_kinematics import poe as _poe
@@ -221,14 +221,9 @@ def _products(p, l):
     out[:3], out[3:6] = p, l
     pp = out[6] = (p * p).sum(axis=0)
     pl = out[7] = (p * l).sum(axis=0)
-    # p x l, written into place
-    np.subtract(p[_NEXT] * l[_AFTER], p[_AFTER] * l[_NEXT], out=out[8:11])
+    _cross_into(out[8:11], p, l)  # p x l, written into place
     np.subtract(pp * l, 2 * pl * p, out=out[11:])
     return out
-
-
-#: The components after each, cyclically: (a x b)_i = a_j b_k - a_k b_j.
-_NEXT, _AFTER = np.array([1, 2, 0]), np.array([2, 0, 1])
 
 
 def _left(w, r, q3, q4, q5):
@@ -490,7 +485,7 @@ def _features(hp, hl):
     f[:, 1:4], f[:, 4:7] = hp, hl
     pp = f[:, 7] = (hp * hp).sum(axis=1)
     pl = f[:, 8] = (hp * hl).sum(axis=1)
-    f[:, 9:12] = hp[:, _NEXT] * hl[:, _AFTER] - hp[:, _AFTER] * hl[:, _NEXT]
+    f[:, 9:12] = _cross_last(hp, hl)
     f[:, 12:15] = pp[:, None] * hl
     f[:, 15:18] = pl[:, None] * hp
     f[:, 18:] = (hl[:, :, None] * hp[:, None]).reshape(n, 9)
