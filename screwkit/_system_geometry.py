@@ -27,8 +27,6 @@ from ._checks import describe
 from .screws import Screw
 from .tolerances import PITCH_TOL
 
-_ROMAN = ("I", "II", "III", "IV")
-
 
 class PrincipalScrews(NamedTuple):
     """The principal screws and pitches of a 1-, 2- or 3-system.
@@ -70,12 +68,8 @@ class Classification(NamedTuple):
     order : int
         The number of independent screws.
     type : str
-        screwkit's own label, ``'<order>-<roman><letter>'``: the Roman numeral is I
-        plus the number of independent screws of infinite pitch in the system (for
-        order 4 and 5, in its reciprocal, which is classified instead); the letter
-        says how many finite principal pitches coincide: A none, B two, C three. It
-        is not Gibson and Hunt's name (see ``gibson_hunt``): '3-IIIA' (planar motion)
-        is their IIIC, '3-IC' (spherical motion) their IIIA.
+        The order and the type, ``'<order>-<gibson_hunt>'``: '2-IA' the general
+        cylindroid, '3-IIA' spherical motion, '3-IIC' planar motion.
     translations : int
         The number of independent infinite-pitch members (of the reciprocal for order
         4 and 5).
@@ -89,15 +83,16 @@ class Classification(NamedTuple):
     description : str
         The special geometry in words.
     gibson_hunt : str
-        The type in Gibson and Hunt's naming (Mech. Mach. Theory 25, 1990; Davidson
-        and Hunt, *Robots and Screw Theory*, 2004): the order as a Roman numeral, then
-        the projective type, a letter for the number of independent screws of infinite
-        pitch, A none, B one, C two, D three (for order 4 and 5 the letter of the
-        reciprocal, so a system and its reciprocal share it): 'IIA' a cylindroid,
-        'IIC' planar translations, 'IIIA' spherical motion, 'IIIC' planar motion,
-        'IIID' spatial translations. Their finer subtypes (equal principal pitches,
-        a translation normal or not to the finite screws) are told by ``type`` and
-        ``description``.
+        The type in Gibson and Hunt's two projective features (Mech. Mach. Theory 25,
+        1990): a letter for the number of independent members of infinite pitch, A
+        none, B one, C two, D three; before it II when every member of finite pitch
+        has one and the same pitch h (the system lies on the quadric of the screws of
+        pitch h; a system of translations only counts as II), else I. 'IA' a general
+        cylindroid, 'IIA' spherical motion (h = 0), 'IIC' planar motion (h = 0),
+        'IID' spatial translations. A 4- or 5-system carries its reciprocal's type.
+        The finer subtypes within type I (equal principal pitches, a translation
+        along a finite screw or skew to it) are not coded here; ``pitches`` and
+        ``description`` tell them. '' for order 0 and 6.
 
     Examples
     --------
@@ -108,7 +103,7 @@ class Classification(NamedTuple):
     >>> axes = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
     >>> c = ScrewSystem([(d, [0, 0, 0], 0) for d in axes]).classify()
     >>> c.order, c.type, c.translations, c.pitches, c.name, c.gibson_hunt
-    (3, '3-IC', 0, [0, 0, 0], 'spherical motion', 'IIIA')
+    (3, '3-IIA', 0, [0, 0, 0], 'spherical motion', 'IIA')
     """
 
     order: int
@@ -378,7 +373,7 @@ def classify(system):
     n = system.rank
     if n == 0:
         return Classification(
-            0, "0", 0, [], "zero system", "the zero system: no screw", "0"
+            0, "0", 0, [], "zero system", "the zero system: no screw", ""
         )
     if n == 6:
         return Classification(
@@ -388,19 +383,18 @@ def classify(system):
             [],
             "every screw",
             "every screw: the whole six-dimensional space",
-            "VI",
+            "",
         )
     target = system if n <= 3 else system.reciprocal()
-    groups, translations, complete, _, _, exact = _analyse(target)
+    groups, translations, complete, B, _, exact = _analyse(target)
     k = len(translations)
-    mults = sorted((m for _, m, _ in groups), reverse=True)
-    letter = "ABCD"[mults[0] - 1] if mults else "A"
-    type_ = f"{n}-{_ROMAN[min(k, 3)]}{letter}"
+    gibson_hunt = _gibson_hunt(target.rank, k, groups, complete)
+    coaxial = target.rank == 2 and k == 1 and _along_the_axis(B, translations, exact)
     pitches = [
         sp.simplify(h) if exact else float(h) for h, m, _ in groups for _ in range(m)
     ]
     pitches += [sp.oo if exact else np.inf] * k
-    name, words = _words(target.rank, k, groups, complete, exact)
+    name, words = _words(target.rank, k, groups, complete, exact, coaxial)
     if target.kind.noun == "wrench":  # a wrench of infinite pitch is a couple
         words = _as_wrenches(words)
     if n >= 4:
@@ -411,8 +405,33 @@ def classify(system):
         )
     if system.kind.noun == "wrench":
         name = _as_wrenches(name)
-    gibson_hunt = ("I", "II", "III", "IV", "V")[n - 1] + "ABCD"[k]
-    return Classification(n, type_, k, pitches, name, words, gibson_hunt)
+    return Classification(n, f"{n}-{gibson_hunt}", k, pitches, name, words, gibson_hunt)
+
+
+def _along_the_axis(B, translations, exact):
+    """Whether a 2-system's one translation is parallel to its finite members' common
+    direction (the screws on one axis, of every pitch)."""
+    t = B * translations[0] if exact else B @ translations[0]
+    W = B[:3, :]
+    if exact:
+        w = max((W[:, j] for j in range(W.shape[1])), key=lambda c: c.norm())
+        return all(sp.simplify(e) == 0 for e in w.cross(t[3:, 0]))
+    w = np.linalg.svd(W)[0][:, 0]
+    moment = np.ravel(t[3:]) / np.linalg.norm(t[3:])
+    return np.linalg.norm(np.cross(w, moment)) <= PITCH_TOL
+
+
+def _gibson_hunt(m, k, groups, complete):
+    """II when every finite member of the m-system has one pitch, else I; then A to D
+    for its k independent translations.
+
+    The finite members have one pitch h exactly when the translations are reciprocal
+    to every member (``complete``: adding one then keeps the pitch) and the finite
+    principal pitches are all h (one group); with no finite member (k = m) the
+    condition holds vacuously.
+    """
+    one_pitch = k == m or (complete and len(groups) == 1)
+    return ("II" if one_pitch else "I") + "ABCD"[k]
 
 
 def _as_wrenches(text):
@@ -436,7 +455,7 @@ _RECIPROCAL_NAMES = {
 }
 
 
-def _words(m, k, groups, complete, exact):
+def _words(m, k, groups, complete, exact, coaxial=False):
     finite = [(h, mult) for h, mult, _ in groups]
 
     def zero(h):
@@ -476,6 +495,12 @@ def _words(m, k, groups, complete, exact):
                 f"a screw of pitch {_fmt(finite[0][0], exact)} and the translations "
                 "normal to it: parallel axes of one pitch in a plane",
             )
+        if coaxial:
+            return (
+                "coaxial screws",
+                "a screw and the translation along its axis: every real pitch on one "
+                "axis",
+            )
         return (
             "screw and skew translation",
             "a screw and a translation not normal to it: every real pitch occurs once",
@@ -504,6 +529,19 @@ def _words(m, k, groups, complete, exact):
             f"screws of pitch {_fmt(h, exact)} on parallel axes and translations "
             "normal "
             "to them",
+        )
+    if k == 1 and complete and len(finite) == 1:
+        h = finite[0][0]
+        if zero(h):
+            return (
+                "planar field of lines",
+                "rotations about the lines of one plane and the translation normal "
+                "to it",
+            )
+        return (
+            "planar field of screws",
+            f"screws of pitch {_fmt(h, exact)} on the lines of one plane and the "
+            "translation normal to it",
         )
     return (
         f"{k}-translation 3-system",

@@ -400,18 +400,18 @@ class ScrewSystem:
         Returns
         -------
         Classification
-            ``order``, ``type`` (screwkit's label, such as '3-IIIA', see
-            :class:`Classification`), ``translations``,
-            ``pitches``, ``name`` ('planar motion', 'spherical motion', ...),
-            ``description`` and ``gibson_hunt`` (Gibson and Hunt's type, such as
-            'IIIC' for planar motion).
+            ``order``, ``type`` (the order and Gibson and Hunt's type, such as
+            '3-IIC' for planar motion, see :class:`Classification`),
+            ``translations``, ``pitches``, ``name`` ('planar motion', 'spherical
+            motion', ...), ``description`` and ``gibson_hunt`` (the type alone,
+            'IIC').
 
         Examples
         --------
         >>> origin = [0, 0, 0]
         >>> ScrewSystem([(d, origin, 0) for d in ([1, 0, 0], [0, 1, 0], [0, 0, 1])]
         ...             ).classify()[4:]
-        ('spherical motion', 'every member a rotation about one point', 'IIIA')
+        ('spherical motion', 'every member a rotation about one point', 'IIA')
         """
         return _system_geometry.classify(self)
 

@@ -119,18 +119,18 @@ def test_cylindroid_pitch_law_and_its_axes():
 
 CASES = {
     "general cylindroid": (cylindroid_rows(0.1, 0.4), "2-IA"),
-    "flat pencil of screws": (cylindroid_rows(0.3, 0.3), "2-IB"),
+    "flat pencil of screws": (cylindroid_rows(0.3, 0.3), "2-IIA"),
     "planar motion": (
         [[0, 0, 1, 0, 0, 0], [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0]],
-        "3-IIIA",
+        "3-IIC",
     ),
     "spherical motion": (
         [[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], [0, 0, 1, 0, 0, 0]],
-        "3-IC",
+        "3-IIA",
     ),
     "spatial translations": (
         [[0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, 1]],
-        "3-IVA",
+        "3-IID",
     ),
     "Schoenflies motion": (
         [
@@ -139,7 +139,7 @@ CASES = {
             [0, 0, 0, 0, 1, 0],
             [0, 0, 0, 0, 0, 1],
         ],
-        "4-IIIA",
+        "4-IIC",
     ),
     "general 3-system": (
         [[1, 0, 0, 0.1, 0, 0], [0, 1, 0, 0, 0.25, 0], [0, 0, 1, 0, 0, -0.3]],
@@ -226,76 +226,123 @@ def test_a_wrench_system_is_named_with_couples_and_forces():
     hand in the chapter's exercise 23); Schoenflies motion's: two couples."""
     planar = ScrewSystem(CASES["planar motion"][0]).reciprocal()
     kind = planar.classify()
-    assert (kind.type, kind.name) == ("3-IIIA", "planar-motion type")
+    assert (kind.type, kind.name) == ("3-IIC", "planar-motion type")
     assert "forces along parallel axes and the couples" in kind.description
     schoenflies = ScrewSystem(CASES["Schoenflies motion"][0]).reciprocal().classify()
     assert schoenflies.name == "planar couples"
 
 
-# ---- Gibson and Hunt's names ---------------------------------------------------------
+# ---- Gibson and Hunt's two projective features --------------------------------------
 #
-# Gibson and Hunt (Mech. Mach. Theory 25, 1990, parts 1 and 2; Davidson and Hunt, Robots
-# and Screw Theory, 2004) name an n-system by its order (Roman) and its projective type,
-# a letter for the number of independent screws of infinite pitch it holds: A none,
-# B one, C two, D three. The classes below are the textbook examples of each 2- and
-# 3-system type, with the class the literature gives them: the count of independent
-# translations in each is done by hand in the comment, never by screwkit.
+# The letter counts the independent members of infinite pitch (A none ... D three); the
+# numeral is II when every member of finite pitch has one and the same pitch, else I.
+# Each class below is worked out by hand in its comment from the rows, never by
+# screwkit; test_the_type_agrees_with_sampled_members then checks both features
+# against plain NumPy on random members of the moved systems.
 
 Z6 = [0, 0, 1, 0, 0, 0]  # rotation about the z axis through the origin
 TX, TY, TZ = [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, 1]
 
 TEXTBOOK = {
-    # Ball's cylindroid: two screws on perpendicular intersecting axes, pitches 0.1
-    # and 0.4, no translation in the span (both directions independent): IIA.
-    "cylindroid": (cylindroid_rows(0.1, 0.4), "IIA"),
-    # equal principal pitches: the planar pencil of screws of one pitch, still IIA
-    # (Gibson and Hunt's special IIA, h_alpha = h_beta).
+    # Ball's cylindroid: pitches 0.1 and 0.4 on perpendicular axes; the directions are
+    # independent (no translation: A) and c^2 0.1 + s^2 0.4 varies (I).
+    "cylindroid": (cylindroid_rows(0.1, 0.4), "IA"),
+    # equal principal pitches: every member c^2 0.3 + s^2 0.3 = 0.3 (II), the flat
+    # pencil of pitch-0.3 screws.
     "planar pencil": (cylindroid_rows(0.3, 0.3), "IIA"),
-    # a revolute about z and a slide along x (a planar R-P chain): one translation,
-    # normal to the axis; the members are parallel rotations in the plane y z: IIB.
+    # a revolute about z and a slide along x: one translation (B), normal to the axis,
+    # so a member (0, 0, a; b, 0, 0) has pitch w.m / w.w = 0 for every a != 0 (II).
     "revolute and normal slide": ([Z6, TX], "IIB"),
-    # the cylindric pair: rotation about z and slide along z, coaxial screws of every
-    # pitch (one translation, along the axis): IIB.
-    "cylindric pair": ([Z6, TZ], "IIB"),
-    # two slides: every member a translation parallel to the plane x y: IIC.
+    # the cylindric pair: (0, 0, a; 0, 0, b) has pitch b / a, every real value (IB).
+    "cylindric pair": ([Z6, TZ], "IB"),
+    # a revolute about z and a slide along (1, 0, 1): (0, 0, a; b, 0, b) has pitch
+    # b / a again (IB), its axis moved along y by -b / a.
+    "revolute and skew slide": ([Z6, [0, 0, 0, 1, 0, 1]], "IB"),
+    # two slides: two translations (C), no member of finite pitch (II).
     "two slides": ([TX, TY], "IIC"),
-    # the spherical pair: rotations about three axes through one point, all pitch 0
-    # and no translation: IIIA (the special IIIA with three equal pitches).
-    "spherical pair": ([[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], Z6], "IIIA"),
-    # a general 3-system (principal pitches 0.1, 0.25, -0.3 on the axes): IIIA.
-    "general 3-system": (CASES["general 3-system"][0], "IIIA"),
-    # a cylindric pair followed by a revolute about the x axis through (0, 0, 1): one
-    # translation (along z) and two independent rotation directions: IIIB.
-    "cylindric pair and revolute": ([Z6, TZ, [1, 0, 0, 0, 1, 0]], "IIIB"),
-    # the planar pair: rotation about z, slides along x and y (two translations): IIIC.
-    "planar pair": ([Z6, TX, TY], "IIIC"),
-    # three slides (a P-P-P chain, the Delta's platform): three translations: IIID.
-    "three slides": ([TX, TY, TZ], "IIID"),
+    # the spherical pair: three independent directions (A), every member (w; 0) of
+    # pitch 0 (II).
+    "spherical pair": ([[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], Z6], "IIA"),
+    # a general 3-system (principal pitches 0.1, 0.25, -0.3 on the axes): a member
+    # (a, b, c; 0.1a, 0.25b, -0.3c) has pitch
+    # (0.1a^2 + 0.25b^2 - 0.3c^2) / (a^2 + b^2 + c^2), which varies (IA).
+    "general 3-system": (CASES["general 3-system"][0], "IA"),
+    # two principal pitches equal, the third not: (a, b, c; 0.2a, 0.2b, -0.1c) still
+    # varies with c (IA).
+    "two equal pitches": (
+        [[1, 0, 0, 0.2, 0, 0], [0, 1, 0, 0, 0.2, 0], [0, 0, 1, 0, 0, -0.1]],
+        "IA",
+    ),
+    # a cylindric pair followed by a revolute about the x axis through (0, 0, 1):
+    # members (b, 0, a; 0, b, c), one translation (B), pitch a c / (a^2 + b^2) (I).
+    "cylindric pair and revolute": ([Z6, TZ, [1, 0, 0, 0, 1, 0]], "IB"),
+    # the lines of the plane z = 0 (rotations about x and y through the origin) and the
+    # translation along z: (a, b, 0; 0, 0, c), pitch 0 for every (a, b) != 0 (IIB).
+    "planar field of lines": ([[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], TZ], "IIB"),
+    # the same lines carrying pitch 0.2: (a, b, 0; 0.2a, 0.2b, c), pitch 0.2 (IIB).
+    "planar field of screws": (
+        [[1, 0, 0, 0.2, 0, 0], [0, 1, 0, 0, 0.2, 0], TZ],
+        "IIB",
+    ),
+    # the planar pair: rotation about z, slides along x and y: two translations (C),
+    # (0, 0, a; b, c, 0) of pitch 0 (II).
+    "planar pair": ([Z6, TX, TY], "IIC"),
+    # a revolute about x and slides along x and y: (a, 0, 0; b, c, 0) has pitch b / a
+    # (IC): the slide along the axis changes the pitch.
+    "revolute and two slides, one along it": ([[1, 0, 0, 0, 0, 0], TX, TY], "IC"),
+    # three slides (a P-P-P chain, the Delta's platform): three translations (D), no
+    # member of finite pitch (II).
+    "three slides": ([TX, TY, TZ], "IID"),
 }
 
 
 @pytest.mark.parametrize("name", TEXTBOOK)
-def test_gibson_hunt_names_of_the_textbook_systems(name):
+def test_gibson_hunt_types_of_the_textbook_systems(name):
     rows, expected = TEXTBOOK[name]
     exact = ScrewSystem([[sp.nsimplify(e) for e in r] for r in rows]).classify()
-    assert exact.gibson_hunt == expected
+    assert (exact.gibson_hunt, exact.type) == (expected, f"{len(rows)}-{expected}")
     for scale in (1.0, 1000.0):  # any rigid motion, change of basis and unit
         moved = ScrewSystem(moved_and_mixed(rows, RNG, scale)).classify()
         assert moved.gibson_hunt == expected
 
 
-def test_gibson_hunt_letter_is_shared_with_the_reciprocal():
-    """dim(S^perp n T) = 3 - n + dim(S n T) for the 3-system T of translations, which is
-    its own reciprocal: a 3-system and its reciprocal hold equally many translations, a
-    2-system's reciprocal one more (so Gibson and Hunt name order 4 and 5 by the
-    reciprocal's letter)."""
+@pytest.mark.parametrize("name", TEXTBOOK)
+def test_the_type_agrees_with_sampled_members(name):
+    """Both features read off random members with NumPy alone: the letter from the rank
+    of the direction rows, the numeral from the spread of the members' pitches."""
+    rows, _ = TEXTBOOK[name]
+    for scale in (1.0, 1000.0):
+        X = np.array(moved_and_mixed(rows, RNG, scale))
+        translations = len(X) - np.linalg.matrix_rank(X[:, :3], tol=1e-9)
+        members = RNG.normal(size=(40, len(X))) @ X
+        w, m = members[:, :3], members[:, 3:]
+        ww, wm = np.einsum("ij,ij->i", w, w), np.einsum("ij,ij->i", w, m)
+        finite = ww > 1e-9 * np.einsum("ij,ij->i", m, m)
+        spread = np.ptp(wm[finite] / ww[finite]) / scale if finite.any() else 0.0
+        letter = "ABCD"[translations]
+        numeral = "II" if spread < 1e-9 else "I"
+        assert ScrewSystem([list(r) for r in X]).classify().gibson_hunt == (
+            numeral + letter
+        )
+
+
+def test_a_3_system_and_its_reciprocal_share_the_type():
+    """For a 3-system both features pass to the reciprocal: the translations, since
+    dim(S^perp n T) = 3 - n + dim(S n T) for the self-reciprocal 3-system T of
+    translations; one pitch h, since shifting every pitch by -h maps S onto a set of
+    mutually reciprocal lines, which is its own reciprocal, so S^perp has pitch -h. A
+    4- or 5-system is given its reciprocal's type."""
     for rows, expected in TEXTBOOK.values():
         system = ScrewSystem([[sp.nsimplify(e) for e in r] for r in rows])
         reciprocal = system.reciprocal().classify()
-        assert reciprocal.gibson_hunt == {2: "IV", 3: "III"}[system.rank] + expected[-1]
+        assert reciprocal.type == f"{6 - system.rank}-{expected}"
         if system.rank == 3:
             assert reciprocal.translations == system.classify().translations
+            if expected.startswith("II") and expected != "IID":
+                h = system.classify().pitches[0]
+                assert set(reciprocal.pitches) - {sp.oo} == {-h}
     schoenflies = ScrewSystem(CASES["Schoenflies motion"][0]).classify()
-    assert schoenflies.gibson_hunt == "IVC"  # its reciprocal: couples about x and y
-    assert ScrewSystem([[1, 0, 0, 0, 0, 0]]).classify().gibson_hunt == "IA"
-    assert ScrewSystem([TX]).classify().gibson_hunt == "IB"
+    assert schoenflies.type == "4-IIC"  # its reciprocal: couples about x and y
+    assert ScrewSystem([[1, 0, 0, 0, 0, 0]]).classify().type == "1-IIA"
+    assert ScrewSystem([TX]).classify().type == "1-IIB"
+    assert ScrewSystem(np.eye(6).tolist()).classify().gibson_hunt == ""
