@@ -503,7 +503,8 @@ def _words(m, k, groups, complete, exact, coaxial=False):
             )
         return (
             "screw and skew translation",
-            "a screw and a translation not normal to it: every real pitch occurs once",
+            "a screw and a translation skew to its axis (neither along nor normal to "
+            "it): parallel axes in one plane, every real pitch once",
         )
     # m == 3
     if k == 0:

@@ -145,6 +145,15 @@ CASES = {
         [[1, 0, 0, 0.1, 0, 0], [0, 1, 0, 0, 0.25, 0], [0, 0, 1, 0, 0, -0.3]],
         "3-IA",
     ),
+    # a rotation about z and the translation along it: every pitch on the z axis
+    "coaxial screws": ([[0, 0, 1, 0, 0, 0], [0, 0, 0, 0, 0, 1]], "2-IB"),
+    # the same rotation and a slide along (1, 0, 1): parallel axes in the plane x = 0
+    "screw and skew translation": ([[0, 0, 1, 0, 0, 0], [0, 0, 0, 1, 0, 1]], "2-IB"),
+    # rotations about x and y through the origin and the translation along z
+    "planar field of lines": (
+        [[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], [0, 0, 0, 0, 0, 1]],
+        "3-IIB",
+    ),
 }
 
 
