@@ -30,7 +30,7 @@ BANK_COMPLETE = {
     "configuration_space": 25,
     "rigid_motions": 25,
     "screws": 25,
-    "lines": 28,
+    "lines": 29,
     "mobility": 25,
     "poe": 25,
     "puma_fk": 25,
