@@ -90,9 +90,9 @@ class Classification(NamedTuple):
         pitch h; a system of translations only counts as II), else I. 'IA' a general
         cylindroid, 'IIA' spherical motion (h = 0), 'IIC' planar motion (h = 0),
         'IID' spatial translations. A 4- or 5-system carries its reciprocal's type.
-        The finer subtypes within type I (equal principal pitches, a translation
-        along a finite screw or skew to it) are not coded here; ``pitches`` and
-        ``description`` tell them. '' for order 0 and 6.
+        Gibson and Hunt's numbered subtypes are not coded here; ``pitches`` and
+        ``description`` tell the finer cases (equal principal pitches, a translation
+        along a finite screw or skew to it). '' for order 0 and 6.
 
     Examples
     --------
@@ -410,15 +410,18 @@ def classify(system):
 
 def _along_the_axis(B, translations, exact):
     """Whether a 2-system's one translation is parallel to its finite members' common
-    direction (the screws on one axis, of every pitch)."""
+    direction (the screws on one axis, of every pitch): every basis column's direction
+    (parallel to it, or zero) crosses the translation to zero."""
     t = B * translations[0] if exact else B @ translations[0]
     W = B[:3, :]
     if exact:
-        w = max((W[:, j] for j in range(W.shape[1])), key=lambda c: c.norm())
-        return all(sp.simplify(e) == 0 for e in w.cross(t[3:, 0]))
-    w = np.linalg.svd(W)[0][:, 0]
+        return all(
+            sp.simplify(e) == 0
+            for j in range(W.shape[1])
+            for e in W[:, j].cross(t[3:, 0])
+        )
     moment = np.ravel(t[3:]) / np.linalg.norm(t[3:])
-    return np.linalg.norm(np.cross(w, moment)) <= PITCH_TOL
+    return bool(np.all(np.linalg.norm(np.cross(W.T, moment), axis=1) <= PITCH_TOL))
 
 
 def _gibson_hunt(m, k, groups, complete):
@@ -455,7 +458,7 @@ _RECIPROCAL_NAMES = {
 }
 
 
-def _words(m, k, groups, complete, exact, coaxial=False):
+def _words(m, k, groups, complete, exact, coaxial):
     finite = [(h, mult) for h, mult, _ in groups]
 
     def zero(h):
